@@ -1,0 +1,25 @@
+// Small GL helpers shared by the passes: error checks, programs, textures, framebuffers.
+#pragma once
+
+#include "gl_functions.hpp"
+
+#include <string>
+
+namespace demo {
+
+// Drains glGetError; prints each error with `stage` and returns false when there was any.
+bool check_gl(const char *stage);
+
+// Compiles and links a vertex + fragment program. Returns 0 and prints the driver log on failure.
+GLuint build_program(const char *name, const char *vertex_source, const char *fragment_source);
+
+// A 2D texture with storage of the given format, NEAREST filtering, CLAMP_TO_EDGE.
+GLuint make_texture(GLint internal_format, GLsizei width, GLsizei height, GLenum format, GLenum type);
+
+// Checks the bound draw framebuffer; prints `name` and the status on failure.
+bool check_framebuffer(const char *name);
+
+// Monotonic milliseconds, for stage timings.
+double now_ms();
+
+}  // namespace demo

@@ -1,0 +1,258 @@
+/*
+ * sss: screen-space separable subsurface scattering for OpenGL hosts.
+ *
+ * Public C API (C99). This header includes no GL header: GL object names are uint32_t and
+ * GL enums are never needed by the caller.
+ *
+ * Typical frame:
+ *
+ *     sss_create_desc desc = { sizeof desc, my_get_proc_address, NULL };
+ *     sss_context *sss; sss_create(&desc, &sss);           // GL context current
+ *     sss_settings s; sss_default_settings(&s); s.width = 0.0015f; sss_set_settings(sss, &s);
+ *     ...every frame:
+ *     sss_set_camera(sss, projection);                     // column-major, as glUniformMatrix4fv
+ *     sss_apply(sss, diffuse_rgba16f, depth24_stencil8, NULL);  // blurs diffuse in place
+ *
+ * Threading: a context is used from the thread on which its GL context is current; separate
+ * sss contexts share nothing and may be used from separate threads. There is no global state.
+ *
+ * GL state: every entry point that calls GL restores, before it returns, each state in the list
+ * below that it changed (unless SSS_CREATE_NO_STATE_RESTORE is given), and leaves no GL error
+ * behind. GL errors the host left pending on entry are cleared and reported through the log
+ * callback (GL has no way to re-raise them).
+ *
+ *   Saved and restored (SSS_STATE_LIST):
+ *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
+ *   - GL_DRAW_FRAMEBUFFER_BINDING, GL_READ_FRAMEBUFFER_BINDING, GL_RENDERBUFFER_BINDING
+ *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
+ *   - GL_PIXEL_UNPACK_BUFFER_BINDING
+ *   - GL_VIEWPORT
+ *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
+ *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
+ *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
+ *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7
+ *   - GL_COLOR_WRITEMASK (draw buffer 0), GL_POLYGON_MODE
+ *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
+ *   - KHR_debug groups are pushed and popped in pairs.
+ *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
+ *   values, pixel pack/unpack parameters, buffer bindings other than the unpack buffer, texture
+ *   parameters of host textures (the module samples through its own sampler objects).
+ *   The host must not call sss_apply with transform feedback active or conditional rendering on.
+ */
+#ifndef SSS_SSS_H
+#define SSS_SSS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(SSS_SHARED)
+#  ifdef SSS_BUILDING
+#    define SSS_API __declspec(dllexport)
+#  else
+#    define SSS_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__) && defined(SSS_SHARED)
+#  define SSS_API __attribute__((visibility("default")))
+#else
+#  define SSS_API
+#endif
+
+#define SSS_VERSION_MAJOR 0
+#define SSS_VERSION_MINOR 1
+#define SSS_VERSION_PATCH 0
+
+/** Status codes. Every failing call also leaves a message naming the bad argument and its value,
+ *  readable with sss_last_error(). */
+typedef enum sss_result {
+  SSS_OK = 0,
+  SSS_ERROR_INVALID_ARGUMENT,     /**< a pointer, number or flag outside its documented range */
+  SSS_ERROR_UNSUPPORTED,          /**< valid, but not supported (GL version, projection kind) */
+  SSS_ERROR_GL_FUNCTION_MISSING,  /**< get_proc_address gave no pointer for a needed function */
+  SSS_ERROR_SHADER_COMPILE,       /**< an embedded shader did not compile or link (driver log in the message) */
+  SSS_ERROR_FRAMEBUFFER,          /**< a framebuffer the module built is incomplete */
+  SSS_ERROR_INVALID_TEXTURE,      /**< not a texture name, wrong target, format or size */
+  SSS_ERROR_OUT_OF_MEMORY,        /**< host or GL allocation failed */
+  SSS_ERROR_GL,                   /**< the GL raised an error inside the module's work */
+  SSS_ERROR_NO_CONTEXT,           /**< no GL context is current on this thread */
+  SSS_ERROR_INVALID_OPERATION     /**< call order: e.g. sss_apply before sss_set_camera */
+} sss_result;
+
+/** Loader callback: return the address of the GL function `name` ("glDrawArrays"), or NULL.
+ *  OSMesaGetProcAddress, eglGetProcAddress and glfwGetProcAddress all fit (wrap them to add
+ *  the user pointer). */
+typedef void *(*sss_get_proc_address_fn)(const char *name, void *user);
+
+/** Log levels for sss_log_fn. */
+#define SSS_LOG_ERROR 0
+#define SSS_LOG_WARNING 1
+#define SSS_LOG_INFO 2
+#define SSS_LOG_DEBUG 3
+typedef void (*sss_log_fn)(int level, const char *message, void *user);
+
+typedef struct sss_context sss_context;
+
+/* SSS_CREATE_* flags for sss_create_desc.flags. */
+/** The host saves and restores GL state itself: the module leaves the state it set (list in the
+ *  file comment) as it is after each call, which saves the queries. */
+#define SSS_CREATE_NO_STATE_RESTORE 0x1u
+/** Skip KHR_debug groups and object labels even when the extension is present. */
+#define SSS_CREATE_NO_DEBUG_LABELS 0x2u
+#define SSS_CREATE_ALL_FLAGS 0x3u
+
+typedef struct sss_create_desc {
+  uint32_t struct_size;                     /**< sizeof(sss_create_desc) */
+  sss_get_proc_address_fn get_proc_address; /**< required */
+  void *get_proc_address_user;              /**< passed back to get_proc_address */
+  sss_log_fn log;                           /**< optional: NULL for silence */
+  void *log_user;                           /**< passed back to log */
+  uint32_t flags;                           /**< SSS_CREATE_* */
+} sss_create_desc;
+
+/* Flags for sss_settings.flags. */
+/** Follow-surface test (paper §3.2): a tap is blended back towards the centre colour in proportion
+ *  to its depth difference from the centre, fully once that difference reaches the kernel's reach
+ *  (its range R in profile millimetres, scaled like the taps by width and the pixel's alpha). */
+#define SSS_FOLLOW_SURFACE 0x1u
+#define SSS_SETTINGS_ALL_FLAGS 0x1u
+
+/* Tap-count presets (any odd count in [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES] is accepted). */
+#define SSS_SAMPLES_LOW 11
+#define SSS_SAMPLES_MEDIUM 17 /**< the paper's default */
+#define SSS_SAMPLES_HIGH 25
+#define SSS_MIN_SAMPLES 3
+#define SSS_MAX_SAMPLES 65
+
+/** Filter settings. Units: `width` is in world units, with the paper's meaning: one millimetre of
+ *  the diffusion profile spans (2/3)·width world units (so width = 1.5 · world units per mm; a
+ *  scene in metres with physical skin uses width = 0.0015; see sss_width_for_world_units_per_mm).
+ *  The per-pixel alpha of the colour texture (0..1) scales the width further, as in the paper. */
+typedef struct sss_settings {
+  uint32_t struct_size; /**< sizeof(sss_settings) */
+  float width;          /**< [0, 1e6], finite. 0 leaves the image unchanged. Default 0.0015 */
+  float strength[3];    /**< [0, 1] per channel: share of light that scatters. Default .78 .70 .75 */
+  float falloff[3];     /**< [0, 1] per channel: profile radius scale. Default .57 .13 .08 */
+  int32_t samples;      /**< odd, [3, 65]; taps per pass. Default 17 */
+  uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on) */
+} sss_settings;
+
+/** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
+ *  The module copies the stencil into its own renderbuffer (never samples or attaches the host's
+ *  texture while drawing to it). */
+typedef struct sss_stencil {
+  uint32_t depth_stencil_texture; /**< GL_TEXTURE_2D, GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, same size as colour */
+  uint32_t ref;                   /**< [0, 255] */
+  uint32_t mask;                  /**< [0, 255]; 0 makes every pixel pass */
+} sss_stencil;
+
+/* SSS_FRAME_* flags for sss_frame.flags. */
+/** Hardware depth was written with glClipControl(..., GL_ZERO_TO_ONE): window depth equals NDC z.
+ *  Without it depth = (z_ndc + 1) / 2 (the GL default). glDepthRange is assumed [0, 1]. */
+#define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
+#define SSS_FRAME_ALL_FLAGS 0x1u
+
+/** The full form of one application of the filter. */
+typedef struct sss_frame {
+  uint32_t struct_size;      /**< sizeof(sss_frame) */
+  uint32_t color_texture;    /**< GL_TEXTURE_2D, GL_RGBA16F or GL_RGBA32F: linear diffuse irradiance, alpha = strength 0..1 */
+  uint32_t depth_texture;    /**< GL_TEXTURE_2D, same size: hardware depth (DEPTH_COMPONENT16/24/32/32F,
+                                  DEPTH24_STENCIL8, DEPTH32F_STENCIL8) or linear view distance (R16F, R32F) */
+  uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D RGBA16F/RGBA32F of the same
+                                  size, not the colour texture: every pixel is written (untouched ones copied) */
+  const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
+  int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
+  uint32_t flags;            /**< SSS_FRAME_* */
+} sss_frame;
+
+/** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */
+SSS_API const char *sss_result_string(sss_result r);
+
+/** The message of the last failure of a call on `ctx` (owned by the context, valid until the next
+ *  call on it); with ctx NULL, the last failure on this thread of a call that had no context
+ *  (sss_create, or any call given a NULL context). "" when there was none. Never NULL. */
+SSS_API const char *sss_last_error(const sss_context *ctx);
+
+/** Creates a context. Needs a current GL context, 3.3 or newer (core or compatibility); compiles
+ *  the shaders and builds the GL objects the module owns in it.
+ *  @retval SSS_OK                        *out holds the new context
+ *  @retval SSS_ERROR_INVALID_ARGUMENT    desc or out NULL, bad struct_size, NULL get_proc_address, unknown flags
+ *  @retval SSS_ERROR_NO_CONTEXT          no GL context is current (glGetString(GL_VERSION) gave NULL)
+ *  @retval SSS_ERROR_UNSUPPORTED         the GL version is below 3.3
+ *  @retval SSS_ERROR_GL_FUNCTION_MISSING a needed GL function could not be loaded (named in the message)
+ *  @retval SSS_ERROR_SHADER_COMPILE      an embedded shader failed (driver log in the message)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY       allocation failed
+ *  On failure *out is set to NULL (when out is not NULL) and nothing is left in the GL. */
+SSS_API sss_result sss_create(const sss_create_desc *desc, sss_context **out);
+
+/** Deletes the context's GL objects (its GL context must be current) and frees it. NULL is a no-op. */
+SSS_API void sss_destroy(sss_context *ctx);
+
+/** Fills *s with the defaults documented on sss_settings (struct_size set). NULL is a no-op. */
+SSS_API void sss_default_settings(sss_settings *s);
+
+/** Width for a scene whose world unit is `world_units_per_mm` per millimetre (1.5 × it). */
+SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
+
+/** Validates and takes the settings; the kernel is rebuilt only when they change. Does not call GL.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples or
+ *                                     flags outside the ranges on sss_settings; the old settings stay */
+SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
+
+/** Current settings into *s (struct_size must be set by the caller).
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, or s->struct_size too small */
+SSS_API sss_result sss_get_settings(const sss_context *ctx, sss_settings *s);
+
+/** The camera's projection matrix, column-major as glUniformMatrix4fv takes it (m[12..14] is the
+ *  translation column). Perspective (finite or infinite far plane, off-centre, reversed-Z) and
+ *  orthographic matrices are accepted. Does not call GL.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or projection NULL, a non-finite element, or a singular matrix
+ *                                     (depth cannot be linearised, or a zero x/y scale); the old camera stays
+ *  @retval SSS_ERROR_UNSUPPORTED      w depends on x or y (m[3], m[7] not 0) or x/y are sheared (m[1], m[4] not 0) */
+SSS_API sss_result sss_set_camera(sss_context *ctx, const float projection[16]);
+
+/** Blurs `color_texture` in place: sss_apply_frame with output 0, the whole texture, default depth.
+ *  Same return codes as sss_apply_frame. */
+SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t depth_texture,
+                             const sss_stencil *stencil);
+
+/** Runs the two passes: horizontal from the colour texture into the module's RGBA16F target,
+ *  vertical into the output (or back into the colour texture). Pixels outside the stencil or with
+ *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
+ *                                       or output_texture equal to color_texture
+ *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
+ *  @retval SSS_ERROR_NO_CONTEXT         no GL context current
+ *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, not GL_TEXTURE_2D, a format outside
+ *                                       the lists on sss_frame, or sizes that differ
+ *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
+ *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
+ *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
+ *  On any failure the host's textures are unchanged. */
+SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
+
+/* ---- GL-free kernel API (math layer): usable without any GL context. ---- */
+
+/** Fills `samples` taps of the separable kernel of the paper's eq. (1) into out_rgba as
+ *  {weight r, weight g, weight b, offset in profile millimetres}: the centre tap first, then the
+ *  others from the most negative offset to the most positive. Offsets span [-R, R] with R = 2 mm for
+ *  samples <= 20 and 3 mm above, quadratically denser at the centre; each weight is the profile
+ *  integrated exactly over the tap's interval, normalised per channel, then strength applied
+ *  (centre: 1 - s + s·w0; others: s·w). Each channel sums to 1.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT samples even or outside [3, 65], a NULL pointer, strength or falloff
+ *                                     outside [0, 1] or not finite */
+SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3], const float falloff[3],
+                                        float *out_rgba);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSS_SSS_H */

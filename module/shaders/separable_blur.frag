@@ -1,0 +1,82 @@
+// One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
+// along `u_axis`, its footprint scaled per pixel by depth and by the strength in alpha, taps blended
+// back to the centre colour where the surface leaves the kernel's reach (follow-surface).
+//
+// Compile-time switches (prepended by the module):
+//   SSS_OUTSIDE   what a pixel that is not blurred writes: 0 its own value (horizontal pass, which
+//                 fills the intermediate everywhere), 1 nothing (discard: vertical pass writing back
+//                 into the host's colour), 2 the host's original colour (vertical pass into a
+//                 separate output texture)
+//   SSS_FOLLOW_SURFACE  0 or 1
+//   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
+
+uniform sampler2D u_source;    // the pass input (host colour, then the intermediate)
+uniform sampler2D u_depth;     // the host's depth
+#if SSS_OUTSIDE == 2
+uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
+#endif
+uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
+uniform int u_tap_count;
+uniform vec2 u_axis;                  // (1, 0) or (0, 1)
+uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
+uniform float u_follow_surface;       // 300 · distance to the projection window · width
+uniform vec2 u_ndc_from_depth;        // z_ndc = depth · x + y
+uniform vec4 u_depth_terms;           // projection m10, m11, m14, m15
+uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
+
+out vec4 o_color;
+
+float view_distance(float raw_depth) {
+#if SSS_LINEAR_DEPTH
+  return raw_depth;
+#else
+  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
+  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
+#endif
+}
+
+void leave_untouched(ivec2 pixel, vec4 centre) {
+#if SSS_OUTSIDE == 0
+  o_color = centre;
+#elif SSS_OUTSIDE == 1
+  discard;
+#else
+  o_color = texelFetch(u_original, pixel, 0);
+#endif
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 centre = texelFetch(u_source, pixel, 0);
+  float strength = centre.a;
+  if (!(strength > 0.0)) {
+    leave_untouched(pixel, centre);
+    return;
+  }
+  float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
+  float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
+  if (!(w > 0.0) || isinf(w)) {  // behind the camera, on an infinite far plane, or NaN
+    leave_untouched(pixel, centre);
+    return;
+  }
+
+  vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
+  float step_pixels = u_pixels_per_mm * strength / w;
+  vec3 sum = centre.rgb * u_kernel[0].rgb;
+  for (int i = 1; i < u_tap_count; ++i) {
+    vec2 position = clamp(gl_FragCoord.xy + u_axis * (u_kernel[i].a * step_pixels), u_clamp.xy, u_clamp.zw);
+    vec2 uv = position * texel_size;
+    vec3 tap = texture(u_source, uv).rgb;
+#if SSS_FOLLOW_SURFACE
+    float s = u_follow_surface * abs(centre_distance - view_distance(texture(u_depth, uv).r));
+    if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
+    tap = mix(tap, centre.rgb, s);
+#endif
+    sum += u_kernel[i].rgb * tap;
+  }
+#if SSS_OUTSIDE == 2
+  o_color = vec4(sum, texelFetch(u_original, pixel, 0).a);
+#else
+  o_color = vec4(sum, centre.a);
+#endif
+}

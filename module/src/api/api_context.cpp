@@ -1,0 +1,123 @@
+// sss_create and sss_destroy.
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <new>
+
+#include "../gl/state_guard.hpp"
+#include "context.hpp"
+#include "gl_session.hpp"
+
+namespace {
+
+using sss::api::fail;
+namespace gl = sss::gl;
+
+bool parse_version(const char* text, int* major, int* minor, bool* es) {
+  const char* es_prefix = "OpenGL ES ";
+  *es = std::strncmp(text, es_prefix, std::strlen(es_prefix)) == 0;
+  if (*es) text += std::strlen(es_prefix);
+  return std::sscanf(text, "%d.%d", major, minor) == 2;
+}
+
+bool has_extension(const gl::Functions& f, const char* name) {
+  gl::GLint count = 0;
+  f.GetIntegerv(gl::NUM_EXTENSIONS, &count);
+  for (gl::GLint i = 0; i < count; ++i) {
+    const auto* ext = reinterpret_cast<const char*>(f.GetStringi(gl::EXTENSIONS, static_cast<gl::GLuint>(i)));
+    if (ext != nullptr && std::strcmp(ext, name) == 0) return true;
+  }
+  return false;
+}
+
+// Checks the version before loading the rest, so that an old context reports UNSUPPORTED rather
+// than a missing 3.3 function.
+sss_result check_version(sss_context* ctx, sss_get_proc_address_fn get_proc_address, void* user) {
+  using GetStringFn = const gl::GLubyte*(SSS_GL_APIENTRY*)(gl::GLenum);
+  auto get_string = reinterpret_cast<GetStringFn>(get_proc_address("glGetString", user));
+  if (get_string == nullptr) return fail(nullptr, SSS_ERROR_GL_FUNCTION_MISSING, "get_proc_address(\"glGetString\") gave NULL");
+  const auto* version = reinterpret_cast<const char*>(get_string(gl::VERSION));
+  if (version == nullptr) {
+    return fail(nullptr, SSS_ERROR_NO_CONTEXT, "no GL context is current on this thread (glGetString(GL_VERSION) is NULL)");
+  }
+  bool es = false;
+  if (!parse_version(version, &ctx->gl_major, &ctx->gl_minor, &es)) {
+    return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\" cannot be parsed", version);
+  }
+  if (es) return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\": OpenGL ES contexts are not supported yet", version);
+  if (ctx->gl_major * 10 + ctx->gl_minor < 33) {
+    return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\": OpenGL 3.3 or newer is required", version);
+  }
+  return SSS_OK;
+}
+
+}  // namespace
+
+extern "C" {
+
+SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
+  if (out == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out is NULL");
+  *out = nullptr;
+  if (desc == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
+  if (desc->struct_size != sizeof(sss_create_desc)) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_create_desc) = %u",
+                desc->struct_size, static_cast<unsigned>(sizeof(sss_create_desc)));
+  }
+  if (desc->get_proc_address == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->get_proc_address is NULL");
+  if ((desc->flags & ~SSS_CREATE_ALL_FLAGS) != 0) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", desc->flags,
+                desc->flags & ~SSS_CREATE_ALL_FLAGS);
+  }
+
+  std::unique_ptr<sss_context> ctx(new (std::nothrow) sss_context);
+  if (!ctx) return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "allocating the context failed");
+  ctx->log = desc->log;
+  ctx->log_user = desc->log_user;
+  ctx->create_flags = desc->flags;
+
+  sss_result r = check_version(ctx.get(), desc->get_proc_address, desc->get_proc_address_user);
+  if (r != SSS_OK) return r;
+  std::string missing;
+  if (!gl::load_functions(desc->get_proc_address, desc->get_proc_address_user, &ctx->gl, &missing)) {
+    return fail(nullptr, SSS_ERROR_GL_FUNCTION_MISSING, "get_proc_address(\"%s\") gave NULL", missing.c_str());
+  }
+  gl::Functions& f = ctx->gl;
+  f.has_debug = f.PushDebugGroup != nullptr && f.PopDebugGroup != nullptr && f.ObjectLabel != nullptr &&
+                (ctx->gl_major * 10 + ctx->gl_minor >= 43 || has_extension(f, "GL_KHR_debug"));
+  const bool labels = (desc->flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
+
+  sss::api::drain_host_errors(ctx.get(), f);
+  std::string message;
+  {
+    gl::StateGuard guard(f, (desc->flags & SSS_CREATE_NO_STATE_RESTORE) == 0);
+    r = ctx->filter.init(&f, "#version 330 core\n", labels, &message);
+    if (r == SSS_OK) r = sss::api::check_gl_errors(nullptr, f, "creating the module's GL objects");
+  }
+  if (r != SSS_OK) {
+    ctx->filter.destroy();
+    sss::api::drain_host_errors(nullptr, f);
+    if (!message.empty()) fail(nullptr, r, message);
+    return r;
+  }
+  ctx->kernel = sss::math::separable_kernel(ctx->settings.samples, ctx->settings.strength, ctx->settings.falloff);
+  const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
+  char info[256];
+  std::snprintf(info, sizeof info, "sss %d.%d.%d on GL %d.%d, %s%s", SSS_VERSION_MAJOR, SSS_VERSION_MINOR,
+                SSS_VERSION_PATCH, ctx->gl_major, ctx->gl_minor, renderer ? renderer : "(unknown renderer)",
+                f.has_debug ? ", KHR_debug" : "");
+  sss::api::log(ctx.get(), SSS_LOG_INFO, info);
+  *out = ctx.release();
+  return SSS_OK;
+}
+
+SSS_API void sss_destroy(sss_context* ctx) {
+  if (ctx == nullptr) return;
+  if (ctx->gl.GetString(gl::VERSION) != nullptr) {
+    ctx->filter.destroy();  // deletes only the module's own objects: no binding changes
+  } else {
+    sss::api::log(ctx, SSS_LOG_WARNING, "sss_destroy without a current GL context: the module's GL objects leak");
+  }
+  delete ctx;
+}
+
+}  // extern "C"

@@ -1,0 +1,110 @@
+// Settings, camera and the GL-free kernel API: validation and bookkeeping, no GL calls.
+#include <cmath>
+#include <cstring>
+
+#include "context.hpp"
+#include "validation.hpp"
+
+namespace {
+
+using sss::api::fail;
+
+sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
+  sss::math::FilterSettings f;
+  f.width = s.width;
+  f.strength = {s.strength[0], s.strength[1], s.strength[2]};
+  f.falloff = {s.falloff[0], s.falloff[1], s.falloff[2]};
+  f.samples = s.samples;
+  f.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
+  return f;
+}
+
+}  // namespace
+
+extern "C" {
+
+SSS_API void sss_default_settings(sss_settings* s) {
+  if (s == nullptr) return;
+  const sss::math::FilterSettings d;
+  std::memset(s, 0, sizeof *s);
+  s->struct_size = sizeof *s;
+  s->width = d.width;
+  for (int c = 0; c < 3; ++c) {
+    s->strength[c] = d.strength[static_cast<std::size_t>(c)];
+    s->falloff[c] = d.falloff[static_cast<std::size_t>(c)];
+  }
+  s->samples = d.samples;
+  s->flags = d.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+}
+
+SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm) { return 1.5f * world_units_per_mm; }
+
+SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  const sss_result r = sss::api::check_settings(ctx, s);
+  if (r != SSS_OK) return r;
+  const sss::math::FilterSettings next = to_filter_settings(*s);
+  const sss::math::FilterSettings& old = ctx->settings;
+  const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
+  ctx->settings = next;
+  if (kernel_changed) {
+    ctx->kernel = sss::math::separable_kernel(next.samples, next.strength, next.falloff);
+    ++ctx->kernel_revision;
+  }
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_get_settings(const sss_context* ctx, sss_settings* s) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  if (s == nullptr) return fail(const_cast<sss_context*>(ctx), SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
+  if (s->struct_size != sizeof(sss_settings)) {
+    return fail(const_cast<sss_context*>(ctx), SSS_ERROR_INVALID_ARGUMENT,
+                "settings->struct_size = %u: expected sizeof(sss_settings) = %u", s->struct_size,
+                static_cast<unsigned>(sizeof(sss_settings)));
+  }
+  const sss::math::FilterSettings& f = ctx->settings;
+  s->width = f.width;
+  for (int c = 0; c < 3; ++c) {
+    s->strength[c] = f.strength[static_cast<std::size_t>(c)];
+    s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
+  }
+  s->samples = f.samples;
+  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_set_camera(sss_context* ctx, const float projection[16]) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  if (projection == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "projection is NULL");
+  sss::math::Matrix4 m;
+  std::memcpy(m.data(), projection, sizeof m);
+  std::string why;
+  switch (sss::math::check_projection(m, &why)) {
+    case sss::math::ProjectionCheck::ok: break;
+    case sss::math::ProjectionCheck::invalid: return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, why);
+    case sss::math::ProjectionCheck::unsupported: return fail(ctx, SSS_ERROR_UNSUPPORTED, why);
+  }
+  ctx->projection = m;
+  ctx->has_camera = true;
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3], const float falloff[3],
+                                        float* out_rgba) {
+  sss_result r = sss::api::check_samples(nullptr, samples);
+  if (r == SSS_OK) r = sss::api::check_unit_range(nullptr, "strength", strength);
+  if (r == SSS_OK) r = sss::api::check_unit_range(nullptr, "falloff", falloff);
+  if (r != SSS_OK) return r;
+  if (out_rgba == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_rgba is NULL");
+  const auto kernel = sss::math::separable_kernel(samples, {strength[0], strength[1], strength[2]},
+                                                  {falloff[0], falloff[1], falloff[2]});
+  for (std::size_t i = 0; i < kernel.size(); ++i) {
+    out_rgba[i * 4 + 0] = kernel[i].weight[0];
+    out_rgba[i * 4 + 1] = kernel[i].weight[1];
+    out_rgba[i * 4 + 2] = kernel[i].weight[2];
+    out_rgba[i * 4 + 3] = kernel[i].offset_mm;
+  }
+  return SSS_OK;
+}
+
+}  // extern "C"

@@ -1,0 +1,48 @@
+// The state behind an sss_context handle.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "../gl/gl_functions.hpp"
+#include "../gl/separable_filter.hpp"
+#include "../math/filter_constants.hpp"
+#include "../math/projection.hpp"
+#include "../math/separable_kernel.hpp"
+#include "sss/sss.h"
+
+struct sss_context {
+  sss::gl::Functions gl;
+  sss::gl::SeparableFilter filter;
+  sss_log_fn log = nullptr;
+  void* log_user = nullptr;
+  std::uint32_t create_flags = 0;
+  int gl_major = 0, gl_minor = 0;
+
+  sss::math::FilterSettings settings;
+  std::vector<sss::math::KernelTap> kernel;
+  std::uint64_t kernel_revision = 1;
+
+  sss::math::Matrix4 projection{};
+  bool has_camera = false;
+
+  std::string last_error;
+};
+
+namespace sss::api {
+
+// Records a failure: the message becomes sss_last_error's text (on ctx, or on the thread when ctx is
+// NULL) and goes to the log callback. Returns `code` for `return fail(...)`.
+sss_result fail(sss_context* ctx, sss_result code, const std::string& message);
+sss_result fail(sss_context* ctx, sss_result code, const char* format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+void log(const sss_context* ctx, int level, const std::string& message);
+
+// The thread's message for calls without a context.
+std::string& thread_error();
+
+}  // namespace sss::api

@@ -1,0 +1,77 @@
+#include "validation.hpp"
+
+#include <cmath>
+
+namespace sss::api {
+
+sss_result check_samples(sss_context* ctx, int32_t samples) {
+  if (samples < SSS_MIN_SAMPLES || samples > SSS_MAX_SAMPLES || samples % 2 == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "samples = %d: must be odd and in [%d, %d]", samples,
+                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
+  }
+  return SSS_OK;
+}
+
+sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]) {
+  if (values == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
+  for (int c = 0; c < 3; ++c) {
+    const float v = values[c];
+    if (!(v >= 0.0f && v <= 1.0f)) {  // also rejects NaN
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s[%d] = %g: must be in [0, 1]", name, c,
+                  static_cast<double>(v));
+    }
+  }
+  return SSS_OK;
+}
+
+sss_result check_settings(sss_context* ctx, const sss_settings* s) {
+  if (s == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
+  if (s->struct_size != sizeof(sss_settings)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->struct_size = %u: expected sizeof(sss_settings) = %u",
+                s->struct_size, static_cast<unsigned>(sizeof(sss_settings)));
+  }
+  if (!(s->width >= 0.0f && s->width <= 1e6f)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->width = %g: must be finite and in [0, 1e6]",
+                static_cast<double>(s->width));
+  }
+  sss_result r = check_unit_range(ctx, "settings->strength", s->strength);
+  if (r == SSS_OK) r = check_unit_range(ctx, "settings->falloff", s->falloff);
+  if (r == SSS_OK) r = check_samples(ctx, s->samples);
+  if (r != SSS_OK) return r;
+  if ((s->flags & ~SSS_SETTINGS_ALL_FLAGS) != 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->flags = 0x%x has unknown bits 0x%x", s->flags,
+                s->flags & ~SSS_SETTINGS_ALL_FLAGS);
+  }
+  return SSS_OK;
+}
+
+sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
+  if (frame == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame is NULL");
+  if (frame->struct_size != sizeof(sss_frame)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->struct_size = %u: expected sizeof(sss_frame) = %u",
+                frame->struct_size, static_cast<unsigned>(sizeof(sss_frame)));
+  }
+  if ((frame->flags & ~SSS_FRAME_ALL_FLAGS) != 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->flags = 0x%x has unknown bits 0x%x", frame->flags,
+                frame->flags & ~SSS_FRAME_ALL_FLAGS);
+  }
+  const int32_t* vp = frame->viewport;
+  const bool whole = vp[0] == 0 && vp[1] == 0 && vp[2] == 0 && vp[3] == 0;
+  if (!whole && (vp[0] < 0 || vp[1] < 0 || vp[2] <= 0 || vp[3] <= 0)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->viewport = {%d, %d, %d, %d}: x, y must be >= 0 and width, height > 0 (or all 0)", vp[0],
+                vp[1], vp[2], vp[3]);
+  }
+  if (frame->output_texture != 0 && frame->output_texture == frame->color_texture) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->output_texture = %u is the colour texture: pass 0 to write back in place",
+                frame->output_texture);
+  }
+  if (frame->stencil != nullptr && (frame->stencil->ref > 255u || frame->stencil->mask > 255u)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "stencil ref = %u, mask = %u: both must be in [0, 255]",
+                frame->stencil->ref, frame->stencil->mask);
+  }
+  return SSS_OK;
+}
+
+}  // namespace sss::api

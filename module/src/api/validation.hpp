@@ -1,0 +1,16 @@
+// Argument checks shared by the entry points. Each returns SSS_OK or fails through api::fail with a
+// message naming the argument and its value. None calls GL.
+#pragma once
+
+#include <array>
+
+#include "context.hpp"
+
+namespace sss::api {
+
+sss_result check_samples(sss_context* ctx, int32_t samples);
+sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]);
+sss_result check_settings(sss_context* ctx, const sss_settings* s);
+sss_result check_frame(sss_context* ctx, const sss_frame* frame);
+
+}  // namespace sss::api

@@ -1,0 +1,61 @@
+#include "gl_functions.hpp"
+
+#include <cstdio>
+
+namespace sss::gl {
+
+bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, Functions* out,
+                    std::string* missing) {
+  Functions f;
+  // Function pointers are converted from the loader's void* (POSIX and Windows guarantee this works).
+#define SSS_GL_LOAD_REQUIRED(ret, name, params)                                \
+  f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name, user)); \
+  if (f.name == nullptr) {                                                     \
+    if (missing) *missing = "gl" #name;                                        \
+    return false;                                                              \
+  }
+  SSS_GL_REQUIRED_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
+#undef SSS_GL_LOAD_REQUIRED
+#define SSS_GL_LOAD_OPTIONAL(ret, name, params) \
+  f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name, user));
+  SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+#undef SSS_GL_LOAD_OPTIONAL
+  *out = f;
+  return true;
+}
+
+std::string error_name(GLenum error) {
+  switch (error) {
+    case NO_ERROR: return "GL_NO_ERROR";
+    case INVALID_ENUM: return "GL_INVALID_ENUM";
+    case INVALID_VALUE: return "GL_INVALID_VALUE";
+    case INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    default: break;
+  }
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "0x%04X", error);
+  return buffer;
+}
+
+std::string format_name(GLint internal_format) {
+  switch (static_cast<GLenum>(internal_format)) {
+    case RGBA16F: return "GL_RGBA16F";
+    case RGBA32F: return "GL_RGBA32F";
+    case R16F: return "GL_R16F";
+    case R32F: return "GL_R32F";
+    case DEPTH_COMPONENT16: return "GL_DEPTH_COMPONENT16";
+    case DEPTH_COMPONENT24: return "GL_DEPTH_COMPONENT24";
+    case DEPTH_COMPONENT32: return "GL_DEPTH_COMPONENT32";
+    case DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
+    case DEPTH24_STENCIL8: return "GL_DEPTH24_STENCIL8";
+    case DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
+    default: break;
+  }
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "0x%04X", static_cast<unsigned>(internal_format));
+  return buffer;
+}
+
+}  // namespace sss::gl

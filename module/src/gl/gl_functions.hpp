@@ -1,0 +1,239 @@
+// The module's own GL function table, filled from the host's get_proc_address. Nothing here
+// collides with a host's loader: the functions are members of a struct, not global symbols, and
+// the types and constants are declared locally (no GL header is needed to build the module).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "sss/sss.h"
+
+#if defined(_WIN32)
+#define SSS_GL_APIENTRY __stdcall
+#else
+#define SSS_GL_APIENTRY
+#endif
+
+namespace sss::gl {
+
+using GLenum = unsigned int;
+using GLboolean = unsigned char;
+using GLbitfield = unsigned int;
+using GLint = int;
+using GLuint = unsigned int;
+using GLsizei = int;
+using GLfloat = float;
+using GLchar = char;
+using GLubyte = unsigned char;
+
+// X(return type, name without the gl prefix, parameter list). Required for GL 3.3.
+#define SSS_GL_REQUIRED_FUNCTIONS(X)                                                                   \
+  X(GLenum, GetError, (void))                                                                          \
+  X(const GLubyte*, GetString, (GLenum name))                                                          \
+  X(const GLubyte*, GetStringi, (GLenum name, GLuint index))                                           \
+  X(void, GetIntegerv, (GLenum pname, GLint * data))                                                   \
+  X(void, GetBooleanv, (GLenum pname, GLboolean * data))                                               \
+  X(GLboolean, IsEnabled, (GLenum cap))                                                                \
+  X(void, Enable, (GLenum cap))                                                                        \
+  X(void, Disable, (GLenum cap))                                                                       \
+  X(GLboolean, IsTexture, (GLuint texture))                                                            \
+  X(void, ActiveTexture, (GLenum texture))                                                             \
+  X(void, BindTexture, (GLenum target, GLuint texture))                                                \
+  X(void, GenTextures, (GLsizei n, GLuint * textures))                                                 \
+  X(void, DeleteTextures, (GLsizei n, const GLuint* textures))                                         \
+  X(void, TexImage2D, (GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, \
+                       GLint border, GLenum format, GLenum type, const void* pixels))                  \
+  X(void, TexParameteri, (GLenum target, GLenum pname, GLint param))                                   \
+  X(void, GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint * params))          \
+  X(void, GenSamplers, (GLsizei count, GLuint * samplers))                                             \
+  X(void, DeleteSamplers, (GLsizei count, const GLuint* samplers))                                     \
+  X(void, BindSampler, (GLuint unit, GLuint sampler))                                                  \
+  X(void, SamplerParameteri, (GLuint sampler, GLenum pname, GLint param))                              \
+  X(void, GenFramebuffers, (GLsizei n, GLuint * framebuffers))                                         \
+  X(void, DeleteFramebuffers, (GLsizei n, const GLuint* framebuffers))                                 \
+  X(void, BindFramebuffer, (GLenum target, GLuint framebuffer))                                        \
+  X(void, FramebufferTexture2D, (GLenum target, GLenum attachment, GLenum textarget, GLuint texture,   \
+                                 GLint level))                                                         \
+  X(void, FramebufferRenderbuffer, (GLenum target, GLenum attachment, GLenum renderbuffertarget,       \
+                                    GLuint renderbuffer))                                              \
+  X(GLenum, CheckFramebufferStatus, (GLenum target))                                                   \
+  X(void, BlitFramebuffer, (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0,           \
+                            GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter))    \
+  X(void, DrawBuffer, (GLenum buf))                                                                    \
+  X(void, ReadBuffer, (GLenum src))                                                                    \
+  X(void, GenRenderbuffers, (GLsizei n, GLuint * renderbuffers))                                       \
+  X(void, DeleteRenderbuffers, (GLsizei n, const GLuint* renderbuffers))                               \
+  X(void, BindRenderbuffer, (GLenum target, GLuint renderbuffer))                                      \
+  X(void, RenderbufferStorage, (GLenum target, GLenum internalformat, GLsizei width, GLsizei height))  \
+  X(GLuint, CreateShader, (GLenum type))                                                               \
+  X(void, ShaderSource, (GLuint shader, GLsizei count, const GLchar* const* string, const GLint* length)) \
+  X(void, CompileShader, (GLuint shader))                                                              \
+  X(void, GetShaderiv, (GLuint shader, GLenum pname, GLint * params))                                  \
+  X(void, GetShaderInfoLog, (GLuint shader, GLsizei bufSize, GLsizei * length, GLchar * infoLog))      \
+  X(void, DeleteShader, (GLuint shader))                                                               \
+  X(GLuint, CreateProgram, (void))                                                                     \
+  X(void, AttachShader, (GLuint program, GLuint shader))                                               \
+  X(void, LinkProgram, (GLuint program))                                                               \
+  X(void, GetProgramiv, (GLuint program, GLenum pname, GLint * params))                                \
+  X(void, GetProgramInfoLog, (GLuint program, GLsizei bufSize, GLsizei * length, GLchar * infoLog))    \
+  X(void, DeleteProgram, (GLuint program))                                                             \
+  X(void, UseProgram, (GLuint program))                                                                \
+  X(GLint, GetUniformLocation, (GLuint program, const GLchar* name))                                   \
+  X(void, Uniform1i, (GLint location, GLint v0))                                                       \
+  X(void, Uniform1f, (GLint location, GLfloat v0))                                                     \
+  X(void, Uniform2f, (GLint location, GLfloat v0, GLfloat v1))                                         \
+  X(void, Uniform4f, (GLint location, GLfloat v0, GLfloat v1, GLfloat v2, GLfloat v3))                 \
+  X(void, Uniform4fv, (GLint location, GLsizei count, const GLfloat* value))                           \
+  X(void, GenVertexArrays, (GLsizei n, GLuint * arrays))                                               \
+  X(void, DeleteVertexArrays, (GLsizei n, const GLuint* arrays))                                       \
+  X(void, BindVertexArray, (GLuint array))                                                             \
+  X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                                       \
+  X(void, Viewport, (GLint x, GLint y, GLsizei width, GLsizei height))                                 \
+  X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a))                             \
+  X(void, StencilFuncSeparate, (GLenum face, GLenum func, GLint ref, GLuint mask))                     \
+  X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass))                \
+  X(void, StencilMaskSeparate, (GLenum face, GLuint mask))                                             \
+  X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
+  X(void, BindBuffer, (GLenum target, GLuint buffer))
+
+// KHR_debug (core in 4.3): used only when present.
+#define SSS_GL_DEBUG_FUNCTIONS(X)                                                                      \
+  X(void, PushDebugGroup, (GLenum source, GLuint id, GLsizei length, const GLchar* message))           \
+  X(void, PopDebugGroup, (void))                                                                       \
+  X(void, ObjectLabel, (GLenum identifier, GLuint name, GLsizei length, const GLchar* label))
+
+struct Functions {
+#define SSS_GL_DECLARE_MEMBER(ret, name, params) ret(SSS_GL_APIENTRY* name) params = nullptr;
+  SSS_GL_REQUIRED_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_DEBUG_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+#undef SSS_GL_DECLARE_MEMBER
+  bool has_debug = false;  // KHR_debug present and all three functions loaded
+};
+
+// Loads the required functions; on failure returns the name of the first missing one ("glFoo").
+// Debug functions are loaded when found; `has_debug` is set later, once the version and extension
+// list confirm them (Mesa returns non-NULL stubs for anything, so a pointer proves nothing).
+bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, Functions* out,
+                    std::string* missing);
+
+// GL constants used by the module (values from the Khronos registry).
+enum : GLenum {
+  NO_ERROR = 0,
+  INVALID_ENUM = 0x0500,
+  INVALID_VALUE = 0x0501,
+  INVALID_OPERATION = 0x0502,
+  OUT_OF_MEMORY = 0x0505,
+  INVALID_FRAMEBUFFER_OPERATION = 0x0506,
+  VERSION = 0x1F02,
+  RENDERER = 0x1F01,
+  EXTENSIONS = 0x1F03,
+  NUM_EXTENSIONS = 0x821D,
+  MAJOR_VERSION = 0x821B,
+  MINOR_VERSION = 0x821C,
+  TEXTURE_2D = 0x0DE1,
+  TEXTURE0 = 0x84C0,
+  TEXTURE_BINDING_2D = 0x8069,
+  SAMPLER_BINDING = 0x8919,
+  ACTIVE_TEXTURE = 0x84E0,
+  TEXTURE_WIDTH = 0x1000,
+  TEXTURE_HEIGHT = 0x1001,
+  TEXTURE_INTERNAL_FORMAT = 0x1003,
+  TEXTURE_SAMPLES = 0x9106,
+  TEXTURE_MIN_FILTER = 0x2801,
+  TEXTURE_MAG_FILTER = 0x2800,
+  TEXTURE_WRAP_S = 0x2802,
+  TEXTURE_WRAP_T = 0x2803,
+  TEXTURE_COMPARE_MODE = 0x884C,
+  TEXTURE_MAX_LEVEL = 0x813D,
+  NEAREST = 0x2600,
+  LINEAR = 0x2601,
+  CLAMP_TO_EDGE = 0x812F,
+  NONE = 0,
+  RGBA = 0x1908,
+  HALF_FLOAT = 0x140B,
+  FLOAT = 0x1406,
+  RGBA16F = 0x881A,
+  RGBA32F = 0x8814,
+  R16F = 0x822D,
+  R32F = 0x822E,
+  DEPTH_COMPONENT16 = 0x81A5,
+  DEPTH_COMPONENT24 = 0x81A6,
+  DEPTH_COMPONENT32 = 0x81A7,
+  DEPTH_COMPONENT32F = 0x8CAC,
+  DEPTH24_STENCIL8 = 0x88F0,
+  DEPTH32F_STENCIL8 = 0x8CAD,
+  FRAMEBUFFER = 0x8D40,
+  READ_FRAMEBUFFER = 0x8CA8,
+  DRAW_FRAMEBUFFER = 0x8CA9,
+  READ_FRAMEBUFFER_BINDING = 0x8CAA,
+  DRAW_FRAMEBUFFER_BINDING = 0x8CA6,
+  RENDERBUFFER = 0x8D41,
+  RENDERBUFFER_BINDING = 0x8CA7,
+  COLOR_ATTACHMENT0 = 0x8CE0,
+  DEPTH_STENCIL_ATTACHMENT = 0x821A,
+  STENCIL_ATTACHMENT = 0x8D20,
+  FRAMEBUFFER_COMPLETE = 0x8CD5,
+  STENCIL_BUFFER_BIT = 0x00000400,
+  VERTEX_SHADER = 0x8B31,
+  FRAGMENT_SHADER = 0x8B30,
+  COMPILE_STATUS = 0x8B81,
+  LINK_STATUS = 0x8B82,
+  INFO_LOG_LENGTH = 0x8B84,
+  CURRENT_PROGRAM = 0x8B8D,
+  VERTEX_ARRAY_BINDING = 0x85B5,
+  PIXEL_UNPACK_BUFFER = 0x88EC,
+  PIXEL_UNPACK_BUFFER_BINDING = 0x88EF,
+  TRIANGLES = 0x0004,
+  VIEWPORT = 0x0BA2,
+  SCISSOR_TEST = 0x0C11,
+  DEPTH_TEST = 0x0B71,
+  STENCIL_TEST = 0x0B90,
+  BLEND = 0x0BE2,
+  CULL_FACE = 0x0B44,
+  FRAMEBUFFER_SRGB = 0x8DB9,
+  RASTERIZER_DISCARD = 0x8C89,
+  SAMPLE_ALPHA_TO_COVERAGE = 0x809E,
+  SAMPLE_COVERAGE = 0x80A0,
+  SAMPLE_MASK = 0x8E51,
+  POLYGON_OFFSET_FILL = 0x8037,
+  DEPTH_CLAMP = 0x864F,
+  COLOR_LOGIC_OP = 0x0BF2,
+  CLIP_DISTANCE0 = 0x3000,
+  COLOR_WRITEMASK = 0x0C23,
+  POLYGON_MODE = 0x0B40,
+  FRONT_AND_BACK = 0x0408,
+  FRONT = 0x0404,
+  BACK = 0x0405,
+  FILL = 0x1B02,
+  STENCIL_FUNC = 0x0B92,
+  STENCIL_VALUE_MASK = 0x0B93,
+  STENCIL_REF = 0x0B97,
+  STENCIL_FAIL = 0x0B94,
+  STENCIL_PASS_DEPTH_FAIL = 0x0B95,
+  STENCIL_PASS_DEPTH_PASS = 0x0B96,
+  STENCIL_WRITEMASK = 0x0B98,
+  STENCIL_BACK_FUNC = 0x8800,
+  STENCIL_BACK_VALUE_MASK = 0x8CA4,
+  STENCIL_BACK_REF = 0x8CA3,
+  STENCIL_BACK_FAIL = 0x8801,
+  STENCIL_BACK_PASS_DEPTH_FAIL = 0x8802,
+  STENCIL_BACK_PASS_DEPTH_PASS = 0x8803,
+  STENCIL_BACK_WRITEMASK = 0x8CA5,
+  EQUAL = 0x0202,
+  NOTEQUAL = 0x0205,
+  KEEP = 0x1E00,
+  DEBUG_SOURCE_APPLICATION = 0x824A,
+  PROGRAM = 0x82E2,
+  SHADER = 0x82E1,
+  VERTEX_ARRAY = 0x8074,
+  SAMPLER = 0x82E6,
+  TEXTURE = 0x1702,
+};
+
+// "GL_INVALID_OPERATION" for an error code, or "0x1234".
+std::string error_name(GLenum error);
+// "GL_RGBA16F" for the internal formats the module knows, or "0x1234".
+std::string format_name(GLint internal_format);
+
+}  // namespace sss::gl

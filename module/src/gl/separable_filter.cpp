@@ -1,0 +1,359 @@
+#include "separable_filter.hpp"
+
+#include <cstdio>
+
+#include "debug_label.hpp"
+#include "embedded_shaders.hpp"
+#include "program.hpp"
+#include "state_guard.hpp"
+
+namespace sss::gl {
+
+namespace {
+constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
+}
+
+sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, bool labels,
+                                 std::string* message) {
+  gl_ = gl;
+  glsl_header_ = std::move(glsl_header);
+  labels_ = labels;
+  const Functions& f = *gl_;
+
+  f.GenVertexArrays(1, &vertex_array_);
+  // A framebuffer name becomes an object on first bind; the caller's StateGuard restores bindings.
+  GLuint framebuffers[3] = {0, 0, 0};
+  f.GenFramebuffers(3, framebuffers);
+  intermediate_framebuffer_ = framebuffers[0];
+  output_framebuffer_ = framebuffers[1];
+  stencil_source_framebuffer_ = framebuffers[2];
+  for (GLuint fb : framebuffers) f.BindFramebuffer(FRAMEBUFFER, fb);
+  f.BindVertexArray(vertex_array_);
+  // The stencil source is only ever read from, and has no colour.
+  f.BindFramebuffer(READ_FRAMEBUFFER, stencil_source_framebuffer_);
+  f.ReadBuffer(NONE);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, stencil_source_framebuffer_);
+  f.DrawBuffer(NONE);
+
+  // One sampler for every tap: bilinear, clamped, no depth comparison (it overrides whatever
+  // parameters the host set on its own textures, which the module never changes).
+  f.GenSamplers(1, &sampler_);
+  f.SamplerParameteri(sampler_, TEXTURE_MIN_FILTER, static_cast<GLint>(LINEAR));
+  f.SamplerParameteri(sampler_, TEXTURE_MAG_FILTER, static_cast<GLint>(LINEAR));
+  f.SamplerParameteri(sampler_, TEXTURE_WRAP_S, static_cast<GLint>(CLAMP_TO_EDGE));
+  f.SamplerParameteri(sampler_, TEXTURE_WRAP_T, static_cast<GLint>(CLAMP_TO_EDGE));
+  f.SamplerParameteri(sampler_, TEXTURE_COMPARE_MODE, static_cast<GLint>(NONE));
+
+  label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
+  label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
+  label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
+  label_object(f, labels_, FRAMEBUFFER, stencil_source_framebuffer_, "sss host stencil source");
+  label_object(f, labels_, SAMPLER, sampler_, "sss bilinear clamp");
+
+  std::string log;
+  copy_program_ = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::copy_frag, &log);
+  if (copy_program_ == 0) {
+    *message = "copy shader: " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  copy_source_location_ = f.GetUniformLocation(copy_program_, "u_source");
+  label_object(f, labels_, PROGRAM, copy_program_, "sss copy");
+
+  // The variants every host uses (write back, follow-surface, hardware depth) are built now so a
+  // driver that cannot compile them fails in sss_create rather than in the first frame.
+  BlurProgram* unused = nullptr;
+  sss_result r = blur_program(Outside::write_centre, true, false, &unused, message);
+  if (r == SSS_OK) r = blur_program(Outside::discard, true, false, &unused, message);
+  return r;
+}
+
+void SeparableFilter::destroy() {
+  if (gl_ == nullptr) return;
+  const Functions& f = *gl_;
+  for (BlurProgram& p : blur_programs_) {
+    if (p.program != 0) f.DeleteProgram(p.program);
+    p = BlurProgram{};
+  }
+  if (copy_program_ != 0) f.DeleteProgram(copy_program_);
+  GLuint framebuffers[3] = {intermediate_framebuffer_, output_framebuffer_, stencil_source_framebuffer_};
+  f.DeleteFramebuffers(3, framebuffers);
+  if (intermediate_ != 0) f.DeleteTextures(1, &intermediate_);
+  if (stencil_buffer_ != 0) f.DeleteRenderbuffers(1, &stencil_buffer_);
+  if (sampler_ != 0) f.DeleteSamplers(1, &sampler_);
+  if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
+  *this = SeparableFilter{};
+}
+
+sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
+                                         std::string* message) {
+  const int index = (static_cast<int>(outside) * 2 + (follow_surface ? 1 : 0)) * 2 + (linear_depth ? 1 : 0);
+  BlurProgram& p = blur_programs_[static_cast<std::size_t>(index)];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+
+  char defines[160];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
+                "#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), follow_surface ? 1 : 0, linear_depth ? 1 : 0,
+                static_cast<int>(SSS_MAX_SAMPLES));
+  std::string log;
+  const Functions& f = *gl_;
+  p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::separable_blur_frag, &log);
+  if (p.program == 0) {
+    *message = "separable blur shader (" + std::string(defines) + "): " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  char label[64];
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d", static_cast<int>(outside),
+                follow_surface ? 1 : 0, linear_depth ? 1 : 0);
+  label_object(f, labels_, PROGRAM, p.program, label);
+  p.source = f.GetUniformLocation(p.program, "u_source");
+  p.depth = f.GetUniformLocation(p.program, "u_depth");
+  p.original = f.GetUniformLocation(p.program, "u_original");
+  p.kernel = f.GetUniformLocation(p.program, "u_kernel");
+  p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
+  p.axis = f.GetUniformLocation(p.program, "u_axis");
+  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
+  p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  // Sampler units never change: set them once.
+  f.UseProgram(p.program);
+  f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
+  f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
+  if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_intermediate(int width, int height, std::string* message) {
+  if (intermediate_ != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
+  const Functions& f = *gl_;
+  if (intermediate_ == 0) f.GenTextures(1, &intermediate_);
+  f.ActiveTexture(TEXTURE0);
+  f.BindTexture(TEXTURE_2D, intermediate_);
+  f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);  // NULL data must not read from a host buffer
+  f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
+  f.TexImage2D(TEXTURE_2D, 0, static_cast<GLint>(RGBA16F), width, height, 0, RGBA, HALF_FLOAT, nullptr);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d RGBA16F intermediate target failed: %s", width,
+                  height, error_name(error).c_str());
+    *message = buffer;
+    f.DeleteTextures(1, &intermediate_);
+    intermediate_ = 0;
+    intermediate_width_ = intermediate_height_ = 0;
+    return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
+  }
+  label_object(f, labels_, TEXTURE, intermediate_, "sss intermediate (horizontal pass)");
+  intermediate_width_ = width;
+  intermediate_height_ = height;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, intermediate_, 0);
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_stencil_buffer(GLint format, int width, int height, std::string* message) {
+  if (stencil_buffer_ != 0 && stencil_format_ == format && stencil_width_ == width && stencil_height_ == height) {
+    return SSS_OK;
+  }
+  const Functions& f = *gl_;
+  if (stencil_buffer_ == 0) f.GenRenderbuffers(1, &stencil_buffer_);
+  f.BindRenderbuffer(RENDERBUFFER, stencil_buffer_);
+  // The copy is a blit, which needs the host's exact depth-stencil format.
+  f.RenderbufferStorage(RENDERBUFFER, static_cast<GLenum>(format), width, height);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d %s stencil copy failed: %s", width, height,
+                  format_name(format).c_str(), error_name(error).c_str());
+    *message = buffer;
+    f.DeleteRenderbuffers(1, &stencil_buffer_);
+    stencil_buffer_ = 0;
+    stencil_format_ = 0;
+    return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
+  }
+  label_object(f, labels_, RENDERBUFFER, stencil_buffer_, "sss stencil copy");
+  stencil_format_ = format;
+  stencil_width_ = width;
+  stencil_height_ = height;
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::check_framebuffer(const char* which, std::string* message) {
+  const GLenum status = gl_->CheckFramebufferStatus(DRAW_FRAMEBUFFER);
+  if (status == FRAMEBUFFER_COMPLETE) return SSS_OK;
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "the %s framebuffer is incomplete (status 0x%04X)", which, status);
+  *message = buffer;
+  return SSS_ERROR_FRAMEBUFFER;
+}
+
+sss_result SeparableFilter::copy_stencil(const StencilInput& stencil, int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  sss_result r = ensure_stencil_buffer(stencil.texture.internal_format, width, height, message);
+  if (r != SSS_OK) return r;
+  f.BindFramebuffer(READ_FRAMEBUFFER, stencil_source_framebuffer_);
+  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, TEXTURE_2D, stencil.texture.name, 0);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer_);
+  if (gl_->CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
+    *message = "the host's depth-stencil texture cannot be read as a framebuffer attachment";
+    r = SSS_ERROR_FRAMEBUFFER;
+  } else {
+    r = check_framebuffer("horizontal pass", message);
+  }
+  if (r == SSS_OK) f.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, STENCIL_BUFFER_BIT, NEAREST);
+  // Never keep a host texture attached: its storage would outlive the host's glDeleteTextures.
+  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+void SeparableFilter::set_stencil_test(const StencilInput* stencil, GLenum func) {
+  const Functions& f = *gl_;
+  if (stencil == nullptr) {
+    f.Disable(STENCIL_TEST);
+    return;
+  }
+  f.Enable(STENCIL_TEST);
+  f.StencilFuncSeparate(FRONT_AND_BACK, func, static_cast<GLint>(stencil->ref), stencil->mask);
+  f.StencilOpSeparate(FRONT_AND_BACK, KEEP, KEEP, KEEP);
+  f.StencilMaskSeparate(FRONT_AND_BACK, 0);
+}
+
+void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, int axis) {
+  const Functions& f = *gl_;
+  const math::PassConstants& k = run.constants;
+  f.UseProgram(p.program);
+  if (p.kernel_revision != run.kernel_revision) {
+    std::vector<float> packed;
+    packed.reserve(run.kernel->size() * 4);
+    for (const math::KernelTap& tap : *run.kernel) {
+      packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
+    }
+    f.Uniform4fv(p.kernel, static_cast<GLsizei>(run.kernel->size()), packed.data());
+    f.Uniform1i(p.tap_count, static_cast<GLint>(run.kernel->size()));
+    p.kernel_revision = run.kernel_revision;
+  }
+  f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
+  f.Uniform1f(p.follow_surface, k.follow_surface_factor);
+  f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+  f.ActiveTexture(TEXTURE0 + kSourceUnit);
+  f.BindTexture(TEXTURE_2D, source);
+  f.BindSampler(kSourceUnit, sampler_);
+  f.ActiveTexture(TEXTURE0 + kDepthUnit);
+  f.BindTexture(TEXTURE_2D, run.depth.name);
+  f.BindSampler(kDepthUnit, sampler_);
+  f.DrawArrays(TRIANGLES, 0, 3);
+}
+
+void SeparableFilter::draw_copy(GLuint source) {
+  const Functions& f = *gl_;
+  f.UseProgram(copy_program_);
+  f.Uniform1i(copy_source_location_, static_cast<GLint>(kSourceUnit));
+  f.ActiveTexture(TEXTURE0 + kSourceUnit);
+  f.BindTexture(TEXTURE_2D, source);
+  f.BindSampler(kSourceUnit, sampler_);
+  f.DrawArrays(TRIANGLES, 0, 3);
+}
+
+sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
+  const Functions& f = *gl_;
+  const int width = run.color.width, height = run.color.height;
+  const bool write_back = run.output.name == 0;
+  const bool linear_depth = run.constants.linear_depth;
+
+  if (run.identity) return run_identity(run, message);
+  sss_result r = ensure_intermediate(width, height, message);
+  if (r != SSS_OK) return r;
+
+  BlurProgram* horizontal = nullptr;
+  BlurProgram* vertical = nullptr;
+  r = blur_program(Outside::write_centre, run.follow_surface, linear_depth, &horizontal, message);
+  if (r == SSS_OK) {
+    r = blur_program(write_back ? Outside::discard : Outside::copy_original, run.follow_surface, linear_depth,
+                     &vertical, message);
+  }
+  if (r != SSS_OK) return r;
+
+  set_pass_state(f);
+  f.BindVertexArray(vertex_array_);
+  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+
+  // Attachments: the stencil copy goes on both targets, or comes off both.
+  if (run.stencil != nullptr) {
+    r = copy_stencil(*run.stencil, width, height, message);  // creates stencil_buffer_ on first use
+    if (r != SSS_OK) return r;
+  }
+  const GLuint stencil_attachment = run.stencil != nullptr ? stencil_buffer_ : 0;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("horizontal pass", message);
+  if (r != SSS_OK) return r;
+  const GLuint output = write_back ? run.color.name : run.output.name;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("vertical pass", message);
+
+  if (r == SSS_OK) {
+    // Horizontal: host colour -> intermediate. Pixels the stencil excludes are copied so the
+    // vertical pass's taps find defined values there.
+    {
+      DebugGroup group(f, labels_, "sss horizontal pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_blur(*horizontal, run, run.color.name, 0);
+      if (run.stencil != nullptr) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(run.color.name);
+      }
+    }
+    // Vertical: intermediate -> output. Writing back, the host colour is attached here, so it is
+    // bound to no unit, and alpha is masked off (it keeps the host's exact value).
+    {
+      DebugGroup group(f, labels_, "sss vertical pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+      f.ActiveTexture(TEXTURE0 + kOriginalUnit);
+      f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
+      f.BindSampler(kOriginalUnit, sampler_);
+      if (write_back) f.ColorMask(1, 1, 1, 0);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_blur(*vertical, run, intermediate_, 1);
+      if (run.stencil != nullptr && !write_back) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(run.color.name);
+      }
+    }
+  }
+  // Detach the host's texture (see copy_stencil).
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+sss_result SeparableFilter::run_identity(const FilterRun& run, std::string* message) {
+  if (run.output.name == 0) return SSS_OK;  // in place: nothing changes
+  const Functions& f = *gl_;
+  set_pass_state(f);
+  f.Disable(STENCIL_TEST);
+  f.BindVertexArray(vertex_array_);
+  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
+  sss_result r = check_framebuffer("output copy", message);
+  if (r == SSS_OK) {
+    DebugGroup group(f, labels_, "sss copy (identity settings)");
+    draw_copy(run.color.name);
+  }
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+}  // namespace sss::gl

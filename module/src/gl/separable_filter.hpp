@@ -1,0 +1,80 @@
+// The two full-screen passes on the GPU and the GL objects they own: programs (one per variant,
+// built on first use), the RGBA16F intermediate, the stencil copy, framebuffers, sampler and VAO.
+// Callers validate their inputs first (api layer) and wrap the call in a StateGuard.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "../math/filter_constants.hpp"
+#include "../math/separable_kernel.hpp"
+#include "gl_functions.hpp"
+#include "texture_query.hpp"
+
+namespace sss::gl {
+
+struct StencilInput {
+  TextureInfo texture;  // the host's depth-stencil texture
+  GLuint ref = 0, mask = 0;
+};
+
+struct FilterRun {
+  TextureInfo color;
+  TextureInfo depth;
+  TextureInfo output;                      // name 0: write back into color
+  const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
+  std::array<int, 4> viewport = {0, 0, 0, 0};
+  const std::vector<math::KernelTap>* kernel = nullptr;
+  std::uint64_t kernel_revision = 0;       // changes whenever the kernel does
+  math::PassConstants constants;
+  bool follow_surface = false;
+  bool identity = false;                   // nothing to blur: only copy into a separate output
+};
+
+class SeparableFilter {
+ public:
+  // Builds the objects that do not depend on frame size and the most common program variants, so a
+  // broken driver fails at create. Returns SSS_OK or an error with `message` set.
+  sss_result init(const Functions* gl, std::string glsl_header, bool labels, std::string* message);
+  void destroy();
+  sss_result run(const FilterRun& run, std::string* message);
+
+ private:
+  enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
+  struct BlurProgram {
+    GLuint program = 0;
+    GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
+          follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1;
+    std::uint64_t kernel_revision = 0;  // 0: never uploaded
+  };
+  static constexpr int kVariantCount = 3 * 2 * 2;
+
+  sss_result blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
+                          std::string* message);
+  sss_result run_identity(const FilterRun& run, std::string* message);
+  sss_result ensure_intermediate(int width, int height, std::string* message);
+  sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
+  sss_result copy_stencil(const StencilInput& stencil, int width, int height, std::string* message);
+  sss_result check_framebuffer(const char* which, std::string* message);
+  void draw_blur(BlurProgram& program, const FilterRun& run, GLuint source, int axis);
+  void draw_copy(GLuint source);
+  void set_stencil_test(const StencilInput* stencil, GLenum func);
+
+  const Functions* gl_ = nullptr;
+  std::string glsl_header_;
+  bool labels_ = false;
+  std::array<BlurProgram, kVariantCount> blur_programs_{};
+  GLuint copy_program_ = 0;
+  GLint copy_source_location_ = -1;
+  GLuint vertex_array_ = 0, sampler_ = 0;
+  GLuint intermediate_ = 0;
+  int intermediate_width_ = 0, intermediate_height_ = 0;
+  GLuint stencil_buffer_ = 0;
+  GLint stencil_format_ = 0;
+  int stencil_width_ = 0, stencil_height_ = 0;
+  GLuint intermediate_framebuffer_ = 0, output_framebuffer_ = 0, stencil_source_framebuffer_ = 0;
+};
+
+}  // namespace sss::gl

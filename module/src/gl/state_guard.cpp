@@ -1,0 +1,101 @@
+#include "state_guard.hpp"
+
+namespace sss::gl {
+
+StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(enabled) {
+  if (!enabled_) return;
+  gl_.GetIntegerv(CURRENT_PROGRAM, &program_);
+  gl_.GetIntegerv(VERTEX_ARRAY_BINDING, &vertex_array_);
+  gl_.GetIntegerv(DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
+  gl_.GetIntegerv(READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
+  gl_.GetIntegerv(RENDERBUFFER_BINDING, &renderbuffer_);
+  gl_.GetIntegerv(PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
+  gl_.GetIntegerv(ACTIVE_TEXTURE, &active_texture_);
+  for (int unit = 0; unit < kUnitCount; ++unit) {
+    gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
+    gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
+    gl_.GetIntegerv(SAMPLER_BINDING, &samplers_[static_cast<std::size_t>(unit)]);
+  }
+  gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
+  gl_.GetIntegerv(VIEWPORT, viewport_.data());
+  for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
+  depth_clamp_ = gl_.IsEnabled(DEPTH_CLAMP);
+  logic_op_ = gl_.IsEnabled(COLOR_LOGIC_OP);
+  for (int i = 0; i < kClipDistances; ++i) {
+    clip_distances_[static_cast<std::size_t>(i)] = gl_.IsEnabled(CLIP_DISTANCE0 + static_cast<GLenum>(i));
+  }
+  gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
+  gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
+  save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
+                    STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
+  save_stencil_face(STENCIL_BACK_FUNC, STENCIL_BACK_REF, STENCIL_BACK_VALUE_MASK, STENCIL_BACK_FAIL,
+                    STENCIL_BACK_PASS_DEPTH_FAIL, STENCIL_BACK_PASS_DEPTH_PASS, STENCIL_BACK_WRITEMASK, &back_);
+}
+
+void StateGuard::save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
+                                   GLenum depth_pass, GLenum write_mask, StencilFace* face) const {
+  gl_.GetIntegerv(func, &face->func);
+  gl_.GetIntegerv(ref, &face->ref);
+  gl_.GetIntegerv(value_mask, &face->value_mask);
+  gl_.GetIntegerv(fail, &face->fail);
+  gl_.GetIntegerv(depth_fail, &face->depth_fail);
+  gl_.GetIntegerv(depth_pass, &face->depth_pass);
+  gl_.GetIntegerv(write_mask, &face->write_mask);
+}
+
+void StateGuard::restore_stencil_face(GLenum face_enum, const StencilFace& face) const {
+  gl_.StencilFuncSeparate(face_enum, static_cast<GLenum>(face.func), face.ref, static_cast<GLuint>(face.value_mask));
+  gl_.StencilOpSeparate(face_enum, static_cast<GLenum>(face.fail), static_cast<GLenum>(face.depth_fail),
+                        static_cast<GLenum>(face.depth_pass));
+  gl_.StencilMaskSeparate(face_enum, static_cast<GLuint>(face.write_mask));
+}
+
+StateGuard::~StateGuard() {
+  if (!enabled_) return;
+  restore_stencil_face(FRONT, front_);
+  restore_stencil_face(BACK, back_);
+  gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+  gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
+  for (int i = 0; i < kClipDistances; ++i) {
+    const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
+    clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
+  }
+  logic_op_ ? gl_.Enable(COLOR_LOGIC_OP) : gl_.Disable(COLOR_LOGIC_OP);
+  depth_clamp_ ? gl_.Enable(DEPTH_CLAMP) : gl_.Disable(DEPTH_CLAMP);
+  for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
+    capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
+  }
+  gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  for (int unit = 0; unit < kUnitCount; ++unit) {
+    gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
+    gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
+    gl_.BindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(samplers_[static_cast<std::size_t>(unit)]));
+  }
+  gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
+  gl_.BindBuffer(PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+  gl_.BindRenderbuffer(RENDERBUFFER, static_cast<GLuint>(renderbuffer_));
+  gl_.BindFramebuffer(READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
+  gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
+  gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
+  gl_.UseProgram(static_cast<GLuint>(program_));
+}
+
+void set_pass_state(const Functions& gl) {
+  gl.Disable(SCISSOR_TEST);
+  gl.Disable(DEPTH_TEST);
+  gl.Disable(BLEND);
+  gl.Disable(CULL_FACE);
+  gl.Disable(FRAMEBUFFER_SRGB);
+  gl.Disable(RASTERIZER_DISCARD);
+  gl.Disable(SAMPLE_ALPHA_TO_COVERAGE);
+  gl.Disable(SAMPLE_COVERAGE);
+  gl.Disable(SAMPLE_MASK);
+  gl.Disable(POLYGON_OFFSET_FILL);
+  gl.Disable(DEPTH_CLAMP);
+  gl.Disable(COLOR_LOGIC_OP);
+  for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
+  gl.PolygonMode(FRONT_AND_BACK, FILL);
+  gl.ColorMask(1, 1, 1, 1);
+}
+
+}  // namespace sss::gl

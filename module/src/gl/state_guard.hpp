@@ -1,0 +1,52 @@
+// Saves, on construction, every GL state the module may change (the list in sss.h) and restores it
+// on destruction. Disabled (a no-op) when the host opted out with SSS_CREATE_NO_STATE_RESTORE.
+#pragma once
+
+#include <array>
+
+#include "gl_functions.hpp"
+
+namespace sss::gl {
+
+// Texture units the module binds: 0 pass source, 1 depth, 2 original colour.
+constexpr int kUnitCount = 3;
+
+class StateGuard {
+ public:
+  StateGuard(const Functions& gl, bool enabled);
+  ~StateGuard();
+  StateGuard(const StateGuard&) = delete;
+  StateGuard& operator=(const StateGuard&) = delete;
+
+ private:
+  struct StencilFace {
+    GLint func, ref, value_mask, fail, depth_fail, depth_pass, write_mask;
+  };
+  static constexpr int kClipDistances = 8;
+  static constexpr std::array<GLenum, 11> kCapabilities = {
+      SCISSOR_TEST,        DEPTH_TEST,      STENCIL_TEST, BLEND,      CULL_FACE, FRAMEBUFFER_SRGB,
+      RASTERIZER_DISCARD,  SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL};
+
+  void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
+                         GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
+  void restore_stencil_face(GLenum face_enum, const StencilFace& face) const;
+
+  const Functions& gl_;
+  bool enabled_;
+  GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
+  GLint active_texture_ = 0, unpack_buffer_ = 0;
+  std::array<GLint, kUnitCount> textures_{}, samplers_{};
+  std::array<GLint, 4> viewport_{};
+  std::array<GLboolean, 11> capabilities_{};
+  GLboolean depth_clamp_ = 0, logic_op_ = 0;
+  std::array<GLboolean, kClipDistances> clip_distances_{};
+  std::array<GLboolean, 4> color_mask_{};
+  std::array<GLint, 2> polygon_mode_{};
+  StencilFace front_{}, back_{};
+};
+
+// Sets the fixed-function state the passes need (after a StateGuard saved it): everything that
+// could drop or alter a full-screen triangle's fragments is switched off.
+void set_pass_state(const Functions& gl);
+
+}  // namespace sss::gl

@@ -1,0 +1,115 @@
+#include "cpu_separable_filter.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "half_float.hpp"
+
+namespace sss::math {
+
+namespace {
+
+using Rgba = std::array<float, 4>;
+
+struct Plane {
+  int width, height, channels;
+  const float* data;
+
+  float at(int x, int y, int c) const {
+    x = std::clamp(x, 0, width - 1);
+    y = std::clamp(y, 0, height - 1);
+    return data[(static_cast<std::size_t>(y) * width + x) * channels + c];
+  }
+  // GL_LINEAR with clamp-to-edge at a position in pixel units (texel centres at +0.5).
+  float bilinear(float px, float py, int c) const {
+    const float x = px - 0.5f, y = py - 0.5f;
+    const float x0 = std::floor(x), y0 = std::floor(y);
+    const float fx = x - x0, fy = y - y0;
+    const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+    const float bottom = at(ix, iy, c) * (1.0f - fx) + at(ix + 1, iy, c) * fx;
+    const float top = at(ix, iy + 1, c) * (1.0f - fx) + at(ix + 1, iy + 1, c) * fx;
+    return bottom * (1.0f - fy) + top * fy;
+  }
+};
+
+// One pass at pixel (x, y) along axis `axis` (0: x, 1: y). Returns false when the pixel is left
+// as it is (not translucent or no usable depth).
+bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, const Plane& source,
+                  const Plane& depth, int axis, int x, int y, Rgba* result) {
+  const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
+  const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
+  const float strength = centre[3];
+  if (!(strength > 0.0f)) return false;
+  const float centre_distance = linearise_depth(k, depth.at(x, y, 0));
+  const float w = clip_w(k, centre_distance);
+  if (!(w > 0.0f) || std::isinf(w)) return false;
+
+  const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
+  Rgba sum = {centre[0] * kernel[0].weight[0], centre[1] * kernel[0].weight[1], centre[2] * kernel[0].weight[2],
+              centre[3]};
+  for (std::size_t i = 1; i < kernel.size(); ++i) {
+    float px = cx, py = cy;
+    (axis == 0 ? px : py) += kernel[i].offset_mm * step;
+    px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
+    py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
+    std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
+    if (k.follow_surface_factor > 0.0f) {
+      const float tap_distance = linearise_depth(k, depth.bilinear(px, py, 0));
+      float s = k.follow_surface_factor * std::fabs(centre_distance - tap_distance);
+      if (!(s < 1.0f)) s = 1.0f;  // also catches NaN
+      for (int c = 0; c < 3; ++c) tap[c] = tap[c] + (centre[c] - tap[c]) * s;
+    }
+    for (int c = 0; c < 3; ++c) sum[c] += kernel[i].weight[c] * tap[c];
+  }
+  *result = sum;
+  return true;
+}
+
+bool inside(const PassConstants& k, int x, int y) {
+  const float px = static_cast<float>(x) + 0.5f, py = static_cast<float>(y) + 0.5f;
+  return px >= k.clamp_min[0] && px <= k.clamp_max[0] && py >= k.clamp_min[1] && py <= k.clamp_max[1];
+}
+
+}  // namespace
+
+void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
+                          const CpuFilterImage& image, float* out) {
+  const int w = image.width, h = image.height;
+  const std::size_t count = static_cast<std::size_t>(w) * h;
+  const Plane color{w, h, 4, image.color};
+  const Plane depth{w, h, 1, image.depth};
+
+  // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
+  std::vector<float> intermediate(count * 4);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      Rgba value = {image.color[i * 4], image.color[i * 4 + 1], image.color[i * 4 + 2], image.color[i * 4 + 3]};
+      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
+      if (inside(constants, x, y) && masked_in) {
+        Rgba blurred;
+        if (filter_pixel(kernel, constants, color, depth, 0, x, y, &blurred)) value = blurred;
+      }
+      for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[c]);
+    }
+  }
+
+  // Vertical pass from the intermediate into the output; alpha keeps its input value.
+  const Plane half_plane{w, h, 4, intermediate.data()};
+  std::copy(image.color, image.color + count * 4, out);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
+      if (!inside(constants, x, y) || !masked_in) continue;
+      Rgba blurred;
+      if (!filter_pixel(kernel, constants, half_plane, depth, 1, x, y, &blurred)) continue;
+      for (int c = 0; c < 3; ++c) {
+        out[i * 4 + c] = image.output_is_half ? round_to_half(blurred[c]) : blurred[c];
+      }
+    }
+  }
+}
+
+}  // namespace sss::math

@@ -1,0 +1,29 @@
+// A CPU model of the GPU's two-pass separable filter: the same taps, the same per-pixel step, the
+// same follow-surface blend, bilinear clamp-to-edge sampling, and the RGBA16F rounding of the
+// intermediate target. Tests compare the GL result against it to tell shader bugs apart from
+// approximation error (DESIGN.md §6, reference 2). Math layer: no GL.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "filter_constants.hpp"
+#include "separable_kernel.hpp"
+
+namespace sss::math {
+
+struct CpuFilterImage {
+  int width = 0, height = 0;
+  const float* color = nullptr;    // RGBA, row 0 at the bottom (GL order)
+  const float* depth = nullptr;    // raw depth as stored in the depth texture, one per pixel
+  const uint8_t* mask = nullptr;   // optional: 1 where the stencil test passes; nullptr: everywhere
+  bool output_is_half = false;     // the output texture is RGBA16F: round the result like the GL
+};
+
+// Runs both passes into `out` (RGBA, width·height·4 floats; may not alias color). Pixels that are
+// outside the mask, have alpha <= 0 (after the intermediate's rounding) or an unusable depth keep
+// their input value exactly; pixels outside the viewport too.
+void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
+                          const CpuFilterImage& image, float* out);
+
+}  // namespace sss::math

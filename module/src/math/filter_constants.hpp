@@ -1,0 +1,56 @@
+// One function from settings + projection + frame geometry to the numbers both passes use (the
+// shader's uniforms and the CPU model's inputs), so the two can never disagree. Math layer: no GL.
+#pragma once
+
+#include <array>
+
+#include "projection.hpp"
+
+namespace sss::math {
+
+struct FilterSettings {
+  float width = 0.0015f;                       // world units; 1 profile mm = (2/3)·width
+  std::array<float, 3> strength = {0.78f, 0.70f, 0.75f};
+  std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
+  int samples = 17;
+  bool follow_surface = true;
+};
+
+enum class DepthEncoding {
+  hardware_minus_one_to_one,  // window depth d = (z_ndc + 1) / 2 (GL default)
+  hardware_zero_to_one,       // glClipControl(GL_ZERO_TO_ONE): d = z_ndc
+  linear_distance             // the texture holds -z_view directly
+};
+
+struct FrameGeometry {
+  int texture_width = 0, texture_height = 0;
+  std::array<int, 4> viewport = {0, 0, 0, 0};  // x, y, w, h in texels (never empty here)
+  DepthEncoding depth = DepthEncoding::hardware_minus_one_to_one;
+};
+
+struct PassConstants {
+  // Pixels per profile millimetre at clip w = 1 and alpha = 1, for the x and the y pass:
+  // projection scale × half the viewport × world units per mm.
+  std::array<float, 2> pixels_per_mm = {0.0f, 0.0f};
+  // Follow-surface factor (paper: 300 · distance to projection window · width); 0 when off.
+  float follow_surface_factor = 0.0f;
+  // z_ndc = raw_depth · ndc_scale + ndc_bias (hardware depth only).
+  float ndc_scale = 2.0f, ndc_bias = -1.0f;
+  // Projection elements the depth linearisation uses: m10, m11, m14, m15.
+  std::array<float, 4> depth_terms = {0.0f, 0.0f, 0.0f, 0.0f};
+  // Tap positions (pixel coordinates, texel centres at +0.5) are clamped to this box, so bilinear
+  // taps never read outside the viewport.
+  std::array<float, 2> clamp_min = {0.0f, 0.0f}, clamp_max = {0.0f, 0.0f};
+  bool linear_depth = false;
+};
+
+PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
+                                     const FrameGeometry& geometry);
+
+// The linear view distance for a raw depth value, in float as the shader computes it.
+float linearise_depth(const PassConstants& k, float raw_depth);
+
+// Clip w at a view distance, in float as the shader computes it.
+float clip_w(const PassConstants& k, float distance);
+
+}  // namespace sss::math

@@ -1,0 +1,46 @@
+/* The public header compiles as strict C99 and the library links from C. Exercises the GL-free
+ * entry points; exit status 0 on success. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sss/sss.h"
+
+static int failures = 0;
+#define CHECK(cond)                                                     \
+  do {                                                                  \
+    if (!(cond)) {                                                      \
+      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+      ++failures;                                                       \
+    }                                                                   \
+  } while (0)
+
+int main(void) {
+  sss_settings settings;
+  float taps[SSS_MAX_SAMPLES * 4];
+  float sum[3] = {0.0f, 0.0f, 0.0f};
+  int i;
+  sss_context *ctx = NULL;
+  sss_create_desc desc;
+
+  sss_default_settings(&settings);
+  CHECK(settings.struct_size == sizeof settings);
+  CHECK(settings.samples == SSS_SAMPLES_MEDIUM);
+  CHECK(sss_kernel_separable(settings.samples, settings.strength, settings.falloff, taps) == SSS_OK);
+  for (i = 0; i < settings.samples; ++i) {
+    sum[0] += taps[i * 4 + 0];
+    sum[1] += taps[i * 4 + 1];
+    sum[2] += taps[i * 4 + 2];
+  }
+  CHECK(fabs(sum[0] - 1.0) < 1e-5 && fabs(sum[1] - 1.0) < 1e-5 && fabs(sum[2] - 1.0) < 1e-5);
+  CHECK(taps[3] == 0.0f); /* centre first */
+  CHECK(sss_kernel_separable(4, settings.strength, settings.falloff, taps) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sss_last_error(NULL), "samples = 4") != NULL);
+  CHECK(strcmp(sss_result_string(SSS_ERROR_GL), "SSS_ERROR_GL") == 0);
+  memset(&desc, 0, sizeof desc);
+  desc.struct_size = sizeof desc;
+  CHECK(sss_create(&desc, &ctx) == SSS_ERROR_INVALID_ARGUMENT && ctx == NULL);
+  sss_destroy(NULL);
+  printf("%d passed, %d failed\n", failures == 0 ? 1 : 0, failures == 0 ? 0 : 1);
+  return failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,129 @@
+// Invariants that need no reference (DESIGN.md §6, reference 3), on the GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "filter_case.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+using Invariants = FilterCaseTest;
+
+sss_settings wide_settings() {
+  sss_settings s;
+  sss_default_settings(&s);
+  s.width = 0.06f;
+  s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
+  s.falloff[0] = 1.0f;
+  s.falloff[1] = 0.5f;
+  s.falloff[2] = 0.3f;
+  return s;
+}
+
+const sss::math::Matrix4 kCamera = perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
+
+TEST_F(Invariants, AFlatImageStaysFlat) {
+  FilterCase c;
+  c.settings = wide_settings();
+  const FilterOutcome o = run_case(make_flat_scene(48, 48, {0.8f, 0.4f, 0.2f, 1.0f}, 1.5f, kCamera), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  for (std::size_t i = 0; i < o.gpu.size(); ++i) {
+    // Kernel weights sum to 1 within 1e-6; the RGBA16F intermediate holds 11 bits: 2^-11 relative.
+    EXPECT_NEAR(o.gpu[i], o.input[i], 5e-4f * o.input[i] + 1e-6f) << "component " << i;
+  }
+}
+
+TEST_F(Invariants, StrengthZeroSettingsAreTheIdentityBitForBit) {
+  FilterCase c;
+  c.settings = wide_settings();
+  c.settings.strength[0] = c.settings.strength[1] = c.settings.strength[2] = 0.0f;
+  const FilterOutcome o = run_case(make_relief_scene(40, 30, 1, kCamera), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_EQ(0, std::memcmp(o.gpu.data(), o.input.data(), o.gpu.size() * sizeof(float)));
+}
+
+TEST_F(Invariants, WidthZeroIntoASeparateOutputCopiesBitForBit) {
+  FilterCase c;
+  c.settings = wide_settings();
+  c.settings.width = 0.0f;
+  c.separate_output = true;
+  const FilterOutcome o = run_case(make_relief_scene(40, 30, 1, kCamera), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_EQ(0, std::memcmp(o.gpu.data(), o.input.data(), o.gpu.size() * sizeof(float)));
+}
+
+// Alpha-0 pixels and stencil-rejected pixels keep their exact input value, written back or copied.
+void expect_untouched_pixels_identical(const SyntheticScene& scene, const FilterOutcome& o, bool stencil) {
+  int checked = 0;
+  for (std::size_t i = 0; i < scene.stencil.size(); ++i) {
+    const bool untouched = scene.color[i * 4 + 3] == 0.0f || (stencil && scene.stencil[i] == 0);
+    if (!untouched) continue;
+    ++checked;
+    ASSERT_EQ(0, std::memcmp(&o.gpu[i * 4], &o.input[i * 4], 4 * sizeof(float))) << "pixel " << i;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST_F(Invariants, StrengthZeroAndStencilRejectedPixelsAreBitIdentical) {
+  const SyntheticScene scene = make_relief_scene(64, 48, 9, kCamera);
+  for (bool separate : {false, true}) {
+    SCOPED_TRACE(separate ? "separate output" : "write back");
+    FilterCase c;
+    c.settings = wide_settings();
+    c.depth = DepthKind::depth24_stencil8;
+    c.use_stencil = true;
+    c.separate_output = separate;
+    expect_untouched_pixels_identical(scene, run_case(scene, c), true);
+    c.use_stencil = false;
+    TearDown();
+    SetUp();
+    expect_untouched_pixels_identical(scene, run_case(scene, c), false);
+    TearDown();
+    SetUp();
+  }
+}
+
+TEST_F(Invariants, AnIsolatedDotKeepsItsEnergy) {
+  // A 2x2 bright dot on a dark plane facing the camera, far from the borders.
+  SyntheticScene scene = make_flat_scene(96, 96, {0.0f, 0.0f, 0.0f, 1.0f}, 1.0f, kCamera);
+  for (int y = 47; y <= 48; ++y) {
+    for (int x = 47; x <= 48; ++x) {
+      for (int ch = 0; ch < 3; ++ch) scene.color[(static_cast<std::size_t>(y) * 96 + x) * 4 + ch] = 100.0f;
+    }
+  }
+  FilterCase c;
+  c.settings = wide_settings();
+  c.settings.samples = 25;
+  const FilterOutcome o = run_case(scene, c);
+  ASSERT_EQ(o.result, SSS_OK);
+  for (int ch = 0; ch < 3; ++ch) {
+    double in = 0.0, out = 0.0, centre = 0.0;
+    for (std::size_t i = 0; i < o.gpu.size() / 4; ++i) {
+      in += o.input[i * 4 + ch];
+      out += o.gpu[i * 4 + ch];
+    }
+    centre = o.gpu[(47 * 96 + 47) * 4 + ch];
+    EXPECT_NEAR(out, in, 0.01 * in) << "channel " << ch;
+    EXPECT_LT(centre, 0.9 * 100.0) << "the dot was not spread (channel " << ch << ")";
+  }
+}
+
+TEST_F(Invariants, OutputIsFiniteOnExtremeButValidInput) {
+  SyntheticScene scene = make_relief_scene(48, 32, 4, kCamera);
+  for (std::size_t i = 0; i < scene.color.size(); i += 4) {
+    scene.color[i] = (i / 4) % 3 == 0 ? 60000.0f : 0.0f;  // near fp16's largest value next to zeros
+  }
+  FilterCase c;
+  c.settings = wide_settings();
+  c.half_color = true;
+  const FilterOutcome o = run_case(scene, c);
+  ASSERT_EQ(o.result, SSS_OK);
+  for (float v : o.gpu) ASSERT_TRUE(std::isfinite(v));
+}
+
+}  // namespace
+}  // namespace sss_test

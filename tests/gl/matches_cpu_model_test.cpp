@@ -1,0 +1,114 @@
+// The GL passes against the CPU model of the same algorithm (DESIGN.md §6, reference 2).
+//
+// Tolerance: 2e-3 relative (to max(1, |value|)). Both sides run the same float arithmetic; what
+// differs is (a) the order of float operations and the GPU's own bilinear weight computation
+// (a few float ulps, ~1e-6), which can flip the RGBA16F rounding of the intermediate by one half-ulp
+// (2^-11 = 4.9e-4 relative) at a tap, and (b) for RGBA16F colour targets, the same one-ulp flip on
+// the output. Two such flips plus the weighted sum of flipped taps stay below 2e-3; a shader bug
+// (a wrong tap, weight, offset or depth test) moves values by 1e-2 or more on these scenes.
+#include <gtest/gtest.h>
+
+#include "filter_case.hpp"
+
+namespace sss_test {
+namespace {
+
+constexpr float kTolerance = 2e-3f;
+
+sss_settings visible_settings(int samples, bool follow_surface) {
+  sss_settings s;
+  sss_default_settings(&s);
+  s.width = 0.045f;  // about 2 pixels per profile millimetre on the 64x48 relief scene
+  s.strength[0] = 0.9f;
+  s.strength[1] = 0.8f;
+  s.strength[2] = 0.7f;
+  s.falloff[0] = 1.0f;
+  s.falloff[1] = 0.6f;
+  s.falloff[2] = 0.4f;
+  s.samples = samples;
+  s.flags = follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  return s;
+}
+
+SyntheticScene relief() { return make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)); }
+
+using MatchesCpuModel = FilterCaseTest;
+
+void expect_blurred_and_matching(const FilterOutcome& o) {
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), kTolerance);
+  // The case must actually change the image, or the comparison proves nothing.
+  EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);
+}
+
+TEST_F(MatchesCpuModel, HardwareDepthWriteBack) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, EveryPresetAndExtremeTapCount) {
+  for (int samples : {3, SSS_SAMPLES_LOW, SSS_SAMPLES_MEDIUM, SSS_SAMPLES_HIGH, 33, SSS_MAX_SAMPLES}) {
+    SCOPED_TRACE(samples);
+    FilterCase c;
+    c.settings = visible_settings(samples, true);
+    expect_blurred_and_matching(run_case(relief(), c));
+    TearDown();
+    SetUp();
+  }
+}
+
+TEST_F(MatchesCpuModel, WithoutFollowSurface) {
+  FilterCase c;
+  c.settings = visible_settings(17, false);
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, HalfFloatColour) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  c.half_color = true;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, LinearDepthTexture) {
+  FilterCase c;
+  c.settings = visible_settings(25, true);
+  c.depth = DepthKind::linear_r32f;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, StencilMaskFromDepth24Stencil8) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, SeparateOutputWithStencil) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  c.separate_output = true;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, ViewportInsideALargerTexture) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  c.viewport = {5, 7, 40, 30};
+  c.separate_output = true;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
+TEST_F(MatchesCpuModel, OrthographicCamera) {
+  FilterCase c;
+  c.settings = visible_settings(17, true);
+  c.settings.width = 0.02f;
+  expect_blurred_and_matching(run_case(make_relief_scene(64, 48, 5, orthographic_matrix(0.6f, 0.45f, 0.1f, 5.0f)), c));
+}
+
+}  // namespace
+}  // namespace sss_test

@@ -1,0 +1,247 @@
+// The host's GL state after sss_apply equals the state before it, for every state in the list of
+// sss.h (set to unusual values first) and for the states the module promises not to touch; and
+// the result does not depend on that state.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstring>
+#include <sstream>
+
+#include "filter_case.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+struct Snapshot {
+  std::vector<std::pair<std::string, std::vector<GLint>>> values;
+
+  void add(const std::string& name, std::vector<GLint> v) { values.emplace_back(name, std::move(v)); }
+  void integer(const char* name, GLenum pname, int count = 1) {
+    std::vector<GLint> v(static_cast<std::size_t>(count), -12345);
+    glGetIntegerv(pname, v.data());
+    add(name, v);
+  }
+  void boolean(const char* name, GLenum pname, int count = 1) {
+    std::array<GLboolean, 4> b{};
+    glGetBooleanv(pname, b.data());
+    add(name, std::vector<GLint>(b.begin(), b.begin() + count));
+  }
+  void enabled(const char* name, GLenum cap) { add(name, {glIsEnabled(cap)}); }
+};
+
+Snapshot take_snapshot() {
+  Snapshot s;
+  s.integer("GL_CURRENT_PROGRAM", GL_CURRENT_PROGRAM);
+  s.integer("GL_VERTEX_ARRAY_BINDING", GL_VERTEX_ARRAY_BINDING);
+  s.integer("GL_DRAW_FRAMEBUFFER_BINDING", GL_DRAW_FRAMEBUFFER_BINDING);
+  s.integer("GL_READ_FRAMEBUFFER_BINDING", GL_READ_FRAMEBUFFER_BINDING);
+  s.integer("GL_RENDERBUFFER_BINDING", GL_RENDERBUFFER_BINDING);
+  s.integer("GL_PIXEL_UNPACK_BUFFER_BINDING", GL_PIXEL_UNPACK_BUFFER_BINDING);
+  s.integer("GL_PIXEL_PACK_BUFFER_BINDING", GL_PIXEL_PACK_BUFFER_BINDING);
+  s.integer("GL_ARRAY_BUFFER_BINDING", GL_ARRAY_BUFFER_BINDING);
+  s.integer("GL_ACTIVE_TEXTURE", GL_ACTIVE_TEXTURE);
+  GLint active = 0;
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  for (GLenum unit = 0; unit < 4; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    s.integer(("GL_TEXTURE_BINDING_2D unit " + std::to_string(unit)).c_str(), GL_TEXTURE_BINDING_2D);
+    s.integer(("GL_SAMPLER_BINDING unit " + std::to_string(unit)).c_str(), GL_SAMPLER_BINDING);
+  }
+  glActiveTexture(static_cast<GLenum>(active));
+  s.integer("GL_VIEWPORT", GL_VIEWPORT, 4);
+  s.integer("GL_SCISSOR_BOX", GL_SCISSOR_BOX, 4);
+  const std::pair<const char*, GLenum> caps[] = {
+      {"GL_SCISSOR_TEST", GL_SCISSOR_TEST},
+      {"GL_DEPTH_TEST", GL_DEPTH_TEST},
+      {"GL_STENCIL_TEST", GL_STENCIL_TEST},
+      {"GL_BLEND", GL_BLEND},
+      {"GL_CULL_FACE", GL_CULL_FACE},
+      {"GL_FRAMEBUFFER_SRGB", GL_FRAMEBUFFER_SRGB},
+      {"GL_RASTERIZER_DISCARD", GL_RASTERIZER_DISCARD},
+      {"GL_SAMPLE_ALPHA_TO_COVERAGE", GL_SAMPLE_ALPHA_TO_COVERAGE},
+      {"GL_SAMPLE_COVERAGE", GL_SAMPLE_COVERAGE},
+      {"GL_SAMPLE_MASK", GL_SAMPLE_MASK},
+      {"GL_POLYGON_OFFSET_FILL", GL_POLYGON_OFFSET_FILL},
+      {"GL_DEPTH_CLAMP", GL_DEPTH_CLAMP},
+      {"GL_COLOR_LOGIC_OP", GL_COLOR_LOGIC_OP},
+      {"GL_CLIP_DISTANCE0", GL_CLIP_DISTANCE0},
+      {"GL_CLIP_DISTANCE5", GL_CLIP_DISTANCE5},
+      {"GL_CLIP_DISTANCE7", GL_CLIP_DISTANCE7},
+      {"GL_DITHER", GL_DITHER},
+      {"GL_MULTISAMPLE", GL_MULTISAMPLE},
+  };
+  for (const auto& cap : caps) s.enabled(cap.first, cap.second);
+  s.boolean("GL_COLOR_WRITEMASK", GL_COLOR_WRITEMASK, 4);
+  s.boolean("GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK);
+  s.integer("GL_POLYGON_MODE", GL_POLYGON_MODE, 2);
+  s.integer("GL_DEPTH_FUNC", GL_DEPTH_FUNC);
+  s.integer("GL_BLEND_SRC_RGB", GL_BLEND_SRC_RGB);
+  s.integer("GL_BLEND_DST_ALPHA", GL_BLEND_DST_ALPHA);
+  s.integer("GL_CULL_FACE_MODE", GL_CULL_FACE_MODE);
+  s.integer("GL_FRONT_FACE", GL_FRONT_FACE);
+  s.integer("GL_UNPACK_ALIGNMENT", GL_UNPACK_ALIGNMENT);
+  s.integer("GL_PACK_ALIGNMENT", GL_PACK_ALIGNMENT);
+  const std::pair<const char*, GLenum> stencil[] = {
+      {"GL_STENCIL_FUNC", GL_STENCIL_FUNC},
+      {"GL_STENCIL_REF", GL_STENCIL_REF},
+      {"GL_STENCIL_VALUE_MASK", GL_STENCIL_VALUE_MASK},
+      {"GL_STENCIL_FAIL", GL_STENCIL_FAIL},
+      {"GL_STENCIL_PASS_DEPTH_FAIL", GL_STENCIL_PASS_DEPTH_FAIL},
+      {"GL_STENCIL_PASS_DEPTH_PASS", GL_STENCIL_PASS_DEPTH_PASS},
+      {"GL_STENCIL_WRITEMASK", GL_STENCIL_WRITEMASK},
+      {"GL_STENCIL_BACK_FUNC", GL_STENCIL_BACK_FUNC},
+      {"GL_STENCIL_BACK_REF", GL_STENCIL_BACK_REF},
+      {"GL_STENCIL_BACK_VALUE_MASK", GL_STENCIL_BACK_VALUE_MASK},
+      {"GL_STENCIL_BACK_FAIL", GL_STENCIL_BACK_FAIL},
+      {"GL_STENCIL_BACK_PASS_DEPTH_FAIL", GL_STENCIL_BACK_PASS_DEPTH_FAIL},
+      {"GL_STENCIL_BACK_PASS_DEPTH_PASS", GL_STENCIL_BACK_PASS_DEPTH_PASS},
+      {"GL_STENCIL_BACK_WRITEMASK", GL_STENCIL_BACK_WRITEMASK},
+  };
+  for (const auto& st : stencil) s.integer(st.first, st.second);
+  s.integer("GL_DEBUG_GROUP_STACK_DEPTH", GL_DEBUG_GROUP_STACK_DEPTH);
+  return s;
+}
+
+std::string describe_differences(const Snapshot& a, const Snapshot& b) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    if (a.values[i].second == b.values[i].second) continue;
+    out << a.values[i].first << ": before {";
+    for (GLint v : a.values[i].second) out << ' ' << v;
+    out << " } after {";
+    for (GLint v : b.values[i].second) out << ' ' << v;
+    out << " }\n";
+  }
+  return out.str();
+}
+
+class StateRestore : public FilterCaseTest {
+ protected:
+  // Host objects bound while the module runs; deleted in the test's TearDown via textures_ or here.
+  GLuint program_ = 0, vao_ = 0, fbo_draw_ = 0, fbo_read_ = 0, renderbuffer_ = 0, buffers_[3] = {0, 0, 0};
+  GLuint samplers_[4] = {0, 0, 0, 0};
+
+  void set_unusual_state() {
+    const char* vs = "#version 330 core\nvoid main(){gl_Position=vec4(0.0);}\n";
+    const char* fs = "#version 330 core\nout vec4 c;void main(){c=vec4(1.0);}\n";
+    program_ = glCreateProgram();
+    for (auto [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
+      const GLuint sh = glCreateShader(type);
+      glShaderSource(sh, 1, &src, nullptr);
+      glCompileShader(sh);
+      glAttachShader(program_, sh);
+      glDeleteShader(sh);
+    }
+    glLinkProgram(program_);
+    glUseProgram(program_);
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(3, buffers_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffers_[1]);
+    glBufferData(GL_PIXEL_UNPACK_BUFFER, 64, nullptr, GL_STREAM_DRAW);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, buffers_[2]);
+    const GLuint target = make_rgba16f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f));
+    glGenFramebuffers(1, &fbo_draw_);
+    glGenFramebuffers(1, &fbo_read_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_draw_);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_read_);
+    glGenRenderbuffers(1, &renderbuffer_);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
+    glGenSamplers(4, samplers_);
+    for (GLenum unit = 0; unit < 4; ++unit) {
+      glActiveTexture(GL_TEXTURE0 + unit);
+      glBindTexture(GL_TEXTURE_2D, make_rgba16f(2, 2, std::vector<float>(16, 1.0f)));
+      glBindSampler(unit, samplers_[unit]);
+    }
+    glActiveTexture(GL_TEXTURE5);
+    glViewport(3, 5, 17, 19);
+    glScissor(1, 2, 3, 4);
+    for (GLenum cap : {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_FRAMEBUFFER_SRGB,
+                       GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK,
+                       GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE5}) {
+      glEnable(cap);
+    }
+    glDisable(GL_DITHER);
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glDepthFunc(GL_GEQUAL);
+    glBlendFunc(GL_DST_COLOR, GL_ONE_MINUS_SRC_ALPHA);
+    glCullFace(GL_FRONT_AND_BACK);
+    glFrontFace(GL_CW);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    glPixelStorei(GL_PACK_ALIGNMENT, 8);
+    glStencilFuncSeparate(GL_FRONT, GL_GREATER, 7, 0x3C);
+    glStencilOpSeparate(GL_FRONT, GL_INCR, GL_DECR, GL_INVERT);
+    glStencilMaskSeparate(GL_FRONT, 0x0F);
+    glStencilFuncSeparate(GL_BACK, GL_LESS, 3, 0xF0);
+    glStencilOpSeparate(GL_BACK, GL_ZERO, GL_REPLACE, GL_INCR_WRAP);
+    glStencilMaskSeparate(GL_BACK, 0xA5);
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
+};
+
+TEST_F(StateRestore, EveryListedStateIsRestoredAndTheResultIsUnaffected) {
+  const SyntheticScene scene = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+  FilterCase c;
+  sss_default_settings(&c.settings);
+  c.settings.width = 0.05f;
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  const FilterOutcome clean = run_case(scene, c);  // default GL state
+  ASSERT_EQ(clean.result, SSS_OK);
+  sss_destroy(sss_);
+  sss_ = nullptr;
+
+  set_unusual_state();
+  const Snapshot before = take_snapshot();
+  const FilterOutcome messy = run_case(scene, c);  // creates the context and applies under that state
+  const Snapshot after = take_snapshot();
+  EXPECT_EQ(describe_differences(before, after), "");
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  ASSERT_EQ(messy.result, SSS_OK);
+  EXPECT_EQ(0, std::memcmp(messy.gpu.data(), clean.gpu.data(), clean.gpu.size() * sizeof(float)));
+}
+
+TEST_F(StateRestore, CreateAndDestroyLeaveTheStateAsTheyFoundIt) {
+  set_unusual_state();
+  const Snapshot before = take_snapshot();
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  EXPECT_EQ(describe_differences(before, take_snapshot()), "");
+  sss_destroy(sss_);
+  sss_ = nullptr;
+  EXPECT_EQ(describe_differences(before, take_snapshot()), "");
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST_F(StateRestore, FailedCallsLeaveNoErrorAndNoStateBehind) {
+  set_unusual_state();
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, -1, 0, 0, -0.2f, 0};
+  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK);
+  const Snapshot before = take_snapshot();
+  GLuint multisample = 0;
+  glGenTextures(1, &multisample);
+  textures_.push_back(multisample);
+  GLint active = 0;
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  glActiveTexture(GL_TEXTURE7);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, multisample);
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA16F, 8, 8, GL_TRUE);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  glActiveTexture(static_cast<GLenum>(active));
+  const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+  // Wrong target: the module's bind fails with GL_INVALID_OPERATION, which it must swallow.
+  EXPECT_EQ(sss_apply(sss_, multisample, depth, nullptr), SSS_ERROR_INVALID_TEXTURE);
+  EXPECT_EQ(describe_differences(before, take_snapshot()), "");
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace sss_test

@@ -1,0 +1,101 @@
+#include "filter_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/cpu_separable_filter.hpp"
+#include "math/separable_kernel.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+
+float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu) {
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < gpu.size(); ++i) {
+    const float d = std::fabs(gpu[i] - cpu[i]) / std::max(1.0f, std::fabs(cpu[i]));
+    if (!(d <= worst)) worst = d;  // NaN propagates as the worst
+  }
+  return worst;
+}
+
+FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const FilterCase& c) {
+  FilterOutcome outcome;
+  const int w = scene.width, h = scene.height;
+  const GLuint color = c.half_color ? make_rgba16f(w, h, scene.color) : make_rgba32f(w, h, scene.color);
+  GLuint depth = 0;
+  switch (c.depth) {
+    case DepthKind::depth32f: depth = make_depth32f(w, h, scene.window_depth); break;
+    case DepthKind::linear_r32f: depth = make_texture(GL_R32F, w, h, GL_RED, GL_FLOAT, scene.distance.data()); break;
+    case DepthKind::depth24_stencil8: {
+      std::vector<uint32_t> packed(scene.window_depth.size());
+      for (std::size_t i = 0; i < packed.size(); ++i) {
+        const auto d24 = static_cast<uint32_t>(std::lround(scene.window_depth[i] * 16777215.0));
+        packed[i] = (d24 << 8) | (scene.stencil[i] ? 1u : 0u);
+      }
+      depth = make_texture(GL_DEPTH24_STENCIL8, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+      break;
+    }
+  }
+  const GLuint output = c.separate_output ? make_rgba32f(w, h, std::vector<float>(scene.color.size(), -7.0f)) : 0;
+  outcome.input = read_rgba(color, w, h);
+  const std::vector<float> stored_depth =
+      c.depth == DepthKind::linear_r32f ? scene.distance : read_depth(depth, w, h);
+
+  sss_ = create_sss();
+  if (sss_ == nullptr) return outcome;
+  EXPECT_EQ(sss_set_settings(sss_, &c.settings), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK) << sss_last_error(sss_);
+  sss_stencil stencil = {depth, 1, 0xFF};
+  sss_frame frame = {};
+  frame.struct_size = sizeof frame;
+  frame.color_texture = color;
+  frame.depth_texture = depth;
+  frame.output_texture = output;
+  frame.stencil = c.use_stencil ? &stencil : nullptr;
+  for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
+  outcome.result = sss_apply_frame(sss_, &frame);
+  EXPECT_EQ(outcome.result, SSS_OK) << sss_last_error(sss_);
+  outcome.gpu = read_rgba(output != 0 ? output : color, w, h);
+
+  // The CPU model with the same constants.
+  sss::math::FilterSettings fs;
+  fs.width = c.settings.width;
+  fs.strength = {c.settings.strength[0], c.settings.strength[1], c.settings.strength[2]};
+  fs.falloff = {c.settings.falloff[0], c.settings.falloff[1], c.settings.falloff[2]};
+  fs.samples = c.settings.samples;
+  fs.follow_surface = (c.settings.flags & SSS_FOLLOW_SURFACE) != 0;
+  sss::math::FrameGeometry g;
+  g.texture_width = w;
+  g.texture_height = h;
+  g.viewport = c.viewport[2] == 0 ? std::array<int, 4>{0, 0, w, h}
+                                  : std::array<int, 4>{c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]};
+  g.depth = c.depth == DepthKind::linear_r32f ? sss::math::DepthEncoding::linear_distance
+                                              : sss::math::DepthEncoding::hardware_minus_one_to_one;
+  const auto constants = sss::math::compute_pass_constants(fs, scene.projection, g);
+  const auto kernel = sss::math::separable_kernel(fs.samples, fs.strength, fs.falloff);
+  sss::math::CpuFilterImage image;
+  image.width = w;
+  image.height = h;
+  image.color = outcome.input.data();
+  image.depth = stored_depth.data();
+  image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
+  image.output_is_half = c.half_color && !c.separate_output;
+  outcome.cpu.resize(outcome.input.size());
+  sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+  if (c.separate_output && c.viewport[2] != 0) {
+    // Outside the viewport a separate output keeps what it held.
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const bool inside = x >= c.viewport[0] && x < c.viewport[0] + c.viewport[2] && y >= c.viewport[1] &&
+                            y < c.viewport[1] + c.viewport[3];
+        if (!inside) {
+          for (int ch = 0; ch < 4; ++ch) outcome.cpu[(static_cast<std::size_t>(y) * w + x) * 4 + ch] = -7.0f;
+        }
+      }
+    }
+  }
+  return outcome;
+}
+
+}  // namespace sss_test

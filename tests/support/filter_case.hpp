@@ -1,0 +1,40 @@
+// Runs one configuration of the filter on the GL and on the CPU model from identical inputs (the
+// depth the CPU model sees is read back from the GL texture, so depth quantisation is shared).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gl_fixture.hpp"
+#include "math/filter_constants.hpp"
+#include "synthetic_scene.hpp"
+
+namespace sss_test {
+
+enum class DepthKind { depth32f, depth24_stencil8, linear_r32f };
+
+struct FilterCase {
+  sss_settings settings{};
+  DepthKind depth = DepthKind::depth32f;
+  bool half_color = false;   // RGBA16F instead of RGBA32F
+  bool use_stencil = false;  // scene.stencil -> stencil ref 1, mask 0xFF (needs depth24_stencil8)
+  bool separate_output = false;
+  std::array<int32_t, 4> viewport = {0, 0, 0, 0};
+};
+
+struct FilterOutcome {
+  std::vector<float> input;   // colour as stored on the GL (after any fp16 rounding)
+  std::vector<float> gpu;     // the GL's result
+  std::vector<float> cpu;     // the CPU model's result
+  sss_result result = SSS_OK;
+};
+
+// Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|).
+float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
+
+class FilterCaseTest : public GlTest {
+ protected:
+  FilterOutcome run_case(const SyntheticScene& scene, const FilterCase& c);
+};
+
+}  // namespace sss_test

@@ -1,0 +1,43 @@
+// A GL test: a fresh headless context per test on the backend named by SSS_TEST_BACKEND ("osmesa",
+// "egl"; ctest runs every GL test once per backend), the host-side GL loaded, and helpers to make
+// and read textures.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "host_gl.hpp"
+#include "sss/sss.h"
+#include "sss_headless.h"
+
+namespace sss_test {
+
+class GlTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  void TearDown() override;
+
+  // A GL_TEXTURE_2D with the given storage; data may be NULL. Deleted in TearDown.
+  GLuint make_texture(GLenum internal_format, int width, int height, GLenum format, GLenum type, const void* data);
+  GLuint make_rgba32f(int width, int height, const std::vector<float>& rgba);
+  GLuint make_rgba16f(int width, int height, const std::vector<float>& rgba);
+  GLuint make_depth32f(int width, int height, const std::vector<float>& depth);
+  // Every texel of level 0 as floats (RGBA for colour, one value for depth/R formats).
+  std::vector<float> read_rgba(GLuint texture, int width, int height);
+  std::vector<float> read_depth(GLuint texture, int width, int height);
+
+  sss_context* create_sss(uint32_t flags = 0);
+
+  sss_headless* headless_ = nullptr;
+  sss_context* sss_ = nullptr;
+  std::vector<GLuint> textures_;
+  std::string backend_name_;
+};
+
+// The backend the tests run on (SSS_TEST_BACKEND, default osmesa).
+sss_headless_backend test_backend();
+
+}  // namespace sss_test

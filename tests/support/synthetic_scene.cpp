@@ -1,0 +1,92 @@
+#include "synthetic_scene.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace sss_test {
+
+sss::math::Matrix4 perspective_matrix(float fovy_degrees, float aspect, float near_plane, float far_plane) {
+  const float f = 1.0f / std::tan(fovy_degrees * 3.14159265358979f / 360.0f);
+  sss::math::Matrix4 m{};
+  m[0] = f / aspect;
+  m[5] = f;
+  m[10] = (far_plane + near_plane) / (near_plane - far_plane);
+  m[11] = -1.0f;
+  m[14] = 2.0f * far_plane * near_plane / (near_plane - far_plane);
+  return m;
+}
+
+sss::math::Matrix4 orthographic_matrix(float half_width, float half_height, float near_plane, float far_plane) {
+  sss::math::Matrix4 m{};
+  m[0] = 1.0f / half_width;
+  m[5] = 1.0f / half_height;
+  m[10] = -2.0f / (far_plane - near_plane);
+  m[14] = -(far_plane + near_plane) / (far_plane - near_plane);
+  m[15] = 1.0f;
+  return m;
+}
+
+void compute_window_depth(SyntheticScene* scene) {
+  const auto& m = scene->projection;
+  scene->window_depth.resize(scene->distance.size());
+  for (std::size_t i = 0; i < scene->distance.size(); ++i) {
+    const double z = -static_cast<double>(scene->distance[i]);
+    const double ndc = (m[10] * z + m[14]) / (m[11] * z + m[15]);
+    scene->window_depth[i] = static_cast<float>(0.5 * ndc + 0.5);
+  }
+}
+
+SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection) {
+  SyntheticScene s;
+  s.width = width;
+  s.height = height;
+  s.projection = projection;
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  s.color.resize(n * 4);
+  s.distance.resize(n);
+  s.stencil.resize(n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> noise(0.0f, 0.4f);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(width);
+      const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(height);
+      float distance = 1.0f + 0.3f * u + 0.1f * v;  // tilted plane
+      const float du = u - 0.35f, dv = v - 0.55f;
+      const float r2 = (du * du + dv * dv) / (0.15f * 0.15f);
+      if (r2 < 1.0f) distance -= 0.12f * std::sqrt(1.0f - r2);  // spherical bump
+      if (u < 0.3f && v < 0.35f) distance = 0.7f;               // nearer box: a depth step
+      s.distance[i] = distance;
+      s.color[i * 4 + 0] = 0.6f + 0.4f * std::sin(9.0f * u) + noise(rng);
+      s.color[i * 4 + 1] = 0.3f + 0.2f * std::cos(7.0f * v) + noise(rng);
+      s.color[i * 4 + 2] = 0.2f + 0.15f * std::sin(5.0f * (u + v)) + noise(rng);
+      float alpha = 1.0f;
+      if (v > 0.75f && v < 0.85f) alpha = 0.5f;
+      if (u > 0.85f && v > 0.85f) alpha = 0.0f;
+      s.color[i * 4 + 3] = alpha;
+      s.stencil[i] = u < 0.75f ? 1 : 0;
+    }
+  }
+  compute_window_depth(&s);
+  return s;
+}
+
+SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba, float distance,
+                               const sss::math::Matrix4& projection) {
+  SyntheticScene s;
+  s.width = width;
+  s.height = height;
+  s.projection = projection;
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  s.color.resize(n * 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < 4; ++c) s.color[i * 4 + c] = rgba[c];
+  }
+  s.distance.assign(n, distance);
+  s.stencil.assign(n, 1);
+  compute_window_depth(&s);
+  return s;
+}
+
+}  // namespace sss_test

@@ -1,0 +1,37 @@
+// Deterministic synthetic inputs for the filter: colour (alpha = strength), view distance, the
+// matching hardware depth for a projection, and a stencil mask.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "math/projection.hpp"
+
+namespace sss_test {
+
+struct SyntheticScene {
+  int width = 0, height = 0;
+  std::vector<float> color;         // RGBA, row 0 at the bottom
+  std::vector<float> distance;      // view distance (-z_view) per pixel
+  std::vector<float> window_depth;  // hardware depth in [0, 1] (GL's default depth convention)
+  std::vector<uint8_t> stencil;     // 1 where translucent
+  sss::math::Matrix4 projection{};
+};
+
+sss::math::Matrix4 perspective_matrix(float fovy_degrees, float aspect, float near_plane, float far_plane);
+sss::math::Matrix4 orthographic_matrix(float half_width, float half_height, float near_plane, float far_plane);
+
+// A tilted plane with a nearer box over one quadrant (a depth step) and a spherical bump; colour is
+// smooth gradients plus seeded noise; alpha is 1 on most pixels, 0.5 in a band and 0 in a corner;
+// the stencil excludes the right quarter.
+SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection);
+
+// Uniform colour and alpha on a plane facing the camera at `distance`.
+SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba, float distance,
+                               const sss::math::Matrix4& projection);
+
+// Fills window_depth from distance for scene.projection.
+void compute_window_depth(SyntheticScene* scene);
+
+}  // namespace sss_test
