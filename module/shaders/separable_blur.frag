@@ -1,6 +1,6 @@
 // One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
 // along `u_axis`, its footprint scaled per pixel by depth and by the strength in alpha, taps blended
-// back to the centre colour where the surface leaves the kernel's reach (follow-surface).
+// back to the centre colour as their depth leaves the kernel's reach (follow-surface).
 //
 // Compile-time switches (prepended by the module):
 //   SSS_OUTSIDE   what a pixel that is not blurred writes: 0 its own value (horizontal pass, which
@@ -19,7 +19,7 @@ uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; 
 uniform int u_tap_count;
 uniform vec2 u_axis;                  // (1, 0) or (0, 1)
 uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
-uniform float u_follow_surface;       // 300 · distance to the projection window · width
+uniform float u_follow_surface;       // 1 / the kernel's reach in world units
 uniform vec2 u_ndc_from_depth;        // z_ndc = depth · x + y
 uniform vec4 u_depth_terms;           // projection m10, m11, m14, m15
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
@@ -62,13 +62,14 @@ void main() {
 
   vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
   float step_pixels = u_pixels_per_mm * strength / w;
+  float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
   vec3 sum = centre.rgb * u_kernel[0].rgb;
   for (int i = 1; i < u_tap_count; ++i) {
     vec2 position = clamp(gl_FragCoord.xy + u_axis * (u_kernel[i].a * step_pixels), u_clamp.xy, u_clamp.zw);
     vec2 uv = position * texel_size;
     vec3 tap = texture(u_source, uv).rgb;
 #if SSS_FOLLOW_SURFACE
-    float s = u_follow_surface * abs(centre_distance - view_distance(texture(u_depth, uv).r));
+    float s = follow_surface * abs(centre_distance - view_distance(texture(u_depth, uv).r));
     if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
     tap = mix(tap, centre.rgb, s);
 #endif

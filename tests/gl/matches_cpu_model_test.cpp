@@ -1,19 +1,24 @@
 // The GL passes against the CPU model of the same algorithm (DESIGN.md §6, reference 2).
 //
-// Tolerance: 2e-3 relative (to max(1, |value|)). Both sides run the same float arithmetic; what
-// differs is (a) the order of float operations and the GPU's own bilinear weight computation
-// (a few float ulps, ~1e-6), which can flip the RGBA16F rounding of the intermediate by one half-ulp
-// (2^-11 = 4.9e-4 relative) at a tap, and (b) for RGBA16F colour targets, the same one-ulp flip on
-// the output. Two such flips plus the weighted sum of flipped taps stay below 2e-3; a shader bug
-// (a wrong tap, weight, offset or depth test) moves values by 1e-2 or more on these scenes.
+// Tolerance: 3e-3 relative (to max(1, |value|)). Both sides run the same float arithmetic but not
+// in the same order, and the GPU computes its own bilinear weights, so results differ by a few
+// float ulps (~1e-7). That is enough to send a value near a rounding boundary of the RGBA16F
+// intermediate to the neighbouring half: one half ulp, 2^-10 of the value at most (10 stored
+// mantissa bits), which the vertical pass carries into the output with weight <= 1. An RGBA16F
+// colour target can flip once more on output: 2 · 2^-10 = 1.95e-3 in all, measured 1.94e-3 (and
+// 9.7e-4 for RGBA32F targets) on llvmpipe. A shader bug (a wrong tap, weight, offset, step or depth
+// test) moves values by 1e-2 or more on these scenes.
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
 
 #include "filter_case.hpp"
 
 namespace sss_test {
 namespace {
 
-constexpr float kTolerance = 2e-3f;
+constexpr float kTolerance = 3e-3f;
 
 sss_settings visible_settings(int samples, bool follow_surface) {
   sss_settings s;
@@ -36,7 +41,10 @@ using MatchesCpuModel = FilterCaseTest;
 
 void expect_blurred_and_matching(const FilterOutcome& o) {
   ASSERT_EQ(o.result, SSS_OK);
-  EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), kTolerance);
+  const float difference = largest_relative_difference(o.gpu, o.cpu);
+  ::testing::Test::RecordProperty("largest_relative_difference", std::to_string(difference));
+  std::printf("GPU vs CPU model: largest relative difference %.3g (tolerance %.3g)\n", difference, kTolerance);
+  EXPECT_LE(difference, kTolerance);
   // The case must actually change the image, or the comparison proves nothing.
   EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);
 }

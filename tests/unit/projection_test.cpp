@@ -101,7 +101,8 @@ TEST(FilterConstants, HorizontalScaleIsAspectCorrect) {
   // The paper's scale: a millimetre is (2/3)·width world units.
   const float f = 1.0f / std::tan(20.0f * 3.14159265f / 180.0f);
   EXPECT_NEAR(k.pixels_per_mm[1], f * 0.5f * 100.0f * 0.02f, 1e-4f);
-  EXPECT_NEAR(k.follow_surface_factor, 300.0f * f * 0.03f, 1e-3f);
+  // Follow-surface reach: the kernel's 2 mm range for 17 taps, in world units (0.02 per mm).
+  EXPECT_NEAR(k.follow_surface_factor, 1.0f / (2.0f * 0.02f), 1e-3f);
 }
 
 TEST(FilterConstants, LinearisationInFloatMatchesDouble) {

@@ -46,6 +46,7 @@ bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, 
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
   const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
+  const float follow_surface = k.follow_surface_factor / strength;
   Rgba sum = {centre[0] * kernel[0].weight[0], centre[1] * kernel[0].weight[1], centre[2] * kernel[0].weight[2],
               centre[3]};
   for (std::size_t i = 1; i < kernel.size(); ++i) {
@@ -56,9 +57,9 @@ bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, 
     std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
     if (k.follow_surface_factor > 0.0f) {
       const float tap_distance = linearise_depth(k, depth.bilinear(px, py, 0));
-      float s = k.follow_surface_factor * std::fabs(centre_distance - tap_distance);
+      float s = follow_surface * std::fabs(centre_distance - tap_distance);
       if (!(s < 1.0f)) s = 1.0f;  // also catches NaN
-      for (int c = 0; c < 3; ++c) tap[c] = tap[c] + (centre[c] - tap[c]) * s;
+      for (int c = 0; c < 3; ++c) tap[c] = tap[c] * (1.0f - s) + centre[c] * s;  // GLSL mix()
     }
     for (int c = 0; c < 3; ++c) sum[c] += kernel[i].weight[c] * tap[c];
   }

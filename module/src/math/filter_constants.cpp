@@ -1,10 +1,10 @@
 #include "filter_constants.hpp"
 
+#include "separable_kernel.hpp"
+
 namespace sss::math {
 
 namespace {
-// The paper's follow-surface constant (reference shader: 300).
-constexpr float kFollowSurfaceConstant = 300.0f;
 // One profile millimetre spans 2/3 of `width` world units: the reference shader divides its step
 // by 3 for offsets that reach ±3 mm over a texture-space span of 2 (NDC).
 constexpr float kWorldUnitsPerMmPerWidth = 2.0f / 3.0f;
@@ -21,9 +21,13 @@ PassConstants compute_pass_constants(const FilterSettings& settings, const Matri
   // A negative scale (a mirrored projection) only flips the tap order of a symmetric kernel.
   if (k.pixels_per_mm[0] < 0.0f) k.pixels_per_mm[0] = -k.pixels_per_mm[0];
   if (k.pixels_per_mm[1] < 0.0f) k.pixels_per_mm[1] = -k.pixels_per_mm[1];
-  const float window_distance = projection[5] < 0.0f ? -projection[5] : projection[5];
-  k.follow_surface_factor =
-      settings.follow_surface ? kFollowSurfaceConstant * window_distance * settings.width : 0.0f;
+  // Follow-surface: a tap is blended fully back to the centre colour once its depth differs by the
+  // kernel's reach, R profile millimetres in world units (the shader also divides by the pixel's
+  // alpha, which scales the reach like the taps). The reference shader's 300·(1/tan(fovy/2))·width
+  // has units of 1/length²: it matches this only at the scale of the paper's own scene (about 6 mm
+  // of reach there) and lets a background 0.5 m behind a metric-scale head bleed in.
+  const float reach = static_cast<float>(separable_kernel_range_mm(settings.samples)) * world_per_mm;
+  k.follow_surface_factor = settings.follow_surface && reach > 0.0f ? 1.0f / reach : 0.0f;
 
   k.linear_depth = geometry.depth == DepthEncoding::linear_distance;
   if (geometry.depth == DepthEncoding::hardware_zero_to_one) {

@@ -32,7 +32,8 @@ struct PassConstants {
   // Pixels per profile millimetre at clip w = 1 and alpha = 1, for the x and the y pass:
   // projection scale × half the viewport × world units per mm.
   std::array<float, 2> pixels_per_mm = {0.0f, 0.0f};
-  // Follow-surface factor (paper: 300 · distance to projection window · width); 0 when off.
+  // Follow-surface factor: 1 / (kernel reach in world units); the blend towards the centre colour
+  // is min(1, factor · |depth difference| / alpha). 0 when off.
   float follow_surface_factor = 0.0f;
   // z_ndc = raw_depth · ndc_scale + ndc_bias (hardware depth only).
   float ndc_scale = 2.0f, ndc_bias = -1.0f;
