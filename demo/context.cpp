@@ -41,7 +41,7 @@ bool create_context(const std::string &backend_name, Context *context) {
   if (headless == nullptr) return false;
 
   std::string missing;
-  if (!load_gl_functions(sss_headless_get_proc_address, headless, &missing)) {
+  if (!host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
     std::fprintf(stderr, "sss_demo: GL functions missing: %s\n", missing.c_str());
     sss_headless_destroy(headless);
     return false;

@@ -97,7 +97,8 @@
   X(PFNGLUNIFORM1FPROC, glUniform1f)                             \
   X(PFNGLUNIFORM2FPROC, glUniform2f)                             \
   X(PFNGLUNIFORM3FVPROC, glUniform3fv)                           \
-  X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)
+  X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)              \
+  X(PFNGLDEBUGMESSAGECALLBACKPROC, glDebugMessageCallback)
 
 namespace host_gl {
 

@@ -1,7 +1,5 @@
 #include "gl_fixture.hpp"
 
-#include <cstdlib>
-
 using namespace host_gl;
 
 namespace sss_test {
@@ -23,14 +21,12 @@ void read_level0(GLuint texture, GLenum format, float* out) {
 }
 }  // namespace
 
-sss_headless_backend test_backend() {
-  const char* name = std::getenv("SSS_TEST_BACKEND");
-  sss_headless_backend backend = SSS_HEADLESS_OSMESA;
-  if (name != nullptr && sss_headless_backend_from_name(name, &backend) != 0) {
-    ADD_FAILURE() << "SSS_TEST_BACKEND=" << name << " is not a backend name";
-  }
-  return backend;
+namespace {
+sss_headless_backend g_backend = SSS_HEADLESS_OSMESA;
 }
+
+sss_headless_backend test_backend() { return g_backend; }
+void set_test_backend(sss_headless_backend backend) { g_backend = backend; }
 
 void GlTest::SetUp() {
   sss_headless_desc desc = {};

@@ -1,6 +1,6 @@
-// A GL test: a fresh headless context per test on the backend named by SSS_TEST_BACKEND ("osmesa",
-// "egl"; ctest runs every GL test once per backend), the host-side GL loaded, and helpers to make
-// and read textures.
+// A GL test: a fresh headless context per test on the backend chosen with --sss-backend (see
+// gl_test_main.cpp; ctest runs every GL test once per backend), the host-side GL loaded, and
+// helpers to make and read textures.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -37,7 +37,8 @@ class GlTest : public ::testing::Test {
   std::string backend_name_;
 };
 
-// The backend the tests run on (SSS_TEST_BACKEND, default osmesa).
+// The backend the tests run on (default OSMesa).
 sss_headless_backend test_backend();
+void set_test_backend(sss_headless_backend backend);
 
 }  // namespace sss_test

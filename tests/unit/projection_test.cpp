@@ -5,20 +5,14 @@
 
 #include "math/filter_constants.hpp"
 #include "math/projection.hpp"
+#include "synthetic_scene.hpp"
 
 namespace {
 
 using sss::math::Matrix4;
 
 Matrix4 perspective(float fovy_deg, float aspect, float near, float far) {
-  const float f = 1.0f / std::tan(fovy_deg * 3.14159265f / 360.0f);
-  Matrix4 m{};
-  m[0] = f / aspect;
-  m[5] = f;
-  m[10] = (far + near) / (near - far);
-  m[11] = -1.0f;
-  m[14] = 2.0f * far * near / (near - far);
-  return m;
+  return sss_test::perspective_matrix(fovy_deg, aspect, near, far);
 }
 
 Matrix4 infinite_perspective(float fovy_deg, float aspect, float near) {
@@ -37,13 +31,7 @@ Matrix4 reversed_perspective(float fovy_deg, float aspect, float near, float far
 }
 
 Matrix4 orthographic(float half_width, float half_height, float near, float far) {
-  Matrix4 m{};
-  m[0] = 1.0f / half_width;
-  m[5] = 1.0f / half_height;
-  m[10] = -2.0f / (far - near);
-  m[14] = -(far + near) / (far - near);
-  m[15] = 1.0f;
-  return m;
+  return sss_test::orthographic_matrix(half_width, half_height, near, far);
 }
 
 double ndc_z(const Matrix4& m, double distance) {

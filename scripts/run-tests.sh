@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The whole test suite from a clean checkout: installs the missing Debian packages, builds with
+# warnings as errors, runs every ctest suite (GL tests once on OSMesa and once on EGL surfaceless),
+# then builds again with AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again.
+#
+#   scripts/run-tests.sh [--no-sanitizers]
+#
+# Build folders: build/release and build/sanitize (ignored by git). Exit status: 0 when every
+# suite passed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+sanitizers=1
+for arg in "$@"; do
+  case "$arg" in
+    --no-sanitizers) sanitizers=0 ;;
+    *) echo "run-tests.sh: unknown argument '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+scripts/install-deps.sh test
+jobs=$(nproc)
+
+run_suite() {  # name, build dir, extra cmake arguments...
+  local name=$1 dir=$2
+  shift 2
+  echo "== $name: configure and build ($dir)"
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_WARNINGS_AS_ERRORS=ON "$@"
+  cmake --build "$dir" --parallel "$jobs"
+  echo "== $name: ctest"
+  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs"
+}
+
+run_suite "release" build/release
+if [[ $sanitizers -eq 1 ]]; then
+  # halt_on_error: UBSan is built without recovery; ASan stops at the first report anyway.
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  run_suite "asan+ubsan" build/sanitize -DSSS_SANITIZE=ON -DSSS_BUILD_DEMO=OFF
+fi
