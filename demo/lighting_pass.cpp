@@ -1,6 +1,6 @@
 #include "lighting_pass.hpp"
 
-#include "gl_util.hpp"
+#include "host_gl_util.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -2,7 +2,7 @@
 #include "composite.hpp"
 #include "context.hpp"
 #include "gl_functions.hpp"
-#include "gl_util.hpp"
+#include "host_gl_util.hpp"
 #include "image.hpp"
 #include "lighting_pass.hpp"
 #include "options.hpp"

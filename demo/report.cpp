@@ -1,6 +1,6 @@
 #include "report.hpp"
 
-#include "gl_util.hpp"
+#include "host_gl_util.hpp"
 #include "shadow_pass.hpp"
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "texture_copy.hpp"
 
-#include "gl_util.hpp"
+#include "host_gl_util.hpp"
 
 namespace demo {
 

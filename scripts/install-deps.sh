@@ -4,7 +4,8 @@
 #   scripts/install-deps.sh [--check] [build|test|demo|all ...]
 #
 #   build   compiler, CMake/Ninja, OpenGL headers, OSMesa/EGL (llvmpipe), GLM, stb
-#   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator
+#   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
+#           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots)
 #   demo    build + GLFW, tinygltf, Dear ImGui
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
@@ -15,7 +16,8 @@ set -euo pipefail
 
 readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev)
-readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools)
+readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
+  nlohmann-json3-dev gnuplot-nox)
 readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev)
 
 usage() {

@@ -48,6 +48,11 @@
   X(PFNGLGENTEXTURESPROC, glGenTextures)                         \
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                   \
   X(PFNGLISTEXTUREPROC, glIsTexture)                             \
+  X(PFNGLISBUFFERPROC, glIsBuffer)                               \
+  X(PFNGLISFRAMEBUFFERPROC, glIsFramebuffer)                     \
+  X(PFNGLISVERTEXARRAYPROC, glIsVertexArray)                     \
+  X(PFNGLISPROGRAMPROC, glIsProgram)                             \
+  X(PFNGLISSHADERPROC, glIsShader)                               \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                         \
   X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                     \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                           \
@@ -55,6 +60,7 @@
   X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                     \
   X(PFNGLGETTEXIMAGEPROC, glGetTexImage)                         \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                     \
+  X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                   \
   X(PFNGLGETTEXPARAMETERIVPROC, glGetTexParameteriv)             \
   X(PFNGLGENSAMPLERSPROC, glGenSamplers)                         \
   X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                   \
@@ -98,7 +104,19 @@
   X(PFNGLUNIFORM2FPROC, glUniform2f)                             \
   X(PFNGLUNIFORM3FVPROC, glUniform3fv)                           \
   X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)              \
-  X(PFNGLDEBUGMESSAGECALLBACKPROC, glDebugMessageCallback)
+  X(PFNGLDEBUGMESSAGECALLBACKPROC, glDebugMessageCallback)      \
+  X(PFNGLENABLEIPROC, glEnablei)                                 \
+  X(PFNGLDISABLEIPROC, glDisablei)                               \
+  X(PFNGLBLENDCOLORPROC, glBlendColor)                           \
+  X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                     \
+  X(PFNGLUNIFORM4FPROC, glUniform4f)                             \
+  X(PFNGLUNIFORM4FVPROC, glUniform4fv)                           \
+  X(PFNGLUNIFORM1FVPROC, glUniform1fv)                           \
+  X(PFNGLGENQUERIESPROC, glGenQueries)                           \
+  X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                     \
+  X(PFNGLBEGINQUERYPROC, glBeginQuery)                           \
+  X(PFNGLENDQUERYPROC, glEndQuery)                               \
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)
 
 namespace host_gl {
 

@@ -1,10 +1,10 @@
-#include "gl_util.hpp"
+#include "host_gl_util.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <vector>
 
-namespace demo {
+namespace host_gl {
 
 namespace {
 
@@ -30,7 +30,7 @@ GLuint compile(const char *program_name, GLenum kind, const char *source) {
     glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> log(static_cast<size_t>(length > 1 ? length : 1), '\0');
     glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    std::fprintf(stderr, "sss_demo: %s: %s shader failed to compile:\n%s\n", program_name,
+    std::fprintf(stderr, "%s: %s shader failed to compile:\n%s\n", program_name,
                  kind == GL_VERTEX_SHADER ? "vertex" : "fragment", log.data());
     glDeleteShader(shader);
     return 0;
@@ -45,7 +45,7 @@ bool check_gl(const char *stage) {
   for (int i = 0; i < 16; ++i) {  // bounded: a lost context may report errors forever
     GLenum e = glGetError();
     if (e == GL_NO_ERROR) break;
-    std::fprintf(stderr, "sss_demo: GL error after %s: %s (0x%04x)\n", stage, gl_error_name(e), e);
+    std::fprintf(stderr, "GL error after %s: %s (0x%04x)\n", stage, gl_error_name(e), e);
     ok = false;
   }
   return ok;
@@ -71,7 +71,7 @@ GLuint build_program(const char *name, const char *vertex_source, const char *fr
     glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> log(static_cast<size_t>(length > 1 ? length : 1), '\0');
     glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    std::fprintf(stderr, "sss_demo: %s: program failed to link:\n%s\n", name, log.data());
+    std::fprintf(stderr, "%s: program failed to link:\n%s\n", name, log.data());
     glDeleteProgram(program);
     return 0;
   }
@@ -95,7 +95,7 @@ GLuint make_texture(GLint internal_format, GLsizei width, GLsizei height, GLenum
 bool check_framebuffer(const char *name) {
   GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    std::fprintf(stderr, "sss_demo: framebuffer '%s' is incomplete (status 0x%04x)\n", name, status);
+    std::fprintf(stderr, "framebuffer '%s' is incomplete (status 0x%04x)\n", name, status);
     return false;
   }
   return true;
@@ -106,4 +106,4 @@ double now_ms() {
   return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
 }
 
-}  // namespace demo
+}  // namespace host_gl

@@ -1,11 +1,12 @@
-// Small GL helpers shared by the passes: error checks, programs, textures, framebuffers.
+// Small GL helpers for the project's host programs (demo, benchmark, scenes): error checks,
+// programs, textures, framebuffers, a clock. Messages go to stderr.
 #pragma once
 
-#include "gl_functions.hpp"
+#include "host_gl.hpp"
 
 #include <string>
 
-namespace demo {
+namespace host_gl {
 
 // Drains glGetError; prints each error with `stage` and returns false when there was any.
 bool check_gl(const char *stage);
@@ -22,4 +23,4 @@ bool check_framebuffer(const char *name);
 // Monotonic milliseconds, for stage timings.
 double now_ms();
 
-}  // namespace demo
+}  // namespace host_gl
