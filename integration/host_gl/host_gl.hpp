@@ -45,6 +45,7 @@
   X(PFNGLREADBUFFERPROC, glReadBuffer)                           \
   X(PFNGLREADPIXELSPROC, glReadPixels)                           \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                         \
+  X(PFNGLCLAMPCOLORPROC, glClampColor)                           \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                         \
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                   \
   X(PFNGLISTEXTUREPROC, glIsTexture)                             \
@@ -112,6 +113,9 @@
   X(PFNGLUNIFORM4FPROC, glUniform4f)                             \
   X(PFNGLUNIFORM4FVPROC, glUniform4fv)                           \
   X(PFNGLUNIFORM1FVPROC, glUniform1fv)                           \
+  X(PFNGLUNIFORM2FVPROC, glUniform2fv)                           \
+  X(PFNGLUNIFORM2IPROC, glUniform2i)                             \
+  X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)             \
   X(PFNGLGENQUERIESPROC, glGenQueries)                           \
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                     \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                           \

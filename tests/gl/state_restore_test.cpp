@@ -243,5 +243,25 @@ TEST_F(StateRestore, FailedCallsLeaveNoErrorAndNoStateBehind) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+TEST_F(StateRestore, AProgramDeletedWhileCurrentLeavesNoErrorBehind) {
+  const SyntheticScene scene = make_relief_scene(16, 16, 2, perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f));
+  FilterCase c;
+  sss_default_settings(&c.settings);
+  c.settings.width = 0.05f;
+  set_unusual_state();
+  glDeleteProgram(program_);  // flagged for deletion; stays current until another is bound
+  sss_context* created = create_sss();  // builds programs, so binds others
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  sss_destroy(created);
+  set_unusual_state();
+  glDeleteProgram(program_);
+  const FilterOutcome o = run_case(scene, c);
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  GLint current = -1;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  EXPECT_EQ(current, 0);
+}
+
 }  // namespace
 }  // namespace sss_test

@@ -78,6 +78,7 @@ using GLubyte = unsigned char;
   X(void, GetProgramiv, (GLuint program, GLenum pname, GLint * params))                                \
   X(void, GetProgramInfoLog, (GLuint program, GLsizei bufSize, GLsizei * length, GLchar * infoLog))    \
   X(void, DeleteProgram, (GLuint program))                                                             \
+  X(GLboolean, IsProgram, (GLuint program))                                                            \
   X(void, UseProgram, (GLuint program))                                                                \
   X(GLint, GetUniformLocation, (GLuint program, const GLchar* name))                                   \
   X(void, Uniform1i, (GLint location, GLint v0))                                                       \

@@ -77,7 +77,11 @@ StateGuard::~StateGuard() {
   gl_.BindFramebuffer(READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
   gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
   gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
-  gl_.UseProgram(static_cast<GLuint>(program_));
+  // A program the host deleted while it was current lives on only while current: once the
+  // passes bound another, it is gone and binding its name would raise GL_INVALID_VALUE. Zero is
+  // what the host's own next glUseProgram would have found then.
+  const GLuint program = static_cast<GLuint>(program_);
+  gl_.UseProgram(program != 0 && gl_.IsProgram(program) ? program : 0);
 }
 
 void set_pass_state(const Functions& gl) {

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Regenerates docs/benchmarks.md (and its plots and pictures in docs/benchmarks/): the full
+# benchmark sweep on this machine's GL (headless; on Mesa that is llvmpipe). Installs what is
+# missing first. Extra arguments go to sss_bench (e.g. --size 1920x1080 --scenes head-close,head-mid
+# for a shorter run; see `sss_bench --help`).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh test
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build build/release --parallel "$(nproc)" --target sss_bench
+rm -rf docs/benchmarks
+mkdir -p docs/benchmarks
+build/release/tests/bench/sss_bench --full --out docs/benchmarks --doc docs/benchmarks.md "$@"
+# The gnuplot inputs are intermediate files; the PNGs and tables stay.
+rm -f docs/benchmarks/*.dat docs/benchmarks/*.gp

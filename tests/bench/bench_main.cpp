@@ -1,0 +1,299 @@
+// sss_bench: run time against error. For every scene × resolution it builds the exact reference
+// (the CPU exact 2D convolution for small images; the GL exact filter, spot-checked against the
+// CPU, for large ones), then times every method configuration and scores its output against the
+// reference. Writes results.csv, results.json, results.md, Pareto plots and heat maps into --out,
+// and with --doc the results document.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gpu_scene.hpp"
+#include "host_gl.hpp"
+#include "host_gl_util.hpp"
+#include "method.hpp"
+#include "metrics.hpp"
+#include "options.hpp"
+#include "reference.hpp"
+#include "report.hpp"
+#include "results.hpp"
+#include "scenes/scenes.hpp"
+#include "sss_headless.h"
+#include "timing.hpp"
+
+using namespace host_gl;
+
+namespace sss_bench {
+namespace {
+
+struct MethodConfig {
+  std::string kind;  // "separable", "sum-of-gaussians", "exact-2d"
+  int taps = 0;
+  bool follow_surface = false;
+};
+
+std::vector<MethodConfig> method_configs(const Options& o) {
+  std::vector<MethodConfig> configs;
+  for (bool follow : o.follow_surface) {
+    for (int taps : o.separable_taps) configs.push_back({"separable", taps, follow});
+    for (int taps : o.gaussian_taps) configs.push_back({"sum-of-gaussians", taps, follow});
+  }
+  if (o.exact_method) configs.push_back({"exact-2d", 0, false});
+  return configs;
+}
+
+std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loader) {
+  if (c.kind == "separable") return make_separable_method(loader, c.taps, c.follow_surface);
+  if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
+  return make_exact_method();
+}
+
+std::string now_utc() {
+  const std::time_t t = std::time(nullptr);
+  char buffer[64];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
+  return buffer;
+}
+
+// Scores results where the reference holds values: every pixel (stride 1), or the 1-in-stride²
+// grid of receivers, decimated to a small image so that SSIM's windows see only reference pixels.
+class Grid {
+ public:
+  Grid(int stride, const RgbImage& reference, const std::vector<uint8_t>& mask, int width, int height)
+      : stride_(stride), width_(width), height_(height) {
+    reference_ = decimate(reference);
+    mask_.resize(static_cast<std::size_t>(reference_.width) * reference_.height);
+    for (int y = 0; y < reference_.height; ++y) {
+      for (int x = 0; x < reference_.width; ++x) {
+        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(y * stride_ + stride_ / 2) * width_ +
+                                             static_cast<std::size_t>(x * stride_ + stride_ / 2)];
+      }
+    }
+  }
+  ErrorMetrics compare(const RgbImage& result) const { return compare_images(decimate(result), reference_, mask_.data()); }
+  std::size_t selected() const { return static_cast<std::size_t>(std::count(mask_.begin(), mask_.end(), 1)); }
+
+ private:
+  RgbImage decimate(const RgbImage& full) const {
+    if (stride_ == 1) return full;
+    RgbImage small((width_ - stride_ / 2 + stride_ - 1) / stride_, (height_ - stride_ / 2 + stride_ - 1) / stride_);
+    for (int y = 0; y < small.height; ++y) {
+      for (int x = 0; x < small.width; ++x) {
+        for (int c = 0; c < 3; ++c) small.at(x, y, c) = full.at(x * stride_ + stride_ / 2, y * stride_ + stride_ / 2, c);
+      }
+    }
+    return small;
+  }
+  int stride_, width_, height_;
+  RgbImage reference_;
+  std::vector<uint8_t> mask_;
+};
+
+// Rows [y0, y1) around the middle translucent row holding about 1/stride² of the translucent pixels.
+struct Band {
+  int y0 = 0, y1 = 0;
+  long inside = 0, total = 0;
+};
+Band translucent_band(const std::vector<uint8_t>& mask, int width, int height, int stride) {
+  std::vector<long> per_row(static_cast<std::size_t>(height), 0);
+  Band b;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) per_row[static_cast<std::size_t>(y)] += mask[static_cast<std::size_t>(y) * width + x] != 0;
+    b.total += per_row[static_cast<std::size_t>(y)];
+  }
+  long seen = 0;
+  int middle = 0;
+  while (middle < height - 1 && seen + per_row[static_cast<std::size_t>(middle)] < b.total / 2) seen += per_row[static_cast<std::size_t>(middle++)];
+  const long wanted = std::max(1L, b.total / (static_cast<long>(stride) * stride));
+  b.y0 = b.y1 = middle;
+  while (b.inside < wanted && (b.y0 > 0 || b.y1 < height)) {
+    if (b.y1 < height) b.inside += per_row[static_cast<std::size_t>(b.y1++)];
+    if (b.inside < wanted && b.y0 > 0) b.inside += per_row[static_cast<std::size_t>(--b.y0)];
+  }
+  return b;
+}
+
+int count(const std::vector<uint8_t>& mask) {
+  return static_cast<int>(std::count_if(mask.begin(), mask.end(), [](uint8_t m) { return m != 0; }));
+}
+
+int run(const Options& options) {
+  sss_headless_backend backend;
+  if (sss_headless_backend_from_name(options.backend.c_str(), &backend) != 0) {
+    std::fprintf(stderr, "sss_bench: unknown backend %s\n", options.backend.c_str());
+    return 2;
+  }
+  sss_headless_desc desc = {backend, 3, 3, 1, 0};
+  sss_headless* headless = nullptr;
+  char error[512] = "";
+  if (sss_headless_create(&desc, &headless, error, sizeof error) != 0) {
+    std::fprintf(stderr, "sss_bench: no GL context: %s\n", error);
+    return 1;
+  }
+  std::string missing;
+  if (!host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
+    std::fprintf(stderr, "sss_bench: missing GL functions: %s\n", missing.c_str());
+    return 1;
+  }
+  std::filesystem::create_directories(options.out);
+  RunInfo info;
+  info.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  info.version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  info.backend = sss_headless_backend_name(backend);
+  const Clock clock = clock_for_renderer(info.renderer);
+  info.clock = clock_name(clock);
+  info.date = now_utc();
+  info.mode = options.mode;
+  info.command_line = options.command_line;
+  info.warmup = options.warmup;
+  info.repetitions = options.repetitions;
+  info.reference = "exact 2D surface convolution with the six-Gaussian skin profile (CPU double up to " +
+                   std::to_string(options.cpu_reference_max_pixels) + " pixels; GL fp32 above, spot-checked on the CPU)";
+  std::printf("sss_bench: %s mode, GL_RENDERER %s, %s, timing: %s\n", options.mode.c_str(), info.renderer.c_str(),
+              info.version.c_str(), info.clock.c_str());
+
+  const GlLoader loader{sss_headless_get_proc_address, headless};
+  const std::vector<std::string> default_scenes = options.scenes.empty() ? canonical_scene_names() : options.scenes;
+  auto scenes_at = [&](std::size_t size_index) {
+    const bool own = size_index < options.size_scenes.size() && !options.size_scenes[size_index].empty();
+    return own ? options.size_scenes[size_index] : default_scenes;
+  };
+  const std::vector<MethodConfig> configs = method_configs(options);
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < options.sizes.size(); ++i) total += scenes_at(i).size() * (configs.size() + 1);
+  std::size_t done = 0;
+  std::vector<ResultRow> rows;
+  std::vector<ReferenceCheck> checks;
+  auto copy_method = make_copy_method();
+
+  for (std::size_t size_index = 0; size_index < options.sizes.size(); ++size_index) {
+    const auto [width, height] = options.sizes[size_index];
+    for (const std::string& scene_name : scenes_at(size_index)) {
+      const Scene scene = make_scene(scene_name, width, height);
+      GpuScene gpu = upload_scene(scene);
+      const GLuint output = make_output_texture(width, height);
+      const std::string tag = scene_name + "-" + std::to_string(width) + "x" + std::to_string(height);
+
+      // The reference, and the yardstick time.
+      if (!check_gl(("making " + tag).c_str())) throw std::runtime_error("making " + tag + " left a GL error");
+      const int stride = options.reference_stride > 0 ? options.reference_stride : std::max(1, (height + 90) / 180);
+      const Reference reference =
+          make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
+      if (reference.check.checked > 0) checks.push_back(reference.check);
+      std::string message;
+      const Timing copy = time_frames(clock, options.warmup, options.repetitions,
+                                      [&] { return copy_method->run(gpu, output, &message); });
+      ++done;
+      std::printf("[%zu/%zu] %s: reference %s, copy %.3f ms\n", done, total, tag.c_str(), reference.source.c_str(),
+                  copy.median_ms);
+      std::fflush(stdout);
+      const RgbImage reference_image = RgbImage::from_rgba(reference.rgba.data(), width, height);
+      const bool pictured = options.heat_maps && is_pictured_scene(scene_name, width, options.sizes);
+      if (pictured) {
+        write_tonemapped_png(options.out + "/" + tag + "-input.png",
+                             RgbImage::from_rgba(gpu.irradiance_half.data(), width, height));
+        write_tonemapped_png(options.out + "/" + tag + "-reference.png", reference_image);
+      }
+
+      const Grid grid(reference.stride, reference_image, scene.mask, width, height);
+      for (const MethodConfig& config : configs) {
+        ResultRow row;
+        ErrorMetrics e;
+        Timing t;
+        const bool exact = config.kind == "exact-2d";
+        if (exact && reference.source.rfind("GL", 0) == 0) {
+          // The reference was this filter, so its error is zero by definition. Its time: the
+          // reference's own frame at stride 1; on a grid, a full-resolution band of rows holding
+          // 1/stride² of the translucent pixels, timed and scaled by the pixel count (the grid
+          // itself runs less coherently on SIMD hardware and would overstate the cost).
+          row.method = "exact-2d";
+          row.passes = 2;
+          e.pixels = grid.selected();
+          if (reference.stride == 1) {
+            t.median_ms = t.min_ms = t.max_ms = reference.gl_time_ms;
+          } else {
+            const Band band = translucent_band(scene.mask, width, height, reference.stride);
+            auto method = make_exact_method(1, {band.y0, band.y1});
+            t = time_frames(clock, 1, 1, [&] { return method->run(gpu, output, &message); });
+            if (t.samples == 0) throw std::runtime_error(tag + " exact-2d band: " + message);
+            const double scale = static_cast<double>(band.total) / static_cast<double>(std::max(band.inside, 1L));
+            t.median_ms = t.min_ms = t.max_ms = t.median_ms * scale;
+            row.time_extrapolated = true;
+            row.band_rows = band.y1 - band.y0;
+          }
+          t.samples = 1;
+        } else {
+          auto method = make_method(config, loader);
+          // The exact filter is slow on a software rasteriser: one frame (after one that compiles
+          // its shaders) is its measurement.
+          t = time_frames(clock, exact ? 1 : options.warmup, exact ? 1 : options.repetitions,
+                          [&] { return method->run(gpu, output, &message); });
+          if (t.samples == 0) throw std::runtime_error(tag + " " + config.kind + ": " + message);
+          if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
+          row.method = method->name();
+          row.taps = method->taps();
+          row.follow_surface = method->follow_surface();
+          row.passes = method->passes();
+          const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
+          e = grid.compare(result);
+          if (pictured && is_pictured_method(row)) {
+            const std::string stem = options.out + "/" + picture_stem(row);
+            write_tonemapped_png(stem + ".png", result);
+            write_error_heatmap_png(stem + "-error.png", result, reference_image, scene.mask.data(),
+                                    heat_map_scale(reference_image, scene.mask.data()));
+          }
+        }
+        ++done;
+        row.scene = scene_name;
+        row.width = width;
+        row.height = height;
+        row.reference_stride = reference.stride;
+        row.time_ms = t.median_ms;
+        row.time_min_ms = t.min_ms;
+        row.time_max_ms = t.max_ms;
+        row.samples = t.samples;
+        row.time_ratio_to_copy = copy.median_ms > 0.0 ? t.median_ms / copy.median_ms : 0.0;
+        row.relative_rmse = e.relative_rmse;
+        row.max_abs_error = e.max_abs;
+        row.p99_abs_error = e.p99_abs;
+        row.ssim = e.ssim;
+        row.translucent_pixels = count(scene.mask);
+        rows.push_back(row);
+        std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), rel. RMSE %.4g, SSIM %.4f\n", done, total, tag.c_str(),
+                    method_label(row).c_str(), row.time_ms, row.time_ratio_to_copy, row.relative_rmse, row.ssim);
+        std::fflush(stdout);
+      }
+      glDeleteTextures(1, &output);
+      destroy_scene(&gpu);
+    }
+  }
+  copy_method.reset();
+
+  write_csv(options.out + "/results.csv", rows);
+  write_json(options.out + "/results.json", info, rows);
+  write_markdown_table(options.out + "/results.md", info, rows);
+  const std::vector<std::string> plots = write_pareto_plots(options.out, rows);
+  if (!options.doc.empty()) write_results_document(options.doc, options.out, info, rows, checks, plots);
+  std::printf("sss_bench: %zu rows, %zu plots in %s%s\n", rows.size(), plots.size(), options.out.c_str(),
+              plots.empty() ? " (gnuplot not found: no plots)" : "");
+  sss_headless_destroy(headless);
+  return 0;
+}
+
+}  // namespace
+}  // namespace sss_bench
+
+int main(int argc, char** argv) {
+  try {
+    return sss_bench::run(sss_bench::parse_options(argc, argv));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sss_bench: %s\n", e.what());
+    return 1;
+  }
+}

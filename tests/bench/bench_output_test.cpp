@@ -1,0 +1,102 @@
+// What `sss_bench --quick` wrote (ctest runs it first, as a fixture): every file there, the CSV
+// with all its columns and no NaN, the JSON with the same rows, a row for every method, and
+// errors that make sense (the exact filter agrees with the CPU reference; the separable filter
+// beats a do-nothing copy on scenes with light to scatter).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::string kDir = SSS_BENCH_QUICK_DIR;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  std::string field;
+  while (std::getline(stream, field, ',')) fields.push_back(field);
+  return fields;
+}
+
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+};
+
+Csv read_csv(const std::string& path) {
+  Csv csv;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) return csv;
+  csv.header = split(line);
+  while (std::getline(in, line)) {
+    const auto fields = split(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < fields.size() && i < csv.header.size(); ++i) row[csv.header[i]] = fields[i];
+    EXPECT_EQ(fields.size(), csv.header.size()) << line;
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+TEST(BenchQuickOutput, FilesExist) {
+  for (const char* name : {"results.csv", "results.json", "results.md", "benchmarks.md"}) {
+    EXPECT_TRUE(std::filesystem::exists(kDir + "/" + name)) << name;
+  }
+}
+
+TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  for (const char* column : {"scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms",
+                             "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
+    EXPECT_NE(std::find(csv.header.begin(), csv.header.end(), column), csv.header.end()) << column;
+  }
+  ASSERT_FALSE(csv.rows.empty());
+  std::set<std::string> methods, scenes;
+  for (const auto& row : csv.rows) {
+    methods.insert(row.at("method"));
+    scenes.insert(row.at("scene"));
+    for (const char* numeric : {"time_ms", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
+      const double v = std::stod(row.at(numeric));
+      EXPECT_TRUE(std::isfinite(v)) << numeric << " in " << row.at("scene") << " " << row.at("method");
+    }
+    EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
+  }
+  EXPECT_EQ(methods, (std::set<std::string>{"separable", "sum-of-gaussians", "exact-2d"}));
+  EXPECT_EQ(scenes.size(), 10u);
+}
+
+TEST(BenchQuickOutput, JsonMatchesCsv) {
+  std::ifstream in(kDir + "/results.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_FALSE(j["run"]["renderer"].get<std::string>().empty());
+  EXPECT_EQ(j["results"].size(), read_csv(kDir + "/results.csv").rows.size());
+}
+
+TEST(BenchQuickOutput, ErrorsMakeSense) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  for (const auto& row : csv.rows) {
+    if (std::stoi(row.at("translucent_pixels")) == 0) continue;
+    const double rmse = std::stod(row.at("relative_rmse"));
+    if (row.at("method") == "exact-2d") {
+      // The GL exact filter in fp32 against the CPU one in double (quick mode uses the CPU
+      // reference): the erfc approximation (1.2e-7 relative) and fp32 sums leave ~1e-5.
+      EXPECT_LT(rmse, 1e-3) << row.at("scene");
+    } else {
+      EXPECT_LT(rmse, 0.5) << row.at("scene") << " " << row.at("method") << " " << row.at("taps");
+    }
+    const double ssim = std::stod(row.at("ssim"));
+    EXPECT_GT(ssim, 0.5);
+    EXPECT_LE(ssim, 1.0 + 1e-9);
+  }
+}
+
+}  // namespace

@@ -1,0 +1,41 @@
+// A screen-space subsurface-scattering method the benchmark times and scores: the library's
+// separable filter, and the baselines a user would compare it with (sum of Gaussians, exact 2D),
+// plus a two-pass copy that every time is normalised by.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "gpu_scene.hpp"
+
+namespace sss_bench {
+
+class Method {
+ public:
+  virtual ~Method() = default;
+  virtual std::string name() const = 0;  // "separable", "sum-of-gaussians", "exact-2d", "copy"
+  virtual int taps() const = 0;          // taps per 1D pass (window width for exact-2d: 0)
+  virtual bool follow_surface() const = 0;
+  virtual int passes() const = 0;        // full-screen passes per frame
+  // Renders the result for `scene` into `output` (GL_RGBA32F, scene size). Non-translucent pixels
+  // must hold the input. Returns false with `error` set when the GL refused something.
+  virtual bool run(const GpuScene& scene, GLuint output, std::string* error) = 0;
+};
+
+// The loader the library gets from its host (sss_create_desc.get_proc_address and its user).
+struct GlLoader {
+  void* (*get_proc_address)(const char* name, void* user) = nullptr;
+  void* user = nullptr;
+};
+
+std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface);
+std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
+// receiver_stride s > 1: only pixels with x % s == s / 2 and y % s == s / 2 are computed (the
+// others keep the input); the full-size exact filter is too slow on a CPU rasteriser otherwise.
+// band_rows = {y0, y1} with y1 > y0: only receivers in those rows (a timing sample; the other
+// rows of the output are left as they were).
+std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
+std::unique_ptr<Method> make_copy_method();
+
+}  // namespace sss_bench

@@ -1,0 +1,91 @@
+// Image metrics of the benchmark (DESIGN.md §6): how far a filter's output is from the exact
+// reference, in linear light and as a person sees it after tone mapping, plus PNG writers for the
+// pictures a person looks at. Benchmark side only (not part of the library).
+//
+// Images are linear RGB in doubles, row 0 at the bottom (GL order), like the exact reference's
+// output. Every metric is taken over the pixels selected by a mask (the translucent pixels;
+// nullptr selects every pixel); the two images must have the same size.
+//
+// Definitions
+// -----------
+// - relative RMSE: sqrt( Σ (a - r)² / Σ r² ), sums over the R, G and B components of the selected
+//   pixels, in linear light. 0 when both sums are 0; +inf when only Σ r² is 0.
+// - max abs: max |a - r| over the same components.
+// - p99 abs: the 99th percentile of |a - r| over the same components, nearest-rank definition:
+//   the ceil(0.99 · n)-th smallest of the n values (n = 3 · selected pixels).
+// - SSIM (Wang et al. 2004) on the tone-mapped images (tone_map() below, values in [0, 1]):
+//   per channel, local means, variances and covariance under an 11×11 Gaussian window, σ = 1.5
+//   pixels (weights normalised to sum 1; near the border the window is cut to the image and
+//   renormalised, so every pixel gets a full-weight window), C1 = (0.01)², C2 = (0.03)² (K1 = 0.01,
+//   K2 = 0.03, dynamic range L = 1):
+//     SSIM = (2 μa μr + C1)(2 σar + C2) / ((μa² + μr² + C1)(σa² + σr² + C2)),
+//   averaged over the three channels and over the windows centred on selected pixels. The windows
+//   themselves include unselected neighbours (in our benchmark those are identical in both images:
+//   filters and the reference leave non-translucent pixels untouched). 1 when nothing is selected.
+// - Tone map: exposure e (linear scale), then Narkowicz's 2015 fit of the ACES filmic curve,
+//     f(x) = x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), clamped to [0, 1],
+//   then the sRGB transfer function (12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055).
+//   Negative inputs clamp to 0.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sss_bench {
+
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<double> rgb;  // width · height · 3, row 0 at the bottom
+
+  RgbImage() = default;
+  RgbImage(int w, int h, double value = 0.0);
+  static RgbImage from_rgba(const float* rgba, int width, int height);  // drops alpha
+  static RgbImage from_rgb(const double* rgb, int width, int height);
+
+  double& at(int x, int y, int c) { return rgb[index(x, y) * 3 + static_cast<std::size_t>(c)]; }
+  double at(int x, int y, int c) const { return rgb[index(x, y) * 3 + static_cast<std::size_t>(c)]; }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  }
+};
+
+struct ErrorMetrics {
+  double relative_rmse = 0.0;
+  double max_abs = 0.0;
+  double p99_abs = 0.0;
+  double ssim = 1.0;
+  std::size_t pixels = 0;  // selected pixels
+};
+
+// The functions below throw std::invalid_argument when the sizes differ or are not positive.
+// `mask`: width · height bytes, non-zero selects; nullptr selects all.
+double relative_rmse(const RgbImage& a, const RgbImage& reference, const uint8_t* mask);
+double max_abs_error(const RgbImage& a, const RgbImage& reference, const uint8_t* mask);
+double percentile_abs_error(const RgbImage& a, const RgbImage& reference, const uint8_t* mask, double fraction = 0.99);
+double ssim_tonemapped(const RgbImage& a, const RgbImage& reference, const uint8_t* mask, double exposure = 1.0);
+ErrorMetrics compare_images(const RgbImage& a, const RgbImage& reference, const uint8_t* mask, double exposure = 1.0);
+
+// SSIM of two images already in [0, 1] (no tone map): the core of ssim_tonemapped.
+double ssim_display(const RgbImage& a, const RgbImage& reference, const uint8_t* mask);
+
+// The tone map of one linear component (see above): [0, 1] display value.
+double tone_map(double linear, double exposure = 1.0);
+RgbImage tone_map_image(const RgbImage& linear, double exposure = 1.0);
+
+// The colour ramp of the heat maps: t in [0, 1] (clamped) -> 8-bit RGB, a piecewise-linear
+// viridis-like ramp (dark blue-violet, blue, teal, green, yellow; lightness increases steadily).
+std::array<uint8_t, 3> error_ramp(double t);
+
+// Heat map of |a - r| (max over the channels) / scale through error_ramp (values >= scale are at
+// the top). Unselected pixels are mid grey (128, 128, 128), which is not on the ramp. PNG, top row
+// first as viewers expect (the image is flipped from GL order). Returns false if writing failed.
+bool write_error_heatmap_png(const std::string& path, const RgbImage& a, const RgbImage& reference,
+                             const uint8_t* mask, double scale);
+
+// The image tone-mapped (tone_map, exposure) as an 8-bit sRGB PNG, top row first.
+bool write_tonemapped_png(const std::string& path, const RgbImage& linear, double exposure = 1.0);
+
+}  // namespace sss_bench

@@ -1,0 +1,33 @@
+// Command line of sss_bench.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sss_bench {
+
+struct Options {
+  std::string mode = "quick";                       // "quick" (CI) or "full"
+  std::vector<std::pair<int, int>> sizes;           // resolutions
+  std::vector<std::vector<std::string>> size_scenes;  // per size: its scenes (empty: --scenes / all)
+  std::vector<std::string> scenes;                  // canonical scene names
+  std::vector<int> separable_taps;                  // tap counts of the separable filter
+  std::vector<int> gaussian_taps;                   // taps per 1D pass of the sum of Gaussians
+  std::vector<bool> follow_surface = {true, false};
+  bool exact_method = true;                         // time the GL exact 2D filter as a method
+  int warmup = 2, repetitions = 5;
+  long cpu_reference_max_pixels = 160 * 90;         // above: GL exact reference, spot-checked on the CPU
+  int cpu_spot_checks = 24;                         // receivers checked against the CPU when on the GL
+  int reference_stride = 0;                         // GL reference receivers on a 1-in-s² grid; 0: auto
+  std::string out = "bench-out";
+  std::string backend = "egl";
+  std::string doc;                                  // also write this results document (Markdown)
+  bool heat_maps = true;
+  std::string command_line;
+};
+
+// Parses argv (after the mode's defaults); prints usage and exits on --help or bad input.
+Options parse_options(int argc, char** argv);
+
+}  // namespace sss_bench

@@ -1,0 +1,82 @@
+#include "reference.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "math/exact_reference.hpp"
+#include "method.hpp"
+
+namespace sss_bench {
+
+namespace {
+
+sss::math::ExactInput exact_input(const Scene& scene, const GpuScene& gpu) {
+  sss::math::ExactInput in;
+  in.width = scene.width;
+  in.height = scene.height;
+  in.irradiance = gpu.irradiance_half.data();
+  in.distance = scene.distance.data();
+  in.mask = scene.mask.data();
+  in.projection = scene.projection;
+  in.world_units_per_mm = scene.world_units_per_mm;
+  return in;
+}
+
+}  // namespace
+
+bool on_grid(int x, int y, int stride) { return x % stride == stride / 2 && y % stride == stride / 2; }
+
+Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_pixels, int spot_checks, int stride) {
+  Reference r;
+  const int w = scene.width, h = scene.height;
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  const sss::math::ExactSurfaceConvolution cpu(exact_input(scene, gpu), sss::math::skin_profile_terms());
+  r.rgba = gpu.irradiance_half;
+  if (static_cast<long>(n) <= max_cpu_pixels) {
+    std::vector<double> rgb(n * 3);
+    cpu.convolve({0, 0, w, h}, rgb.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t c = 0; c < 3; ++c) r.rgba[i * 4 + c] = static_cast<float>(rgb[i * 3 + c]);
+    }
+    r.source = "CPU exact (double)";
+    return r;
+  }
+  auto exact = make_exact_method(stride);
+  const GLuint output = make_output_texture(w, h);
+  std::string error;
+  host_gl::glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  if (!exact->run(gpu, output, &error)) throw std::runtime_error("GL exact reference: " + error);
+  host_gl::glFinish();
+  r.gl_time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r.rgba = read_texture_rgba(output, w, h);
+  host_gl::glDeleteTextures(1, &output);
+  r.source = "GL exact (fp32)";
+  r.stride = stride;
+
+  // Spot checks at translucent receivers of the grid, spread evenly through the image.
+  std::vector<std::size_t> translucent;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int x = static_cast<int>(i % static_cast<std::size_t>(w)), y = static_cast<int>(i / static_cast<std::size_t>(w));
+    if (scene.mask[i] != 0 && on_grid(x, y, stride)) translucent.push_back(i);
+  }
+  r.check.scene = scene.name;
+  r.check.width = w;
+  r.check.height = h;
+  const std::size_t count = std::min<std::size_t>(translucent.size(), static_cast<std::size_t>(std::max(spot_checks, 0)));
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = translucent[(k * translucent.size()) / count + translucent.size() / (2 * count)];
+    const auto expected = cpu.at(static_cast<int>(i % static_cast<std::size_t>(w)), static_cast<int>(i / static_cast<std::size_t>(w)));
+    for (std::size_t c = 0; c < 3; ++c) {
+      // Relative to the value, with a floor that keeps dark pixels from dominating.
+      const double d = std::fabs(r.rgba[i * 4 + c] - expected[c]) / std::max(std::fabs(expected[c]), 1e-3);
+      r.check.max_relative_difference = std::max(r.check.max_relative_difference, d);
+    }
+    ++r.check.checked;
+  }
+  return r;
+}
+
+}  // namespace sss_bench

@@ -1,0 +1,36 @@
+// The reference image every method is scored against: the exact 2D surface convolution
+// (module/src/math/exact_reference.hpp) of the scene's irradiance as the GPU holds it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gpu_scene.hpp"
+#include "scenes/scene.hpp"
+
+namespace sss_bench {
+
+// How well the GL exact filter agreed with the CPU one where it stood in for it.
+struct ReferenceCheck {
+  std::string scene;
+  int width = 0, height = 0;
+  int checked = 0;                       // receivers compared
+  double max_relative_difference = 0.0;  // max over receivers and channels of |gl - cpu| / max(cpu, 1e-3)
+};
+
+struct Reference {
+  std::vector<float> rgba;  // RGBA, alpha = the input's
+  std::string source;       // "CPU exact (double)" or "GL exact (fp32)"
+  int stride = 1;           // > 1: only pixels on the stride grid hold the reference (GL only)
+  double gl_time_ms = 0.0;  // the GL exact filter's frame time when it made the reference
+  ReferenceCheck check;
+};
+
+// CPU for images of at most `max_cpu_pixels` pixels; otherwise the GL exact filter on the
+// receivers of a `stride` grid, compared with the CPU at `spot_checks` of those receivers.
+Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_pixels, int spot_checks, int stride);
+
+// The pixels where a reference holds values: the scene's mask, on the stride grid.
+bool on_grid(int x, int y, int stride);
+
+}  // namespace sss_bench

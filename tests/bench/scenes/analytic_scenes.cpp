@@ -1,0 +1,174 @@
+#include "analytic_scenes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "scene_math.hpp"
+
+namespace sss_bench::detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kNear = 0.05, kFar = 2.0;
+
+Scene blank_scene(const std::string& name, int width, int height, PinholeCamera* camera) {
+  *camera = make_pinhole(width, height, kFovyDegrees * kPi / 180.0, kNear, kFar);
+  Scene s;
+  s.name = name;
+  s.width = width;
+  s.height = height;
+  s.projection = to_float(camera->projection);
+  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+  s.irradiance.assign(n * 4, 0.0f);
+  s.distance.assign(n, 0.0f);
+  s.window_depth.assign(n, 0.0f);
+  s.mask.assign(n, 0);
+  return s;
+}
+
+void set_pixel(Scene& s, const PinholeCamera& camera, int i, int j, double r, double g, double b, bool translucent,
+               double distance) {
+  const size_t p = static_cast<size_t>(j) * static_cast<size_t>(s.width) + static_cast<size_t>(i);
+  s.irradiance[p * 4 + 0] = static_cast<float>(r);
+  s.irradiance[p * 4 + 1] = static_cast<float>(g);
+  s.irradiance[p * 4 + 2] = static_cast<float>(b);
+  s.irradiance[p * 4 + 3] = translucent ? 1.0f : 0.0f;
+  s.mask[p] = translucent ? 1 : 0;
+  s.distance[p] = static_cast<float>(distance);
+  s.window_depth[p] = window_depth(camera.projection, distance);
+}
+
+// The area of the unit pixel square [x0, x0+1] x [y0, y0+1] where nx*x + ny*y <= 0 (exact: the
+// square clipped by the half-plane, then the shoelace formula).
+double half_plane_coverage(double x0, double y0, double nx, double ny) {
+  const double square[4][2] = {{x0, y0}, {x0 + 1, y0}, {x0 + 1, y0 + 1}, {x0, y0 + 1}};
+  double clipped[8][2];
+  int count = 0;
+  for (int k = 0; k < 4; ++k) {
+    const double* a = square[k];
+    const double* b = square[(k + 1) % 4];
+    const double fa = nx * a[0] + ny * a[1], fb = nx * b[0] + ny * b[1];
+    if (fa <= 0) {
+      clipped[count][0] = a[0];
+      clipped[count][1] = a[1];
+      ++count;
+    }
+    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) {
+      const double t = fa / (fa - fb);
+      clipped[count][0] = a[0] + t * (b[0] - a[0]);
+      clipped[count][1] = a[1] + t * (b[1] - a[1]);
+      ++count;
+    }
+  }
+  double area = 0;
+  for (int k = 0; k < count; ++k) {
+    const double* a = clipped[k];
+    const double* b = clipped[(k + 1) % count];
+    area += a[0] * b[1] - b[0] * a[1];
+  }
+  return std::clamp(0.5 * std::fabs(area), 0.0, 1.0);
+}
+
+// The fraction of the unit pixel square at (x0, y0) inside the disk of radius r at the origin:
+// exact when the pixel is wholly in or out, else the disk's chords clipped to the pixel integrated
+// over x (1024 midpoints; the chord length is exact, so the error is far below 0.1 %).
+double disk_coverage(double x0, double y0, double r) {
+  const double nearest_x = std::clamp(0.0, x0, x0 + 1), nearest_y = std::clamp(0.0, y0, y0 + 1);
+  if (nearest_x * nearest_x + nearest_y * nearest_y >= r * r) return 0.0;
+  const double far_x = std::max(std::fabs(x0), std::fabs(x0 + 1)), far_y = std::max(std::fabs(y0), std::fabs(y0 + 1));
+  if (far_x * far_x + far_y * far_y <= r * r) return 1.0;
+  constexpr int kSteps = 1024;
+  double area = 0;
+  for (int a = 0; a < kSteps; ++a) {
+    const double x = x0 + (a + 0.5) / kSteps;
+    if (std::fabs(x) >= r) continue;
+    const double half = std::sqrt(r * r - x * x);
+    area += std::max(0.0, std::min(half, y0 + 1) - std::max(-half, y0));
+  }
+  return area / kSteps;
+}
+
+}  // namespace
+
+Scene make_dot_scene(int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene("dot", width, height, &camera);
+  const double r = kDotRadius * camera.pixels_per_unit(kPlaneDistance);  // in pixels
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const double c = disk_coverage(i - 0.5 * width, j - 0.5 * height, r);
+      const double e = kDark + (kLit - kDark) * c;
+      set_pixel(s, camera, i, j, e, e, e, true, kPlaneDistance);
+    }
+  return s;
+}
+
+Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene(name, width, height, &camera);
+  // The line runs along (sin t, cos t) through the image centre (its top leans right for t > 0);
+  // the lit side is where (cos t, -sin t) . p <= 0, left of it. Pixels are square, so the angle
+  // in pixels is the angle on the plane.
+  const double t = degrees_from_vertical * kPi / 180.0;
+  const double nx = std::cos(t), ny = -std::sin(t);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const double c = half_plane_coverage(i - 0.5 * width, j - 0.5 * height, nx, ny);
+      const double e = kDark + (kLit - kDark) * c;
+      set_pixel(s, camera, i, j, e, e, e, true, kPlaneDistance);
+    }
+  return s;
+}
+
+Scene make_sphere_scene(int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene("sphere", width, height, &camera);
+  const Vec3 centre{0, 0, -kSphereDistance};
+  const Vec3 light = normalize(Vec3{0.8, 0.45, 0.4});  // view space, towards the light
+  const double albedo[3] = {0.85, 0.6, 0.5}, ambient = 0.03, backdrop = 0.3;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const Vec3 ray = camera.ray(i, j);  // z = -1: the hit's distance is its parameter
+      const double a = dot(ray, ray), b = -2 * dot(ray, centre), c = dot(centre, centre) - kSphereRadius * kSphereRadius;
+      const double disc = b * b - 4 * a * c;
+      if (disc < 0) {
+        set_pixel(s, camera, i, j, backdrop, backdrop, backdrop, false, kSphereBackdropDistance);
+        continue;
+      }
+      const double hit = (-b - std::sqrt(disc)) / (2 * a);
+      const Vec3 normal = (ray * hit - centre) * (1.0 / kSphereRadius);
+      const double e = std::max(0.0, dot(normalize(normal), light)) + ambient;
+      set_pixel(s, camera, i, j, albedo[0] * e, albedo[1] * e, albedo[2] * e, true, hit);
+    }
+  return s;
+}
+
+Scene make_depth_step_scene(int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene("depth-step", width, height, &camera);
+  const double near_irradiance = 0.6, far_irradiance = 4.0;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const Vec3 ray = camera.ray(i, j);
+      const bool inside = std::fabs(ray.x * kStepNearDistance) < kStepHalfSize &&
+                          std::fabs(ray.y * kStepNearDistance) < kStepHalfSize;
+      if (inside)
+        set_pixel(s, camera, i, j, near_irradiance, near_irradiance, near_irradiance, true, kStepNearDistance);
+      else
+        set_pixel(s, camera, i, j, far_irradiance, far_irradiance, far_irradiance, false, kStepFarDistance);
+    }
+  return s;
+}
+
+Scene make_empty_scene(int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene("empty", width, height, &camera);
+  const double e = 0.2;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) set_pixel(s, camera, i, j, e, e, e, false, kEmptyDistance);
+  return s;
+}
+
+}  // namespace sss_bench::detail

@@ -1,0 +1,30 @@
+// The scenes computed on the CPU (no GL): dot, edges, sphere, depth step, empty.
+// Internal to sss_bench_scenes.
+#pragma once
+
+#include <string>
+
+#include "scene.hpp"
+
+namespace sss_bench::detail {
+
+Scene make_dot_scene(int width, int height);
+Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int width, int height);
+Scene make_sphere_scene(int width, int height);
+Scene make_depth_step_scene(int width, int height);
+Scene make_empty_scene(int width, int height);
+
+// The cameras, shared with the tests and the report (metres, vertical field of view 30 degrees).
+constexpr double kFovyDegrees = 30.0;
+constexpr double kPlaneDistance = 0.25;         // dot and edges: the plane's view distance
+constexpr double kDotRadius = 0.0005;           // 0.5 mm
+constexpr double kDark = 0.02, kLit = 1.0;      // dot and edges
+constexpr double kSphereDistance = 0.5;         // the sphere's centre
+constexpr double kSphereRadius = 0.08;
+constexpr double kSphereBackdropDistance = 0.8;
+constexpr double kStepNearDistance = 0.3;       // depth step: the square
+constexpr double kStepHalfSize = 0.04;
+constexpr double kStepFarDistance = 0.6;        // depth step: the background, 0.3 m behind
+constexpr double kEmptyDistance = 1.0;
+
+}  // namespace sss_bench::detail

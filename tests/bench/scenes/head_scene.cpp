@@ -1,0 +1,402 @@
+// The head scenes. The scan: "Infinite, 3D Head Scan" by Lee Perry-Smith is licensed under a
+// Creative Commons Attribution 3.0 Unported License. Based on a work at www.triplegangers.com.
+// Permissions beyond the scope of this license may be available at http://www.ir-ltd.net/
+//
+// Two passes, GL 3.3 core:
+//  1. shadow: the head's depth from the key light (orthographic, directional) into a 2048^2
+//     DEPTH_COMPONENT32F texture, compared with linear filtering (one texel of penumbra: hard);
+//  2. scene: into RGBA32F (irradiance, alpha = 1 on the head), R32F (view distance -z_view,
+//     computed in the shader) and DEPTH_COMPONENT32F attachments cleared to the backdrop (a plane
+//     facing the camera at a finite distance, irradiance 0.05, alpha 0), then read back.
+// irradiance = albedo (sRGB texture decoded to linear by an SRGB8 format)
+//              x (key colour x max(0, N.L) x shadow + fill colour x max(0, N.F) + ambient),
+// N from the tangent-space normal map with the glTF frame: bitangent = cross(normal, tangent.xyz)
+// x tangent.w. The green channel is inverted (kNormalMapGreenSign = -1): the map stores +green
+// towards +v (down the image in glTF's top-left texture space) while the mesh's bitangent points
+// towards -v; scenes_test checks this on the asset (normal_map_green_convention).
+#include "head_scene.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gl_state_guard.hpp"
+#include "head_asset.hpp"
+#include "host_gl.hpp"
+
+using namespace host_gl;
+
+namespace sss_bench::detail {
+
+const float kNormalMapGreenSign = -1.0f;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kShadowMapSize = 2048;
+constexpr float kBackdropIrradiance = 0.05f;
+
+// World-space lighting (the head faces +Z, Y up, so the subject's right is -X): the key from above,
+// in front and to the subject's right (elevation ~40 degrees, ~45 degrees off the face's axis), so
+// that the nose throws a hard shadow down across the subject's left cheek (+X), which the cameras
+// (yawed towards +X) see; a dim cool fill from the other side, slightly below; a small ambient.
+const Vec3 kKeyDirection = normalize(Vec3{-0.55, 0.62, 0.56});  // towards the light
+const float kKeyColour[3] = {1.25f, 1.2f, 1.12f};
+const Vec3 kFillDirection = normalize(Vec3{0.8, -0.1, 0.6});
+const float kFillColour[3] = {0.10f, 0.11f, 0.13f};
+const float kAmbient[3] = {0.03f, 0.03f, 0.035f};
+
+const char* const kShadowVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_light_matrix;
+void main() { gl_Position = u_light_matrix * vec4(a_position, 1.0); }
+)";
+
+const char* const kShadowFragment = R"(#version 330 core
+void main() {}
+)";
+
+const char* const kSceneVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_texcoord;
+layout(location = 3) in vec4 a_tangent;
+uniform mat4 u_view;
+uniform mat4 u_projection;
+out vec3 v_world;
+out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_texcoord;
+out float v_distance;
+void main() {
+  vec4 view = u_view * vec4(a_position, 1.0);
+  v_world = a_position;
+  v_normal = a_normal;
+  v_tangent = a_tangent;
+  v_texcoord = a_texcoord;
+  v_distance = -view.z;
+  gl_Position = u_projection * view;
+}
+)";
+
+const char* const kSceneFragment = R"(#version 330 core
+in vec3 v_world;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_texcoord;
+in float v_distance;
+layout(location = 0) out vec4 o_irradiance;
+layout(location = 1) out vec4 o_distance;
+uniform sampler2D u_albedo;
+uniform sampler2D u_normal_map;
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_light_matrix;
+uniform float u_normal_offset;
+uniform float u_depth_bias;
+uniform float u_green_sign;
+uniform vec3 u_key_direction;
+uniform vec3 u_key_colour;
+uniform vec3 u_fill_direction;
+uniform vec3 u_fill_colour;
+uniform vec3 u_ambient;
+void main() {
+  vec3 n = normalize(v_normal);
+  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
+  vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
+  vec3 m = texture(u_normal_map, v_texcoord).xyz * 2.0 - 1.0;
+  m.y *= u_green_sign;
+  vec3 normal = normalize(t * m.x + b * m.y + n * max(m.z, 1e-3));
+
+  // Normal offset against acne: look the shadow up a little off the surface, along the vertex
+  // normal; no light where the surface itself faces away from the key.
+  vec4 light = u_light_matrix * vec4(v_world + n * u_normal_offset, 1.0);
+  vec3 s = light.xyz / light.w * 0.5 + 0.5;
+  float shadow = texture(u_shadow_map, vec3(s.xy, s.z - u_depth_bias));
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) shadow = 1.0;
+  if (dot(n, u_key_direction) <= 0.0) shadow = 0.0;
+
+  vec3 irradiance_in = u_key_colour * max(dot(normal, u_key_direction), 0.0) * shadow +
+                       u_fill_colour * max(dot(normal, u_fill_direction), 0.0) + u_ambient;
+  vec3 albedo = texture(u_albedo, v_texcoord).rgb;
+  o_irradiance = vec4(albedo * irradiance_in, 1.0);
+  o_distance = vec4(v_distance, 0.0, 0.0, 0.0);
+}
+)";
+
+// Every GL object of one make_scene call, deleted when it goes out of scope (before the state
+// guard, declared earlier, restores the caller's bindings).
+struct GlObjects {
+  std::vector<GLuint> textures, buffers, framebuffers, vertex_arrays, programs;
+  GlObjects() = default;
+  GlObjects(const GlObjects&) = delete;
+  GlObjects& operator=(const GlObjects&) = delete;
+  ~GlObjects() {
+    for (GLuint p : programs) glDeleteProgram(p);
+    if (!vertex_arrays.empty()) glDeleteVertexArrays(static_cast<GLsizei>(vertex_arrays.size()), vertex_arrays.data());
+    if (!framebuffers.empty()) glDeleteFramebuffers(static_cast<GLsizei>(framebuffers.size()), framebuffers.data());
+    if (!buffers.empty()) glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+    if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+  }
+};
+
+GLuint compile(GLenum kind, const char* source, const char* what) {
+  GLuint shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 1 ? length : 1), '\0');
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, &log[0]);
+    glDeleteShader(shader);
+    throw std::runtime_error(std::string("head scene: the ") + what + " shader does not compile: " + log);
+  }
+  return shader;
+}
+
+GLuint build_program(GlObjects& objects, const char* vertex, const char* fragment, const char* what) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertex, what);
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragment, what);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  const GLuint program = glCreateProgram();
+  objects.programs.push_back(program);
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  glLinkProgram(program);
+  glDeleteShader(vs);  // flagged; freed with the program
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 1 ? length : 1), '\0');
+    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, &log[0]);
+    throw std::runtime_error(std::string("head scene: the ") + what + " program does not link: " + log);
+  }
+  return program;
+}
+
+GLuint make_texture(GlObjects& objects, GLenum internal_format, int width, int height, GLenum format, GLenum type,
+                    const void* data) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  objects.textures.push_back(texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), width, height, 0, format, type, data);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+// A mipmapped, repeating material texture (glTF's default sampler).
+void make_material_texture(GlObjects& objects, const HeadImage& image, bool srgb) {
+  const bool rgba = image.components == 4;
+  const GLenum internal_format =
+      srgb ? (rgba ? GL_SRGB8_ALPHA8 : GL_SRGB8) : (rgba ? GL_RGBA8 : GL_RGB8);
+  make_texture(objects, internal_format, image.width, image.height, rgba ? GL_RGBA : GL_RGB, GL_UNSIGNED_BYTE,
+               image.pixels.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+GLuint make_framebuffer(GlObjects& objects) {
+  GLuint framebuffer = 0;
+  glGenFramebuffers(1, &framebuffer);
+  objects.framebuffers.push_back(framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  return framebuffer;
+}
+
+void check_framebuffer(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(std::string("head scene: the ") + what + " framebuffer is incomplete (status " +
+                             std::to_string(status) + ")");
+}
+
+void set_matrix(GLuint program, const char* name, const Mat4& m) {
+  const std::array<float, 16> f = to_float(m);
+  glUniformMatrix4fv(glGetUniformLocation(program, name), 1, GL_FALSE, f.data());
+}
+
+void set_vec3(GLuint program, const char* name, Vec3 v) {
+  const float f[3] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+  glUniform3fv(glGetUniformLocation(program, name), 1, f);
+}
+
+void set_vec3(GLuint program, const char* name, const float* v) {
+  glUniform3fv(glGetUniformLocation(program, name), 1, v);
+}
+
+}  // namespace
+
+Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view) {
+  const HeadAsset& asset = head_asset();  // may throw before any GL call
+
+  Scene scene;
+  scene.name = name;
+  scene.width = width;
+  scene.height = height;
+  const Mat4 projection = to_double(to_float(perspective(view.fovy_degrees * kPi / 180.0,
+                                                         static_cast<double>(width) / height, view.near_plane,
+                                                         view.far_plane)));
+  scene.projection = to_float(projection);
+  const double yaw = view.yaw_degrees * kPi / 180.0, pitch = view.pitch_degrees * kPi / 180.0;
+  const Vec3 eye = view.target + Vec3{std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)} *
+                                     view.distance;
+  const Mat4 view_matrix = look_at(eye, view.target, Vec3{0, 1, 0});
+
+  // The key light's orthographic frustum around the bounding sphere of the scan.
+  const Vec3 lo{asset.bounds_min[0], asset.bounds_min[1], asset.bounds_min[2]};
+  const Vec3 hi{asset.bounds_max[0], asset.bounds_max[1], asset.bounds_max[2]};
+  const Vec3 centre = (lo + hi) * 0.5;
+  const double radius = length(hi - lo) * 0.5 * 1.02;
+  const Mat4 light_view = look_at(centre + kKeyDirection * (2 * radius), centre, Vec3{0, 1, 0});
+  const Mat4 light_projection = orthographic(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius);
+  const Mat4 light_matrix = multiply(light_projection, light_view);
+  const double texel = 2 * radius / kShadowMapSize;
+
+  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+  scene.irradiance.resize(pixels * 4);
+  scene.distance.resize(pixels);
+  scene.window_depth.resize(pixels);
+
+  if (glGetString == nullptr || glGenerateMipmap == nullptr || glGetString(GL_VERSION) == nullptr)
+    throw std::runtime_error("head scene " + name + ": no current GL context, or host_gl not loaded for it");
+  {
+    GlStateGuard guard;
+    GlObjects objects;
+
+    // Geometry: one interleaved buffer, 32-bit indices.
+    GLuint vertex_array = 0;
+    glGenVertexArrays(1, &vertex_array);
+    objects.vertex_arrays.push_back(vertex_array);
+    glBindVertexArray(vertex_array);
+    GLuint buffers[2] = {0, 0};
+    glGenBuffers(2, buffers);
+    objects.buffers.insert(objects.buffers.end(), buffers, buffers + 2);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(asset.vertices.size() * sizeof(float)),
+                 asset.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(asset.indices.size() * sizeof(uint32_t)),
+                 asset.indices.data(), GL_STATIC_DRAW);
+    const GLsizei stride = static_cast<GLsizei>(HeadAsset::kFloatsPerVertex * sizeof(float));
+    const int sizes[4] = {3, 3, 2, 4}, offsets[4] = {0, 3, 6, 8};
+    for (GLuint a = 0; a < 4; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>(static_cast<uintptr_t>(offsets[a]) * sizeof(float)));
+    }
+    const GLsizei index_count = static_cast<GLsizei>(asset.indices.size());
+
+    // Pass 1: the shadow map.
+    glActiveTexture(GL_TEXTURE2);
+    const GLuint shadow_map = make_texture(objects, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
+                                           GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glBindTexture(GL_TEXTURE_2D, 0);  // not bound while it is the render target
+    make_framebuffer(objects);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_map, 0);
+    const GLenum no_colour = GL_NONE;
+    glDrawBuffers(1, &no_colour);
+    glReadBuffer(GL_NONE);
+    check_framebuffer("shadow");
+    const GLuint shadow_program = build_program(objects, kShadowVertex, kShadowFragment, "shadow");
+    glUseProgram(shadow_program);
+    set_matrix(shadow_program, "u_light_matrix", light_matrix);
+    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    const float far_depth = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far_depth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0.0f, 0.0f);
+
+    // Pass 2: the scene.
+    glActiveTexture(GL_TEXTURE0);
+    make_material_texture(objects, asset.albedo, true);
+    glActiveTexture(GL_TEXTURE1);
+    make_material_texture(objects, asset.normal, false);
+    glActiveTexture(GL_TEXTURE3);  // targets are made on a unit no sampler reads
+    const GLuint colour_target = make_texture(objects, GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, nullptr);
+    const GLuint distance_target = make_texture(objects, GL_R32F, width, height, GL_RED, GL_FLOAT, nullptr);
+    const GLuint depth_target =
+        make_texture(objects, GL_DEPTH_COMPONENT32F, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    make_framebuffer(objects);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_target, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, distance_target, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_target, 0);
+    const GLenum colour_buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, colour_buffers);
+    check_framebuffer("scene");
+    glViewport(0, 0, width, height);
+    const float backdrop[4] = {kBackdropIrradiance, kBackdropIrradiance, kBackdropIrradiance, 0.0f};
+    const float backdrop_distance[4] = {static_cast<float>(view.backdrop_distance), 0, 0, 0};
+    const float backdrop_depth = window_depth(projection, view.backdrop_distance);
+    glClearBufferfv(GL_COLOR, 0, backdrop);
+    glClearBufferfv(GL_COLOR, 1, backdrop_distance);
+    glClearBufferfv(GL_DEPTH, 0, &backdrop_depth);
+
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, shadow_map);
+    glActiveTexture(GL_TEXTURE0);
+    const GLuint program = build_program(objects, kSceneVertex, kSceneFragment, "scene");
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "u_albedo"), 0);
+    glUniform1i(glGetUniformLocation(program, "u_normal_map"), 1);
+    glUniform1i(glGetUniformLocation(program, "u_shadow_map"), 2);
+    set_matrix(program, "u_view", view_matrix);
+    set_matrix(program, "u_projection", projection);
+    set_matrix(program, "u_light_matrix", light_matrix);
+    glUniform1f(glGetUniformLocation(program, "u_normal_offset"), static_cast<float>(1.5 * texel));
+    glUniform1f(glGetUniformLocation(program, "u_depth_bias"), 1e-4f);
+    glUniform1f(glGetUniformLocation(program, "u_green_sign"), kNormalMapGreenSign);
+    set_vec3(program, "u_key_direction", kKeyDirection);
+    set_vec3(program, "u_key_colour", kKeyColour);
+    set_vec3(program, "u_fill_direction", kFillDirection);
+    set_vec3(program, "u_fill_colour", kFillColour);
+    set_vec3(program, "u_ambient", kAmbient);
+    glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, scene.irradiance.data());
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, scene.distance.data());
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, scene.window_depth.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+    throw std::runtime_error("head scene " + name + ": GL error " + std::to_string(error));
+
+  scene.mask.resize(pixels);
+  for (size_t i = 0; i < pixels; ++i) scene.mask[i] = scene.irradiance[i * 4 + 3] > 0.0f ? 1 : 0;
+  return scene;
+}
+
+}  // namespace sss_bench::detail

@@ -1,0 +1,27 @@
+// The canonical scenes of DESIGN.md §6: what the filter gets from a host (irradiance, depth, mask,
+// camera) for a few situations that stress it, generated deterministically in code.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sss_bench {
+
+struct Scene {
+  std::string name;                 // "dot", "edge-0", "edge-30", "edge-45", "sphere", "depth-step",
+                                    // "head-close", "head-mid", "head-far", "empty"
+  int width = 0, height = 0;
+  std::vector<float> irradiance;    // RGBA, row 0 at the bottom (GL order); linear diffuse irradiance
+                                    // (albedo included); alpha = SSS strength: 1 translucent, 0 not
+  std::vector<float> distance;      // linear view distance (-z_view) per pixel, finite everywhere
+                                    // (background geometry or a far backdrop, never Inf)
+  std::vector<float> window_depth;  // the hardware depth of `distance` for `projection` (GL default
+                                    // convention: (z_ndc + 1) / 2), as a DEPTH_COMPONENT32F would hold
+  std::vector<uint8_t> mask;        // 1 where translucent (alpha > 0), else 0
+  std::array<float, 16> projection{};  // column-major GL projection matrix used to make the scene
+  float world_units_per_mm = 0.001f;   // scene units are metres
+};
+
+}  // namespace sss_bench

@@ -1,0 +1,68 @@
+#include "scenes.hpp"
+
+#include <stdexcept>
+
+#include "analytic_scenes.hpp"
+#include "head_scene.hpp"
+
+namespace sss_bench {
+
+namespace {
+
+// The head cameras (see head_scene.hpp): vertical field of view 30 degrees; yawed 20 degrees
+// towards the subject's left cheek (+X, the side the nose shadow falls on), 5 degrees above.
+// close: frame height 0.21 m at the target (the face, chin to crown, fills most of it);
+// mid:   frame height 1.08 m = 3 x the scan's 0.36 m;  far: 3.6 m = 10 x 0.36 m.
+// The backdrop is 0.5 m behind the target along the view axis.
+detail::HeadView head_view(const std::string& name) {
+  detail::HeadView v;
+  v.fovy_degrees = detail::kFovyDegrees;
+  v.yaw_degrees = 20;
+  v.pitch_degrees = 5;
+  const double tan_half = 0.2679491924311227;  // tan(15 degrees)
+  double frame_height = 0;
+  if (name == "head-close") {
+    v.target = {0.0, 0.075, 0.08};
+    frame_height = 0.21;
+    v.near_plane = 0.15;
+  } else if (name == "head-mid") {
+    v.target = {0.0, 0.0, 0.0};
+    frame_height = 1.08;
+    v.near_plane = 0.5;
+  } else {
+    v.target = {0.0, 0.0, 0.0};
+    frame_height = 3.6;
+    v.near_plane = 2.0;
+  }
+  v.distance = frame_height / (2 * tan_half);
+  v.backdrop_distance = v.distance + 0.5;
+  v.far_plane = v.backdrop_distance + 1.0;
+  return v;
+}
+
+}  // namespace
+
+std::vector<std::string> canonical_scene_names() {
+  return {"dot",        "edge-0",     "edge-30",  "edge-45",  "sphere", "depth-step",
+          "head-close", "head-mid",   "head-far", "empty"};
+}
+
+bool scene_needs_gl(const std::string& name) {
+  return name == "head-close" || name == "head-mid" || name == "head-far";
+}
+
+Scene make_scene(const std::string& name, int width, int height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw std::invalid_argument("make_scene: bad size " + std::to_string(width) + "x" + std::to_string(height));
+  if (name == "dot") return detail::make_dot_scene(width, height);
+  if (name == "edge-0") return detail::make_edge_scene(name, 0.0, width, height);
+  if (name == "edge-30") return detail::make_edge_scene(name, 30.0, width, height);
+  if (name == "edge-45") return detail::make_edge_scene(name, 45.0, width, height);
+  if (name == "sphere") return detail::make_sphere_scene(width, height);
+  if (name == "depth-step") return detail::make_depth_step_scene(width, height);
+  if (scene_needs_gl(name)) return detail::render_head_scene(name, width, height, head_view(name));
+  if (name == "empty") return detail::make_empty_scene(width, height);
+  throw std::invalid_argument("make_scene: unknown scene '" + name + "'");
+}
+
+}  // namespace sss_bench
