@@ -48,11 +48,12 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 centre = texelFetch(u_source, pixel, 0);
-  float strength = centre.a;
-  if (!(strength > 0.0)) {
+  // Not translucent, or a non-finite colour or strength: the pixel keeps its own value.
+  if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
     leave_untouched(pixel, centre);
     return;
   }
+  float strength = min(centre.a, 1.0);  // alpha is documented as 0..1; more must not widen the kernel
   float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
   float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
   if (!(w > 0.0) || isinf(w)) {  // behind the camera, on an infinite far plane, or NaN
@@ -68,6 +69,9 @@ void main() {
     vec2 position = clamp(gl_FragCoord.xy + u_axis * (u_kernel[i].a * step_pixels), u_clamp.xy, u_clamp.zw);
     vec2 uv = position * texel_size;
     vec3 tap = texture(u_source, uv).rgb;
+    // A non-finite neighbour must not spread: it counts as the centre's colour (its weight goes to
+    // the centre), like a tap across a depth step.
+    if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
 #if SSS_FOLLOW_SURFACE
     float s = follow_surface * abs(centre_distance - view_distance(texture(u_depth, uv).r));
     if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite

@@ -88,8 +88,9 @@ TEST(BenchQuickOutput, ErrorsMakeSense) {
     const double rmse = std::stod(row.at("relative_rmse"));
     if (row.at("method") == "exact-2d") {
       // The GL exact filter in fp32 against the CPU one in double (quick mode uses the CPU
-      // reference): the erfc approximation (1.2e-7 relative) and fp32 sums leave ~1e-5.
-      EXPECT_LT(rmse, 1e-3) << row.at("scene");
+      // reference): fp32 positions and sums (~6e-8 each) and the erfc fit (1.2e-7 relative) leave
+      // a few 1e-7 (measured 2e-7..4e-7); 1e-5 leaves room for other drivers' exp/sqrt.
+      EXPECT_LT(rmse, 1e-5) << row.at("scene");
     } else {
       EXPECT_LT(rmse, 0.5) << row.at("scene") << " " << row.at("method") << " " << row.at("taps");
     }

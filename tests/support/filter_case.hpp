@@ -29,7 +29,8 @@ struct FilterOutcome {
   sss_result result = SSS_OK;
 };
 
-// Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|).
+// Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|) (equal values,
+// infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
 
 class FilterCaseTest : public GlTest {

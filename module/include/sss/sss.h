@@ -224,6 +224,9 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
 /** Runs the two passes: horizontal from the colour texture into the module's RGBA16F target,
  *  vertical into the output (or back into the colour texture). Pixels outside the stencil or with
  *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
+ *  Non-finite input never spreads: a pixel whose colour or alpha is NaN or infinite keeps its value,
+ *  and a neighbour that is counts as the centre's colour (its weight goes to the centre). Alpha
+ *  above 1 counts as 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       or output_texture equal to color_texture

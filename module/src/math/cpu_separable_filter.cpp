@@ -12,6 +12,13 @@ namespace {
 
 using Rgba = std::array<float, 4>;
 
+bool all_finite(const float* v, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(v[i])) return false;
+  }
+  return true;
+}
+
 struct Plane {
   int width, height, channels;
   const float* data;
@@ -39,8 +46,8 @@ bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, 
                   const Plane& depth, int axis, int x, int y, Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
-  const float strength = centre[3];
-  if (!(strength > 0.0f)) return false;
+  if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
+  const float strength = std::min(centre[3], 1.0f);
   const float centre_distance = linearise_depth(k, depth.at(x, y, 0));
   const float w = clip_w(k, centre_distance);
   if (!(w > 0.0f) || std::isinf(w)) return false;
@@ -55,6 +62,7 @@ bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, 
     px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
     py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
     std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
+    if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
     if (k.follow_surface_factor > 0.0f) {
       const float tap_distance = linearise_depth(k, depth.bilinear(px, py, 0));
       float s = follow_surface * std::fabs(centre_distance - tap_distance);

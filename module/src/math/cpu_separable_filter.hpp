@@ -21,8 +21,9 @@ struct CpuFilterImage {
 };
 
 // Runs both passes into `out` (RGBA, width·height·4 floats; may not alias color). Pixels that are
-// outside the mask, have alpha <= 0 (after the intermediate's rounding) or an unusable depth keep
-// their input value exactly; pixels outside the viewport too.
+// outside the mask, have alpha <= 0 (after the intermediate's rounding), a non-finite colour or
+// alpha, or an unusable depth keep their input value exactly; pixels outside the viewport too.
+// Alpha above 1 counts as 1. A non-finite tap counts as the centre's colour (it does not spread).
 void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
                           const CpuFilterImage& image, float* out);
 
