@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite from a clean checkout: installs the missing Debian packages, builds with
 # warnings as errors, runs every ctest suite (GL tests once on OSMesa and once on EGL surfaceless),
+# builds and runs the consumer projects against static and shared installs (check-consumers.sh),
 # then builds again with AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again.
 #
 #   scripts/run-tests.sh [--no-sanitizers]
@@ -32,6 +33,7 @@ run_suite() {  # name, build dir, extra cmake arguments...
 }
 
 run_suite "release" build/release
+scripts/check-consumers.sh
 if [[ $sanitizers -eq 1 ]]; then
   # halt_on_error: UBSan is built without recovery; ASan stops at the first report anyway.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
