@@ -8,114 +8,12 @@
 #include <sstream>
 
 #include "filter_case.hpp"
+#include "gl_state_snapshot.hpp"
 
 using namespace host_gl;
 
 namespace sss_test {
 namespace {
-
-struct Snapshot {
-  std::vector<std::pair<std::string, std::vector<GLint>>> values;
-
-  void add(const std::string& name, std::vector<GLint> v) { values.emplace_back(name, std::move(v)); }
-  void integer(const char* name, GLenum pname, int count = 1) {
-    std::vector<GLint> v(static_cast<std::size_t>(count), -12345);
-    glGetIntegerv(pname, v.data());
-    add(name, v);
-  }
-  void boolean(const char* name, GLenum pname, int count = 1) {
-    std::array<GLboolean, 4> b{};
-    glGetBooleanv(pname, b.data());
-    add(name, std::vector<GLint>(b.begin(), b.begin() + count));
-  }
-  void enabled(const char* name, GLenum cap) { add(name, {glIsEnabled(cap)}); }
-};
-
-Snapshot take_snapshot() {
-  Snapshot s;
-  s.integer("GL_CURRENT_PROGRAM", GL_CURRENT_PROGRAM);
-  s.integer("GL_VERTEX_ARRAY_BINDING", GL_VERTEX_ARRAY_BINDING);
-  s.integer("GL_DRAW_FRAMEBUFFER_BINDING", GL_DRAW_FRAMEBUFFER_BINDING);
-  s.integer("GL_READ_FRAMEBUFFER_BINDING", GL_READ_FRAMEBUFFER_BINDING);
-  s.integer("GL_RENDERBUFFER_BINDING", GL_RENDERBUFFER_BINDING);
-  s.integer("GL_PIXEL_UNPACK_BUFFER_BINDING", GL_PIXEL_UNPACK_BUFFER_BINDING);
-  s.integer("GL_PIXEL_PACK_BUFFER_BINDING", GL_PIXEL_PACK_BUFFER_BINDING);
-  s.integer("GL_ARRAY_BUFFER_BINDING", GL_ARRAY_BUFFER_BINDING);
-  s.integer("GL_ACTIVE_TEXTURE", GL_ACTIVE_TEXTURE);
-  GLint active = 0;
-  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  for (GLenum unit = 0; unit < 4; ++unit) {
-    glActiveTexture(GL_TEXTURE0 + unit);
-    s.integer(("GL_TEXTURE_BINDING_2D unit " + std::to_string(unit)).c_str(), GL_TEXTURE_BINDING_2D);
-    s.integer(("GL_SAMPLER_BINDING unit " + std::to_string(unit)).c_str(), GL_SAMPLER_BINDING);
-  }
-  glActiveTexture(static_cast<GLenum>(active));
-  s.integer("GL_VIEWPORT", GL_VIEWPORT, 4);
-  s.integer("GL_SCISSOR_BOX", GL_SCISSOR_BOX, 4);
-  const std::pair<const char*, GLenum> caps[] = {
-      {"GL_SCISSOR_TEST", GL_SCISSOR_TEST},
-      {"GL_DEPTH_TEST", GL_DEPTH_TEST},
-      {"GL_STENCIL_TEST", GL_STENCIL_TEST},
-      {"GL_BLEND", GL_BLEND},
-      {"GL_CULL_FACE", GL_CULL_FACE},
-      {"GL_FRAMEBUFFER_SRGB", GL_FRAMEBUFFER_SRGB},
-      {"GL_RASTERIZER_DISCARD", GL_RASTERIZER_DISCARD},
-      {"GL_SAMPLE_ALPHA_TO_COVERAGE", GL_SAMPLE_ALPHA_TO_COVERAGE},
-      {"GL_SAMPLE_COVERAGE", GL_SAMPLE_COVERAGE},
-      {"GL_SAMPLE_MASK", GL_SAMPLE_MASK},
-      {"GL_POLYGON_OFFSET_FILL", GL_POLYGON_OFFSET_FILL},
-      {"GL_DEPTH_CLAMP", GL_DEPTH_CLAMP},
-      {"GL_COLOR_LOGIC_OP", GL_COLOR_LOGIC_OP},
-      {"GL_CLIP_DISTANCE0", GL_CLIP_DISTANCE0},
-      {"GL_CLIP_DISTANCE5", GL_CLIP_DISTANCE5},
-      {"GL_CLIP_DISTANCE7", GL_CLIP_DISTANCE7},
-      {"GL_DITHER", GL_DITHER},
-      {"GL_MULTISAMPLE", GL_MULTISAMPLE},
-  };
-  for (const auto& cap : caps) s.enabled(cap.first, cap.second);
-  s.boolean("GL_COLOR_WRITEMASK", GL_COLOR_WRITEMASK, 4);
-  s.boolean("GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK);
-  s.integer("GL_POLYGON_MODE", GL_POLYGON_MODE, 2);
-  s.integer("GL_DEPTH_FUNC", GL_DEPTH_FUNC);
-  s.integer("GL_BLEND_SRC_RGB", GL_BLEND_SRC_RGB);
-  s.integer("GL_BLEND_DST_ALPHA", GL_BLEND_DST_ALPHA);
-  s.integer("GL_CULL_FACE_MODE", GL_CULL_FACE_MODE);
-  s.integer("GL_FRONT_FACE", GL_FRONT_FACE);
-  s.integer("GL_UNPACK_ALIGNMENT", GL_UNPACK_ALIGNMENT);
-  s.integer("GL_PACK_ALIGNMENT", GL_PACK_ALIGNMENT);
-  const std::pair<const char*, GLenum> stencil[] = {
-      {"GL_STENCIL_FUNC", GL_STENCIL_FUNC},
-      {"GL_STENCIL_REF", GL_STENCIL_REF},
-      {"GL_STENCIL_VALUE_MASK", GL_STENCIL_VALUE_MASK},
-      {"GL_STENCIL_FAIL", GL_STENCIL_FAIL},
-      {"GL_STENCIL_PASS_DEPTH_FAIL", GL_STENCIL_PASS_DEPTH_FAIL},
-      {"GL_STENCIL_PASS_DEPTH_PASS", GL_STENCIL_PASS_DEPTH_PASS},
-      {"GL_STENCIL_WRITEMASK", GL_STENCIL_WRITEMASK},
-      {"GL_STENCIL_BACK_FUNC", GL_STENCIL_BACK_FUNC},
-      {"GL_STENCIL_BACK_REF", GL_STENCIL_BACK_REF},
-      {"GL_STENCIL_BACK_VALUE_MASK", GL_STENCIL_BACK_VALUE_MASK},
-      {"GL_STENCIL_BACK_FAIL", GL_STENCIL_BACK_FAIL},
-      {"GL_STENCIL_BACK_PASS_DEPTH_FAIL", GL_STENCIL_BACK_PASS_DEPTH_FAIL},
-      {"GL_STENCIL_BACK_PASS_DEPTH_PASS", GL_STENCIL_BACK_PASS_DEPTH_PASS},
-      {"GL_STENCIL_BACK_WRITEMASK", GL_STENCIL_BACK_WRITEMASK},
-  };
-  for (const auto& st : stencil) s.integer(st.first, st.second);
-  s.integer("GL_DEBUG_GROUP_STACK_DEPTH", GL_DEBUG_GROUP_STACK_DEPTH);
-  return s;
-}
-
-std::string describe_differences(const Snapshot& a, const Snapshot& b) {
-  std::ostringstream out;
-  for (std::size_t i = 0; i < a.values.size(); ++i) {
-    if (a.values[i].second == b.values[i].second) continue;
-    out << a.values[i].first << ": before {";
-    for (GLint v : a.values[i].second) out << ' ' << v;
-    out << " } after {";
-    for (GLint v : b.values[i].second) out << ' ' << v;
-    out << " }\n";
-  }
-  return out.str();
-}
 
 class StateRestore : public FilterCaseTest {
  protected:

@@ -1,0 +1,259 @@
+// The state-hygiene harness: every GL state of sss.h's list (and the ones it promises not to touch)
+// set to random values, then each entry point called, then the state compared. Seeded, so a
+// failure names its seed. Two checks show the harness can fail: with the restores switched off
+// (SSS_CREATE_NO_STATE_RESTORE) it reports differences, and changing any single listed state
+// is seen by the comparison.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+#include "filter_case.hpp"
+#include "gl_state_snapshot.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kSize = 24;
+
+class StateHarness : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    if (HasFatalFailure()) return;
+    const char* vs = "#version 330 core\nvoid main(){gl_Position=vec4(0.0);}\n";
+    const char* fs = "#version 330 core\nout vec4 c;void main(){c=vec4(1.0);}\n";
+    for (GLuint& p : programs_) {
+      p = glCreateProgram();
+      for (auto [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
+        const GLuint sh = glCreateShader(type);
+        glShaderSource(sh, 1, &src, nullptr);
+        glCompileShader(sh);
+        glAttachShader(p, sh);
+        glDeleteShader(sh);
+      }
+      glLinkProgram(p);
+    }
+    glGenVertexArrays(2, vaos_);
+    glGenFramebuffers(2, fbos_);
+    glGenRenderbuffers(1, &renderbuffer_);
+    glGenBuffers(2, buffers_);
+    glGenSamplers(2, samplers_);
+    for (GLuint& t : host_textures_) t = make_rgba16f(2, 2, std::vector<float>(16, 0.5f));
+    // Make the names objects (FBOs, VAOs, renderbuffers and buffers exist from their first bind).
+    for (GLuint f : fbos_) glBindFramebuffer(GL_FRAMEBUFFER, f);
+    for (GLuint v : vaos_) glBindVertexArray(v);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
+    for (GLuint b : buffers_) glBindBuffer(GL_PIXEL_UNPACK_BUFFER, b);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindVertexArray(0);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+
+    scene_ = make_relief_scene(kSize, kSize, 4, perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f));
+    color_ = make_rgba32f(kSize, kSize, scene_.color);
+    output_ = make_rgba32f(kSize, kSize, scene_.color);
+    std::vector<uint32_t> packed(scene_.window_depth.size());
+    for (std::size_t i = 0; i < packed.size(); ++i) {
+      packed[i] = (static_cast<uint32_t>(scene_.window_depth[i] * 16777215.0) << 8) | scene_.stencil[i];
+    }
+    depth_ = make_texture(GL_DEPTH24_STENCIL8, kSize, kSize, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+  }
+
+  void TearDown() override {
+    if (headless_ != nullptr) {
+      glUseProgram(0);
+      for (GLuint p : programs_) glDeleteProgram(p);
+      glDeleteVertexArrays(2, vaos_);
+      glDeleteFramebuffers(2, fbos_);
+      glDeleteRenderbuffers(1, &renderbuffer_);
+      glDeleteBuffers(2, buffers_);
+      glDeleteSamplers(2, samplers_);
+    }
+    GlTest::TearDown();
+  }
+
+  template <typename T>
+  T pick(std::mt19937& rng, std::initializer_list<T> values) {
+    std::uniform_int_distribution<std::size_t> d(0, values.size() - 1);
+    return *(values.begin() + d(rng));
+  }
+
+  // Random values for every state in the list (and for the ones the module must not touch).
+  void randomise(std::mt19937& rng) {
+    std::uniform_int_distribution<int> coin(0, 1), small(0, 20), unit(0, 7), byte(0, 255);
+    glUseProgram(pick<GLuint>(rng, {0, programs_[0], programs_[1]}));
+    glBindVertexArray(pick<GLuint>(rng, {0, vaos_[0], vaos_[1]}));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, pick<GLuint>(rng, {0, fbos_[0], fbos_[1]}));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, pick<GLuint>(rng, {0, fbos_[0], fbos_[1]}));
+    glBindRenderbuffer(GL_RENDERBUFFER, pick<GLuint>(rng, {0, renderbuffer_}));
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, pick<GLuint>(rng, {0, buffers_[0]}));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, pick<GLuint>(rng, {0, buffers_[1]}));
+    for (GLenum u = 0; u < 4; ++u) {
+      glActiveTexture(GL_TEXTURE0 + u);
+      glBindTexture(GL_TEXTURE_2D, pick<GLuint>(rng, {0, host_textures_[0], host_textures_[1], host_textures_[2]}));
+      glBindSampler(u, pick<GLuint>(rng, {0, samplers_[0], samplers_[1]}));
+    }
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit(rng)));
+    glViewport(small(rng), small(rng), 1 + small(rng), 1 + small(rng));
+    glScissor(small(rng), small(rng), 1 + small(rng), 1 + small(rng));
+    for (GLenum cap : {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_FRAMEBUFFER_SRGB,
+                       GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK,
+                       GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE5,
+                       GL_CLIP_DISTANCE7, GL_DITHER, GL_MULTISAMPLE}) {
+      coin(rng) ? glEnable(cap) : glDisable(cap);
+    }
+    glColorMask(static_cast<GLboolean>(coin(rng)), static_cast<GLboolean>(coin(rng)), static_cast<GLboolean>(coin(rng)),
+                static_cast<GLboolean>(coin(rng)));
+    glDepthMask(static_cast<GLboolean>(coin(rng)));
+    glPolygonMode(GL_FRONT_AND_BACK, pick<GLenum>(rng, {GL_FILL, GL_LINE, GL_POINT}));
+    glDepthFunc(pick<GLenum>(rng, {GL_LESS, GL_GEQUAL, GL_NEVER, GL_ALWAYS}));
+    glBlendFunc(pick<GLenum>(rng, {GL_ONE, GL_ZERO, GL_DST_COLOR}), pick<GLenum>(rng, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA}));
+    glCullFace(pick<GLenum>(rng, {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK}));
+    glFrontFace(pick<GLenum>(rng, {GL_CW, GL_CCW}));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, pick<GLint>(rng, {1, 2, 4, 8}));
+    glPixelStorei(GL_PACK_ALIGNMENT, pick<GLint>(rng, {1, 2, 4, 8}));
+    for (GLenum face : {GL_FRONT, GL_BACK}) {
+      glStencilFuncSeparate(face, pick<GLenum>(rng, {GL_NEVER, GL_LESS, GL_GREATER, GL_ALWAYS}), byte(rng),
+                            static_cast<GLuint>(byte(rng)));
+      glStencilOpSeparate(face, pick<GLenum>(rng, {GL_KEEP, GL_ZERO, GL_INCR}), pick<GLenum>(rng, {GL_REPLACE, GL_DECR}),
+                          pick<GLenum>(rng, {GL_INVERT, GL_INCR_WRAP}));
+      glStencilMaskSeparate(face, static_cast<GLuint>(byte(rng)));
+    }
+  }
+
+  // The entry points that call GL, each as the harness runs it.
+  std::vector<std::pair<std::string, std::function<void()>>> entry_points(uint32_t create_flags) {
+    return {
+        {"sss_create + sss_destroy",
+         [this, create_flags] { sss_destroy(create_sss(create_flags)); }},
+        {"sss_apply (alpha mask, write back)",
+         [this] { EXPECT_EQ(sss_apply(sss_, color_, depth_, nullptr), SSS_OK) << sss_last_error(sss_); }},
+        {"sss_apply (stencil)",
+         [this] {
+           const sss_stencil stencil = {depth_, 1, 0xFF};
+           EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
+         }},
+        {"sss_apply_frame (separate output, viewport)",
+         [this] {
+           sss_frame f = {};
+           f.struct_size = sizeof f;
+           f.color_texture = color_;
+           f.depth_texture = depth_;
+           f.output_texture = output_;
+           f.viewport[0] = 2;
+           f.viewport[1] = 3;
+           f.viewport[2] = 17;
+           f.viewport[3] = 15;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+         }},
+        {"sss_apply (failing: wrong format)",
+         [this] { EXPECT_EQ(sss_apply(sss_, host_textures_[3] /* RGBA16F */, color_, nullptr), SSS_ERROR_INVALID_TEXTURE); }},
+        {"sss_set_settings + sss_set_camera",
+         [this] {
+           sss_settings s;
+           sss_default_settings(&s);
+           s.width = 0.05f;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+           EXPECT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
+         }},
+    };
+  }
+
+  void prepare(uint32_t create_flags) {
+    sss_ = create_sss(create_flags);
+    ASSERT_NE(sss_, nullptr);
+    sss_settings s;
+    sss_default_settings(&s);
+    s.width = 0.05f;
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
+  }
+
+  GLuint programs_[2] = {0, 0}, vaos_[2] = {0, 0}, fbos_[2] = {0, 0}, renderbuffer_ = 0, buffers_[2] = {0, 0};
+  GLuint samplers_[2] = {0, 0}, host_textures_[4] = {0, 0, 0, 0};
+  SyntheticScene scene_;
+  GLuint color_ = 0, output_ = 0, depth_ = 0;
+};
+
+TEST_F(StateHarness, EveryEntryPointRestoresRandomState) {
+  prepare(0);
+  int checked = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    std::mt19937 rng(seed);
+    for (auto& [name, call] : entry_points(0)) {
+      randomise(rng);
+      const Snapshot before = take_snapshot();
+      call();
+      const Snapshot after = take_snapshot();
+      ASSERT_EQ(describe_differences(before, after), "") << name << ", seed " << seed;
+      ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << name << ", seed " << seed;
+      ++checked;
+    }
+  }
+  RecordProperty("calls_checked", checked);
+}
+
+TEST_F(StateHarness, FailsWhenTheRestoresAreOff) {
+  prepare(SSS_CREATE_NO_STATE_RESTORE);
+  std::mt19937 rng(7);
+  randomise(rng);
+  const Snapshot before = take_snapshot();
+  const sss_stencil stencil = {depth_, 1, 0xFF};
+  ASSERT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
+  EXPECT_NE(describe_differences(before, take_snapshot()), "");
+  glGetError();
+}
+
+TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
+  // Each line: a state of sss.h's list and a change to it, as a missing restore would leave it.
+  const std::vector<std::pair<const char*, std::function<void()>>> changes = {
+      {"GL_CURRENT_PROGRAM", [this] { glUseProgram(programs_[1]); }},
+      {"GL_VERTEX_ARRAY_BINDING", [this] { glBindVertexArray(vaos_[1]); }},
+      {"GL_DRAW_FRAMEBUFFER_BINDING", [this] { glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbos_[1]); }},
+      {"GL_READ_FRAMEBUFFER_BINDING", [this] { glBindFramebuffer(GL_READ_FRAMEBUFFER, fbos_[1]); }},
+      {"GL_RENDERBUFFER_BINDING", [this] { glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_); }},
+      {"GL_PIXEL_UNPACK_BUFFER_BINDING", [this] { glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffers_[0]); }},
+      {"GL_ACTIVE_TEXTURE", [] { glActiveTexture(GL_TEXTURE3); }},
+      {"GL_TEXTURE_BINDING_2D unit 2", [this] { glActiveTexture(GL_TEXTURE2); glBindTexture(GL_TEXTURE_2D, host_textures_[1]); glActiveTexture(GL_TEXTURE0); }},
+      {"GL_SAMPLER_BINDING unit 1", [this] { glBindSampler(1, samplers_[1]); }},
+      {"GL_VIEWPORT", [] { glViewport(1, 2, 3, 4); }},
+      {"GL_SCISSOR_TEST", [] { glEnable(GL_SCISSOR_TEST); }},
+      {"GL_RASTERIZER_DISCARD", [] { glEnable(GL_RASTERIZER_DISCARD); }},
+      {"GL_CLIP_DISTANCE5", [] { glEnable(GL_CLIP_DISTANCE5); }},
+      {"GL_COLOR_WRITEMASK", [] { glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE); }},
+      {"GL_POLYGON_MODE", [] { glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); }},
+      {"GL_STENCIL_BACK_FUNC", [] { glStencilFuncSeparate(GL_BACK, GL_NEVER, 0, 0xFF); }},
+      {"GL_STENCIL_WRITEMASK", [] { glStencilMaskSeparate(GL_FRONT, 0x0F); }},
+  };
+  for (const auto& [state, change] : changes) {
+    glUseProgram(programs_[0]);
+    const Snapshot before = take_snapshot();
+    change();
+    const std::string differences = describe_differences(before, take_snapshot());
+    EXPECT_NE(differences.find(state), std::string::npos) << state << ": " << differences;
+    // Back to defaults for the next line.
+    glUseProgram(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindSampler(1, 0);
+    glViewport(0, 0, 16, 16);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_RASTERIZER_DISCARD);
+    glDisable(GL_CLIP_DISTANCE5);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glStencilFuncSeparate(GL_BACK, GL_ALWAYS, 0, 0xFF);
+    glStencilMaskSeparate(GL_FRONT, 0xFF);
+  }
+}
+
+}  // namespace
+}  // namespace sss_test
