@@ -24,6 +24,7 @@
 #include "report.hpp"
 #include "results.hpp"
 #include "scenes/scenes.hpp"
+#include "sss/sss.h"
 #include "sss_headless.h"
 #include "timing.hpp"
 
@@ -33,7 +34,7 @@ namespace sss_bench {
 namespace {
 
 struct MethodConfig {
-  std::string kind;  // "separable", "sum-of-gaussians", "exact-2d"
+  std::string kind;  // "separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"
   int taps = 0;
   bool follow_surface = false;
 };
@@ -44,12 +45,18 @@ std::vector<MethodConfig> method_configs(const Options& o) {
     for (int taps : o.separable_taps) configs.push_back({"separable", taps, follow});
     for (int taps : o.gaussian_taps) configs.push_back({"sum-of-gaussians", taps, follow});
   }
+  // What the state save and restore costs: the paper's default kernel once more, with the host
+  // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
+  configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
   return configs;
 }
 
 std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loader) {
   if (c.kind == "separable") return make_separable_method(loader, c.taps, c.follow_surface);
+  if (c.kind == "separable-no-restore") {
+    return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
+  }
   if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
   return make_exact_method();
 }

@@ -70,7 +70,7 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
     }
     EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
   }
-  EXPECT_EQ(methods, (std::set<std::string>{"separable", "sum-of-gaussians", "exact-2d"}));
+  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"}));
   EXPECT_EQ(scenes.size(), 10u);
 }
 

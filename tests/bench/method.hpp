@@ -3,6 +3,7 @@
 // plus a two-pass copy that every time is normalised by.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -29,7 +30,9 @@ struct GlLoader {
   void* user = nullptr;
 };
 
-std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface);
+// create_flags: sss_create_desc.flags (SSS_CREATE_NO_STATE_RESTORE measures the state queries).
+std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
+                                              uint32_t create_flags = 0);
 std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
 // receiver_stride s > 1: only pixels with x % s == s / 2 and y % s == s / 2 are computed (the
 // others keep the input); the full-size exact filter is too slow on a CPU rasteriser otherwise.

@@ -26,6 +26,7 @@ std::string format(double value, const char* spec = "%.6g") {
 std::string series_name(const ResultRow& r) {
   std::string name = r.method;
   if (r.method == "separable" || r.method == "sum-of-gaussians") name += r.follow_surface ? " (follow-surface)" : " (no follow)";
+  if (r.method == "separable-no-restore") name = "separable, host restores state";
   return name;
 }
 

@@ -10,16 +10,18 @@ namespace {
 
 class SeparableMethod : public Method {
  public:
-  SeparableMethod(const GlLoader& loader, int taps, bool follow) : taps_(taps), follow_(follow) {
+  SeparableMethod(const GlLoader& loader, int taps, bool follow, uint32_t create_flags)
+      : taps_(taps), follow_(follow), restores_state_((create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0) {
     sss_create_desc desc = {};
     desc.struct_size = sizeof desc;
+    desc.flags = create_flags;
     desc.get_proc_address = loader.get_proc_address;
     desc.get_proc_address_user = loader.user;
     if (sss_create(&desc, &ctx_) != SSS_OK) throw std::runtime_error(sss_last_error(nullptr));
   }
   ~SeparableMethod() override { sss_destroy(ctx_); }
 
-  std::string name() const override { return "separable"; }
+  std::string name() const override { return restores_state_ ? "separable" : "separable-no-restore"; }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return follow_; }
   int passes() const override { return 2; }
@@ -46,13 +48,15 @@ class SeparableMethod : public Method {
  private:
   int taps_;
   bool follow_;
+  bool restores_state_;
   sss_context* ctx_ = nullptr;
 };
 
 }  // namespace
 
-std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface) {
-  return std::make_unique<SeparableMethod>(loader, taps, follow_surface);
+std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
+                                              uint32_t create_flags) {
+  return std::make_unique<SeparableMethod>(loader, taps, follow_surface, create_flags);
 }
 
 }  // namespace sss_bench
