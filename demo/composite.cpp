@@ -14,13 +14,18 @@ void main() {
 )";
 
 const char *const kFragmentShader = R"(#version 330 core
-uniform sampler2D u_diffuse;
+uniform sampler2D u_before;
+uniform sampler2D u_after;
 uniform sampler2D u_specular;
+uniform sampler2D u_heat_map;
+uniform int u_mode;         // 0 final, 1 split, 2 heat map, 3 touched
 uniform float u_exposure;
+uniform float u_split_x;    // pixels from the left
+uniform vec2 u_size;        // output size in pixels
 out vec4 o_color;
 
 // Narkowicz's fit of the ACES filmic curve (with his 0.6 input scale).
-vec3 aces_fit(vec3 x) {
+vec3 filmic(vec3 x) {
   x *= 0.6;
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
@@ -31,72 +36,104 @@ vec3 srgb_encode(vec3 c) {
   return mix(low, high, step(vec3(0.0031308), c));
 }
 
+vec3 display(vec3 diffuse, vec3 specular) {
+  return srgb_encode(filmic(max(diffuse + specular, vec3(0.0)) * u_exposure));
+}
+
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  vec3 linear = texelFetch(u_diffuse, p, 0).rgb + texelFetch(u_specular, p, 0).rgb;
-  o_color = vec4(srgb_encode(aces_fit(max(linear, vec3(0.0)) * u_exposure)), 1.0);
+  vec3 specular = texelFetch(u_specular, p, 0).rgb;
+  if (u_mode == 1) {
+    if (abs(gl_FragCoord.x - u_split_x) < 1.0) {  // two pixels wide
+      o_color = vec4(1.0);
+      return;
+    }
+    vec3 d = gl_FragCoord.x < u_split_x ? texelFetch(u_before, p, 0).rgb : texelFetch(u_after, p, 0).rgb;
+    o_color = vec4(display(d, specular), 1.0);
+  } else if (u_mode == 2) {
+    o_color = vec4(texture(u_heat_map, gl_FragCoord.xy / u_size).rgb, 1.0);
+  } else if (u_mode == 3) {
+    vec4 before = texelFetch(u_before, p, 0);
+    vec4 after = texelFetch(u_after, p, 0);
+    float grey = dot(display(after.rgb, specular), vec3(0.2126, 0.7152, 0.0722));
+    vec3 base = vec3(0.15 + 0.45 * grey);
+    if (any(notEqual(before, after)))
+      o_color = vec4(mix(base, vec3(1.0, 0.45, 0.0), 0.75), 1.0);
+    else if (before.a > 0.0)
+      o_color = vec4(mix(base, vec3(0.1, 0.35, 1.0), 0.6), 1.0);
+    else
+      o_color = vec4(base * 0.6, 1.0);
+  } else {
+    o_color = vec4(display(texelFetch(u_after, p, 0).rgb, specular), 1.0);
+  }
 }
 )";
 
 }  // namespace
 
-bool create_composite_pass(CompositePass *pass, GLsizei width, GLsizei height) {
-  pass->width = width;
-  pass->height = height;
+const char *view_mode_name(ViewMode mode) {
+  switch (mode) {
+    case ViewMode::kFinal: return "final";
+    case ViewMode::kSplit: return "split";
+    case ViewMode::kHeatMap: return "heatmap";
+    case ViewMode::kTouched: return "touched";
+  }
+  return "?";
+}
+
+bool create_composite_pass(CompositePass *pass) {
   pass->program = build_program("composite", kVertexShader, kFragmentShader);
   if (pass->program == 0) return false;
   glUseProgram(pass->program);
-  glUniform1i(glGetUniformLocation(pass->program, "u_diffuse"), 0);
-  glUniform1i(glGetUniformLocation(pass->program, "u_specular"), 1);
+  glUniform1i(glGetUniformLocation(pass->program, "u_before"), 0);
+  glUniform1i(glGetUniformLocation(pass->program, "u_after"), 1);
+  glUniform1i(glGetUniformLocation(pass->program, "u_specular"), 2);
+  glUniform1i(glGetUniformLocation(pass->program, "u_heat_map"), 3);
   glUseProgram(0);
-
-  pass->output_texture = make_texture(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
-  glGenFramebuffers(1, &pass->framebuffer);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, pass->framebuffer);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pass->output_texture, 0);
-  const GLenum buffer = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &buffer);
-  const bool complete = check_framebuffer("composite");
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   glGenVertexArrays(1, &pass->vao);
-  return complete && check_gl("composite pass setup");
+  return check_gl("composite pass setup");
 }
 
-void run_composite_pass(const CompositePass &pass, GLuint diffuse, GLuint specular, float exposure) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, pass.framebuffer);
-  glViewport(0, 0, pass.width, pass.height);
+void run_composite_pass(const CompositePass &pass, const FrameTargets &targets, const CompositeInput &in) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.output_framebuffer);
+  glViewport(0, 0, targets.width, targets.height);
   glUseProgram(pass.program);
-  glUniform1f(glGetUniformLocation(pass.program, "u_exposure"), exposure);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, diffuse);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, specular);
+  glUniform1i(glGetUniformLocation(pass.program, "u_mode"), static_cast<GLint>(in.mode));
+  glUniform1f(glGetUniformLocation(pass.program, "u_exposure"), in.exposure);
+  glUniform1f(glGetUniformLocation(pass.program, "u_split_x"),
+              static_cast<float>(static_cast<int>(in.split * static_cast<float>(targets.width))));
+  glUniform2f(glGetUniformLocation(pass.program, "u_size"), static_cast<float>(targets.width),
+              static_cast<float>(targets.height));
+  const GLuint textures[4] = {in.before, in.after, in.specular, in.heat_map};
+  for (GLuint unit = 0; unit < 4; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, textures[unit]);
+  }
   glBindVertexArray(pass.vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  for (GLuint unit = 4; unit-- > 0;) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
   glUseProgram(0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-}
-
-std::vector<std::uint8_t> read_composite(const CompositePass &pass) {
-  std::vector<std::uint8_t> pixels(static_cast<size_t>(pass.width) * static_cast<size_t>(pass.height) * 4u);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, pass.framebuffer);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, pass.width, pass.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return pixels;
 }
 
 void destroy_composite_pass(CompositePass *pass) {
   glDeleteProgram(pass->program);
-  glDeleteFramebuffers(1, &pass->framebuffer);
-  glDeleteTextures(1, &pass->output_texture);
   glDeleteVertexArrays(1, &pass->vao);
   *pass = CompositePass{};
+}
+
+std::vector<std::uint8_t> read_output(const FrameTargets &targets) {
+  std::vector<std::uint8_t> pixels(static_cast<size_t>(targets.width) * static_cast<size_t>(targets.height) * 4u);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.output_framebuffer);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, targets.width, targets.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return pixels;
 }
 
 }  // namespace demo

@@ -1,6 +1,14 @@
-// Pass 4: diffuse + specular, exposure, ACES filmic fit, sRGB encode into an RGBA8 target, read back.
+// Pass 4: what the frame shows, into the targets' RGBA8 output (already sRGB-encoded):
+//   kFinal    (diffuse + specular) x exposure, the filmic curve (Narkowicz's ACES fit, the same
+//             tone_map as the benchmark's metrics), sRGB encode
+//   kSplit    the same, "before" left of the divider and "after" right of it, a white divider
+//   kHeatMap  the heat-map texture (heat_map.hpp: already coloured, lower resolution, nearest)
+//   kTouched  which pixels the library changed: orange where after != before (bit for bit),
+//             blue where the pixel is translucent (alpha > 0) but came out unchanged, the rest
+//             the final image in dim grey
 #pragma once
 
+#include "frame_targets.hpp"
 #include "gl_functions.hpp"
 
 #include <cstdint>
@@ -8,23 +16,30 @@
 
 namespace demo {
 
-struct CompositePass {
-  GLuint program = 0;
-  GLuint framebuffer = 0;
-  GLuint output_texture = 0;  // RGBA8, already sRGB-encoded
-  GLuint vao = 0;             // empty: the full-screen triangle comes from gl_VertexID
-  GLsizei width = 0;
-  GLsizei height = 0;
+enum class ViewMode { kFinal, kSplit, kHeatMap, kTouched };
+
+const char *view_mode_name(ViewMode mode);  // "final", "split", "heatmap", "touched"
+
+struct CompositeInput {
+  ViewMode mode = ViewMode::kFinal;
+  GLuint before = 0;    // the lighting pass's diffuse
+  GLuint after = 0;     // the library's output; for kFinal the texture to show (before when SSS is off)
+  GLuint specular = 0;
+  GLuint heat_map = 0;  // kHeatMap only
+  float exposure = 1.0f;
+  float split = 0.5f;   // kSplit: divider position, fraction of the width from the left
 };
 
-bool create_composite_pass(CompositePass *pass, GLsizei width, GLsizei height);
+struct CompositePass {
+  GLuint program = 0;
+  GLuint vao = 0;  // empty: the full-screen triangle comes from gl_VertexID
+};
 
-// Draws the composite of the two linear textures.
-void run_composite_pass(const CompositePass &pass, GLuint diffuse, GLuint specular, float exposure);
+bool create_composite_pass(CompositePass *pass);
+void run_composite_pass(const CompositePass &pass, const FrameTargets &targets, const CompositeInput &input);
+void destroy_composite_pass(CompositePass *pass);
 
 // The output's pixels, RGBA8, rows bottom-up as GL stores them.
-std::vector<std::uint8_t> read_composite(const CompositePass &pass);
-
-void destroy_composite_pass(CompositePass *pass);
+std::vector<std::uint8_t> read_output(const FrameTargets &targets);
 
 }  // namespace demo

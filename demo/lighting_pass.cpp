@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <string>
+
 namespace demo {
 
 namespace {
@@ -11,12 +13,18 @@ namespace {
 const char *const kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_texcoord;
+layout(location = 3) in vec4 a_tangent;
 uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_texcoord;
 void main() {
   v_position = a_position;
   v_normal = a_normal;
+  v_tangent = a_tangent;
+  v_texcoord = a_texcoord;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
 )";
@@ -24,103 +32,146 @@ void main() {
 const char *const kFragmentShader = R"(#version 330 core
 in vec3 v_position;
 in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_texcoord;
 
-uniform sampler2DShadow u_shadow_map;
-uniform mat4 u_light_view_projection;
-uniform float u_shadow_texel;      // 1 / shadow map size
-uniform float u_normal_offset;     // metres along the normal before the shadow lookup
-uniform vec3 u_light_direction;
-uniform vec3 u_light_irradiance;
+uniform sampler2D u_albedo;        // sRGB texture: decoded to linear by the GL
+uniform sampler2D u_normal_map;
+uniform sampler2DShadow u_shadow_map0;
+uniform sampler2DShadow u_shadow_map1;
+uniform int u_light_count;
+uniform mat4 u_light_matrix[2];
+uniform vec3 u_light_direction[2];
+uniform vec3 u_light_irradiance[2];
+uniform float u_shadow_texel[2];   // texture units (1 / size)
+uniform float u_normal_offset[2];  // world units along the normal before the shadow lookup
 uniform vec3 u_sky_ambient;
 uniform vec3 u_ground_ambient;
 uniform vec3 u_eye;
-uniform vec3 u_albedo;
+uniform vec4 u_base_color;
+uniform float u_normal_scale;
+uniform float u_green_sign;
 uniform float u_sss_strength;
-uniform float u_specular_f0;
-uniform float u_gloss;
+uniform float u_specular_intensity;
+uniform float u_roughness;
 
 layout(location = 0) out vec4 o_diffuse;
 layout(location = 1) out vec4 o_specular;
 
-// 3x3 taps of hardware 2x2 PCF.
-float shadow_factor(vec3 p, vec3 n) {
-  vec4 clip = u_light_view_projection * vec4(p + n * u_normal_offset, 1.0);
+// PCF: 3x3 taps one texel apart, each a hardware-filtered 2x2 comparison.
+float shadow_factor(sampler2DShadow map, mat4 light_matrix, float texel, vec3 p) {
+  vec4 clip = light_matrix * vec4(p, 1.0);
   vec3 s = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x)
-      lit += texture(u_shadow_map, vec3(s.xy + vec2(x, y) * u_shadow_texel, s.z));
+    for (int x = -1; x <= 1; ++x) lit += texture(map, vec3(s.xy + vec2(x, y) * texel, s.z));
   return lit / 9.0;
 }
 
+// Beckmann distribution (d'Eon & Luebke 2007, GPU Gems 3 ch. 14), m = RMS slope.
+float beckmann(float n_dot_h, float m) {
+  float c2 = max(n_dot_h * n_dot_h, 1e-6);
+  float m2 = m * m;
+  return exp((c2 - 1.0) / (c2 * m2)) / (m2 * c2 * c2);
+}
+
+// Kelemen/Szirmay-Kalos specular: Beckmann x Schlick's Fresnel (F0 = 0.028, skin) / |L + V|^2.
+float ksk_specular(vec3 n, vec3 l, vec3 v, float m, float rho_s) {
+  float n_dot_l = dot(n, l);
+  if (n_dot_l <= 0.0) return 0.0;
+  vec3 h = l + v;
+  vec3 hn = normalize(h);
+  float ph = beckmann(max(dot(n, hn), 0.0), m);
+  float base = pow(1.0 - max(dot(hn, v), 0.0), 5.0);
+  float fresnel = base + 0.028 * (1.0 - base);
+  return n_dot_l * rho_s * max(ph * fresnel / dot(h, h), 0.0);
+}
+
 void main() {
-  vec3 n = normalize(v_normal);
-  vec3 l = u_light_direction;
+  vec3 geometric = normalize(v_normal) * (gl_FrontFacing ? 1.0 : -1.0);
+  vec3 t = normalize(v_tangent.xyz - geometric * dot(geometric, v_tangent.xyz));
+  vec3 b = cross(geometric, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
+  vec3 m = texture(u_normal_map, v_texcoord).xyz * 2.0 - 1.0;
+  m.xy *= u_normal_scale;
+  m.y *= u_green_sign;
+  vec3 n = normalize(t * m.x + b * m.y + geometric * max(m.z, 1e-3));
   vec3 v = normalize(u_eye - v_position);
-  float n_dot_l = max(dot(n, l), 0.0);
-  float shadow = n_dot_l > 0.0 ? shadow_factor(v_position, n) : 0.0;
 
-  vec3 ambient = mix(u_ground_ambient, u_sky_ambient, n.y * 0.5 + 0.5);
-  vec3 irradiance = u_light_irradiance * (n_dot_l * shadow) + ambient;
-  o_diffuse = vec4(u_albedo * irradiance, u_sss_strength);
-
-  // Normalised Blinn-Phong with Schlick's Fresnel.
-  vec3 h = normalize(l + v);
-  float fresnel = u_specular_f0 + (1.0 - u_specular_f0) * pow(1.0 - max(dot(h, v), 0.0), 5.0);
-  float lobe = (u_gloss + 8.0) / 25.1327412 * pow(max(dot(n, h), 0.0), u_gloss);
-  o_specular = vec4(u_light_irradiance * (fresnel * lobe * n_dot_l * shadow), 1.0);
+  vec3 irradiance = mix(u_ground_ambient, u_sky_ambient, n.y * 0.5 + 0.5);
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < 2; ++i) {
+    if (i >= u_light_count) break;
+    vec3 l = u_light_direction[i];
+    // No light where the surface itself faces away (the normal map cannot lift it out of its shadow).
+    float shadow = 0.0;
+    if (dot(geometric, l) > 0.0) {
+      vec3 p = v_position + geometric * u_normal_offset[i];
+      shadow = i == 0 ? shadow_factor(u_shadow_map0, u_light_matrix[0], u_shadow_texel[0], p)
+                      : shadow_factor(u_shadow_map1, u_light_matrix[1], u_shadow_texel[1], p);
+    }
+    irradiance += u_light_irradiance[i] * (max(dot(n, l), 0.0) * shadow);
+    specular += u_light_irradiance[i] * (shadow * ksk_specular(n, l, v, u_roughness, u_specular_intensity));
+    // Transmittance (translucency through thin parts: ears, nostrils) goes here, from the same
+    // shadow maps read as plain depth (see shadow_pass.hpp): comes with its own issue.
+  }
+  vec3 albedo = texture(u_albedo, v_texcoord).rgb * u_base_color.rgb;
+  o_diffuse = vec4(albedo * irradiance, u_sss_strength);
+  o_specular = vec4(specular, 0.0);
 }
 )";
 
 struct Uniforms {
-  GLint view_projection, shadow_map, light_view_projection, shadow_texel, normal_offset, light_direction,
-      light_irradiance, sky_ambient, ground_ambient, eye, albedo, sss_strength, specular_f0, gloss;
+  GLint view_projection, light_count, eye, sky_ambient, ground_ambient, base_color, normal_scale, green_sign,
+      sss_strength, specular_intensity, roughness;
+  GLint light_matrix[kMaxLights], light_direction[kMaxLights], light_irradiance[kMaxLights],
+      shadow_texel[kMaxLights], normal_offset[kMaxLights];
 };
 
 Uniforms locate(GLuint p) {
-  return Uniforms{glGetUniformLocation(p, "u_view_projection"), glGetUniformLocation(p, "u_shadow_map"),
-                  glGetUniformLocation(p, "u_light_view_projection"), glGetUniformLocation(p, "u_shadow_texel"),
-                  glGetUniformLocation(p, "u_normal_offset"), glGetUniformLocation(p, "u_light_direction"),
-                  glGetUniformLocation(p, "u_light_irradiance"), glGetUniformLocation(p, "u_sky_ambient"),
-                  glGetUniformLocation(p, "u_ground_ambient"), glGetUniformLocation(p, "u_eye"),
-                  glGetUniformLocation(p, "u_albedo"), glGetUniformLocation(p, "u_sss_strength"),
-                  glGetUniformLocation(p, "u_specular_f0"), glGetUniformLocation(p, "u_gloss")};
+  Uniforms u{};
+  u.view_projection = glGetUniformLocation(p, "u_view_projection");
+  u.light_count = glGetUniformLocation(p, "u_light_count");
+  u.eye = glGetUniformLocation(p, "u_eye");
+  u.sky_ambient = glGetUniformLocation(p, "u_sky_ambient");
+  u.ground_ambient = glGetUniformLocation(p, "u_ground_ambient");
+  u.base_color = glGetUniformLocation(p, "u_base_color");
+  u.normal_scale = glGetUniformLocation(p, "u_normal_scale");
+  u.green_sign = glGetUniformLocation(p, "u_green_sign");
+  u.sss_strength = glGetUniformLocation(p, "u_sss_strength");
+  u.specular_intensity = glGetUniformLocation(p, "u_specular_intensity");
+  u.roughness = glGetUniformLocation(p, "u_roughness");
+  for (int i = 0; i < kMaxLights; ++i) {
+    const std::string index = "[" + std::to_string(i) + "]";
+    u.light_matrix[i] = glGetUniformLocation(p, ("u_light_matrix" + index).c_str());
+    u.light_direction[i] = glGetUniformLocation(p, ("u_light_direction" + index).c_str());
+    u.light_irradiance[i] = glGetUniformLocation(p, ("u_light_irradiance" + index).c_str());
+    u.shadow_texel[i] = glGetUniformLocation(p, ("u_shadow_texel" + index).c_str());
+    u.normal_offset[i] = glGetUniformLocation(p, ("u_normal_offset" + index).c_str());
+  }
+  return u;
 }
 
 }  // namespace
 
-bool create_lighting_pass(LightingPass *pass, GLsizei width, GLsizei height) {
-  pass->width = width;
-  pass->height = height;
+bool create_lighting_pass(LightingPass *pass) {
   pass->program = build_program("lighting", kVertexShader, kFragmentShader);
   if (pass->program == 0) return false;
-
-  pass->diffuse_texture = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
-  pass->specular_texture = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
-  pass->depth_stencil_texture =
-      make_texture(GL_DEPTH24_STENCIL8, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
-
-  glGenFramebuffers(1, &pass->framebuffer);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, pass->framebuffer);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, pass->diffuse_texture, 0);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, pass->specular_texture, 0);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                         pass->depth_stencil_texture, 0);
-  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, buffers);
-  const bool complete = check_framebuffer("lighting");
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  return complete && check_gl("lighting pass setup");
+  glUseProgram(pass->program);
+  glUniform1i(glGetUniformLocation(pass->program, "u_albedo"), 0);
+  glUniform1i(glGetUniformLocation(pass->program, "u_normal_map"), 1);
+  glUniform1i(glGetUniformLocation(pass->program, "u_shadow_map0"), 2);
+  glUniform1i(glGetUniformLocation(pass->program, "u_shadow_map1"), 3);
+  glUseProgram(0);
+  return check_gl("lighting pass setup");
 }
 
-void run_lighting_pass(const LightingPass &pass, const SceneGeometry &geometry, const SceneView &view,
-                       GLuint shadow_map, GLsizei shadow_map_size) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, pass.framebuffer);
-  glViewport(0, 0, pass.width, pass.height);
-
-  // Background: dim colour with alpha 0 (no scattering); depth 1, stencil 0.
-  const GLfloat background[4] = {0.020f, 0.024f, 0.030f, 0.0f};
+void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
+                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.lighting_framebuffer);
+  glViewport(0, 0, targets.width, targets.height);
+  // Background: alpha 0 (no scattering), no specular; depth 1, stencil 0.
+  const GLfloat background[4] = {scene.background.r, scene.background.g, scene.background.b, 0.0f};
   const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, background);
   glClearBufferfv(GL_COLOR, 1, black);
@@ -132,40 +183,63 @@ void run_lighting_pass(const LightingPass &pass, const SceneGeometry &geometry, 
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  // Every drawn fragment that passes the depth test writes its object's mark, so the stencil ends up
-  // 1 exactly where the sphere is the visible surface.
+  glDisable(GL_CULL_FACE);
+  // Every fragment that passes the depth test writes its material's mark, so the stencil ends up 1
+  // exactly where a translucent material is the visible surface.
   glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 
-  const GLuint p = pass.program;
-  const Uniforms u = locate(p);
-  glUseProgram(p);
-  glUniformMatrix4fv(u.view_projection, 1, GL_FALSE, glm::value_ptr(view.view_projection));
-  glUniformMatrix4fv(u.light_view_projection, 1, GL_FALSE, glm::value_ptr(view.light_view_projection));
-  glUniform1i(u.shadow_map, 0);
-  glUniform1f(u.shadow_texel, 1.0f / static_cast<float>(shadow_map_size));
-  glUniform1f(u.normal_offset, 1.5f * view.shadow_extent / static_cast<float>(shadow_map_size));
-  glUniform3fv(u.light_direction, 1, glm::value_ptr(view.light_direction));
-  glUniform3fv(u.light_irradiance, 1, glm::value_ptr(view.light_irradiance));
-  glUniform3fv(u.sky_ambient, 1, glm::value_ptr(view.sky_ambient));
-  glUniform3fv(u.ground_ambient, 1, glm::value_ptr(view.ground_ambient));
-  glUniform3fv(u.eye, 1, glm::value_ptr(view.eye));
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, shadow_map);
+  const Uniforms u = locate(pass.program);
+  glUseProgram(pass.program);
+  glUniformMatrix4fv(u.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection));
+  glUniform3fv(u.eye, 1, glm::value_ptr(camera.eye));
+  glUniform3fv(u.sky_ambient, 1, glm::value_ptr(scene.sky_ambient));
+  glUniform3fv(u.ground_ambient, 1, glm::value_ptr(scene.ground_ambient));
+  glUniform1f(u.green_sign, scene.normal_green_sign);
+  glUniform1i(u.light_count, shadows.light_count);
+  for (int i = 0; i < shadows.light_count; ++i) {
+    const ShadowMap &map = shadows.maps[static_cast<size_t>(i)];
+    const Light &light = scene.lights[static_cast<size_t>(i)];
+    glUniformMatrix4fv(u.light_matrix[i], 1, GL_FALSE, glm::value_ptr(map.light_view_projection));
+    glUniform3fv(u.light_direction[i], 1, glm::value_ptr(light.direction));
+    glUniform3fv(u.light_irradiance[i], 1, glm::value_ptr(light.irradiance));
+    glUniform1f(u.shadow_texel[i], 1.0f / static_cast<float>(kShadowMapSize));
+    glUniform1f(u.normal_offset[i], 1.5f * map.texel_world);
+  }
+  // Both shadow units hold a depth texture (the first again when there is one light) so that the
+  // unused sampler2DShadow never meets an incomplete texture.
+  for (int i = 0; i < kMaxLights; ++i) {
+    const int map = i < shadows.light_count ? i : 0;
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
+    glBindTexture(GL_TEXTURE_2D, shadows.maps[static_cast<size_t>(map)].depth_texture);
+    glBindSampler(static_cast<GLuint>(2 + i), shadows.compare_sampler);
+  }
 
-  glBindVertexArray(geometry.vao);
-  for (const SceneObject &object : geometry.objects) {
-    glStencilFunc(GL_ALWAYS, object.translucent ? 1 : 0, 0xFF);
-    glUniform3fv(u.albedo, 1, glm::value_ptr(object.albedo));
-    glUniform1f(u.sss_strength, object.sss_strength);
-    glUniform1f(u.specular_f0, object.specular_f0);
-    glUniform1f(u.gloss, object.gloss);
-    draw_object(object);
+  glBindVertexArray(gpu.vao);
+  for (const gltf_mesh::Primitive &p : scene.model.primitives) {
+    const size_t index = static_cast<size_t>(p.material);
+    const gltf_mesh::Material &material = scene.model.materials[index];
+    const MaterialLook &look = scene.looks[index];
+    glStencilFunc(GL_ALWAYS, look.sss_strength > 0.0f ? 1 : 0, 0xFF);
+    glUniform4fv(u.base_color, 1, material.base_color);
+    glUniform1f(u.normal_scale, material.normal_scale);
+    glUniform1f(u.sss_strength, look.sss_strength);
+    glUniform1f(u.specular_intensity, look.specular_intensity);
+    glUniform1f(u.roughness, look.roughness);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, gpu.materials[index].albedo);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, gpu.materials[index].normal);
+    draw_primitive(p);
   }
   glBindVertexArray(0);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  for (GLuint unit = 0; unit < static_cast<GLuint>(2 + kMaxLights); ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindSampler(unit, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
   glUseProgram(0);
-
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -173,10 +247,6 @@ void run_lighting_pass(const LightingPass &pass, const SceneGeometry &geometry, 
 
 void destroy_lighting_pass(LightingPass *pass) {
   glDeleteProgram(pass->program);
-  glDeleteFramebuffers(1, &pass->framebuffer);
-  glDeleteTextures(1, &pass->diffuse_texture);
-  glDeleteTextures(1, &pass->specular_texture);
-  glDeleteTextures(1, &pass->depth_stencil_texture);
   *pass = LightingPass{};
 }
 

@@ -1,28 +1,29 @@
-// Pass 2: forward lighting into three textures of one framebuffer:
-//   diffuse  RGBA16F  linear irradiance x albedo, alpha = SSS strength (1 on skin, 0 elsewhere)
-//   specular RGBA16F  linear specular radiance (kept out of the blur)
-//   depth    DEPTH24_STENCIL8, stencil = 1 where the translucent sphere is the visible surface
+// Pass 2: forward lighting into the frame targets (frame_targets.hpp):
+//   diffuse   linear albedo x irradiance (every light x N.L x PCF shadow, plus a hemisphere ambient),
+//             alpha = the material's SSS strength (0: not translucent)
+//   specular  Kelemen/Szirmay-Kalos specular with a Beckmann lobe (d'Eon & Luebke 2007, as the paper
+//             uses), per light x shadow
+//   depth-stencil  stencil 1 where a translucent material (strength > 0) is the visible surface
+// Normal maps use the glTF tangent frame: bitangent = cross(N, T) * w, green scaled by the scene's
+// normal_green_sign.
 #pragma once
 
+#include "camera.hpp"
+#include "frame_targets.hpp"
 #include "gl_functions.hpp"
-#include "scene_geometry.hpp"
-#include "scene_view.hpp"
+#include "gpu_scene.hpp"
+#include "scene.hpp"
+#include "shadow_pass.hpp"
 
 namespace demo {
 
 struct LightingPass {
   GLuint program = 0;
-  GLuint framebuffer = 0;
-  GLuint diffuse_texture = 0;
-  GLuint specular_texture = 0;
-  GLuint depth_stencil_texture = 0;
-  GLsizei width = 0;
-  GLsizei height = 0;
 };
 
-bool create_lighting_pass(LightingPass *pass, GLsizei width, GLsizei height);
-void run_lighting_pass(const LightingPass &pass, const SceneGeometry &geometry, const SceneView &view,
-                       GLuint shadow_map, GLsizei shadow_map_size);
+bool create_lighting_pass(LightingPass *pass);
+void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
+                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera);
 void destroy_lighting_pass(LightingPass *pass);
 
 }  // namespace demo

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace demo {
 
@@ -36,40 +37,83 @@ bool parse_size(const char *text, int *width, int *height) {
   int h = 0;
   char tail = '\0';
   if (std::sscanf(text, "%dx%d%c", &w, &h, &tail) != 2) return false;
-  if (w < 16 || h < 16 || w > 8192 || h > 8192) return false;
+  if (w < 64 || h < 64 || w > 8192 || h > 8192) return false;
   *width = w;
   *height = h;
   return true;
+}
+
+bool parse_view(const char *text, ViewMode *out) {
+  for (ViewMode m : {ViewMode::kFinal, ViewMode::kSplit, ViewMode::kHeatMap, ViewMode::kTouched}) {
+    if (std::strcmp(text, view_mode_name(m)) == 0) {
+      *out = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool fail(const char *what, const char *got) {
+  std::fprintf(stderr, "sss_demo: %s, got '%s'\n", what, got);
+  return false;
 }
 
 }  // namespace
 
 void print_usage(const char *program) {
   std::printf(
-      "Usage: %s [options]\n"
-      "Renders a lit sphere with a hard shadow, applies screen-space separable subsurface scattering\n"
-      "and writes before.png, after.png, split.png, split_zoom.png and README.txt.\n\n"
-      "  --backend NAME     osmesa | egl | egl-device (default egl; falls back to osmesa if it fails)\n"
-      "  --size WxH         image size (default 960x540)\n"
-      "  --out DIR          output folder (default ./demo-out)\n"
-      "  --samples N        SSS taps per pass, odd, 3..65 (default: the library's, 17)\n"
-      "  --no-stencil       mask by the diffuse alpha alone instead of the stencil\n"
-      "  --width-scale F    multiply the physical SSS width (default 1; try 4 to exaggerate)\n"
-      "  --exposure F       linear exposure before tone mapping (default 1)\n"
-      "  --help             this text\n",
+      "Usage: %s [options] [MODEL.gltf|MODEL.glb]\n"
+      "Screen-space separable subsurface scattering (Jimenez et al. 2012) on the Lee Perry-Smith head\n"
+      "scan (or MODEL): a window with a control panel, or --headless PNGs for each camera preset.\n\n"
+      "  --headless          no window: render through EGL/OSMesa and write, for each preset,\n"
+      "                      PRESET-{before,after,split,heatmap,touched,zoom}.png and README.txt into --out\n"
+      "  --backend NAME      headless context: osmesa | egl | egl-device (default egl; falls back to osmesa)\n"
+      "  --scene NAME        head (default) | sphere (a lit sphere and a box's hard shadow)\n"
+      "  --size WxH          window / image size (default 1280x720)\n"
+      "  --out DIR           folder for PNGs and screenshots (default ./demo-out)\n"
+      "  --preset NAME       close | mid | far | all (headless default: all; window: the first view)\n"
+      "  --no-sss            start with the library off (S toggles it in the window)\n"
+      "  --samples N         SSS taps per pass, odd, 3..65 (default: the library's, 17)\n"
+      "  --width-scale F     multiply the physical SSS width (default 1)\n"
+      "  --no-follow-surface turn the follow-surface depth test off\n"
+      "  --no-stencil        mask by the diffuse alpha alone instead of the stencil\n"
+      "  --exposure F        linear exposure before tone mapping (default 1)\n"
+      "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
+      "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
+      "  --repeat N          headless: timed frames per preset, median reported (default 5)\n"
+      "  --view NAME         window: final | split | heatmap | touched (default final)\n"
+      "  --frames N          window: close after N frames (for tests)\n"
+      "  --screenshot-frame K  window: save a screenshot at frame K, as F12 does (for tests)\n"
+      "  --help              this text\n\n"
+      "Window keys: S toggles SSS, F12 saves a screenshot into --out, 1/2/3 the presets, V the next view,\n"
+      "Esc quits; left drag orbits, right drag pans, the wheel zooms.\n",
       program);
 }
 
-ParseResult parse_options(int argc, char **argv, Options *options) {
-  enum { kBackend = 1, kSize, kOut, kSamples, kNoStencil, kWidthScale, kExposure, kHelp };
+ParseResult parse_options(int argc, char **argv, Options *o) {
+  enum {
+    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
+    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kHelp
+  };
   static const struct option long_options[] = {
+      {"headless", no_argument, nullptr, kHeadless},
       {"backend", required_argument, nullptr, kBackend},
+      {"scene", required_argument, nullptr, kScene},
       {"size", required_argument, nullptr, kSize},
       {"out", required_argument, nullptr, kOut},
+      {"preset", required_argument, nullptr, kPreset},
+      {"no-sss", no_argument, nullptr, kNoSss},
       {"samples", required_argument, nullptr, kSamples},
-      {"no-stencil", no_argument, nullptr, kNoStencil},
       {"width-scale", required_argument, nullptr, kWidthScale},
+      {"no-follow-surface", no_argument, nullptr, kNoFollow},
+      {"no-stencil", no_argument, nullptr, kNoStencil},
       {"exposure", required_argument, nullptr, kExposure},
+      {"heat-scale", required_argument, nullptr, kHeatScale},
+      {"heat-factor", required_argument, nullptr, kHeatFactor},
+      {"repeat", required_argument, nullptr, kRepeat},
+      {"view", required_argument, nullptr, kView},
+      {"frames", required_argument, nullptr, kFrames},
+      {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
       {"help", no_argument, nullptr, kHelp},
       {nullptr, 0, nullptr, 0}};
 
@@ -77,56 +121,80 @@ ParseResult parse_options(int argc, char **argv, Options *options) {
   for (;;) {
     const int c = getopt_long(argc, argv, "", long_options, nullptr);
     if (c == -1) break;
+    bool ok = true;
     switch (c) {
+      case kHeadless: o->headless = true; break;
       case kBackend: {
         sss_headless_backend backend = SSS_HEADLESS_OSMESA;
-        if (sss_headless_backend_from_name(optarg, &backend) != 0) {
-          std::fprintf(stderr, "sss_demo: --backend wants osmesa, egl or egl-device, got '%s'\n", optarg);
-          return ParseResult::kError;
-        }
-        options->backend = optarg;
+        ok = sss_headless_backend_from_name(optarg, &backend) == 0 ||
+             fail("--backend wants osmesa, egl or egl-device", optarg);
+        o->backend = optarg;
         break;
       }
+      case kScene:
+        o->scene = optarg;
+        ok = o->scene == "head" || o->scene == "sphere" || fail("--scene wants head or sphere", optarg);
+        break;
       case kSize:
-        if (!parse_size(optarg, &options->width, &options->height)) {
-          std::fprintf(stderr, "sss_demo: --size wants WxH with sides in [16, 8192], got '%s'\n", optarg);
-          return ParseResult::kError;
+        ok = parse_size(optarg, &o->width, &o->height) || fail("--size wants WxH with sides in [64, 8192]", optarg);
+        break;
+      case kOut: o->out_dir = optarg; break;
+      case kPreset: {
+        Preset p = Preset::kClose;
+        if (std::strcmp(optarg, "all") == 0) {
+          o->presets = {Preset::kClose, Preset::kMid, Preset::kFar};
+        } else if (preset_from_name(optarg, &p)) {
+          o->presets = {p};
+        } else {
+          ok = fail("--preset wants close, mid, far or all", optarg);
         }
         break;
-      case kOut:
-        options->out_dir = optarg;
-        break;
+      }
+      case kNoSss: o->sss = false; break;
       case kSamples:
-        if (!parse_int(optarg, &options->samples) || options->samples < 3 || options->samples > 65 ||
-            options->samples % 2 == 0) {
-          std::fprintf(stderr, "sss_demo: --samples wants an odd number in [3, 65], got '%s'\n", optarg);
-          return ParseResult::kError;
-        }
-        break;
-      case kNoStencil:
-        options->use_stencil = false;
+        ok = (parse_int(optarg, &o->samples) && o->samples >= 3 && o->samples <= 65 && o->samples % 2 == 1) ||
+             fail("--samples wants an odd number in [3, 65]", optarg);
         break;
       case kWidthScale:
-        if (!parse_float(optarg, &options->width_scale) || options->width_scale < 0.0f ||
-            options->width_scale > 1000.0f) {
-          std::fprintf(stderr, "sss_demo: --width-scale wants a number in [0, 1000], got '%s'\n", optarg);
-          return ParseResult::kError;
-        }
+        ok = (parse_float(optarg, &o->width_scale) && o->width_scale >= 0.0f && o->width_scale <= 1000.0f) ||
+             fail("--width-scale wants a number in [0, 1000]", optarg);
         break;
+      case kNoFollow: o->follow_surface = false; break;
+      case kNoStencil: o->use_stencil = false; break;
       case kExposure:
-        if (!parse_float(optarg, &options->exposure) || options->exposure <= 0.0f || options->exposure > 1000.0f) {
-          std::fprintf(stderr, "sss_demo: --exposure wants a number in (0, 1000], got '%s'\n", optarg);
-          return ParseResult::kError;
-        }
+        ok = (parse_float(optarg, &o->exposure) && o->exposure > 0.0f && o->exposure <= 1000.0f) ||
+             fail("--exposure wants a number in (0, 1000]", optarg);
         break;
-      case kHelp:
-        return ParseResult::kHelp;
-      default:  // getopt_long already printed what was wrong
-        return ParseResult::kError;
+      case kHeatScale:
+        ok = (parse_float(optarg, &o->heat_scale) && o->heat_scale > 0.0f && o->heat_scale <= 1000.0f) ||
+             fail("--heat-scale wants a number in (0, 1000]", optarg);
+        break;
+      case kHeatFactor:
+        ok = (parse_int(optarg, &o->heat_factor) && o->heat_factor >= 1 && o->heat_factor <= 64) ||
+             fail("--heat-factor wants an integer in [1, 64]", optarg);
+        break;
+      case kRepeat:
+        ok = (parse_int(optarg, &o->repeat) && o->repeat >= 1 && o->repeat <= 1000) ||
+             fail("--repeat wants an integer in [1, 1000]", optarg);
+        break;
+      case kView:
+        ok = parse_view(optarg, &o->view) || fail("--view wants final, split, heatmap or touched", optarg);
+        break;
+      case kFrames:
+        ok = (parse_int(optarg, &o->frames) && o->frames >= 0) || fail("--frames wants a count >= 0", optarg);
+        break;
+      case kScreenshotFrame:
+        ok = (parse_int(optarg, &o->screenshot_frame) && o->screenshot_frame >= 0) ||
+             fail("--screenshot-frame wants a frame number >= 0", optarg);
+        break;
+      case kHelp: return ParseResult::kHelp;
+      default: return ParseResult::kError;  // getopt_long already printed what was wrong
     }
+    if (!ok) return ParseResult::kError;
   }
+  if (optind < argc) o->gltf_path = argv[optind++];
   if (optind < argc) {
-    std::fprintf(stderr, "sss_demo: unexpected argument '%s'\n", argv[optind]);
+    std::fprintf(stderr, "sss_demo: unexpected argument '%s' (one model at most)\n", argv[optind]);
     return ParseResult::kError;
   }
   return ParseResult::kRun;

@@ -1,19 +1,38 @@
 // Command line of sss_demo (getopt_long).
 #pragma once
 
+#include "camera.hpp"
+#include "composite.hpp"
+
 #include <string>
+#include <vector>
 
 namespace demo {
 
 struct Options {
-  std::string backend = "egl";  // osmesa | egl | egl-device
-  int width = 960;
-  int height = 540;
+  bool headless = false;
+  std::string backend = "egl";   // headless: osmesa | egl | egl-device
+  std::string scene = "head";    // head | sphere
+  std::string gltf_path;         // a glTF file instead of the built-in scene
+  int width = 1280;
+  int height = 720;
   std::string out_dir = "demo-out";
-  int samples = 0;              // SSS taps per pass; 0: the library's default
+  std::vector<Preset> presets = {Preset::kClose, Preset::kMid, Preset::kFar};  // window: the first one
+
+  bool sss = true;
+  int samples = 0;               // SSS taps per pass; 0: the library's default
   bool use_stencil = true;
-  float width_scale = 1.0f;     // multiplies the physical width
+  bool follow_surface = true;
+  float width_scale = 1.0f;      // multiplies the physical width
   float exposure = 1.0f;
+
+  float heat_scale = 0.05f;      // linear error at the top of the heat map's ramp
+  int heat_factor = 4;           // the heat map's frame is 1/heat_factor of each side
+  int repeat = 5;                // headless: timed frames per preset (median reported)
+
+  ViewMode view = ViewMode::kFinal;  // window: the first view
+  int frames = 0;                // window: close after this many frames (0: when the user closes it)
+  int screenshot_frame = -1;     // window: save a screenshot at this frame, as F12 does
 };
 
 enum class ParseResult { kRun, kHelp, kError };

@@ -1,9 +1,11 @@
-// Stage timings and the README.txt written beside the images.
+// Text that goes with the pictures: pass-time summaries, the settings, the PNG metadata and the
+// README.txt written beside the headless images.
 #pragma once
 
-#include "context.hpp"
-#include "options.hpp"
-#include "scene_view.hpp"
+#include "png_output.hpp"
+#include "renderer.hpp"
+#include "scene.hpp"
+#include "sss_stage.hpp"
 
 #include <sss/sss.h>
 
@@ -12,35 +14,18 @@
 
 namespace demo {
 
-struct StageTiming {
-  std::string name;
-  double milliseconds;
-};
+// Per-pass medians over frames.
+PassTimes median_times(const std::vector<PassTimes> &frames);
 
-class Timings {
- public:
-  // Starts timing a stage (ends the previous one, if any). Call glFinish before for GL stages.
-  void begin(const std::string &name);
-  // Ends the current stage and prints "  name  12.3 ms".
-  void end();
-  const std::vector<StageTiming> &stages() const { return stages_; }
+// "shadow 12.3  lighting 4.5  sss 6.7  count 1.2  composite 0.8  total 25.5 ms"
+std::string format_times(const PassTimes &t);
 
- private:
-  std::vector<StageTiming> stages_;
-  std::string current_;
-  double started_ = 0.0;
-  bool running_ = false;
-};
+// The library's settings as held after sss_set_settings, with the width in physical terms.
+std::string format_settings(const sss_settings &s, const SssControls &controls, float physical_width);
 
-struct ReportInput {
-  const Options *options;
-  const Context *context;
-  const SceneView *view;
-  const sss_settings *settings;
-  float physical_width;  // sss_width_for_world_units_per_mm(0.001)
-  const std::vector<StageTiming> *timings;
-};
-
-bool write_readme(const std::string &path, const ReportInput &input);
+// tEXt chunks for an image of the scene: Title, Software, Description, Copyright (the scene's
+// attribution, when it has one), Source (the GL renderer).
+PngText image_text(const DemoScene &scene, const std::string &title, const std::string &description,
+                   const std::string &renderer);
 
 }  // namespace demo

@@ -1,26 +1,43 @@
-// Pass 1: depth from the light into a DEPTH_COMPONENT24 texture set up for hardware PCF
-// (GL_COMPARE_REF_TO_TEXTURE with LINEAR filtering, read through sampler2DShadow).
+// Pass 1: depth from each directional light into a DEPTH_COMPONENT32F texture, orthographic,
+// fitted around the scene's bounding sphere. The lighting pass reads it with hardware PCF
+// (GL_COMPARE_REF_TO_TEXTURE, linear filtering, sampler2DShadow) through `compare_sampler`.
+//
+// Transmittance (the paper's translucency through thin parts, JWSG10) will read the same maps as
+// plain depth, through a sampler without compare mode: the thickness the light travels inside the
+// object is the distance between the shaded point and the map's depth, both along the light. That
+// comes with its own issue (the marked place is in lighting_pass.cpp's shader).
 #pragma once
 
 #include "gl_functions.hpp"
-#include "scene_geometry.hpp"
+#include "gpu_scene.hpp"
+#include "scene.hpp"
 
 #include <glm/mat4x4.hpp>
+
+#include <array>
 
 namespace demo {
 
 constexpr GLsizei kShadowMapSize = 2048;
 
-struct ShadowPass {
-  GLuint program = 0;
-  GLuint framebuffer = 0;
+struct ShadowMap {
   GLuint depth_texture = 0;
-  GLsizei size = 0;
-  GLint u_light_view_projection = -1;
+  GLuint framebuffer = 0;
+  glm::mat4 light_view_projection{1.0f};  // world -> light clip space
+  float texel_world = 0.0f;               // world units covered by one texel
 };
 
-bool create_shadow_pass(ShadowPass *pass, GLsizei size);
-void run_shadow_pass(const ShadowPass &pass, const SceneGeometry &geometry, const glm::mat4 &light_view_projection);
+struct ShadowPass {
+  GLuint program = 0;
+  GLint u_light_view_projection = -1;
+  GLuint compare_sampler = 0;  // PCF: compare mode, linear
+  int light_count = 0;
+  std::array<ShadowMap, kMaxLights> maps{};
+};
+
+// One map per light of the scene (at most kMaxLights), fitted to scene.all.
+bool create_shadow_pass(ShadowPass *pass, const DemoScene &scene);
+void run_shadow_pass(const ShadowPass &pass, const DemoScene &scene, const GpuScene &gpu);
 void destroy_shadow_pass(ShadowPass *pass);
 
 }  // namespace demo

@@ -1,8 +1,7 @@
-// Pass 3: the library. Creates the sss context, sets the settings and the camera, and blurs the
-// lighting pass's diffuse texture in place.
+// Pass 3: the library, through its public C API only (sss/sss.h). The demo's controls map onto
+// sss_settings here; the frame runs sss_apply_frame from the lighting pass's diffuse ("before")
+// into a separate output texture ("after"), with the stencil the lighting pass wrote.
 #pragma once
-
-#include "options.hpp"
 
 #include <sss/sss.h>
 
@@ -12,22 +11,35 @@
 
 namespace demo {
 
-struct SssStage {
-  sss_context *context = nullptr;
-  sss_settings settings{};  // as the library holds them after sss_set_settings
-  bool use_stencil = true;
+// What the panel and the command line control. Later issues add kernel family / material, jitter,
+// MSAA and translucency here (see panel.cpp for the marked place in the UI).
+struct SssControls {
+  bool enabled = true;           // S: the library runs (off: "after" is not produced, the frame shows "before")
+  float width_scale = 1.0f;      // x the physical width sss_width_for_world_units_per_mm(world units per mm)
+  float strength[3] = {0.78f, 0.70f, 0.75f};
+  float falloff[3] = {0.57f, 0.13f, 0.08f};
+  int samples = SSS_SAMPLES_MEDIUM;
+  bool follow_surface = true;
+  bool use_stencil = true;       // false: the mask is alpha > 0 alone
 };
 
-// sss_create with the headless loader, then the settings from the options.
-bool create_sss_stage(SssStage *stage, void *headless, const Options &options);
+// The library's defaults (sss_default_settings) as controls.
+SssControls default_sss_controls();
 
-// sss_set_camera + sss_apply (with the stencil on the depth-stencil texture when enabled).
-bool apply_sss(const SssStage &stage, const glm::mat4 &projection, std::uint32_t diffuse,
-               std::uint32_t depth_stencil);
+struct SssStage {
+  sss_context *context = nullptr;
+  sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
+};
 
-// A second, timing-only run: sss_apply_frame from `source` into `scratch` (leaves `source` as it is).
-bool apply_sss_into(const SssStage &stage, std::uint32_t source, std::uint32_t depth_stencil,
-                    std::uint32_t scratch);
+// sss_create with the given loader (a GL context must be current). Prints the error on failure.
+bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user);
+
+// sss_set_settings from the controls (width = physical width x width_scale). Prints the error on failure.
+bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm);
+
+// sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`.
+bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
+               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after);
 
 void destroy_sss_stage(SssStage *stage);
 

@@ -5,8 +5,9 @@
 #
 #   build   compiler, CMake/Ninja, OpenGL headers, OSMesa/EGL (llvmpipe), GLM, stb
 #   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
-#           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots)
-#   demo    build + GLFW, tinygltf, Dear ImGui
+#           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots); RapidCheck
+#           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets)
+#   demo    build + GLFW, tinygltf, Dear ImGui, and Xvfb (the demo's window test)
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
 #
@@ -17,11 +18,11 @@ set -euo pipefail
 readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev)
 readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
-  nlohmann-json3-dev gnuplot-nox)
-readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev)
+  nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev)
+readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
 
 usage() {
-  sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 check_only=0

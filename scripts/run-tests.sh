@@ -2,7 +2,9 @@
 # The whole test suite from a clean checkout: installs the missing Debian packages, builds with
 # warnings as errors, runs every ctest suite (GL tests once on OSMesa and once on EGL surfaceless),
 # builds and runs the consumer projects against static and shared installs (check-consumers.sh),
-# then builds again with AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again.
+# runs a bounded selection under valgrind memcheck (run-valgrind.sh), then builds again with
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again, and runs each libFuzzer
+# target for 20 s (run-fuzz.sh; needs clang). --no-sanitizers skips the last three.
 #
 #   scripts/run-tests.sh [--no-sanitizers]
 #
@@ -19,7 +21,7 @@ for arg in "$@"; do
   esac
 done
 
-scripts/install-deps.sh test
+scripts/install-deps.sh test demo  # the demo is part of the default build and has tests
 jobs=$(nproc)
 
 run_suite() {  # name, build dir, extra cmake arguments...
@@ -35,8 +37,12 @@ run_suite() {  # name, build dir, extra cmake arguments...
 run_suite "release" build/release
 scripts/check-consumers.sh
 if [[ $sanitizers -eq 1 ]]; then
+  echo "== valgrind memcheck (OSMesa; a bounded selection)"
+  scripts/run-valgrind.sh build/release
   # halt_on_error: UBSan is built without recovery; ASan stops at the first report anyway.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   run_suite "asan+ubsan" build/sanitize -DSSS_SANITIZE=ON -DSSS_BUILD_DEMO=OFF
+  echo "== libFuzzer targets, 20 s each (skipped without clang)"
+  scripts/run-fuzz.sh --seconds 20
 fi

@@ -77,7 +77,8 @@ typedef enum sss_result {
   SSS_ERROR_INVALID_TEXTURE,      /**< not a texture name, wrong target, format or size */
   SSS_ERROR_OUT_OF_MEMORY,        /**< host or GL allocation failed */
   SSS_ERROR_GL,                   /**< the GL raised an error inside the module's work */
-  SSS_ERROR_NO_CONTEXT,           /**< no GL context is current on this thread */
+  SSS_ERROR_NO_CONTEXT,           /**< no GL context is current on this thread, or the current one does not hold
+                                       the module's objects (the one it was created in was lost or destroyed) */
   SSS_ERROR_INVALID_OPERATION     /**< call order: e.g. sss_apply before sss_set_camera */
 } sss_result;
 
@@ -187,7 +188,10 @@ SSS_API const char *sss_last_error(const sss_context *ctx);
  *  On failure *out is set to NULL (when out is not NULL) and nothing is left in the GL. */
 SSS_API sss_result sss_create(const sss_create_desc *desc, sss_context **out);
 
-/** Deletes the context's GL objects (its GL context must be current) and frees it. NULL is a no-op. */
+/** Deletes the context's GL objects (its GL context must be current) and frees it. NULL is a no-op.
+ *  When the GL context the module was created in is gone (lost or destroyed) and another is current,
+ *  nothing is deleted there (the names could be the host's objects): the module's objects went with
+ *  their context. */
 SSS_API void sss_destroy(sss_context *ctx);
 
 /** Fills *s with the defaults documented on sss_settings (struct_size set). NULL is a no-op. */
@@ -231,13 +235,21 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       or output_texture equal to color_texture
  *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
- *  @retval SSS_ERROR_NO_CONTEXT         no GL context current
+ *  @retval SSS_ERROR_NO_CONTEXT         no GL context current; or the current one does not hold the module's GL
+ *                                       objects: the context the module was created in was lost or destroyed
+ *                                       (or another one is current). Nothing is drawn or changed; the objects
+ *                                       are forgotten (not deleted: their names may be the host's now) and the
+ *                                       next call rebuilds them in the context current then, so a host that
+ *                                       recreates its context after a loss just carries on
  *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, not GL_TEXTURE_2D, a format outside
  *                                       the lists on sss_frame, or sizes that differ
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
  *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
- *  On any failure the host's textures are unchanged. */
+ *  @retval SSS_ERROR_SHADER_COMPILE    a shader variant first needed by this frame did not compile (retried by
+ *                                       the next call that needs it)
+ *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
+ *  starts afresh (nothing the failed call did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
 
 /* ---- GL-free kernel API (math layer): usable without any GL context. ---- */

@@ -118,6 +118,9 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   gl::StateGuard guard(f, (ctx->create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0);
   gl::DebugGroup group(f, (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0, "sss_apply");
 
+  r = sss::api::require_module_objects(ctx);
+  if (r != SSS_OK) return r;
+
   gl::FilterRun run;
   gl::StencilInput stencil;
   r = query_textures(ctx, *frame, &run, &stencil);

@@ -112,10 +112,15 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
 
 SSS_API void sss_destroy(sss_context* ctx) {
   if (ctx == nullptr) return;
-  if (ctx->gl.GetString(gl::VERSION) != nullptr) {
-    ctx->filter.destroy();  // deletes only the module's own objects: no binding changes
-  } else {
+  if (ctx->gl.GetString(gl::VERSION) == nullptr) {
     sss::api::log(ctx, SSS_LOG_WARNING, "sss_destroy without a current GL context: the module's GL objects leak");
+  } else if (ctx->filter.objects_present()) {
+    ctx->filter.destroy();  // deletes only the module's own objects: no binding changes
+  } else if (!ctx->filter.needs_rebuild()) {
+    // Deleting the names here would delete whatever the current context holds under them.
+    sss::api::log(ctx, SSS_LOG_WARNING,
+                  "sss_destroy: the module's GL objects are not in the current GL context (lost with the context "
+                  "they were created in, or another context is current); nothing was deleted");
   }
   delete ctx;
 }

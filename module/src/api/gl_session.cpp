@@ -29,4 +29,25 @@ sss_result check_gl_errors(sss_context* ctx, const sss::gl::Functions& gl, const
   return fail(ctx, SSS_ERROR_GL, "%s raised %s", what, sss::gl::error_name(error).c_str());
 }
 
+sss_result require_module_objects(sss_context* ctx) {
+  const sss::gl::Functions& gl = ctx->gl;
+  if (ctx->filter.needs_rebuild()) {
+    std::string message;
+    sss_result r = ctx->filter.rebuild(&message);
+    if (r == SSS_OK) {
+      r = check_gl_errors(ctx, gl, "rebuilding the module's GL objects");
+      if (r != SSS_OK) ctx->filter.destroy();
+      return r;
+    }
+    drain_host_errors(nullptr, gl);
+    return fail(ctx, r, "rebuilding the module's GL objects in the current context: " + message);
+  }
+  if (ctx->filter.objects_present()) return SSS_OK;
+  ctx->filter.forget();
+  return fail(ctx, SSS_ERROR_NO_CONTEXT,
+              "the module's GL objects are not in the current GL context (the context the module was created in "
+              "was lost or destroyed, or another one is current); they were forgotten, not deleted, and the next "
+              "call rebuilds them in the context current then");
+}
+
 }  // namespace sss::api

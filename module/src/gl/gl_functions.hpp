@@ -50,9 +50,13 @@ using GLubyte = unsigned char;
   X(void, DeleteSamplers, (GLsizei count, const GLuint* samplers))                                     \
   X(void, BindSampler, (GLuint unit, GLuint sampler))                                                  \
   X(void, SamplerParameteri, (GLuint sampler, GLenum pname, GLint param))                              \
+  X(void, SamplerParameterfv, (GLuint sampler, GLenum pname, const GLfloat* param))                     \
+  X(void, GetSamplerParameterfv, (GLuint sampler, GLenum pname, GLfloat * params))                     \
+  X(GLboolean, IsSampler, (GLuint sampler))                                                            \
   X(void, GenFramebuffers, (GLsizei n, GLuint * framebuffers))                                         \
   X(void, DeleteFramebuffers, (GLsizei n, const GLuint* framebuffers))                                 \
   X(void, BindFramebuffer, (GLenum target, GLuint framebuffer))                                        \
+  X(GLboolean, IsFramebuffer, (GLuint framebuffer))                                                    \
   X(void, FramebufferTexture2D, (GLenum target, GLenum attachment, GLenum textarget, GLuint texture,   \
                                  GLint level))                                                         \
   X(void, FramebufferRenderbuffer, (GLenum target, GLenum attachment, GLenum renderbuffertarget,       \
@@ -89,6 +93,7 @@ using GLubyte = unsigned char;
   X(void, GenVertexArrays, (GLsizei n, GLuint * arrays))                                               \
   X(void, DeleteVertexArrays, (GLsizei n, const GLuint* arrays))                                       \
   X(void, BindVertexArray, (GLuint array))                                                             \
+  X(GLboolean, IsVertexArray, (GLuint array))                                                          \
   X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                                       \
   X(void, Viewport, (GLint x, GLint y, GLsizei width, GLsizei height))                                 \
   X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a))                             \
@@ -146,6 +151,7 @@ enum : GLenum {
   TEXTURE_WRAP_S = 0x2802,
   TEXTURE_WRAP_T = 0x2803,
   TEXTURE_COMPARE_MODE = 0x884C,
+  TEXTURE_BORDER_COLOR = 0x1004,
   TEXTURE_MAX_LEVEL = 0x813D,
   NEAREST = 0x2600,
   LINEAR = 0x2601,

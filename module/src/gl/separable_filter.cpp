@@ -1,5 +1,6 @@
 #include "separable_filter.hpp"
 
+#include <atomic>
 #include <cstdio>
 
 #include "debug_label.hpp"
@@ -11,7 +12,14 @@ namespace sss::gl {
 
 namespace {
 constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
+
+// A tag in (0, 1), exact in float, different for each init() in the process (modulo 2^20).
+GLfloat next_sampler_tag() {
+  static std::atomic<unsigned> counter{0};
+  const unsigned n = counter.fetch_add(1, std::memory_order_relaxed) % (1u << 20);
+  return static_cast<GLfloat>(n + 1) / static_cast<GLfloat>(1u << 21);
 }
+}  // namespace
 
 sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, bool labels,
                                  std::string* message) {
@@ -43,6 +51,10 @@ sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, b
   f.SamplerParameteri(sampler_, TEXTURE_WRAP_S, static_cast<GLint>(CLAMP_TO_EDGE));
   f.SamplerParameteri(sampler_, TEXTURE_WRAP_T, static_cast<GLint>(CLAMP_TO_EDGE));
   f.SamplerParameteri(sampler_, TEXTURE_COMPARE_MODE, static_cast<GLint>(NONE));
+  // The border colour is never sampled (clamp to edge): it carries the tag objects_present checks.
+  sampler_tag_ = next_sampler_tag();
+  const GLfloat border[4] = {0.0f, 0.0f, 0.0f, sampler_tag_};
+  f.SamplerParameterfv(sampler_, TEXTURE_BORDER_COLOR, border);
 
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
@@ -81,7 +93,37 @@ void SeparableFilter::destroy() {
   if (stencil_buffer_ != 0) f.DeleteRenderbuffers(1, &stencil_buffer_);
   if (sampler_ != 0) f.DeleteSamplers(1, &sampler_);
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
+  forget();
+}
+
+bool SeparableFilter::objects_present() const {
+  if (gl_ == nullptr || vertex_array_ == 0) return false;
+  const Functions& f = *gl_;
+  if (!f.IsVertexArray(vertex_array_) || !f.IsFramebuffer(intermediate_framebuffer_) ||
+      !f.IsFramebuffer(output_framebuffer_) || !f.IsFramebuffer(stencil_source_framebuffer_) ||
+      !f.IsProgram(copy_program_) || !f.IsSampler(sampler_)) {
+    return false;
+  }
+  GLfloat border[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
+  f.GetSamplerParameterfv(sampler_, TEXTURE_BORDER_COLOR, border);
+  return border[3] == sampler_tag_;
+}
+
+void SeparableFilter::forget() {
+  const Functions* gl = gl_;
+  std::string header = std::move(glsl_header_);
+  const bool labels = labels_;
   *this = SeparableFilter{};
+  gl_ = gl;
+  glsl_header_ = std::move(header);
+  labels_ = labels;
+}
+
+sss_result SeparableFilter::rebuild(std::string* message) {
+  std::string header = glsl_header_;
+  const sss_result r = init(gl_, std::move(header), labels_, message);
+  if (r != SSS_OK) destroy();  // what init built before it failed; the arguments stay for the next try
+  return r;
 }
 
 sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
@@ -269,16 +311,16 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
 
   if (run.identity) return run_identity(run, message);
-  sss_result r = ensure_intermediate(width, height, message);
-  if (r != SSS_OK) return r;
-
+  // Programs first: a variant that fails to build must not leave a new target behind.
   BlurProgram* horizontal = nullptr;
   BlurProgram* vertical = nullptr;
-  r = blur_program(Outside::write_centre, run.follow_surface, linear_depth, &horizontal, message);
+  sss_result r = blur_program(Outside::write_centre, run.follow_surface, linear_depth, &horizontal, message);
   if (r == SSS_OK) {
     r = blur_program(write_back ? Outside::discard : Outside::copy_original, run.follow_surface, linear_depth,
                      &vertical, message);
   }
+  if (r != SSS_OK) return r;
+  r = ensure_intermediate(width, height, message);
   if (r != SSS_OK) return r;
 
   set_pass_state(f);

@@ -38,8 +38,23 @@ class SeparableFilter {
   // Builds the objects that do not depend on frame size and the most common program variants, so a
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
   sss_result init(const Functions* gl, std::string glsl_header, bool labels, std::string* message);
+  // Deletes the objects (they must exist in the current context: see objects_present), then
+  // forget()s them.
   void destroy();
   sss_result run(const FilterRun& run, std::string* message);
+
+  // Context loss. The objects live in the GL context that init() ran in. When that context was
+  // lost or destroyed and the host made a new one current (or made another, unrelated one current)
+  // the names mean nothing there, or name the host's own objects: using or deleting them would
+  // draw into, detach from or delete the host's objects. objects_present() tells whether the
+  // current context holds the module's objects (the vertex array, the three framebuffers and the
+  // copy program exist, and the sampler carries this instance's tag in its unused border colour);
+  // forget() drops every name without deleting anything; rebuild() runs init() again with the
+  // same arguments, in the current context.
+  bool objects_present() const;
+  void forget();
+  bool needs_rebuild() const { return gl_ != nullptr && vertex_array_ == 0; }
+  sss_result rebuild(std::string* message);
 
  private:
   enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
@@ -69,6 +84,7 @@ class SeparableFilter {
   GLuint copy_program_ = 0;
   GLint copy_source_location_ = -1;
   GLuint vertex_array_ = 0, sampler_ = 0;
+  GLfloat sampler_tag_ = 0.0f;  // border colour alpha that marks this instance's sampler
   GLuint intermediate_ = 0;
   int intermediate_width_ = 0, intermediate_height_ = 0;
   GLuint stencil_buffer_ = 0;

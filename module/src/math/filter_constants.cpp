@@ -1,5 +1,8 @@
 #include "filter_constants.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "separable_kernel.hpp"
 
 namespace sss::math {
@@ -7,27 +10,37 @@ namespace sss::math {
 namespace {
 // One profile millimetre spans 2/3 of `width` world units: the reference shader divides its step
 // by 3 for offsets that reach ±3 mm over a texture-space span of 2 (NDC).
-constexpr float kWorldUnitsPerMmPerWidth = 2.0f / 3.0f;
+constexpr double kWorldUnitsPerMmPerWidth = 2.0 / 3.0;
+
+// The magnitude of v as a float: beyond float's range FLT_MAX, not Inf (v is never NaN here: the
+// settings and the projection are finite).
+float clamp_to_float(double v) {
+  const double a = std::fabs(v);
+  return a < static_cast<double>(std::numeric_limits<float>::max()) ? static_cast<float>(a)
+                                                                     : std::numeric_limits<float>::max();
+}
 }  // namespace
 
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
                                      const FrameGeometry& geometry) {
   PassConstants k;
-  const float world_per_mm = settings.width * kWorldUnitsPerMmPerWidth;
+  // In double, then clamped to the float range: a huge projection scale times a large viewport
+  // must not overflow to Inf (and Inf times a zero width to NaN); a finite step too large for the
+  // image only puts the taps on its edges (they are clamped to the viewport).
+  const double world_per_mm = static_cast<double>(settings.width) * kWorldUnitsPerMmPerWidth;
   // NDC spans 2 across the viewport, so one NDC unit is half the viewport in pixels. Using each
-  // axis' own projection scale and size makes the horizontal pass aspect-correct.
-  k.pixels_per_mm[0] = projection[0] * 0.5f * static_cast<float>(geometry.viewport[2]) * world_per_mm;
-  k.pixels_per_mm[1] = projection[5] * 0.5f * static_cast<float>(geometry.viewport[3]) * world_per_mm;
-  // A negative scale (a mirrored projection) only flips the tap order of a symmetric kernel.
-  if (k.pixels_per_mm[0] < 0.0f) k.pixels_per_mm[0] = -k.pixels_per_mm[0];
-  if (k.pixels_per_mm[1] < 0.0f) k.pixels_per_mm[1] = -k.pixels_per_mm[1];
+  // axis' own projection scale and size makes the horizontal pass aspect-correct. A negative scale
+  // (a mirrored projection) only flips the tap order of a symmetric kernel: the magnitude is used.
+  k.pixels_per_mm[0] = clamp_to_float(static_cast<double>(projection[0]) * 0.5 * geometry.viewport[2] * world_per_mm);
+  k.pixels_per_mm[1] = clamp_to_float(static_cast<double>(projection[5]) * 0.5 * geometry.viewport[3] * world_per_mm);
   // Follow-surface: a tap is blended fully back to the centre colour once its depth differs by the
   // kernel's reach, R profile millimetres in world units (the shader also divides by the pixel's
   // alpha, which scales the reach like the taps). The reference shader's 300·(1/tan(fovy/2))·width
   // has units of 1/length²: it matches this only at the scale of the paper's own scene (about 6 mm
-  // of reach there) and lets a background 0.5 m behind a metric-scale head bleed in.
-  const float reach = static_cast<float>(separable_kernel_range_mm(settings.samples)) * world_per_mm;
-  k.follow_surface_factor = settings.follow_surface && reach > 0.0f ? 1.0f / reach : 0.0f;
+  // of reach there) and lets a background 0.5 m behind a metric-scale head bleed in. (A denormal
+  // width gives a factor beyond float's range: FLT_MAX.)
+  const double reach = separable_kernel_range_mm(settings.samples) * world_per_mm;
+  k.follow_surface_factor = settings.follow_surface && reach > 0.0 ? clamp_to_float(1.0 / reach) : 0.0f;
 
   k.linear_depth = geometry.depth == DepthEncoding::linear_distance;
   if (geometry.depth == DepthEncoding::hardware_zero_to_one) {

@@ -10,17 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "gltf_mesh.hpp"
+
 namespace sss_bench::detail {
 
-// An 8-bit image as decoded from the .glb: rows top first (the first row is glTF's v = 0, so
-// uploading rows in this order lets a shader sample at the glTF texcoord unchanged).
-struct HeadImage {
-  int width = 0, height = 0, components = 0;  // components: 3 (RGB) or 4 (RGBA)
-  std::vector<uint8_t> pixels;
-};
+// An 8-bit image as decoded from the .glb (integration/gltf_mesh): rows top first (the first row is
+// glTF's v = 0, so uploading rows in this order lets a shader sample at the glTF texcoord
+// unchanged); components 3 (RGB) or 4 (RGBA) for the head's two maps.
+using HeadImage = gltf_mesh::Image;
 
 struct HeadAsset {
-  static constexpr int kFloatsPerVertex = 12;  // position xyz, normal xyz, texcoord uv, tangent xyzw
+  static constexpr int kFloatsPerVertex = gltf_mesh::Model::kFloatsPerVertex;  // position xyz, normal xyz, texcoord uv, tangent xyzw
   std::vector<float> vertices;                 // metres, Y up, face towards +Z
   std::vector<uint32_t> indices;               // triangles
   float bounds_min[3] = {0, 0, 0}, bounds_max[3] = {0, 0, 0};

@@ -1,0 +1,128 @@
+#include "heat_map.hpp"
+
+#include "gl_functions.hpp"
+#include "metrics.hpp"
+
+#include "math/exact_reference.hpp"
+#include "math/projection.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace demo {
+
+namespace {
+
+std::vector<float> read_texture_rgba(GLuint texture, int width, int height) {
+  std::vector<float> rgba(static_cast<size_t>(width) * static_cast<size_t>(height) * 4u);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return rgba;
+}
+
+sss_bench::RgbImage rgb_of(const std::vector<float> &rgba, int width, int height) {
+  return sss_bench::RgbImage::from_rgba(rgba.data(), width, height);
+}
+
+}  // namespace
+
+void small_frame_size(int width, int height, int factor, int *small_width, int *small_height) {
+  factor = std::max(factor, 1);
+  *small_width = std::max(16, (width + factor / 2) / factor);
+  *small_height = std::max(16, (height + factor / 2) / factor);
+}
+
+SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
+                            double world_units_per_mm) {
+  SmallFrame f;
+  f.width = targets.width;
+  f.height = targets.height;
+  f.world_units_per_mm = world_units_per_mm;
+  std::memcpy(f.projection.data(), glm::value_ptr(camera.projection), sizeof(float) * 16);
+  f.before = read_texture_rgba(targets.diffuse, f.width, f.height);
+  if (sss_ran) f.after = read_texture_rgba(targets.after, f.width, f.height);
+
+  const size_t n = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
+  std::vector<float> depth(n);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.lighting_framebuffer);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, f.width, f.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  f.distance.resize(n);
+  f.mask.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    f.mask[i] = f.before[i * 4 + 3] > 0.0f ? 1 : 0;
+    const double ndc_z = 2.0 * static_cast<double>(depth[i]) - 1.0;
+    f.distance[i] = static_cast<float>(sss::math::distance_from_ndc_z(f.projection, ndc_z));
+  }
+  return f;
+}
+
+Reference compute_reference(const SmallFrame &frame) {
+  const auto start = std::chrono::steady_clock::now();
+  sss::math::ExactInput input;
+  input.width = frame.width;
+  input.height = frame.height;
+  input.irradiance = frame.before.data();
+  input.distance = frame.distance.data();
+  input.mask = frame.mask.data();
+  input.projection = frame.projection;
+  input.world_units_per_mm = frame.world_units_per_mm;
+  const sss::math::ExactSurfaceConvolution exact(input, sss::math::skin_profile_terms());
+  Reference r;
+  r.width = frame.width;
+  r.height = frame.height;
+  r.rgb.resize(static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height) * 3u);
+  exact.convolve({0, 0, frame.width, frame.height}, r.rgb.data());
+  r.translucent_pixels = static_cast<size_t>(std::count(frame.mask.begin(), frame.mask.end(), 1));
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+HeatMap make_heat_map(const SmallFrame &frame, const Reference &reference, bool show_after, double scale,
+                      double exposure) {
+  HeatMap h;
+  const int w = frame.width, height = frame.height;
+  const sss_bench::RgbImage ref = sss_bench::RgbImage::from_rgb(reference.rgb.data(), w, height);
+  const sss_bench::RgbImage before = rgb_of(frame.before, w, height);
+  h.relative_rmse_before = sss_bench::relative_rmse(before, ref, frame.mask.data());
+  h.shows_after = show_after && !frame.after.empty();
+  sss_bench::RgbImage shown = before;
+  if (!frame.after.empty()) {
+    const sss_bench::RgbImage after = rgb_of(frame.after, w, height);
+    h.relative_rmse_after = sss_bench::relative_rmse(after, ref, frame.mask.data());
+    if (h.shows_after) shown = after;
+  }
+  h.max_abs_error = sss_bench::max_abs_error(shown, ref, frame.mask.data());
+  h.p99_abs_error = sss_bench::percentile_abs_error(shown, ref, frame.mask.data(), 0.99);
+
+  h.image.width = w;
+  h.image.height = height;
+  h.image.rgba.assign(static_cast<size_t>(w) * static_cast<size_t>(height) * 4u, 255);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = shown.index(x, y);
+      uint8_t *out = &h.image.rgba[(static_cast<size_t>(height - 1 - y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * 4u];
+      if (frame.mask[i] != 0) {
+        double e = 0.0;
+        for (int c = 0; c < 3; ++c) e = std::max(e, std::fabs(shown.at(x, y, c) - ref.at(x, y, c)));
+        const std::array<uint8_t, 3> colour = sss_bench::error_ramp(e / scale);
+        std::copy(colour.begin(), colour.end(), out);
+      } else {
+        const double luminance = 0.2126 * shown.at(x, y, 0) + 0.7152 * shown.at(x, y, 1) + 0.0722 * shown.at(x, y, 2);
+        const double grey = 0.45 * sss_bench::tone_map(luminance, exposure);
+        const uint8_t g = static_cast<uint8_t>(std::lround(255.0 * std::clamp(grey, 0.0, 1.0)));
+        out[0] = out[1] = out[2] = g;
+      }
+    }
+  }
+  return h;
+}
+
+}  // namespace demo

@@ -1,0 +1,72 @@
+// The error heat map: the frame's diffuse against the exact reference (DESIGN.md §6, reference 1:
+// module/src/math/exact_reference.hpp, the surface convolution with d'Eon's full six-Gaussian skin
+// profile at the scene's physical scale, CPU, double precision).
+//
+// The reference costs about (translucent pixels) x (pixels within the profile's 17.5 mm reach):
+// a 1280x720 close-up would take minutes, so the heat map is made from a re-render of the same
+// frame (same camera, same settings) at a reduced size (1/4 of each side by default): the
+// lighting pass and the library run again into small targets, the reference is computed from that
+// small frame's irradiance and depth, and the heat map is shown scaled up (nearest). In the
+// window the reference runs on a background thread and is kept while the camera stands still; the
+// comparison with the current settings is redone every frame (it is cheap).
+//
+// Colours: |shown - reference| (max over R, G, B, linear irradiance) / scale through the
+// benchmark's error ramp (tests/bench/metrics.hpp, viridis-like: dark violet 0, yellow >= scale);
+// pixels that are not translucent show the frame in dim grey.
+#pragma once
+
+#include "camera.hpp"
+#include "frame_targets.hpp"
+#include "image.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace demo {
+
+// One small frame read back from its targets: what the reference needs, plus the library's output.
+struct SmallFrame {
+  int width = 0;
+  int height = 0;
+  std::vector<float> before;    // RGBA, row 0 at the bottom: the lighting pass's diffuse
+  std::vector<float> after;     // RGBA: the library's output (empty when SSS is off)
+  std::vector<float> distance;  // view distance (-z_view) per pixel, world units
+  std::vector<uint8_t> mask;    // 1 where translucent (alpha > 0)
+  std::array<float, 16> projection{};
+  double world_units_per_mm = 0.001;
+};
+
+// Reads the small targets back (a current context; `sss_ran`: whether `after` holds the library's output).
+SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
+                            double world_units_per_mm);
+
+struct Reference {
+  int width = 0;
+  int height = 0;
+  std::vector<double> rgb;  // row 0 at the bottom
+  double seconds = 0.0;     // wall-clock time of the computation
+  std::size_t translucent_pixels = 0;
+};
+
+// The exact reference of the frame's diffuse (no GL; any thread; uses every core).
+Reference compute_reference(const SmallFrame &frame);
+
+struct HeatMap {
+  Image image;                    // the small frame's size, rows top-down
+  double relative_rmse_before = 0;  // no SSS against the reference (translucent pixels)
+  double relative_rmse_after = 0;   // the library against the reference (0 when SSS is off)
+  double max_abs_error = 0;         // of what is shown
+  double p99_abs_error = 0;
+  bool shows_after = false;         // the map is of the library's output (else of "before")
+};
+
+// `show_after`: colour the library's output (else the unfiltered diffuse). `scale`: the error at the
+// top of the ramp; `exposure`: for the grey background.
+HeatMap make_heat_map(const SmallFrame &frame, const Reference &reference, bool show_after, double scale,
+                      double exposure);
+
+// The size of the small frame for a full frame of width x height: each side / factor (at least 16).
+void small_frame_size(int width, int height, int factor, int *small_width, int *small_height);
+
+}  // namespace demo

@@ -1,0 +1,140 @@
+// libFuzzer target: parameter validation of the GL-free entry points. The input's first byte picks
+// sss_set_settings, sss_set_camera or sss_kernel_separable; the rest are the argument bytes as the
+// caller would pass them (a raw sss_settings, sixteen raw floats, or samples + two float[3]).
+// Checked: the verdict matches the documented ranges (recomputed here, independently), a rejected
+// call changes nothing and names the problem, an accepted one stores exactly what was given and a
+// kernel whose channels sum to 1 with finite, non-negative weights.
+//
+// The context is the library's own struct built without GL (api/context.hpp): sss_set_settings
+// and sss_set_camera never call GL, so nothing else is needed.
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "api/context.hpp"
+#include "fuzz_common.hpp"
+#include "math/filter_constants.hpp"
+#include "sss/sss.h"
+
+namespace {
+
+bool unit(float v) { return v >= 0.0f && v <= 1.0f; }
+
+bool settings_valid(const sss_settings& s) {
+  if (s.struct_size != sizeof(sss_settings)) return false;
+  if (!(s.width >= 0.0f && s.width <= 1e6f)) return false;
+  for (int c = 0; c < 3; ++c) {
+    if (!unit(s.strength[c]) || !unit(s.falloff[c])) return false;
+  }
+  if (s.samples < 3 || s.samples > 65 || s.samples % 2 == 0) return false;
+  return (s.flags & ~SSS_SETTINGS_ALL_FLAGS) == 0;
+}
+
+void check_kernel(const float* taps, int n) {
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const float w = taps[i * 4 + c];
+      SSS_FUZZ_CHECK(std::isfinite(w) && w >= 0.0f);
+      sum += w;
+    }
+    SSS_FUZZ_CHECK(std::fabs(sum - 1.0) <= 1e-6);
+  }
+  SSS_FUZZ_CHECK(taps[3] == 0.0f);
+}
+
+void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
+  sss_settings s = in.take<sss_settings>();
+  if (in.take<uint8_t>() & 1) s.struct_size = sizeof s;  // half the time a well-formed header
+  const sss::math::FilterSettings before = ctx->settings;
+  const sss_result r = sss_set_settings(ctx, &s);
+  const bool valid = settings_valid(s);
+  SSS_FUZZ_CHECK(r == (valid ? SSS_OK : SSS_ERROR_INVALID_ARGUMENT));
+  if (!valid) {
+    SSS_FUZZ_CHECK(std::memcmp(&ctx->settings, &before, sizeof before) == 0);
+    SSS_FUZZ_CHECK(std::strstr(sss_last_error(ctx), "SSS_ERROR_INVALID_ARGUMENT") != nullptr);
+    return;
+  }
+  sss_settings now;
+  now.struct_size = sizeof now;
+  SSS_FUZZ_CHECK(sss_get_settings(ctx, &now) == SSS_OK);
+  SSS_FUZZ_CHECK(std::memcmp(&now.width, &s.width, sizeof(float)) == 0);
+  SSS_FUZZ_CHECK(std::memcmp(now.strength, s.strength, sizeof s.strength) == 0);
+  SSS_FUZZ_CHECK(std::memcmp(now.falloff, s.falloff, sizeof s.falloff) == 0);
+  SSS_FUZZ_CHECK(now.samples == s.samples && now.flags == s.flags);
+  SSS_FUZZ_CHECK(ctx->kernel.size() == static_cast<std::size_t>(s.samples));
+  std::vector<float> taps;
+  for (const auto& t : ctx->kernel) taps.insert(taps.end(), {t.weight[0], t.weight[1], t.weight[2], t.offset_mm});
+  check_kernel(taps.data(), s.samples);
+}
+
+void fuzz_camera(sss_context* ctx, sss_fuzz::Bytes& in) {
+  float m[16];
+  for (float& v : m) v = in.take<float>();
+  const sss::math::Matrix4 before = ctx->projection;
+  const sss_result r = sss_set_camera(ctx, m);
+  bool finite = true;
+  for (float v : m) finite = finite && std::isfinite(v);
+  if (r != SSS_OK) {
+    SSS_FUZZ_CHECK(r == SSS_ERROR_INVALID_ARGUMENT || r == SSS_ERROR_UNSUPPORTED);
+    SSS_FUZZ_CHECK(std::memcmp(ctx->projection.data(), before.data(), sizeof m) == 0);
+    SSS_FUZZ_CHECK(std::strlen(sss_last_error(ctx)) > 0);
+    if (!finite) SSS_FUZZ_CHECK(r == SSS_ERROR_INVALID_ARGUMENT);
+    return;
+  }
+  SSS_FUZZ_CHECK(finite && m[0] != 0.0f && m[5] != 0.0f);
+  SSS_FUZZ_CHECK(m[1] == 0.0f && m[3] == 0.0f && m[4] == 0.0f && m[7] == 0.0f);
+  SSS_FUZZ_CHECK(static_cast<double>(m[10]) * m[15] - static_cast<double>(m[14]) * m[11] != 0.0);
+  SSS_FUZZ_CHECK(std::memcmp(ctx->projection.data(), m, sizeof m) == 0);
+  // The constants a frame would use: never NaN, whatever the viewport.
+  sss::math::FrameGeometry g;
+  g.texture_width = 1 + in.take<uint16_t>() % 16384;
+  g.texture_height = 1 + in.take<uint16_t>() % 16384;
+  g.viewport = {0, 0, g.texture_width, g.texture_height};
+  const auto k = sss::math::compute_pass_constants(ctx->settings, ctx->projection, g);
+  SSS_FUZZ_CHECK(k.pixels_per_mm[0] >= 0.0f && k.pixels_per_mm[1] >= 0.0f);
+  SSS_FUZZ_CHECK(k.follow_surface_factor >= 0.0f);
+}
+
+void fuzz_kernel_api(sss_fuzz::Bytes& in) {
+  const int32_t samples = in.take<int32_t>();
+  float strength[3], falloff[3];
+  for (float& v : strength) v = in.take<float>();
+  for (float& v : falloff) v = in.take<float>();
+  const uint8_t nulls = in.take<uint8_t>();
+  float out[65 * 4 + 4];
+  for (float& v : out) v = -7.0f;
+  const float* s = (nulls & 1) ? nullptr : strength;
+  const float* f = (nulls & 2) ? nullptr : falloff;
+  float* o = (nulls & 4) ? nullptr : out;
+  const sss_result r = sss_kernel_separable(samples, s, f, o);
+  bool valid = samples >= 3 && samples <= 65 && samples % 2 != 0 && s != nullptr && f != nullptr && o != nullptr;
+  for (int c = 0; valid && c < 3; ++c) valid = unit(strength[c]) && unit(falloff[c]);
+  SSS_FUZZ_CHECK(r == (valid ? SSS_OK : SSS_ERROR_INVALID_ARGUMENT));
+  const int written = valid ? samples * 4 : 0;
+  for (int i = written; i < 65 * 4 + 4; ++i) SSS_FUZZ_CHECK(out[i] == -7.0f);
+  if (valid) check_kernel(out, samples);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  static sss_context* ctx = [] {  // lives for the process, like a host's; as sss_create leaves it
+    auto* c = new sss_context;
+    c->kernel = sss::math::separable_kernel(c->settings.samples, c->settings.strength, c->settings.falloff);
+    return c;
+  }();
+  sss_fuzz::Bytes in(data, size);
+  switch (in.take<uint8_t>() % 3) {
+    case 0:
+      fuzz_settings(ctx, in);
+      break;
+    case 1:
+      fuzz_camera(ctx, in);
+      break;
+    default:
+      fuzz_kernel_api(in);
+      break;
+  }
+  return 0;
+}

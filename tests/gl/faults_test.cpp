@@ -1,0 +1,370 @@
+// Faults: a shader that does not compile (at create, and for a variant first built in a frame),
+// GL_OUT_OF_MEMORY when the module allocates its targets, and the GL context lost between frames.
+// Each gives a specific error, leaves no GL object and no GL error behind, leaves the host's state
+// and textures as they were, and the next call (or create) recovers. The faults come through the
+// loader (support/fault_loader.hpp), so the library carries no test hook.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "fault_loader.hpp"
+#include "filter_case.hpp"
+#include "gl_objects.hpp"
+#include "gl_state_snapshot.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+const sss::math::Matrix4 kCamera = perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
+
+sss_settings wide_settings() {
+  sss_settings s;
+  sss_default_settings(&s);
+  s.width = 0.05f;
+  return s;
+}
+
+class Faults : public GlTest {
+ protected:
+  void SetUp() override {
+    reset_faults();
+    GlTest::SetUp();
+  }
+  void TearDown() override {
+    reset_faults();
+    GlTest::TearDown();
+  }
+
+  sss_result create_faulty(sss_context** out, std::string* log = nullptr) {
+    sss_create_desc desc = {};
+    desc.struct_size = sizeof desc;
+    desc.get_proc_address = fault_get_proc_address;
+    desc.get_proc_address_user = headless_;
+    if (log != nullptr) {
+      desc.log = [](int level, const char* message, void* user) {
+        if (level <= SSS_LOG_WARNING) *static_cast<std::string*>(user) += std::string(message) + "\n";
+      };
+      desc.log_user = log;
+    }
+    return sss_create(&desc, out);
+  }
+
+  GlObjectCounts objects() { return count_gl_objects(sss_headless_get_proc_address, headless_); }
+
+  struct Textures {
+    GLuint color = 0, depth = 0;
+    int width = 0, height = 0;
+  };
+  enum class Depth { hardware, linear, stencil };
+
+  Textures make_scene(int width, int height, Depth kind) {
+    const SyntheticScene scene = make_relief_scene(width, height, 3, kCamera);
+    Textures t;
+    t.width = width;
+    t.height = height;
+    t.color = make_rgba16f(width, height, scene.color);
+    switch (kind) {
+      case Depth::hardware:
+        t.depth = make_depth32f(width, height, scene.window_depth);
+        break;
+      case Depth::linear:
+        t.depth = make_texture(GL_R32F, width, height, GL_RED, GL_FLOAT, scene.distance.data());
+        break;
+      case Depth::stencil: {
+        std::vector<uint32_t> packed(scene.window_depth.size());
+        for (std::size_t i = 0; i < packed.size(); ++i) {
+          packed[i] = (static_cast<uint32_t>(scene.window_depth[i] * 16777215.0f) << 8) | scene.stencil[i];
+        }
+        t.depth =
+            make_texture(GL_DEPTH24_STENCIL8, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+        break;
+      }
+    }
+    return t;
+  }
+
+  sss_result apply(sss_context* ctx, const Textures& t, bool stencil) {
+    sss_stencil s = {t.depth, 1, 0xFF};
+    return sss_apply(ctx, t.color, t.depth, stencil ? &s : nullptr);
+  }
+
+  // The image a context that never saw a fault makes from the same input.
+  std::vector<float> reference(int width, int height, Depth kind, bool stencil) {
+    const Textures t = make_scene(width, height, kind);
+    sss_context* ctx = create_sss();
+    EXPECT_NE(ctx, nullptr);
+    if (ctx == nullptr) return {};
+    const sss_settings s = wide_settings();
+    EXPECT_EQ(sss_set_settings(ctx, &s), SSS_OK);
+    EXPECT_EQ(sss_set_camera(ctx, kCamera.data()), SSS_OK);
+    EXPECT_EQ(apply(ctx, t, stencil), SSS_OK) << sss_last_error(ctx);
+    sss_destroy(ctx);
+    return read_rgba(t.color, width, height);
+  }
+
+  // One failing apply: `code`, `fragment` in the message, the colour texture, the host's state
+  // and the GL objects as they were, no GL error. Returns false on a fatal mismatch.
+  void expect_failure_leaves_nothing(sss_context* ctx, const Textures& t, bool stencil, sss_result code,
+                                     const std::string& fragment, const GlObjectCounts* expected_objects) {
+    const std::vector<float> before = read_rgba(t.color, t.width, t.height);
+    const Snapshot state = take_snapshot();
+    const GlObjectCounts objects_before = objects();
+    EXPECT_EQ(apply(ctx, t, stencil), code) << sss_last_error(ctx);
+    const std::string message = sss_last_error(ctx);
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+    const std::vector<float> after = read_rgba(t.color, t.width, t.height);
+    EXPECT_EQ(0, std::memcmp(before.data(), after.data(), before.size() * sizeof(float))) << "colour changed";
+    const GlObjectCounts now = objects();
+    EXPECT_EQ(now, expected_objects != nullptr ? *expected_objects : objects_before)
+        << "before: " << objects_before.describe() << "\nafter:  " << now.describe();
+  }
+};
+
+TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
+  int failures = 0;
+  for (int k = 0; k < 32; ++k) {
+    reset_faults();
+    faults().skip_shader_sources = k;
+    faults().break_shader_sources = 1;
+    const GlObjectCounts before = objects();
+    const Snapshot state = take_snapshot();
+    sss_context* ctx = reinterpret_cast<sss_context*>(0x1);
+    const sss_result r = create_faulty(&ctx);
+    if (faults().shader_sources_broken == 0) {  // create compiles fewer shaders than k: done
+      EXPECT_EQ(r, SSS_OK) << sss_last_error(nullptr);
+      sss_destroy(ctx);
+      break;
+    }
+    ++failures;
+    SCOPED_TRACE("shader source " + std::to_string(k));
+    EXPECT_EQ(r, SSS_ERROR_SHADER_COMPILE);
+    EXPECT_EQ(ctx, nullptr);
+    const std::string message = sss_last_error(nullptr);
+    EXPECT_NE(message.find("shader"), std::string::npos) << message;
+    EXPECT_NE(message.find("error"), std::string::npos) << "no driver log in: " << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+    EXPECT_EQ(objects(), before) << "before: " << before.describe() << "\nafter:  " << objects().describe();
+  }
+  EXPECT_GE(failures, 6) << "create compiles the copy program and two blur variants";
+  reset_faults();
+  sss_context* ctx = nullptr;
+  EXPECT_EQ(create_faulty(&ctx), SSS_OK);  // and the next create works
+  sss_destroy(ctx);
+}
+
+TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers) {
+  const std::vector<float> expected = reference(20, 16, Depth::linear, false);
+  ASSERT_EQ(create_faulty(&sss_), SSS_OK);
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(20, 16, Depth::linear);  // linear depth: variants create did not build
+  faults().break_shader_sources = 1;
+  expect_failure_leaves_nothing(sss_, t, false, SSS_ERROR_SHADER_COMPILE, "separable blur shader", nullptr);
+  EXPECT_EQ(faults().shader_sources_broken, 1);
+  EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  const std::vector<float> got = read_rgba(t.color, 20, 16);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));
+}
+
+TEST_F(Faults, OutOfMemoryOnTheIntermediateTargetAndRecovery) {
+  const std::vector<float> expected = reference(24, 20, Depth::hardware, false);
+  ASSERT_EQ(create_faulty(&sss_), SSS_OK);
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+
+  // First frame: the module has no target yet.
+  const Textures first = make_scene(24, 20, Depth::hardware);
+  faults().huge_intermediate_targets = 1;
+  expect_failure_leaves_nothing(sss_, first, false, SSS_ERROR_OUT_OF_MEMORY, "intermediate", nullptr);
+  const GlObjectCounts without_target = objects();
+  EXPECT_EQ(apply(sss_, first, false), SSS_OK) << sss_last_error(sss_);
+  std::vector<float> got = read_rgba(first.color, 24, 20);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));
+
+  // A resize that fails: the old target is given up (one texture fewer), the next frame recovers.
+  const Textures resized = make_scene(31, 17, Depth::hardware);
+  const GlObjectCounts with_target = objects();
+  faults().huge_intermediate_targets = 1;
+  GlObjectCounts one_fewer = with_target;
+  one_fewer.count[0] -= 1;
+  expect_failure_leaves_nothing(sss_, resized, false, SSS_ERROR_OUT_OF_MEMORY, "31x17 RGBA16F intermediate",
+                                &one_fewer);
+  EXPECT_EQ(apply(sss_, resized, false), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(objects(), with_target);
+  EXPECT_EQ(without_target.count[0] + 1, with_target.count[0] - 2) << "two host textures were made in between";
+  const int from_driver = faults().out_of_memory_from_driver, injected = faults().out_of_memory_injected;
+  EXPECT_EQ(from_driver + injected, 2);
+  RecordProperty("out_of_memory_from_driver", from_driver);
+  std::printf("GL_OUT_OF_MEMORY: %d raised by the driver for a GL_MAX_TEXTURE_SIZE^2 target, %d injected\n",
+              from_driver, injected);
+}
+
+TEST_F(Faults, OutOfMemoryOnTheStencilCopyAndRecovery) {
+  const std::vector<float> expected = reference(16, 16, Depth::stencil, true);
+  ASSERT_EQ(create_faulty(&sss_), SSS_OK);
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(16, 16, Depth::stencil);
+  faults().fail_renderbuffer_storage = 1;
+  // The intermediate target was made before the stencil copy failed (it stays, for the next
+  // frame); the renderbuffer is given up.
+  GlObjectCounts with_intermediate = objects();
+  with_intermediate.count[0] += 1;
+  expect_failure_leaves_nothing(sss_, t, true, SSS_ERROR_OUT_OF_MEMORY, "stencil copy", &with_intermediate);
+  EXPECT_EQ(apply(sss_, t, true), SSS_OK) << sss_last_error(sss_);
+  with_intermediate.count[3] += 1;  // and now the stencil copy
+  EXPECT_EQ(objects(), with_intermediate);
+  const std::vector<float> got = read_rgba(t.color, 16, 16);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));
+}
+
+// The host's own objects in a new context, made so that their names cover the ones the module had
+// in the lost context: a linked program current, a vertex array bound, a framebuffer with a
+// render target bound for drawing, samplers, textures.
+struct HostObjects {
+  GLuint program = 0, vertex_arrays[4] = {}, framebuffers[4] = {}, samplers[2] = {}, target = 0;
+  std::vector<GLuint> empty_programs;
+};
+
+GLuint compile(GLenum type, const char* source) {
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  return shader;
+}
+
+HostObjects make_host_objects(GLuint target) {
+  HostObjects h;
+  h.target = target;
+  const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n");
+  h.program = glCreateProgram();
+  glAttachShader(h.program, vs);
+  glAttachShader(h.program, fs);
+  glLinkProgram(h.program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  for (int i = 0; i < 12; ++i) h.empty_programs.push_back(glCreateProgram());
+  glGenVertexArrays(4, h.vertex_arrays);
+  for (GLuint vao : h.vertex_arrays) glBindVertexArray(vao);
+  glGenFramebuffers(4, h.framebuffers);
+  for (GLuint fb : h.framebuffers) glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glGenSamplers(2, h.samplers);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, h.framebuffers[0]);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+  const GLfloat clear[4] = {0.25f, 0.5f, 0.75f, 1.0f};
+  glClearBufferfv(GL_COLOR, 0, clear);
+  glUseProgram(h.program);
+  glBindVertexArray(h.vertex_arrays[0]);
+  return h;
+}
+
+void delete_host_objects(HostObjects* h) {
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteProgram(h->program);
+  for (GLuint p : h->empty_programs) glDeleteProgram(p);
+  glDeleteVertexArrays(4, h->vertex_arrays);
+  glDeleteFramebuffers(4, h->framebuffers);
+  glDeleteSamplers(2, h->samplers);
+}
+
+class ContextLoss : public Faults {
+ protected:
+  // Applies once in the test's context, then destroys that GL context (the sss context lives on)
+  // and makes a new one current, as a host does after a device reset.
+  void lose_the_context_after_one_frame(std::string* log = nullptr) {
+    ASSERT_EQ(create_faulty(&sss_, log), SSS_OK);  // no fault armed: the loader only passes through
+    const sss_settings s = wide_settings();
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    const Textures t = make_scene(16, 16, Depth::hardware);
+    ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+    textures_.clear();  // they go with the context
+    sss_headless_destroy(headless_);
+    headless_ = nullptr;
+    sss_headless_desc desc = {};
+    desc.backend = test_backend();
+    desc.major = 3;
+    desc.minor = 3;
+    desc.core_profile = 1;
+    char error[512] = "";
+    ASSERT_EQ(sss_headless_create(&desc, &headless_, error, sizeof error), 0) << error;
+    std::string missing;
+    ASSERT_TRUE(host_gl::load(sss_headless_get_proc_address, headless_, &missing)) << missing;
+  }
+
+  GLint draw_attachment() {
+    auto get = reinterpret_cast<PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC>(
+        sss_headless_get_proc_address("glGetFramebufferAttachmentParameteriv", headless_));
+    GLint name = -1;
+    get(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    return name;
+  }
+};
+
+TEST_F(ContextLoss, TheFirstFrameInTheNewContextFailsCleanlyAndTheNextRecovers) {
+  lose_the_context_after_one_frame();
+  if (HasFatalFailure()) return;
+  const std::vector<float> expected = reference(16, 16, Depth::hardware, false);
+  const Textures t = make_scene(16, 16, Depth::hardware);
+  const GLuint target = make_rgba16f(4, 4, std::vector<float>(64, 0.0f));
+  HostObjects host = make_host_objects(target);
+  const std::vector<float> target_before = read_rgba(target, 4, 4);
+  const GlObjectCounts objects_before = objects();
+
+  expect_failure_leaves_nothing(sss_, t, false, SSS_ERROR_NO_CONTEXT, "not in the current GL context", nullptr);
+  EXPECT_EQ(draw_attachment(), static_cast<GLint>(target)) << "the host's framebuffer lost its attachment";
+  const std::vector<float> target_after = read_rgba(target, 4, 4);
+  EXPECT_EQ(0, std::memcmp(target_before.data(), target_after.data(), target_before.size() * sizeof(float)))
+      << "the module drew into the host's framebuffer";
+
+  const Snapshot state = take_snapshot();
+  EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const std::vector<float> got = read_rgba(t.color, 16, 16);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));
+
+  sss_destroy(sss_);
+  sss_ = nullptr;
+  EXPECT_EQ(objects(), objects_before) << "before: " << objects_before.describe()
+                                       << "\nafter:  " << objects().describe();
+  EXPECT_TRUE(glIsProgram(host.program));
+  EXPECT_EQ(draw_attachment(), static_cast<GLint>(target));
+  delete_host_objects(&host);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST_F(ContextLoss, DestroyAfterTheLossDeletesNothingOfTheHosts) {
+  std::string log;
+  lose_the_context_after_one_frame(&log);
+  if (HasFatalFailure()) return;
+  const GLuint target = make_rgba16f(4, 4, std::vector<float>(64, 0.0f));
+  HostObjects host = make_host_objects(target);
+  const GlObjectCounts objects_before = objects();
+  const Snapshot state = take_snapshot();
+  sss_destroy(sss_);
+  sss_ = nullptr;
+  EXPECT_EQ(objects(), objects_before) << "before: " << objects_before.describe()
+                                       << "\nafter:  " << objects().describe();
+  EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+  EXPECT_EQ(draw_attachment(), static_cast<GLint>(target));
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_NE(log.find("nothing was deleted"), std::string::npos) << log;
+  delete_host_objects(&host);
+}
+
+}  // namespace
+}  // namespace sss_test

@@ -1,0 +1,115 @@
+#include "fault_loader.hpp"
+
+#include <GL/glcorearb.h>
+
+#include <cstring>
+
+#include "sss_headless.h"
+
+namespace sss_test {
+
+namespace {
+
+Faults g_faults;
+GLenum g_pending_error = GL_NO_ERROR;  // returned by the next glGetError before the driver's
+
+// The driver's functions, as the last fault_get_proc_address call found them (one backend per
+// process, and Mesa's entry points do not depend on the context).
+PFNGLSHADERSOURCEPROC real_shader_source = nullptr;
+PFNGLTEXIMAGE2DPROC real_tex_image_2d = nullptr;
+PFNGLRENDERBUFFERSTORAGEPROC real_renderbuffer_storage = nullptr;
+PFNGLGETERRORPROC real_get_error = nullptr;
+PFNGLGETINTEGERVPROC real_get_integerv = nullptr;
+
+const char* const kBrokenSource = "#version 330 core\nthis line is a fault injected by the test;\n";
+
+void APIENTRY shader_source(GLuint shader, GLsizei count, const GLchar* const* strings, const GLint* lengths) {
+  if (g_faults.skip_shader_sources > 0) {
+    --g_faults.skip_shader_sources;
+  } else if (g_faults.break_shader_sources > 0) {
+    --g_faults.break_shader_sources;
+    ++g_faults.shader_sources_broken;
+    real_shader_source(shader, 1, &kBrokenSource, nullptr);
+    return;
+  }
+  real_shader_source(shader, count, strings, lengths);
+}
+
+void APIENTRY tex_image_2d(GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
+                           GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (g_faults.huge_intermediate_targets > 0 && internal_format == GL_RGBA16F && pixels == nullptr) {
+    --g_faults.huge_intermediate_targets;
+    GLint max_size = 0;
+    real_get_integerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    for (int i = 0; i < 16 && real_get_error() != GL_NO_ERROR; ++i) {
+    }
+    real_tex_image_2d(target, level, internal_format, max_size, max_size, border, format, type, nullptr);
+    const GLenum error = real_get_error();
+    if (error == GL_OUT_OF_MEMORY) {
+      ++g_faults.out_of_memory_from_driver;
+    } else {
+      // The driver found the memory: give the image the size asked for, and fail all the same.
+      real_tex_image_2d(target, level, internal_format, width, height, border, format, type, nullptr);
+      ++g_faults.out_of_memory_injected;
+    }
+    g_pending_error = GL_OUT_OF_MEMORY;
+    return;
+  }
+  real_tex_image_2d(target, level, internal_format, width, height, border, format, type, pixels);
+}
+
+void APIENTRY renderbuffer_storage(GLenum target, GLenum internal_format, GLsizei width, GLsizei height) {
+  real_renderbuffer_storage(target, internal_format, width, height);
+  if (g_faults.fail_renderbuffer_storage > 0) {
+    --g_faults.fail_renderbuffer_storage;
+    ++g_faults.out_of_memory_injected;
+    g_pending_error = GL_OUT_OF_MEMORY;
+  }
+}
+
+GLenum APIENTRY get_error() {
+  if (g_pending_error != GL_NO_ERROR) {
+    const GLenum error = g_pending_error;
+    g_pending_error = GL_NO_ERROR;
+    return error;
+  }
+  return real_get_error();
+}
+
+template <typename T>
+void* as_address(T function) {
+  void* address = nullptr;
+  static_assert(sizeof address == sizeof function, "function pointers are data-pointer sized");
+  std::memcpy(&address, &function, sizeof address);
+  return address;
+}
+
+template <typename T>
+void load(T* out, const char* name, void* headless) {
+  void* address = sss_headless_get_proc_address(name, headless);
+  std::memcpy(out, &address, sizeof *out);
+}
+
+}  // namespace
+
+Faults& faults() { return g_faults; }
+
+void reset_faults() {
+  g_faults = Faults{};
+  g_pending_error = GL_NO_ERROR;
+}
+
+void* fault_get_proc_address(const char* name, void* user) {
+  load(&real_shader_source, "glShaderSource", user);
+  load(&real_tex_image_2d, "glTexImage2D", user);
+  load(&real_renderbuffer_storage, "glRenderbufferStorage", user);
+  load(&real_get_error, "glGetError", user);
+  load(&real_get_integerv, "glGetIntegerv", user);
+  if (std::strcmp(name, "glShaderSource") == 0) return as_address(&shader_source);
+  if (std::strcmp(name, "glTexImage2D") == 0) return as_address(&tex_image_2d);
+  if (std::strcmp(name, "glRenderbufferStorage") == 0) return as_address(&renderbuffer_storage);
+  if (std::strcmp(name, "glGetError") == 0) return as_address(&get_error);
+  return sss_headless_get_proc_address(name, user);
+}
+
+}  // namespace sss_test

@@ -1,0 +1,42 @@
+// Fault injection through the loader: the module takes every GL function from the host's
+// get_proc_address, so a test can hand it one that wraps a few functions and makes them fail on
+// demand. No hook in the library: what the module sees is what a failing driver would show it.
+//
+//   sss_create_desc desc = ...; desc.get_proc_address = sss_test::fault_get_proc_address;
+//   desc.get_proc_address_user = headless;         // the sss_headless the real functions come from
+//   sss_test::faults().break_shader_sources = 1;   // the next shader the module compiles fails
+//
+// The faults are process-wide (the tests are single-threaded) and consumed as they fire;
+// reset_faults() clears them and the counters.
+#pragma once
+
+#include <string>
+
+namespace sss_test {
+
+struct Faults {
+  // glShaderSource: skip this many calls, then replace the source of the next `break_shader_sources`
+  // with text that does not compile (the driver's own compile error, with its log).
+  int skip_shader_sources = 0;
+  int break_shader_sources = 0;
+  // glTexImage2D of an RGBA16F image without data (the module's intermediate target): ask the
+  // driver for GL_MAX_TEXTURE_SIZE squared instead, a real GL_OUT_OF_MEMORY on llvmpipe (it refuses
+  // images over 1 GiB without allocating). Where the driver takes it, the image is specified again
+  // at the size asked for and GL_OUT_OF_MEMORY is injected instead.
+  int huge_intermediate_targets = 0;
+  // glRenderbufferStorage: the call goes through, then GL_OUT_OF_MEMORY is injected (the stencil copy).
+  int fail_renderbuffer_storage = 0;
+
+  // What fired.
+  int shader_sources_broken = 0;
+  int out_of_memory_from_driver = 0;
+  int out_of_memory_injected = 0;
+};
+
+Faults& faults();
+void reset_faults();
+
+// A get_proc_address for sss_create_desc: `user` is the sss_headless* the real functions come from.
+void* fault_get_proc_address(const char* name, void* user);
+
+}  // namespace sss_test
