@@ -6,13 +6,6 @@ namespace demo {
 
 namespace {
 
-const char *const kVertexShader = R"(#version 330 core
-void main() {
-  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 const char *const kFragmentShader = R"(#version 330 core
 uniform sampler2D u_before;
 uniform sampler2D u_after;
@@ -82,7 +75,7 @@ const char *view_mode_name(ViewMode mode) {
 }
 
 bool create_composite_pass(CompositePass *pass) {
-  pass->program = build_program("composite", kVertexShader, kFragmentShader);
+  pass->program = build_program("composite", kFullscreenVertexShader, kFragmentShader);
   if (pass->program == 0) return false;
   glUseProgram(pass->program);
   glUniform1i(glGetUniformLocation(pass->program, "u_before"), 0);

@@ -6,13 +6,6 @@ namespace demo {
 
 namespace {
 
-const char *const kVertexShader = R"(#version 330 core
-void main() {
-  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 const char *const kMarkedShader = R"(#version 330 core
 out vec4 o_color;
 void main() { o_color = vec4(0.0); }
@@ -43,8 +36,8 @@ std::uint64_t counted_draw(const PixelCountPass &pass) {
 }  // namespace
 
 bool create_pixel_count_pass(PixelCountPass *pass) {
-  pass->marked_program = build_program("count marked", kVertexShader, kMarkedShader);
-  pass->touched_program = build_program("count touched", kVertexShader, kTouchedShader);
+  pass->marked_program = build_program("count marked", kFullscreenVertexShader, kMarkedShader);
+  pass->touched_program = build_program("count touched", kFullscreenVertexShader, kTouchedShader);
   if (pass->marked_program == 0 || pass->touched_program == 0) return false;
   glUseProgram(pass->touched_program);
   glUniform1i(glGetUniformLocation(pass->touched_program, "u_before"), 0);

@@ -20,6 +20,10 @@ GLuint make_texture(GLint internal_format, GLsizei width, GLsizei height, GLenum
 // Checks the bound draw framebuffer; prints `name` and the status on failure.
 bool check_framebuffer(const char *name);
 
+// "#version 330 core" vertex shader of one triangle covering the viewport (gl_VertexID 0..2, no
+// vertex buffer): the vertex stage of every full-screen pass.
+extern const char *const kFullscreenVertexShader;
+
 // Monotonic milliseconds, for stage timings.
 double now_ms();
 

@@ -9,12 +9,6 @@ using namespace host_gl;
 
 namespace sss_bench {
 
-const char* const kFullscreenVertexShader = R"(#version 330 core
-void main() {
-  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
 
 FullscreenPass::FullscreenPass() {
   glGenFramebuffers(1, &framebuffer_);
@@ -61,7 +55,7 @@ void FullscreenPass::draw() const {
 }
 
 GLuint build_fullscreen_program(const char* name, const char* fragment_source) {
-  const GLuint program = build_program(name, kFullscreenVertexShader, fragment_source);
+  const GLuint program = build_program(name, host_gl::kFullscreenVertexShader, fragment_source);
   if (program == 0) throw std::runtime_error(std::string("cannot build the ") + name + " program");
   return program;
 }

@@ -9,9 +9,6 @@
 
 namespace sss_bench {
 
-// "#version 330 core" vertex shader of one triangle covering the viewport (no vertex buffer).
-extern const char* const kFullscreenVertexShader;
-
 class FullscreenPass {
  public:
   FullscreenPass();
@@ -30,7 +27,7 @@ class FullscreenPass {
   int attached_ = 0;
 };
 
-// Compiles kFullscreenVertexShader with `fragment_source`; throws std::runtime_error on failure.
+// Compiles host_gl::kFullscreenVertexShader with `fragment_source`; throws std::runtime_error on failure.
 GLuint build_fullscreen_program(const char* name, const char* fragment_source);
 
 }  // namespace sss_bench
