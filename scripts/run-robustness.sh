@@ -10,6 +10,7 @@
 #      context destroyed and recreated every 500, resident memory and GL objects recorded.
 #
 #   scripts/run-robustness.sh [--fuzz-seconds N] [--soak-frames N] [--property-cases N] [--build-root DIR]
+#                             [--doc-only]    (rewrite the document from the last run's outputs)
 #
 # Takes about 20 minutes on 2 cores. Builds in DIR/release, DIR/sanitize, DIR/fuzz (DIR: build);
 # raw outputs in DIR/robustness/. Exit status 0 when every step passed (the document is written
@@ -21,31 +22,31 @@ fuzz_seconds=60
 soak_frames=10000
 property_cases=20000
 root=build
+doc_only=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --fuzz-seconds) fuzz_seconds=$2; shift 2 ;;
     --soak-frames) soak_frames=$2; shift 2 ;;
     --property-cases) property_cases=$2; shift 2 ;;
     --build-root) root=$2; shift 2 ;;
+    --doc-only) doc_only=1; shift ;;
     *) echo "run-robustness.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
 
-scripts/install-deps.sh test
 jobs=$(nproc)
 mkdir -p "$root"
 root=$(cd "$root" && pwd)
 out=$root/robustness
-rm -rf "$out"
-mkdir -p "$out"
 declare -A status=()
-step() {  # name, command...: runs it, logs to $out/name.log, records the exit status
+step() {  # name, command...: runs it, logs to $out/name.log, records the exit status and time
   local name=$1 rc=0 start
   shift
   start=$(date +%s)
   echo "== $name"
   "$@" >"$out/$name.log" 2>&1 || rc=$?
   status[$name]=$rc
+  echo "$rc" >"$out/$name.status"
   echo "$(($(date +%s) - start))" >"$out/$name.seconds"
   echo "   exit $rc, $(cat "$out/$name.seconds") s ($out/$name.log)"
 }
@@ -57,6 +58,10 @@ build() {  # dir, cmake arguments...
   cmake --build "$dir" --parallel "$jobs"
 }
 
+if [[ $doc_only -eq 0 ]]; then
+scripts/install-deps.sh test
+rm -rf "$out"
+mkdir -p "$out"
 step build-release build $root/release
 export SSS_STRESS_REPORT="$out/stress-release.txt"
 step stress-release ctest --test-dir $root/release -L stress --parallel "$jobs" --output-on-failure
@@ -76,6 +81,12 @@ for backend in osmesa egl; do
   step "soak-$backend" $root/release/tests/sss_soak --backend "$backend" --frames "$soak_frames" --max-size 96 \
     --resize-every 5 --recreate-every 500 --json "$out/soak-$backend.json"
 done
+else
+  for f in "$out"/*.status; do
+    name=$(basename "$f" .status)
+    status[$name]=$(cat "$f")
+  done
+fi
 
 # ---- the document ----
 json() {  # file, key: a number or word from the soak's one-line JSON
@@ -136,7 +147,7 @@ doc=docs/robustness.md
   echo "intermediate target (the loader asks llvmpipe for a GL_MAX_TEXTURE_SIZE² target, which it refuses),"
   echo "on the stencil copy, and the GL context destroyed and replaced between frames. Each: a specific"
   echo "error, no GL object or error left, the host's state and textures intact, the next call recovers."
-  echo "$(ctest_line "$out/faults.log")."
+  echo "$(ctest_line "$out/faults.log") (6 tests on each backend)."
   echo
   echo "## Property tests (RapidCheck)"
   echo
@@ -155,7 +166,7 @@ doc=docs/robustness.md
   echo "## Valgrind memcheck (OSMesa)"
   echo
   echo '```'
-  grep '^valgrind' "$out/valgrind.log" || true
+  grep '^valgrind' "$out/valgrind.log" | sed 's/ ([^()]*\.log)$//' || true
   echo '```'
   echo "Suppressions (\`tests/valgrind.supp\`) cover ld.so and Mesa internals only, each with its reason."
   echo
@@ -188,9 +199,9 @@ doc=docs/robustness.md
   echo "shader variants, JIT code, malloc arenas), then stays flat; the soak fails if it grows by more than"
   echo "4 MiB over the second half of the contexts. (A create/apply/destroy cycle on a fresh context, with"
   echo "nothing else changing, is flat after about 20 cycles: under 1 KiB per cycle after that; OSMesa"
-  echo "itself leaks ~160 B per context.) GL objects are counted with glIs* over names 1..4096 at the end of each context (the"
-  echo "host's three textures and the module's objects) and after \`sss_destroy\` (exactly what there was"
-  echo "before \`sss_create\`: nothing)."
+  echo "itself leaks ~160 B per context.) GL objects are counted with glIs* over names 1..4096 at the end"
+  echo "of each context (the host's three textures and the module's objects) and after \`sss_destroy\`"
+  echo "(exactly what there was before \`sss_create\`: nothing)."
 } >"$doc"
 echo "wrote $doc"
 
