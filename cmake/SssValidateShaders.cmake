@@ -3,7 +3,7 @@
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
 # Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur.
+# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_LUT_KIND 0/1 for the LUT generator.
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(header "#version 330 core\n")
 set(failures 0)
@@ -34,6 +34,11 @@ foreach(outside 0 1 2)
       validate("blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
     endforeach()
   endforeach()
+endforeach()
+# The pre-integrated LUT generator: SSS_LUT_KIND 0 (diffuse) and 1 (shadow).
+file(READ "${SHADER_DIR}/lut_generate.frag" lut)
+foreach(kind 0 1)
+  validate("lut_generate_k${kind}" frag "${header}#define SSS_LUT_KIND ${kind}\n${lut}")
 endforeach()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")
 if(failures GREATER 0)

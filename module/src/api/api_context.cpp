@@ -116,6 +116,7 @@ SSS_API void sss_destroy(sss_context* ctx) {
     sss::api::log(ctx, SSS_LOG_WARNING, "sss_destroy without a current GL context: the module's GL objects leak");
   } else if (ctx->filter.objects_present()) {
     ctx->filter.destroy();  // deletes only the module's own objects: no binding changes
+    for (const auto& lut : ctx->lut_textures) ctx->gl.DeleteTextures(1, &lut.texture);
   } else if (!ctx->filter.needs_rebuild()) {
     // Deleting the names here would delete whatever the current context holds under them.
     sss::api::log(ctx, SSS_LOG_WARNING,

@@ -2,12 +2,14 @@
 #pragma once
 
 #include <cstdint>
+#include <list>
 #include <string>
 #include <vector>
 
 #include "../gl/gl_functions.hpp"
 #include "../gl/separable_filter.hpp"
 #include "../math/filter_constants.hpp"
+#include "../math/lut_cache.hpp"
 #include "../math/projection.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
@@ -28,6 +30,16 @@ struct sss_context {
   bool has_camera = false;
 
   std::string last_error;
+
+  // Pre-integrated LUT textures (sss_lut_create_texture), most recently used first, by the text of
+  // all their inputs; owned by the context, deleted with it.
+  struct LutTexture {
+    std::string key;
+    std::uint32_t texture = 0;
+  };
+  std::list<LutTexture> lut_textures;
+  std::uint64_t lut_gpu_generations = 0;
+  sss::math::LutCache lut_data{4};  // CPU-generated LUTs (SSS_LUT_CPU), by the same keys
 };
 
 namespace sss::api {

@@ -44,6 +44,7 @@ sss_result require_module_objects(sss_context* ctx) {
   }
   if (ctx->filter.objects_present()) return SSS_OK;
   ctx->filter.forget();
+  ctx->lut_textures.clear();  // gone with their context too (names only: nothing is deleted)
   return fail(ctx, SSS_ERROR_NO_CONTEXT,
               "the module's GL objects are not in the current GL context (the context the module was created in "
               "was lost or destroyed, or another one is current); they were forgotten, not deleted, and the next "

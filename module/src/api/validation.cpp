@@ -75,3 +75,72 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
 }
 
 }  // namespace sss::api
+
+namespace sss::api {
+
+namespace {
+
+sss_result check_float(sss_context* ctx, const char* name, float v, float lo, float hi, bool lo_open) {
+  const bool ok = lo_open ? (v > lo && v <= hi) : (v >= lo && v <= hi);  // false for NaN
+  if (!ok) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->%s = %g: must be finite and in %c%g, %g]", name,
+                static_cast<double>(v), lo_open ? '(' : '[', static_cast<double>(lo), static_cast<double>(hi));
+  }
+  return SSS_OK;
+}
+
+}  // namespace
+
+sss_result check_lut_desc(sss_context* ctx, const sss_lut_desc* desc, LutUse use) {
+  if (desc == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
+  if (desc->struct_size != sizeof(sss_lut_desc)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_lut_desc) = %u",
+                desc->struct_size, static_cast<unsigned>(sizeof(sss_lut_desc)));
+  }
+  for (const auto& [name, v] : {std::pair<const char*, int32_t>{"width", desc->width}, {"height", desc->height}}) {
+    if (v < SSS_LUT_MIN_SIZE || v > SSS_LUT_MAX_SIZE) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->%s = %d: must be in [%d, %d]", name, v, SSS_LUT_MIN_SIZE,
+                  SSS_LUT_MAX_SIZE);
+    }
+  }
+  if (desc->profile < 0 || desc->profile >= SSS_PROFILE_COUNT) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->profile = %d: must be an SSS_PROFILE_* in [0, %d]",
+                desc->profile, SSS_PROFILE_COUNT - 1);
+  }
+  if (desc->threads < 0 || desc->threads > 256) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->threads = %d: must be in [0, 256]", desc->threads);
+  }
+  if ((desc->flags & ~SSS_LUT_ALL_FLAGS) != 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", desc->flags,
+                desc->flags & ~SSS_LUT_ALL_FLAGS);
+  }
+  if (use.texture && (desc->format < SSS_LUT_FORMAT_RGBA16F || desc->format > SSS_LUT_FORMAT_RGBA8)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->format = %d: must be an SSS_LUT_FORMAT_* in [0, 2]",
+                desc->format);
+  }
+  sss_result r = SSS_OK;
+  if (use.diffuse) {
+    r = check_float(ctx, "curvature_min", desc->curvature_min, 0.0f, 1000.0f, false);
+    if (r == SSS_OK) r = check_float(ctx, "curvature_max", desc->curvature_max, 0.0f, 1000.0f, false);
+    if (r == SSS_OK && !(desc->curvature_min < desc->curvature_max)) {
+      r = fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->curvature_min = %g is not below desc->curvature_max = %g",
+               static_cast<double>(desc->curvature_min), static_cast<double>(desc->curvature_max));
+    }
+  } else {
+    r = check_float(ctx, "penumbra_min", desc->penumbra_min, 0.0f, 1e6f, true);
+    if (r == SSS_OK) r = check_float(ctx, "penumbra_max", desc->penumbra_max, 0.0f, 1e6f, true);
+    if (r == SSS_OK && !(desc->penumbra_min < desc->penumbra_max)) {
+      r = fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->penumbra_min = %g is not below desc->penumbra_max = %g",
+               static_cast<double>(desc->penumbra_min), static_cast<double>(desc->penumbra_max));
+    }
+    if (r == SSS_OK) r = check_float(ctx, "world_units_per_mm", desc->world_units_per_mm, 0.0f, 1e6f, true);
+    if (r == SSS_OK) r = check_float(ctx, "new_penumbra", desc->new_penumbra, 0.0f, 1.0f, true);
+    if (r == SSS_OK && desc->shadow_filter != SSS_LUT_SHADOW_BOX && desc->shadow_filter != SSS_LUT_SHADOW_GAUSSIAN) {
+      r = fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->shadow_filter = %d: must be SSS_LUT_SHADOW_BOX (0) or "
+               "SSS_LUT_SHADOW_GAUSSIAN (1)", desc->shadow_filter);
+    }
+  }
+  return r;
+}
+
+}  // namespace sss::api

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "context.hpp"
+#include "sss/sss_lut.h"
 
 namespace sss::api {
 
@@ -12,5 +13,12 @@ sss_result check_samples(sss_context* ctx, int32_t samples);
 sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]);
 sss_result check_settings(sss_context* ctx, const sss_settings* s);
 sss_result check_frame(sss_context* ctx, const sss_frame* frame);
+
+// Which fields of an sss_lut_desc a call uses: the diffuse or the shadow ones, and the format.
+struct LutUse {
+  bool diffuse = true;
+  bool texture = false;
+};
+sss_result check_lut_desc(sss_context* ctx, const sss_lut_desc* desc, LutUse use);
 
 }  // namespace sss::api

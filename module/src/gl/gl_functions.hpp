@@ -101,7 +101,8 @@ using GLubyte = unsigned char;
   X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass))                \
   X(void, StencilMaskSeparate, (GLenum face, GLuint mask))                                             \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
-  X(void, BindBuffer, (GLenum target, GLuint buffer))
+  X(void, BindBuffer, (GLenum target, GLuint buffer))                                                  \
+  X(void, PixelStorei, (GLenum pname, GLint param))
 
 // KHR_debug (core in 4.3): used only when present.
 #define SSS_GL_DEBUG_FUNCTIONS(X)                                                                      \
@@ -236,6 +237,12 @@ enum : GLenum {
   VERTEX_ARRAY = 0x8074,
   SAMPLER = 0x82E6,
   TEXTURE = 0x1702,
+  RGBA8 = 0x8058,
+  UNSIGNED_BYTE = 0x1401,
+  UNPACK_ROW_LENGTH = 0x0CF2,
+  UNPACK_SKIP_ROWS = 0x0CF3,
+  UNPACK_SKIP_PIXELS = 0x0CF4,
+  UNPACK_ALIGNMENT = 0x0CF5,
 };
 
 // "GL_INVALID_OPERATION" for an error code, or "0x1234".
