@@ -9,6 +9,7 @@
 
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
+#include "sss/sss_lut.h"
 
 using namespace host_gl;
 
@@ -159,6 +160,37 @@ TEST_F(StateRestore, AProgramDeletedWhileCurrentLeavesNoErrorBehind) {
   GLint current = -1;
   glGetIntegerv(GL_CURRENT_PROGRAM, &current);
   EXPECT_EQ(current, 0);
+}
+
+TEST_F(StateRestore, LutTexturesRestoreEveryListedStateOnBothGenerators) {
+  // The GPU generator draws (program, framebuffer, viewport, pass state); the CPU path uploads
+  // (unpack buffer and the unpack parameters, set oddly here, must not reshape the rows).
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  set_unusual_state();
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 3);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+  const Snapshot before = take_snapshot();
+  GLint row_length_before = 0;
+  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &row_length_before);
+  sss_lut_desc desc;
+  sss_lut_default_desc(&desc);
+  desc.width = 8;
+  desc.height = 4;
+  for (uint32_t flags : {0u, static_cast<uint32_t>(SSS_LUT_CPU)}) {
+    desc.flags = flags;
+    for (int32_t which : {SSS_LUT_DIFFUSE, SSS_LUT_SHADOW}) {
+      uint32_t texture = 0;
+      ASSERT_EQ(sss_lut_create_texture(sss_, which, &desc, &texture), SSS_OK) << sss_last_error(sss_);
+      EXPECT_NE(texture, 0u);
+      EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "flags " << flags << " which " << which;
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    }
+  }
+  GLint row_length_after = 0;
+  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &row_length_after);
+  EXPECT_EQ(row_length_after, row_length_before);
 }
 
 }  // namespace

@@ -124,8 +124,8 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
 namespace {
 
 // Generates the LUT into a new texture. On failure nothing is left in the GL.
-sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& desc, const std::string& key,
-                        gl::GLuint* out) {
+sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& desc, const std::string& values_key,
+                        const std::string& key, gl::GLuint* out) {
   const gl::Functions& f = ctx->gl;
   const bool labels = (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
   const math::RadialProfile& profile = sss::api::lut_profile(desc);
@@ -136,7 +136,7 @@ sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& des
   math::LutCache::Data data;
   if (on_cpu) {
     try {
-      data = ctx->lut_data.get(key, [&] {
+      data = ctx->lut_data.get(values_key, [&] {
         std::vector<float> v(4u * static_cast<std::size_t>(desc.width) * static_cast<std::size_t>(desc.height));
         if (which == SSS_LUT_DIFFUSE) {
           math::generate_diffuse_lut(profile, sss::api::diffuse_lut_desc(desc), desc.threads, v.data());
@@ -233,9 +233,11 @@ SSS_API sss_result sss_lut_create_texture(sss_context* ctx, int32_t which, const
   const math::RadialProfile& profile = sss::api::lut_profile(*desc);
   char extra[64];
   std::snprintf(extra, sizeof extra, "|format=%d|cpu=%d", desc->format, (desc->flags & SSS_LUT_CPU) != 0 ? 1 : 0);
-  const std::string key =
-      (which == SSS_LUT_DIFFUSE ? math::diffuse_lut_key(profile, sss::api::diffuse_lut_desc(*desc))
-                                : math::shadow_lut_key(profile, sss::api::shadow_lut_desc(*desc))) + extra;
+  // The values depend on the key's inputs; the texture also on its format and generator.
+  const std::string values_key =
+      which == SSS_LUT_DIFFUSE ? math::diffuse_lut_key(profile, sss::api::diffuse_lut_desc(*desc))
+                               : math::shadow_lut_key(profile, sss::api::shadow_lut_desc(*desc));
+  const std::string key = values_key + extra;
   for (auto it = ctx->lut_textures.begin(); it != ctx->lut_textures.end(); ++it) {
     if (it->key == key) {
       ctx->lut_textures.splice(ctx->lut_textures.begin(), ctx->lut_textures, it);
@@ -244,7 +246,7 @@ SSS_API sss_result sss_lut_create_texture(sss_context* ctx, int32_t which, const
     }
   }
   gl::GLuint texture = 0;
-  r = make_texture(ctx, which, *desc, key, &texture);
+  r = make_texture(ctx, which, *desc, values_key, key, &texture);
   if (r != SSS_OK) return r;
   ctx->lut_textures.push_front({key, texture});
   while (ctx->lut_textures.size() > kTextureCacheSize) {
