@@ -40,6 +40,23 @@ file(READ "${SHADER_DIR}/lut_generate.frag" lut)
 foreach(kind 0 1)
   validate("lut_generate_k${kind}" frag "${header}#define SSS_LUT_KIND ${kind}\n${lut}")
 endforeach()
+# The host-side include (integration/preintegrated/sss_preintegrated.glsl) in a fragment shader
+# that calls every function.
+if(INCLUDE_DIR)
+  file(READ "${INCLUDE_DIR}/sss_preintegrated.glsl" include)
+  set(host "uniform sampler2D d; uniform sampler2D s; in vec3 n; in vec3 p; out vec4 c;
+void main() {
+  vec3 r, g, b;
+  sss_skin_normals(n, normalize(n + 0.1), vec3(1.0, 0.5, 0.3), r, g, b);
+  float k = sss_curvature_per_mm(n, p, 0.001);
+  vec3 l = normalize(vec3(1.0));
+  vec3 dif = sss_skin_diffuse(d, vec2(0.0, 1.0), k, sss_skin_ndotl(r, g, b, l));
+  vec3 sh = sss_skin_shadow(s, vec2(0.001, 0.032), 0.5, sss_penumbra_width(0.01, n, l));
+  c = vec4(dif * sh, 1.0);
+}
+")
+  validate(host_preintegrated frag "${header}${include}${host}")
+endif()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")
 if(failures GREATER 0)
   message(FATAL_ERROR "shader validation failed")

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "sss/sss.h"
+#include "sss/sss_lut.h" /* includes sss.h */
 
 static int failures = 0;
 #define CHECK(cond)                                                     \
@@ -22,6 +22,8 @@ int main(void) {
   int i;
   sss_context *ctx = NULL;
   sss_create_desc desc;
+  sss_lut_desc lut;
+  float lut_rgba[4 * 4 * 2];
 
   sss_default_settings(&settings);
   CHECK(settings.struct_size == sizeof settings);
@@ -41,6 +43,21 @@ int main(void) {
   desc.struct_size = sizeof desc;
   CHECK(sss_create(&desc, &ctx) == SSS_ERROR_INVALID_ARGUMENT && ctx == NULL);
   sss_destroy(NULL);
+
+  /* Pre-integrated LUTs, GL-free. */
+  sss_lut_default_desc(&lut);
+  CHECK(lut.struct_size == sizeof lut && lut.width == 256 && lut.profile == SSS_PROFILE_SKIN_DEON);
+  lut.width = 4;
+  lut.height = 2;
+  CHECK(sss_lut_diffuse_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK);
+  CHECK(lut_rgba[0] == 0.0f && lut_rgba[3] == 1.0f); /* N.L = -1 on a flat row: dark */
+  CHECK(fabs(lut_rgba[12] - 1.0) < 1e-6);            /* N.L = 1 on a flat row: lit */
+  CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK);
+  CHECK(lut_rgba[0] == 0.0f && lut_rgba[12] == 1.0f);
+  CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 31) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sss_last_error(NULL), "out_floats = 31") != NULL);
+  CHECK(sss_lut_create_texture(NULL, SSS_LUT_DIFFUSE, &lut, NULL) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK(sss_lut_generation_count(NULL) == 0);
   printf("%d passed, %d failed\n", failures == 0 ? 1 : 0, failures == 0 ? 0 : 1);
   return failures == 0 ? 0 : 1;
 }

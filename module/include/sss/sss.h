@@ -26,6 +26,8 @@
  *   - GL_DRAW_FRAMEBUFFER_BINDING, GL_READ_FRAMEBUFFER_BINDING, GL_RENDERBUFFER_BINDING
  *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
  *   - GL_PIXEL_UNPACK_BUFFER_BINDING
+ *   - GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS (set only
+ *     by sss_lut_create_texture's CPU upload, and always put back, even with SSS_CREATE_NO_STATE_RESTORE)
  *   - GL_VIEWPORT
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
@@ -35,7 +37,7 @@
  *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
  *   - KHR_debug groups are pushed and popped in pairs.
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
- *   values, pixel pack/unpack parameters, buffer bindings other than the unpack buffer, texture
+ *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, texture
  *   parameters of host textures (the module samples through its own sampler objects).
  *   The host must not call sss_apply with transform feedback active or conditional rendering on.
  */
@@ -252,7 +254,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  starts afresh (nothing the failed call did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
 
-/* ---- GL-free kernel API (math layer): usable without any GL context. ---- */
+/* ---- GL-free kernel API (math layer): usable without any GL context. ----
+ * The pre-integrated skin LUTs (sss_lut_*) are declared in <sss/sss_lut.h>, which includes this header. */
 
 /** Fills `samples` taps of the separable kernel of the paper's eq. (1) into out_rgba as
  *  {weight r, weight g, weight b, offset in profile millimetres}: the centre tap first, then the
