@@ -1,6 +1,8 @@
 #include "analytic_scenes.hpp"
+#include "math/preintegrated_lut.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -122,12 +124,13 @@ Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int
   return s;
 }
 
-Scene make_sphere_scene(int width, int height) {
+static Scene sphere_scene(int width, int height, bool preintegrated) {
   PinholeCamera camera;
   Scene s = blank_scene("sphere", width, height, &camera);
   const Vec3 centre{0, 0, -kSphereDistance};
   const Vec3 light = normalize(Vec3{0.8, 0.45, 0.4});  // view space, towards the light
   const double albedo[3] = {0.85, 0.6, 0.5}, ambient = 0.03, backdrop = 0.3;
+  const double curvature = 1.0 / (kSphereRadius * 1000.0);  // 1/mm (the scene is in metres)
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {
       const Vec3 ray = camera.ray(i, j);  // z = -1: the hit's distance is its parameter
@@ -139,11 +142,17 @@ Scene make_sphere_scene(int width, int height) {
       }
       const double hit = (-b - std::sqrt(disc)) / (2 * a);
       const Vec3 normal = (ray * hit - centre) * (1.0 / kSphereRadius);
-      const double e = std::max(0.0, dot(normalize(normal), light)) + ambient;
-      set_pixel(s, camera, i, j, albedo[0] * e, albedo[1] * e, albedo[2] * e, true, hit);
+      const double ndotl = dot(normalize(normal), light);
+      std::array<double, 3> e{std::max(0.0, ndotl), std::max(0.0, ndotl), std::max(0.0, ndotl)};
+      if (preintegrated) e = sss::math::preintegrated_diffuse(sss::math::deon_skin_profile(), ndotl, curvature);
+      set_pixel(s, camera, i, j, albedo[0] * (e[0] + ambient), albedo[1] * (e[1] + ambient),
+                albedo[2] * (e[2] + ambient), true, hit);
     }
   return s;
 }
+
+Scene make_sphere_scene(int width, int height) { return sphere_scene(width, height, false); }
+Scene make_preintegrated_sphere_scene(int width, int height) { return sphere_scene(width, height, true); }
 
 Scene make_depth_step_scene(int width, int height) {
   PinholeCamera camera;

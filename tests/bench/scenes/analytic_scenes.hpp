@@ -11,6 +11,8 @@ namespace sss_bench::detail {
 Scene make_dot_scene(int width, int height);
 Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int width, int height);
 Scene make_sphere_scene(int width, int height);
+// The sphere with its Lambert term replaced by eq. (1.1) at the sphere's curvature (per channel).
+Scene make_preintegrated_sphere_scene(int width, int height);
 Scene make_depth_step_scene(int width, int height);
 Scene make_empty_scene(int width, int height);
 

@@ -24,9 +24,13 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <sstream>
+
 #include "gl_state_guard.hpp"
 #include "head_asset.hpp"
 #include "host_gl.hpp"
+#include "math/preintegrated_lut.hpp"
 
 using namespace host_gl;
 
@@ -126,6 +130,83 @@ void main() {
   o_distance = vec4(v_distance, 0.0, 0.0, 0.0);
 }
 )";
+
+// The pre-integrated variant (HeadView::preintegrated): the same inputs, the include's functions
+// (prepended at run time from SSS_PREINTEGRATED_GLSL), the LUTs on units 4 and 5. The key's shadow
+// is a box PCF of (2·u_pcf_radius + 1)² taps u_pcf_step texels apart, whose penumbra on a surface
+// facing the light is about u_pcf_width world units; the include stretches it by the incidence.
+const char* const kPreintegratedFragment = R"(
+in vec3 v_world;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_texcoord;
+in float v_distance;
+layout(location = 0) out vec4 o_irradiance;
+layout(location = 1) out vec4 o_distance;
+uniform sampler2D u_albedo;
+uniform sampler2D u_normal_map;
+uniform sampler2DShadow u_shadow_map;
+uniform sampler2D u_diffuse_lut;
+uniform sampler2D u_shadow_lut;
+uniform vec2 u_curvature_range;
+uniform vec2 u_penumbra_range;
+uniform float u_world_units_per_mm;
+uniform mat4 u_light_matrix;
+uniform float u_normal_offset;
+uniform float u_depth_bias;
+uniform float u_green_sign;
+uniform int u_pcf_radius;
+uniform float u_pcf_step;
+uniform float u_pcf_width;
+uniform vec3 u_normal_blend;
+uniform vec3 u_key_direction;
+uniform vec3 u_key_colour;
+uniform vec3 u_fill_direction;
+uniform vec3 u_fill_colour;
+uniform vec3 u_ambient;
+void main() {
+  vec3 n = normalize(v_normal);
+  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
+  vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
+  vec3 m = texture(u_normal_map, v_texcoord).xyz * 2.0 - 1.0;
+  m.y *= u_green_sign;
+  vec3 normal = normalize(t * m.x + b * m.y + n * max(m.z, 1e-3));
+
+  vec4 light = u_light_matrix * vec4(v_world + n * u_normal_offset, 1.0);
+  vec3 s = light.xyz / light.w * 0.5 + 0.5;
+  vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
+  float lit = 0.0, taps = 0.0;
+  for (int y = -u_pcf_radius; y <= u_pcf_radius; ++y) {
+    for (int x = -u_pcf_radius; x <= u_pcf_radius; ++x) {
+      vec2 at = s.xy + vec2(float(x), float(y)) * u_pcf_step * texel;
+      lit += texture(u_shadow_map, vec3(at, s.z - u_depth_bias));
+      taps += 1.0;
+    }
+  }
+  float shadow = lit / taps;
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) shadow = 1.0;
+
+  vec3 nr, ng, nb;
+  sss_skin_normals(normal, n, u_normal_blend, nr, ng, nb);
+  float k = sss_curvature_per_mm(n, v_world, u_world_units_per_mm);
+  vec3 key = sss_skin_diffuse(u_diffuse_lut, u_curvature_range, k, sss_skin_ndotl(nr, ng, nb, u_key_direction));
+  vec3 key_shadow = sss_skin_shadow(u_shadow_lut, u_penumbra_range, shadow,
+                                    sss_penumbra_width(u_pcf_width, n, u_key_direction));
+  vec3 fill = sss_skin_diffuse(u_diffuse_lut, u_curvature_range, k, sss_skin_ndotl(nr, ng, nb, u_fill_direction));
+  vec3 irradiance_in = u_key_colour * key * key_shadow + u_fill_colour * fill + u_ambient;
+  vec3 albedo = texture(u_albedo, v_texcoord).rgb;
+  o_irradiance = vec4(albedo * irradiance_in, 1.0);
+  o_distance = vec4(v_distance, 0.0, 0.0, 0.0);
+}
+)";
+
+std::string preintegrated_fragment_source() {
+  std::ifstream file(SSS_PREINTEGRATED_GLSL);
+  if (!file) throw std::runtime_error(std::string("head scene: cannot read ") + SSS_PREINTEGRATED_GLSL);
+  std::stringstream text;
+  text << file.rdbuf();
+  return "#version 330 core\n" + text.str() + kPreintegratedFragment;
+}
 
 // Every GL object of one make_scene call, deleted when it goes out of scope (before the state
 // guard, declared earlier, restores the caller's bindings).
@@ -365,8 +446,43 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, shadow_map);
     glActiveTexture(GL_TEXTURE0);
-    const GLuint program = build_program(objects, kSceneVertex, kSceneFragment, "scene");
+    const std::string preintegrated_source = view.preintegrated ? preintegrated_fragment_source() : std::string();
+    const GLuint program = build_program(objects, kSceneVertex,
+                                         view.preintegrated ? preintegrated_source.c_str() : kSceneFragment, "scene");
     glUseProgram(program);
+    if (view.preintegrated) {
+      // The library's default LUTs (256², curvature 0..1/mm, penumbra 1..32 mm), linear filtering.
+      const sss::math::RadialProfile& profile = sss::math::deon_skin_profile();
+      sss::math::DiffuseLutDesc dd;
+      sss::math::ShadowLutDesc sd;
+      std::vector<float> diffuse(4u * dd.width * dd.height), shadow(4u * sd.width * sd.height);
+      sss::math::generate_diffuse_lut(profile, dd, 0, diffuse.data());
+      sss::math::generate_shadow_lut(profile, sd, 0, shadow.data());
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+      for (int unit : {4, 5}) {
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+        const std::vector<float>& data = unit == 4 ? diffuse : shadow;
+        make_texture(objects, GL_RGBA32F, dd.width, dd.height, GL_RGBA, GL_FLOAT, data.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      }
+      glActiveTexture(GL_TEXTURE0);
+      glUniform1i(glGetUniformLocation(program, "u_diffuse_lut"), 4);
+      glUniform1i(glGetUniformLocation(program, "u_shadow_lut"), 5);
+      glUniform2f(glGetUniformLocation(program, "u_curvature_range"), static_cast<float>(dd.curvature_min_per_mm),
+                  static_cast<float>(dd.curvature_max_per_mm));
+      glUniform2f(glGetUniformLocation(program, "u_penumbra_range"), static_cast<float>(sd.penumbra_min),
+                  static_cast<float>(sd.penumbra_max));
+      glUniform1f(glGetUniformLocation(program, "u_world_units_per_mm"), static_cast<float>(sd.world_units_per_mm));
+      // 9x9 taps 4 texels apart: a box ~36 texels wide (~7 mm), whose ramp holds the scattering.
+      const int pcf_radius = 4;
+      const double pcf_step = 4.0;
+      glUniform1i(glGetUniformLocation(program, "u_pcf_radius"), pcf_radius);
+      glUniform1f(glGetUniformLocation(program, "u_pcf_step"), static_cast<float>(pcf_step));
+      glUniform1f(glGetUniformLocation(program, "u_pcf_width"), static_cast<float>((2 * pcf_radius + 1) * pcf_step * texel));
+      const float blend[3] = {1.0f, 0.222f, 0.134f};  // sss_blur_normals' factors for skin
+      set_vec3(program, "u_normal_blend", blend);
+    }
     glUniform1i(glGetUniformLocation(program, "u_albedo"), 0);
     glUniform1i(glGetUniformLocation(program, "u_normal_map"), 1);
     glUniform1i(glGetUniformLocation(program, "u_shadow_map"), 2);

@@ -17,6 +17,10 @@ struct HeadView {
   double pitch_degrees = 0;    // camera elevation
   double near_plane = 0.1, far_plane = 10;
   double backdrop_distance = 2;  // view distance (-z_view) of the backdrop plane
+  // Shade the skin with pre-integrated scattering (docs/preintegrated.md) instead of Lambert: the
+  // LUTs of the math layer, integration/preintegrated/sss_preintegrated.glsl, curvature from
+  // derivatives, the geometric normal as the blurred one, and a wide box PCF on the key's shadow.
+  bool preintegrated = false;
 };
 
 // How the normal map's green channel is read (see head_scene.cpp): +1 as stored, -1 inverted.

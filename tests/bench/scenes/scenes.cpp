@@ -65,4 +65,16 @@ Scene make_scene(const std::string& name, int width, int height) {
   throw std::invalid_argument("make_scene: unknown scene '" + name + "'");
 }
 
+Scene make_preintegrated_scene(const std::string& name, int width, int height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw std::invalid_argument("make_preintegrated_scene: bad size " + std::to_string(width) + "x" + std::to_string(height));
+  if (name == "sphere") return detail::make_preintegrated_sphere_scene(width, height);
+  if (scene_needs_gl(name)) {
+    detail::HeadView view = head_view(name);
+    view.preintegrated = true;
+    return detail::render_head_scene(name, width, height, view);
+  }
+  throw std::invalid_argument("make_preintegrated_scene: no pre-integrated variant of '" + name + "'");
+}
+
 }  // namespace sss_bench

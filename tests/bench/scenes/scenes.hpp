@@ -36,6 +36,12 @@ bool scene_needs_gl(const std::string& name);
 // or a bad size, std::runtime_error when the head asset cannot be loaded or GL fails.
 Scene make_scene(const std::string& name, int width, int height);
 
+// The same scene shaded with pre-integrated skin scattering instead of Lambert (docs/preintegrated.md):
+// translucent pixels already hold the scattered light (compare them with the exact reference of
+// make_scene's irradiance). For "sphere" (CPU: eq. 1.1 evaluated at the sphere's curvature) and the
+// head scenes (GL, as make_scene); throws std::invalid_argument for the others.
+Scene make_preintegrated_scene(const std::string& name, int width, int height);
+
 // The directory holding lee-perry-smith-head/: the environment variable SSS_ASSET_DIR when set and
 // not empty, else the build's default (the CMake cache variable SSS_ASSET_DIR).
 std::string asset_dir();
