@@ -8,9 +8,12 @@ cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh test
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build/release --parallel "$(nproc)" --target sss_bench
+cmake --build build/release --parallel "$(nproc)" --target sss_bench sss_bench_preintegrated
 rm -rf docs/benchmarks
 mkdir -p docs/benchmarks
 build/release/tests/bench/sss_bench --full --out docs/benchmarks --doc docs/benchmarks.md "$@"
+# The pre-integrated path: LUT generation time and its error against the same exact reference.
+build/release/tests/bench/sss_bench_preintegrated --size 320x180 --repetitions 5 --out docs/benchmarks \
+  --doc docs/benchmarks/preintegrated.md
 # The gnuplot inputs are intermediate files; the PNGs and tables stay.
 rm -f docs/benchmarks/*.dat docs/benchmarks/*.gp

@@ -12,44 +12,20 @@
 // --mesh measures the texel size from the mesh instead: the median over triangles of
 // sqrt(world area / texel area), in mm (glTF is in metres).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "math/radial_profile.hpp"
+#include "math/normal_blur.hpp"
 #include "png.hpp"
 #if defined(SSS_TOOLS_HAVE_GLTF)
 #include "gltf_mesh.hpp"
 #endif
 
 namespace {
-
-// One separable Gaussian pass along x (horizontal) or y, clamped at the edges.
-void gaussian_pass(const std::vector<float>& in, std::vector<float>& out, int w, int h, double sigma_texels,
-                   bool horizontal) {
-  const int radius = std::max(1, static_cast<int>(std::ceil(4.0 * sigma_texels)));
-  std::vector<double> k(static_cast<std::size_t>(2 * radius + 1));
-  double sum = 0.0;
-  for (int i = -radius; i <= radius; ++i) {
-    k[static_cast<std::size_t>(i + radius)] = std::exp(-0.5 * i * i / (sigma_texels * sigma_texels));
-    sum += k[static_cast<std::size_t>(i + radius)];
-  }
-  for (double& v : k) v /= sum;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      double acc[3] = {0, 0, 0};
-      for (int i = -radius; i <= radius; ++i) {
-        const int sx = horizontal ? std::clamp(x + i, 0, w - 1) : x;
-        const int sy = horizontal ? y : std::clamp(y + i, 0, h - 1);
-        const float* p = &in[3 * static_cast<std::size_t>(sy * w + sx)];
-        for (int c = 0; c < 3; ++c) acc[c] += k[static_cast<std::size_t>(i + radius)] * p[c];
-      }
-      for (int c = 0; c < 3; ++c) out[3 * static_cast<std::size_t>(y * w + x) + c] = static_cast<float>(acc[c]);
-    }
-  }
-}
 
 #if defined(SSS_TOOLS_HAVE_GLTF)
 double texel_mm_from_mesh(const std::string& path, int w, int h) {
@@ -72,15 +48,6 @@ double texel_mm_from_mesh(const std::string& path, int w, int h) {
   return ratios[ratios.size() / 2];
 }
 #endif
-
-double rms_radius_sq(const std::vector<sss::math::GaussianTerm>& terms, std::size_t c) {
-  double s = 0.0, total = 0.0;
-  for (const auto& t : terms) {
-    s += t.weight[c] * 2.0 * t.variance_mm2;  // a 2D Gaussian's mean r² is 2v
-    total += t.weight[c];
-  }
-  return total > 0.0 ? s / total : 0.0;
-}
 
 }  // namespace
 
@@ -127,31 +94,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sss_blur_normals: texel size %g mm: must be in (0, 1000)\n", texel_mm);
     return 2;
   }
-  const auto* terms = sss::math::deon_skin_profile().gaussian_terms();
-  std::vector<float> normals(rgb.size()), sum(rgb.size(), 0.0f), tmp(rgb.size()), blurred(rgb.size());
-  for (std::size_t i = 0; i < rgb.size(); ++i) normals[i] = rgb[i] / 255.0f * 2.0f - 1.0f;
-  double weight_total = 0.0;
-  for (const auto& t : *terms) weight_total += t.weight[channel];
-  for (const auto& t : *terms) {
-    const double wgt = t.weight[channel] / weight_total;
-    if (wgt == 0.0) continue;
-    const double sigma = std::sqrt(t.variance_mm2) / texel_mm;
-    if (sigma < 0.05) {  // far below a texel: the identity
-      for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += static_cast<float>(wgt) * normals[i];
-      continue;
-    }
-    gaussian_pass(normals, tmp, w, h, sigma, true);
-    gaussian_pass(tmp, blurred, w, h, sigma, false);
-    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += static_cast<float>(wgt) * blurred[i];
-  }
-  std::vector<unsigned char> encoded(rgb.size());
-  for (std::size_t p = 0; p < rgb.size(); p += 3) {
-    const double len = std::sqrt(sum[p] * sum[p] + sum[p + 1] * sum[p + 1] + sum[p + 2] * sum[p + 2]);
-    for (int c = 0; c < 3; ++c) {
-      const double n = len > 1e-12 ? sum[p + static_cast<std::size_t>(c)] / len : (c == 2 ? 1.0 : 0.0);
-      encoded[p + static_cast<std::size_t>(c)] = static_cast<unsigned char>(std::lround((n * 0.5 + 0.5) * 255.0));
-    }
-  }
+  const sss::math::RadialProfile& profile = sss::math::deon_skin_profile();
+  const std::vector<unsigned char> encoded =
+      sss::math::blur_normal_map(rgb, w, h, texel_mm, profile, static_cast<int>(channel));
   if (!sss_tools::write_png(out, w, h, encoded)) {
     std::fprintf(stderr, "sss_blur_normals: cannot write %s\n", out.c_str());
     return 1;
@@ -173,9 +118,8 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  const double base = rms_radius_sq(*terms, channel);
+  const std::array<double, 3> blend = sss::math::normal_blend_factors(profile, static_cast<int>(channel));
   std::printf("wrote %s (%dx%d, texel %.4f mm, profile channel %c)\n", out.c_str(), w, h, texel_mm, "rgb"[channel]);
-  std::printf("blend for sss_skin_normals: vec3(%.3f, %.3f, %.3f)\n", std::min(1.0, std::sqrt(rms_radius_sq(*terms, 0) / base)),
-              std::min(1.0, std::sqrt(rms_radius_sq(*terms, 1) / base)), std::min(1.0, std::sqrt(rms_radius_sq(*terms, 2) / base)));
+  std::printf("blend for sss_skin_normals: vec3(%.3f, %.3f, %.3f)\n", blend[0], blend[1], blend[2]);
   return 0;
 }

@@ -135,7 +135,10 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "brute-force N×N surface convolution on the GPU (tests/bench/exact_method.cpp).\n"
       << "- Scenes: tests/bench/scenes (dot, shadow edges at 0/30/45°, sphere, depth step, the head scan at three "
          "distances, an empty frame). The head is \"Infinite, 3D Head Scan\" by Lee Perry-Smith, licensed under a "
-         "Creative Commons Attribution 3.0 Unported License, based on a work at www.triplegangers.com.\n\n";
+         "Creative Commons Attribution 3.0 Unported License, based on a work at www.triplegangers.com.\n"
+      << "- The zero-pass alternative, pre-integrated skin shading (LUT generation time, and its error against the "
+         "same reference): [benchmarks/preintegrated.md](benchmarks/preintegrated.md), written by "
+         "`sss_bench_preintegrated` in the same script.\n\n";
 
   // The head close-up table the issue asks for.
   out << "## Head close-up at " << width << "×" << height << "\n\n"
