@@ -65,7 +65,9 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   if (!create_frame_targets(&small, report->small_width, report->small_height)) return false;
   const CameraMatrices m = camera_matrices(camera, renderer->scene->all, small.width, small.height);
   FrameResult frame;
-  const bool ok = render_frame(renderer, m, controls, &small, false, &frame);
+  SssControls small_controls = controls;
+  small_controls.decision_height = o.height;  // choose the shading as the full frame does
+  const bool ok = render_frame(renderer, m, small_controls, &small, false, &frame);
   SmallFrame data;
   if (ok) data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm);
   destroy_frame_targets(&small);

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "preintegrated_glsl.hpp"  // kPreintegratedInclude, generated from integration/preintegrated/
+
 namespace demo {
 
 namespace {
@@ -29,7 +31,9 @@ void main() {
 }
 )";
 
-const char *const kFragmentShader = R"(#version 330 core
+// The body after "#version": the pre-integrated variant defines SSS_PREINTEGRATED and prepends
+// integration/preintegrated/sss_preintegrated.glsl (embedded at build time: SSS_DEMO_PREINTEGRATED_GLSL).
+const char *const kFragmentShader = R"(
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;
@@ -54,6 +58,14 @@ uniform float u_green_sign;
 uniform float u_sss_strength;
 uniform float u_specular_intensity;
 uniform float u_roughness;
+#ifdef SSS_PREINTEGRATED
+uniform sampler2D u_diffuse_lut;     // sss_lut_create_texture(SSS_LUT_DIFFUSE)
+uniform sampler2D u_shadow_lut;      // sss_lut_create_texture(SSS_LUT_SHADOW), box filter
+uniform vec2 u_curvature_range;      // 1/mm
+uniform vec2 u_penumbra_range;       // world units
+uniform float u_world_units_per_mm;
+uniform float u_shadow_texel_world[2];
+#endif
 
 layout(location = 0) out vec4 o_diffuse;
 layout(location = 1) out vec4 o_specular;
@@ -110,7 +122,22 @@ void main() {
       shadow = i == 0 ? shadow_factor(u_shadow_map0, u_light_matrix[0], u_shadow_texel[0], p)
                       : shadow_factor(u_shadow_map1, u_light_matrix[1], u_shadow_texel[1], p);
     }
+#ifdef SSS_PREINTEGRATED
+    if (u_sss_strength > 0.0) {
+      // Pre-integrated skin (docs/preintegrated.md): the diffuse LUT at the curvature from
+      // derivatives, and the shadow LUT on the PCF value (3x3 taps of 2x2 filtered comparisons: a
+      // penumbra of about 3 texels). One normal for the three channels (no blurred normal map here).
+      float k = sss_curvature_per_mm(geometric, v_position, u_world_units_per_mm);
+      vec3 d = sss_skin_diffuse(u_diffuse_lut, u_curvature_range, k, vec3(dot(n, l)));
+      vec3 s = sss_skin_shadow(u_shadow_lut, u_penumbra_range, shadow,
+                               sss_penumbra_width(3.0 * u_shadow_texel_world[i], geometric, l));
+      irradiance += u_light_irradiance[i] * d * s;
+    } else {
+      irradiance += u_light_irradiance[i] * (max(dot(n, l), 0.0) * shadow);
+    }
+#else
     irradiance += u_light_irradiance[i] * (max(dot(n, l), 0.0) * shadow);
+#endif
     specular += u_light_irradiance[i] * (shadow * ksk_specular(n, l, v, u_roughness, u_specular_intensity));
     // Transmittance (translucency through thin parts: ears, nostrils) goes here, from the same
     // shadow maps read as plain depth (see shadow_pass.hpp): comes with its own issue.
@@ -155,19 +182,29 @@ Uniforms locate(GLuint p) {
 }  // namespace
 
 bool create_lighting_pass(LightingPass *pass) {
-  pass->program = build_program("lighting", kVertexShader, kFragmentShader);
+  const std::string plain = std::string("#version 330 core\n") + kFragmentShader;
+  const std::string pre = std::string("#version 330 core\n#define SSS_PREINTEGRATED 1\n") +
+                          kPreintegratedInclude + kFragmentShader;
+  pass->program = build_program("lighting", kVertexShader, plain.c_str());
   if (pass->program == 0) return false;
-  glUseProgram(pass->program);
-  glUniform1i(glGetUniformLocation(pass->program, "u_albedo"), 0);
-  glUniform1i(glGetUniformLocation(pass->program, "u_normal_map"), 1);
-  glUniform1i(glGetUniformLocation(pass->program, "u_shadow_map0"), 2);
-  glUniform1i(glGetUniformLocation(pass->program, "u_shadow_map1"), 3);
+  pass->preintegrated_program = build_program("lighting (pre-integrated)", kVertexShader, pre.c_str());
+  if (pass->preintegrated_program == 0) return false;
+  for (GLuint program : {pass->program, pass->preintegrated_program}) {
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "u_albedo"), 0);
+    glUniform1i(glGetUniformLocation(program, "u_normal_map"), 1);
+    glUniform1i(glGetUniformLocation(program, "u_shadow_map0"), 2);
+    glUniform1i(glGetUniformLocation(program, "u_shadow_map1"), 3);
+    glUniform1i(glGetUniformLocation(program, "u_diffuse_lut"), 4);
+    glUniform1i(glGetUniformLocation(program, "u_shadow_lut"), 5);
+  }
   glUseProgram(0);
   return check_gl("lighting pass setup");
 }
 
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
-                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera) {
+                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
+                       const PreintegratedLuts *luts) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.lighting_framebuffer);
   glViewport(0, 0, targets.width, targets.height);
   // Background: alpha 0 (no scattering), no specular; depth 1, stencil 0.
@@ -189,8 +226,22 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 
-  const Uniforms u = locate(pass.program);
-  glUseProgram(pass.program);
+  const GLuint program = luts != nullptr ? pass.preintegrated_program : pass.program;
+  const Uniforms u = locate(program);
+  glUseProgram(program);
+  if (luts != nullptr) {
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, luts->diffuse);
+    glActiveTexture(GL_TEXTURE5);
+    glBindTexture(GL_TEXTURE_2D, luts->shadow);
+    glUniform2f(glGetUniformLocation(program, "u_curvature_range"), luts->curvature_range[0], luts->curvature_range[1]);
+    glUniform2f(glGetUniformLocation(program, "u_penumbra_range"), luts->penumbra_range[0], luts->penumbra_range[1]);
+    glUniform1f(glGetUniformLocation(program, "u_world_units_per_mm"), scene.world_units_per_mm);
+    for (int i = 0; i < shadows.light_count; ++i) {
+      const std::string name = "u_shadow_texel_world[" + std::to_string(i) + "]";
+      glUniform1f(glGetUniformLocation(program, name.c_str()), shadows.maps[static_cast<size_t>(i)].texel_world);
+    }
+  }
   glUniformMatrix4fv(u.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection));
   glUniform3fv(u.eye, 1, glm::value_ptr(camera.eye));
   glUniform3fv(u.sky_ambient, 1, glm::value_ptr(scene.sky_ambient));
@@ -233,7 +284,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     draw_primitive(p);
   }
   glBindVertexArray(0);
-  for (GLuint unit = 0; unit < static_cast<GLuint>(2 + kMaxLights); ++unit) {
+  for (GLuint unit = 0; unit < static_cast<GLuint>(6); ++unit) {  // materials, shadow maps, LUTs
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, 0);
     glBindSampler(unit, 0);
@@ -247,6 +298,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
 
 void destroy_lighting_pass(LightingPass *pass) {
   glDeleteProgram(pass->program);
+  glDeleteProgram(pass->preintegrated_program);
   *pass = LightingPass{};
 }
 

@@ -19,11 +19,21 @@ namespace demo {
 
 struct LightingPass {
   GLuint program = 0;
+  GLuint preintegrated_program = 0;  // skin shaded with the pre-integrated LUTs (no SSS pass after)
+};
+
+// The library's pre-integrated LUTs (sss_lut_create_texture) and the ranges they were made with.
+struct PreintegratedLuts {
+  GLuint diffuse = 0, shadow = 0;
+  float curvature_range[2] = {0.0f, 1.0f};  // 1/mm
+  float penumbra_range[2] = {0.0f, 1.0f};   // world units
 };
 
 bool create_lighting_pass(LightingPass *pass);
+// luts != nullptr: translucent materials are shaded with pre-integrated scattering.
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
-                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera);
+                       const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
+                       const PreintegratedLuts *luts = nullptr);
 void destroy_lighting_pass(LightingPass *pass);
 
 }  // namespace demo

@@ -16,6 +16,7 @@ SssControls controls_from_options(const Options &o) {
   if (o.samples != 0) c.samples = o.samples;
   c.width_scale = o.width_scale;
   c.follow_surface = o.follow_surface;
+  c.shading = o.shading;
   c.use_stencil = o.use_stencil;
   return c;
 }

@@ -77,6 +77,8 @@ void print_usage(const char *program) {
       "  --width-scale F     multiply the physical SSS width (default 1)\n"
       "  --no-follow-surface turn the follow-surface depth test off\n"
       "  --no-stencil        mask by the diffuse alpha alone instead of the stencil\n"
+      "  --shading NAME      screen (the library's filter, default) | preintegrated (LUTs in the lighting\n"
+      "                      pass, no SSS pass) | auto (pre-integrated when a mm of skin is < 0.5 pixel)\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
@@ -93,7 +95,7 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
-    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kHelp
+    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kShading, kHelp
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -114,6 +116,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"view", required_argument, nullptr, kView},
       {"frames", required_argument, nullptr, kFrames},
       {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
+      {"shading", required_argument, nullptr, kShading},
       {"help", no_argument, nullptr, kHelp},
       {nullptr, 0, nullptr, 0}};
 
@@ -161,6 +164,12 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kNoFollow: o->follow_surface = false; break;
       case kNoStencil: o->use_stencil = false; break;
+      case kShading: {
+        const std::string v = optarg;
+        o->shading = v == "screen" ? 0 : v == "preintegrated" ? 1 : v == "auto" ? 2 : -1;
+        ok = o->shading >= 0 || fail("--shading wants screen, preintegrated or auto", optarg);
+        break;
+      }
       case kExposure:
         ok = (parse_float(optarg, &o->exposure) && o->exposure > 0.0f && o->exposure <= 1000.0f) ||
              fail("--exposure wants a number in (0, 1000]", optarg);

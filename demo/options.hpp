@@ -24,6 +24,7 @@ struct Options {
   bool use_stencil = true;
   bool follow_surface = true;
   float width_scale = 1.0f;      // multiplies the physical width
+  int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
   float exposure = 1.0f;
 
   float heat_scale = 0.05f;      // linear error at the top of the heat map's ramp

@@ -138,6 +138,16 @@ void draw_panel(WindowState *s) {
     }
   }
   if (ImGui::CollapsingHeader("Subsurface scattering", ImGuiTreeNodeFlags_DefaultOpen)) sss_section(s);
+  if (ImGui::CollapsingHeader("Pre-integrated skin (LUTs, no SSS pass)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::RadioButton("screen-space filter", &s->controls.shading, kShadingScreenSpace);
+    ImGui::SameLine();
+    ImGui::RadioButton("pre-integrated", &s->controls.shading, kShadingPreintegrated);
+    ImGui::SameLine();
+    ImGui::RadioButton("automatic", &s->controls.shading, kShadingAutomatic);
+    ImGui::TextDisabled("1 mm = %.2f px at the subject; automatic switches below %.2f", static_cast<double>(s->pixels_per_mm),
+                        static_cast<double>(kAutoPreintegratedPixelsPerMm));
+    ImGui::Text("this frame: %s", s->preintegrated ? "pre-integrated (diffuse and shadow LUTs)" : "screen-space filter");
+  }
   if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, MSAA, translucency")) {
     // The marked place for the controls of later issues; nothing here is wired to anything yet.
     ImGui::TextDisabled("kernel family and measured materials");

@@ -1,15 +1,67 @@
 #include "renderer.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "host_gl_util.hpp"
+#include "sss/sss_lut.h"
 
 namespace demo {
+
+namespace {
+
+// The library's default LUTs, the penumbra range scaled to the scene's units (1..32 mm).
+bool create_luts(Renderer *r) {
+  sss_lut_desc d;
+  sss_lut_default_desc(&d);
+  d.world_units_per_mm = r->scene->world_units_per_mm;
+  d.penumbra_min = 1.0f * d.world_units_per_mm;
+  d.penumbra_max = 32.0f * d.world_units_per_mm;
+  uint32_t diffuse = 0, shadow = 0;
+  if (sss_lut_create_texture(r->sss.context, SSS_LUT_DIFFUSE, &d, &diffuse) != SSS_OK ||
+      sss_lut_create_texture(r->sss.context, SSS_LUT_SHADOW, &d, &shadow) != SSS_OK) {
+    std::fprintf(stderr, "sss_lut_create_texture: %s\n", sss_last_error(r->sss.context));
+    return false;
+  }
+  r->luts.diffuse = diffuse;
+  r->luts.shadow = shadow;
+  r->luts.curvature_range[0] = d.curvature_min;
+  r->luts.curvature_range[1] = d.curvature_max;
+  r->luts.penumbra_range[0] = d.penumbra_min;
+  r->luts.penumbra_range[1] = d.penumbra_max;
+  return true;
+}
+
+// targets.diffuse into targets.after (same size and format) through two temporary framebuffers.
+void copy_diffuse_to_after(const FrameTargets &targets) {
+  GLuint framebuffers[2] = {0, 0};
+  glGenFramebuffers(2, framebuffers);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[0]);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, targets.diffuse, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers[1]);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, targets.after, 0);
+  glBlitFramebuffer(0, 0, targets.width, targets.height, 0, 0, targets.width, targets.height, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(2, framebuffers);
+}
+
+// Pixels per millimetre at the scene's centre: the projection's vertical scale over the distance.
+float pixels_per_mm(const DemoScene &scene, const CameraMatrices &camera, int height) {
+  const float distance = glm::length(scene.subject.centre() - camera.eye);
+  if (!(distance > 0.0f)) return 0.0f;
+  return 0.5f * static_cast<float>(height) * camera.projection[1][1] * scene.world_units_per_mm / distance;
+}
+
+}  // namespace
 
 bool create_renderer(Renderer *r, const DemoScene &scene, sss_get_proc_address_fn get_proc_address, void *user) {
   r->scene = &scene;
   return create_gpu_scene(scene, &r->gpu) && create_shadow_pass(&r->shadows, scene) &&
          create_lighting_pass(&r->lighting) && create_pixel_count_pass(&r->counter) &&
          create_composite_pass(&r->composite) && create_sss_stage(&r->sss, get_proc_address, user) &&
-         check_gl("renderer setup");
+         create_luts(r) && check_gl("renderer setup");
 }
 
 void destroy_renderer(Renderer *r) {
@@ -37,11 +89,28 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
 
   run_shadow_pass(r->shadows, *r->scene, r->gpu);
   lap(&t.shadow_ms);
-  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera);
+  result->pixels_per_mm =
+      pixels_per_mm(*r->scene, camera, controls.decision_height > 0 ? controls.decision_height : targets->height);
+  result->preintegrated = controls.enabled && (controls.shading == kShadingPreintegrated ||
+                                               (controls.shading == kShadingAutomatic &&
+                                                result->pixels_per_mm < kAutoPreintegratedPixelsPerMm));
+  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera,
+                    result->preintegrated ? &r->luts : nullptr);
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
+  if (result->preintegrated) {
+    // The frame is done (pre-integrated skin needs no pass). For the views that compare, the
+    // result goes where the library's output would ("after") and a Lambert lighting pass refills
+    // "before"; untimed: a renderer using pre-integrated shading would not draw it.
+    copy_diffuse_to_after(*targets);
+    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, nullptr);
+    result->sss_ran = true;
+    double untimed = 0.0;
+    lap(&untimed);
+    if (!check_gl("the pre-integrated frame's comparison pass")) return false;
+  }
 
-  if (controls.enabled) {
+  if (controls.enabled && !result->preintegrated) {
     if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) ||
         !apply_sss(r->sss, controls, camera.projection, targets->diffuse, targets->depth_stencil, targets->after)) {
       return false;

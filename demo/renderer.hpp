@@ -30,6 +30,7 @@ struct Renderer {
   ShadowPass shadows;
   LightingPass lighting;
   SssStage sss;
+  PreintegratedLuts luts;  // the library's LUTs for pre-integrated shading (owned by sss.context)
   PixelCountPass counter;
   CompositePass composite;
 };
@@ -43,6 +44,8 @@ struct FrameResult {
   PassTimes times;
   PixelCounts counts;
   bool sss_ran = false;  // targets.after holds the library's output
+  bool preintegrated = false;  // the skin was shaded with the pre-integrated LUTs (no SSS pass)
+  float pixels_per_mm = 0.0f;  // a millimetre at the scene's centre, in pixels (the automatic choice)
 };
 
 // Passes 1-3 and the counts into `targets` (count = false skips the counts). Returns false (after

@@ -21,7 +21,19 @@ struct SssControls {
   int samples = SSS_SAMPLES_MEDIUM;
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
+  // How skin scatters: the library's screen-space filter, pre-integrated shading in the lighting
+  // pass (no SSS pass), or automatic: pre-integrated once a millimetre of skin at the scene's centre
+  // covers less than kAutoPreintegratedPixelsPerMm pixels (the filter's kernel then spans about a
+  // pixel and has nothing left to do).
+  int shading = 0;               // kShadingScreenSpace, kShadingPreintegrated, kShadingAutomatic
+  int decision_height = 0;       // automatic: the image height the choice is made for (0: the target's);
+                                 // the heat map's small frame passes the shown frame's, to choose alike
 };
+
+constexpr int kShadingScreenSpace = 0;
+constexpr int kShadingPreintegrated = 1;
+constexpr int kShadingAutomatic = 2;
+constexpr float kAutoPreintegratedPixelsPerMm = 0.5f;
 
 // The library's defaults (sss_default_settings) as controls.
 SssControls default_sss_controls();

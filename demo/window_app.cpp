@@ -138,7 +138,9 @@ class HeatMapper {
     }
     const CameraMatrices m = camera_matrices(s->camera, renderer->scene->all, w, h);
     FrameResult frame;
-    if (!render_frame(renderer, m, s->controls, &small_, false, &frame)) return 0;
+    SssControls controls = s->controls;
+    controls.decision_height = s->height;  // choose the shading as the shown frame does
+    if (!render_frame(renderer, m, controls, &small_, false, &frame)) return 0;
     SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm);
 
     // Collect a finished reference; start one when the camera or size moved on.
@@ -330,6 +332,8 @@ int run_window(const Options &o, const DemoScene &scene) {
     FrameResult frame;
     if (!(ok = render_frame(&renderer, m, s.controls, &targets, true, &frame))) break;
     s.counts = frame.counts;
+    s.preintegrated = frame.preintegrated;
+    s.pixels_per_mm = frame.pixels_per_mm;
     GLuint heat_texture = 0;
     ViewMode mode = s.view;
     if (mode == ViewMode::kHeatMap) {

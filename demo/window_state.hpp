@@ -32,6 +32,8 @@ struct WindowState {
   // What the last frames measured.
   std::deque<PassTimes> times;  // the last kTimeHistory frames
   PixelCounts counts;
+  bool preintegrated = false;  // the last frame shaded skin with the pre-integrated LUTs
+  float pixels_per_mm = 0.0f;  // a millimetre at the subject, in pixels (the automatic choice)
   int width = 0, height = 0;  // framebuffer
   double frame_ms = 0.0;      // wall clock between frames
 
