@@ -35,6 +35,8 @@ struct PresetReport {
   Reference reference;  // rgb dropped after use; size and time kept
   int small_width = 0;
   int small_height = 0;
+  bool preintegrated = false;  // skin shaded with the pre-integrated LUTs (no SSS pass)
+  float pixels_per_mm = 0.0f;
 };
 
 // The ramp with its ends labelled, in the bottom-right corner.
@@ -104,6 +106,8 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
   }
   report->times = median_times(times);
   report->counts = frame.counts;
+  report->preintegrated = frame.preintegrated;
+  report->pixels_per_mm = frame.pixels_per_mm;
 
   GLuint heat_texture = 0;
   const bool heat_ok = make_heat_texture(renderer, o, camera, controls, report, &heat_texture);
@@ -250,6 +254,9 @@ int run_headless(const Options &o, const DemoScene &scene) {
       ok = render_preset(&renderer, o, context, controls, preset, &targets, &report);
       if (!ok) break;
       std::printf("  %-5s  %s\n", preset_name(preset), format_times(report.times).c_str());
+      std::printf("         shading: %s (1 mm = %.2f px at the subject)\n",
+                  report.preintegrated ? "pre-integrated LUTs" : "screen-space filter",
+                  static_cast<double>(report.pixels_per_mm));
       std::printf("         heat map: exact reference at %dx%d in %.2f s; relative RMSE %.4f with SSS, %.4f without;"
                   " touched %llu of %llu marked pixels\n",
                   report.small_width, report.small_height, report.reference.seconds, report.heat.relative_rmse_after,
