@@ -83,6 +83,13 @@ struct GenerationRow {
   double median_ms = 0.0;
 };
 
+// Within 5% either way counts as a tie (the metrics differ in the third digit between runs).
+const char* verdict(double mine, double other) {
+  if (mine < 0.95 * other) return "better than";
+  if (mine <= 1.05 * other || mine - other < 1e-4) return "as good as";
+  return "worse than";
+}
+
 struct ErrorRow {
   std::string scene, method;
   sss_bench::ErrorMetrics metrics;
@@ -234,14 +241,32 @@ int main(int argc, char** argv) {
        << "## Error against the exact 2D reference\n\nAt " << args.width << "x" << args.height
        << ", on the pixels that are skin in both renders; the reference is the exact surface convolution of the "
           "scene's Lambert irradiance (reference.hpp, CPU double). Pre-integrated shading replaces the Lambert "
-          "terms (curvature from derivatives, the geometric normal as the blurred normal, a 9x9 box PCF on the key's "
-          "shadow read through the shadow LUT); it never blurs the albedo or the normal map, which the reference "
+          "terms (curvature from derivatives, per-channel normals between the normal map and its profile-blurred "
+          "copy, a 9x9 box PCF on the key's shadow read through the shadow LUT); it never blurs the albedo or the normal map, which the reference "
           "does.\n\n| scene | method | relative RMSE | p99 abs | max abs | SSIM |\n|---|---|---:|---:|---:|---:|\n";
     for (const auto& e : errors) {
       std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f | %.4f | %.4f |\n", e.scene.c_str(), e.method.c_str(),
                     e.metrics.relative_rmse, e.metrics.p99_abs, e.metrics.max_abs, e.metrics.ssim);
       md << line;
     }
+    // Where it wins and loses, from the rows above (relative RMSE).
+    md << "\n### Where it wins and where it loses (relative RMSE, from the table)\n\n";
+    for (std::size_t i = 0; i + 2 < errors.size(); i += 3) {
+      const double in = errors[i].metrics.relative_rmse, sep = errors[i + 1].metrics.relative_rmse,
+                   pre = errors[i + 2].metrics.relative_rmse;
+      std::snprintf(line, sizeof line, "- %s: pre-integrated %.4f against %.4f for the separable filter and %.4f "
+                    "unscattered: %s the filter, %s doing nothing.\n", errors[i].scene.c_str(), pre, sep, in,
+                    verdict(pre, sep), verdict(pre, in));
+      md << line;
+    }
+    md << "\nWhat decides it: pre-integration is exact only for a smooth sphere lit from one direction (the sphere "
+          "scene, where all three agree because at this size the scattering is sub-pixel), and it never scatters "
+          "light across albedo detail, normal-map creases finer than the blurred map, or shadow edges sharper than "
+          "the PCF penumbra it reinterprets; at the close-up those are what the reference blurs. Where skin is far "
+          "(head-mid, head-far) the reference is nearly the unscattered image: the filter's kernel spans about a "
+          "pixel, and the pre-integrated frame differs by its shading model (the wider PCF shadow and curvature from "
+          "derivatives at silhouettes), not by missing scattering. Its win is cost: no pass at all (the LUT fetches "
+          "are part of the lighting pass), which is why the demo switches to it automatically at a distance.\n";
     md << "\nPictures: `preintegrated-<scene>-<size>.png` (tone-mapped) and `-error.png` (|error| heat map, "
           "full scale 0.1) next to this file. The head scan: " << sss_bench::head_attribution() << "\n";
   }

@@ -183,10 +183,25 @@ std::array<double, 3> shadow_blur(const RadialProfile& profile, const ShadowLutD
 
 }  // namespace
 
-std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const ShadowLutDesc& desc, double s,
-                                           double penumbra_world) {
-  // q: penumbra widths per mm of profile.
-  const double q = desc.world_units_per_mm / std::max(penumbra_world, 1e-300);
+namespace {
+
+// The ends of the rescaling: the blurred P' at the positions of s = 0 and s = 1 for one penumbra
+// width (q penumbra widths per mm). Shared by a LUT row.
+struct ShadowEnds {
+  std::array<double, 3> lo{}, hi{};
+};
+
+ShadowEnds shadow_ends(const RadialProfile& profile, const ShadowLutDesc& desc, double q) {
+  return {shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 0.0), q),
+          shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 1.0), q)};
+}
+
+double shadow_q(const ShadowLutDesc& desc, double penumbra_world) {
+  return desc.world_units_per_mm / std::max(penumbra_world, 1e-300);
+}
+
+std::array<double, 3> shadow_value(const RadialProfile& profile, const ShadowLutDesc& desc, double s, double q,
+                                   const ShadowEnds& ends) {
   const double t0 = shadow_penumbra_position(desc.filter, s);
   const double f = std::clamp(desc.new_penumbra, 1e-6, 1.0);
   if (!(q > 0.0) || !std::isfinite(q)) {
@@ -194,15 +209,22 @@ std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const S
     return {v, v, v};
   }
   const std::array<double, 3> value = shadow_blur(profile, desc, t0, q);
-  const std::array<double, 3> lo = shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 0.0), q);
-  const std::array<double, 3> hi = shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 1.0), q);
   std::array<double, 3> out{};
   for (std::size_t c = 0; c < 3; ++c) {
-    const double span = hi[c] - lo[c];
+    const double span = ends.hi[c] - ends.lo[c];
     // A penumbra so narrow that the whole of it sees the same blurred light: nothing to rescale.
-    out[c] = span > 1e-6 ? saturate((value[c] - lo[c]) / span) : new_penumbra_value(f, t0);
+    out[c] = span > 1e-6 ? saturate((value[c] - ends.lo[c]) / span) : new_penumbra_value(f, t0);
   }
   return out;
+}
+
+}  // namespace
+
+std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const ShadowLutDesc& desc, double s,
+                                           double penumbra_world) {
+  const double q = shadow_q(desc, penumbra_world);
+  const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, desc, q) : ShadowEnds{};
+  return shadow_value(profile, desc, s, q, ends);
 }
 
 double diffuse_lut_ndotl(const DiffuseLutDesc& desc, int x) { return grid(-1.0, 1.0, x, desc.width); }
@@ -229,10 +251,11 @@ void generate_diffuse_lut(const RadialProfile& profile, const DiffuseLutDesc& de
 
 void generate_shadow_lut(const RadialProfile& profile, const ShadowLutDesc& desc, int threads, float* out_rgba) {
   run_rows(desc.height, threads, [&](int y) {
-    const double w = shadow_lut_penumbra(desc, y);
+    const double q = shadow_q(desc, shadow_lut_penumbra(desc, y));
+    const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, desc, q) : ShadowEnds{};  // once a row
     float* row = out_rgba + static_cast<std::size_t>(y) * static_cast<std::size_t>(desc.width) * 4;
     for (int x = 0; x < desc.width; ++x) {
-      const std::array<double, 3> p = preintegrated_shadow(profile, desc, shadow_lut_value(desc, x), w);
+      const std::array<double, 3> p = shadow_value(profile, desc, shadow_lut_value(desc, x), q, ends);
       float* texel = row + static_cast<std::size_t>(x) * 4;
       for (std::size_t c = 0; c < 3; ++c) texel[c] = static_cast<float>(p[c]);
       texel[3] = 1.0f;
