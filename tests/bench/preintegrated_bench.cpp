@@ -5,7 +5,7 @@
 //     scenes: the unscattered input, the separable filter (17 taps, follow-surface) and
 //     pre-integrated shading (make_preintegrated_scene), on the translucent pixels.
 // Writes a Markdown report (--doc) and tone-mapped pictures of the pre-integrated heads (--out).
-//   sss_bench_preintegrated [--backend egl] [--size 320x180] [--repetitions 5] [--scenes a,b]
+//   sss_bench_preintegrated [--backend egl] [--size 320x180] [--repetitions 5] [--lut-size 256] [--scenes a,b]
 //                           [--out DIR] [--doc FILE]
 #include <algorithm>
 #include <chrono>
@@ -42,6 +42,7 @@ double ms_since(Clock::time_point start) {
 struct Args {
   std::string backend = "egl", out = ".", doc;
   int width = 320, height = 180, repetitions = 5;
+  int lut_size = 256;  // the timed LUTs are lut_size²
   std::vector<std::string> scenes = {"sphere", "head-close", "head-mid", "head-far"};
   std::string command_line;
 };
@@ -58,6 +59,8 @@ Args parse(int argc, char** argv) {
       a.out = argv[++i];
     } else if (k == "--doc" && has) {
       a.doc = argv[++i];
+    } else if (k == "--lut-size" && has) {
+      a.lut_size = std::clamp(std::atoi(argv[++i]), 2, 4096);
     } else if (k == "--repetitions" && has) {
       a.repetitions = std::max(1, std::atoi(argv[++i]));
     } else if (k == "--size" && has) {
@@ -70,7 +73,7 @@ Args parse(int argc, char** argv) {
       std::stringstream list(argv[++i]);
       for (std::string s; std::getline(list, s, ',');) a.scenes.push_back(s);
     } else {
-      std::printf("usage: %s [--backend egl|osmesa] [--size WxH] [--repetitions N] [--scenes a,b] [--out DIR] [--doc FILE]\n",
+      std::printf("usage: %s [--backend egl|osmesa] [--size WxH] [--repetitions N] [--lut-size N] [--scenes a,b] [--out DIR] [--doc FILE]\n",
                   argv[0]);
       std::exit(k == "--help" ? 0 : 2);
     }
@@ -123,17 +126,21 @@ int main(int argc, char** argv) {
   // ---- 1. Generation time.
   std::vector<GenerationRow> generation;
   const sss::math::RadialProfile& profile = sss::math::deon_skin_profile();
-  std::vector<float> buffer(4u * 256 * 256);
+  const int n = args.lut_size;
+  std::vector<float> buffer(4u * static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  sss::math::DiffuseLutDesc diffuse_desc;
+  sss::math::ShadowLutDesc shadow_desc;
+  diffuse_desc.width = diffuse_desc.height = shadow_desc.width = shadow_desc.height = n;
   for (int lut = 0; lut < 2; ++lut) {
-    const char* name = lut == 0 ? "diffuse 256²" : "shadow 256² (box)";
+    const std::string name = (lut == 0 ? "diffuse " : "shadow ") + std::to_string(n) + "²" + (lut == 0 ? "" : " (box)");
     for (int threads : {1, static_cast<int>(cores)}) {
       std::vector<double> times;
       for (int r = 0; r < args.repetitions; ++r) {
         const Clock::time_point start = Clock::now();
         if (lut == 0) {
-          sss::math::generate_diffuse_lut(profile, sss::math::DiffuseLutDesc{}, threads, buffer.data());
+          sss::math::generate_diffuse_lut(profile, diffuse_desc, threads, buffer.data());
         } else {
-          sss::math::generate_shadow_lut(profile, sss::math::ShadowLutDesc{}, threads, buffer.data());
+          sss::math::generate_shadow_lut(profile, shadow_desc, threads, buffer.data());
         }
         times.push_back(ms_since(start));
       }
@@ -154,6 +161,7 @@ int main(int argc, char** argv) {
       for (int r = 0; r < args.repetitions; ++r) {
         sss_lut_desc d;
         sss_lut_default_desc(&d);
+        d.width = d.height = n;
         d.format = format;
         d.curvature_max += 1e-4f * static_cast<float>(r + 1);  // new inputs: never a cache hit
         d.penumbra_max += 1e-5f * static_cast<float>(r + 1);
