@@ -8,7 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <sstream>
+
 #include "gl_fixture.hpp"
+#include "host_gl_util.hpp"
 #include "sss/sss_lut.h"
 
 using namespace host_gl;
@@ -147,6 +151,102 @@ TEST_F(LutTexture, BadInputFailsWithNothingLeftBehind) {
   EXPECT_EQ(sss_lut_create_texture(sss_, SSS_LUT_DIFFUSE, &desc, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_lut_create_texture(nullptr, SSS_LUT_DIFFUSE, &desc, &texture), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_lut_generation_count(sss_), 0u);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// The host include (integration/preintegrated/sss_preintegrated.glsl) run on the GL: a pass whose
+// pixel (x, y) asks sss_skin_diffuse / sss_skin_shadow for the values the LUT's texel (x, y) stands
+// for must read that texel back (the include's texel-centre mapping of the endpoint-inclusive grid),
+// per channel; and a value between two texels must read their linear blend.
+TEST_F(LutTexture, HostIncludeReadsTheGridTheFillFunctionsDescribe) {
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  std::ifstream file(SSS_PREINTEGRATED_GLSL);
+  ASSERT_TRUE(file.good()) << SSS_PREINTEGRATED_GLSL;
+  std::stringstream include;
+  include << file.rdbuf();
+  sss_lut_desc desc;
+  sss_lut_default_desc(&desc);
+  desc.width = 17;
+  desc.height = 9;
+  desc.format = SSS_LUT_FORMAT_RGBA32F;
+  desc.flags = SSS_LUT_CPU;  // exactly the fill's values
+  uint32_t diffuse = 0, shadow = 0;
+  ASSERT_EQ(sss_lut_create_texture(sss_, SSS_LUT_DIFFUSE, &desc, &diffuse), SSS_OK);
+  ASSERT_EQ(sss_lut_create_texture(sss_, SSS_LUT_SHADOW, &desc, &shadow), SSS_OK);
+  const std::string fragment = std::string("#version 330 core\n") + include.str() + R"(
+uniform sampler2D u_diffuse;
+uniform sampler2D u_shadow;
+uniform vec2 u_curvature_range;
+uniform vec2 u_penumbra_range;
+uniform float u_half_step;  // 0: texel centres; 0.5: halfway to the next column
+layout(location = 0) out vec4 o_diffuse;
+layout(location = 1) out vec4 o_shadow;
+void main() {
+  vec2 size = vec2(textureSize(u_diffuse, 0));
+  vec2 u = (floor(gl_FragCoord.xy) + vec2(u_half_step, 0.0)) / (size - 1.0);
+  float curvature = mix(u_curvature_range.x, u_curvature_range.y, u.y);
+  float ndotl = u.x * 2.0 - 1.0;
+  o_diffuse = vec4(sss_skin_diffuse(u_diffuse, u_curvature_range, curvature, vec3(ndotl)), 1.0);
+  o_shadow = vec4(sss_skin_shadow(u_shadow, u_penumbra_range, u.x, mix(u_penumbra_range.x, u_penumbra_range.y, u.y)), 1.0);
+}
+)";
+  const GLuint program = host_gl::build_program("include test", host_gl::kFullscreenVertexShader, fragment.c_str());
+  ASSERT_NE(program, 0u);
+  const GLuint out_diffuse = make_texture(GL_RGBA32F, desc.width, desc.height, GL_RGBA, GL_FLOAT, nullptr);
+  const GLuint out_shadow = make_texture(GL_RGBA32F, desc.width, desc.height, GL_RGBA, GL_FLOAT, nullptr);
+  GLuint framebuffer = 0, vao = 0;
+  glGenFramebuffers(1, &framebuffer);
+  glGenVertexArrays(1, &vao);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, out_diffuse, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, out_shadow, 0);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
+  ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+  glViewport(0, 0, desc.width, desc.height);
+  glUseProgram(program);
+  glUniform1i(glGetUniformLocation(program, "u_diffuse"), 0);
+  glUniform1i(glGetUniformLocation(program, "u_shadow"), 1);
+  glUniform2f(glGetUniformLocation(program, "u_curvature_range"), desc.curvature_min, desc.curvature_max);
+  glUniform2f(glGetUniformLocation(program, "u_penumbra_range"), desc.penumbra_min, desc.penumbra_max);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, diffuse);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, shadow);
+  glActiveTexture(GL_TEXTURE0);
+  glBindVertexArray(vao);
+  const std::vector<float> cpu_diffuse = cpu(SSS_LUT_DIFFUSE, desc), cpu_shadow = cpu(SSS_LUT_SHADOW, desc);
+  for (float half : {0.0f, 0.5f}) {
+    glUniform1f(glGetUniformLocation(program, "u_half_step"), half);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const std::vector<float> got_diffuse = read_rgba(out_diffuse, desc.width, desc.height);
+    const std::vector<float> got_shadow = read_rgba(out_shadow, desc.width, desc.height);
+    for (int y = 0; y < desc.height; ++y) {
+      for (int x = 0; x + (half > 0.0f ? 1 : 0) < desc.width; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          const std::size_t i = 4u * static_cast<std::size_t>(y * desc.width + x) + static_cast<std::size_t>(c);
+          const float next_d = half > 0.0f ? cpu_diffuse[i + 4] : cpu_diffuse[i];
+          const float next_s = half > 0.0f ? cpu_shadow[i + 4] : cpu_shadow[i];
+          // Texel centres are exact; halfway the blend is the mean. The filtering unit's weights
+          // are 8-bit fractions on llvmpipe (1/256 of the step between the two texels) plus fp32
+          // coordinate rounding: 1e-5 absolute at centres, 1/256 of the neighbours' difference halfway.
+          const double tol_d = 1e-5 + std::fabs(next_d - cpu_diffuse[i]) / 256.0;
+          const double tol_s = 1e-5 + std::fabs(next_s - cpu_shadow[i]) / 256.0;
+          EXPECT_NEAR(got_diffuse[i], 0.5f * half * 2.0f * (next_d - cpu_diffuse[i]) + cpu_diffuse[i], tol_d)
+              << "diffuse x " << x << " y " << y << " c " << c << " half " << half;
+          EXPECT_NEAR(got_shadow[i], 0.5f * half * 2.0f * (next_s - cpu_shadow[i]) + cpu_shadow[i], tol_s)
+              << "shadow x " << x << " y " << y << " c " << c << " half " << half;
+        }
+      }
+    }
+  }
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vao);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &framebuffer);
+  glUseProgram(0);
+  glDeleteProgram(program);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
