@@ -6,7 +6,7 @@
 // the shadow value, rows the penumbra width in world units). Grids are endpoint-inclusive.
 
 #define SSS_PI 3.14159265358979323846
-#define SSS_GL_ORDER 10
+#define SSS_GL_ORDER 10  // = sss::math::kLutQuadratureOrder (the rule comes from the CPU generator)
 #define SSS_MAX_TERMS 8
 
 uniform vec2 u_size;                     // LUT width, height

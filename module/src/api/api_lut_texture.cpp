@@ -9,7 +9,6 @@
 #include "../gl/debug_label.hpp"
 #include "../gl/program.hpp"
 #include "../gl/state_guard.hpp"
-#include "../math/half_float.hpp"
 #include "embedded_shaders.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
@@ -29,29 +28,6 @@ gl::GLint internal_format(int32_t format) {
     case SSS_LUT_FORMAT_RGBA32F: return gl::RGBA32F;
     case SSS_LUT_FORMAT_RGBA8: return gl::RGBA8;
     default: return gl::RGBA16F;
-  }
-}
-
-// The CPU generator's 10-point Gauss–Legendre rule (the same Newton iteration on P_10).
-void gauss_legendre(float* node, float* weight, int n) {
-  const double pi = 3.14159265358979323846;
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    double derivative = 1.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      derivative = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / derivative;
-      x -= step;
-      if (std::fabs(step) < 1e-16) break;
-    }
-    node[i] = static_cast<float>(x);
-    weight[i] = static_cast<float>(2.0 / ((1.0 - x * x) * derivative * derivative));
   }
 }
 
@@ -98,14 +74,14 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
     f.Uniform1i(at("u_term_count"), static_cast<gl::GLint>(terms.size()));
     f.Uniform4fv(at("u_terms"), 8, packed.data());
     f.Uniform1f(at("u_support"), static_cast<float>(profile.support_mm()));
-    float node[10], weight[10];
-    gauss_legendre(node, weight, 10);
-    std::vector<float> rule(4 * 10, 0.0f);
-    for (std::size_t i = 0; i < 10; ++i) {
-      rule[4 * i] = node[i];
-      rule[4 * i + 1] = weight[i];
+    // The CPU generator's Gauss–Legendre rule, so both integrate on the same nodes.
+    const math::LutQuadratureRule& gl_rule = math::lut_quadrature_rule();
+    std::vector<float> rule(4 * math::kLutQuadratureOrder, 0.0f);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(math::kLutQuadratureOrder); ++i) {
+      rule[4 * i] = static_cast<float>(gl_rule.node[i]);
+      rule[4 * i + 1] = static_cast<float>(gl_rule.weight[i]);
     }
-    f.Uniform4fv(at("u_gl"), 10, rule.data());
+    f.Uniform4fv(at("u_gl"), math::kLutQuadratureOrder, rule.data());
     if (which == SSS_LUT_SHADOW) {
       f.Uniform1f(at("u_world_units_per_mm"), desc.world_units_per_mm);
       f.Uniform1f(at("u_new_penumbra"), desc.new_penumbra);

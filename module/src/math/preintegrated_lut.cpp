@@ -11,12 +11,8 @@ namespace sss::math {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kOrder = 10;  // Gauss–Legendre points per panel
-
-struct GaussLegendre {
-  std::array<double, kOrder> node{};    // on [-1, 1]
-  std::array<double, kOrder> weight{};
-};
+constexpr int kOrder = kLutQuadratureOrder;  // Gauss–Legendre points per panel
+using GaussLegendre = LutQuadratureRule;
 
 // Nodes and weights by Newton's method on P_n (three-term recurrence), computed once.
 const GaussLegendre& gauss_legendre() {
@@ -226,6 +222,8 @@ std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const S
   const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, desc, q) : ShadowEnds{};
   return shadow_value(profile, desc, s, q, ends);
 }
+
+const LutQuadratureRule& lut_quadrature_rule() { return gauss_legendre(); }
 
 double diffuse_lut_ndotl(const DiffuseLutDesc& desc, int x) { return grid(-1.0, 1.0, x, desc.width); }
 double diffuse_lut_curvature(const DiffuseLutDesc& desc, int y) {

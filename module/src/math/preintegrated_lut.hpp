@@ -65,6 +65,13 @@ double new_penumbra_value(double fraction, double t);
 std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const ShadowLutDesc& desc, double s,
                                            double penumbra_world);
 
+// The Gauss–Legendre rule of every panel (10 points on [-1, 1]); the GPU generator takes it as uniforms.
+constexpr int kLutQuadratureOrder = 10;
+struct LutQuadratureRule {
+  std::array<double, kLutQuadratureOrder> node{}, weight{};
+};
+const LutQuadratureRule& lut_quadrature_rule();
+
 // Texel coordinates of the endpoint-inclusive grids.
 double diffuse_lut_ndotl(const DiffuseLutDesc& desc, int x);
 double diffuse_lut_curvature(const DiffuseLutDesc& desc, int y);
