@@ -10,6 +10,7 @@
 
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
+#include "sss/sss_lut.h"
 
 using namespace host_gl;
 
@@ -151,6 +152,28 @@ class StateHarness : public GlTest {
          }},
         {"sss_apply (failing: wrong format)",
          [this] { EXPECT_EQ(sss_apply(sss_, host_textures_[3] /* RGBA16F */, color_, nullptr), SSS_ERROR_INVALID_TEXTURE); }},
+        // New inputs on every call (a cached LUT would call no GL): the GPU generator and the CPU upload.
+        {"sss_lut_create_texture (GPU generator)",
+         [this] {
+           sss_lut_desc d;
+           sss_lut_default_desc(&d);
+           d.width = 4;
+           d.height = 2;
+           d.curvature_max = 1.0f + 0.01f * static_cast<float>(++lut_calls_);
+           uint32_t texture = 0;
+           EXPECT_EQ(sss_lut_create_texture(sss_, SSS_LUT_DIFFUSE, &d, &texture), SSS_OK) << sss_last_error(sss_);
+         }},
+        {"sss_lut_create_texture (CPU upload)",
+         [this] {
+           sss_lut_desc d;
+           sss_lut_default_desc(&d);
+           d.width = 4;
+           d.height = 2;
+           d.flags = SSS_LUT_CPU;
+           d.penumbra_max = 0.032f + 0.001f * static_cast<float>(++lut_calls_);
+           uint32_t texture = 0;
+           EXPECT_EQ(sss_lut_create_texture(sss_, SSS_LUT_SHADOW, &d, &texture), SSS_OK) << sss_last_error(sss_);
+         }},
         {"sss_set_settings + sss_set_camera",
          [this] {
            sss_settings s;
@@ -176,6 +199,7 @@ class StateHarness : public GlTest {
   GLuint samplers_[2] = {0, 0}, host_textures_[4] = {0, 0, 0, 0};
   SyntheticScene scene_;
   GLuint color_ = 0, output_ = 0, depth_ = 0;
+  int lut_calls_ = 0;
 };
 
 TEST_F(StateHarness, EveryEntryPointRestoresRandomState) {
