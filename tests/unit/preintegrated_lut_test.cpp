@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "math/lut_cache.hpp"
@@ -306,6 +309,56 @@ TEST(LutCApi, RejectsBadInputWithNamedMessage) {
   EXPECT_EQ(sss_lut_diffuse_fill(nullptr, out.data(), 64), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_lut_shadow_fill(&desc, nullptr, 64), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_lut_generation_count(nullptr), 0u);
+}
+
+TEST(LutCApi, RandomDescriptionsGiveValuesInRangeOrANamedRejection) {
+  // Every field drawn from valid values, edge values and garbage (NaN, ±inf, negatives, huge), small
+  // sizes: a call either succeeds with every value finite and in [0, 1], or fails with
+  // SSS_ERROR_INVALID_ARGUMENT naming a desc field, leaving the output untouched.
+  std::mt19937 rng(20261121);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> floats = {0.0f, 1e-30f, 1e-6f, 0.001f, 0.02f, 0.5f, 1.0f, 3.0f, 999.0f, 1000.0f, 1001.0f,
+                                     1e6f, 2e6f, -0.001f, -1.0f, inf, -inf, nan};
+  const std::vector<int32_t> ints = {-1, 0, 1, 2, 3, 5, 8, 4097, 257, std::numeric_limits<int32_t>::min()};
+  auto pick_f = [&] { return floats[std::uniform_int_distribution<std::size_t>(0, floats.size() - 1)(rng)]; };
+  auto pick_i = [&] { return ints[std::uniform_int_distribution<std::size_t>(0, ints.size() - 1)(rng)]; };
+  int ok = 0, rejected = 0;
+  for (int i = 0; i < 400; ++i) {
+    sss_lut_desc d;
+    sss_lut_default_desc(&d);
+    d.width = std::uniform_int_distribution<int>(0, 9)(rng) == 0 ? pick_i() : std::uniform_int_distribution<int>(2, 6)(rng);
+    d.height = std::uniform_int_distribution<int>(0, 9)(rng) == 0 ? pick_i() : std::uniform_int_distribution<int>(2, 6)(rng);
+    if (rng() % 4 == 0) d.profile = pick_i();
+    if (rng() % 2 == 0) d.curvature_min = pick_f();
+    if (rng() % 2 == 0) d.curvature_max = pick_f();
+    if (rng() % 2 == 0) d.penumbra_min = pick_f();
+    if (rng() % 2 == 0) d.penumbra_max = pick_f();
+    if (rng() % 3 == 0) d.world_units_per_mm = pick_f();
+    if (rng() % 3 == 0) d.new_penumbra = pick_f();
+    if (rng() % 4 == 0) d.shadow_filter = pick_i();
+    if (rng() % 4 == 0) d.threads = pick_i();
+    if (rng() % 8 == 0) d.flags = static_cast<uint32_t>(rng());
+    const bool shadow = rng() % 2 == 0;
+    std::vector<float> out(4u * 6 * 6, -7.0f);
+    const sss_result r = shadow ? sss_lut_shadow_fill(&d, out.data(), out.size()) : sss_lut_diffuse_fill(&d, out.data(), out.size());
+    if (r == SSS_OK) {
+      ++ok;
+      for (int t = 0; t < 4 * d.width * d.height; ++t) {
+        ASSERT_TRUE(std::isfinite(out[static_cast<std::size_t>(t)]) && out[static_cast<std::size_t>(t)] >= 0.0f &&
+                    out[static_cast<std::size_t>(t)] <= 1.0f)
+            << "case " << i << " texel " << t << ": " << out[static_cast<std::size_t>(t)];
+      }
+    } else {
+      ++rejected;
+      ASSERT_EQ(r, SSS_ERROR_INVALID_ARGUMENT) << "case " << i;
+      const std::string message = sss_last_error(nullptr);
+      EXPECT_TRUE(message.find("desc->") != std::string::npos || message.find("out_floats") != std::string::npos)
+          << message;
+      for (float v : out) ASSERT_EQ(v, -7.0f) << "case " << i << ": rejected but written";
+    }
+  }
+  EXPECT_GT(ok, 40);  // both outcomes exercised
+  EXPECT_GT(rejected, 40);
 }
 
 }  // namespace
