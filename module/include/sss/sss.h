@@ -166,6 +166,19 @@ typedef struct sss_frame {
   const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
   int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
   uint32_t flags;            /**< SSS_FRAME_* */
+  /* Texture description (optional on desktop GL and OpenGL ES 3.1+, required on OpenGL ES 3.0).
+   * The module asks the GL for each texture's internal format and size (glGetTexLevelParameteriv);
+   * OpenGL ES 3.0 has no such query, so there the frame must say what the host allocated: every
+   * format of a texture the frame names, and the size. Where the GL can be asked, a value that is
+   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ).
+   * Formats are the GL internal-format values the textures were allocated with; 0 = not given. */
+  uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
+  uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
+                                  0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
+  uint32_t output_format;    /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F; ignored when output_texture is 0 */
+  uint32_t stencil_format;   /**< 0, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8; ignored when stencil is NULL */
+  int32_t texture_width;     /**< 0 (with texture_height 0), or the width all the textures share, [1, GL_MAX_TEXTURE_SIZE] */
+  int32_t texture_height;    /**< 0 (with texture_width 0), or their height, [1, GL_MAX_TEXTURE_SIZE] */
 } sss_frame;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */

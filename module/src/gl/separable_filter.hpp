@@ -5,12 +5,14 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "../math/filter_constants.hpp"
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
+#include "glsl_variant.hpp"
 #include "texture_query.hpp"
 
 namespace sss::gl {
@@ -37,7 +39,10 @@ class SeparableFilter {
  public:
   // Builds the objects that do not depend on frame size and the most common program variants, so a
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
-  sss_result init(const Functions* gl, std::string glsl_header, bool labels, std::string* message);
+  sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
+  GlslVariant variant() const { return variant_; }
+  // Where DEBUG notes go (a program variant built on first use, the intermediate reallocated).
+  void set_log(std::function<void(int level, const std::string& message)> log) { log_ = std::move(log); }
   // Deletes the objects (they must exist in the current context: see objects_present), then
   // forget()s them.
   void destroy();
@@ -48,7 +53,7 @@ class SeparableFilter {
   // the names mean nothing there, or name the host's own objects: using or deleting them would
   // draw into, detach from or delete the host's objects. objects_present() tells whether the
   // current context holds the module's objects (the vertex array, the three framebuffers and the
-  // copy program exist, and the sampler carries this instance's tag in its unused border colour);
+  // copy program exist, and the sampler carries this instance's tag in its unused maximum LOD);
   // forget() drops every name without deleting anything; rebuild() runs init() again with the
   // same arguments, in the current context.
   bool objects_present() const;
@@ -77,14 +82,19 @@ class SeparableFilter {
   void draw_copy(GLuint source);
   void set_stencil_test(const StencilInput* stencil, GLenum func);
 
+  void note(const std::string& message) const {
+    if (log_) log_(SSS_LOG_DEBUG, message);
+  }
+
   const Functions* gl_ = nullptr;
+  std::function<void(int, const std::string&)> log_;
+  GlslVariant variant_ = GlslVariant::glsl330;
   std::string glsl_header_;
   bool labels_ = false;
   std::array<BlurProgram, kVariantCount> blur_programs_{};
   GLuint copy_program_ = 0;
-  GLint copy_source_location_ = -1;
-  GLuint vertex_array_ = 0, sampler_ = 0;
-  GLfloat sampler_tag_ = 0.0f;  // border colour alpha that marks this instance's sampler
+  GLuint vertex_array_ = 0, sampler_ = 0, depth_sampler_ = 0;
+  GLfloat sampler_tag_ = 0.0f;  // maximum LOD that marks this instance's sampler
   GLuint intermediate_ = 0;
   int intermediate_width_ = 0, intermediate_height_ = 0;
   GLuint stencil_buffer_ = 0;
