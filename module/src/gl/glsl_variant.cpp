@@ -1,5 +1,7 @@
 #include "glsl_variant.hpp"
 
+#include "embedded_shaders.hpp"
+
 namespace sss::gl {
 
 GlslVariant choose_glsl_variant(const Api& api) {
@@ -7,18 +9,15 @@ GlslVariant choose_glsl_variant(const Api& api) {
   return api.version() >= 42 ? GlslVariant::glsl420 : GlslVariant::glsl330;
 }
 
+// The headers are module/shaders/version_*.glsl, so that the shaders.glslang test validates the
+// very text the module compiles.
 std::string glsl_header(GlslVariant v) {
   switch (v) {
-    case GlslVariant::glsl420:
-      return "#version 420 core\n#define SSS_BINDING(unit) layout(binding = unit)\n#define SSS_MANUAL_DEPTH_FILTER 0\n";
-    case GlslVariant::essl300:
-      // highp everywhere: the filter's weights and depths need float precision (mediump is fp16),
-      // and ES gives samplers lowp by default.
-      return "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-             "#define SSS_BINDING(unit)\n#define SSS_MANUAL_DEPTH_FILTER 1\n";
+    case GlslVariant::glsl420: return shaders::version_420_glsl;
+    case GlslVariant::essl300: return shaders::version_es300_glsl;
     case GlslVariant::glsl330: break;
   }
-  return "#version 330 core\n#define SSS_BINDING(unit)\n#define SSS_MANUAL_DEPTH_FILTER 0\n";
+  return shaders::version_330_glsl;
 }
 
 const char* glsl_variant_name(GlslVariant v) {
