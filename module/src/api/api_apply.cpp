@@ -192,6 +192,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   run.kernel_revision = ctx->kernel_revision;
   run.follow_surface = ctx->settings.follow_surface;
   run.identity = is_identity(ctx->settings);
+  run.frame = ctx->frames + 1;
 
   std::string message;
   r = ctx->filter.run(run, &message);
@@ -199,7 +200,48 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
     sss::api::drain_host_errors(nullptr, f);
     return fail(ctx, r, message);
   }
-  return sss::api::check_gl_errors(ctx, f, "the separable passes");
+  r = sss::api::check_gl_errors(ctx, f, "the separable passes");
+  if (r == SSS_OK) {
+    ++ctx->frames;
+    ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());
+    ctx->passes += ctx->last_frame_passes;
+  }
+  return r;
+}
+
+SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
+  if (stats == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats is NULL");
+  if (stats->struct_size != sizeof(sss_stats)) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats->struct_size = %u: expected sizeof(sss_stats) = %u",
+                stats->struct_size, static_cast<unsigned>(sizeof(sss_stats)));
+  }
+  sss_stats s = {};
+  s.struct_size = sizeof s;
+  switch (ctx->filter.variant()) {
+    case gl::GlslVariant::glsl330: s.glsl_variant = SSS_GLSL_330_CORE; break;
+    case gl::GlslVariant::glsl420: s.glsl_variant = SSS_GLSL_420_CORE; break;
+    case gl::GlslVariant::essl300: s.glsl_variant = SSS_GLSL_300_ES; break;
+  }
+  s.frames = ctx->frames;
+  s.passes = ctx->passes;
+  s.last_frame_passes = ctx->last_frame_passes;
+  const gl::PassMeasurement& m = ctx->filter.queries().latest();
+  if (m.frame != 0) {
+    s.measured_frame = m.frame;
+    if (m.has_pixels) {
+      s.measured |= SSS_STATS_PIXELS;
+      s.pixels_touched = m.pixels;
+    }
+    if (m.has_time) {
+      s.measured |= SSS_STATS_GPU_TIME;
+      s.gpu_time_ms[0] = m.milliseconds[0];
+      s.gpu_time_ms[1] = m.milliseconds[1];
+    }
+  }
+  *stats = s;
+  return SSS_OK;
 }
 
 }  // extern "C"

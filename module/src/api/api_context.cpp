@@ -109,6 +109,9 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     ctx->es_float_linear = has_extension(f, "GL_OES_texture_float_linear");
   }
   const gl::GlslVariant variant = gl::choose_glsl_variant(api);
+  if ((desc->flags & SSS_CREATE_STATS) != 0) {
+    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"));
+  }
 
   sss_context* raw = ctx.get();
   ctx->filter.set_log([raw](int level, const std::string& text) { sss::api::log(raw, level, text); });
@@ -141,6 +144,13 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
                 api.es ? (ctx->es_float_render ? "yes" : "RGBA16F only") : "n/a",
                 api.es ? (ctx->es_float_linear ? "yes" : "no") : "n/a");
   sss::api::log(ctx.get(), SSS_LOG_DEBUG, info);
+  if ((desc->flags & SSS_CREATE_STATS) != 0) {
+    const gl::PassQueries& q = ctx->filter.queries();
+    std::snprintf(info, sizeof info, "sss_create: stats on: pixel counts %s, GPU timer %s",
+                  q.pixels_supported() ? "yes" : "no (OpenGL ES has no sample count)",
+                  q.timing_supported() ? "yes" : "no (no trustworthy timer queries)");
+    sss::api::log(ctx.get(), SSS_LOG_INFO, info);
+  }
   *out = ctx.release();
   return SSS_OK;
 }

@@ -31,6 +31,10 @@ struct sss_context {
   bool has_camera = false;
 
   std::string last_error;
+
+  // sss_get_stats counters.
+  std::uint64_t frames = 0, passes = 0;
+  std::uint32_t last_frame_passes = 0;
 };
 
 namespace sss::api {

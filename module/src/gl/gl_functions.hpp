@@ -105,13 +105,13 @@ using GLubyte = unsigned char;
   X(void, DeleteQueries, (GLsizei n, const GLuint* ids))                                               \
   X(void, BeginQuery, (GLenum target, GLuint id))                                                      \
   X(void, EndQuery, (GLenum target))                                                                   \
-  X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint * params))
+  X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint * params))                              \
+  X(void, GetQueryiv, (GLenum target, GLenum pname, GLint * params))
 
 // Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on
 // desktop GL, where they are required; never called on ES.
 #define SSS_GL_DESKTOP_FUNCTIONS(X)                                                                    \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
-  X(void, GetQueryiv, (GLenum target, GLenum pname, GLint * params))                                   \
   X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))
 
 // glGetTexLevelParameteriv: desktop GL and OpenGL ES 3.1+. On ES 3.0 the frame describes the
@@ -121,7 +121,6 @@ using GLubyte = unsigned char;
 
 // EXT_disjoint_timer_query on OpenGL ES (the EXT-suffixed names).
 #define SSS_GL_ES_TIMER_FUNCTIONS(X)                                                                   \
-  X(void, GetQueryivEXT, (GLenum target, GLenum pname, GLint * params))                                \
   X(void, GetQueryObjectui64vEXT, (GLuint id, GLenum pname, std::uint64_t * params))
 
 // KHR_debug (core in 4.3): used only when present.

@@ -69,6 +69,7 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   sampler_tag_ = next_sampler_tag();
   f.SamplerParameterf(sampler_, TEXTURE_MAX_LOD, sampler_tag_);
 
+  if (measure_) queries_.init(gl_, es_timer_extension_);
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
   label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
@@ -111,6 +112,7 @@ void SeparableFilter::destroy() {
   GLuint samplers[2] = {sampler_, depth_sampler_};
   f.DeleteSamplers(2, samplers);
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
+  queries_.destroy();
   forget();
 }
 
@@ -129,12 +131,15 @@ bool SeparableFilter::objects_present() const {
 
 void SeparableFilter::forget() {
   auto log = std::move(log_);
+  const bool measure = measure_, es_timer_extension = es_timer_extension_;
   const Functions* gl = gl_;
   const GlslVariant variant = variant_;
   std::string header = std::move(glsl_header_);
   const bool labels = labels_;
   *this = SeparableFilter{};
   log_ = std::move(log);
+  measure_ = measure;
+  es_timer_extension_ = es_timer_extension;
   gl_ = gl;
   variant_ = variant;
   glsl_header_ = std::move(header);
@@ -319,6 +324,7 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
   f.BindTexture(TEXTURE_2D, run.depth.name);
   f.BindSampler(kDepthUnit, depth_sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
 }
 
 void SeparableFilter::draw_copy(GLuint source) {
@@ -328,6 +334,7 @@ void SeparableFilter::draw_copy(GLuint source) {
   f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kSourceUnit, sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
 }
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
@@ -335,6 +342,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   const int width = run.color.width, height = run.color.height;
   const bool write_back = run.output.name == 0;
   const bool linear_depth = run.constants.linear_depth;
+  last_draws_ = 0;
 
   if (run.identity) return run_identity(run, message);
   // Programs first: a variant that fails to build must not leave a new target behind.
@@ -370,10 +378,12 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   r = check_framebuffer("vertical pass", message);
 
   if (r == SSS_OK) {
+    const bool measured = measure_ && queries_.begin_frame(run.frame);
     // Horizontal: host colour -> intermediate. Pixels the stencil excludes are copied so the
     // vertical pass's taps find defined values there.
     {
       DebugGroup group(f, labels_, "sss horizontal pass");
+      if (measured) queries_.begin_pass(PassQueries::horizontal);
       f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
       set_stencil_test(run.stencil, EQUAL);
       draw_blur(*horizontal, run, run.color.name, 0);
@@ -381,6 +391,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
         set_stencil_test(run.stencil, NOTEQUAL);
         draw_copy(run.color.name);
       }
+      if (measured) queries_.end_pass(PassQueries::horizontal);
     }
     // Vertical: intermediate -> output. Writing back, the host colour is attached here, so it is
     // bound to no unit, and alpha is masked off (it keeps the host's exact value).
@@ -390,14 +401,21 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
       f.ActiveTexture(TEXTURE0 + kOriginalUnit);
       f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
       f.BindSampler(kOriginalUnit, sampler_);
+      if (measured) queries_.begin_pass(PassQueries::vertical);
       if (write_back) f.ColorMask(1, 1, 1, 0);
       set_stencil_test(run.stencil, EQUAL);
+      // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
+      // exactly the blurred ones; into a separate output every pixel the stencil lets through.
+      if (measured) queries_.begin_pixels();
       draw_blur(*vertical, run, intermediate_, 1);
+      if (measured) queries_.end_pixels();
       if (run.stencil != nullptr && !write_back) {
         set_stencil_test(run.stencil, NOTEQUAL);
         draw_copy(run.color.name);
       }
+      if (measured) queries_.end_pass(PassQueries::vertical);
     }
+    if (measured) queries_.end_frame();
   }
   // Detach the host's texture (see copy_stencil).
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);

@@ -13,6 +13,7 @@
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
+#include "pass_queries.hpp"
 #include "texture_query.hpp"
 
 namespace sss::gl {
@@ -33,6 +34,7 @@ struct FilterRun {
   math::PassConstants constants;
   bool follow_surface = false;
   bool identity = false;                   // nothing to blur: only copy into a separate output
+  std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
 };
 
 class SeparableFilter {
@@ -41,6 +43,14 @@ class SeparableFilter {
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
   GlslVariant variant() const { return variant_; }
+  // Measurements for sss_get_stats; call before init(). Off by default: no query objects exist.
+  void enable_measurements(bool es_timer_extension) {
+    measure_ = true;
+    es_timer_extension_ = es_timer_extension;
+  }
+  const PassQueries& queries() const { return queries_; }
+  // Full-screen draws of the last run() (blur passes and copies).
+  int last_draws() const { return last_draws_; }
   // Where DEBUG notes go (a program variant built on first use, the intermediate reallocated).
   void set_log(std::function<void(int level, const std::string& message)> log) { log_ = std::move(log); }
   // Deletes the objects (they must exist in the current context: see objects_present), then
@@ -88,6 +98,9 @@ class SeparableFilter {
 
   const Functions* gl_ = nullptr;
   std::function<void(int, const std::string&)> log_;
+  bool measure_ = false, es_timer_extension_ = false;
+  PassQueries queries_;
+  int last_draws_ = 0;
   GlslVariant variant_ = GlslVariant::glsl330;
   std::string glsl_header_;
   bool labels_ = false;
