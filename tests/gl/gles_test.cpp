@@ -131,6 +131,47 @@ TEST_F(Variant, AGivenDescriptionIsCheckedAgainstTheGlWhereItCanBeAsked) {
   EXPECT_EQ(read_rgba(color, 8, 8), rgba) << "a rejected frame changed the colour texture";
 }
 
+TEST_F(Variant, ARebuildAfterALostContextIsLoggedAtInfo) {
+  LogRecord log;
+  const SyntheticScene scene = make_relief_scene(16, 12, 2, perspective_matrix(40.0f, 16.0f / 12.0f, 0.1f, 10.0f));
+  FilterCase c;
+  c.half_color = true;
+  const auto frame_on = [&](GLuint color, GLuint depth) {
+    sss_frame f = {};
+    f.struct_size = sizeof f;
+    f.color_texture = color;
+    f.depth_texture = depth;
+    describe_frame(c, 16, 12, &f);
+    return f;
+  };
+  sss_ = create_logged(&log);
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+  sss_frame f = frame_on(make_rgba16f(16, 12, scene.color), make_depth32f(16, 12, scene.window_depth));
+  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+
+  // The context goes (its textures with it) and the host carries on in a new one.
+  sss_headless_desc desc = {};
+  desc.backend = test_backend();
+  desc.major = 3;
+  desc.minor = is_gles() ? 0 : 3;
+  desc.core_profile = 1;
+  sss_headless* next = nullptr;
+  char error[512] = "";
+  ASSERT_EQ(sss_headless_create(&desc, &next, error, sizeof error), 0) << error;
+  textures_.clear();
+  sss_headless_destroy(headless_);
+  headless_ = next;
+  ASSERT_EQ(sss_headless_make_current(headless_), 0);
+  ASSERT_TRUE(host_gl::load(sss_headless_get_proc_address, headless_, nullptr));
+  f = frame_on(make_rgba16f(16, 12, scene.color), make_depth32f(16, 12, scene.window_depth));
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_NO_CONTEXT);
+  EXPECT_FALSE(log.has(SSS_LOG_INFO, "rebuilt"));
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  EXPECT_TRUE(log.has(SSS_LOG_INFO, "rebuilt the module's GL objects in the current GL context (shaders in " +
+                                        expected_variant(is_gles())));
+}
+
 class Gles : public Variant {
  protected:
   void SetUp() override {
