@@ -172,6 +172,40 @@ TEST_F(Variant, ARebuildAfterALostContextIsLoggedAtInfo) {
                                         expected_variant(is_gles())));
 }
 
+// A desktop context that says it is OpenGL 3.3 (llvmpipe gives 4.5 for any request), so that the
+// GLSL 330 variant runs: glGetString(GL_VERSION) is answered by the test.
+using GetStringFn = const GLubyte* (*)(GLenum);
+GetStringFn g_real_get_string = nullptr;
+const GLubyte* get_string_as_33(GLenum name) {
+  if (name == GL_VERSION) return reinterpret_cast<const GLubyte*>("3.3 (Core Profile) as told by the test");
+  return g_real_get_string(name);
+}
+void* gl33_get_proc_address(const char* name, void* user) {
+  if (std::string(name) == "glGetString") {
+    g_real_get_string = reinterpret_cast<GetStringFn>(sss_headless_get_proc_address(name, user));
+    return reinterpret_cast<void*>(&get_string_as_33);
+  }
+  return sss_headless_get_proc_address(name, user);
+}
+
+TEST_F(Variant, Glsl330OnAGl33ContextMatchesTheCpuModel) {
+  if (is_gles()) GTEST_SKIP() << "desktop GL only";
+  loader_override_ = gl33_get_proc_address;
+  FilterCase c;
+  sss_default_settings(&c.settings);
+  c.settings.width = 0.045f;
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  const FilterOutcome o = run_case(make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  sss_stats st = {};
+  st.struct_size = sizeof st;
+  ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+  EXPECT_EQ(st.glsl_variant, static_cast<uint32_t>(SSS_GLSL_330_CORE));
+  EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), 3e-3f);  // as matches_cpu_model_test.cpp
+  EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);
+}
+
 class Gles : public Variant {
  protected:
   void SetUp() override {

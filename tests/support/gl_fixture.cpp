@@ -88,7 +88,9 @@ void* es30_get_proc_address(const char* name, void* user) {
 sss_context* GlTest::create_sss(uint32_t flags) {
   sss_create_desc desc = {};
   desc.struct_size = sizeof desc;
-  desc.get_proc_address = is_gles() ? es30_get_proc_address : sss_headless_get_proc_address;
+  desc.get_proc_address = loader_override_ != nullptr ? loader_override_
+                          : is_gles()                  ? es30_get_proc_address
+                                                       : sss_headless_get_proc_address;
   desc.get_proc_address_user = headless_;
   desc.flags = flags;
   sss_context* ctx = nullptr;

@@ -35,6 +35,8 @@ class GlTest : public ::testing::Test {
   // On OpenGL ES through es30_get_proc_address (the module's ES 3.0 path).
   sss_context* create_sss(uint32_t flags = 0);
 
+  // When set, create_sss loads GL through it instead (user: the sss_headless).
+  sss_get_proc_address_fn loader_override_ = nullptr;
   sss_headless* headless_ = nullptr;
   sss_context* sss_ = nullptr;
   std::vector<GLuint> textures_;
