@@ -221,7 +221,8 @@ typedef struct sss_stats {
   double gpu_time_ms[2];         /**< GPU time of the horizontal and the vertical pass, each with its copies
                                       (GL_TIME_ELAPSED), >= 0. Only where timer queries are trustworthy:
                                       GL_QUERY_COUNTER_BITS > 0, on OpenGL ES through GL_EXT_disjoint_timer_query
-                                      (a disjoint event voids the results it spans) */
+                                      (a disjoint event voids the results it spans), and not on Mesa's software
+                                      rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
 } sss_stats;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */

@@ -109,8 +109,14 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     ctx->es_float_linear = has_extension(f, "GL_OES_texture_float_linear");
   }
   const gl::GlslVariant variant = gl::choose_glsl_variant(api);
+  const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
+  const std::string renderer_name = renderer != nullptr ? renderer : "";
+  // Mesa's software rasterisers time one tile of a pass with GL_TIME_ELAPSED (DESIGN.md §6).
+  const bool software_renderer = renderer_name.find("llvmpipe") != std::string::npos ||
+                                 renderer_name.find("softpipe") != std::string::npos ||
+                                 renderer_name.find("swrast") != std::string::npos;
   if ((desc->flags & SSS_CREATE_STATS) != 0) {
-    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"));
+    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"), software_renderer);
   }
 
   sss_context* raw = ctx.get();
@@ -129,11 +135,10 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     return r;
   }
   ctx->kernel = sss::math::separable_kernel(ctx->settings.samples, ctx->settings.strength, ctx->settings.falloff);
-  const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
   char info[320];
   std::snprintf(info, sizeof info, "sss %d.%d.%d on OpenGL %s%d.%d, %s: shaders in %s%s", SSS_VERSION_MAJOR,
                 SSS_VERSION_MINOR, SSS_VERSION_PATCH, api.es ? "ES " : "", ctx->gl_major, ctx->gl_minor,
-                renderer ? renderer : "(unknown renderer)", gl::glsl_variant_name(variant),
+                renderer_name.empty() ? "(unknown renderer)" : renderer_name.c_str(), gl::glsl_variant_name(variant),
                 f.has_debug ? ", KHR_debug" : "");
   sss::api::log(ctx.get(), SSS_LOG_INFO, info);
   std::snprintf(info, sizeof info,
@@ -148,7 +153,9 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     const gl::PassQueries& q = ctx->filter.queries();
     std::snprintf(info, sizeof info, "sss_create: stats on: pixel counts %s, GPU timer %s",
                   q.pixels_supported() ? "yes" : "no (OpenGL ES has no sample count)",
-                  q.timing_supported() ? "yes" : "no (no trustworthy timer queries)");
+                  q.timing_supported() ? "yes"
+                  : software_renderer  ? "no (a software rasteriser: its GL_TIME_ELAPSED covers one tile)"
+                                       : "no (no timer queries with counter bits)");
     sss::api::log(ctx.get(), SSS_LOG_INFO, info);
   }
   *out = ctx.release();

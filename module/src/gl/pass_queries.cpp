@@ -2,17 +2,18 @@
 
 namespace sss::gl {
 
-void PassQueries::init(const Functions* gl, bool es_timer_extension) {
+void PassQueries::init(const Functions* gl, bool es_timer_extension, bool software_renderer) {
   gl_ = gl;
   const Functions& f = *gl_;
   // Timer queries are trusted only where the GL counts time with some bits (a counter of 0 bits is
   // the spec's way to say "no timer"); on ES only through EXT_disjoint_timer_query.
-  const bool timer_api = f.api.es ? es_timer_extension && f.GetQueryObjectui64vEXT != nullptr : true;
+  const bool timer_api = (f.api.es ? es_timer_extension && f.GetQueryObjectui64vEXT != nullptr : true) &&
+                         !software_renderer;
   GLint bits = 0;
   if (timer_api) f.GetQueryiv(TIME_ELAPSED, QUERY_COUNTER_BITS, &bits);
   for (int i = 0; i < 8 && f.GetError() != NO_ERROR; ++i) {  // a driver that rejects the target
   }
-  timing_ = timer_api && bits > 0;
+  timing_ = timer_api && bits > 0 && !software_renderer;
   pixels_ = !f.api.es;  // ES has only "any samples passed"
   for (Slot& s : slots_) {
     if (timing_) f.GenQueries(2, s.time.data());

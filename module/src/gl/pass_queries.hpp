@@ -25,8 +25,10 @@ class PassQueries {
  public:
   enum Pass : int { horizontal = 0, vertical = 1 };
 
-  // Decides what can be measured here (timer bits, ES extension) and makes the query objects.
-  void init(const Functions* gl, bool es_timer_extension);
+  // Decides what can be measured here (timer bits, ES extension, renderer) and makes the query
+  // objects. software_renderer: Mesa's llvmpipe/softpipe, whose GL_TIME_ELAPSED covers a single
+  // tile of a pass (DESIGN.md §6), so its times are not reported.
+  void init(const Functions* gl, bool es_timer_extension, bool software_renderer);
   void destroy();  // deletes the objects (they must exist in the current context)
   void forget();   // drops the names (context lost)
   bool timing_supported() const { return timing_; }

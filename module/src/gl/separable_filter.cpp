@@ -69,7 +69,7 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   sampler_tag_ = next_sampler_tag();
   f.SamplerParameterf(sampler_, TEXTURE_MAX_LOD, sampler_tag_);
 
-  if (measure_) queries_.init(gl_, es_timer_extension_);
+  if (measure_) queries_.init(gl_, es_timer_extension_, software_renderer_);
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
   label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
@@ -131,7 +131,7 @@ bool SeparableFilter::objects_present() const {
 
 void SeparableFilter::forget() {
   auto log = std::move(log_);
-  const bool measure = measure_, es_timer_extension = es_timer_extension_;
+  const bool measure = measure_, es_timer_extension = es_timer_extension_, software = software_renderer_;
   const Functions* gl = gl_;
   const GlslVariant variant = variant_;
   std::string header = std::move(glsl_header_);
@@ -140,6 +140,7 @@ void SeparableFilter::forget() {
   log_ = std::move(log);
   measure_ = measure;
   es_timer_extension_ = es_timer_extension;
+  software_renderer_ = software;
   gl_ = gl;
   variant_ = variant;
   glsl_header_ = std::move(header);

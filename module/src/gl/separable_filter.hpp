@@ -44,9 +44,10 @@ class SeparableFilter {
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
   GlslVariant variant() const { return variant_; }
   // Measurements for sss_get_stats; call before init(). Off by default: no query objects exist.
-  void enable_measurements(bool es_timer_extension) {
+  void enable_measurements(bool es_timer_extension, bool software_renderer) {
     measure_ = true;
     es_timer_extension_ = es_timer_extension;
+    software_renderer_ = software_renderer;
   }
   const PassQueries& queries() const { return queries_; }
   // Full-screen draws of the last run() (blur passes and copies).
@@ -98,7 +99,7 @@ class SeparableFilter {
 
   const Functions* gl_ = nullptr;
   std::function<void(int, const std::string&)> log_;
-  bool measure_ = false, es_timer_extension_ = false;
+  bool measure_ = false, es_timer_extension_ = false, software_renderer_ = false;
   PassQueries queries_;
   int last_draws_ = 0;
   GlslVariant variant_ = GlslVariant::glsl330;
