@@ -23,7 +23,15 @@ bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const 
 #undef SSS_GL_LOAD_REQUIRED
 #define SSS_GL_LOAD_OPTIONAL(ret, name, params) \
   f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name, user));
-  SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  if (api.es && api.version() < 32) {
+    // Before ES 3.2, KHR_debug's entry points carry the KHR suffix on OpenGL ES.
+#define SSS_GL_LOAD_KHR(ret, name, params) \
+  f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name "KHR", user));
+    SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_KHR)
+#undef SSS_GL_LOAD_KHR
+  } else {
+    SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  }
   if (api.es) {
     SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
     SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
