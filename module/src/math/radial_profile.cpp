@@ -190,4 +190,17 @@ Rgb encircled_numeric(const RadialProfile& p, double r_mm) {
   return sum;
 }
 
+double radius_enclosing(const RadialProfile& p, double fraction) {
+  const Rgb total = p.integral();
+  double lo = 0.0, hi = p.extent_mm();
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const Rgb e = encircled_numeric(p, mid);
+    bool all = true;
+    for (std::size_t c = 0; c < 3; ++c) all = all && (total[c] <= 0.0 || e[c] >= fraction * total[c]);
+    (all ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 }  // namespace sss::math

@@ -78,4 +78,7 @@ double fresnel_diffuse_reflectance(double eta);
 // ∫∫ over the disk of radius r_mm by numeric quadrature of 2πr·R(r): for any profile.
 Rgb encircled_numeric(const RadialProfile& p, double r_mm);
 
+// The smallest radius inside which every channel holds at least `fraction` of its integral.
+double radius_enclosing(const RadialProfile& p, double fraction);
+
 }  // namespace sss::math
