@@ -101,7 +101,21 @@ int main(int argc, char** argv) {
     md << "| " << names[c] << " | " << fmt("%.3f", share[c]) << " | " << fmt("%.3f", sv[0] / sum) << " | "
        << fmt("%.3f", sv[1] / sv[0]) << " | " << fmt("%.3f", sv[2] / sv[0]) << " |\n";
   }
-  md << "\nThe paper's Figure 2 reports about 80% of the energy in the first eigenvalue.\n\n";
+  md << "\nThe first singular value's share σ1²/Σσ² on other grids (uniform grids: the plain 'discrete profile'):\n\n"
+     << "| grid | red | green | blue |\n|---|---|---|---|\n";
+  struct SvdGrid { TapSpacing spacing; int n; double radius; };
+  for (const SvdGrid g : {SvdGrid{TapSpacing::uniform, 65, 3.0}, SvdGrid{TapSpacing::uniform, 65, 6.0},
+                          SvdGrid{TapSpacing::quadratic, 65, 6.0}}) {
+    const ProfileMatrix mg = discretise_profile(skin, make_tap_grid(g.n, g.radius, g.spacing));
+    const Rgb sg = first_singular_energy_fraction(decompose_profile(mg));
+    md << "| " << (g.spacing == TapSpacing::uniform ? "uniform " : "quadratic ") << g.n << "×" << g.n << " on ±"
+       << fmt("%.0f", g.radius) << " mm | " << fmt("%.3f", sg[0]) << " | " << fmt("%.3f", sg[1]) << " | "
+       << fmt("%.3f", sg[2]) << " |\n";
+  }
+  md << "\nThe paper's Figure 2 reports about 80% of the energy in the first eigenvalue. The share depends on\n"
+     << "the discretisation: entries are cell integrals, and on a uniform grid the narrow peak (the\n"
+     << "0.0064 mm² Gaussian) sits in a few cells whose squares dominate the Frobenius norm and are nearly\n"
+     << "rank 1; the centre-dense quadratic grid spreads it and comes closest to the paper's figure in red.\n\n";
 
   // ---- Guided vs pre-integrated.
   md << "## Guided rank-1 fit against the pre-integrated kernel (S.8)\n\n"

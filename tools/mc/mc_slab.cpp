@@ -65,9 +65,9 @@ void run_chunk(const SlabMedium& m, const RadialGrid& grid, std::uint64_t count,
         }
         if (p.uz < 0.0) {
           t.diffuse_reflected += p.w;
-          const double r = std::hypot(p.x, p.y);
-          const auto bin = static_cast<std::size_t>(r / grid.dr_mm);
-          if (bin < t.reflected_by_bin.size()) t.reflected_by_bin[bin] += p.w;
+          const double bin = std::hypot(p.x, p.y) / grid.dr_mm;
+          // Compared as a double first: converting an out-of-range double to an integer is undefined.
+          if (bin < static_cast<double>(t.reflected_by_bin.size())) t.reflected_by_bin[static_cast<std::size_t>(bin)] += p.w;
         } else {
           t.transmitted += p.w;
         }

@@ -188,6 +188,8 @@ SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t
     }
   } catch (const std::bad_alloc&) {
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_profile_evaluate: out of memory");
+  } catch (const std::exception& e) {  // the checks above should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_profile_evaluate: %s", e.what());
   }
   return SSS_OK;
 }
@@ -201,6 +203,8 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float o
     for (int c = 0; c < 3; ++c) out_rgb[c] = static_cast<float>(v[static_cast<std::size_t>(c)]);
   } catch (const std::bad_alloc&) {
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_profile_integral: out of memory");
+  } catch (const std::exception& e) {  // the checks above should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_profile_integral: %s", e.what());
   }
   return SSS_OK;
 }
@@ -243,6 +247,8 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* desc, int32_t max_term
     plan = sss::math::build_kernel_plan(q);
   } catch (const std::bad_alloc&) {
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_kernel_plan: out of memory");
+  } catch (const std::exception& e) {  // the checks above should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_kernel_plan: %s", e.what());
   }
   const auto terms = static_cast<int32_t>(plan.terms.size());
   if (terms > max_terms) {
