@@ -4,6 +4,7 @@
 // kernel, and the sum-of-Gaussians fits of the measured materials.
 //
 //   sss_kernel_report [--out FILE]     (default: stdout)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -116,6 +117,37 @@ int main(int argc, char** argv) {
      << "the discretisation: entries are cell integrals, and on a uniform grid the narrow peak (the\n"
      << "0.0064 mm² Gaussian) sits in a few cells whose squares dominate the Frobenius norm and are nearly\n"
      << "rank 1; the centre-dense quadratic grid spreads it and comes closest to the paper's figure in red.\n\n";
+
+  // ---- Pre-integrated kernel against the full matrix on straight shadow edges.
+  {
+    const ProfileMatrix pm = profile_matrix_for(skin, 33, 0.0);
+    const KernelPlan plan = preintegrated_plan(pm);
+    md << "## Pre-integrated kernel on straight shadow edges\n\n"
+       << "Largest difference, as a fraction of the edge's contrast, between the pre-integrated plan and the full\n"
+       << "33×33 profile matrix applied to the edge H(x cos θ + y sin θ − 0.05 mm), sampled across it (red channel):\n\n"
+       << "| θ (degrees) | max difference |\n|---|---|\n";
+    for (double deg : {0.0, 30.0, 45.0, 71.0, 90.0}) {
+      const double th = deg * 3.14159265358979323846 / 180.0, nx = std::cos(th), ny = std::sin(th);
+      auto edge = [&](double x, double y) { return nx * x + ny * y > 0.05 ? 1.0 : 0.0; };
+      double worst = 0.0;
+      for (double t = -1.0; t <= 1.0; t += 0.0625) {
+        const double px = t * nx, py = t * ny;
+        double full = 0.0, sep = 0.0;
+        for (int i = 0; i < pm.n(); ++i) {
+          for (int j = 0; j < pm.n(); ++j) {
+            full += pm.at(0, i, j) * edge(px - pm.grid.offsets_mm[static_cast<std::size_t>(i)],
+                                         py - pm.grid.offsets_mm[static_cast<std::size_t>(j)]);
+          }
+        }
+        for (const auto& h : plan.terms[0].horizontal) {
+          for (const auto& v : plan.terms[0].vertical) sep += double(h.weight[0]) * v.weight[0] * edge(px - h.offset_mm, py - v.offset_mm);
+        }
+        worst = std::max(worst, std::fabs(full - sep));
+      }
+      md << "| " << fmt("%.0f", deg) << " | " << fmt("%.2e", worst) << " |\n";
+    }
+    md << "\nExact (to float rounding) on the axes, where the edge is additively separable; not at other angles.\n\n";
+  }
 
   // ---- Guided vs pre-integrated.
   md << "## Guided rank-1 fit against the pre-integrated kernel (S.8)\n\n"
