@@ -1,17 +1,36 @@
 // The GL-free LUT API: defaults, validation, filling the caller's float array.
+#include <array>
 #include <cstring>
+#include <memory>
 #include <system_error>
 #include <vector>
 
 #include "context.hpp"
 #include "lut_inputs.hpp"
+#include "../math/kernel_request.hpp"
+#include "../math/materials.hpp"
 #include "validation.hpp"
 
 namespace sss::api {
 
-const sss::math::RadialProfile& lut_profile(const sss_lut_desc& /*desc*/) {
-  // SSS_PROFILE_SKIN_DEON is the only profile so far; validation rejects the others.
-  return sss::math::deon_skin_profile();
+static_assert(SSS_PROFILE_SKIN_DEON == SSS_MATERIAL_SKIN && SSS_PROFILE_COUNT == SSS_MATERIAL_TABULATED &&
+                  SSS_MATERIAL_WHOLEMILK - SSS_MATERIAL_APPLE + 1 == sss::math::kMaterialCount,
+              "sss_lut_desc.profile takes the materials of sss_kernels.h up to the tabulated one");
+
+const sss::math::RadialProfile& lut_profile(const sss_lut_desc& desc) {
+  // desc.profile is validated: SSS_MATERIAL_SKIN (the six Gaussians) or a measured material's
+  // dipole, built once each (thread-safe static) and kept for the program's life.
+  static const auto dipoles = [] {
+    std::array<std::unique_ptr<sss::math::RadialProfile>, sss::math::kMaterialCount> all;
+    for (int m = 0; m < sss::math::kMaterialCount; ++m) {
+      sss::math::ProfileRequest r;
+      r.material = m;
+      all[static_cast<std::size_t>(m)] = sss::math::make_profile(r);
+    }
+    return all;
+  }();
+  if (desc.profile <= SSS_MATERIAL_SKIN || desc.profile > SSS_MATERIAL_WHOLEMILK) return sss::math::deon_skin_profile();
+  return *dipoles[static_cast<std::size_t>(desc.profile - SSS_MATERIAL_APPLE)];
 }
 
 sss::math::DiffuseLutDesc diffuse_lut_desc(const sss_lut_desc& desc) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../gl/debug_label.hpp"
+#include "../gl/glsl_variant.hpp"
 #include "../gl/program.hpp"
 #include "../gl/state_guard.hpp"
 #include "embedded_shaders.hpp"
@@ -38,8 +39,9 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
   const bool labels = (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
   const std::vector<math::GaussianTerm>& terms = *profile.gaussian_terms();
   std::string log;
-  const std::string header =
-      std::string("#version 330 core\n#define SSS_LUT_KIND ") + (which == SSS_LUT_DIFFUSE ? "0" : "1") + "\n";
+  // The dialect negotiated at create (GLSL 330 / 420 core or ES 300), as for the filter's shaders.
+  const std::string header = gl::glsl_header(ctx->filter.variant()) + "#define SSS_LUT_KIND " +
+                             (which == SSS_LUT_DIFFUSE ? "0" : "1") + "\n";
   const gl::GLuint program =
       gl::build_program(f, header, sss::shaders::fullscreen_vert, sss::shaders::lut_generate_frag, &log);
   if (program == 0) return fail(ctx, SSS_ERROR_SHADER_COMPILE, "the LUT generator: " + log);
@@ -73,7 +75,7 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
     }
     f.Uniform1i(at("u_term_count"), static_cast<gl::GLint>(terms.size()));
     f.Uniform4fv(at("u_terms"), 8, packed.data());
-    f.Uniform1f(at("u_support"), static_cast<float>(profile.support_mm()));
+    f.Uniform1f(at("u_support"), static_cast<float>(math::lut_support_mm(profile)));
     // The CPU generator's Gauss–Legendre rule, so both integrate on the same nodes.
     const math::LutQuadratureRule& gl_rule = math::lut_quadrature_rule();
     std::vector<float> rule(4 * math::kLutQuadratureOrder, 0.0f);
@@ -105,8 +107,12 @@ sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& des
   const gl::Functions& f = ctx->gl;
   const bool labels = (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
   const math::RadialProfile& profile = sss::api::lut_profile(desc);
+  // OpenGL ES renders to RGBA32F only with EXT_color_buffer_float (RGBA16F is renderable whenever a
+  // context exists: sss_create checks for EXT_color_buffer_half_float or _float); without it the
+  // LUT is generated on the CPU and uploaded, which ES 3.0 allows for every format.
+  const bool es_no_float_target = f.api.es && desc.format == SSS_LUT_FORMAT_RGBA32F && !ctx->es_float_render;
   const bool on_cpu = (desc.flags & SSS_LUT_CPU) != 0 || profile.gaussian_terms() == nullptr ||
-                      profile.gaussian_terms()->size() > 8;
+                      profile.gaussian_terms()->size() > 8 || es_no_float_target;
 
   // CPU data first (outside any GL work), so an allocation failure leaves the GL untouched.
   math::LutCache::Data data;
@@ -159,7 +165,9 @@ sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& des
     }
     for (int i = 0; i < 4; ++i) f.PixelStorei(params[i], saved[i]);
   } else {
-    f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, gl::FLOAT, nullptr);
+    // ES 3.0 pairs each sized format with its types: RGBA8 allocates with UNSIGNED_BYTE only.
+    const gl::GLenum type = desc.format == SSS_LUT_FORMAT_RGBA8 ? gl::UNSIGNED_BYTE : gl::FLOAT;
+    f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, type, nullptr);
     r = sss::api::check_gl_errors(ctx, f, "allocating the LUT texture");
     if (r == SSS_OK) r = generate_on_gpu(ctx, which, desc, texture, profile);
     if (r == SSS_OK) ++ctx->lut_gpu_generations;
@@ -200,6 +208,13 @@ SSS_API sss_result sss_lut_create_texture(sss_context* ctx, int32_t which, const
   r = sss::api::require_current_context(ctx, f);
   if (r != SSS_OK) return r;
 
+  if (f.api.es && desc->format == SSS_LUT_FORMAT_RGBA32F && !ctx->es_float_linear) {
+    // The LUT is sampled with GL_LINEAR: an RGBA32F texture would be incomplete there.
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "desc->format = SSS_LUT_FORMAT_RGBA32F (%d): filtering it on OpenGL ES needs "
+                "GL_OES_texture_float_linear; use SSS_LUT_FORMAT_RGBA16F",
+                desc->format);
+  }
   sss::api::drain_host_errors(ctx, f);
   gl::StateGuard guard(f, (ctx->create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0);
   gl::DebugGroup group(f, (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0, "sss_lut_create_texture");

@@ -21,6 +21,9 @@ struct sss_context {
   void* log_user = nullptr;
   std::uint32_t create_flags = 0;
   int gl_major = 0, gl_minor = 0;
+  bool gl_es = false;
+  // OpenGL ES extensions the formats need (see api_apply.cpp): RGBA32F renderable, RGBA32F filterable.
+  bool es_float_render = false, es_float_linear = false;
 
   sss::math::FilterSettings settings;
   std::vector<sss::math::KernelTap> kernel;
@@ -40,6 +43,10 @@ struct sss_context {
   std::list<LutTexture> lut_textures;
   std::uint64_t lut_gpu_generations = 0;
   sss::math::LutCache lut_data{4};  // CPU-generated LUTs (SSS_LUT_CPU), by the same keys
+
+  // sss_get_stats counters.
+  std::uint64_t frames = 0, passes = 0;
+  std::uint32_t last_frame_passes = 0;
 };
 
 namespace sss::api {

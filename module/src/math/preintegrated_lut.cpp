@@ -118,7 +118,11 @@ void run_rows(int height, int threads, Row row) {
 
 }  // namespace
 
-std::array<double, 3> preintegrated_diffuse(const RadialProfile& profile, double ndotl, double curvature_per_mm) {
+namespace {
+
+// D(θ, r) with the profile's support (lut_support_mm) computed by the caller: once per LUT.
+std::array<double, 3> diffuse_value(const RadialProfile& profile, double support, double ndotl,
+                                    double curvature_per_mm) {
   const double cos_theta = std::clamp(ndotl, -1.0, 1.0);
   if (!(curvature_per_mm > 0.0)) {
     const double flat = saturate(cos_theta);  // r = ∞: no light crosses a lighting change
@@ -126,7 +130,6 @@ std::array<double, 3> preintegrated_diffuse(const RadialProfile& profile, double
   }
   const double r = 1.0 / curvature_per_mm;
   const double theta = std::acos(cos_theta);
-  const double support = profile.support_mm();
   // The ring is folded onto x in [0, X]: x and -x share the weight R(2r·sin(x/2)).
   const double x_end = support >= 2.0 * r ? kPi : 2.0 * std::asin(support / (2.0 * r));
   std::vector<double> points;
@@ -145,6 +148,14 @@ std::array<double, 3> preintegrated_diffuse(const RadialProfile& profile, double
   return out;
 }
 
+}  // namespace
+
+double lut_support_mm(const RadialProfile& profile) { return profile.support_mm(kLutTailFraction); }
+
+std::array<double, 3> preintegrated_diffuse(const RadialProfile& profile, double ndotl, double curvature_per_mm) {
+  return diffuse_value(profile, lut_support_mm(profile), ndotl, curvature_per_mm);
+}
+
 double shadow_penumbra_position(ShadowFilter filter, double s) {
   const double v = saturate(s);
   if (filter == ShadowFilter::box) return v;
@@ -160,8 +171,8 @@ double new_penumbra_value(double fraction, double t) {
 namespace {
 
 // The unnormalised §1.6 integral: P' at the penumbra position of s, blurred by the profile.
-std::array<double, 3> shadow_blur(const RadialProfile& profile, const ShadowLutDesc& desc, double t0, double q) {
-  const double support = profile.support_mm();
+std::array<double, 3> shadow_blur(const RadialProfile& profile, double support, const ShadowLutDesc& desc, double t0,
+                                  double q) {
   const double f = std::clamp(desc.new_penumbra, 1e-6, 1.0);
   const double a = 0.5 - 0.5 * f, b = 0.5 + 0.5 * f;
   std::vector<double> points = distance_breaks(support);
@@ -187,24 +198,24 @@ struct ShadowEnds {
   std::array<double, 3> lo{}, hi{};
 };
 
-ShadowEnds shadow_ends(const RadialProfile& profile, const ShadowLutDesc& desc, double q) {
-  return {shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 0.0), q),
-          shadow_blur(profile, desc, shadow_penumbra_position(desc.filter, 1.0), q)};
+ShadowEnds shadow_ends(const RadialProfile& profile, double support, const ShadowLutDesc& desc, double q) {
+  return {shadow_blur(profile, support, desc, shadow_penumbra_position(desc.filter, 0.0), q),
+          shadow_blur(profile, support, desc, shadow_penumbra_position(desc.filter, 1.0), q)};
 }
 
 double shadow_q(const ShadowLutDesc& desc, double penumbra_world) {
   return desc.world_units_per_mm / std::max(penumbra_world, 1e-300);
 }
 
-std::array<double, 3> shadow_value(const RadialProfile& profile, const ShadowLutDesc& desc, double s, double q,
-                                   const ShadowEnds& ends) {
+std::array<double, 3> shadow_value(const RadialProfile& profile, double support, const ShadowLutDesc& desc, double s,
+                                   double q, const ShadowEnds& ends) {
   const double t0 = shadow_penumbra_position(desc.filter, s);
   const double f = std::clamp(desc.new_penumbra, 1e-6, 1.0);
   if (!(q > 0.0) || !std::isfinite(q)) {
     const double v = new_penumbra_value(f, t0);
     return {v, v, v};
   }
-  const std::array<double, 3> value = shadow_blur(profile, desc, t0, q);
+  const std::array<double, 3> value = shadow_blur(profile, support, desc, t0, q);
   std::array<double, 3> out{};
   for (std::size_t c = 0; c < 3; ++c) {
     const double span = ends.hi[c] - ends.lo[c];
@@ -219,8 +230,9 @@ std::array<double, 3> shadow_value(const RadialProfile& profile, const ShadowLut
 std::array<double, 3> preintegrated_shadow(const RadialProfile& profile, const ShadowLutDesc& desc, double s,
                                            double penumbra_world) {
   const double q = shadow_q(desc, penumbra_world);
-  const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, desc, q) : ShadowEnds{};
-  return shadow_value(profile, desc, s, q, ends);
+  const double support = lut_support_mm(profile);
+  const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, support, desc, q) : ShadowEnds{};
+  return shadow_value(profile, support, desc, s, q, ends);
 }
 
 const LutQuadratureRule& lut_quadrature_rule() { return gauss_legendre(); }
@@ -235,11 +247,12 @@ double shadow_lut_penumbra(const ShadowLutDesc& desc, int y) {
 }
 
 void generate_diffuse_lut(const RadialProfile& profile, const DiffuseLutDesc& desc, int threads, float* out_rgba) {
+  const double support = lut_support_mm(profile);
   run_rows(desc.height, threads, [&](int y) {
     const double k = diffuse_lut_curvature(desc, y);
     float* row = out_rgba + static_cast<std::size_t>(y) * static_cast<std::size_t>(desc.width) * 4;
     for (int x = 0; x < desc.width; ++x) {
-      const std::array<double, 3> d = preintegrated_diffuse(profile, diffuse_lut_ndotl(desc, x), k);
+      const std::array<double, 3> d = diffuse_value(profile, support, diffuse_lut_ndotl(desc, x), k);
       float* texel = row + static_cast<std::size_t>(x) * 4;
       for (std::size_t c = 0; c < 3; ++c) texel[c] = static_cast<float>(d[c]);
       texel[3] = 1.0f;
@@ -248,12 +261,14 @@ void generate_diffuse_lut(const RadialProfile& profile, const DiffuseLutDesc& de
 }
 
 void generate_shadow_lut(const RadialProfile& profile, const ShadowLutDesc& desc, int threads, float* out_rgba) {
+  const double support = lut_support_mm(profile);
   run_rows(desc.height, threads, [&](int y) {
     const double q = shadow_q(desc, shadow_lut_penumbra(desc, y));
-    const ShadowEnds ends = q > 0.0 && std::isfinite(q) ? shadow_ends(profile, desc, q) : ShadowEnds{};  // once a row
+    const ShadowEnds ends =
+        q > 0.0 && std::isfinite(q) ? shadow_ends(profile, support, desc, q) : ShadowEnds{};  // once a row
     float* row = out_rgba + static_cast<std::size_t>(y) * static_cast<std::size_t>(desc.width) * 4;
     for (int x = 0; x < desc.width; ++x) {
-      const std::array<double, 3> p = shadow_value(profile, desc, shadow_lut_value(desc, x), q, ends);
+      const std::array<double, 3> p = shadow_value(profile, support, desc, shadow_lut_value(desc, x), q, ends);
       float* texel = row + static_cast<std::size_t>(x) * 4;
       for (std::size_t c = 0; c < 3; ++c) texel[c] = static_cast<float>(p[c]);
       texel[3] = 1.0f;

@@ -45,6 +45,12 @@ struct ShadowLutDesc {
   ShadowFilter filter = ShadowFilter::box;
 };
 
+// The energy fraction the LUT integrals leave out, and the radius (mm) that leaves it out
+// (RadialProfile::support_mm): far below the profile's own extent_mm() (1e-4), so the 1e-3 accuracy
+// of the LUTs is not spent on the truncation.
+inline constexpr double kLutTailFraction = 1e-9;
+double lut_support_mm(const RadialProfile& profile);
+
 // Eq. (1.1) at one point: the ring integral of saturate(cos(θ + x)) weighted by R(2r·sin(|x|/2)),
 // over the same integral of the weights, θ = acos(ndotl), r = 1 / curvature. ndotl in [-1, 1],
 // curvature >= 0 (1/mm). Gauss–Legendre panels split at the lighting kinks and at distances
