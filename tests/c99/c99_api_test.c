@@ -62,6 +62,11 @@ int main(void) {
   CHECK(fabs(lut_rgba[12] - 1.0) < 1e-6);            /* N.L = 1 on a flat row: lit */
   CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK);
   CHECK(lut_rgba[0] == 0.0f && lut_rgba[12] == 1.0f);
+  lut.profile = SSS_MATERIAL_MARBLE; /* the materials of sss_kernels.h */
+  CHECK(sss_lut_diffuse_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK && fabs(lut_rgba[12] - 1.0) < 1e-6);
+  lut.profile = SSS_MATERIAL_TABULATED;
+  CHECK(sss_lut_diffuse_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_ERROR_INVALID_ARGUMENT);
+  lut.profile = SSS_PROFILE_SKIN_DEON;
   CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 31) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(sss_last_error(NULL), "out_floats = 31") != NULL);
   CHECK(sss_lut_create_texture(NULL, SSS_LUT_DIFFUSE, &lut, NULL) == SSS_ERROR_INVALID_ARGUMENT);
