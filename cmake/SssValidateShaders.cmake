@@ -3,7 +3,8 @@
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
 # Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur.
+# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_OUTSIDE × SSS_LINEAR_DEPTH for the
+# cross-bilateral blur.
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(header "#version 330 core\n")
 set(failures 0)
@@ -25,6 +26,7 @@ endfunction()
 file(READ "${SHADER_DIR}/fullscreen.vert" vertex)
 file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
+file(READ "${SHADER_DIR}/cbf_blur.frag" cbf)
 validate(fullscreen vert "${header}${vertex}")
 validate(copy frag "${header}${copy}")
 foreach(outside 0 1 2)
@@ -33,6 +35,13 @@ foreach(outside 0 1 2)
       set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
       validate("blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
     endforeach()
+  endforeach()
+endforeach()
+# The cross-bilateral blur: SSS_OUTSIDE 0..2 × SSS_LINEAR_DEPTH 0/1.
+foreach(outside 0 1 2)
+  foreach(linear 0 1)
+    set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
+    validate("cbf_o${outside}_l${linear}" frag "${header}${defines}${cbf}")
   endforeach()
 endforeach()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")

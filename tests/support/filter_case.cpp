@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/separable_kernel.hpp"
 
@@ -83,7 +84,14 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.output_is_half = c.half_color && !c.separate_output;
   outcome.cpu.resize(outcome.input.size());
-  sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+  if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
+    const auto cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(c.settings.cbf_profile),
+                                                  c.settings.cbf_taps, c.settings.cbf_r_max_mm);
+    const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
+    sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data());
+  } else {
+    sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+  }
   if (c.separate_output && c.viewport[2] != 0) {
     // Outside the viewport a separate output keeps what it held.
     for (int y = 0; y < h; ++y) {

@@ -127,6 +127,31 @@ typedef struct sss_create_desc {
 #define SSS_MIN_SAMPLES 3
 #define SSS_MAX_SAMPLES 65
 
+/* Filter modes for sss_settings.mode. */
+/** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
+#define SSS_MODE_SEPARABLE 0u
+/** Mikkelsen 2010: a pseudo-separable normalised cross-bilateral filter (two 1D passes). The
+ *  footprint is the projected sphere of radius cbf_r_max_mm, shrunk per axis by the cosine between
+ *  the surface (normal reconstructed from depth) and the view ray in the XZ and YZ planes; taps are
+ *  placed by the inverse CDF of the red channel's profile (cbf_taps of them), green and blue reuse
+ *  them with their own weights; a range Gaussian on the depth difference and zero weight for
+ *  neighbours that are not translucent (alpha 0 or outside the stencil) keep light from crossing
+ *  silhouettes. Uses width (world units per mm, and alpha scaling it) like the separable mode;
+ *  ignores strength, falloff, samples and flags: the profile (cbf_profile) sets the unscattered
+ *  share and the radii. */
+#define SSS_MODE_CROSS_BILATERAL 1u
+
+/* Radial profiles for sss_settings.cbf_profile (and sss_profile_transmittance_terms). */
+/** Mikkelsen 2010, Table 1: spike 15/18/20 %, one broad Gaussian per channel, variance 2.3/1.4/1.1 mm². */
+#define SSS_PROFILE_MIKKELSEN_2010 0u
+/** d'Eon and Luebke's six-Gaussian skin profile; its 0.0064 mm² term acts as the spike. */
+#define SSS_PROFILE_SKIN_DEON 1u
+#define SSS_PROFILE_COUNT 2u
+
+#define SSS_CBF_DEFAULT_TAPS 13     /**< Mikkelsen's N */
+#define SSS_CBF_DEFAULT_R_MAX_MM 4.5f /**< Mikkelsen's r_max for skin */
+#define SSS_CBF_MAX_R_MAX_MM 50.0f
+
 /** Filter settings. Units: `width` is in world units, with the paper's meaning: one millimetre of
  *  the diffusion profile spans (2/3)·width world units (so width = 1.5 · world units per mm; a
  *  scene in metres with physical skin uses width = 0.0015; see sss_width_for_world_units_per_mm).
@@ -138,6 +163,12 @@ typedef struct sss_settings {
   float falloff[3];     /**< [0, 1] per channel: profile radius scale. Default .57 .13 .08 */
   int32_t samples;      /**< odd, [3, 65]; taps per pass. Default 17 */
   uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on) */
+  /* Appended in 0.1 for the cross-bilateral mode. */
+  uint32_t mode;        /**< SSS_MODE_SEPARABLE (default) or SSS_MODE_CROSS_BILATERAL */
+  int32_t cbf_taps;     /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
+  float cbf_r_max_mm;   /**< (0, 50] profile millimetres, finite: radius of the footprint sphere (world units
+                             via width: r_max · (2/3)·width, times alpha). Default 4.5 */
+  uint32_t cbf_profile; /**< SSS_PROFILE_* (default SSS_PROFILE_MIKKELSEN_2010) */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
@@ -202,8 +233,10 @@ SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
 
 /** Validates and takes the settings; the kernel is rebuilt only when they change. Does not call GL.
  *  @retval SSS_OK
- *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples or
- *                                     flags outside the ranges on sss_settings; the old settings stay */
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
+ *                                     mode, cbf_taps, cbf_r_max_mm or cbf_profile outside the ranges on
+ *                                     sss_settings (every field is checked, whatever the mode); the old
+ *                                     settings stay */
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
 
 /** Current settings into *s (struct_size must be set by the caller).
@@ -265,6 +298,19 @@ SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
  *                                     outside [0, 1] or not finite */
 SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3], const float falloff[3],
                                         float *out_rgba);
+
+/** The transmittance terms of a radial profile, for the host's lighting pass
+ *  (integration/glsl/sss_transmittance.glsl): out_terms receives up to `capacity` quadruples
+ *  {variance in mm², weight r, weight g, weight b} of the same Gaussians the cross-bilateral mode
+ *  blurs with (a spike with no width, as Mikkelsen's, transmits nothing and is left out); *count the
+ *  number written. The include evaluates Σ w · exp(-s² / v) at the scaled thickness s.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile not an SSS_PROFILE_* value, out_terms or count NULL, or
+ *                                     capacity smaller than the profile's term count (SSS_PROFILE_MAX_TERMS
+ *                                     always suffices; *count then tells the size needed) */
+#define SSS_PROFILE_MAX_TERMS 8
+SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_terms, int32_t capacity,
+                                                   int32_t *count);
 
 #ifdef __cplusplus
 }

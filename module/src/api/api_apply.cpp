@@ -138,6 +138,13 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   run.kernel_revision = ctx->kernel_revision;
   run.follow_surface = ctx->settings.follow_surface;
   run.identity = is_identity(ctx->settings);
+  if (ctx->settings.cross_bilateral) {
+    run.cross_bilateral = true;
+    run.identity = ctx->settings.width == 0.0f;  // strength does not apply to this mode
+    run.cbf_kernel = &ctx->cbf_kernel;
+    run.cbf_kernel_revision = ctx->cbf_kernel_revision;
+    run.cbf = sss::math::compute_cbf_constants(ctx->settings, ctx->projection, geometry);
+  }
 
   std::string message;
   r = ctx->filter.run(run, &message);

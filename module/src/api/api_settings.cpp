@@ -16,7 +16,25 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.falloff = {s.falloff[0], s.falloff[1], s.falloff[2]};
   f.samples = s.samples;
   f.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
+  f.cross_bilateral = s.mode == SSS_MODE_CROSS_BILATERAL;
+  f.cbf_taps = s.cbf_taps;
+  f.cbf_r_max_mm = s.cbf_r_max_mm;
+  f.cbf_profile = s.cbf_profile;
   return f;
+}
+
+void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
+  s->width = f.width;
+  for (int c = 0; c < 3; ++c) {
+    s->strength[c] = f.strength[static_cast<std::size_t>(c)];
+    s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
+  }
+  s->samples = f.samples;
+  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s->mode = f.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
+  s->cbf_taps = f.cbf_taps;
+  s->cbf_r_max_mm = f.cbf_r_max_mm;
+  s->cbf_profile = f.cbf_profile;
 }
 
 }  // namespace
@@ -28,13 +46,7 @@ SSS_API void sss_default_settings(sss_settings* s) {
   const sss::math::FilterSettings d;
   std::memset(s, 0, sizeof *s);
   s->struct_size = sizeof *s;
-  s->width = d.width;
-  for (int c = 0; c < 3; ++c) {
-    s->strength[c] = d.strength[static_cast<std::size_t>(c)];
-    s->falloff[c] = d.falloff[static_cast<std::size_t>(c)];
-  }
-  s->samples = d.samples;
-  s->flags = d.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  from_filter_settings(d, s);
 }
 
 SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm) { return 1.5f * world_units_per_mm; }
@@ -45,11 +57,17 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   if (r != SSS_OK) return r;
   const sss::math::FilterSettings next = to_filter_settings(*s);
   const sss::math::FilterSettings& old = ctx->settings;
+  const sss::math::FilterSettings old_cbf = ctx->settings;
   const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
   ctx->settings = next;
   if (kernel_changed) {
     ctx->kernel = sss::math::separable_kernel(next.samples, next.strength, next.falloff);
     ++ctx->kernel_revision;
+  }
+  if (next.cross_bilateral && (ctx->cbf_kernel.taps.empty() || next.cbf_taps != old_cbf.cbf_taps ||
+                               next.cbf_r_max_mm != old_cbf.cbf_r_max_mm || next.cbf_profile != old_cbf.cbf_profile)) {
+    ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+    ++ctx->cbf_kernel_revision;
   }
   return SSS_OK;
 }
@@ -62,14 +80,7 @@ SSS_API sss_result sss_get_settings(const sss_context* ctx, sss_settings* s) {
                 "settings->struct_size = %u: expected sizeof(sss_settings) = %u", s->struct_size,
                 static_cast<unsigned>(sizeof(sss_settings)));
   }
-  const sss::math::FilterSettings& f = ctx->settings;
-  s->width = f.width;
-  for (int c = 0; c < 3; ++c) {
-    s->strength[c] = f.strength[static_cast<std::size_t>(c)];
-    s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
-  }
-  s->samples = f.samples;
-  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  from_filter_settings(ctx->settings, s);
   return SSS_OK;
 }
 
@@ -103,6 +114,27 @@ SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3]
     out_rgba[i * 4 + 1] = kernel[i].weight[1];
     out_rgba[i * 4 + 2] = kernel[i].weight[2];
     out_rgba[i * 4 + 3] = kernel[i].offset_mm;
+  }
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_terms, int32_t capacity,
+                                                   int32_t* count) {
+  if (profile >= SSS_PROFILE_COUNT) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "profile = %u: must be an SSS_PROFILE_* value (< %u)", profile,
+                SSS_PROFILE_COUNT);
+  }
+  if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
+  if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
+  const auto terms = sss::math::transmittance_terms(sss::math::radial_profile(profile));
+  *count = static_cast<int32_t>(terms.size());
+  if (capacity < *count) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: profile %u has %d terms", capacity, profile,
+                *count);
+  }
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    out_terms[i * 4 + 0] = static_cast<float>(terms[i].variance_mm2);
+    for (std::size_t c = 0; c < 3; ++c) out_terms[i * 4 + 1 + c] = static_cast<float>(terms[i].weight[c]);
   }
   return SSS_OK;
 }

@@ -9,6 +9,7 @@
 #include "../gl/separable_filter.hpp"
 #include "../math/filter_constants.hpp"
 #include "../math/projection.hpp"
+#include "../math/cbf_kernel.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
 
@@ -23,6 +24,8 @@ struct sss_context {
   sss::math::FilterSettings settings;
   std::vector<sss::math::KernelTap> kernel;
   std::uint64_t kernel_revision = 1;
+  sss::math::CbfKernel cbf_kernel;  // built when the cross-bilateral settings change
+  std::uint64_t cbf_kernel_revision = 1;
 
   sss::math::Matrix4 projection{};
   bool has_camera = false;

@@ -42,6 +42,22 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->flags = 0x%x has unknown bits 0x%x", s->flags,
                 s->flags & ~SSS_SETTINGS_ALL_FLAGS);
   }
+  if (s->mode != SSS_MODE_SEPARABLE && s->mode != SSS_MODE_CROSS_BILATERAL) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "settings->mode = %u: must be SSS_MODE_SEPARABLE (0) or SSS_MODE_CROSS_BILATERAL (1)", s->mode);
+  }
+  if (s->cbf_taps < SSS_MIN_SAMPLES || s->cbf_taps > SSS_MAX_SAMPLES || s->cbf_taps % 2 == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_taps = %d: must be odd and in [%d, %d]", s->cbf_taps,
+                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
+  }
+  if (!(s->cbf_r_max_mm > 0.0f && s->cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) {  // also rejects NaN
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_r_max_mm = %g: must be finite and in (0, %g]",
+                static_cast<double>(s->cbf_r_max_mm), static_cast<double>(SSS_CBF_MAX_R_MAX_MM));
+  }
+  if (s->cbf_profile >= SSS_PROFILE_COUNT) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: must be an SSS_PROFILE_* value (< %u)",
+                s->cbf_profile, SSS_PROFILE_COUNT);
+  }
   return SSS_OK;
 }
 

@@ -101,7 +101,8 @@ using GLubyte = unsigned char;
   X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass))                \
   X(void, StencilMaskSeparate, (GLenum face, GLuint mask))                                             \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
-  X(void, BindBuffer, (GLenum target, GLuint buffer))
+  X(void, BindBuffer, (GLenum target, GLuint buffer))                                                  \
+  X(void, ClearBufferfv, (GLenum buffer, GLint drawbuffer, const GLfloat* value))
 
 // KHR_debug (core in 4.3): used only when present.
 #define SSS_GL_DEBUG_FUNCTIONS(X)                                                                      \
@@ -160,6 +161,7 @@ enum : GLenum {
   RGBA = 0x1908,
   HALF_FLOAT = 0x140B,
   FLOAT = 0x1406,
+  COLOR = 0x1800,
   RGBA16F = 0x881A,
   RGBA32F = 0x8814,
   R16F = 0x822D,

@@ -86,6 +86,12 @@ void SeparableFilter::destroy() {
     if (p.program != 0) f.DeleteProgram(p.program);
     p = BlurProgram{};
   }
+  for (CbfProgram& p : cbf_programs_) {
+    if (p.program != 0) f.DeleteProgram(p.program);
+    p = CbfProgram{};
+  }
+  if (masked_source_ != 0) f.DeleteTextures(1, &masked_source_);
+  if (masked_framebuffer_ != 0) f.DeleteFramebuffers(1, &masked_framebuffer_);
   if (copy_program_ != 0) f.DeleteProgram(copy_program_);
   GLuint framebuffers[3] = {intermediate_framebuffer_, output_framebuffer_, stencil_source_framebuffer_};
   f.DeleteFramebuffers(3, framebuffers);
@@ -166,6 +172,83 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
   f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
   f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
   if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, CbfProgram** out, std::string* message) {
+  const int index = static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0);
+  CbfProgram& p = cbf_programs_[static_cast<std::size_t>(index)];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  char defines[128];
+  std::snprintf(defines, sizeof defines, "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), linear_depth ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+  std::string log;
+  const Functions& f = *gl_;
+  p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::cbf_blur_frag, &log);
+  if (p.program == 0) {
+    *message = "cross-bilateral blur shader (" + std::string(defines) + "): " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  char label[64];
+  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d", static_cast<int>(outside),
+                linear_depth ? 1 : 0);
+  label_object(f, labels_, PROGRAM, p.program, label);
+  p.source = f.GetUniformLocation(p.program, "u_source");
+  p.depth = f.GetUniformLocation(p.program, "u_depth");
+  p.original = f.GetUniformLocation(p.program, "u_original");
+  p.kernel = f.GetUniformLocation(p.program, "u_kernel");
+  p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
+  p.axis = f.GetUniformLocation(p.program, "u_axis");
+  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.xy_terms = f.GetUniformLocation(p.program, "u_xy_terms");
+  p.xy_offset = f.GetUniformLocation(p.program, "u_xy_offset");
+  p.viewport = f.GetUniformLocation(p.program, "u_viewport");
+  p.world_per_mm = f.GetUniformLocation(p.program, "u_world_per_mm");
+  p.orthographic = f.GetUniformLocation(p.program, "u_orthographic");
+  p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
+  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  f.UseProgram(p.program);
+  f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
+  f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
+  if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_masked_source(int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  if (masked_framebuffer_ == 0) {
+    f.GenFramebuffers(1, &masked_framebuffer_);
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+    label_object(f, labels_, FRAMEBUFFER, masked_framebuffer_, "sss masked colour copy target");
+  }
+  if (masked_source_ != 0 && masked_width_ == width && masked_height_ == height) return SSS_OK;
+  if (masked_source_ == 0) f.GenTextures(1, &masked_source_);
+  f.ActiveTexture(TEXTURE0);
+  f.BindTexture(TEXTURE_2D, masked_source_);
+  f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);
+  f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
+  // RGBA32F: the copy must hold an RGBA32F host colour exactly (its centre share is not blurred).
+  f.TexImage2D(TEXTURE_2D, 0, static_cast<GLint>(RGBA32F), width, height, 0, RGBA, FLOAT, nullptr);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d RGBA32F masked colour copy failed: %s", width, height,
+                  error_name(error).c_str());
+    *message = buffer;
+    f.DeleteTextures(1, &masked_source_);
+    masked_source_ = 0;
+    masked_width_ = masked_height_ = 0;
+    return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
+  }
+  label_object(f, labels_, TEXTURE, masked_source_, "sss masked colour copy");
+  masked_width_ = width;
+  masked_height_ = height;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, masked_source_, 0);
   return SSS_OK;
 }
 
@@ -294,6 +377,44 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
   f.DrawArrays(TRIANGLES, 0, 3);
 }
 
+void SeparableFilter::draw_cbf(CbfProgram& p, const FilterRun& run, GLuint source, int axis) {
+  const Functions& f = *gl_;
+  const math::PassConstants& k = run.constants;
+  const math::CbfConstants& c = run.cbf;
+  const math::CbfKernel& kernel = *run.cbf_kernel;
+  f.UseProgram(p.program);
+  if (p.kernel_revision != run.cbf_kernel_revision) {
+    std::vector<float> packed;
+    packed.reserve(kernel.taps.size() * 4);
+    for (const math::KernelTap& tap : kernel.taps) {
+      packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
+    }
+    f.Uniform4fv(p.kernel, static_cast<GLsizei>(kernel.taps.size()), packed.data());
+    f.Uniform1i(p.tap_count, static_cast<GLint>(kernel.taps.size()));
+    f.Uniform4f(p.spike_blend, kernel.spike_blend[0], kernel.spike_blend[1], kernel.spike_blend[2], 0.0f);
+    f.Uniform4f(p.inv_two_variance, kernel.inv_two_variance[0], kernel.inv_two_variance[1],
+                kernel.inv_two_variance[2], 0.0f);
+    p.kernel_revision = run.cbf_kernel_revision;
+  }
+  f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
+  f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+  f.Uniform4f(p.xy_terms, c.xy_terms[0], c.xy_terms[1], c.xy_terms[2], c.xy_terms[3]);
+  f.Uniform2f(p.xy_offset, c.xy_offset[0], c.xy_offset[1]);
+  f.Uniform4f(p.viewport, c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]);
+  f.Uniform1f(p.world_per_mm, c.world_per_mm);
+  f.Uniform1f(p.orthographic, c.orthographic ? 1.0f : 0.0f);
+  f.ActiveTexture(TEXTURE0 + kSourceUnit);
+  f.BindTexture(TEXTURE_2D, source);
+  f.BindSampler(kSourceUnit, sampler_);
+  f.ActiveTexture(TEXTURE0 + kDepthUnit);
+  f.BindTexture(TEXTURE_2D, run.depth.name);
+  f.BindSampler(kDepthUnit, sampler_);
+  f.DrawArrays(TRIANGLES, 0, 3);
+}
+
 void SeparableFilter::draw_copy(GLuint source) {
   const Functions& f = *gl_;
   f.UseProgram(copy_program_);
@@ -311,6 +432,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
 
   if (run.identity) return run_identity(run, message);
+  if (run.cross_bilateral) return run_cbf(run, message);
   // Programs first: a variant that fails to build must not leave a new target behind.
   BlurProgram* horizontal = nullptr;
   BlurProgram* vertical = nullptr;
@@ -374,6 +496,90 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
     }
   }
   // Detach the host's texture (see copy_stencil).
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) {
+  const Functions& f = *gl_;
+  const int width = run.color.width, height = run.color.height;
+  const bool write_back = run.output.name == 0;
+  const bool linear_depth = run.constants.linear_depth;
+
+  CbfProgram* horizontal = nullptr;
+  CbfProgram* vertical = nullptr;
+  sss_result r = cbf_program(Outside::write_centre, linear_depth, &horizontal, message);
+  if (r == SSS_OK) {
+    r = cbf_program(write_back ? Outside::discard : Outside::copy_original, linear_depth, &vertical, message);
+  }
+  if (r == SSS_OK) r = ensure_intermediate(width, height, message);
+  if (r == SSS_OK && run.stencil != nullptr) r = ensure_masked_source(width, height, message);
+  if (r != SSS_OK) return r;
+
+  set_pass_state(f);
+  f.BindVertexArray(vertex_array_);
+  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  if (run.stencil != nullptr) {
+    r = copy_stencil(*run.stencil, width, height, message);
+    if (r != SSS_OK) return r;
+  }
+  const GLuint stencil_attachment = run.stencil != nullptr ? stencil_buffer_ : 0;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("horizontal pass", message);
+  if (r != SSS_OK) return r;
+  if (run.stencil != nullptr) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+    f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+    r = check_framebuffer("masked colour copy", message);
+    if (r != SSS_OK) return r;
+  }
+  const GLuint output = write_back ? run.color.name : run.output.name;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("vertical pass", message);
+
+  if (r == SSS_OK) {
+    GLuint horizontal_source = run.color.name;
+    if (run.stencil != nullptr) {
+      // Neighbours outside the stencil must get no weight, but the shader cannot read the stencil:
+      // copy the colour with alpha 0 there (cleared to 0, then the stencil-passing pixels copied).
+      DebugGroup group(f, labels_, "sss masked colour copy");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+      const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      f.Disable(STENCIL_TEST);
+      f.ClearBufferfv(COLOR, 0, zero);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_copy(run.color.name);
+      horizontal_source = masked_source_;
+    }
+    {
+      DebugGroup group(f, labels_, "sss cross-bilateral horizontal pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_cbf(*horizontal, run, horizontal_source, 0);
+      if (run.stencil != nullptr) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(masked_source_);  // alpha 0: the vertical pass gives these no weight either
+      }
+    }
+    {
+      DebugGroup group(f, labels_, "sss cross-bilateral vertical pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+      f.ActiveTexture(TEXTURE0 + kOriginalUnit);
+      f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
+      f.BindSampler(kOriginalUnit, sampler_);
+      if (write_back) f.ColorMask(1, 1, 1, 0);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_cbf(*vertical, run, intermediate_, 1);
+      if (run.stencil != nullptr && !write_back) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(run.color.name);
+      }
+    }
+  }
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
   return r;

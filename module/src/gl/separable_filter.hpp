@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "../math/cbf_constants.hpp"
+#include "../math/cbf_kernel.hpp"
 #include "../math/filter_constants.hpp"
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
@@ -31,6 +33,11 @@ struct FilterRun {
   math::PassConstants constants;
   bool follow_surface = false;
   bool identity = false;                   // nothing to blur: only copy into a separate output
+  // The cross-bilateral mode (Mikkelsen 2010) instead of the separable kernel.
+  bool cross_bilateral = false;
+  const math::CbfKernel* cbf_kernel = nullptr;
+  std::uint64_t cbf_kernel_revision = 0;
+  math::CbfConstants cbf;
 };
 
 class SeparableFilter {
@@ -65,10 +72,22 @@ class SeparableFilter {
     std::uint64_t kernel_revision = 0;  // 0: never uploaded
   };
   static constexpr int kVariantCount = 3 * 2 * 2;
+  struct CbfProgram {
+    GLuint program = 0;
+    GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
+          ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
+          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1;
+    std::uint64_t kernel_revision = 0;
+  };
+  static constexpr int kCbfVariantCount = 3 * 2;
 
   sss_result blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
                           std::string* message);
   sss_result run_identity(const FilterRun& run, std::string* message);
+  sss_result cbf_program(Outside outside, bool linear_depth, CbfProgram** out, std::string* message);
+  sss_result run_cbf(const FilterRun& run, std::string* message);
+  sss_result ensure_masked_source(int width, int height, std::string* message);
+  void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);
   sss_result ensure_intermediate(int width, int height, std::string* message);
   sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
   sss_result copy_stencil(const StencilInput& stencil, int width, int height, std::string* message);
@@ -91,6 +110,11 @@ class SeparableFilter {
   GLint stencil_format_ = 0;
   int stencil_width_ = 0, stencil_height_ = 0;
   GLuint intermediate_framebuffer_ = 0, output_framebuffer_ = 0, stencil_source_framebuffer_ = 0;
+  // Cross-bilateral mode: its programs, and (with a stencil) an RGBA32F copy of the colour whose
+  // alpha is 0 outside the stencil, so the horizontal pass can tell those neighbours apart.
+  std::array<CbfProgram, kCbfVariantCount> cbf_programs_{};
+  GLuint masked_source_ = 0, masked_framebuffer_ = 0;
+  int masked_width_ = 0, masked_height_ = 0;
 };
 
 }  // namespace sss::gl

@@ -1,0 +1,67 @@
+#include "radial_profile.hpp"
+
+#include <cmath>
+
+namespace sss::math {
+
+RadialProfile mikkelsen_profile() {
+  RadialProfile p;
+  p.name = "mikkelsen-2010";
+  p.spike = {0.15, 0.18, 0.20};
+  // One broad Gaussian per channel: each term carries one channel's whole broad share.
+  p.terms = {{2.3, {0.85, 0.0, 0.0}}, {1.4, {0.0, 0.82, 0.0}}, {1.1, {0.0, 0.0, 0.80}}};
+  return p;
+}
+
+RadialProfile skin_radial_profile() {
+  RadialProfile p;
+  p.name = "deon-skin";
+  const auto& g = skin_gaussians();
+  p.spike = g[0].weight;
+  p.spike_variance_mm2 = g[0].variance_mm2;
+  p.terms.assign(g.begin() + 1, g.end());
+  return p;
+}
+
+RadialProfile radial_profile(unsigned id) { return id == 1 ? skin_radial_profile() : mikkelsen_profile(); }
+
+std::vector<GaussianTerm> transmittance_terms(const RadialProfile& p) {
+  std::vector<GaussianTerm> terms;
+  if (p.spike_variance_mm2 > 0.0) terms.push_back({p.spike_variance_mm2, p.spike});
+  terms.insert(terms.end(), p.terms.begin(), p.terms.end());
+  return terms;
+}
+
+double transmittance(const std::vector<GaussianTerm>& terms, int channel, double s) {
+  double sum = 0.0;
+  for (const GaussianTerm& t : terms) sum += t.weight[static_cast<std::size_t>(channel)] * std::exp(-s * s / t.variance_mm2);
+  return sum;
+}
+
+double broad_variance_mm2(const RadialProfile& p, int channel) {
+  double weight = 0.0, moment = 0.0;
+  for (const GaussianTerm& t : p.terms) {
+    weight += t.weight[static_cast<std::size_t>(channel)];
+    moment += t.weight[static_cast<std::size_t>(channel)] * t.variance_mm2;
+  }
+  return weight > 0.0 ? moment / weight : 0.0;
+}
+
+double broad_marginal_integral(const RadialProfile& p, int channel, double a_mm, double b_mm) {
+  double sum = 0.0;
+  for (const GaussianTerm& t : p.terms) {
+    const double w = t.weight[static_cast<std::size_t>(channel)];
+    if (w == 0.0) continue;
+    const double k = std::sqrt(2.0 * t.variance_mm2);
+    sum += w * 0.5 * (std::erf(b_mm / k) - std::erf(a_mm / k));
+  }
+  return sum;
+}
+
+double broad_profile_2d(const RadialProfile& p, int channel, double r_mm) {
+  double sum = 0.0;
+  for (const GaussianTerm& t : p.terms) sum += t.weight[static_cast<std::size_t>(channel)] * gaussian_2d(t.variance_mm2, r_mm);
+  return sum;
+}
+
+}  // namespace sss::math
