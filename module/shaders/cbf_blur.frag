@@ -25,8 +25,8 @@ uniform vec2 u_xy_offset;             // projection m12, m13
 uniform vec4 u_viewport;              // x, y, width, height in pixels
 uniform float u_world_per_mm;         // world units per profile mm at strength 1
 uniform float u_orthographic;         // 1: the view direction is -Z everywhere
-uniform vec3 u_spike_blend;           // b: result = b · centre + (1 - b) · normalised sum
-uniform vec3 u_inv_two_variance;      // 1 / (2 σ²) per channel, mm⁻²
+uniform vec4 u_spike_blend;           // rgb: b, result = b · centre + (1 - b) · normalised sum
+uniform vec4 u_inv_two_variance;      // rgb: 1 / (2 σ²) per channel, mm⁻²
 
 out vec4 o_color;
 
@@ -109,11 +109,11 @@ void main() {
     // difference, relative to the profile weight of the tap's distance along the surface: exactly 1
     // on a plane, falling off across a depth step.
     float spread = offset * offset * sine2 - dz * dz;
-    vec3 w = u_kernel[i].rgb * exp(min(spread * u_inv_two_variance, vec3(0.0)));
+    vec3 w = u_kernel[i].rgb * exp(min(spread * u_inv_two_variance.rgb, vec3(0.0)));
     sum += w * tap.rgb;
     weight_sum += w;
   }
-  vec3 result = u_spike_blend * centre.rgb + (1.0 - u_spike_blend) * (sum / weight_sum);
+  vec3 result = u_spike_blend.rgb * centre.rgb + (1.0 - u_spike_blend.rgb) * (sum / weight_sum);
 #if SSS_OUTSIDE == 2
   o_color = vec4(result, texelFetch(u_original, pixel, 0).a);
 #else
