@@ -3,8 +3,8 @@
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
 # Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_OUTSIDE × SSS_LINEAR_DEPTH for the
-# cross-bilateral blur.
+# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS
+# for the cross-bilateral blur.
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(header "#version 330 core\n")
 set(failures 0)
@@ -40,8 +40,10 @@ endforeach()
 # The cross-bilateral blur: SSS_OUTSIDE 0..2 × SSS_LINEAR_DEPTH 0/1.
 foreach(outside 0 1 2)
   foreach(linear 0 1)
-    set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
-    validate("cbf_o${outside}_l${linear}" frag "${header}${defines}${cbf}")
+    foreach(normals 0 1)
+      set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_NORMALS ${normals}\n#define SSS_MAX_TAPS 65\n")
+      validate("cbf_o${outside}_l${linear}_n${normals}" frag "${header}${defines}${cbf}")
+    endforeach()
   endforeach()
 endforeach()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")

@@ -6,7 +6,8 @@
 // (alpha 0, which includes pixels outside the host's stencil) get no weight.
 //
 // Compile-time switches (prepended by the module): SSS_OUTSIDE and SSS_LINEAR_DEPTH as in
-// separable_blur.frag.
+// separable_blur.frag; SSS_NORMALS 1: the surface's orientation comes from the host's view-space
+// normal texture instead of the depth of the neighbouring pixels.
 
 uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
 uniform sampler2D u_depth;     // the host's depth
@@ -15,6 +16,9 @@ uniform sampler2D u_original;  // the host's colour, never attached to the targe
 #endif
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights of the broad part, a = offset in profile mm; centre first
 uniform int u_tap_count;
+#if SSS_NORMALS
+uniform sampler2D u_normals;   // view-space unit normal in xyz
+#endif
 uniform vec2 u_axis;                  // (1, 0) or (0, 1)
 uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
 uniform vec2 u_ndc_from_depth;        // z_ndc = depth · x + y
@@ -76,16 +80,22 @@ void main() {
   }
   vec3 p0 = view_point(gl_FragCoord.xy, d0);
 
-  // The surface's tangent in the plane of the axis and Z, from the neighbour whose depth is closer
-  // (one side of a depth step is the other surface), and the direction to the eye in that plane.
+  // The surface's tangent in the plane of the axis and Z (from the normal, or from the neighbour whose
+  // depth is closer: one side of a depth step is the other surface), and the direction to the eye.
+#if SSS_NORMALS
+  vec3 n = texelFetch(u_normals, pixel, 0).xyz;
+  float ta = n.z, tz = -dot(n.xy, u_axis);
+#else
   ivec2 step_texel = ivec2(u_axis);
   ivec2 lo = ivec2(floor(u_clamp.xy)), hi = ivec2(floor(u_clamp.zw));
   ivec2 tp = clamp(pixel + step_texel, lo, hi), tm = clamp(pixel - step_texel, lo, hi);
   float dp = depth_at(tp), dm = depth_at(tm);
-  bool plus = !(abs(dm - d0) < abs(dp - d0));
+  // At the viewport's edge the clamped neighbour on one side is the pixel itself: take the other.
+  bool plus = tm == pixel || (tp != pixel && !(abs(dm - d0) < abs(dp - d0)));
   ivec2 tn = plus ? tp : tm;
   vec3 pn = view_point(vec2(tn) + 0.5, plus ? dp : dm);
   float ta = dot(pn.xy - p0.xy, u_axis), tz = pn.z - p0.z;
+#endif
   float ea = u_orthographic > 0.5 ? 0.0 : -dot(p0.xy, u_axis);
   float ez = u_orthographic > 0.5 ? 1.0 : -p0.z;
   float cosine = abs(ta * ez - tz * ea) / (sqrt(ta * ta + tz * tz) * sqrt(ea * ea + ez * ez));

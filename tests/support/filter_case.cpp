@@ -55,6 +55,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   frame.depth_texture = depth;
   frame.output_texture = output;
   frame.stencil = c.use_stencil ? &stencil : nullptr;
+  frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
   outcome.result = sss_apply_frame(sss_, &frame);
   EXPECT_EQ(outcome.result, SSS_OK) << sss_last_error(sss_);
@@ -88,7 +89,8 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(c.settings.cbf_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
-    sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data());
+    sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
+                              c.normals.empty() ? nullptr : c.normals.data());
   } else {
     sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
   }

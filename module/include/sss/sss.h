@@ -24,7 +24,7 @@
  *   Saved and restored (SSS_STATE_LIST):
  *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
  *   - GL_DRAW_FRAMEBUFFER_BINDING, GL_READ_FRAMEBUFFER_BINDING, GL_RENDERBUFFER_BINDING
- *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
+ *   - GL_ACTIVE_TEXTURE; on texture units 0, 1, 2 and 3: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
  *   - GL_PIXEL_UNPACK_BUFFER_BINDING
  *   - GL_VIEWPORT
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
@@ -197,6 +197,11 @@ typedef struct sss_frame {
   const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
   int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
   uint32_t flags;            /**< SSS_FRAME_* */
+  /* Appended in 0.1 for the cross-bilateral mode (ignored by the separable mode). */
+  uint32_t normal_texture;   /**< 0: normals are reconstructed from depth; else GL_TEXTURE_2D, GL_RGBA16F or
+                                  GL_RGBA32F, same size: the view-space unit normal in xyz, each in [-1, 1]
+                                  (facing the camera: z > 0), w unused. Used only for the footprint's cosine
+                                  correction; a zero or non-finite normal means no correction */
 } sss_frame;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */
@@ -275,7 +280,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       next call rebuilds them in the context current then, so a host that
  *                                       recreates its context after a loss just carries on
  *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, not GL_TEXTURE_2D, a format outside
- *                                       the lists on sss_frame, or sizes that differ
+ *                                       the lists on sss_frame, or sizes that differ (normal_texture included,
+ *                                       whatever the mode)
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
  *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)

@@ -67,6 +67,15 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
     stencil->mask = frame.stencil->mask;
     run->stencil = stencil;
   }
+  if (frame.normal_texture != 0) {
+    r = query(ctx, frame.normal_texture, "normal_texture", &run->normals);
+    if (r != SSS_OK) return r;
+    if (!gl::is_color_format(run->normals.internal_format)) {
+      return wrong_format(ctx, "normal_texture", run->normals, "GL_RGBA16F or GL_RGBA32F");
+    }
+    r = same_size(ctx, "normal_texture", run->normals, run->color);
+    if (r != SSS_OK) return r;
+  }
   const int32_t* vp = frame.viewport;
   if (vp[2] == 0) {
     run->viewport = {0, 0, run->color.width, run->color.height};

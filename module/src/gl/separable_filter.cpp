@@ -11,7 +11,7 @@
 namespace sss::gl {
 
 namespace {
-constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
+constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3;
 
 // A tag in (0, 1), exact in float, different for each init() in the process (modulo 2^20).
 GLfloat next_sampler_tag() {
@@ -175,14 +175,16 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
   return SSS_OK;
 }
 
-sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, CbfProgram** out, std::string* message) {
-  const int index = static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0);
+sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
+                                        std::string* message) {
+  const int index = (static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0)) * 2 + (normals ? 1 : 0);
   CbfProgram& p = cbf_programs_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   char defines[128];
-  std::snprintf(defines, sizeof defines, "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_MAX_TAPS %d\n",
-                static_cast<int>(outside), linear_depth ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
   std::string log;
   const Functions& f = *gl_;
   p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::cbf_blur_frag, &log);
@@ -191,8 +193,8 @@ sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, CbfP
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[64];
-  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d", static_cast<int>(outside),
-                linear_depth ? 1 : 0);
+  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d", static_cast<int>(outside),
+                linear_depth ? 1 : 0, normals ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
@@ -211,7 +213,9 @@ sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, CbfP
   p.orthographic = f.GetUniformLocation(p.program, "u_orthographic");
   p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  p.normals = f.GetUniformLocation(p.program, "u_normals");
   f.UseProgram(p.program);
+  if (p.normals >= 0) f.Uniform1i(p.normals, static_cast<GLint>(kNormalUnit));
   f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
   f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
   if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
@@ -412,6 +416,11 @@ void SeparableFilter::draw_cbf(CbfProgram& p, const FilterRun& run, GLuint sourc
   f.ActiveTexture(TEXTURE0 + kDepthUnit);
   f.BindTexture(TEXTURE_2D, run.depth.name);
   f.BindSampler(kDepthUnit, sampler_);
+  if (run.normals.name != 0) {
+    f.ActiveTexture(TEXTURE0 + kNormalUnit);
+    f.BindTexture(TEXTURE_2D, run.normals.name);
+    f.BindSampler(kNormalUnit, sampler_);
+  }
   f.DrawArrays(TRIANGLES, 0, 3);
 }
 
@@ -509,9 +518,10 @@ sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) 
 
   CbfProgram* horizontal = nullptr;
   CbfProgram* vertical = nullptr;
-  sss_result r = cbf_program(Outside::write_centre, linear_depth, &horizontal, message);
+  const bool normals = run.normals.name != 0;
+  sss_result r = cbf_program(Outside::write_centre, linear_depth, normals, &horizontal, message);
   if (r == SSS_OK) {
-    r = cbf_program(write_back ? Outside::discard : Outside::copy_original, linear_depth, &vertical, message);
+    r = cbf_program(write_back ? Outside::discard : Outside::copy_original, linear_depth, normals, &vertical, message);
   }
   if (r == SSS_OK) r = ensure_intermediate(width, height, message);
   if (r == SSS_OK && run.stencil != nullptr) r = ensure_masked_source(width, height, message);

@@ -26,6 +26,7 @@ struct FilterRun {
   TextureInfo color;
   TextureInfo depth;
   TextureInfo output;                      // name 0: write back into color
+  TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
   const std::vector<math::KernelTap>* kernel = nullptr;
@@ -76,15 +77,15 @@ class SeparableFilter {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
           ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
-          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1;
+          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1;
     std::uint64_t kernel_revision = 0;
   };
-  static constexpr int kCbfVariantCount = 3 * 2;
+  static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   sss_result blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
                           std::string* message);
   sss_result run_identity(const FilterRun& run, std::string* message);
-  sss_result cbf_program(Outside outside, bool linear_depth, CbfProgram** out, std::string* message);
+  sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
   sss_result run_cbf(const FilterRun& run, std::string* message);
   sss_result ensure_masked_source(int width, int height, std::string* message);
   void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);

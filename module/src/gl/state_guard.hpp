@@ -8,8 +8,8 @@
 
 namespace sss::gl {
 
-// Texture units the module binds: 0 pass source, 1 depth, 2 original colour.
-constexpr int kUnitCount = 3;
+// Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
+constexpr int kUnitCount = 4;
 
 class StateGuard {
  public:

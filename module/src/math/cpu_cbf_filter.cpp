@@ -49,11 +49,29 @@ struct Pass {
   const Plane& depth;
   const uint8_t* mask;
   int axis;
+  const float* normals;
 
   int clamp_axis(int v, int a) const {
     const int lo = static_cast<int>(std::floor(a == 0 ? k.clamp_min[0] : k.clamp_min[1]));
     const int hi = static_cast<int>(std::floor(a == 0 ? k.clamp_max[0] : k.clamp_max[1]));
     return std::clamp(v, lo, hi);
+  }
+
+  // The in-plane tangent from the neighbour (one texel along the axis) whose depth is closer (one
+  // side of a depth step is the other surface).
+  void tangent(int x, int y, float d0, const ViewPoint& p0, float* ta, float* tz) const {
+    const int ax = axis == 0 ? 1 : 0, ay = axis == 0 ? 0 : 1;
+    const int xp = clamp_axis(x + ax, 0), yp = clamp_axis(y + ay, 1);
+    const int xm = clamp_axis(x - ax, 0), ym = clamp_axis(y - ay, 1);
+    const float dp = linearise_depth(k, depth.at(xp, yp, 0));
+    const float dm = linearise_depth(k, depth.at(xm, ym, 0));
+    // At the viewport's edge the clamped neighbour on one side is the pixel itself: take the other.
+    const bool plus_is_self = xp == x && yp == y, minus_is_self = xm == x && ym == y;
+    const bool plus = minus_is_self || (!plus_is_self && !(std::fabs(dm - d0) < std::fabs(dp - d0)));
+    const int xn = plus ? xp : xm, yn = plus ? yp : ym;
+    const ViewPoint pn = view_point(k, c, static_cast<float>(xn) + 0.5f, static_cast<float>(yn) + 0.5f, plus ? dp : dm);
+    *ta = axis == 0 ? pn.x - p0.x : pn.y - p0.y;
+    *tz = pn.z - p0.z;
   }
 
   bool pixel(int x, int y, Rgba* result) const {
@@ -66,17 +84,15 @@ struct Pass {
     const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
     const ViewPoint p0 = view_point(k, c, cx, cy, d0);
 
-    // The in-plane tangent from the neighbour (one texel along the axis) whose depth is closer.
-    const int ax = axis == 0 ? 1 : 0, ay = axis == 0 ? 0 : 1;
-    const int xp = clamp_axis(x + ax, 0), yp = clamp_axis(y + ay, 1);
-    const int xm = clamp_axis(x - ax, 0), ym = clamp_axis(y - ay, 1);
-    const float dp = linearise_depth(k, depth.at(xp, yp, 0));
-    const float dm = linearise_depth(k, depth.at(xm, ym, 0));
-    const bool plus = !(std::fabs(dm - d0) < std::fabs(dp - d0));
-    const int xn = plus ? xp : xm, yn = plus ? yp : ym;
-    const ViewPoint pn = view_point(k, c, static_cast<float>(xn) + 0.5f, static_cast<float>(yn) + 0.5f, plus ? dp : dm);
-    const float ta = axis == 0 ? pn.x - p0.x : pn.y - p0.y;
-    const float tz = pn.z - p0.z;
+    float ta = 0.0f, tz = 0.0f;
+    if (normals != nullptr) {
+      // The in-plane tangent is the normal's in-plane projection turned by 90°.
+      const float* n = normals + (static_cast<std::size_t>(y) * source.width + x) * 4;
+      ta = n[2];
+      tz = -(axis == 0 ? n[0] : n[1]);
+    } else {
+      tangent(x, y, d0, p0, &ta, &tz);
+    }
     const float ea = c.orthographic ? 0.0f : -(axis == 0 ? p0.x : p0.y);
     const float ez = c.orthographic ? 1.0f : -p0.z;
     const float cosine = footprint_cosine(ta, tz, ea, ez);
@@ -125,7 +141,7 @@ bool inside(const PassConstants& k, int x, int y) {
 }  // namespace
 
 void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, const CbfConstants& cbf,
-                    const CpuFilterImage& image, float* out) {
+                    const CpuFilterImage& image, float* out, const float* normals) {
   const int w = image.width, h = image.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   const Plane color{w, h, 4, image.color};
@@ -134,7 +150,7 @@ void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, con
   // Horizontal pass into the RGBA16F intermediate; pixels the mask excludes get alpha 0 there, so
   // the vertical pass gives them no weight either.
   std::vector<float> intermediate(count * 4);
-  const Pass horizontal{kernel, constants, cbf, color, depth, image.mask, 0};
+  const Pass horizontal{kernel, constants, cbf, color, depth, image.mask, 0, normals};
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
@@ -150,7 +166,7 @@ void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, con
   }
 
   const Plane half_plane{w, h, 4, intermediate.data()};
-  const Pass vertical{kernel, constants, cbf, half_plane, depth, image.mask, 1};
+  const Pass vertical{kernel, constants, cbf, half_plane, depth, image.mask, 1, normals};
   std::copy(image.color, image.color + count * 4, out);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
