@@ -2,6 +2,7 @@
 # the way the library does (a #version line, the variant's #defines, then the file) and validates
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
+#   [-DINTEGRATION_GLSL_DIR=<integration/glsl>]: the host-side includes too
 # Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
 # SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS
 # for the cross-bilateral blur.
@@ -46,6 +47,12 @@ foreach(outside 0 1 2)
     endforeach()
   endforeach()
 endforeach()
+# The host-side includes of integration/glsl, each under a small main that calls every function.
+if(INTEGRATION_GLSL_DIR)
+  file(READ "${INTEGRATION_GLSL_DIR}/sss_transmittance.glsl" transmittance)
+  set(main "uniform sampler2D m; uniform mat4 v, p; out vec4 o;\nvoid main() {\n  float t = sss_thickness(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005);\n  o = vec4(sss_transmittance(t, 0.012, 0.5, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0)), 1.0);\n}\n")
+  validate(sss_transmittance frag "${header}${transmittance}${main}")
+endif()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")
 if(failures GREATER 0)
   message(FATAL_ERROR "shader validation failed")
