@@ -16,6 +16,8 @@
 
 #include "filter_case.hpp"
 
+using namespace host_gl;
+
 namespace sss_test {
 namespace {
 
@@ -277,6 +279,41 @@ TEST_F(CrossBilateral, BadSettingsAreRejectedAndKeepTheOldOnes) {
     EXPECT_EQ(back.cbf_r_max_mm, good.cbf_r_max_mm);
     EXPECT_EQ(back.mode, good.mode);
   }
+}
+
+}  // namespace
+}  // namespace sss_test
+
+namespace sss_test {
+namespace {
+
+// A bad normal texture is rejected before anything is drawn, whatever the mode.
+TEST_F(CrossBilateral, BadNormalTextureIsRejectedAndLeavesTheColourUntouched) {
+  const SyntheticScene scene = relief();
+  const GLuint color = make_rgba32f(scene.width, scene.height, scene.color);
+  const GLuint depth = make_depth32f(scene.width, scene.height, scene.window_depth);
+  const GLuint wrong_format = make_texture(GL_R32F, scene.width, scene.height, GL_RED, GL_FLOAT, nullptr);
+  const GLuint wrong_size = make_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.0f));
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  for (uint32_t mode : {SSS_MODE_SEPARABLE, SSS_MODE_CROSS_BILATERAL}) {
+    sss_settings s = cbf_settings();
+    s.mode = mode;
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    for (GLuint normals : {wrong_format, wrong_size, 987654u}) {
+      sss_frame frame = {};
+      frame.struct_size = sizeof frame;
+      frame.color_texture = color;
+      frame.depth_texture = depth;
+      frame.normal_texture = normals;
+      EXPECT_EQ(sss_apply_frame(sss_, &frame), SSS_ERROR_INVALID_TEXTURE);
+      EXPECT_NE(std::string(sss_last_error(sss_)).find("normal_texture"), std::string::npos) << sss_last_error(sss_);
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    }
+  }
+  const std::vector<float> after = read_rgba(color, scene.width, scene.height);
+  EXPECT_EQ(after, scene.color);
 }
 
 }  // namespace
