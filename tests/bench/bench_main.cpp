@@ -34,7 +34,7 @@ namespace sss_bench {
 namespace {
 
 struct MethodConfig {
-  std::string kind;  // "separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"
+  std::string kind;  // "separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians", "exact-2d"
   int taps = 0;
   bool follow_surface = false;
 };
@@ -48,6 +48,9 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // What the state save and restore costs: the paper's default kernel once more, with the host
   // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
   configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
+  // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
+  // non-translucent neighbours), so no follow-surface variants.
+  for (int taps : o.cbf_taps) configs.push_back({"cross-bilateral", taps, false});
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
   return configs;
 }
@@ -58,6 +61,7 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
   if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
+  if (c.kind == "cross-bilateral") return make_cross_bilateral_method(loader, c.taps);
   return make_exact_method();
 }
 

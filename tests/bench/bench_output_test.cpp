@@ -70,7 +70,8 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
     }
     EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
   }
-  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"}));
+  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians",
+                                            "exact-2d"}));
   EXPECT_EQ(scenes.size(), 10u);
 }
 

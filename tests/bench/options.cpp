@@ -19,6 +19,7 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --scenes a,b,...      scenes (default: all canonical scenes)
   --taps n,n,...        separable tap counts (odd, 3..65)
   --gaussian-taps n,... taps per pass of the sum of Gaussians
+  --cbf-taps n,...      taps per pass of the cross-bilateral mode (odd, 3..65; default 13)
   --follow on|off|both  follow-surface settings to run (default both)
   --no-exact            do not time the exact 2D filter as a method (it stays the reference)
   --warmup N            untimed frames before timing (default: mode's)
@@ -79,6 +80,7 @@ void apply_mode_defaults(Options* o) {
     o->size_scenes = {{}};
     o->separable_taps = {5, 9, 17, 33, 65};
     o->gaussian_taps = {7};
+    o->cbf_taps = {13};
     o->warmup = 1;
     o->repetitions = 3;
   } else {
@@ -88,6 +90,7 @@ void apply_mode_defaults(Options* o) {
     o->size_scenes = {{}, {"head-close", "head-mid", "head-far", "empty"}};
     o->separable_taps = {5, 9, 11, 17, 25, 33, 65};
     o->gaussian_taps = {7, 13};
+    o->cbf_taps = {13, 25};
     o->warmup = 3;
     o->repetitions = 15;
   }
@@ -108,6 +111,7 @@ Options parse_options(int argc, char** argv) {
       {"quick", no_argument, nullptr, 'q'},       {"full", no_argument, nullptr, 'F'},
       {"size", required_argument, nullptr, 's'},  {"scenes", required_argument, nullptr, 'S'},
       {"taps", required_argument, nullptr, 't'},  {"gaussian-taps", required_argument, nullptr, 'g'},
+      {"cbf-taps", required_argument, nullptr, 'C'},
       {"follow", required_argument, nullptr, 'f'}, {"no-exact", no_argument, nullptr, 'E'},
       {"warmup", required_argument, nullptr, 'w'}, {"reps", required_argument, nullptr, 'r'},
       {"cpu-reference-pixels", required_argument, nullptr, 'c'},
@@ -135,6 +139,12 @@ Options parse_options(int argc, char** argv) {
         }
         break;
       case 'g': o.gaussian_taps = parse_ints(arg, "gaussian tap count"); break;
+      case 'C':
+        o.cbf_taps = parse_ints(arg, "cross-bilateral tap count");
+        for (int t : o.cbf_taps) {
+          if (t < 3 || t > 65 || t % 2 == 0) usage_error("cross-bilateral taps must be odd in [3, 65]: " + std::to_string(t));
+        }
+        break;
       case 'f':
         if (arg == "on") o.follow_surface = {true};
         else if (arg == "off") o.follow_surface = {false};
