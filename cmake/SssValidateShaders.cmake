@@ -50,7 +50,7 @@ endforeach()
 # The host-side includes of integration/glsl, each under a small main that calls every function.
 if(INTEGRATION_GLSL_DIR)
   file(READ "${INTEGRATION_GLSL_DIR}/sss_transmittance.glsl" transmittance)
-  set(main "uniform sampler2D m; uniform mat4 v, p; out vec4 o;\nvoid main() {\n  float t = sss_thickness(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005);\n  o = vec4(sss_transmittance(t, 0.012, 0.5, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0)), 1.0);\n}\n")
+  set(main "uniform sampler2D m; uniform mat4 v, p; out vec4 o;\nvoid main() {\n  float t = sss_thickness(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005) + sss_thickness_linear(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005);\n  o = vec4(sss_transmittance(t, 0.012, 0.5, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0)), 1.0);\n}\n")
   validate(sss_transmittance frag "${header}${transmittance}${main}")
 endif()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")

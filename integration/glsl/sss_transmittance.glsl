@@ -15,11 +15,10 @@
 // Units and inputs:
 //   world units   the host's (metres, centimetres, ...): width, thickness, shrink and the light's
 //                 distance map all use them. width is sss_settings.width (1 profile mm = 2/3 width).
-//   distance map  a 2D texture holding, per texel, the light-space distance -z_light of the first
-//                 surface the light sees (world units; R16F/R32F, or a colour target of the shadow
-//                 pass). Hardware shadow depth must be linearised by the host into this form.
-//   light_view    world -> light view (the light looks down -Z); light_view_projection its
-//                 projection times it: both as the shadow pass used them.
+//   shadow map    the light's depth texture as its shadow pass wrote it (sss_thickness), or a map of
+//                 light-space distances in world units (sss_thickness_linear).
+//   light_view    world -> light view (the light looks down -Z) and light_projection: both as the
+//                 shadow pass used them (it rendered with light_projection * light_view).
 //   translucency  0..1 per pixel or material: 1 lets the most light through (thinner look).
 //   N, L          world-space unit normal, unit direction from the point to the light.
 // The result multiplies the light's colour, attenuation and the albedo, like diffuse light, and is
@@ -42,17 +41,32 @@ vec3 sss_transmittance_profile(float s) {
   return sum;
 }
 
-// The thickness (world units) the light crosses to reach `world_position`, from the light's
-// distance map. `shrink` (world units) pulls the point inward along the normal first: the
-// reference uses 0.005 for its head scene in metres-like units; about a shadow-map texel's size.
-float sss_thickness(sampler2D light_distance_map, mat4 light_view, mat4 light_view_projection, vec3 world_position,
+// The thickness (world units) the light crosses to reach `world_position`, from the light's shadow
+// map: the hardware depth the shadow pass wrote (GL's default depth range, [0, 1] from NDC [-1, 1];
+// sample it through a sampler WITHOUT compare mode), linearised with the light's projection.
+// `shrink` (world units) pulls the point inward along the normal first: the reference uses 0.005
+// for its head scene; about one or two shadow-map texels is right (less: acne, more: thin parts
+// look thicker). Orthographic (directional) and perspective (spot) light projections both work.
+float sss_thickness(sampler2D light_depth_map, mat4 light_view, mat4 light_projection, vec3 world_position,
                     vec3 world_normal, float shrink) {
-  vec4 inside = vec4(world_position - shrink * world_normal, 1.0);
-  vec4 clip = light_view_projection * inside;
+  vec4 inside = light_view * vec4(world_position - shrink * world_normal, 1.0);
+  vec4 clip = light_projection * inside;
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-  float first_surface = texture(light_distance_map, uv).r;
-  float here = -(light_view * inside).z;
-  return abs(here - first_surface);
+  float zn = texture(light_depth_map, uv).r * 2.0 - 1.0;
+  // View z of the first surface from NDC z: z = (m14 - zn·m15) / (zn·m11 - m10), column-major m[c][r].
+  float first_z = (light_projection[3][2] - zn * light_projection[3][3]) /
+                  (zn * light_projection[2][3] - light_projection[2][2]);
+  return abs(inside.z - first_z);
+}
+
+// The same from a map that holds the light-space distance -z_light of the first surface directly
+// (world units, R16F/R32F or a colour target of the shadow pass).
+float sss_thickness_linear(sampler2D light_distance_map, mat4 light_view, mat4 light_projection,
+                           vec3 world_position, vec3 world_normal, float shrink) {
+  vec4 inside = light_view * vec4(world_position - shrink * world_normal, 1.0);
+  vec4 clip = light_projection * inside;
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  return abs(-inside.z - texture(light_distance_map, uv).r);
 }
 
 // Transmitted light factor (rgb) for a point `thickness` world units behind the lit surface.

@@ -34,15 +34,15 @@ std::string read_include() {
 // One pixel per thickness: the fragment at x sits on the slab's back face, `thickness(x)` behind
 // the front face the light sees at distance 2 (light at the origin looking down -Z, orthographic).
 constexpr const char* kFragmentMain = R"(
-uniform sampler2D u_distance_map;
+uniform sampler2D u_map;
 uniform float u_width, u_translucency, u_shrink;
-uniform mat4 u_light_view, u_light_view_projection;
+uniform mat4 u_light_view, u_light_projection;
 out vec4 o_color;
 void main() {
   float thickness = (gl_FragCoord.x - 0.5) * 0.002;
   vec3 position = vec3(0.1, -0.2, -(2.0 + thickness));
   vec3 normal = vec3(0.0, 0.0, -1.0);  // the back face looks away from the light
-  float t = sss_thickness(u_distance_map, u_light_view, u_light_view_projection, position, normal, u_shrink);
+  float t = SSS_TEST_THICKNESS(u_map, u_light_view, u_light_projection, position, normal, u_shrink);
   o_color = vec4(sss_transmittance(t, u_width, u_translucency, normal, vec3(0.0, 0.0, 1.0)), t);
 }
 )";
@@ -51,13 +51,22 @@ using Transmittance = GlTest;
 
 TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
   for (uint32_t profile : {SSS_PROFILE_SKIN_DEON, SSS_PROFILE_MIKKELSEN_2010}) {
+   for (bool hardware_depth : {true, false}) {
     SCOPED_TRACE(profile);
-    const std::string fragment = "#version 330 core\n" + read_include() + kFragmentMain;
+    SCOPED_TRACE(hardware_depth);
+    const std::string fragment = std::string("#version 330 core\n#define SSS_TEST_THICKNESS ") +
+                                 (hardware_depth ? "sss_thickness" : "sss_thickness_linear") + "\n" +
+                                 read_include() + kFragmentMain;
     const GLuint program = build_program("transmittance test", kFullscreenVertexShader, fragment.c_str());
     ASSERT_NE(program, 0u);
     constexpr int kWidth = 64;
+    // Orthographic light looking down -Z from the origin, near 0.5, far 10: the front face at
+    // distance 2 is window depth (2 - 0.5) / 9.5 in a depth map, or 2 in a distance map.
+    const float near_plane = 0.5f, far_plane = 10.0f;
     const std::vector<float> distance_map(16 * 16, 2.0f);
-    const GLuint map = make_texture(GL_R32F, 16, 16, GL_RED, GL_FLOAT, distance_map.data());
+    const std::vector<float> depth_map(16 * 16, (2.0f - near_plane) / (far_plane - near_plane));
+    const GLuint map = hardware_depth ? make_depth32f(16, 16, depth_map)
+                                      : make_texture(GL_R32F, 16, 16, GL_RED, GL_FLOAT, distance_map.data());
     const GLuint target = make_rgba32f(kWidth, 1, std::vector<float>(kWidth * 4, 0.0f));
     GLuint fbo = 0, vao = 0;
     glGenFramebuffers(1, &fbo);
@@ -77,13 +86,13 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     glUniform1f(glGetUniformLocation(program, "u_translucency"), translucency);
     glUniform1f(glGetUniformLocation(program, "u_shrink"), shrink);
     const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    // Orthographic light: x, y in [-1, 1] map to the map; z does not matter for the lookup.
-    const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -0.1f, 0, 0, 0, 0, 1};
+    const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -2.0f / (far_plane - near_plane), 0,
+                                  0, 0, -(far_plane + near_plane) / (far_plane - near_plane), 1};
     glUniformMatrix4fv(glGetUniformLocation(program, "u_light_view"), 1, GL_FALSE, identity);
-    glUniformMatrix4fv(glGetUniformLocation(program, "u_light_view_projection"), 1, GL_FALSE, projection);
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_light_projection"), 1, GL_FALSE, projection);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, map);
-    glUniform1i(glGetUniformLocation(program, "u_distance_map"), 0);
+    glUniform1i(glGetUniformLocation(program, "u_map"), 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     const std::vector<float> out = read_rgba(target, kWidth, 1);
@@ -96,6 +105,8 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     for (int x = 0; x < kWidth; ++x) {
       // The point is pulled `shrink` towards the light: the thickness crossed is that much less.
       const double thickness = std::fabs(x * 0.002 - shrink);
+      // 1e-5: float cancellation near distance 2 (ulp 2.4e-7) and, for the depth map, its
+      // linearisation (fp32 depth: 6e-8 of the 9.5 range).
       EXPECT_NEAR(out[static_cast<std::size_t>(x) * 4 + 3], thickness, 1e-5);
       // The profile at the thickness the GPU found (checked just above): the thickness is a difference
       // of two distances near 2 (float ulp 2.4e-7) that the scale 8.25·0.8/0.012 = 550 magnifies, so
@@ -113,6 +124,9 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
       EXPECT_GT(out[5 * 4], 0.01f);
       EXPECT_LT(out[50 * 4], 1e-4f);
     }
+    TearDown();
+    SetUp();
+   }
   }
 }
 
