@@ -77,6 +77,9 @@ void print_usage(const char *program) {
       "  --width-scale F     multiply the physical SSS width (default 1)\n"
       "  --no-follow-surface turn the follow-surface depth test off\n"
       "  --no-stencil        mask by the diffuse alpha alone instead of the stencil\n"
+      "  --cross-bilateral   Mikkelsen's cross-bilateral mode instead of the separable kernel\n"
+      "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
+      "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
@@ -93,7 +96,8 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
-    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kHelp
+    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kHelp, kCrossBilateral,
+    kTranslucency, kBackLight
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -115,6 +119,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"frames", required_argument, nullptr, kFrames},
       {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
       {"help", no_argument, nullptr, kHelp},
+      {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
+      {"translucency", optional_argument, nullptr, kTranslucency},
+      {"back-light", no_argument, nullptr, kBackLight},
       {nullptr, 0, nullptr, 0}};
 
   opterr = 1;
@@ -188,6 +195,21 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
              fail("--screenshot-frame wants a frame number >= 0", optarg);
         break;
       case kHelp: return ParseResult::kHelp;
+      case kCrossBilateral: o->cross_bilateral = true; break;
+      case kBackLight: o->back_light = true; break;
+      case kTranslucency: {
+        o->translucency = true;
+        if (optarg != nullptr) {
+          char *end = nullptr;
+          const float v = std::strtof(optarg, &end);
+          if (end == optarg || *end != '\0' || !(v >= 0.0f && v <= 1.0f)) {
+            std::fprintf(stderr, "sss_demo: --translucency takes a number in [0, 1]: %s\n", optarg);
+            return ParseResult::kError;
+          }
+          o->translucency_amount = v;
+        }
+        break;
+      }
       default: return ParseResult::kError;  // getopt_long already printed what was wrong
     }
     if (!ok) return ParseResult::kError;

@@ -23,6 +23,10 @@ struct Options {
   int samples = 0;               // SSS taps per pass; 0: the library's default
   bool use_stencil = true;
   bool follow_surface = true;
+  bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
+  bool translucency = false;     // transmittance through thin parts
+  float translucency_amount = 0.95f;
+  bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
   float width_scale = 1.0f;      // multiplies the physical width
   float exposure = 1.0f;
 

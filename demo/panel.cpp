@@ -47,6 +47,11 @@ void sss_section(WindowState *s) {
   ImGui::Checkbox("follow surface", &c.follow_surface);
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
+  ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
+  if (c.cross_bilateral) {
+    ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"
+                        "  follow surface apply to the separable mode only");
+  }
 }
 
 void view_section(WindowState *s) {
@@ -139,11 +144,14 @@ void draw_panel(WindowState *s) {
   }
   if (ImGui::CollapsingHeader("Subsurface scattering", ImGuiTreeNodeFlags_DefaultOpen)) sss_section(s);
   if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, MSAA, translucency")) {
-    // The marked place for the controls of later issues; nothing here is wired to anything yet.
+    // The marked place for the controls of later issues; translucency is wired, the rest not yet.
     ImGui::TextDisabled("kernel family and measured materials");
     ImGui::TextDisabled("jittered taps");
     ImGui::TextDisabled("MSAA");
-    ImGui::TextDisabled("translucency (transmittance from the shadow maps)");
+    ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
+    ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
+    ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"
+                        "  --back-light puts a light behind the head");
   }
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) view_section(s);
   if (ImGui::CollapsingHeader("Pass times", ImGuiTreeNodeFlags_DefaultOpen)) timing_section(s);

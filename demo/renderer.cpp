@@ -37,7 +37,12 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
 
   run_shadow_pass(r->shadows, *r->scene, r->gpu);
   lap(&t.shadow_ms);
-  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera);
+  TransmittanceInputs transmittance;
+  transmittance.enabled = controls.translucency;
+  transmittance.width = sss_width_for_world_units_per_mm(r->scene->world_units_per_mm) * controls.width_scale;
+  transmittance.translucency = controls.translucency_amount;
+  transmittance.profile = blur_profile(controls);
+  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance);
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
 

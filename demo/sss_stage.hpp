@@ -21,7 +21,17 @@ struct SssControls {
   int samples = SSS_SAMPLES_MEDIUM;
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
+  bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL (Mikkelsen 2010) instead of the separable kernel
+  // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
+  // with the profile the blur uses.
+  bool translucency = false;
+  float translucency_amount = 0.95f;  // the include's `translucency`, 0..1 (1: the most light through)
 };
+
+// The radial profile the blur of these controls uses (for the transmittance terms): Mikkelsen's in
+// the cross-bilateral mode (the library's default cbf_profile), d'Eon's skin profile otherwise (the
+// separable kernel's base).
+std::uint32_t blur_profile(const SssControls &controls);
 
 // The library's defaults (sss_default_settings) as controls.
 SssControls default_sss_controls();
