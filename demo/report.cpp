@@ -49,7 +49,20 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
                 static_cast<double>(s.falloff[0]), static_cast<double>(s.falloff[1]),
                 static_cast<double>(s.falloff[2]), s.samples, (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
                 c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0");
-  return text;
+  std::string result = text;
+  if (s.mode == SSS_MODE_CROSS_BILATERAL) {
+    std::snprintf(text, sizeof text,
+                  "; cross-bilateral mode (Mikkelsen 2010): %d taps, r_max %.2f mm, profile %u (strength, falloff, "
+                  "taps and follow-surface above are not used)",
+                  s.cbf_taps, static_cast<double>(s.cbf_r_max_mm), s.cbf_profile);
+    result += text;
+  }
+  if (c.translucency) {
+    std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",
+                  static_cast<double>(c.translucency_amount));
+    result += text;
+  }
+  return result;
 }
 
 PngText image_text(const DemoScene &scene, const std::string &title, const std::string &description,
