@@ -80,14 +80,30 @@ class Grid {
       : stride_(stride), width_(width), height_(height) {
     reference_ = decimate(reference);
     mask_.resize(static_cast<std::size_t>(reference_.width) * reference_.height);
+    band_.resize(mask_.size());
     for (int y = 0; y < reference_.height; ++y) {
       for (int x = 0; x < reference_.width; ++x) {
-        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(y * stride_ + stride_ / 2) * width_ +
-                                             static_cast<std::size_t>(x * stride_ + stride_ / 2)];
+        const int fx = x * stride_ + stride_ / 2, fy = y * stride_ + stride_ / 2;
+        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(fy) * width_ + static_cast<std::size_t>(fx)];
+        band_[reference_.index(x, y)] = mask_[reference_.index(x, y)] != 0 && near_outside(mask, fx, fy);
       }
     }
   }
   ErrorMetrics compare(const RgbImage& result) const { return compare_images(decimate(result), reference_, mask_.data()); }
+  // results.hpp's halo_energy on the grid's pixels.
+  double halo(const RgbImage& result, const RgbImage& input) const {
+    const RgbImage small = decimate(result), in = decimate(input);
+    double leaked = 0.0, reference = 0.0;
+    for (std::size_t i = 0; i < band_.size(); ++i) {
+      if (!band_[i]) continue;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double bound = std::max(reference_.rgb[i * 3 + c], in.rgb[i * 3 + c]);
+        leaked += std::max(0.0, small.rgb[i * 3 + c] - bound);
+        reference += reference_.rgb[i * 3 + c];
+      }
+    }
+    return reference > 0.0 ? leaked / reference : 0.0;
+  }
   std::size_t selected() const { return static_cast<std::size_t>(std::count(mask_.begin(), mask_.end(), 1)); }
 
  private:
@@ -101,9 +117,21 @@ class Grid {
     }
     return small;
   }
+  // A non-translucent pixel within kHaloBand pixels (Chebyshev) of (x, y).
+  bool near_outside(const std::vector<uint8_t>& mask, int x, int y) const {
+    for (int dy = -kHaloBand; dy <= kHaloBand; ++dy) {
+      for (int dx = -kHaloBand; dx <= kHaloBand; ++dx) {
+        const int sx = x + dx, sy = y + dy;
+        if (sx < 0 || sy < 0 || sx >= width_ || sy >= height_) continue;
+        if (mask[static_cast<std::size_t>(sy) * width_ + static_cast<std::size_t>(sx)] == 0) return true;
+      }
+    }
+    return false;
+  }
   int stride_, width_, height_;
   RgbImage reference_;
   std::vector<uint8_t> mask_;
+  std::vector<bool> band_;
 };
 
 // Rows [y0, y1) around the middle translucent row holding about 1/stride² of the translucent pixels.
@@ -213,6 +241,7 @@ int run(const Options& options) {
       }
 
       const Grid grid(reference.stride, reference_image, scene.mask, width, height);
+      const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
       for (const MethodConfig& config : configs) {
         ResultRow row;
         row.scene = scene_name;
@@ -258,6 +287,7 @@ int run(const Options& options) {
           row.passes = method->passes();
           const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
           e = grid.compare(result);
+          row.halo_energy = grid.halo(result, input_image);
           if (pictured && is_pictured_method(row)) {
             const std::string stem = options.out + "/" + picture_stem(row);
             write_tonemapped_png(stem + ".png", result);

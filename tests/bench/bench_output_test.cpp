@@ -55,7 +55,7 @@ TEST(BenchQuickOutput, FilesExist) {
 
 TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   const Csv csv = read_csv(kDir + "/results.csv");
-  for (const char* column : {"scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms",
+  for (const char* column : {"halo_energy", "scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms",
                              "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
     EXPECT_NE(std::find(csv.header.begin(), csv.header.end(), column), csv.header.end()) << column;
   }
@@ -64,7 +64,8 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   for (const auto& row : csv.rows) {
     methods.insert(row.at("method"));
     scenes.insert(row.at("scene"));
-    for (const char* numeric : {"time_ms", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
+    for (const char* numeric : {"time_ms", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim",
+                                "halo_energy"}) {
       const double v = std::stod(row.at(numeric));
       EXPECT_TRUE(std::isfinite(v)) << numeric << " in " << row.at("scene") << " " << row.at("method");
     }
@@ -102,3 +103,21 @@ TEST(BenchQuickOutput, ErrorsMakeSense) {
 }
 
 }  // namespace
+
+// The depth step: the background is bright and behind; the cross-bilateral mode must leak less light
+// across the silhouette than the separable filter without a depth test, and no more than with it.
+TEST(BenchQuickOutput, CrossBilateralLeaksLeastAtTheDepthStep) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  double follow = -1.0, none = -1.0, cbf = -1.0;
+  for (const auto& row : csv.rows) {
+    if (row.at("scene") != "depth-step") continue;
+    const double halo = std::stod(row.at("halo_energy"));
+    if (row.at("method") == "separable" && row.at("taps") == "17") (row.at("follow_surface") == "1" ? follow : none) = halo;
+    if (row.at("method") == "cross-bilateral") cbf = halo;
+  }
+  ASSERT_GE(follow, 0.0);
+  ASSERT_GE(none, 0.0);
+  ASSERT_GE(cbf, 0.0);
+  EXPECT_LT(cbf, none);
+  EXPECT_LE(cbf, follow + 1e-6);
+}
