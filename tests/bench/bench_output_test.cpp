@@ -73,7 +73,7 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   }
   EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians",
                                             "exact-2d"}));
-  EXPECT_EQ(scenes.size(), 10u);
+  EXPECT_EQ(scenes.size(), 13u);
 }
 
 TEST(BenchQuickOutput, JsonMatchesCsv) {
