@@ -248,6 +248,44 @@ TEST_F(CrossBilateral, SettingsRoundTrip) {
   EXPECT_EQ(back.cbf_r_max_mm, s.cbf_r_max_mm);
 }
 
+// The kernel follows the cbf fields even when they change while the separable mode is selected.
+TEST_F(CrossBilateral, KernelFollowsFieldsChangedInTheOtherMode) {
+  FilterCase c;
+  c.settings = cbf_settings(SSS_PROFILE_MIKKELSEN_2010, 13);
+  c.separate_output = true;
+  sss_settings separable = c.settings;
+  separable.mode = SSS_MODE_SEPARABLE;
+  separable.cbf_taps = 21;
+  separable.cbf_profile = SSS_PROFILE_SKIN_DEON;
+  // The 21-tap skin kernel set directly (run_case creates the context), then the same context taken
+  // through 13 taps, the separable mode with the fields changed there, and back.
+  FilterCase direct = c;
+  direct.settings.cbf_taps = 21;
+  direct.settings.cbf_profile = SSS_PROFILE_SKIN_DEON;
+  const FilterOutcome expected = run_case(relief(), direct);
+  ASSERT_EQ(expected.result, SSS_OK);
+  sss_settings back = separable;
+  back.mode = SSS_MODE_CROSS_BILATERAL;
+  sss_destroy(sss_);
+  sss_ = create_sss();  // a fresh context: its first kernel is the 13-tap one
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_settings(sss_, &c.settings), SSS_OK);
+  ASSERT_EQ(sss_set_settings(sss_, &separable), SSS_OK);
+  ASSERT_EQ(sss_set_settings(sss_, &back), SSS_OK);        // must be the 21-tap skin kernel now
+  const SyntheticScene scene = relief();
+  const GLuint color = make_rgba32f(scene.width, scene.height, scene.color);
+  const GLuint depth = make_depth32f(scene.width, scene.height, scene.window_depth);
+  const GLuint output = make_rgba32f(scene.width, scene.height, std::vector<float>(scene.color.size(), -7.0f));
+  ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+  sss_frame frame = {};
+  frame.struct_size = sizeof frame;
+  frame.color_texture = color;
+  frame.depth_texture = depth;
+  frame.output_texture = output;
+  ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(read_rgba(output, scene.width, scene.height), expected.gpu);
+}
+
 TEST_F(CrossBilateral, BadSettingsAreRejectedAndKeepTheOldOnes) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);

@@ -57,16 +57,19 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   if (r != SSS_OK) return r;
   const sss::math::FilterSettings next = to_filter_settings(*s);
   const sss::math::FilterSettings& old = ctx->settings;
-  const sss::math::FilterSettings old_cbf = ctx->settings;
   const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
   ctx->settings = next;
   if (kernel_changed) {
     ctx->kernel = sss::math::separable_kernel(next.samples, next.strength, next.falloff);
     ++ctx->kernel_revision;
   }
-  if (next.cross_bilateral && (ctx->cbf_kernel.taps.empty() || next.cbf_taps != old_cbf.cbf_taps ||
-                               next.cbf_r_max_mm != old_cbf.cbf_r_max_mm || next.cbf_profile != old_cbf.cbf_profile)) {
+  // Built lazily (only in the cross-bilateral mode) and compared with what it was built for, not with
+  // the previous settings: the cbf fields may change while the separable mode is selected.
+  const sss::math::CbfKernel& built = ctx->cbf_kernel;
+  if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
+                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
     ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+    ctx->cbf_kernel_profile = next.cbf_profile;
     ++ctx->cbf_kernel_revision;
   }
   return SSS_OK;

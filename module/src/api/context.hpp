@@ -24,7 +24,8 @@ struct sss_context {
   sss::math::FilterSettings settings;
   std::vector<sss::math::KernelTap> kernel;
   std::uint64_t kernel_revision = 1;
-  sss::math::CbfKernel cbf_kernel;  // built when the cross-bilateral settings change
+  sss::math::CbfKernel cbf_kernel;  // built for cbf_kernel_profile and its own taps / r_max
+  unsigned cbf_kernel_profile = 0;
   std::uint64_t cbf_kernel_revision = 1;
 
   sss::math::Matrix4 projection{};
