@@ -17,7 +17,7 @@
 
 #include "gl_fixture.hpp"
 #include "host_gl_util.hpp"
-#include "math/radial_profile.hpp"
+#include "math/spike_gaussian_profile.hpp"
 
 using namespace host_gl;
 
@@ -100,7 +100,7 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     glDeleteVertexArrays(1, &vao);
     glDeleteProgram(program);
 
-    const auto cpu_terms = sss::math::transmittance_terms(sss::math::radial_profile(profile));
+    const auto cpu_terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
     double worst = 0.0;
     for (int x = 0; x < kWidth; ++x) {
       // The point is pulled `shrink` towards the light: the thickness crossed is that much less.

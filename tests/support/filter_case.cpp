@@ -86,7 +86,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.output_is_half = c.half_color && !c.separate_output;
   outcome.cpu.resize(outcome.input.size());
   if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
-    const auto cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(c.settings.cbf_profile),
+    const auto cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(c.settings.cbf_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
     sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),

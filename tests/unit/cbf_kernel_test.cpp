@@ -8,7 +8,7 @@
 #include "math/cbf_constants.hpp"
 #include "math/cbf_kernel.hpp"
 #include "math/cpu_cbf_filter.hpp"
-#include "math/radial_profile.hpp"
+#include "math/spike_gaussian_profile.hpp"
 #include "sss/sss.h"
 #include "synthetic_scene.hpp"
 
@@ -16,8 +16,8 @@ namespace {
 
 using namespace sss::math;
 
-TEST(RadialProfile, EachChannelSumsToOne) {
-  for (const RadialProfile& p : {mikkelsen_profile(), skin_radial_profile()}) {
+TEST(SpikeGaussianProfile, EachChannelSumsToOne) {
+  for (const SpikeGaussianProfile& p : {mikkelsen_profile(), skin_spike_gaussian_profile()}) {
     for (int c = 0; c < 3; ++c) {
       double sum = p.spike[static_cast<std::size_t>(c)];
       for (const GaussianTerm& t : p.terms) sum += t.weight[static_cast<std::size_t>(c)];
@@ -29,7 +29,7 @@ TEST(RadialProfile, EachChannelSumsToOne) {
 }
 
 TEST(CbfKernel, TapsSplitRedProbabilityEvenly) {
-  const RadialProfile p = mikkelsen_profile();
+  const SpikeGaussianProfile p = mikkelsen_profile();
   std::vector<double> bounds;
   const std::vector<double> offsets = cbf_tap_offsets(p, 13, 4.5, &bounds);
   ASSERT_EQ(offsets.size(), 13u);
@@ -79,7 +79,7 @@ TEST(CbfKernel, WeightsSpikeAndVariances) {
 
 TEST(CbfKernel, AnyProfilePlugsIn) {
   // The six-Gaussian skin profile and a wide r_max, many taps: still a valid kernel.
-  const CbfKernel k = cbf_kernel(skin_radial_profile(), 65, 8.0);
+  const CbfKernel k = cbf_kernel(skin_spike_gaussian_profile(), 65, 8.0);
   ASSERT_EQ(k.taps.size(), 65u);
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;
@@ -118,7 +118,7 @@ TEST(Transmittance, TermsComeFromTheProfile) {
   EXPECT_EQ(sss_profile_transmittance_terms(0, nullptr, 8, &count), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_profile_transmittance_terms(0, terms, 8, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   // At zero thickness the skin profile transmits all of each channel (weights sum to 1).
-  const auto t = transmittance_terms(skin_radial_profile());
+  const auto t = transmittance_terms(skin_spike_gaussian_profile());
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(transmittance(t, c, 0.0), 1.0, 1e-12);
   EXPECT_LT(transmittance(t, 2, 1.0), transmittance(t, 0, 1.0));  // red travels furthest
 }

@@ -68,7 +68,7 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   const sss::math::CbfKernel& built = ctx->cbf_kernel;
   if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
                                built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
-    ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::radial_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+    ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
     ctx->cbf_kernel_profile = next.cbf_profile;
     ++ctx->cbf_kernel_revision;
   }
@@ -129,7 +129,7 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_
   }
   if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
   if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
-  const auto terms = sss::math::transmittance_terms(sss::math::radial_profile(profile));
+  const auto terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
   *count = static_cast<int32_t>(terms.size());
   if (capacity < *count) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: profile %u has %d terms", capacity, profile,

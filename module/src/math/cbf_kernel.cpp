@@ -4,7 +4,7 @@
 
 namespace sss::math {
 
-std::vector<double> cbf_tap_offsets(const RadialProfile& profile, int taps, double r_max_mm,
+std::vector<double> cbf_tap_offsets(const SpikeGaussianProfile& profile, int taps, double r_max_mm,
                                     std::vector<double>* boundaries) {
   const double total = broad_marginal_integral(profile, 0, -r_max_mm, r_max_mm);
   // The truncated CDF is monotonic: bisection to a few ulps is plenty for 13..65 taps.
@@ -35,7 +35,7 @@ std::vector<double> cbf_tap_offsets(const RadialProfile& profile, int taps, doub
   return offsets;
 }
 
-CbfKernel cbf_kernel(const RadialProfile& profile, int taps, double r_max_mm) {
+CbfKernel cbf_kernel(const SpikeGaussianProfile& profile, int taps, double r_max_mm) {
   std::vector<double> bounds;
   const std::vector<double> offsets = cbf_tap_offsets(profile, taps, r_max_mm, &bounds);
   std::array<std::vector<double>, 3> mass;

@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-#include "radial_profile.hpp"
+#include "spike_gaussian_profile.hpp"
 #include "separable_kernel.hpp"
 
 namespace sss::math {
@@ -29,11 +29,11 @@ struct CbfKernel {
 // The offsets of `taps` taps (odd, [3, 65]) by the inverse CDF of red's broad marginal truncated to
 // [-r_max, r_max]: tap i at probability (i + 1/2) / N, interval boundaries at i / N. Ascending.
 // `boundaries` (optional) receives the N + 1 interval ends (first -r_max, last r_max).
-std::vector<double> cbf_tap_offsets(const RadialProfile& profile, int taps, double r_max_mm,
+std::vector<double> cbf_tap_offsets(const SpikeGaussianProfile& profile, int taps, double r_max_mm,
                                     std::vector<double>* boundaries = nullptr);
 
 // The whole kernel. Preconditions (API layer): taps odd in [3, 65]; r_max_mm finite and > 0; every
 // channel of the profile has a broad part.
-CbfKernel cbf_kernel(const RadialProfile& profile, int taps, double r_max_mm);
+CbfKernel cbf_kernel(const SpikeGaussianProfile& profile, int taps, double r_max_mm);
 
 }  // namespace sss::math

@@ -1,11 +1,11 @@
-#include "radial_profile.hpp"
+#include "spike_gaussian_profile.hpp"
 
 #include <cmath>
 
 namespace sss::math {
 
-RadialProfile mikkelsen_profile() {
-  RadialProfile p;
+SpikeGaussianProfile mikkelsen_profile() {
+  SpikeGaussianProfile p;
   p.name = "mikkelsen-2010";
   p.spike = {0.15, 0.18, 0.20};
   // One broad Gaussian per channel: each term carries one channel's whole broad share.
@@ -13,8 +13,8 @@ RadialProfile mikkelsen_profile() {
   return p;
 }
 
-RadialProfile skin_radial_profile() {
-  RadialProfile p;
+SpikeGaussianProfile skin_spike_gaussian_profile() {
+  SpikeGaussianProfile p;
   p.name = "deon-skin";
   const auto& g = skin_gaussians();
   p.spike = g[0].weight;
@@ -23,9 +23,9 @@ RadialProfile skin_radial_profile() {
   return p;
 }
 
-RadialProfile radial_profile(unsigned id) { return id == 1 ? skin_radial_profile() : mikkelsen_profile(); }
+SpikeGaussianProfile spike_gaussian_profile(unsigned id) { return id == 1 ? skin_spike_gaussian_profile() : mikkelsen_profile(); }
 
-std::vector<GaussianTerm> transmittance_terms(const RadialProfile& p) {
+std::vector<GaussianTerm> transmittance_terms(const SpikeGaussianProfile& p) {
   std::vector<GaussianTerm> terms;
   if (p.spike_variance_mm2 > 0.0) terms.push_back({p.spike_variance_mm2, p.spike});
   terms.insert(terms.end(), p.terms.begin(), p.terms.end());
@@ -38,7 +38,7 @@ double transmittance(const std::vector<GaussianTerm>& terms, int channel, double
   return sum;
 }
 
-double broad_variance_mm2(const RadialProfile& p, int channel) {
+double broad_variance_mm2(const SpikeGaussianProfile& p, int channel) {
   double weight = 0.0, moment = 0.0;
   for (const GaussianTerm& t : p.terms) {
     weight += t.weight[static_cast<std::size_t>(channel)];
@@ -47,7 +47,7 @@ double broad_variance_mm2(const RadialProfile& p, int channel) {
   return weight > 0.0 ? moment / weight : 0.0;
 }
 
-double broad_marginal_integral(const RadialProfile& p, int channel, double a_mm, double b_mm) {
+double broad_marginal_integral(const SpikeGaussianProfile& p, int channel, double a_mm, double b_mm) {
   double sum = 0.0;
   for (const GaussianTerm& t : p.terms) {
     const double w = t.weight[static_cast<std::size_t>(channel)];
@@ -58,7 +58,7 @@ double broad_marginal_integral(const RadialProfile& p, int channel, double a_mm,
   return sum;
 }
 
-double broad_profile_2d(const RadialProfile& p, int channel, double r_mm) {
+double broad_profile_2d(const SpikeGaussianProfile& p, int channel, double r_mm) {
   double sum = 0.0;
   for (const GaussianTerm& t : p.terms) sum += t.weight[static_cast<std::size_t>(channel)] * gaussian_2d(t.variance_mm2, r_mm);
   return sum;
