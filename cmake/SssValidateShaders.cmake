@@ -3,11 +3,11 @@
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
 #   [-DINTEGRATION_GLSL_DIR=<integration/glsl>]: the host-side includes too
-# Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS
-# for the cross-bilateral blur.
+# Variants: each dialect the library negotiates at create time (module/shaders/version_*.glsl:
+# GLSL 330 core, GLSL 420 core, GLSL ES 300; glslangValidator takes the profile from #version) ×
+# SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur, and
+# SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur.
 file(MAKE_DIRECTORY "${WORK_DIR}")
-set(header "#version 330 core\n")
 set(failures 0)
 set(count 0)
 
@@ -28,34 +28,38 @@ file(READ "${SHADER_DIR}/fullscreen.vert" vertex)
 file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
 file(READ "${SHADER_DIR}/cbf_blur.frag" cbf)
-validate(fullscreen vert "${header}${vertex}")
-validate(copy frag "${header}${copy}")
-foreach(outside 0 1 2)
-  foreach(follow 0 1)
+foreach(dialect 330 420 es300)
+  file(READ "${SHADER_DIR}/version_${dialect}.glsl" header)
+  validate(${dialect}_fullscreen vert "${header}${vertex}")
+  validate(${dialect}_copy frag "${header}${copy}")
+  foreach(outside 0 1 2)
+    foreach(follow 0 1)
+      foreach(linear 0 1)
+        set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
+        validate("${dialect}_blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
+      endforeach()
+    endforeach()
+  endforeach()
+  # The cross-bilateral blur: SSS_OUTSIDE 0..2 × SSS_LINEAR_DEPTH 0/1 × SSS_NORMALS 0/1.
+  foreach(outside 0 1 2)
     foreach(linear 0 1)
-      set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
-      validate("blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
+      foreach(normals 0 1)
+        set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_NORMALS ${normals}\n#define SSS_MAX_TAPS 65\n")
+        validate("${dialect}_cbf_o${outside}_l${linear}_n${normals}" frag "${header}${defines}${cbf}")
+      endforeach()
     endforeach()
   endforeach()
+  # The host-side includes of integration/glsl, each under a small main that calls every function
+  # (hosts paste them after their own #version line, desktop or ES).
+  if(INTEGRATION_GLSL_DIR)
+    file(READ "${INTEGRATION_GLSL_DIR}/sss_transmittance.glsl" transmittance)
+    set(main "uniform sampler2D m; uniform mat4 v, p; out vec4 o;\nvoid main() {\n  float t = sss_thickness(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005) + sss_thickness_linear(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005);\n  o = vec4(sss_transmittance(t, 0.012, 0.5, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0)), 1.0);\n}\n")
+    validate(${dialect}_sss_transmittance frag "${header}${transmittance}${main}")
+    file(READ "${INTEGRATION_GLSL_DIR}/sss_back_transmittance.glsl" back)
+    set(main "uniform sampler2D b, n; uniform mat4 p; out vec4 o;\nvoid main() {\n  o = vec4(sss_back_transmittance(b, n, gl_FragCoord.xy, vec3(0.0, 0.0, -1.0), vec3(0.0, 0.0, 1.0), p, vec4(0.0, 0.0, 64.0, 64.0), 0.0015, 4.5), 1.0);\n}\n")
+    validate(${dialect}_sss_back_transmittance frag "${header}${transmittance}${back}${main}")
+  endif()
 endforeach()
-# The cross-bilateral blur: SSS_OUTSIDE 0..2 × SSS_LINEAR_DEPTH 0/1.
-foreach(outside 0 1 2)
-  foreach(linear 0 1)
-    foreach(normals 0 1)
-      set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_NORMALS ${normals}\n#define SSS_MAX_TAPS 65\n")
-      validate("cbf_o${outside}_l${linear}_n${normals}" frag "${header}${defines}${cbf}")
-    endforeach()
-  endforeach()
-endforeach()
-# The host-side includes of integration/glsl, each under a small main that calls every function.
-if(INTEGRATION_GLSL_DIR)
-  file(READ "${INTEGRATION_GLSL_DIR}/sss_transmittance.glsl" transmittance)
-  set(main "uniform sampler2D m; uniform mat4 v, p; out vec4 o;\nvoid main() {\n  float t = sss_thickness(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005) + sss_thickness_linear(m, v, p, vec3(0.0), vec3(0.0, 0.0, 1.0), 0.005);\n  o = vec4(sss_transmittance(t, 0.012, 0.5, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0)), 1.0);\n}\n")
-  validate(sss_transmittance frag "${header}${transmittance}${main}")
-  file(READ "${INTEGRATION_GLSL_DIR}/sss_back_transmittance.glsl" back)
-  set(main "uniform sampler2D b, n; uniform mat4 p; out vec4 o;\nvoid main() {\n  o = vec4(sss_back_transmittance(b, n, gl_FragCoord.xy, vec3(0.0, 0.0, -1.0), vec3(0.0, 0.0, 1.0), p, vec4(0.0, 0.0, 64.0, 64.0), 0.0015, 4.5), 1.0);\n}\n")
-  validate(sss_back_transmittance frag "${header}${transmittance}${back}${main}")
-endif()
 message(STATUS "glslangValidator: ${count} shader variants, ${failures} failed")
 if(failures GREATER 0)
   message(FATAL_ERROR "shader validation failed")

@@ -36,7 +36,7 @@ SssControls default_sss_controls() {
 }
 
 std::uint32_t blur_profile(const SssControls &controls) {
-  if (!controls.cross_bilateral) return SSS_PROFILE_SKIN_DEON;
+  if (!controls.cross_bilateral) return SSS_MATERIAL_SKIN;
   sss_settings s{};
   sss_default_settings(&s);
   return s.cbf_profile;

@@ -120,7 +120,9 @@
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                     \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                           \
   X(PFNGLENDQUERYPROC, glEndQuery)                               \
-  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)        \
+  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)             \
+  X(PFNGLGETQUERYIVPROC, glGetQueryiv)
 
 namespace host_gl {
 

@@ -9,15 +9,15 @@
 // separable_blur.frag; SSS_NORMALS 1: the surface's orientation comes from the host's view-space
 // normal texture instead of the depth of the neighbouring pixels.
 
-uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
-uniform sampler2D u_depth;     // the host's depth
+SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
+SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
 #if SSS_OUTSIDE == 2
-uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
+SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
 #endif
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights of the broad part, a = offset in profile mm; centre first
 uniform int u_tap_count;
 #if SSS_NORMALS
-uniform sampler2D u_normals;   // view-space unit normal in xyz
+SSS_BINDING(3) uniform sampler2D u_normals;   // view-space unit normal in xyz
 #endif
 uniform vec2 u_axis;                  // (1, 0) or (0, 1)
 uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1

@@ -30,7 +30,7 @@ class CrossBilateralMethod : public Method {
     s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
     s.mode = SSS_MODE_CROSS_BILATERAL;
     s.cbf_taps = taps_;
-    s.cbf_profile = SSS_PROFILE_SKIN_DEON;
+    s.cbf_profile = SSS_MATERIAL_SKIN;
     s.cbf_r_max_mm = 8.0f;  // d'Eon's radius of significant contributions for skin (Mikkelsen §5)
     sss_frame frame = {};
     frame.struct_size = sizeof frame;

@@ -54,7 +54,7 @@ TEST_F(CrossBilateral, MatchesCpuModelHardwareDepth) {
 
 TEST_F(CrossBilateral, MatchesCpuModelSkinProfileManyTapsLinearDepth) {
   FilterCase c;
-  c.settings = cbf_settings(SSS_PROFILE_SKIN_DEON, 25);
+  c.settings = cbf_settings(SSS_MATERIAL_SKIN, 25);
   c.settings.cbf_r_max_mm = 8.0f;
   c.depth = DepthKind::linear_r32f;
   expect_blurred_and_matching(run_case(relief(), c));
@@ -237,14 +237,14 @@ TEST_F(CrossBilateral, SettingsRoundTrip) {
   EXPECT_EQ(defaults.cbf_taps, SSS_CBF_DEFAULT_TAPS);
   EXPECT_EQ(defaults.cbf_r_max_mm, SSS_CBF_DEFAULT_R_MAX_MM);
   EXPECT_EQ(defaults.cbf_profile, SSS_PROFILE_MIKKELSEN_2010);
-  const sss_settings s = cbf_settings(SSS_PROFILE_SKIN_DEON, 15);
+  const sss_settings s = cbf_settings(SSS_MATERIAL_SKIN, 15);
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
   EXPECT_EQ(back.mode, s.mode);
   EXPECT_EQ(back.cbf_taps, 15);
-  EXPECT_EQ(back.cbf_profile, SSS_PROFILE_SKIN_DEON);
+  EXPECT_EQ(back.cbf_profile, SSS_MATERIAL_SKIN);
   EXPECT_EQ(back.cbf_r_max_mm, s.cbf_r_max_mm);
 }
 
@@ -256,12 +256,12 @@ TEST_F(CrossBilateral, KernelFollowsFieldsChangedInTheOtherMode) {
   sss_settings separable = c.settings;
   separable.mode = SSS_MODE_SEPARABLE;
   separable.cbf_taps = 21;
-  separable.cbf_profile = SSS_PROFILE_SKIN_DEON;
+  separable.cbf_profile = SSS_MATERIAL_SKIN;
   // The 21-tap skin kernel set directly (run_case creates the context), then the same context taken
   // through 13 taps, the separable mode with the fields changed there, and back.
   FilterCase direct = c;
   direct.settings.cbf_taps = 21;
-  direct.settings.cbf_profile = SSS_PROFILE_SKIN_DEON;
+  direct.settings.cbf_profile = SSS_MATERIAL_SKIN;
   const FilterOutcome expected = run_case(relief(), direct);
   ASSERT_EQ(expected.result, SSS_OK);
   sss_settings back = separable;
@@ -303,7 +303,7 @@ TEST_F(CrossBilateral, BadSettingsAreRejectedAndKeepTheOldOnes) {
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = 0.0f; }},
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = NAN; }},
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = 51.0f; }},
-      {"settings->cbf_profile", [](sss_settings* s) { s->cbf_profile = SSS_PROFILE_COUNT; }},
+      {"settings->cbf_profile", [](sss_settings* s) { s->cbf_profile = SSS_MATERIAL_TABULATED; }},
   };
   for (const Bad& b : cases) {
     sss_settings s = good;

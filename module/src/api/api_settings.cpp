@@ -37,6 +37,10 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
   s->cbf_profile = f.cbf_profile;
 }
 
+static_assert(sss::math::kMikkelsenProfileId == SSS_PROFILE_MIKKELSEN_2010, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kFittedGaussians == SSS_PROFILE_FIT_GAUSSIANS, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kMaterialCount == SSS_MATERIAL_WHOLEMILK, "materials 1..11 follow SSS_MATERIAL_SKIN");
+
 }  // namespace
 
 extern "C" {
@@ -123,9 +127,10 @@ SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3]
 
 SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_terms, int32_t capacity,
                                                    int32_t* count) {
-  if (profile >= SSS_PROFILE_COUNT) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "profile = %u: must be an SSS_PROFILE_* value (< %u)", profile,
-                SSS_PROFILE_COUNT);
+  if (!sss::math::is_spike_gaussian_profile_id(profile)) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT,
+                "profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]", profile,
+                SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
   }
   if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
   if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");

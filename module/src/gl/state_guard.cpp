@@ -19,13 +19,17 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
-  depth_clamp_ = gl_.IsEnabled(DEPTH_CLAMP);
-  logic_op_ = gl_.IsEnabled(COLOR_LOGIC_OP);
-  for (int i = 0; i < kClipDistances; ++i) {
-    clip_distances_[static_cast<std::size_t>(i)] = gl_.IsEnabled(CLIP_DISTANCE0 + static_cast<GLenum>(i));
+  if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
+  if (gl_.desktop()) {
+    for (std::size_t i = 0; i < kDesktopCapabilities.size(); ++i) {
+      desktop_capabilities_[i] = gl_.IsEnabled(kDesktopCapabilities[i]);
+    }
+    for (int i = 0; i < kClipDistances; ++i) {
+      clip_distances_[static_cast<std::size_t>(i)] = gl_.IsEnabled(CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    }
+    gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   }
   gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
-  gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
   save_stencil_face(STENCIL_BACK_FUNC, STENCIL_BACK_REF, STENCIL_BACK_VALUE_MASK, STENCIL_BACK_FAIL,
@@ -54,14 +58,18 @@ StateGuard::~StateGuard() {
   if (!enabled_) return;
   restore_stencil_face(FRONT, front_);
   restore_stencil_face(BACK, back_);
-  gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
   gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
-  for (int i = 0; i < kClipDistances; ++i) {
-    const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
-    clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
+  if (gl_.desktop()) {
+    gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    for (int i = 0; i < kClipDistances; ++i) {
+      const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
+      clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
+    }
+    for (std::size_t i = 0; i < kDesktopCapabilities.size(); ++i) {
+      desktop_capabilities_[i] ? gl_.Enable(kDesktopCapabilities[i]) : gl_.Disable(kDesktopCapabilities[i]);
+    }
   }
-  logic_op_ ? gl_.Enable(COLOR_LOGIC_OP) : gl_.Disable(COLOR_LOGIC_OP);
-  depth_clamp_ ? gl_.Enable(DEPTH_CLAMP) : gl_.Disable(DEPTH_CLAMP);
+  if (gl_.has_sample_mask()) sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
@@ -89,16 +97,20 @@ void set_pass_state(const Functions& gl) {
   gl.Disable(DEPTH_TEST);
   gl.Disable(BLEND);
   gl.Disable(CULL_FACE);
-  gl.Disable(FRAMEBUFFER_SRGB);
   gl.Disable(RASTERIZER_DISCARD);
   gl.Disable(SAMPLE_ALPHA_TO_COVERAGE);
   gl.Disable(SAMPLE_COVERAGE);
-  gl.Disable(SAMPLE_MASK);
   gl.Disable(POLYGON_OFFSET_FILL);
-  gl.Disable(DEPTH_CLAMP);
-  gl.Disable(COLOR_LOGIC_OP);
-  for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
-  gl.PolygonMode(FRONT_AND_BACK, FILL);
+  if (gl.has_sample_mask()) gl.Disable(SAMPLE_MASK);
+  // ES has none of these: no sRGB enable (the module's targets are float, never converted), no
+  // depth clamp, logic op, clip distances or polygon mode.
+  if (gl.desktop()) {
+    gl.Disable(FRAMEBUFFER_SRGB);
+    gl.Disable(DEPTH_CLAMP);
+    gl.Disable(COLOR_LOGIC_OP);
+    for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
+    gl.PolygonMode(FRONT_AND_BACK, FILL);
+  }
   gl.ColorMask(1, 1, 1, 1);
 }
 

@@ -4,8 +4,8 @@
 
 namespace sss::gl {
 
-sss_result query_texture_2d(const Functions& gl, GLuint name, const char* role, TextureInfo* out,
-                            std::string* message) {
+sss_result query_texture_2d(const Functions& gl, GLuint name, const char* role, bool query_level,
+                            TextureInfo* out, std::string* message) {
   char buffer[200];
   if (name == 0) {
     std::snprintf(buffer, sizeof buffer, "%s is 0 (no texture)", role);
@@ -29,6 +29,10 @@ sss_result query_texture_2d(const Functions& gl, GLuint name, const char* role, 
   }
   TextureInfo info;
   info.name = name;
+  if (!query_level) {  // OpenGL ES 3.0: the caller takes format and size from the frame description
+    *out = info;
+    return SSS_OK;
+  }
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &info.internal_format);
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_WIDTH, &info.width);
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_HEIGHT, &info.height);

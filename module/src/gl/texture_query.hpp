@@ -16,8 +16,10 @@ struct TextureInfo {
 
 // SSS_OK, or SSS_ERROR_INVALID_TEXTURE with a message naming `role` and the name: 0, not a texture
 // name (never bound, or deleted), or not a GL_TEXTURE_2D. Needs the GL error flag clear on entry.
-sss_result query_texture_2d(const Functions& gl, GLuint name, const char* role, TextureInfo* out,
-                            std::string* message);
+// With query_level false (no glGetTexLevelParameteriv: OpenGL ES 3.0) only the name and target are
+// checked and format and size are left 0.
+sss_result query_texture_2d(const Functions& gl, GLuint name, const char* role, bool query_level,
+                            TextureInfo* out, std::string* message);
 
 bool is_color_format(GLint f);          // RGBA16F, RGBA32F
 bool is_hardware_depth_format(GLint f); // DEPTH_COMPONENT*, DEPTH*_STENCIL8

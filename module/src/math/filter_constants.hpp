@@ -18,7 +18,7 @@ struct FilterSettings {
   bool cross_bilateral = false;
   int cbf_taps = 13;
   float cbf_r_max_mm = 4.5f;
-  unsigned cbf_profile = 0;  // SSS_PROFILE_*
+  unsigned cbf_profile = 0x100u;  // SSS_PROFILE_MIKKELSEN_2010 or an sss_material (spike_gaussian_profile.hpp)
 };
 
 enum class DepthEncoding {

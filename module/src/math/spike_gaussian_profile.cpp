@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "kernel_fits.hpp"
+#include "radial_profile.hpp"
+
 namespace sss::math {
 
 SpikeGaussianProfile mikkelsen_profile() {
@@ -23,7 +26,19 @@ SpikeGaussianProfile skin_spike_gaussian_profile() {
   return p;
 }
 
-SpikeGaussianProfile spike_gaussian_profile(unsigned id) { return id == 1 ? skin_spike_gaussian_profile() : mikkelsen_profile(); }
+bool is_spike_gaussian_profile_id(unsigned id) {
+  return id == kMikkelsenProfileId || id <= static_cast<unsigned>(kMaterialCount);
+}
+
+SpikeGaussianProfile spike_gaussian_profile(unsigned id) {
+  if (id == kMikkelsenProfileId) return mikkelsen_profile();
+  if (id == 0) return skin_spike_gaussian_profile();
+  const MaterialCoefficients& m = measured_materials().at(id - 1);
+  SpikeGaussianProfile p;
+  p.name = m.name;
+  p.terms = fit_gaussian_sum(DipoleProfile(m), kFittedGaussians);
+  return p;
+}
 
 std::vector<GaussianTerm> transmittance_terms(const SpikeGaussianProfile& p) {
   std::vector<GaussianTerm> terms;

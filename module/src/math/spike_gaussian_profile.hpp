@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "materials.hpp"
 #include "skin_profile.hpp"
 
 namespace sss::math {
@@ -27,7 +28,13 @@ SpikeGaussianProfile mikkelsen_profile();
 // as the separable kernel treats it.
 SpikeGaussianProfile skin_spike_gaussian_profile();
 
-// The profile numbered `id` (SSS_PROFILE_*; the API layer checks the range).
+// The ids of sss_settings.cbf_profile: the sss_material values 0 (d'Eon skin) to 11 (the measured
+// materials, as kFittedGaussians Gaussians fitted to the dipole by fit_gaussian_sum, with no spike:
+// the fit's narrowest term is a real part of the profile, not the unscattered share) and
+// kMikkelsenProfileId. The API layer checks the value with is_spike_gaussian_profile_id.
+inline constexpr unsigned kMikkelsenProfileId = 0x100u;
+inline constexpr int kFittedGaussians = 4;
+bool is_spike_gaussian_profile_id(unsigned id);
 SpikeGaussianProfile spike_gaussian_profile(unsigned id);
 
 // The Gaussians that transmit light through a slab (for the host's transmittance include): the broad
