@@ -47,10 +47,11 @@ int main(void) {
   CHECK(strcmp(sss_result_string(SSS_ERROR_GL), "SSS_ERROR_GL") == 0);
   CHECK(settings.mode == SSS_MODE_SEPARABLE && settings.cbf_taps == SSS_CBF_DEFAULT_TAPS);
   {
-    float terms[SSS_PROFILE_MAX_TERMS * 4];
+    float transmittance[SSS_PROFILE_MAX_TERMS * 4];
     int32_t count = 0;
-    CHECK(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, terms, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
-    CHECK(count == 6 && terms[0] > 0.0f);
+    CHECK(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
+    CHECK(count == 6 && transmittance[0] > 0.0f);
+    CHECK(settings.cbf_profile == SSS_PROFILE_MIKKELSEN_2010);
   }
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;

@@ -52,6 +52,14 @@ TEST_F(CrossBilateral, MatchesCpuModelHardwareDepth) {
   expect_blurred_and_matching(run_case(relief(), c));
 }
 
+// A measured material: the GL blurs with the Gaussians 4a's fit gives its dipole, as the CPU model does.
+TEST_F(CrossBilateral, MatchesCpuModelMeasuredMaterial) {
+  FilterCase c;
+  c.settings = cbf_settings(SSS_MATERIAL_KETCHUP, 17);
+  c.settings.cbf_r_max_mm = 6.0f;
+  expect_blurred_and_matching(run_case(relief(), c));
+}
+
 TEST_F(CrossBilateral, MatchesCpuModelSkinProfileManyTapsLinearDepth) {
   FilterCase c;
   c.settings = cbf_settings(SSS_MATERIAL_SKIN, 25);
@@ -282,6 +290,7 @@ TEST_F(CrossBilateral, KernelFollowsFieldsChangedInTheOtherMode) {
   frame.color_texture = color;
   frame.depth_texture = depth;
   frame.output_texture = output;
+  if (is_gles()) describe_frame(c, scene.width, scene.height, &frame);  // ES 3.0 cannot be asked
   ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
   EXPECT_EQ(read_rgba(output, scene.width, scene.height), expected.gpu);
 }
@@ -339,6 +348,34 @@ TEST_F(CrossBilateral, BadNormalTextureIsRejectedAndLeavesTheColourUntouched) {
     s.mode = mode;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
     ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    if (is_gles()) {
+      // OpenGL ES 3.0 cannot be asked for a texture's format or size: the frame's description is
+      // what is checked (a wrong size there cannot be seen, the host's description is trusted).
+      struct EsCase {
+        GLuint normals;
+        uint32_t format;
+        sss_result expected;
+        const char* named;
+      };
+      const EsCase es_cases[] = {
+          {wrong_format, GL_R32F, SSS_ERROR_INVALID_ARGUMENT, "normal_format"},  // not a colour format
+          {wrong_format, 0, SSS_ERROR_INVALID_ARGUMENT, "normal_format"},        // not described
+          {987654u, GL_RGBA32F, SSS_ERROR_INVALID_TEXTURE, "normal_texture"},    // not a texture
+      };
+      for (const EsCase& e : es_cases) {
+        sss_frame frame = {};
+        frame.struct_size = sizeof frame;
+        frame.color_texture = color;
+        frame.depth_texture = depth;
+        describe_frame(FilterCase{}, scene.width, scene.height, &frame);
+        frame.normal_texture = e.normals;
+        frame.normal_format = e.format;
+        EXPECT_EQ(sss_apply_frame(sss_, &frame), e.expected);
+        EXPECT_NE(std::string(sss_last_error(sss_)).find(e.named), std::string::npos) << sss_last_error(sss_);
+        EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      }
+      continue;
+    }
     for (GLuint normals : {wrong_format, wrong_size, 987654u}) {
       sss_frame frame = {};
       frame.struct_size = sizeof frame;

@@ -50,7 +50,7 @@ void main() {
 using Transmittance = GlTest;
 
 TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
-  for (uint32_t profile : {SSS_MATERIAL_SKIN, SSS_PROFILE_MIKKELSEN_2010}) {
+  for (uint32_t profile : {static_cast<uint32_t>(SSS_MATERIAL_SKIN), SSS_PROFILE_MIKKELSEN_2010}) {
    for (bool hardware_depth : {true, false}) {
     SCOPED_TRACE(profile);
     SCOPED_TRACE(hardware_depth);

@@ -310,7 +310,9 @@ SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
  *                                     mode, cbf_taps, cbf_r_max_mm or cbf_profile outside the ranges on
  *                                     sss_settings (every field is checked, whatever the mode); the old
- *                                     settings stay */
+ *                                     settings stay
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    building the cross-bilateral kernel of a measured material (cbf_profile)
+ *                                     could not allocate; the old settings stay */
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
 
 /** Current settings into *s (struct_size must be set by the caller).

@@ -152,7 +152,8 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_term
  *  @retval SSS_ERROR_INVALID_ARGUMENT profile neither SSS_PROFILE_MIKKELSEN_2010 nor in [SSS_MATERIAL_SKIN,
  *                                     SSS_MATERIAL_WHOLEMILK], out_terms or count NULL, or capacity smaller
  *                                     than the profile's term count (SSS_PROFILE_MAX_TERMS always suffices;
- *                                     *count then tells the size needed) */
+ *                                     *count then tells the size needed)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    the fit of a measured material could not allocate */
 SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_terms, int32_t capacity,
                                                    int32_t *count);
 

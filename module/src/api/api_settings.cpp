@@ -1,6 +1,9 @@
 // Settings, camera and the GL-free kernel API: validation and bookkeeping, no GL calls.
 #include <cmath>
 #include <cstring>
+#include <exception>
+#include <new>
+#include <vector>
 
 #include "context.hpp"
 #include "validation.hpp"
@@ -60,21 +63,30 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   const sss_result r = sss::api::check_settings(ctx, s);
   if (r != SSS_OK) return r;
   const sss::math::FilterSettings next = to_filter_settings(*s);
+  // Built lazily (only in the cross-bilateral mode) and compared with what it was built for, not with
+  // the previous settings: the cbf fields may change while the separable mode is selected. Built
+  // first: a measured material runs a fit, and if that fails the old settings stay.
+  const sss::math::CbfKernel& built = ctx->cbf_kernel;
+  if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
+                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
+    try {
+      ctx->cbf_kernel =
+          sss::math::cbf_kernel(sss::math::spike_gaussian_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+    } catch (const std::bad_alloc&) {
+      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
+                  next.cbf_profile);
+    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
+    }
+    ctx->cbf_kernel_profile = next.cbf_profile;
+    ++ctx->cbf_kernel_revision;
+  }
   const sss::math::FilterSettings& old = ctx->settings;
   const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
   ctx->settings = next;
   if (kernel_changed) {
     ctx->kernel = sss::math::separable_kernel(next.samples, next.strength, next.falloff);
     ++ctx->kernel_revision;
-  }
-  // Built lazily (only in the cross-bilateral mode) and compared with what it was built for, not with
-  // the previous settings: the cbf fields may change while the separable mode is selected.
-  const sss::math::CbfKernel& built = ctx->cbf_kernel;
-  if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
-                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
-    ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
-    ctx->cbf_kernel_profile = next.cbf_profile;
-    ++ctx->cbf_kernel_revision;
   }
   return SSS_OK;
 }
@@ -134,7 +146,15 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_
   }
   if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
   if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
-  const auto terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
+  std::vector<sss::math::GaussianTerm> terms;
+  try {
+    terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
+  } catch (const std::bad_alloc&) {
+    return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_profile_transmittance_terms: out of memory");
+  } catch (const std::exception& e) {  // the check above should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_profile_transmittance_terms: profile = %u: %s", profile,
+                e.what());
+  }
   *count = static_cast<int32_t>(terms.size());
   if (capacity < *count) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: profile %u has %d terms", capacity, profile,
