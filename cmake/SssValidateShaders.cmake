@@ -3,7 +3,8 @@
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
 # Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur.
+# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; the MSAA resolve (SSS_LINEAR_DEPTH
+# 0/1), mask and write-back shaders.
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(header "#version 330 core\n")
 set(failures 0)
@@ -27,6 +28,14 @@ file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
 validate(fullscreen vert "${header}${vertex}")
 validate(copy frag "${header}${copy}")
+file(READ "${SHADER_DIR}/msaa_resolve.frag" msaa_resolve)
+file(READ "${SHADER_DIR}/msaa_mask.frag" msaa_mask)
+file(READ "${SHADER_DIR}/msaa_write.frag" msaa_write)
+foreach(linear 0 1)
+  validate("msaa_resolve_l${linear}" frag "${header}#define SSS_LINEAR_DEPTH ${linear}\n${msaa_resolve}")
+endforeach()
+validate(msaa_mask frag "${header}${msaa_mask}")
+validate(msaa_write frag "${header}${msaa_write}")
 foreach(outside 0 1 2)
   foreach(follow 0 1)
     foreach(linear 0 1)

@@ -120,7 +120,10 @@
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                     \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                           \
   X(PFNGLENDQUERYPROC, glEndQuery)                               \
-  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)       \
+  X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
+  X(PFNGLSAMPLEMASKIPROC, glSampleMaski)                         \
+  X(PFNGLGETTEXLEVELPARAMETERIVPROC, glGetTexLevelParameteriv)
 
 namespace host_gl {
 

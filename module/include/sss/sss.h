@@ -24,9 +24,10 @@
  *   Saved and restored (SSS_STATE_LIST):
  *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
  *   - GL_DRAW_FRAMEBUFFER_BINDING, GL_READ_FRAMEBUFFER_BINDING, GL_RENDERBUFFER_BINDING
- *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
+ *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D,
+ *     GL_TEXTURE_BINDING_2D_MULTISAMPLE, GL_SAMPLER_BINDING
  *   - GL_PIXEL_UNPACK_BUFFER_BINDING
- *   - GL_VIEWPORT
+ *   - GL_VIEWPORT, GL_SAMPLE_MASK_VALUE (word 0)
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
  *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
@@ -155,17 +156,40 @@ typedef struct sss_stencil {
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
 #define SSS_FRAME_ALL_FLAGS 0x1u
 
-/** The full form of one application of the filter. */
+/* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
+ * depth. Each sample's depth is first converted to linear view distance with the camera. */
+#define SSS_MSAA_DEPTH_AVERAGE 0u /**< mean of the samples' linear depths (the paper's choice; default) */
+#define SSS_MSAA_DEPTH_SAMPLE0 1u /**< sample 0 alone */
+#define SSS_MSAA_DEPTH_MIN 2u     /**< the nearest sample */
+#define SSS_MSAA_DEPTH_MAX 3u     /**< the farthest sample */
+
+/** The full form of one application of the filter.
+ *
+ *  Multisampling (MSAA): color_texture and depth_texture may both be GL_TEXTURE_2D_MULTISAMPLE
+ *  with the same sample count (any count up to 32 that the context made; not one multisampled and
+ *  the other not). A first pass then resolves them: colour by the box average of the samples,
+ *  depth by msaa_depth_resolve of the samples' linear depths. Without a stencil the module marks
+ *  its own stencil from the resolved alpha (> 0 exactly when some sample's alpha is > 0), so both
+ *  blur passes touch only translucent pixels (the paper's multisampling path); a stencil, if given,
+ *  must be multisampled with the same count and is resolved by glBlitFramebuffer (the driver picks
+ *  one sample's stencil per pixel). With output_texture 0 the result is written back into the
+ *  host's samples: each translucent sample (alpha > 0) of a pixel that changed gets that pixel's
+ *  change times samples / translucent samples (so the box resolve equals the blurred pixel),
+ *  clamped at 0; every other sample, and alpha everywhere, keeps its exact value. With an output
+ *  texture (single-sample) the blurred resolve goes there and untouched pixels get the resolved
+ *  colour. */
 typedef struct sss_frame {
   uint32_t struct_size;      /**< sizeof(sss_frame) */
-  uint32_t color_texture;    /**< GL_TEXTURE_2D, GL_RGBA16F or GL_RGBA32F: linear diffuse irradiance, alpha = strength 0..1 */
-  uint32_t depth_texture;    /**< GL_TEXTURE_2D, same size: hardware depth (DEPTH_COMPONENT16/24/32/32F,
+  uint32_t color_texture;    /**< GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA16F or GL_RGBA32F: linear
+                                  diffuse irradiance, alpha = strength 0..1 */
+  uint32_t depth_texture;    /**< same target, size and sample count as colour: hardware depth (DEPTH_COMPONENT16/24/32/32F,
                                   DEPTH24_STENCIL8, DEPTH32F_STENCIL8) or linear view distance (R16F, R32F) */
-  uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D RGBA16F/RGBA32F of the same
-                                  size, not the colour texture: every pixel is written (untouched ones copied) */
+  uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D (single-sample) RGBA16F/RGBA32F
+                                  of the same size, not the colour texture: every pixel is written (untouched ones copied) */
   const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
   int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
   uint32_t flags;            /**< SSS_FRAME_* */
+  uint32_t msaa_depth_resolve; /**< SSS_MSAA_DEPTH_* (multisampled inputs only; default 0 = average) */
 } sss_frame;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */
@@ -226,14 +250,16 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
                              const sss_stencil *stencil);
 
 /** Runs the two passes: horizontal from the colour texture into the module's RGBA16F target,
- *  vertical into the output (or back into the colour texture). Pixels outside the stencil or with
+ *  vertical into the output (or back into the colour texture); multisampled inputs get a resolve
+ *  pass first and, written back, a per-sample write last (see sss_frame). Pixels outside the stencil or with
  *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
  *  Non-finite input never spreads: a pixel whose colour or alpha is NaN or infinite keeps its value,
  *  and a neighbour that is counts as the centre's colour (its weight goes to the centre). Alpha
  *  above 1 counts as 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
- *                                       or output_texture equal to color_texture
+ *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
+ *                                       color_texture
  *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
  *  @retval SSS_ERROR_NO_CONTEXT         no GL context current; or the current one does not hold the module's GL
  *                                       objects: the context the module was created in was lost or destroyed
@@ -241,8 +267,12 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       are forgotten (not deleted: their names may be the host's now) and the
  *                                       next call rebuilds them in the context current then, so a host that
  *                                       recreates its context after a loss just carries on
- *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, not GL_TEXTURE_2D, a format outside
- *                                       the lists on sss_frame, or sizes that differ
+ *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, neither GL_TEXTURE_2D nor
+ *                                       GL_TEXTURE_2D_MULTISAMPLE (or a multisampled output), a texture without
+ *                                       storage, a format outside the lists on sss_frame, sizes that differ, or
+ *                                       colour, depth and stencil that differ in target or sample count
+ *  @retval SSS_ERROR_UNSUPPORTED        a sample count above 32 or above the context's GL_MAX_COLOR_TEXTURE_SAMPLES /
+ *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
  *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)

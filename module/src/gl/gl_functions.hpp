@@ -101,7 +101,13 @@ using GLubyte = unsigned char;
   X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass))                \
   X(void, StencilMaskSeparate, (GLenum face, GLuint mask))                                             \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
-  X(void, BindBuffer, (GLenum target, GLuint buffer))
+  X(void, BindBuffer, (GLenum target, GLuint buffer))                                                  \
+  X(void, TexImage2DMultisample, (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, \
+                                  GLsizei height, GLboolean fixedsamplelocations))                     \
+  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))                                           \
+  X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
+  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))                        \
+  X(void, DrawBuffers, (GLsizei n, const GLenum* bufs))
 
 // KHR_debug (core in 4.3): used only when present.
 #define SSS_GL_DEBUG_FUNCTIONS(X)                                                                      \
@@ -146,6 +152,17 @@ enum : GLenum {
   TEXTURE_HEIGHT = 0x1001,
   TEXTURE_INTERNAL_FORMAT = 0x1003,
   TEXTURE_SAMPLES = 0x9106,
+  TEXTURE_FIXED_SAMPLE_LOCATIONS = 0x9107,
+  TEXTURE_2D_MULTISAMPLE = 0x9100,
+  TEXTURE_BINDING_2D_MULTISAMPLE = 0x9104,
+  MAX_SAMPLES = 0x8D57,
+  MAX_COLOR_TEXTURE_SAMPLES = 0x910E,
+  MAX_DEPTH_TEXTURE_SAMPLES = 0x910F,
+  SAMPLE_MASK_VALUE = 0x8E52,
+  COLOR_ATTACHMENT1 = 0x8CE1,
+  STENCIL = 0x1802,
+  ALWAYS = 0x0207,
+  REPLACE = 0x1E01,
   TEXTURE_MIN_FILTER = 0x2801,
   TEXTURE_MAG_FILTER = 0x2800,
   TEXTURE_WRAP_S = 0x2802,
@@ -182,6 +199,8 @@ enum : GLenum {
   STENCIL_ATTACHMENT = 0x8D20,
   FRAMEBUFFER_COMPLETE = 0x8CD5,
   STENCIL_BUFFER_BIT = 0x00000400,
+  COLOR_BUFFER_BIT = 0x00004000,
+  RED = 0x1903,
   VERTEX_SHADER = 0x8B31,
   FRAGMENT_SHADER = 0x8B30,
   COMPILE_STATUS = 0x8B81,

@@ -14,10 +14,12 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
+    gl_.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &multisample_textures_[static_cast<std::size_t>(unit)]);
     gl_.GetIntegerv(SAMPLER_BINDING, &samplers_[static_cast<std::size_t>(unit)]);
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
+  gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_);
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
   depth_clamp_ = gl_.IsEnabled(DEPTH_CLAMP);
   logic_op_ = gl_.IsEnabled(COLOR_LOGIC_OP);
@@ -66,9 +68,11 @@ StateGuard::~StateGuard() {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
   gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_));
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
+    gl_.BindTexture(TEXTURE_2D_MULTISAMPLE, static_cast<GLuint>(multisample_textures_[static_cast<std::size_t>(unit)]));
     gl_.BindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(samplers_[static_cast<std::size_t>(unit)]));
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));

@@ -35,7 +35,8 @@ class StateGuard {
   bool enabled_;
   GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint active_texture_ = 0, unpack_buffer_ = 0;
-  std::array<GLint, kUnitCount> textures_{}, samplers_{};
+  std::array<GLint, kUnitCount> textures_{}, multisample_textures_{}, samplers_{};
+  GLint sample_mask_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the MSAA write-back pass sets it)
   std::array<GLint, 4> viewport_{};
   std::array<GLboolean, 11> capabilities_{};
   GLboolean depth_clamp_ = 0, logic_op_ = 0;

@@ -1,0 +1,258 @@
+// The MSAA path (paper §4): multisampled colour and depth are resolved (box-averaged colour, mean of
+// the samples' linear depths) and filtered like single-sample input; written back, only the
+// translucent samples change and the box resolve of the result is the blurred image. Bad
+// multisampled input fails with a specific code and message and changes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "filter_case.hpp"
+#include "gl_state_snapshot.hpp"
+#include "math/filter_constants.hpp"
+#include "multisample_textures.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kW = 48, kH = 40;  // the filtered size; the fine (per-sample) scenes are 96 x 80
+const sss::math::Matrix4 kCamera = perspective_matrix(40.0f, float(kW) / float(kH), 0.1f, 10.0f);
+
+class Msaa : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    if (HasFatalFailure()) return;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples_);
+    if (max_samples_ < 4) GTEST_SKIP() << "the context offers " << max_samples_ << " samples";
+    sss_ = create_sss();
+    ASSERT_NE(sss_, nullptr);
+    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    sss_settings s;
+    sss_default_settings(&s);
+    s.width = 0.05f;  // several pixels of reach at this size, so the kernel crosses the depth step
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  }
+
+  GLuint ms(GLenum format, const std::vector<float>& fine, int samples = 4) {
+    const GLuint t = make_multisample_texture(format, kW, kH, samples, fine);
+    textures_.push_back(t);
+    return t;
+  }
+
+  sss_frame frame(GLuint color, GLuint depth, GLuint output = 0) const {
+    sss_frame f = {};
+    f.struct_size = sizeof f;
+    f.color_texture = color;
+    f.depth_texture = depth;
+    f.output_texture = output;
+    return f;
+  }
+
+  std::vector<float> apply_to_output(const sss_frame& in) {
+    sss_frame f = in;
+    f.output_texture = make_rgba32f(kW, kH, std::vector<float>(kW * kH * 4, -7.0f));
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    return read_rgba(f.output_texture, kW, kH);
+  }
+
+  GLint max_samples_ = 0;
+};
+
+// Linear view distance per fine texel, as the shader computes it from hardware depth (float).
+std::vector<float> linearised(const SyntheticScene& fine) {
+  sss::math::FrameGeometry g;
+  g.texture_width = fine.width;
+  g.texture_height = fine.height;
+  g.viewport = {0, 0, fine.width, fine.height};
+  const auto k = sss::math::compute_pass_constants(sss::math::FilterSettings{}, fine.projection, g);
+  std::vector<float> d(fine.window_depth.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = sss::math::linearise_depth(k, fine.window_depth[i]);
+  return d;
+}
+
+// Tolerance for "the same filter on the same numbers": the resolve sums four samples in float
+// (a rounding of 2^-24 relative) which can flip one rounding of the RGBA16F intermediate (2^-11
+// relative); the vertical pass's weights sum to 1, so the output moves by at most about 2^-11.
+// 2^-10 leaves room for two such flips.
+constexpr float kSameFilter = 1.0f / 1024.0f;
+
+TEST_F(Msaa, ResolvedInputsGiveTheSingleSampleResultOfTheirBoxAverage) {
+  // The relief scene at twice the size has a depth step, a spherical bump, alpha bands and
+  // per-sample noise: every pixel's samples differ.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 7, kCamera);
+  const SyntheticScene coarse = downsample_2x2(fine);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth = ms(GL_R32F, fine.distance);
+  ASSERT_EQ(texture_samples(color), 4);
+  const std::vector<float> msaa = apply_to_output(frame(color, depth));
+
+  const GLuint single_color = make_rgba32f(kW, kH, coarse.color);
+  const GLuint single_depth = make_texture(GL_R32F, kW, kH, GL_RED, GL_FLOAT, coarse.distance.data());
+  const std::vector<float> single = apply_to_output(frame(single_color, single_depth));
+  EXPECT_LE(largest_relative_difference(msaa, single), kSameFilter);
+}
+
+TEST_F(Msaa, HardwareDepthIsLinearisedPerSampleBeforeAveraging) {
+  // Same scene with hardware depth: the resolve must linearise each sample, then average. The
+  // reference gets the linearised samples directly (float, the shader's formula), so any other
+  // order (averaging window depth first) shows at the depth step.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 8, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const std::vector<float> hardware = apply_to_output(frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth)));
+  const std::vector<float> linear = apply_to_output(frame(color, ms(GL_R32F, linearised(fine))));
+  // The GPU's division differs from the CPU's by a few float ulps (~1e-6 relative in distance);
+  // the follow-surface factor (~1/reach) turns that into blend changes far below kSameFilter.
+  EXPECT_LE(largest_relative_difference(hardware, linear), kSameFilter);
+
+  // And the other resolves really differ from the average along the silhouettes.
+  for (uint32_t mode : {SSS_MSAA_DEPTH_SAMPLE0, SSS_MSAA_DEPTH_MIN, SSS_MSAA_DEPTH_MAX}) {
+    sss_frame f = frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth));
+    f.msaa_depth_resolve = mode;
+    const std::vector<float> other = apply_to_output(f);
+    EXPECT_GT(largest_relative_difference(other, hardware), kSameFilter) << "mode " << mode;
+  }
+}
+
+TEST_F(Msaa, InteriorPixelsWhoseSamplesAgreeMatchTheSingleSampleResult) {
+  // Every sample equals its pixel: the MSAA result must be the single-sample one, hardware depth
+  // on both sides. The single-sample path interpolates hardware depth between texels and then
+  // linearises; the MSAA path interpolates linearised depth: on smooth surfaces the two differ
+  // at second order (tiny), across the depth step both are far beyond the kernel's reach (the
+  // tap falls back to the centre either way).
+  const SyntheticScene coarse = make_relief_scene(kW, kH, 9, kCamera);
+  const SyntheticScene fine = upsample_2x2(coarse);
+  const std::vector<float> msaa =
+      apply_to_output(frame(ms(GL_RGBA32F, fine.color), ms(GL_DEPTH_COMPONENT32F, fine.window_depth)));
+  const std::vector<float> single =
+      apply_to_output(frame(make_rgba32f(kW, kH, coarse.color), make_depth32f(kW, kH, coarse.window_depth)));
+  EXPECT_LE(largest_relative_difference(msaa, single), kSameFilter);
+}
+
+TEST_F(Msaa, WriteBackChangesOnlyTranslucentSamplesAndResolvesToTheBlurredImage) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 10, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const std::vector<float> blurred = apply_to_output(frame(color, depth));
+  const auto before = read_samples(color, kW, kH, 4);
+  const sss_frame in_place = frame(color, depth);
+  ASSERT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const auto after = read_samples(color, kW, kH, 4);
+
+  int changed_pixels = 0, checked_pixels = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    bool clamped = false, changed = false;
+    for (std::size_t s = 0; s < 4; ++s) {
+      const float* b = &before[s][p * 4];
+      const float* a = &after[s][p * 4];
+      ASSERT_EQ(0, std::memcmp(&a[3], &b[3], sizeof(float))) << "alpha changed, pixel " << p << " sample " << s;
+      if (!(b[3] > 0.0f)) {
+        ASSERT_EQ(0, std::memcmp(a, b, 4 * sizeof(float))) << "opaque sample changed, pixel " << p << " sample " << s;
+      }
+      for (int c = 0; c < 3; ++c) {
+        if (a[c] == 0.0f && b[c] != 0.0f) clamped = true;
+        if (a[c] != b[c]) changed = true;
+      }
+    }
+    changed_pixels += changed ? 1 : 0;
+    if (clamped) continue;  // a sample clamped at 0 breaks the average by design (documented)
+    ++checked_pixels;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float mean = (after[0][p * 4 + c] + after[1][p * 4 + c] + after[2][p * 4 + c] + after[3][p * 4 + c]) / 4.0f;
+      // float rounding of (sample + delta · 4/n) and of the mean: a few 2^-24 relative steps.
+      EXPECT_NEAR(mean, blurred[p * 4 + c], 1e-5f * std::fmax(1.0f, std::fabs(blurred[p * 4 + c])))
+          << "pixel " << p << " channel " << c;
+    }
+  }
+  EXPECT_GT(changed_pixels, kW * kH / 2) << "the filter must actually have changed most pixels";
+  EXPECT_GT(checked_pixels, kW * kH * 9 / 10);
+}
+
+TEST_F(Msaa, BadMultisampledInputFailsWithASpecificMessageAndChangesNothing) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 11, kCamera);
+  const SyntheticScene coarse = downsample_2x2(fine);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const GLuint single_color = make_rgba16f(kW, kH, coarse.color);
+  const GLuint single_depth = make_depth32f(kW, kH, coarse.window_depth);
+  const auto before = read_samples(color, kW, kH, 4);
+  const std::vector<float> single_before = read_rgba(single_color, kW, kH);
+
+  auto expect_fails = [&](const sss_frame& f, sss_result code, const std::string& fragment) {
+    EXPECT_EQ(sss_apply_frame(sss_, &f), code) << sss_last_error(sss_);
+    const std::string message = sss_last_error(sss_);
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  };
+  const std::string c = std::to_string(color), d = std::to_string(depth);
+  expect_fails(frame(color, single_depth), SSS_ERROR_INVALID_TEXTURE,
+               "depth_texture = " + std::to_string(single_depth) + " is GL_TEXTURE_2D but color_texture = " + c +
+                   " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+  expect_fails(frame(single_color, depth), SSS_ERROR_INVALID_TEXTURE,
+               "depth_texture = " + d + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples but color_texture");
+  sss_frame bad_mode = frame(color, depth);
+  bad_mode.msaa_depth_resolve = 9;
+  expect_fails(bad_mode, SSS_ERROR_INVALID_ARGUMENT, "frame->msaa_depth_resolve = 9");
+  const GLuint ms_output = ms(GL_RGBA32F, {});
+  expect_fails(frame(color, depth, ms_output), SSS_ERROR_INVALID_TEXTURE,
+               "output_texture = " + std::to_string(ms_output) + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+
+  // A sample count the context does not offer: the GL refuses the storage, the module says so.
+  const GLuint too_many = ms(GL_RGBA16F, {}, 2 * max_samples_);
+  expect_fails(frame(too_many, depth), SSS_ERROR_INVALID_TEXTURE,
+               "color_texture = " + std::to_string(too_many) + " (GL_TEXTURE_2D_MULTISAMPLE) has no storage");
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("at most " + std::to_string(max_samples_) + " samples"),
+            std::string::npos);
+
+  // Mismatched counts, where the context can make a second count (llvmpipe rounds 2 up to 4: then
+  // a one-sample multisample texture, if the driver keeps it at 1, is the other count).
+  for (int other : {1, 2, 8}) {
+    if (other > max_samples_) continue;
+    const GLuint depth_other = ms(GL_DEPTH_COMPONENT32F, fine.window_depth, other);
+    const int got = texture_samples(depth_other);
+    if (got == 4 || got == 0) continue;
+    expect_fails(frame(color, depth_other), SSS_ERROR_INVALID_TEXTURE,
+                 "is GL_TEXTURE_2D_MULTISAMPLE with " + std::to_string(got) + " samples but color_texture = " + c +
+                     " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+  }
+
+  const auto after = read_samples(color, kW, kH, 4);
+  for (std::size_t s = 0; s < 4; ++s) {
+    EXPECT_EQ(0, std::memcmp(before[s].data(), after[s].data(), before[s].size() * sizeof(float))) << "sample " << s;
+  }
+  const std::vector<float> single_after = read_rgba(single_color, kW, kH);
+  EXPECT_EQ(0, std::memcmp(single_before.data(), single_after.data(), single_before.size() * sizeof(float)));
+}
+
+TEST_F(Msaa, StateIsRestoredAndNoErrorIsLeftInBothOutputModes) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 12, kCamera);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH24_STENCIL8, fine.window_depth);
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
+  // Host bindings on every unit the module uses, on both targets, and a sample mask.
+  const GLuint extra_ms = ms(GL_RGBA16F, {});
+  for (GLenum unit = 0; unit < 3; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, output);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, extra_ms);
+  }
+  glActiveTexture(GL_TEXTURE1);
+  glEnable(GL_SAMPLE_MASK);
+  glSampleMaski(0, 0x5u);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  for (GLuint out : {output, 0u}) {
+    const Snapshot before = take_snapshot();
+    const sss_frame f = frame(color, depth, out);
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "output " << out;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
+}
+
+}  // namespace
+}  // namespace sss_test
