@@ -17,6 +17,7 @@ SssControls controls_from_options(const Options &o) {
   c.width_scale = o.width_scale;
   c.follow_surface = o.follow_surface;
   c.use_stencil = o.use_stencil;
+  c.msaa_samples = o.msaa;
   return c;
 }
 

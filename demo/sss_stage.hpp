@@ -11,8 +11,8 @@
 
 namespace demo {
 
-// What the panel and the command line control. Later issues add kernel family / material, jitter,
-// MSAA and translucency here (see panel.cpp for the marked place in the UI).
+// What the panel and the command line control. Later issues add kernel family / material, jitter
+// and translucency here (see panel.cpp for the marked place in the UI).
 struct SssControls {
   bool enabled = true;           // S: the library runs (off: "after" is not produced, the frame shows "before")
   float width_scale = 1.0f;      // x the physical width sss_width_for_world_units_per_mm(world units per mm)
@@ -21,6 +21,7 @@ struct SssControls {
   int samples = SSS_SAMPLES_MEDIUM;
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
+  int msaa_samples = 0;          // 0, or 4: the lighting pass renders 4x MSAA targets and the library gets those
 };
 
 // The library's defaults (sss_default_settings) as controls.
