@@ -25,6 +25,7 @@
   X(PFNGLCLEARDEPTHPROC, glClearDepth)                           \
   X(PFNGLCLEARSTENCILPROC, glClearStencil)                       \
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                     \
+  X(PFNGLCLEARBUFFERIVPROC, glClearBufferiv)                     \
   X(PFNGLENABLEPROC, glEnable)                                   \
   X(PFNGLDISABLEPROC, glDisable)                                 \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                             \

@@ -174,6 +174,41 @@ TEST_F(Msaa, WriteBackChangesOnlyTranslucentSamplesAndResolvesToTheBlurredImage)
   EXPECT_GT(checked_pixels, kW * kH * 9 / 10);
 }
 
+TEST_F(Msaa, AMultisampledHostStencilLimitsTheFilter) {
+  // The relief scene's stencil excludes the right quarter; its edge falls between pixels, so every
+  // sample of a pixel agrees and the sample the driver's stencil resolve keeps does not matter.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth_stencil = make_multisample_depth_stencil(kW, kH, 4, fine.window_depth, fine.stencil);
+  textures_.push_back(depth_stencil);
+  const sss_stencil stencil = {depth_stencil, 1, 0xFF};
+  sss_frame f = frame(color, depth_stencil);
+  f.stencil = &stencil;
+  const std::vector<float> filtered = apply_to_output(f);
+  sss_settings s;
+  ASSERT_EQ((s.struct_size = sizeof s, sss_get_settings(sss_, &s)), SSS_OK);
+  const float width = s.width;
+  s.width = 0.0f;  // identity: the output is the resolved colour
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  const std::vector<float> resolved = apply_to_output(f);
+  s.width = width;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+
+  const SyntheticScene coarse = downsample_2x2(fine);
+  int outside = 0, changed_inside = 0, inside = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    if (coarse.stencil[p] == 0) {
+      ++outside;
+      EXPECT_EQ(0, std::memcmp(&filtered[p * 4], &resolved[p * 4], 4 * sizeof(float))) << "pixel " << p;
+    } else if (coarse.color[p * 4 + 3] > 0.0f) {
+      ++inside;
+      changed_inside += std::memcmp(&filtered[p * 4], &resolved[p * 4], 3 * sizeof(float)) != 0;
+    }
+  }
+  EXPECT_GT(outside, kW * kH / 8);
+  EXPECT_GT(changed_inside, inside * 9 / 10);
+}
+
 TEST_F(Msaa, BadMultisampledInputFailsWithASpecificMessageAndChangesNothing) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 11, kCamera);
   const SyntheticScene coarse = downsample_2x2(fine);

@@ -136,6 +136,71 @@ GLuint make_multisample_texture(GLenum internal_format, int width, int height, i
   return texture;
 }
 
+GLuint make_multisample_depth_stencil(int width, int height, int samples, const std::vector<float>& fine_depth,
+                                      const std::vector<uint8_t>& fine_stencil) {
+  const GLuint texture = make_multisample_texture(GL_DEPTH24_STENCIL8, width, height, samples, fine_depth);
+  Saved saved;
+  GLint stencil_func = 0, stencil_ref = 0, stencil_mask = 0, fail = 0, zfail = 0, zpass = 0, write_mask = 0;
+  glGetIntegerv(GL_STENCIL_FUNC, &stencil_func);
+  glGetIntegerv(GL_STENCIL_REF, &stencil_ref);
+  glGetIntegerv(GL_STENCIL_VALUE_MASK, &stencil_mask);
+  glGetIntegerv(GL_STENCIL_FAIL, &fail);
+  glGetIntegerv(GL_STENCIL_PASS_DEPTH_FAIL, &zfail);
+  glGetIntegerv(GL_STENCIL_PASS_DEPTH_PASS, &zpass);
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &write_mask);
+  const GLboolean stencil_test = glIsEnabled(GL_STENCIL_TEST);
+  // The stencil as a float image; fragments where it is 0 are discarded, the others REPLACE 1.
+  std::vector<float> marks(fine_stencil.size());
+  for (std::size_t i = 0; i < marks.size(); ++i) marks[i] = fine_stencil[i] != 0 ? 1.0f : 0.0f;
+  GLuint source = 0, framebuffer = 0, vao = 0;
+  glGenTextures(1, &source);
+  glBindTexture(GL_TEXTURE_2D, source);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, 2 * width, 2 * height, 0, GL_RED, GL_FLOAT, marks.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glGenFramebuffers(1, &framebuffer);
+  glGenVertexArrays(1, &vao);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D_MULTISAMPLE, texture, 0);
+  const GLenum none = GL_NONE;
+  glDrawBuffers(1, &none);
+  glStencilMask(0xFF);
+  const GLint zero = 0;
+  glClearBufferiv(GL_STENCIL, 0, &zero);
+  static const char* const kMarkShader = R"(#version 330 core
+uniform sampler2D u_fine;
+uniform int u_sample;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy) * 2 + ivec2(u_sample % 2, (u_sample / 2) % 2);
+  if (texelFetch(u_fine, p, 0).r == 0.0) discard;
+}
+)";
+  const GLuint program = build_program("msaa stencil", kFullscreenVertexShader, kMarkShader);
+  glUseProgram(program);
+  glUniform1i(glGetUniformLocation(program, "u_fine"), 0);
+  const GLint sample_location = glGetUniformLocation(program, "u_sample");
+  glBindVertexArray(vao);
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glEnable(GL_SAMPLE_MASK);
+  for (int i = 0; i < samples; ++i) {
+    glSampleMaski(0, 1u << i);
+    glUniform1i(sample_location, i);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDeleteProgram(program);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &source);
+  glStencilFunc(static_cast<GLenum>(stencil_func), stencil_ref, static_cast<GLuint>(stencil_mask));
+  glStencilOp(static_cast<GLenum>(fail), static_cast<GLenum>(zfail), static_cast<GLenum>(zpass));
+  glStencilMask(static_cast<GLuint>(write_mask));
+  stencil_test ? glEnable(GL_STENCIL_TEST) : glDisable(GL_STENCIL_TEST);
+  return texture;
+}
+
 std::vector<std::vector<float>> read_samples(GLuint texture, int width, int height, int samples) {
   Saved saved;
   GLint pack_buffer = 0, alignment = 4;

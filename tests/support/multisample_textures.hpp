@@ -16,6 +16,11 @@ namespace sss_test {
 GLuint make_multisample_texture(GLenum internal_format, int width, int height, int samples,
                                 const std::vector<float>& fine);
 
+// A multisampled GL_DEPTH24_STENCIL8 with depth from `fine_depth` and stencil 1 where
+// `fine_stencil` is non-zero (0 elsewhere), both of size 2w x 2h.
+GLuint make_multisample_depth_stencil(int width, int height, int samples, const std::vector<float>& fine_depth,
+                                      const std::vector<uint8_t>& fine_stencil);
+
 // Every sample of a multisampled colour texture: result[sample][(y * width + x) * 4 + channel].
 std::vector<std::vector<float>> read_samples(GLuint texture, int width, int height, int samples);
 
