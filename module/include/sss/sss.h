@@ -145,7 +145,8 @@ typedef struct sss_settings {
  *  The module copies the stencil into its own renderbuffer (never samples or attaches the host's
  *  texture while drawing to it). */
 typedef struct sss_stencil {
-  uint32_t depth_stencil_texture; /**< GL_TEXTURE_2D, GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, same size as colour */
+  uint32_t depth_stencil_texture; /**< GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, same size, target and sample count
+                                       as colour (multisampled: see sss_frame on MSAA) */
   uint32_t ref;                   /**< [0, 255] */
   uint32_t mask;                  /**< [0, 255]; 0 makes every pixel pass */
 } sss_stencil;
