@@ -27,7 +27,7 @@ struct MsaaRow {
   double time_ms = 0.0;                 // the whole sss_apply_frame (output texture)
   double resolve_share = 0.0;           // (MSAA path - single-sample path) / MSAA path, average row only
   double write_back_ms = 0.0;           // in-place per-sample write-back, average row only
-  std::string picture;                  // zoomed edge PNG (file name in the out folder), average row only
+  std::string picture;                  // zoomed edge PNG (file name in the out folder), average row only ("-" in CSV)
 };
 
 std::vector<MsaaRow> run_msaa_study(const Options& options, const GlLoader& loader, Clock clock);
