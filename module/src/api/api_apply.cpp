@@ -70,8 +70,11 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   r = same_size(ctx, "depth_texture", run->depth, run->color);
   if (r == SSS_OK) r = same_samples(ctx, "depth_texture", run->depth, run->color);
   if (r == SSS_OK) {
-    r = supported_samples(ctx, "depth_texture", run->depth, gl::MAX_DEPTH_TEXTURE_SAMPLES,
-                          "GL_MAX_DEPTH_TEXTURE_SAMPLES");
+    // Linear depth (R16F/R32F) is a colour format to the GL.
+    const bool linear = gl::is_linear_depth_format(run->depth.internal_format);
+    r = supported_samples(ctx, "depth_texture", run->depth,
+                          linear ? gl::MAX_COLOR_TEXTURE_SAMPLES : gl::MAX_DEPTH_TEXTURE_SAMPLES,
+                          linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
   }
   if (r != SSS_OK) return r;
   if (frame.output_texture != 0) {
