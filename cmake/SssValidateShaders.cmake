@@ -2,11 +2,11 @@
 # the way the library does (a #version line, the variant's #defines, then the file) and validates
 # each with glslangValidator, offline, without a GL driver.
 #   -DVALIDATOR=<glslangValidator> -DSHADER_DIR=<module/shaders> -DWORK_DIR=<scratch folder>
-# Variants: GLSL 330 core (the only one the library negotiates today); SSS_OUTSIDE 0..2 ×
-# SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; the MSAA resolve (SSS_LINEAR_DEPTH
-# 0/1), mask and write-back shaders.
+# Variants: each dialect the library negotiates at create time (module/shaders/version_*.glsl:
+# GLSL 330 core, GLSL 420 core, GLSL ES 300; glslangValidator takes the profile from #version) ×
+# SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur; and, for the
+# desktop dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders.
 file(MAKE_DIRECTORY "${WORK_DIR}")
-set(header "#version 330 core\n")
 set(failures 0)
 set(count 0)
 
@@ -26,21 +26,28 @@ endfunction()
 file(READ "${SHADER_DIR}/fullscreen.vert" vertex)
 file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
-validate(fullscreen vert "${header}${vertex}")
-validate(copy frag "${header}${copy}")
 file(READ "${SHADER_DIR}/msaa_resolve.frag" msaa_resolve)
 file(READ "${SHADER_DIR}/msaa_mask.frag" msaa_mask)
 file(READ "${SHADER_DIR}/msaa_write.frag" msaa_write)
-foreach(linear 0 1)
-  validate("msaa_resolve_l${linear}" frag "${header}#define SSS_LINEAR_DEPTH ${linear}\n${msaa_resolve}")
-endforeach()
-validate(msaa_mask frag "${header}${msaa_mask}")
-validate(msaa_write frag "${header}${msaa_write}")
-foreach(outside 0 1 2)
-  foreach(follow 0 1)
+foreach(dialect 330 420 es300)
+  file(READ "${SHADER_DIR}/version_${dialect}.glsl" header)
+  validate(${dialect}_fullscreen vert "${header}${vertex}")
+  validate(${dialect}_copy frag "${header}${copy}")
+  # The MSAA path runs on desktop GL only (sss.h, sss_frame): its shaders read sampler2DMS, which
+  # GLSL ES 3.00 does not have (ES 3.10 does, but the module never builds them on ES).
+  if(NOT dialect STREQUAL "es300")
     foreach(linear 0 1)
-      set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
-      validate("blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
+      validate("${dialect}_msaa_resolve_l${linear}" frag "${header}#define SSS_LINEAR_DEPTH ${linear}\n${msaa_resolve}")
+    endforeach()
+    validate(${dialect}_msaa_mask frag "${header}${msaa_mask}")
+    validate(${dialect}_msaa_write frag "${header}${msaa_write}")
+  endif()
+  foreach(outside 0 1 2)
+    foreach(follow 0 1)
+      foreach(linear 0 1)
+        set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_MAX_TAPS 65\n")
+        validate("${dialect}_blur_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
+      endforeach()
     endforeach()
   endforeach()
 endforeach()

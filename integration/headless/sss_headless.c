@@ -285,6 +285,7 @@ struct sss_headless {
   /* EGL */
   EGLDisplay egl_dpy;
   EGLContext egl_ctx;
+  EGLenum egl_api; /* EGL_OPENGL_API or EGL_OPENGL_ES_API */
 };
 
 enum { OSMESA_BUFFER_SIZE = 16 };
@@ -294,6 +295,14 @@ static SSS_THREAD_LOCAL sss_headless *t_current = NULL;
 
 static int is_egl(const sss_headless *h) { return h->backend != SSS_HEADLESS_OSMESA; }
 
+/* 0 OSMesa, 1 EGL with desktop GL, 2 EGL with OpenGL ES. EGL keeps one current context per client
+ * API, but Mesa's dispatch is one per thread: contexts of different families are never current
+ * together. */
+static int family(const sss_headless *h) {
+  if (!is_egl(h)) return 0;
+  return h->egl_api == EGL_OPENGL_ES_API ? 2 : 1;
+}
+
 /* The raw make-current / release of one backend, without cross-family bookkeeping. */
 static int raw_make_current(sss_headless *h) {
   if (!is_egl(h)) {
@@ -302,7 +311,7 @@ static int raw_make_current(sss_headless *h) {
       return -1;
   } else {
     /* eglGetCurrentContext and friends answer for the thread's bound API. */
-    if (!g_egl.BindAPI(EGL_OPENGL_API)) return -1;
+    if (!g_egl.BindAPI(h->egl_api)) return -1;
     if (!g_egl.MakeCurrent(h->egl_dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, h->egl_ctx)) return -1;
   }
   t_current = h;
@@ -315,7 +324,7 @@ static int raw_release(sss_headless *h) {
     /* Only release what this thread made current: OSMesaMakeCurrent(NULL) releases whatever GL
      * context is current in the shared libglapi, which may belong to another library. */
     if (t_current == h && !g_osmesa.make_current(NULL, NULL, 0, 0, 0)) rc = -1;
-  } else if (g_egl.BindAPI(EGL_OPENGL_API) && g_egl.GetCurrentContext() == h->egl_ctx) {
+  } else if (g_egl.BindAPI(h->egl_api) && g_egl.GetCurrentContext() == h->egl_ctx) {
     if (!g_egl.MakeCurrent(h->egl_dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT)) rc = -1;
   }
   if (t_current == h) t_current = NULL;
@@ -326,7 +335,7 @@ static int raw_release(sss_headless *h) {
  * (so that it can be made current again), or NULL. */
 static sss_headless *release_other_family(const sss_headless *h) {
   sss_headless *cur = t_current;
-  if (cur && cur != h && is_egl(cur) != is_egl(h)) {
+  if (cur && cur != h && family(cur) != family(h)) {
     (void)raw_release(cur);
     return cur;
   }
@@ -434,15 +443,17 @@ static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, 
             display_label, (int)major, (int)minor, desc->major, desc->minor);
     return -1;
   }
-  if (!g_egl.BindAPI(EGL_OPENGL_API)) {
-    set_egl_err(err, err_size, "eglBindAPI(EGL_OPENGL_API)");
+  if (!g_egl.BindAPI(h->egl_api)) {
+    set_egl_err(err, err_size, h->egl_api == EGL_OPENGL_ES_API ? "eglBindAPI(EGL_OPENGL_ES_API)"
+                                                                : "eglBindAPI(EGL_OPENGL_API)");
     return -1;
   }
 
   if (!has_ext(exts, "EGL_KHR_no_config_context") &&
       !has_ext(exts, "EGL_MESA_configless_context")) {
-    const EGLint cfg_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
-                                  EGL_NONE};
+    const EGLint cfg_attribs[] = {EGL_RENDERABLE_TYPE,
+                                  h->egl_api == EGL_OPENGL_ES_API ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT,
+                                  EGL_SURFACE_TYPE, 0, EGL_NONE};
     EGLint num = 0;
     if (!g_egl.ChooseConfig(dpy, cfg_attribs, &config, 1, &num)) {
       set_egl_err(err, err_size, "eglChooseConfig");
@@ -459,7 +470,7 @@ static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, 
   attribs[n++] = desc->major;
   attribs[n++] = EGL_CONTEXT_MINOR_VERSION;
   attribs[n++] = desc->minor;
-  if (desc->major > 3 || (desc->major == 3 && desc->minor >= 2)) {
+  if (h->egl_api == EGL_OPENGL_API && (desc->major > 3 || (desc->major == 3 && desc->minor >= 2))) {
     attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
     attribs[n++] = desc->core_profile ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
                                       : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
@@ -477,8 +488,9 @@ static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, 
 
   h->egl_ctx = g_egl.CreateContext(dpy, config, EGL_NO_CONTEXT, attribs);
   if (h->egl_ctx == EGL_NO_CONTEXT) {
-    snprintf(what, sizeof what, "%s: eglCreateContext(OpenGL %d.%d %s%s)", display_label,
-             desc->major, desc->minor, desc->core_profile ? "core" : "compatibility",
+    snprintf(what, sizeof what, "%s: eglCreateContext(OpenGL %s%d.%d %s%s)", display_label,
+             h->egl_api == EGL_OPENGL_ES_API ? "ES " : "", desc->major, desc->minor,
+             h->egl_api == EGL_OPENGL_ES_API ? "" : desc->core_profile ? "core" : "compatibility",
              desc->debug ? " debug" : "");
     set_egl_err(err, err_size, what);
     return -1;
@@ -592,12 +604,13 @@ int sss_headless_create(const sss_headless_desc *desc, sss_headless **out, char 
     return -1;
   }
   if (desc->backend != SSS_HEADLESS_OSMESA && desc->backend != SSS_HEADLESS_EGL_SURFACELESS &&
-      desc->backend != SSS_HEADLESS_EGL_DEVICE) {
+      desc->backend != SSS_HEADLESS_EGL_DEVICE && desc->backend != SSS_HEADLESS_EGL_GLES) {
     set_err(err, err_size, "sss_headless_create: unknown backend %d", (int)desc->backend);
     return -1;
   }
   if (desc->major < 1 || desc->minor < 0 ||
-      (desc->core_profile && (desc->major < 3 || (desc->major == 3 && desc->minor < 2)))) {
+      (desc->backend != SSS_HEADLESS_EGL_GLES && desc->core_profile &&
+       (desc->major < 3 || (desc->major == 3 && desc->minor < 2)))) {
     set_err(err, err_size,
             "sss_headless_create: invalid GL version %d.%d for a %s profile (core needs >= 3.2)",
             desc->major, desc->minor, desc->core_profile ? "core" : "compatibility");
@@ -611,6 +624,7 @@ int sss_headless_create(const sss_headless_desc *desc, sss_headless **out, char 
   h->backend = desc->backend;
   h->egl_dpy = EGL_NO_DISPLAY;
   h->egl_ctx = EGL_NO_CONTEXT;
+  h->egl_api = desc->backend == SSS_HEADLESS_EGL_GLES ? EGL_OPENGL_ES_API : EGL_OPENGL_API;
 
   /* The new context becomes current: release one of the other family first (see the notes);
    * it is made current again if the create fails. */
@@ -618,7 +632,8 @@ int sss_headless_create(const sss_headless_desc *desc, sss_headless **out, char 
 
   switch (desc->backend) {
     case SSS_HEADLESS_OSMESA: rc = create_osmesa(desc, h, err, err_size); break;
-    case SSS_HEADLESS_EGL_SURFACELESS: rc = create_egl_surfaceless(desc, h, err, err_size); break;
+    case SSS_HEADLESS_EGL_SURFACELESS:
+    case SSS_HEADLESS_EGL_GLES: rc = create_egl_surfaceless(desc, h, err, err_size); break;
     default: rc = create_egl_device(desc, h, err, err_size); break;
   }
   if (rc != 0) {
@@ -670,6 +685,7 @@ const char *sss_headless_backend_name(sss_headless_backend b) {
     case SSS_HEADLESS_OSMESA: return "osmesa";
     case SSS_HEADLESS_EGL_SURFACELESS: return "egl";
     case SSS_HEADLESS_EGL_DEVICE: return "egl-device";
+    case SSS_HEADLESS_EGL_GLES: return "egl-gles";
   }
   return "unknown";
 }
@@ -683,6 +699,8 @@ int sss_headless_backend_from_name(const char *name, sss_headless_backend *out) 
     b = SSS_HEADLESS_EGL_SURFACELESS;
   else if (strcmp(name, "egl-device") == 0)
     b = SSS_HEADLESS_EGL_DEVICE;
+  else if (strcmp(name, "egl-gles") == 0)
+    b = SSS_HEADLESS_EGL_GLES;
   else
     return -1;
   *out = b;
@@ -698,6 +716,8 @@ static const char *get_string(sss_headless *h, GLenum name) {
   memcpy(&get, &p, sizeof p);
   return (const char *)get(name);
 }
+
+int sss_headless_backend_is_gles(sss_headless_backend b) { return b == SSS_HEADLESS_EGL_GLES; }
 
 const char *sss_headless_renderer(sss_headless *h) { return get_string(h, GL_RENDERER); }
 

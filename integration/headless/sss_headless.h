@@ -8,6 +8,10 @@
  *                    (or a GPU through its render node).
  *   EGL device       EGL_EXT_platform_device: enumerates devices, prefers a hardware one (an NVIDIA
  *                    card on a headless server), falls back to the software device.
+ *   EGL GLES         EGL surfaceless with EGL_OPENGL_ES_API: an OpenGL ES context of version
+ *                    desc->major.minor (3.0 for the module's ES path; core_profile is ignored).
+ *                    Mesa gives the highest ES version compatible with the request (3.2 on
+ *                    llvmpipe for 3.0), as it does for desktop GL.
  *
  * Rendering goes to framebuffer objects; the context has no usable default framebuffer.
  *
@@ -34,12 +38,13 @@ extern "C" {
 typedef enum sss_headless_backend {
   SSS_HEADLESS_OSMESA = 0,
   SSS_HEADLESS_EGL_SURFACELESS = 1,
-  SSS_HEADLESS_EGL_DEVICE = 2
+  SSS_HEADLESS_EGL_DEVICE = 2,
+  SSS_HEADLESS_EGL_GLES = 3
 } sss_headless_backend;
 
 typedef struct sss_headless_desc {
   sss_headless_backend backend;
-  int major, minor;     /* requested GL version, e.g. 4, 5 (>= 3.2 for core) */
+  int major, minor;     /* requested GL version, e.g. 4, 5 (>= 3.2 for core); the ES version for EGL GLES */
   int core_profile;     /* 1: core profile, 0: compatibility */
   int debug;            /* 1: request a debug context */
 } sss_headless_desc;
@@ -56,12 +61,14 @@ int sss_headless_release_current(sss_headless *h);
 
 /* GL function loader with the signature sss_create_desc.get_proc_address expects: user is the
  * sss_headless pointer. */
+/* 1 when the backend gives OpenGL ES contexts (SSS_HEADLESS_EGL_GLES), else 0. */
+int sss_headless_backend_is_gles(sss_headless_backend b);
 void *sss_headless_get_proc_address(const char *name, void *user);
 
 /* Destroys the context (releasing it first if current). NULL is a no-op. */
 void sss_headless_destroy(sss_headless *h);
 
-/* "osmesa", "egl" (surfaceless), "egl-device". */
+/* "osmesa", "egl" (surfaceless), "egl-device", "egl-gles" (surfaceless, OpenGL ES). */
 const char *sss_headless_backend_name(sss_headless_backend b);
 /* Parses the names above; 0 on success, -1 for an unknown name. */
 int sss_headless_backend_from_name(const char *name, sss_headless_backend *out);

@@ -2,10 +2,10 @@
  * sss_headless_info: creates a headless GL context with each requested backend and prints
  * GL_RENDERER and GL_VERSION.
  *
- *   sss_headless_info [options] [osmesa|egl|egl-device ...]
+ *   sss_headless_info [options] [osmesa|egl|egl-device|egl-gles ...]
  *
- *   (no backend)     all three backends
- *   --gl M.m         requested OpenGL version (default 4.5)
+ *   (no backend)     osmesa, egl and egl-device
+ *   --gl M.m         requested OpenGL version (default 4.5; OpenGL ES 3.0 for egl-gles)
  *   --compat         compatibility profile (default: core)
  *   --debug          request a debug context
  *   --repeat N       create/destroy every requested backend N times, interleaved (default 1)
@@ -22,7 +22,7 @@
 static void usage(FILE *f) {
   fprintf(f,
           "usage: sss_headless_info [--gl M.m] [--compat] [--debug] [--repeat N] "
-          "[osmesa|egl|egl-device ...]\n"
+          "[osmesa|egl|egl-device|egl-gles ...]\n"
           "Creates a headless OpenGL context per backend (default: all three) and prints\n"
           "GL_RENDERER and GL_VERSION. Exit status 1 if a requested backend failed.\n");
 }
@@ -33,6 +33,7 @@ int main(int argc, char **argv) {
   sss_headless_desc desc;
   int repeat = 1;
   int failed = 0;
+  int version_given = 0;
   int i, r;
 
   memset(&desc, 0, sizeof desc);
@@ -46,6 +47,7 @@ int main(int argc, char **argv) {
       usage(stdout);
       return 0;
     } else if (strcmp(a, "--gl") == 0 && i + 1 < argc) {
+      version_given = 1;
       if (sscanf(argv[++i], "%d.%d", &desc.major, &desc.minor) != 2) {
         fprintf(stderr, "sss_headless_info: bad --gl value '%s' (expected e.g. 4.5)\n", argv[i]);
         return 2;
@@ -85,10 +87,16 @@ int main(int argc, char **argv) {
       sss_headless *h = NULL;
       char err[512];
       const char *name = sss_headless_backend_name(backends[i]);
-      desc.backend = backends[i];
-      if (sss_headless_create(&desc, &h, err, sizeof err) != 0) {
-        fprintf(stderr, "%s: FAILED (OpenGL %d.%d %s): %s\n", name, desc.major, desc.minor,
-                desc.core_profile ? "core" : "compat", err);
+      sss_headless_desc d = desc;
+      d.backend = backends[i];
+      if (sss_headless_backend_is_gles(d.backend) && !version_given) {
+        d.major = 3;
+        d.minor = 0;
+      }
+      if (sss_headless_create(&d, &h, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: FAILED (OpenGL %s%d.%d %s): %s\n", name,
+                sss_headless_backend_is_gles(d.backend) ? "ES " : "", d.major, d.minor,
+                d.core_profile ? "core" : "compat", err);
         failed = 1;
         continue;
       }

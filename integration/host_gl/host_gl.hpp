@@ -121,9 +121,12 @@
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                     \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                           \
   X(PFNGLENDQUERYPROC, glEndQuery)                               \
-  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)       \
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)        \
+  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)             \
+  X(PFNGLGETQUERYIVPROC, glGetQueryiv)                           \
   X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
   X(PFNGLSAMPLEMASKIPROC, glSampleMaski)                         \
+  X(PFNGLTEXSTORAGE2DMULTISAMPLEPROC, glTexStorage2DMultisample) \
   X(PFNGLGETTEXLEVELPARAMETERIVPROC, glGetTexLevelParameteriv)
 
 namespace host_gl {

@@ -6,9 +6,10 @@
 //
 // Compile-time switch: SSS_LINEAR_DEPTH 0: hardware depth, linearised per sample; 1: the host's
 // depth already holds view distance.
+// Desktop GL only: composed after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
 
-uniform sampler2DMS u_color;
-uniform sampler2DMS u_depth;
+SSS_BINDING(0) uniform sampler2DMS u_color;
+SSS_BINDING(1) uniform sampler2DMS u_depth;
 uniform int u_samples;           // the textures' sample count (both have the same)
 uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 3 maximum (farthest)
 uniform vec2 u_ndc_from_depth;   // z_ndc = depth · x + y

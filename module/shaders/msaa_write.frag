@@ -5,9 +5,9 @@
 // silhouette) keep their exact values and per-sample detail survives for a host that tone-maps
 // before it resolves. The result is clamped at 0 (irradiance), which only matters where a dark
 // translucent sample sits in a pixel that got much darker.
-uniform sampler2DMS u_copy;      // a copy of the host's colour samples (never the attached texture)
-uniform sampler2D u_blurred;     // the vertical pass's single-sample result
-uniform sampler2D u_resolved;    // the resolve pass's colour
+SSS_BINDING(0) uniform sampler2DMS u_copy;      // a copy of the host's colour samples (never the attached texture)
+SSS_BINDING(1) uniform sampler2D u_blurred;     // the vertical pass's single-sample result
+SSS_BINDING(2) uniform sampler2D u_resolved;    // the resolve pass's colour
 uniform int u_sample;            // the sample this draw writes
 uniform int u_samples;
 out vec4 o_color;

@@ -9,11 +9,17 @@
 //                 separate output texture)
 //   SSS_FOLLOW_SURFACE  0 or 1
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
+// and from the dialect's header (module/src/gl/glsl_variant.cpp):
+//   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
+//                            module sets the unit with glUniform1i)
+//   SSS_MANUAL_DEPTH_FILTER  1 on OpenGL ES: depth textures cannot be filtered there (and R32F only
+//                            with an extension), so the depth taps are filtered here from four
+//                            texel fetches, the way GL_LINEAR with clamp-to-edge would
 
-uniform sampler2D u_source;    // the pass input (host colour, then the intermediate)
-uniform sampler2D u_depth;     // the host's depth
+SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour, then the intermediate)
+SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
 #if SSS_OUTSIDE == 2
-uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
+SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
 #endif
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
 uniform int u_tap_count;
@@ -32,6 +38,23 @@ float view_distance(float raw_depth) {
 #else
   float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
   return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
+#endif
+}
+
+// The raw depth at `position` (pixels), bilinear with clamp-to-edge.
+float depth_at(vec2 position, vec2 texel_size) {
+#if SSS_MANUAL_DEPTH_FILTER
+  vec2 p = position - 0.5;
+  vec2 base = floor(p);
+  vec2 f = p - base;
+  ivec2 last = textureSize(u_depth, 0) - 1;
+  ivec2 i0 = clamp(ivec2(base), ivec2(0), last);
+  ivec2 i1 = clamp(ivec2(base) + 1, ivec2(0), last);
+  float bottom = texelFetch(u_depth, i0, 0).r * (1.0 - f.x) + texelFetch(u_depth, ivec2(i1.x, i0.y), 0).r * f.x;
+  float top = texelFetch(u_depth, ivec2(i0.x, i1.y), 0).r * (1.0 - f.x) + texelFetch(u_depth, i1, 0).r * f.x;
+  return bottom * (1.0 - f.y) + top * f.y;
+#else
+  return texture(u_depth, position * texel_size).r;
 #endif
 }
 
@@ -73,7 +96,7 @@ void main() {
     // the centre), like a tap across a depth step.
     if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
 #if SSS_FOLLOW_SURFACE
-    float s = follow_surface * abs(centre_distance - view_distance(texture(u_depth, uv).r));
+    float s = follow_surface * abs(centre_distance - view_distance(depth_at(position, texel_size)));
     if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
     tap = mix(tap, centre.rgb, s);
 #endif

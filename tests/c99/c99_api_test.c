@@ -22,6 +22,8 @@ int main(void) {
   int i;
   sss_context *ctx = NULL;
   sss_create_desc desc;
+  sss_stats stats;
+  sss_frame frame;
 
   sss_default_settings(&settings);
   CHECK(settings.struct_size == sizeof settings);
@@ -41,6 +43,18 @@ int main(void) {
   desc.struct_size = sizeof desc;
   CHECK(sss_create(&desc, &ctx) == SSS_ERROR_INVALID_ARGUMENT && ctx == NULL);
   sss_destroy(NULL);
+  /* sss_get_stats and the frame's texture description are plain C99 too. */
+  memset(&stats, 0, sizeof stats);
+  stats.struct_size = sizeof stats;
+  CHECK(sss_get_stats(NULL, &stats) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
+  CHECK(SSS_GLSL_330_CORE != SSS_GLSL_300_ES && (SSS_CREATE_ALL_FLAGS & SSS_CREATE_STATS) != 0);
+  memset(&frame, 0, sizeof frame);
+  frame.struct_size = sizeof frame;
+  frame.color_format = 0x881A; /* GL_RGBA16F */
+  frame.texture_width = 64;
+  frame.texture_height = 48;
+  CHECK(sss_apply_frame(NULL, &frame) == SSS_ERROR_INVALID_ARGUMENT);
   printf("%d passed, %d failed\n", failures == 0 ? 1 : 0, failures == 0 ? 0 : 1);
   return failures == 0 ? 0 : 1;
 }

@@ -27,6 +27,8 @@ class Msaa : public GlTest {
   void SetUp() override {
     GlTest::SetUp();
     if (HasFatalFailure()) return;
+    // sss.h: the MSAA path is desktop GL only; on ES a multisampled input is refused (MsaaOnGles).
+    if (is_gles()) GTEST_SKIP() << "the MSAA path is desktop OpenGL only (see MsaaOnGles for ES)";
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples_);
     if (max_samples_ < 4) GTEST_SKIP() << "the context offers " << max_samples_ << " samples";
     sss_ = create_sss();
@@ -306,6 +308,154 @@ TEST_F(Msaa, StateIsRestoredAndNoErrorIsLeftInBothOutputModes) {
     EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "output " << out;
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   }
+}
+
+// sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
+// alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
+// stencil-rejected pixels, vertical blur + copy, since they write a separate target), and written
+// back one draw per sample (4 here).
+TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
+  const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 2 + 4};  // into output, written back
+  const GLuint outputs[2] = {output, 0u};
+  for (int i = 0; i < 2; ++i) {
+    const sss_frame f = frame(color, depth, outputs[i]);
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    sss_stats st = {};
+    st.struct_size = sizeof st;
+    ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+    EXPECT_EQ(st.frames, static_cast<uint64_t>(i + 1));
+    EXPECT_EQ(st.last_frame_passes, expected[i]) << "output " << outputs[i];
+  }
+}
+
+// OpenGL ES (backend egl-gles; llvmpipe gives ES 3.2, so multisampled textures exist): the MSAA
+// path is desktop-only, so a multisampled input fails with SSS_ERROR_UNSUPPORTED and a message
+// that says what to do, before anything is drawn, leaving no error and the state as it was. The
+// module is created the fixture's way on ES (no glGetTexLevelParameteriv), so this also checks
+// that the refusal comes before the ES 3.0 texture description is asked for.
+class MsaaOnGles : public GlTest {};
+
+TEST_F(MsaaOnGles, AMultisampledInputIsUnsupported) {
+  if (!is_gles()) GTEST_SKIP() << "OpenGL ES only (backend egl-gles); desktop GL runs the MSAA path (Msaa.*)";
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  GLuint color = 0;
+  glGenTextures(1, &color);
+  textures_.push_back(color);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, color);
+  glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, kW, kH, GL_TRUE);  // ES 3.1
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const GLuint depth = make_depth32f(kW, kH, std::vector<float>(kW * kH, 0.5f));
+  const GLuint bound = make_rgba16f(4, 4, std::vector<float>(64, 0.25f));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, bound);  // the module's probe binds on unit 0: this must survive it
+  const Snapshot before = take_snapshot(true);
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = color;
+  f.depth_texture = depth;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_UNSUPPORTED) << sss_last_error(sss_);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("color_texture = " + std::to_string(color) + " is GL_TEXTURE_2D_MULTISAMPLE"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("desktop OpenGL"), std::string::npos) << message;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(describe_differences(before, take_snapshot(true)), "");
+}
+
+// OpenGL ES 3.0 has no GL_TEXTURE_2D_MULTISAMPLE (an invalid enum there), so the module must never
+// bind or query it. llvmpipe gives ES 3.2, so the module is told "OpenGL ES 3.0" by the loader
+// (glGetString), loses the ES 3.1 texture query (as on a real ES 3.0 driver), and every use of the
+// multisample enums through glBindTexture, glGetIntegerv and glGetIntegeri_v is counted.
+using GetStringFn = const GLubyte* (*)(GLenum);
+using BindTextureFn = void (*)(GLenum, GLuint);
+using GetIntegervFn = void (*)(GLenum, GLint*);
+using GetIntegeriVFn = void (*)(GLenum, GLuint, GLint*);
+GetStringFn g_real_get_string = nullptr;
+BindTextureFn g_real_bind_texture = nullptr;
+GetIntegervFn g_real_get_integerv = nullptr;
+GetIntegeriVFn g_real_get_integeri_v = nullptr;
+int g_multisample_uses = 0;
+
+const GLubyte* get_string_es30(GLenum name) {
+  if (name == GL_VERSION) return reinterpret_cast<const GLubyte*>("OpenGL ES 3.0 as told by the test");
+  return g_real_get_string(name);
+}
+void bind_texture_counted(GLenum target, GLuint texture) {
+  if (target == GL_TEXTURE_2D_MULTISAMPLE) ++g_multisample_uses;
+  g_real_bind_texture(target, texture);
+}
+void get_integerv_counted(GLenum pname, GLint* data) {
+  if (pname == GL_TEXTURE_BINDING_2D_MULTISAMPLE || pname == GL_MAX_COLOR_TEXTURE_SAMPLES ||
+      pname == GL_MAX_DEPTH_TEXTURE_SAMPLES) {
+    ++g_multisample_uses;
+  }
+  g_real_get_integerv(pname, data);
+}
+void get_integeri_v_counted(GLenum pname, GLuint index, GLint* data) {
+  if (pname == GL_SAMPLE_MASK_VALUE) ++g_multisample_uses;
+  g_real_get_integeri_v(pname, index, data);
+}
+template <typename Fn>
+void* wrap(Fn* real, void* address, void* wrapper) {
+  *real = reinterpret_cast<Fn>(address);
+  return wrapper;
+}
+void* es30_told_get_proc_address(const char* name, void* user) {
+  const std::string n = name;
+  void* real = sss_headless_get_proc_address(name, user);
+  if (n == "glGetTexLevelParameteriv") return nullptr;  // ES 3.1+
+  if (n == "glGetString") return wrap(&g_real_get_string, real, reinterpret_cast<void*>(&get_string_es30));
+  if (n == "glBindTexture") return wrap(&g_real_bind_texture, real, reinterpret_cast<void*>(&bind_texture_counted));
+  if (n == "glGetIntegerv") return wrap(&g_real_get_integerv, real, reinterpret_cast<void*>(&get_integerv_counted));
+  if (n == "glGetIntegeri_v") {
+    return wrap(&g_real_get_integeri_v, real, reinterpret_cast<void*>(&get_integeri_v_counted));
+  }
+  return real;
+}
+
+TEST_F(MsaaOnGles, OnEs30TheMultisampleTargetIsNeverTouched) {
+  if (!is_gles()) GTEST_SKIP() << "OpenGL ES only (backend egl-gles)";
+  loader_override_ = es30_told_get_proc_address;
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  GLuint multisampled = 0;
+  glGenTextures(1, &multisampled);
+  textures_.push_back(multisampled);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, multisampled);
+  glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, kW, kH, GL_TRUE);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  const std::vector<float> rgba(kW * kH * 4, 0.5f);
+  const GLuint color = make_rgba16f(kW, kH, rgba);
+  const GLuint depth = make_depth32f(kW, kH, std::vector<float>(kW * kH, 0.5f));
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = multisampled;
+  f.depth_texture = depth;
+  f.color_format = GL_RGBA16F;
+  f.depth_format = GL_DEPTH_COMPONENT32F;
+  f.texture_width = kW;
+  f.texture_height = kH;
+  g_multisample_uses = 0;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_INVALID_TEXTURE) << sss_last_error(sss_);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("color_texture = " + std::to_string(multisampled) + " is not a GL_TEXTURE_2D"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  f.color_texture = color;  // the ES 3.0 path itself works and touches no multisample state either
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(g_multisample_uses, 0);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ struct FilterOutcome {
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
 
+// Fills the frame's texture description (formats and size) for the textures run_case makes; run_case
+// does it on OpenGL ES, which cannot be asked.
+void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame);
+
 class FilterCaseTest : public GlTest {
  protected:
   FilterOutcome run_case(const SyntheticScene& scene, const FilterCase& c);

@@ -1,10 +1,35 @@
 #include "gl_fixture.hpp"
 
+#include <cstring>
+
 using namespace host_gl;
 
 namespace sss_test {
 
 namespace {
+// OpenGL ES has no glGetTexImage: the texture goes on a framebuffer of its own and glReadPixels
+// reads it (RGBA/FLOAT, which EXT_color_buffer_float allows for float colour buffers). Leaves the
+// caller's read framebuffer, pack buffer and alignment.
+void read_rgba_es(GLuint texture, int width, int height, float* out) {
+  GLint read_fb = 0, pack_buffer = 0, alignment = 4;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fb);
+  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pack_buffer);
+  glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
+  GLuint fb = 0;
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fb);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_READ_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fb));
+  glDeleteFramebuffers(1, &fb);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(pack_buffer));
+  glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+}
+
 // glGetTexImage of level 0 as floats, leaving the caller's binding, pack buffer and alignment.
 void read_level0(GLuint texture, GLenum format, float* out) {
   GLint previous = 0, pack_buffer = 0, alignment = 4;
@@ -32,7 +57,7 @@ void GlTest::SetUp() {
   sss_headless_desc desc = {};
   desc.backend = test_backend();
   desc.major = 3;
-  desc.minor = 3;
+  desc.minor = sss_headless_backend_is_gles(desc.backend) ? 0 : 3;  // OpenGL ES 3.0, or GL 3.3 core
   desc.core_profile = 1;
   char error[512] = "";
   ASSERT_EQ(sss_headless_create(&desc, &headless_, error, sizeof error), 0) << error;
@@ -53,10 +78,19 @@ void GlTest::TearDown() {
   headless_ = nullptr;
 }
 
+void* es30_get_proc_address(const char* name, void* user) {
+  // llvmpipe gives OpenGL ES 3.2 for a 3.0 request; hiding the one ES 3.1 function the module
+  // would use (the texture level query) makes it run exactly its ES 3.0 path.
+  if (std::strcmp(name, "glGetTexLevelParameteriv") == 0) return nullptr;
+  return sss_headless_get_proc_address(name, user);
+}
+
 sss_context* GlTest::create_sss(uint32_t flags) {
   sss_create_desc desc = {};
   desc.struct_size = sizeof desc;
-  desc.get_proc_address = sss_headless_get_proc_address;
+  desc.get_proc_address = loader_override_ != nullptr ? loader_override_
+                          : is_gles()                  ? es30_get_proc_address
+                                                       : sss_headless_get_proc_address;
   desc.get_proc_address_user = headless_;
   desc.flags = flags;
   sss_context* ctx = nullptr;
@@ -101,14 +135,24 @@ GLuint GlTest::make_depth32f(int width, int height, const std::vector<float>& de
 
 std::vector<float> GlTest::read_rgba(GLuint texture, int width, int height) {
   std::vector<float> out(static_cast<std::size_t>(width) * height * 4);
-  read_level0(texture, GL_RGBA, out.data());
+  if (is_gles()) {
+    read_rgba_es(texture, width, height, out.data());
+  } else {
+    read_level0(texture, GL_RGBA, out.data());
+  }
   return out;
 }
 
 std::vector<float> GlTest::read_depth(GLuint texture, int width, int height) {
   std::vector<float> out(static_cast<std::size_t>(width) * height);
-  read_level0(texture, GL_DEPTH_COMPONENT, out.data());
+  if (is_gles()) {
+    ADD_FAILURE() << "read_depth: OpenGL ES cannot read depth back (no glGetTexImage, no depth glReadPixels)";
+  } else {
+    read_level0(texture, GL_DEPTH_COMPONENT, out.data());
+  }
   return out;
 }
+
+bool GlTest::is_gles() const { return sss_headless_backend_is_gles(test_backend()) != 0; }
 
 }  // namespace sss_test

@@ -1,5 +1,8 @@
 #include "gl_state_snapshot.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 #include <array>
 #include <sstream>
 
@@ -21,7 +24,7 @@ void Snapshot::boolean(const char* name, GLenum pname, int count) {
 
 void Snapshot::enabled(const char* name, GLenum cap) { add(name, {glIsEnabled(cap)}); }
 
-Snapshot take_snapshot() {
+Snapshot take_snapshot(bool es) {
   Snapshot s;
   s.integer("GL_CURRENT_PROGRAM", GL_CURRENT_PROGRAM);
   s.integer("GL_VERTEX_ARRAY_BINDING", GL_VERTEX_ARRAY_BINDING);
@@ -69,10 +72,16 @@ Snapshot take_snapshot() {
       {"GL_DITHER", GL_DITHER},
       {"GL_MULTISAMPLE", GL_MULTISAMPLE},
   };
-  for (const auto& cap : caps) s.enabled(cap.first, cap.second);
+  // OpenGL ES has none of these (asking raises GL_INVALID_ENUM).
+  const GLenum desktop_only[] = {GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP,     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0,
+                                 GL_CLIP_DISTANCE5,   GL_CLIP_DISTANCE7, GL_MULTISAMPLE};
+  for (const auto& cap : caps) {
+    if (es && std::find(std::begin(desktop_only), std::end(desktop_only), cap.second) != std::end(desktop_only)) continue;
+    s.enabled(cap.first, cap.second);
+  }
   s.boolean("GL_COLOR_WRITEMASK", GL_COLOR_WRITEMASK, 4);
   s.boolean("GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK);
-  s.integer("GL_POLYGON_MODE", GL_POLYGON_MODE, 2);
+  if (!es) s.integer("GL_POLYGON_MODE", GL_POLYGON_MODE, 2);
   s.integer("GL_DEPTH_FUNC", GL_DEPTH_FUNC);
   s.integer("GL_BLEND_SRC_RGB", GL_BLEND_SRC_RGB);
   s.integer("GL_BLEND_DST_ALPHA", GL_BLEND_DST_ALPHA);

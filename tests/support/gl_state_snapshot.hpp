@@ -19,7 +19,8 @@ struct Snapshot {
   void enabled(const char* name, GLenum cap);
 };
 
-Snapshot take_snapshot();
+// es: an OpenGL ES context (the desktop-only states are left out).
+Snapshot take_snapshot(bool es = false);
 // "" when equal; else one line per differing state: "NAME: before { ... } after { ... }".
 std::string describe_differences(const Snapshot& before, const Snapshot& after);
 

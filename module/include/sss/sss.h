@@ -35,6 +35,14 @@
  *   - GL_COLOR_WRITEMASK (draw buffer 0), GL_POLYGON_MODE
  *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
  *   - KHR_debug groups are pushed and popped in pairs.
+ *   - Queries (SSS_CREATE_STATS): the module begins and ends its own inside the call, so no query
+ *     is left active; a target the host has a query active on is not used (GL_CURRENT_QUERY of
+ *     GL_TIME_ELAPSED and GL_SAMPLES_PASSED stays the host's).
+ *   On OpenGL ES the list is what exists there: the same, without GL_FRAMEBUFFER_SRGB,
+ *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7 and GL_POLYGON_MODE (none of them exist
+ *   in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
+ *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
+ *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
  *   values, pixel pack/unpack parameters, buffer bindings other than the unpack buffer, texture
  *   parameters of host textures (the module samples through its own sampler objects).
@@ -103,7 +111,10 @@ typedef struct sss_context sss_context;
 #define SSS_CREATE_NO_STATE_RESTORE 0x1u
 /** Skip KHR_debug groups and object labels even when the extension is present. */
 #define SSS_CREATE_NO_DEBUG_LABELS 0x2u
-#define SSS_CREATE_ALL_FLAGS 0x3u
+/** Measure the passes on the GPU for sss_get_stats (pixels touched, GPU time per pass). Without it
+ *  no query object exists and no query runs; sss_get_stats then gives the counters only. */
+#define SSS_CREATE_STATS 0x4u
+#define SSS_CREATE_ALL_FLAGS 0x7u
 
 typedef struct sss_create_desc {
   uint32_t struct_size;                     /**< sizeof(sss_create_desc) */
@@ -178,7 +189,11 @@ typedef struct sss_stencil {
  *  change times samples / translucent samples (so the box resolve equals the blurred pixel),
  *  clamped at 0; every other sample, and alpha everywhere, keeps its exact value. With an output
  *  texture (single-sample) the blurred resolve goes there and untouched pixels get the resolved
- *  colour. */
+ *  colour.
+ *  The MSAA path is desktop OpenGL only (it needs GLSL sampler2DMS and glSampleMaski). OpenGL ES 3.0
+ *  has no multisampled textures at all (the module never asks for GL_TEXTURE_2D_MULTISAMPLE there);
+ *  on OpenGL ES 3.1+ a multisampled input fails with SSS_ERROR_UNSUPPORTED: resolve it to
+ *  GL_TEXTURE_2D first there (colour by glBlitFramebuffer, depth as linear view distance). */
 typedef struct sss_frame {
   uint32_t struct_size;      /**< sizeof(sss_frame) */
   uint32_t color_texture;    /**< GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA16F or GL_RGBA32F: linear
@@ -190,8 +205,57 @@ typedef struct sss_frame {
   const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
   int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
   uint32_t flags;            /**< SSS_FRAME_* */
+  /* Texture description (optional on desktop GL and OpenGL ES 3.1+, required on OpenGL ES 3.0).
+   * The module asks the GL for each texture's internal format and size (glGetTexLevelParameteriv);
+   * OpenGL ES 3.0 has no such query, so there the frame must say what the host allocated: every
+   * format of a texture the frame names, and the size. Where the GL can be asked, a value that is
+   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ).
+   * Formats are the GL internal-format values the textures were allocated with; 0 = not given. */
+  uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
+  uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
+                                  0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
+  uint32_t output_format;    /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F; ignored when output_texture is 0 */
+  uint32_t stencil_format;   /**< 0, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8; ignored when stencil is NULL */
+  int32_t texture_width;     /**< 0 (with texture_height 0), or the width all the textures share, [1, GL_MAX_TEXTURE_SIZE] */
+  int32_t texture_height;    /**< 0 (with texture_width 0), or their height, [1, GL_MAX_TEXTURE_SIZE] */
   uint32_t msaa_depth_resolve; /**< SSS_MSAA_DEPTH_* (multisampled inputs only; default 0 = average) */
 } sss_frame;
+
+/* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
+#define SSS_GLSL_330_CORE 0 /**< OpenGL 3.3 to 4.1 */
+#define SSS_GLSL_420_CORE 1 /**< OpenGL 4.2+: sampler units bound in the shader (layout(binding)) */
+#define SSS_GLSL_300_ES 2   /**< OpenGL ES 3.x: precision qualifiers, depth filtered in the shader */
+
+/* SSS_STATS_* bits of sss_stats.measured: which measurements the numbers below them hold. */
+#define SSS_STATS_PIXELS 0x1u   /**< pixels_touched is valid */
+#define SSS_STATS_GPU_TIME 0x2u /**< gpu_time_ms is valid */
+
+/** What the context did, for a host's profiler overlay (sss_get_stats). */
+typedef struct sss_stats {
+  uint32_t struct_size;          /**< sizeof(sss_stats), set by the caller */
+  uint32_t glsl_variant;         /**< SSS_GLSL_*: the dialect the shaders were compiled in */
+  uint64_t frames;               /**< sss_apply / sss_apply_frame calls that returned SSS_OK */
+  uint64_t passes;               /**< full-screen draws over all those frames (blur passes and the copies of
+                                      stencil-rejected pixels, and for multisampled input the resolve, the stencil
+                                      mark and one write per sample; 0 for an in-place frame with width or
+                                      strength 0) */
+  uint32_t last_frame_passes;    /**< full-screen draws of the last successful frame */
+  /* GPU measurements (SSS_CREATE_STATS only). Read back without stalling: they come from the
+   * latest frame whose queries the GPU had finished when a later sss_apply_frame looked, so they
+   * lag the current frame by one or more frames (measured_frame says which). */
+  uint32_t measured;             /**< SSS_STATS_* bits: what the measurements below hold; 0 without SSS_CREATE_STATS,
+                                      before the first result, or where the GL cannot measure (see below) */
+  uint64_t measured_frame;       /**< the frame (1 = the first successful one) the measurements come from; 0: none */
+  uint64_t pixels_touched;       /**< pixels the vertical blur pass wrote (GL_SAMPLES_PASSED): in place, exactly the
+                                      blurred ones (in the stencil mask, alpha > 0, usable depth); into a separate
+                                      output, every pixel of the viewport in the mask. Desktop GL only (OpenGL ES
+                                      has no sample count) */
+  double gpu_time_ms[2];         /**< GPU time of the horizontal and the vertical pass, each with its copies
+                                      (GL_TIME_ELAPSED), >= 0. Only where timer queries are trustworthy:
+                                      GL_QUERY_COUNTER_BITS > 0, on OpenGL ES through GL_EXT_disjoint_timer_query
+                                      (a disjoint event voids the results it spans), and not on Mesa's software
+                                      rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
+} sss_stats;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */
 SSS_API const char *sss_result_string(sss_result r);
@@ -201,12 +265,23 @@ SSS_API const char *sss_result_string(sss_result r);
  *  (sss_create, or any call given a NULL context). "" when there was none. Never NULL. */
 SSS_API const char *sss_last_error(const sss_context *ctx);
 
-/** Creates a context. Needs a current GL context, 3.3 or newer (core or compatibility); compiles
- *  the shaders and builds the GL objects the module owns in it.
+/** Creates a context. Needs a current GL context: OpenGL 3.3 or newer (core or compatibility) or
+ *  OpenGL ES 3.0 or newer; compiles the shaders and builds the GL objects the module owns in it.
+ *  The GLSL dialect is chosen from GL_VERSION ("OpenGL ES 3.x ..." is ES) and logged at INFO with
+ *  the renderer (sss_stats.glsl_variant gives it too):
+ *    OpenGL 3.3..4.1  GLSL 330 core;
+ *    OpenGL 4.2+      GLSL 420 core, sampler units bound in the shader (no glUniform1i per sampler);
+ *    OpenGL ES 3.x    GLSL ES 300 with highp precision; depth is filtered in the shader (ES cannot
+ *                     filter depth textures). ES needs GL_EXT_color_buffer_float or
+ *                     GL_EXT_color_buffer_half_float (the RGBA16F intermediate is rendered to);
+ *                     RGBA32F colour or output textures need GL_EXT_color_buffer_float, and RGBA32F
+ *                     colour also GL_OES_texture_float_linear (checked by sss_apply_frame). On ES 3.0
+ *                     the frame must describe its textures (sss_frame's format and size fields).
  *  @retval SSS_OK                        *out holds the new context
  *  @retval SSS_ERROR_INVALID_ARGUMENT    desc or out NULL, bad struct_size, NULL get_proc_address, unknown flags
  *  @retval SSS_ERROR_NO_CONTEXT          no GL context is current (glGetString(GL_VERSION) gave NULL)
- *  @retval SSS_ERROR_UNSUPPORTED         the GL version is below 3.3
+ *  @retval SSS_ERROR_UNSUPPORTED         the GL version is below 3.3 (ES: below 3.0), or OpenGL ES without
+ *                                        GL_EXT_color_buffer_float / _half_float (named in the message)
  *  @retval SSS_ERROR_GL_FUNCTION_MISSING a needed GL function could not be loaded (named in the message)
  *  @retval SSS_ERROR_SHADER_COMPILE      an embedded shader failed (driver log in the message)
  *  @retval SSS_ERROR_OUT_OF_MEMORY       allocation failed
@@ -246,7 +321,8 @@ SSS_API sss_result sss_get_settings(const sss_context *ctx, sss_settings *s);
 SSS_API sss_result sss_set_camera(sss_context *ctx, const float projection[16]);
 
 /** Blurs `color_texture` in place: sss_apply_frame with output 0, the whole texture, default depth.
- *  Same return codes as sss_apply_frame. */
+ *  Same return codes as sss_apply_frame. On OpenGL ES 3.0 it always fails with
+ *  SSS_ERROR_INVALID_ARGUMENT (the textures cannot be described): use sss_apply_frame there. */
 SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t depth_texture,
                              const sss_stencil *stencil);
 
@@ -260,7 +336,12 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
- *                                       color_texture
+ *                                       color_texture; a texture description field outside its list, a size
+ *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
+ *                                       GL's answer; on OpenGL ES 3.0 a description missing
+ *  @retval SSS_ERROR_UNSUPPORTED        OpenGL ES: an RGBA32F colour or output texture without the extension it
+ *                                       needs (named in the message; see sss_create), or a multisampled input
+ *                                       (ES 3.1+; the MSAA path is desktop GL only, see sss_frame)
  *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
  *  @retval SSS_ERROR_NO_CONTEXT         no GL context current; or the current one does not hold the module's GL
  *                                       objects: the context the module was created in was lost or destroyed
@@ -282,6 +363,14 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
  *  starts afresh (nothing the failed call did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
+
+/** Counters and the latest GPU measurements of the context (see sss_stats). Does not call GL. A
+ *  measurement is skipped for a frame when the host has a query of the same target active around
+ *  sss_apply (GL allows one per target), or when every slot of the module's small ring of query
+ *  objects is still waiting for the GPU.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or stats NULL, or stats->struct_size is not sizeof(sss_stats) */
+SSS_API sss_result sss_get_stats(const sss_context *ctx, sss_stats *stats);
 
 /* ---- GL-free kernel API (math layer): usable without any GL context. ---- */
 

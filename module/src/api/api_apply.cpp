@@ -14,10 +14,65 @@ namespace {
 using sss::api::fail;
 namespace gl = sss::gl;
 
-sss_result query(sss_context* ctx, gl::GLuint name, const char* role, gl::TextureInfo* info) {
+// The GL's view of one texture, or (OpenGL ES 3.0, which cannot be asked) the frame's description.
+// `format_field` names the sss_frame field that describes it; `described` is its value (0: none).
+sss_result query(sss_context* ctx, const sss_frame& frame, gl::GLuint name, const char* role, const char* format_field,
+                 std::uint32_t described, gl::TextureInfo* info) {
   std::string message;
-  const sss_result r = gl::query_texture(ctx->gl, name, role, info, &message);
-  return r == SSS_OK ? r : fail(ctx, r, message);
+  const bool can_ask = ctx->gl.has_texture_query;
+  const sss_result r = gl::query_texture(ctx->gl, name, role, can_ask, info, &message);
+  if (r != SSS_OK) return fail(ctx, r, message);
+  if (info->multisampled() && !ctx->gl.has_msaa_path()) {  // OpenGL ES 3.1+ (ES 3.0 has no such textures)
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "%s = %u is GL_TEXTURE_2D_MULTISAMPLE: the MSAA path needs desktop OpenGL; on OpenGL ES resolve "
+                "it to a GL_TEXTURE_2D first (colour by glBlitFramebuffer, depth as linear view distance)",
+                role, name);
+  }
+  const bool has_size = frame.texture_width != 0;
+  if (!can_ask) {
+    if (described == 0 || !has_size) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "frame->%s = %u, texture_width = %d, texture_height = %d: OpenGL ES 3.0 cannot be asked for a "
+                  "texture's format and size (no glGetTexLevelParameteriv), so the frame must give them for %s = %u",
+                  format_field, described, frame.texture_width, frame.texture_height, role, name);
+    }
+    gl::GLint max_size = 0;
+    ctx->gl.GetIntegerv(gl::MAX_TEXTURE_SIZE, &max_size);
+    if (frame.texture_width > max_size || frame.texture_height > max_size) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->texture_width, texture_height = %dx%d: above GL_MAX_TEXTURE_SIZE = %d",
+                  frame.texture_width, frame.texture_height, max_size);
+    }
+    info->internal_format = static_cast<gl::GLint>(described);
+    info->width = frame.texture_width;
+    info->height = frame.texture_height;
+    return SSS_OK;
+  }
+  if (described != 0 && static_cast<gl::GLint>(described) != info->internal_format) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->%s = %s but %s = %u has format %s", format_field,
+                gl::format_name(static_cast<gl::GLint>(described)).c_str(), role, name,
+                gl::format_name(info->internal_format).c_str());
+  }
+  if (has_size && (frame.texture_width != info->width || frame.texture_height != info->height)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->texture_width, texture_height = %dx%d but %s = %u is %dx%d",
+                frame.texture_width, frame.texture_height, role, name, info->width, info->height);
+  }
+  return SSS_OK;
+}
+
+// OpenGL ES: what the formats need beyond ES 3.0 (the intermediate's EXT_color_buffer_half_float
+// or _float is checked at create). RGBA32F colour is sampled bilinearly and rendered to; RGBA32F
+// output is rendered to; depth is never filtered by the GL there (the shader does it).
+sss_result check_es_format(sss_context* ctx, const char* role, const gl::TextureInfo& t, bool sampled_linear) {
+  if (!ctx->gl.api.es || t.internal_format != static_cast<gl::GLint>(gl::RGBA32F)) return SSS_OK;
+  if (!ctx->es_float_render) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "%s = %u is GL_RGBA32F: rendering to it on OpenGL ES needs GL_EXT_color_buffer_float",
+                role, t.name);
+  }
+  if (sampled_linear && !ctx->es_float_linear) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "%s = %u is GL_RGBA32F: filtering it on OpenGL ES needs GL_OES_texture_float_linear",
+                role, t.name);
+  }
+  return SSS_OK;
 }
 
 sss_result wrong_format(sss_context* ctx, const char* role, const gl::TextureInfo& t, const char* expected) {
@@ -54,15 +109,17 @@ sss_result supported_samples(sss_context* ctx, const char* role, const gl::Textu
 
 // The textures, as the GL describes them, against the lists in sss.h.
 sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
-  sss_result r = query(ctx, frame.color_texture, "color_texture", &run->color);
+  sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
   if (r != SSS_OK) return r;
   if (!gl::is_color_format(run->color.internal_format)) {
     return wrong_format(ctx, "color_texture", run->color, "GL_RGBA16F or GL_RGBA32F");
   }
+  r = check_es_format(ctx, "color_texture", run->color, true);
+  if (r != SSS_OK) return r;
   r = supported_samples(ctx, "color_texture", run->color, gl::MAX_COLOR_TEXTURE_SAMPLES,
                         "GL_MAX_COLOR_TEXTURE_SAMPLES");
   if (r != SSS_OK) return r;
-  r = query(ctx, frame.depth_texture, "depth_texture", &run->depth);
+  r = query(ctx, frame, frame.depth_texture, "depth_texture", "depth_format", frame.depth_format, &run->depth);
   if (r != SSS_OK) return r;
   if (!gl::is_hardware_depth_format(run->depth.internal_format) && !gl::is_linear_depth_format(run->depth.internal_format)) {
     return wrong_format(ctx, "depth_texture", run->depth, "a GL_DEPTH_COMPONENT* or GL_DEPTH*_STENCIL8 format, or GL_R16F/GL_R32F");
@@ -78,7 +135,7 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   }
   if (r != SSS_OK) return r;
   if (frame.output_texture != 0) {
-    r = query(ctx, frame.output_texture, "output_texture", &run->output);
+    r = query(ctx, frame, frame.output_texture, "output_texture", "output_format", frame.output_format, &run->output);
     if (r != SSS_OK) return r;
     if (!gl::is_color_format(run->output.internal_format)) {
       return wrong_format(ctx, "output_texture", run->output, "GL_RGBA16F or GL_RGBA32F");
@@ -88,11 +145,14 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
                   "output_texture = %u is %s: the output is single-sample (pass 0 to write back into the "
                   "multisampled colour)", run->output.name, gl::describe_target(run->output).c_str());
     }
+    r = check_es_format(ctx, "output_texture", run->output, false);
+    if (r != SSS_OK) return r;
     r = same_size(ctx, "output_texture", run->output, run->color);
     if (r != SSS_OK) return r;
   }
   if (frame.stencil != nullptr) {
-    r = query(ctx, frame.stencil->depth_stencil_texture, "stencil->depth_stencil_texture", &stencil->texture);
+    r = query(ctx, frame, frame.stencil->depth_stencil_texture, "stencil->depth_stencil_texture", "stencil_format",
+              frame.stencil_format, &stencil->texture);
     if (r != SSS_OK) return r;
     if (!gl::is_depth_stencil_format(stencil->texture.internal_format)) {
       return wrong_format(ctx, "stencil->depth_stencil_texture", stencil->texture,
@@ -182,6 +242,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   run.kernel_revision = ctx->kernel_revision;
   run.follow_surface = ctx->settings.follow_surface;
   run.identity = is_identity(ctx->settings);
+  run.frame = ctx->frames + 1;
 
   std::string message;
   r = ctx->filter.run(run, &message);
@@ -189,7 +250,48 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
     sss::api::drain_host_errors(nullptr, f);
     return fail(ctx, r, message);
   }
-  return sss::api::check_gl_errors(ctx, f, "the separable passes");
+  r = sss::api::check_gl_errors(ctx, f, "the separable passes");
+  if (r == SSS_OK) {
+    ++ctx->frames;
+    ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());
+    ctx->passes += ctx->last_frame_passes;
+  }
+  return r;
+}
+
+SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
+  if (stats == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats is NULL");
+  if (stats->struct_size != sizeof(sss_stats)) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats->struct_size = %u: expected sizeof(sss_stats) = %u",
+                stats->struct_size, static_cast<unsigned>(sizeof(sss_stats)));
+  }
+  sss_stats s = {};
+  s.struct_size = sizeof s;
+  switch (ctx->filter.variant()) {
+    case gl::GlslVariant::glsl330: s.glsl_variant = SSS_GLSL_330_CORE; break;
+    case gl::GlslVariant::glsl420: s.glsl_variant = SSS_GLSL_420_CORE; break;
+    case gl::GlslVariant::essl300: s.glsl_variant = SSS_GLSL_300_ES; break;
+  }
+  s.frames = ctx->frames;
+  s.passes = ctx->passes;
+  s.last_frame_passes = ctx->last_frame_passes;
+  const gl::PassMeasurement& m = ctx->filter.queries().latest();
+  if (m.frame != 0) {
+    s.measured_frame = m.frame;
+    if (m.has_pixels) {
+      s.measured |= SSS_STATS_PIXELS;
+      s.pixels_touched = m.pixels;
+    }
+    if (m.has_time) {
+      s.measured |= SSS_STATS_GPU_TIME;
+      s.gpu_time_ms[0] = m.milliseconds[0];
+      s.gpu_time_ms[1] = m.milliseconds[1];
+    }
+  }
+  *stats = s;
+  return SSS_OK;
 }
 
 }  // extern "C"

@@ -44,7 +44,13 @@ sss_result check_version(sss_context* ctx, sss_get_proc_address_fn get_proc_addr
   if (!parse_version(version, &ctx->gl_major, &ctx->gl_minor, &es)) {
     return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\" cannot be parsed", version);
   }
-  if (es) return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\": OpenGL ES contexts are not supported yet", version);
+  ctx->gl_es = es;
+  if (es) {
+    if (ctx->gl_major < 3) {
+      return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\": OpenGL ES 3.0 or newer is required", version);
+    }
+    return SSS_OK;
+  }
   if (ctx->gl_major * 10 + ctx->gl_minor < 33) {
     return fail(nullptr, SSS_ERROR_UNSUPPORTED, "GL_VERSION \"%s\": OpenGL 3.3 or newer is required", version);
   }
@@ -77,20 +83,49 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
 
   sss_result r = check_version(ctx.get(), desc->get_proc_address, desc->get_proc_address_user);
   if (r != SSS_OK) return r;
+  gl::Api api;
+  api.es = ctx->gl_es;
+  api.major = ctx->gl_major;
+  api.minor = ctx->gl_minor;
   std::string missing;
-  if (!gl::load_functions(desc->get_proc_address, desc->get_proc_address_user, &ctx->gl, &missing)) {
+  if (!gl::load_functions(desc->get_proc_address, desc->get_proc_address_user, api, &ctx->gl, &missing)) {
     return fail(nullptr, SSS_ERROR_GL_FUNCTION_MISSING, "get_proc_address(\"%s\") gave NULL", missing.c_str());
   }
   gl::Functions& f = ctx->gl;
+  // KHR_debug is core in GL 4.3 and ES 3.2.
+  const bool debug_core = api.es ? api.version() >= 32 : api.version() >= 43;
   f.has_debug = f.PushDebugGroup != nullptr && f.PopDebugGroup != nullptr && f.ObjectLabel != nullptr &&
-                (ctx->gl_major * 10 + ctx->gl_minor >= 43 || has_extension(f, "GL_KHR_debug"));
+                (debug_core || has_extension(f, "GL_KHR_debug"));
   const bool labels = (desc->flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
+  if (api.es) {
+    // ES 3.0 cannot render to RGBA16F (the intermediate target) without one of these.
+    ctx->es_float_render = has_extension(f, "GL_EXT_color_buffer_float");
+    if (!ctx->es_float_render && !has_extension(f, "GL_EXT_color_buffer_half_float")) {
+      return fail(nullptr, SSS_ERROR_UNSUPPORTED,
+                  "OpenGL ES %d.%d without GL_EXT_color_buffer_float (or GL_EXT_color_buffer_half_float): the "
+                  "RGBA16F intermediate target cannot be rendered to",
+                  api.major, api.minor);
+    }
+    ctx->es_float_linear = has_extension(f, "GL_OES_texture_float_linear");
+  }
+  const gl::GlslVariant variant = gl::choose_glsl_variant(api);
+  const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
+  const std::string renderer_name = renderer != nullptr ? renderer : "";
+  // Mesa's software rasterisers time one tile of a pass with GL_TIME_ELAPSED (DESIGN.md §6).
+  const bool software_renderer = renderer_name.find("llvmpipe") != std::string::npos ||
+                                 renderer_name.find("softpipe") != std::string::npos ||
+                                 renderer_name.find("swrast") != std::string::npos;
+  if ((desc->flags & SSS_CREATE_STATS) != 0) {
+    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"), software_renderer);
+  }
 
+  sss_context* raw = ctx.get();
+  ctx->filter.set_log([raw](int level, const std::string& text) { sss::api::log(raw, level, text); });
   sss::api::drain_host_errors(ctx.get(), f);
   std::string message;
   {
     gl::StateGuard guard(f, (desc->flags & SSS_CREATE_NO_STATE_RESTORE) == 0);
-    r = ctx->filter.init(&f, "#version 330 core\n", labels, &message);
+    r = ctx->filter.init(&f, variant, labels, &message);
     if (r == SSS_OK) r = sss::api::check_gl_errors(nullptr, f, "creating the module's GL objects");
   }
   if (r != SSS_OK) {
@@ -100,12 +135,29 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     return r;
   }
   ctx->kernel = sss::math::separable_kernel(ctx->settings.samples, ctx->settings.strength, ctx->settings.falloff);
-  const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
-  char info[256];
-  std::snprintf(info, sizeof info, "sss %d.%d.%d on GL %d.%d, %s%s", SSS_VERSION_MAJOR, SSS_VERSION_MINOR,
-                SSS_VERSION_PATCH, ctx->gl_major, ctx->gl_minor, renderer ? renderer : "(unknown renderer)",
+  char info[320];
+  std::snprintf(info, sizeof info, "sss %d.%d.%d on OpenGL %s%d.%d, %s: shaders in %s%s", SSS_VERSION_MAJOR,
+                SSS_VERSION_MINOR, SSS_VERSION_PATCH, api.es ? "ES " : "", ctx->gl_major, ctx->gl_minor,
+                renderer_name.empty() ? "(unknown renderer)" : renderer_name.c_str(), gl::glsl_variant_name(variant),
                 f.has_debug ? ", KHR_debug" : "");
   sss::api::log(ctx.get(), SSS_LOG_INFO, info);
+  std::snprintf(info, sizeof info,
+                "sss_create: texture formats %s; state guard for %s; ES float targets %s, float filtering %s",
+                f.has_texture_query ? "asked of the GL" : "taken from sss_frame (no glGetTexLevelParameteriv)",
+                api.es ? "OpenGL ES (no polygon mode, depth clamp, logic op, clip distances, sRGB enable)"
+                       : "desktop GL",
+                api.es ? (ctx->es_float_render ? "yes" : "RGBA16F only") : "n/a",
+                api.es ? (ctx->es_float_linear ? "yes" : "no") : "n/a");
+  sss::api::log(ctx.get(), SSS_LOG_DEBUG, info);
+  if ((desc->flags & SSS_CREATE_STATS) != 0) {
+    const gl::PassQueries& q = ctx->filter.queries();
+    std::snprintf(info, sizeof info, "sss_create: stats on: pixel counts %s, GPU timer %s",
+                  q.pixels_supported() ? "yes" : "no (OpenGL ES has no sample count)",
+                  q.timing_supported() ? "yes"
+                  : software_renderer  ? "no (a software rasteriser: its GL_TIME_ELAPSED covers one tile)"
+                                       : "no (no timer queries with counter bits)");
+    sss::api::log(ctx.get(), SSS_LOG_INFO, info);
+  }
   *out = ctx.release();
   return SSS_OK;
 }

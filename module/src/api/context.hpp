@@ -19,6 +19,9 @@ struct sss_context {
   void* log_user = nullptr;
   std::uint32_t create_flags = 0;
   int gl_major = 0, gl_minor = 0;
+  bool gl_es = false;
+  // OpenGL ES extensions the formats need (see api_apply.cpp): RGBA32F renderable, RGBA32F filterable.
+  bool es_float_render = false, es_float_linear = false;
 
   sss::math::FilterSettings settings;
   std::vector<sss::math::KernelTap> kernel;
@@ -28,6 +31,10 @@ struct sss_context {
   bool has_camera = false;
 
   std::string last_error;
+
+  // sss_get_stats counters.
+  std::uint64_t frames = 0, passes = 0;
+  std::uint32_t last_frame_passes = 0;
 };
 
 namespace sss::api {

@@ -36,7 +36,13 @@ sss_result require_module_objects(sss_context* ctx) {
     sss_result r = ctx->filter.rebuild(&message);
     if (r == SSS_OK) {
       r = check_gl_errors(ctx, gl, "rebuilding the module's GL objects");
-      if (r != SSS_OK) ctx->filter.destroy();
+      if (r != SSS_OK) {
+        ctx->filter.destroy();
+      } else {
+        log(ctx, SSS_LOG_INFO,
+            std::string("rebuilt the module's GL objects in the current GL context (shaders in ") +
+                sss::gl::glsl_variant_name(ctx->filter.variant()) + ")");
+      }
       return r;
     }
     drain_host_errors(nullptr, gl);

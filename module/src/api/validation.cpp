@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "../gl/texture_query.hpp"
+
 namespace sss::api {
 
 sss_result check_samples(sss_context* ctx, int32_t samples) {
@@ -75,6 +77,36 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
   if (frame->stencil != nullptr && (frame->stencil->ref > 255u || frame->stencil->mask > 255u)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "stencil ref = %u, mask = %u: both must be in [0, 255]",
                 frame->stencil->ref, frame->stencil->mask);
+  }
+  return check_frame_description(ctx, *frame);
+}
+
+sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
+  const bool no_size = frame.texture_width == 0 && frame.texture_height == 0;
+  if (!no_size && (frame.texture_width <= 0 || frame.texture_height <= 0)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->texture_width = %d, texture_height = %d: both must be > 0 (or both 0: not given)",
+                frame.texture_width, frame.texture_height);
+  }
+  namespace gl = sss::gl;
+  const auto format = [](std::uint32_t f) { return static_cast<gl::GLint>(f); };
+  const auto bad = [ctx](const char* field, std::uint32_t value, const char* expected) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->%s = 0x%04X (%s): expected 0 or %s", field, value,
+                gl::format_name(static_cast<gl::GLint>(value)).c_str(), expected);
+  };
+  if (frame.color_format != 0 && !gl::is_color_format(format(frame.color_format))) {
+    return bad("color_format", frame.color_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  }
+  if (frame.depth_format != 0 && !gl::is_hardware_depth_format(format(frame.depth_format)) &&
+      !gl::is_linear_depth_format(format(frame.depth_format))) {
+    return bad("depth_format", frame.depth_format,
+               "a GL_DEPTH_COMPONENT* or GL_DEPTH*_STENCIL8 format, or GL_R16F/GL_R32F");
+  }
+  if (frame.output_format != 0 && !gl::is_color_format(format(frame.output_format))) {
+    return bad("output_format", frame.output_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  }
+  if (frame.stencil_format != 0 && !gl::is_depth_stencil_format(format(frame.stencil_format))) {
+    return bad("stencil_format", frame.stencil_format, "GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");
   }
   return SSS_OK;
 }

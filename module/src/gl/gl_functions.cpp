@@ -4,9 +4,10 @@
 
 namespace sss::gl {
 
-bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, Functions* out,
+bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const Api& api, Functions* out,
                     std::string* missing) {
   Functions f;
+  f.api = api;
   // Function pointers are converted from the loader's void* (POSIX and Windows guarantee this works).
 #define SSS_GL_LOAD_REQUIRED(ret, name, params)                                \
   f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name, user)); \
@@ -15,10 +16,28 @@ bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, Functi
     return false;                                                              \
   }
   SSS_GL_REQUIRED_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
+  if (!api.es) {
+    SSS_GL_DESKTOP_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
+    SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
+  }
 #undef SSS_GL_LOAD_REQUIRED
 #define SSS_GL_LOAD_OPTIONAL(ret, name, params) \
   f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name, user));
-  SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  if (api.es && api.version() < 32) {
+    // Before ES 3.2, KHR_debug's entry points carry the KHR suffix on OpenGL ES.
+#define SSS_GL_LOAD_KHR(ret, name, params) \
+  f.name = reinterpret_cast<decltype(f.name)>(get_proc_address("gl" #name "KHR", user));
+    SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_KHR)
+#undef SSS_GL_LOAD_KHR
+  } else {
+    SSS_GL_DEBUG_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  }
+  if (api.es) {
+    SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+    SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  }
+  // ES 3.0 has no texture level query; ES 3.1 and desktop GL do.
+  f.has_texture_query = f.GetTexLevelParameteriv != nullptr && (!api.es || api.version() >= 31);
 #undef SSS_GL_LOAD_OPTIONAL
   *out = f;
   return true;

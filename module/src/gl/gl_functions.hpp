@@ -27,7 +27,8 @@ using GLfloat = float;
 using GLchar = char;
 using GLubyte = unsigned char;
 
-// X(return type, name without the gl prefix, parameter list). Required for GL 3.3.
+// X(return type, name without the gl prefix, parameter list). Required on every API the module
+// runs on: the common part of OpenGL 3.3 and OpenGL ES 3.0.
 #define SSS_GL_REQUIRED_FUNCTIONS(X)                                                                   \
   X(GLenum, GetError, (void))                                                                          \
   X(const GLubyte*, GetString, (GLenum name))                                                          \
@@ -45,12 +46,11 @@ using GLubyte = unsigned char;
   X(void, TexImage2D, (GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, \
                        GLint border, GLenum format, GLenum type, const void* pixels))                  \
   X(void, TexParameteri, (GLenum target, GLenum pname, GLint param))                                   \
-  X(void, GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint * params))          \
   X(void, GenSamplers, (GLsizei count, GLuint * samplers))                                             \
   X(void, DeleteSamplers, (GLsizei count, const GLuint* samplers))                                     \
   X(void, BindSampler, (GLuint unit, GLuint sampler))                                                  \
   X(void, SamplerParameteri, (GLuint sampler, GLenum pname, GLint param))                              \
-  X(void, SamplerParameterfv, (GLuint sampler, GLenum pname, const GLfloat* param))                     \
+  X(void, SamplerParameterf, (GLuint sampler, GLenum pname, GLfloat param))                            \
   X(void, GetSamplerParameterfv, (GLuint sampler, GLenum pname, GLfloat * params))                     \
   X(GLboolean, IsSampler, (GLuint sampler))                                                            \
   X(void, GenFramebuffers, (GLsizei n, GLuint * framebuffers))                                         \
@@ -64,7 +64,7 @@ using GLubyte = unsigned char;
   X(GLenum, CheckFramebufferStatus, (GLenum target))                                                   \
   X(void, BlitFramebuffer, (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0,           \
                             GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter))    \
-  X(void, DrawBuffer, (GLenum buf))                                                                    \
+  X(void, DrawBuffers, (GLsizei n, const GLenum* bufs))                                                \
   X(void, ReadBuffer, (GLenum src))                                                                    \
   X(void, GenRenderbuffers, (GLsizei n, GLuint * renderbuffers))                                       \
   X(void, DeleteRenderbuffers, (GLsizei n, const GLuint* renderbuffers))                               \
@@ -100,14 +100,34 @@ using GLubyte = unsigned char;
   X(void, StencilFuncSeparate, (GLenum face, GLenum func, GLint ref, GLuint mask))                     \
   X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass))                \
   X(void, StencilMaskSeparate, (GLenum face, GLuint mask))                                             \
-  X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
   X(void, BindBuffer, (GLenum target, GLuint buffer))                                                  \
+  X(void, GenQueries, (GLsizei n, GLuint * ids))                                                       \
+  X(void, DeleteQueries, (GLsizei n, const GLuint* ids))                                               \
+  X(void, BeginQuery, (GLenum target, GLuint id))                                                      \
+  X(void, EndQuery, (GLenum target))                                                                   \
+  X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint * params))                              \
+  X(void, GetQueryiv, (GLenum target, GLenum pname, GLint * params))                                  \
+  X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
+  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))
+
+// Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on
+// desktop GL, where they are required; never called on ES. The multisample ones serve the MSAA
+// path, which is desktop GL only (sss.h, sss_frame).
+#define SSS_GL_DESKTOP_FUNCTIONS(X)                                                                    \
+  X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
+  X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))                     \
   X(void, TexImage2DMultisample, (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, \
                                   GLsizei height, GLboolean fixedsamplelocations))                     \
-  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))                                           \
-  X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
-  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))                        \
-  X(void, DrawBuffers, (GLsizei n, const GLenum* bufs))
+  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))
+
+// glGetTexLevelParameteriv: desktop GL and OpenGL ES 3.1+. On ES 3.0 the frame describes the
+// textures instead (sss_frame's format and size fields).
+#define SSS_GL_TEXTURE_QUERY_FUNCTIONS(X) \
+  X(void, GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint * params))
+
+// EXT_disjoint_timer_query on OpenGL ES (the EXT-suffixed names).
+#define SSS_GL_ES_TIMER_FUNCTIONS(X)                                                                   \
+  X(void, GetQueryObjectui64vEXT, (GLuint id, GLenum pname, std::uint64_t * params))
 
 // KHR_debug (core in 4.3): used only when present.
 #define SSS_GL_DEBUG_FUNCTIONS(X)                                                                      \
@@ -115,18 +135,40 @@ using GLubyte = unsigned char;
   X(void, PopDebugGroup, (void))                                                                       \
   X(void, ObjectLabel, (GLenum identifier, GLuint name, GLsizei length, const GLchar* label))
 
+// The API of the running context, from GL_VERSION.
+struct Api {
+  bool es = false;       // OpenGL ES
+  int major = 0, minor = 0;
+  int version() const { return major * 10 + minor; }
+};
+
 struct Functions {
 #define SSS_GL_DECLARE_MEMBER(ret, name, params) ret(SSS_GL_APIENTRY* name) params = nullptr;
   SSS_GL_REQUIRED_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_DESKTOP_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_DEBUG_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
 #undef SSS_GL_DECLARE_MEMBER
-  bool has_debug = false;  // KHR_debug present and all three functions loaded
+  Api api;
+  bool has_debug = false;          // KHR_debug present and all three functions loaded
+  bool has_texture_query = false;  // glGetTexLevelParameteriv may be called (desktop, ES 3.1+)
+  // Desktop-only state exists (polygon mode, depth clamp, logic op, clip distances, sRGB enable).
+  bool desktop() const { return !api.es; }
+  // GL_SAMPLE_MASK exists (GL 3.2+, ES 3.1+).
+  bool has_sample_mask() const { return !api.es || api.version() >= 31; }
+  // GL_TEXTURE_2D_MULTISAMPLE exists (GL 3.2+, ES 3.1+): on ES 3.0 the enum is invalid, so the
+  // module never binds or queries that target there.
+  bool has_multisample_textures() const { return !api.es || api.version() >= 31; }
+  // The MSAA path (sampler2DMS shaders, glTexImage2DMultisample, glSampleMaski): desktop GL only.
+  bool has_msaa_path() const { return !api.es; }
 };
 
-// Loads the required functions; on failure returns the name of the first missing one ("glFoo").
-// Debug functions are loaded when found; `has_debug` is set later, once the version and extension
-// list confirm them (Mesa returns non-NULL stubs for anything, so a pointer proves nothing).
-bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, Functions* out,
+// Loads what `api` needs; on failure returns the name of the first missing one ("glFoo"). Optional
+// functions (debug, ES timer queries, the texture query on ES) are loaded when found; the flags
+// are set later, once the version and extension list confirm them (Mesa returns non-NULL stubs
+// for anything, so a pointer proves nothing).
+bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const Api& api, Functions* out,
                     std::string* missing);
 
 // GL constants used by the module (values from the Khronos registry).
@@ -149,6 +191,7 @@ enum : GLenum {
   SAMPLER_BINDING = 0x8919,
   ACTIVE_TEXTURE = 0x84E0,
   TEXTURE_WIDTH = 0x1000,
+  MAX_TEXTURE_SIZE = 0x0D33,
   TEXTURE_HEIGHT = 0x1001,
   TEXTURE_INTERNAL_FORMAT = 0x1003,
   TEXTURE_SAMPLES = 0x9106,
@@ -170,6 +213,7 @@ enum : GLenum {
   TEXTURE_COMPARE_MODE = 0x884C,
   TEXTURE_BORDER_COLOR = 0x1004,
   TEXTURE_MAX_LEVEL = 0x813D,
+  TEXTURE_MAX_LOD = 0x813B,
   NEAREST = 0x2600,
   LINEAR = 0x2601,
   CLAMP_TO_EDGE = 0x812F,
@@ -255,6 +299,15 @@ enum : GLenum {
   VERTEX_ARRAY = 0x8074,
   SAMPLER = 0x82E6,
   TEXTURE = 0x1702,
+  QUERY = 0x82E3,
+  SAMPLES_PASSED = 0x8914,
+  ANY_SAMPLES_PASSED = 0x8C2F,
+  TIME_ELAPSED = 0x88BF,
+  QUERY_COUNTER_BITS = 0x8864,
+  CURRENT_QUERY = 0x8865,
+  QUERY_RESULT = 0x8866,
+  QUERY_RESULT_AVAILABLE = 0x8867,
+  GPU_DISJOINT = 0x8FBB,
 };
 
 // "GL_INVALID_OPERATION" for an error code, or "0x1234".

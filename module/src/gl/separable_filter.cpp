@@ -13,18 +13,30 @@ namespace sss::gl {
 namespace {
 constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
 
-// A tag in (0, 1), exact in float, different for each init() in the process (modulo 2^20).
+// A tag in [1025, 1025 + 2^20), exact in float, different for each init() in the process (modulo
+// 2^20). It is stored as the sampler's GL_TEXTURE_MAX_LOD, which has no effect here: the sampler
+// never reads mipmaps (GL_LINEAR/GL_NEAREST minification, texelFetch at level 0), and a maximum LOD
+// above 0 does not change which of the two identical filters applies. Unlike the border colour
+// (used before), the LOD range exists on OpenGL ES 3.0 too.
 GLfloat next_sampler_tag() {
   static std::atomic<unsigned> counter{0};
   const unsigned n = counter.fetch_add(1, std::memory_order_relaxed) % (1u << 20);
-  return static_cast<GLfloat>(n + 1) / static_cast<GLfloat>(1u << 21);
+  return 1025.0f + static_cast<GLfloat>(n);
+}
+
+void set_sampler(const Functions& f, GLuint sampler, GLenum filter) {
+  f.SamplerParameteri(sampler, TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  f.SamplerParameteri(sampler, TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  f.SamplerParameteri(sampler, TEXTURE_WRAP_S, static_cast<GLint>(CLAMP_TO_EDGE));
+  f.SamplerParameteri(sampler, TEXTURE_WRAP_T, static_cast<GLint>(CLAMP_TO_EDGE));
+  f.SamplerParameteri(sampler, TEXTURE_COMPARE_MODE, static_cast<GLint>(NONE));
 }
 }  // namespace
 
-sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, bool labels,
-                                 std::string* message) {
+sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool labels, std::string* message) {
   gl_ = gl;
-  glsl_header_ = std::move(glsl_header);
+  variant_ = variant;
+  glsl_header_ = glsl_header(variant);
   labels_ = labels;
   const Functions& f = *gl_;
 
@@ -41,26 +53,29 @@ sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, b
   f.BindFramebuffer(READ_FRAMEBUFFER, stencil_source_framebuffer_);
   f.ReadBuffer(NONE);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, stencil_source_framebuffer_);
-  f.DrawBuffer(NONE);
+  const GLenum no_colour = NONE;
+  f.DrawBuffers(1, &no_colour);  // glDrawBuffer is not in ES
 
-  // One sampler for every tap: bilinear, clamped, no depth comparison (it overrides whatever
-  // parameters the host set on its own textures, which the module never changes).
-  f.GenSamplers(1, &sampler_);
-  f.SamplerParameteri(sampler_, TEXTURE_MIN_FILTER, static_cast<GLint>(LINEAR));
-  f.SamplerParameteri(sampler_, TEXTURE_MAG_FILTER, static_cast<GLint>(LINEAR));
-  f.SamplerParameteri(sampler_, TEXTURE_WRAP_S, static_cast<GLint>(CLAMP_TO_EDGE));
-  f.SamplerParameteri(sampler_, TEXTURE_WRAP_T, static_cast<GLint>(CLAMP_TO_EDGE));
-  f.SamplerParameteri(sampler_, TEXTURE_COMPARE_MODE, static_cast<GLint>(NONE));
-  // The border colour is never sampled (clamp to edge): it carries the tag objects_present checks.
+  // Samplers: bilinear, clamped, no depth comparison (they override whatever parameters the host
+  // set on its own textures, which the module never changes). The depth unit has its own: on ES a
+  // depth texture is incomplete unless sampled GL_NEAREST (the shader filters depth by hand there).
+  GLuint samplers[2] = {0, 0};
+  f.GenSamplers(2, samplers);
+  sampler_ = samplers[0];
+  depth_sampler_ = samplers[1];
+  set_sampler(f, sampler_, LINEAR);
+  set_sampler(f, depth_sampler_, gl_->api.es ? NEAREST : LINEAR);
+  // The maximum LOD carries the tag objects_present checks (see next_sampler_tag).
   sampler_tag_ = next_sampler_tag();
-  const GLfloat border[4] = {0.0f, 0.0f, 0.0f, sampler_tag_};
-  f.SamplerParameterfv(sampler_, TEXTURE_BORDER_COLOR, border);
+  f.SamplerParameterf(sampler_, TEXTURE_MAX_LOD, sampler_tag_);
 
+  if (measure_) queries_.init(gl_, es_timer_extension_, software_renderer_);
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
   label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
   label_object(f, labels_, FRAMEBUFFER, stencil_source_framebuffer_, "sss host stencil source");
   label_object(f, labels_, SAMPLER, sampler_, "sss bilinear clamp");
+  label_object(f, labels_, SAMPLER, depth_sampler_, "sss depth clamp");
 
   std::string log;
   copy_program_ = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::copy_frag, &log);
@@ -68,7 +83,10 @@ sss_result SeparableFilter::init(const Functions* gl, std::string glsl_header, b
     *message = "copy shader: " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  copy_source_location_ = f.GetUniformLocation(copy_program_, "u_source");
+  if (!has_explicit_bindings(variant_)) {
+    f.UseProgram(copy_program_);
+    f.Uniform1i(f.GetUniformLocation(copy_program_, "u_source"), static_cast<GLint>(kSourceUnit));
+  }
   label_object(f, labels_, PROGRAM, copy_program_, "sss copy");
 
   // The variants every host uses (write back, follow-surface, hardware depth) are built now so a
@@ -91,9 +109,11 @@ void SeparableFilter::destroy() {
   f.DeleteFramebuffers(3, framebuffers);
   if (intermediate_ != 0) f.DeleteTextures(1, &intermediate_);
   if (stencil_buffer_ != 0) f.DeleteRenderbuffers(1, &stencil_buffer_);
-  if (sampler_ != 0) f.DeleteSamplers(1, &sampler_);
+  GLuint samplers[2] = {sampler_, depth_sampler_};
+  f.DeleteSamplers(2, samplers);
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
   destroy_msaa();
+  queries_.destroy();
   forget();
 }
 
@@ -102,27 +122,34 @@ bool SeparableFilter::objects_present() const {
   const Functions& f = *gl_;
   if (!f.IsVertexArray(vertex_array_) || !f.IsFramebuffer(intermediate_framebuffer_) ||
       !f.IsFramebuffer(output_framebuffer_) || !f.IsFramebuffer(stencil_source_framebuffer_) ||
-      !f.IsProgram(copy_program_) || !f.IsSampler(sampler_)) {
+      !f.IsProgram(copy_program_) || !f.IsSampler(sampler_) || !f.IsSampler(depth_sampler_)) {
     return false;
   }
-  GLfloat border[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
-  f.GetSamplerParameterfv(sampler_, TEXTURE_BORDER_COLOR, border);
-  return border[3] == sampler_tag_;
+  GLfloat tag = -1.0f;
+  f.GetSamplerParameterfv(sampler_, TEXTURE_MAX_LOD, &tag);
+  return tag == sampler_tag_;
 }
 
 void SeparableFilter::forget() {
+  auto log = std::move(log_);
+  const bool measure = measure_, es_timer_extension = es_timer_extension_, software = software_renderer_;
   const Functions* gl = gl_;
+  const GlslVariant variant = variant_;
   std::string header = std::move(glsl_header_);
   const bool labels = labels_;
   *this = SeparableFilter{};
+  log_ = std::move(log);
+  measure_ = measure;
+  es_timer_extension_ = es_timer_extension;
+  software_renderer_ = software;
   gl_ = gl;
+  variant_ = variant;
   glsl_header_ = std::move(header);
   labels_ = labels;
 }
 
 sss_result SeparableFilter::rebuild(std::string* message) {
-  std::string header = glsl_header_;
-  const sss_result r = init(gl_, std::move(header), labels_, message);
+  const sss_result r = init(gl_, variant_, labels_, message);
   if (r != SSS_OK) destroy();  // what init built before it failed; the arguments stay for the next try
   return r;
 }
@@ -151,6 +178,7 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
   std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d", static_cast<int>(outside),
                 follow_surface ? 1 : 0, linear_depth ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
+  note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
@@ -162,11 +190,13 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.clamp = f.GetUniformLocation(p.program, "u_clamp");
-  // Sampler units never change: set them once.
-  f.UseProgram(p.program);
-  f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
-  f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
-  if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  // Sampler units never change: set them once (GLSL 420 has them in the shader already).
+  if (!has_explicit_bindings(variant_)) {
+    f.UseProgram(p.program);
+    f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
+    f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
+    if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  }
   return SSS_OK;
 }
 
@@ -191,6 +221,9 @@ sss_result SeparableFilter::ensure_intermediate(int width, int height, std::stri
     return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
   }
   label_object(f, labels_, TEXTURE, intermediate_, "sss intermediate (horizontal pass)");
+  char note_text[96];
+  std::snprintf(note_text, sizeof note_text, "allocated the %dx%d RGBA16F intermediate target", width, height);
+  note(note_text);
   intermediate_width_ = width;
   intermediate_height_ = height;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
@@ -292,21 +325,23 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
   f.BindSampler(kSourceUnit, sampler_);
   f.ActiveTexture(TEXTURE0 + kDepthUnit);
   f.BindTexture(TEXTURE_2D, run.depth.name);
-  f.BindSampler(kDepthUnit, sampler_);
+  f.BindSampler(kDepthUnit, depth_sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
 }
 
 void SeparableFilter::draw_copy(GLuint source) {
   const Functions& f = *gl_;
   f.UseProgram(copy_program_);
-  f.Uniform1i(copy_source_location_, static_cast<GLint>(kSourceUnit));
   f.ActiveTexture(TEXTURE0 + kSourceUnit);
   f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kSourceUnit, sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
 }
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
+  last_draws_ = 0;  // run_msaa's draws and those of the run_single it calls add up
   if (run.color.multisampled()) return run_msaa(run, message);
   return run_single(run, message);
 }
@@ -351,10 +386,12 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
   r = check_framebuffer("vertical pass", message);
 
   if (r == SSS_OK) {
+    const bool measured = measure_ && queries_.begin_frame(run.frame);
     // Horizontal: host colour -> intermediate. Pixels the stencil excludes are copied so the
     // vertical pass's taps find defined values there.
     {
       DebugGroup group(f, labels_, "sss horizontal pass");
+      if (measured) queries_.begin_pass(PassQueries::horizontal);
       f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
       set_stencil_test(run.stencil, EQUAL);
       draw_blur(*horizontal, run, run.color.name, 0);
@@ -362,6 +399,7 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
         set_stencil_test(run.stencil, NOTEQUAL);
         draw_copy(run.color.name);
       }
+      if (measured) queries_.end_pass(PassQueries::horizontal);
     }
     // Vertical: intermediate -> output. Writing back, the host colour is attached here, so it is
     // bound to no unit, and alpha is masked off (it keeps the host's exact value).
@@ -371,14 +409,21 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
       f.ActiveTexture(TEXTURE0 + kOriginalUnit);
       f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
       f.BindSampler(kOriginalUnit, sampler_);
+      if (measured) queries_.begin_pass(PassQueries::vertical);
       if (write_back) f.ColorMask(1, 1, 1, 0);
       set_stencil_test(run.stencil, EQUAL);
+      // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
+      // exactly the blurred ones; into a separate output every pixel the stencil lets through.
+      if (measured) queries_.begin_pixels();
       draw_blur(*vertical, run, intermediate_, 1);
+      if (measured) queries_.end_pixels();
       if (run.stencil != nullptr && !write_back) {
         set_stencil_test(run.stencil, NOTEQUAL);
         draw_copy(run.color.name);
       }
+      if (measured) queries_.end_pass(PassQueries::vertical);
     }
+    if (measured) queries_.end_frame();
   }
   // Detach the host's texture (see copy_stencil).
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);

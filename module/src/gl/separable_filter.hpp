@@ -7,12 +7,15 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "../math/filter_constants.hpp"
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
+#include "glsl_variant.hpp"
+#include "pass_queries.hpp"
 #include "texture_query.hpp"
 
 namespace sss::gl {
@@ -38,6 +41,7 @@ struct FilterRun {
   math::PassConstants constants;
   bool follow_surface = false;
   bool identity = false;                   // nothing to blur: only copy into a separate output
+  std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
   // MSAA path only: the host depth's encoding for the resolve (`constants` then describe the
   // resolved linear distance the passes read), and how sample depths combine.
   math::PassConstants resolve_constants;
@@ -49,7 +53,20 @@ class SeparableFilter {
  public:
   // Builds the objects that do not depend on frame size and the most common program variants, so a
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
-  sss_result init(const Functions* gl, std::string glsl_header, bool labels, std::string* message);
+  sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
+  GlslVariant variant() const { return variant_; }
+  // Measurements for sss_get_stats; call before init(). Off by default: no query objects exist.
+  void enable_measurements(bool es_timer_extension, bool software_renderer) {
+    measure_ = true;
+    es_timer_extension_ = es_timer_extension;
+    software_renderer_ = software_renderer;
+  }
+  const PassQueries& queries() const { return queries_; }
+  // Full-screen draws of the last run() (blur passes and copies; MSAA: also the resolve, the
+  // stencil mark and one per-sample write per sample).
+  int last_draws() const { return last_draws_; }
+  // Where DEBUG notes go (a program variant built on first use, the intermediate reallocated).
+  void set_log(std::function<void(int level, const std::string& message)> log) { log_ = std::move(log); }
   // Deletes the objects (they must exist in the current context: see objects_present), then
   // forget()s them.
   void destroy();
@@ -60,7 +77,7 @@ class SeparableFilter {
   // the names mean nothing there, or name the host's own objects: using or deleting them would
   // draw into, detach from or delete the host's objects. objects_present() tells whether the
   // current context holds the module's objects (the vertex array, the three framebuffers and the
-  // copy program exist, and the sampler carries this instance's tag in its unused border colour);
+  // copy program exist, and the sampler carries this instance's tag in its unused maximum LOD);
   // forget() drops every name without deleting anything; rebuild() runs init() again with the
   // same arguments, in the current context.
   bool objects_present() const;
@@ -123,14 +140,22 @@ class SeparableFilter {
   void draw_copy(GLuint source);
   void set_stencil_test(const StencilInput* stencil, GLenum func);
 
+  void note(const std::string& message) const {
+    if (log_) log_(SSS_LOG_DEBUG, message);
+  }
+
   const Functions* gl_ = nullptr;
+  std::function<void(int, const std::string&)> log_;
+  bool measure_ = false, es_timer_extension_ = false, software_renderer_ = false;
+  PassQueries queries_;
+  int last_draws_ = 0;
+  GlslVariant variant_ = GlslVariant::glsl330;
   std::string glsl_header_;
   bool labels_ = false;
   std::array<BlurProgram, kVariantCount> blur_programs_{};
   GLuint copy_program_ = 0;
-  GLint copy_source_location_ = -1;
-  GLuint vertex_array_ = 0, sampler_ = 0;
-  GLfloat sampler_tag_ = 0.0f;  // border colour alpha that marks this instance's sampler
+  GLuint vertex_array_ = 0, sampler_ = 0, depth_sampler_ = 0;
+  GLfloat sampler_tag_ = 0.0f;  // maximum LOD that marks this instance's sampler
   GLuint intermediate_ = 0;
   int intermediate_width_ = 0, intermediate_height_ = 0;
   GLuint stencil_buffer_ = 0;

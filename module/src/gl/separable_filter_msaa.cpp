@@ -55,9 +55,11 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
     p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
     p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
     p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
-    f.UseProgram(p.program);
-    f.Uniform1i(f.GetUniformLocation(p.program, "u_color"), static_cast<GLint>(kColorUnit));
-    f.Uniform1i(f.GetUniformLocation(p.program, "u_depth"), static_cast<GLint>(kDepthUnit));
+    if (!has_explicit_bindings(variant_)) {  // GLSL 420 has the units in the shader
+      f.UseProgram(p.program);
+      f.Uniform1i(f.GetUniformLocation(p.program, "u_color"), static_cast<GLint>(kColorUnit));
+      f.Uniform1i(f.GetUniformLocation(p.program, "u_depth"), static_cast<GLint>(kDepthUnit));
+    }
   }
   if (need_mask && msaa_.mask_program == 0) {
     msaa_.mask_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_mask_frag, &log);
@@ -66,8 +68,10 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
       return SSS_ERROR_SHADER_COMPILE;
     }
     label_object(f, labels_, PROGRAM, msaa_.mask_program, "sss msaa stencil mask");
-    f.UseProgram(msaa_.mask_program);
-    f.Uniform1i(f.GetUniformLocation(msaa_.mask_program, "u_source"), static_cast<GLint>(kColorUnit));
+    if (!has_explicit_bindings(variant_)) {
+      f.UseProgram(msaa_.mask_program);
+      f.Uniform1i(f.GetUniformLocation(msaa_.mask_program, "u_source"), static_cast<GLint>(kColorUnit));
+    }
   }
   if (need_write && msaa_.write_program == 0) {
     msaa_.write_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_write_frag, &log);
@@ -79,10 +83,12 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
     const GLuint w = msaa_.write_program;
     msaa_.write_sample = f.GetUniformLocation(w, "u_sample");
     msaa_.write_samples = f.GetUniformLocation(w, "u_samples");
-    f.UseProgram(w);
-    f.Uniform1i(f.GetUniformLocation(w, "u_copy"), static_cast<GLint>(kColorUnit));
-    f.Uniform1i(f.GetUniformLocation(w, "u_blurred"), static_cast<GLint>(kDepthUnit));
-    f.Uniform1i(f.GetUniformLocation(w, "u_resolved"), static_cast<GLint>(kExtraUnit));
+    if (!has_explicit_bindings(variant_)) {
+      f.UseProgram(w);
+      f.Uniform1i(f.GetUniformLocation(w, "u_copy"), static_cast<GLint>(kColorUnit));
+      f.Uniform1i(f.GetUniformLocation(w, "u_blurred"), static_cast<GLint>(kDepthUnit));
+      f.Uniform1i(f.GetUniformLocation(w, "u_resolved"), static_cast<GLint>(kExtraUnit));
+    }
   }
   return SSS_OK;
 }
@@ -201,6 +207,7 @@ sss_result SeparableFilter::mark_stencil_from_alpha(int width, int height, std::
   f.BindTexture(TEXTURE_2D, msaa_.resolved_color);
   f.BindSampler(kColorUnit, sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
   f.ColorMask(1, 1, 1, 1);
   f.StencilMaskSeparate(FRONT_AND_BACK, 0);
   f.Disable(STENCIL_TEST);
@@ -242,6 +249,7 @@ sss_result SeparableFilter::run_msaa(const FilterRun& run, std::string* message)
     f.ActiveTexture(TEXTURE0 + kDepthUnit);
     f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.depth.name);
     f.DrawArrays(TRIANGLES, 0, 3);
+    ++last_draws_;
   }
 
   FilterRun inner = run;
@@ -325,6 +333,7 @@ sss_result SeparableFilter::write_samples(const FilterRun& run, std::string* mes
       f.SampleMaski(0, 1u << static_cast<unsigned>(i));
       f.Uniform1i(msaa_.write_sample, i);
       f.DrawArrays(TRIANGLES, 0, 3);
+      ++last_draws_;
     }
     f.Disable(SAMPLE_MASK);
   }

@@ -14,20 +14,26 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
-    gl_.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &multisample_textures_[static_cast<std::size_t>(unit)]);
+    if (gl_.has_multisample_textures()) {  // an invalid enum on ES 3.0
+      gl_.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &multisample_textures_[static_cast<std::size_t>(unit)]);
+    }
     gl_.GetIntegerv(SAMPLER_BINDING, &samplers_[static_cast<std::size_t>(unit)]);
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
-  gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_);
+  if (gl_.has_msaa_path()) gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);  // never set on ES
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
-  depth_clamp_ = gl_.IsEnabled(DEPTH_CLAMP);
-  logic_op_ = gl_.IsEnabled(COLOR_LOGIC_OP);
-  for (int i = 0; i < kClipDistances; ++i) {
-    clip_distances_[static_cast<std::size_t>(i)] = gl_.IsEnabled(CLIP_DISTANCE0 + static_cast<GLenum>(i));
+  if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
+  if (gl_.desktop()) {
+    for (std::size_t i = 0; i < kDesktopCapabilities.size(); ++i) {
+      desktop_capabilities_[i] = gl_.IsEnabled(kDesktopCapabilities[i]);
+    }
+    for (int i = 0; i < kClipDistances; ++i) {
+      clip_distances_[static_cast<std::size_t>(i)] = gl_.IsEnabled(CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    }
+    gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   }
   gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
-  gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
   save_stencil_face(STENCIL_BACK_FUNC, STENCIL_BACK_REF, STENCIL_BACK_VALUE_MASK, STENCIL_BACK_FAIL,
@@ -56,23 +62,30 @@ StateGuard::~StateGuard() {
   if (!enabled_) return;
   restore_stencil_face(FRONT, front_);
   restore_stencil_face(BACK, back_);
-  gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
   gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
-  for (int i = 0; i < kClipDistances; ++i) {
-    const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
-    clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
+  if (gl_.desktop()) {
+    gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    for (int i = 0; i < kClipDistances; ++i) {
+      const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
+      clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
+    }
+    for (std::size_t i = 0; i < kDesktopCapabilities.size(); ++i) {
+      desktop_capabilities_[i] ? gl_.Enable(kDesktopCapabilities[i]) : gl_.Disable(kDesktopCapabilities[i]);
+    }
   }
-  logic_op_ ? gl_.Enable(COLOR_LOGIC_OP) : gl_.Disable(COLOR_LOGIC_OP);
-  depth_clamp_ ? gl_.Enable(DEPTH_CLAMP) : gl_.Disable(DEPTH_CLAMP);
+  if (gl_.has_sample_mask()) sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
   gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_));
+  if (gl_.has_msaa_path()) gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
-    gl_.BindTexture(TEXTURE_2D_MULTISAMPLE, static_cast<GLuint>(multisample_textures_[static_cast<std::size_t>(unit)]));
+    if (gl_.has_multisample_textures()) {
+      gl_.BindTexture(TEXTURE_2D_MULTISAMPLE,
+                      static_cast<GLuint>(multisample_textures_[static_cast<std::size_t>(unit)]));
+    }
     gl_.BindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(samplers_[static_cast<std::size_t>(unit)]));
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
@@ -93,16 +106,20 @@ void set_pass_state(const Functions& gl) {
   gl.Disable(DEPTH_TEST);
   gl.Disable(BLEND);
   gl.Disable(CULL_FACE);
-  gl.Disable(FRAMEBUFFER_SRGB);
   gl.Disable(RASTERIZER_DISCARD);
   gl.Disable(SAMPLE_ALPHA_TO_COVERAGE);
   gl.Disable(SAMPLE_COVERAGE);
-  gl.Disable(SAMPLE_MASK);
   gl.Disable(POLYGON_OFFSET_FILL);
-  gl.Disable(DEPTH_CLAMP);
-  gl.Disable(COLOR_LOGIC_OP);
-  for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
-  gl.PolygonMode(FRONT_AND_BACK, FILL);
+  if (gl.has_sample_mask()) gl.Disable(SAMPLE_MASK);
+  // ES has none of these: no sRGB enable (the module's targets are float, never converted), no
+  // depth clamp, logic op, clip distances or polygon mode.
+  if (gl.desktop()) {
+    gl.Disable(FRAMEBUFFER_SRGB);
+    gl.Disable(DEPTH_CLAMP);
+    gl.Disable(COLOR_LOGIC_OP);
+    for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
+    gl.PolygonMode(FRONT_AND_BACK, FILL);
+  }
   gl.ColorMask(1, 1, 1, 1);
 }
 

@@ -23,9 +23,12 @@ class StateGuard {
     GLint func, ref, value_mask, fail, depth_fail, depth_pass, write_mask;
   };
   static constexpr int kClipDistances = 8;
-  static constexpr std::array<GLenum, 11> kCapabilities = {
-      SCISSOR_TEST,        DEPTH_TEST,      STENCIL_TEST, BLEND,      CULL_FACE, FRAMEBUFFER_SRGB,
-      RASTERIZER_DISCARD,  SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL};
+  // Enables that exist on every API (GL 3.3, ES 3.0).
+  static constexpr std::array<GLenum, 9> kCapabilities = {
+      SCISSOR_TEST,       DEPTH_TEST,        STENCIL_TEST,    BLEND, CULL_FACE,
+      RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, POLYGON_OFFSET_FILL};
+  // Desktop GL only.
+  static constexpr std::array<GLenum, 3> kDesktopCapabilities = {FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP};
 
   void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
@@ -35,11 +38,13 @@ class StateGuard {
   bool enabled_;
   GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint active_texture_ = 0, unpack_buffer_ = 0;
-  std::array<GLint, kUnitCount> textures_{}, multisample_textures_{}, samplers_{};
-  GLint sample_mask_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the MSAA write-back pass sets it)
+  std::array<GLint, kUnitCount> textures_{}, samplers_{};
+  std::array<GLint, kUnitCount> multisample_textures_{};  // GL 3.2+ / ES 3.1+ only
+  GLint sample_mask_value_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the desktop MSAA write-back sets it)
   std::array<GLint, 4> viewport_{};
-  std::array<GLboolean, 11> capabilities_{};
-  GLboolean depth_clamp_ = 0, logic_op_ = 0;
+  std::array<GLboolean, kCapabilities.size()> capabilities_{};
+  std::array<GLboolean, kDesktopCapabilities.size()> desktop_capabilities_{};
+  GLboolean sample_mask_ = 0;  // the GL_SAMPLE_MASK enable
   std::array<GLboolean, kClipDistances> clip_distances_{};
   std::array<GLboolean, 4> color_mask_{};
   std::array<GLint, 2> polygon_mode_{};

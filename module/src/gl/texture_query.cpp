@@ -4,7 +4,7 @@
 
 namespace sss::gl {
 
-sss_result query_texture(const Functions& gl, GLuint name, const char* role, TextureInfo* out,
+sss_result query_texture(const Functions& gl, GLuint name, const char* role, bool query_level, TextureInfo* out,
                          std::string* message) {
   char buffer[240];
   if (name == 0) {
@@ -24,6 +24,11 @@ sss_result query_texture(const Functions& gl, GLuint name, const char* role, Tex
   gl.ActiveTexture(TEXTURE0);
   gl.BindTexture(TEXTURE_2D, name);
   if (gl.GetError() != NO_ERROR) {  // GL_INVALID_OPERATION: the texture has another target
+    if (!gl.has_multisample_textures()) {  // OpenGL ES 3.0: no multisampled textures to try
+      std::snprintf(buffer, sizeof buffer, "%s = %u is not a GL_TEXTURE_2D (array, cube or 3D?)", role, name);
+      *message = buffer;
+      return SSS_ERROR_INVALID_TEXTURE;
+    }
     gl.BindTexture(TEXTURE_2D_MULTISAMPLE, name);
     if (gl.GetError() != NO_ERROR) {
       std::snprintf(buffer, sizeof buffer,
@@ -33,6 +38,10 @@ sss_result query_texture(const Functions& gl, GLuint name, const char* role, Tex
       return SSS_ERROR_INVALID_TEXTURE;
     }
     info.target = TEXTURE_2D_MULTISAMPLE;
+  }
+  if (!query_level) {  // OpenGL ES 3.0: the caller takes format and size from the frame description
+    *out = info;
+    return SSS_OK;
   }
   gl.GetTexLevelParameteriv(info.target, 0, TEXTURE_INTERNAL_FORMAT, &info.internal_format);
   gl.GetTexLevelParameteriv(info.target, 0, TEXTURE_WIDTH, &info.width);

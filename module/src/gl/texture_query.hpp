@@ -23,8 +23,11 @@ struct TextureInfo {
 // name (never bound, or deleted), neither GL_TEXTURE_2D nor GL_TEXTURE_2D_MULTISAMPLE, or without
 // storage. The target is found by binding the name to each target in turn on unit 0: binding a
 // texture to a target other than its own raises GL_INVALID_OPERATION and changes nothing, and the
-// error is read (cleared) here. Needs the GL error flag clear on entry.
-sss_result query_texture(const Functions& gl, GLuint name, const char* role, TextureInfo* out,
+// error is read (cleared) here. GL_TEXTURE_2D_MULTISAMPLE is tried only where it exists (GL 3.2+,
+// ES 3.1+; on ES 3.0 it is an invalid enum). Needs the GL error flag clear on entry.
+// With query_level false (no glGetTexLevelParameteriv: OpenGL ES 3.0) only the name and target are
+// checked and format, size and samples are left 0 (the caller takes them from the frame).
+sss_result query_texture(const Functions& gl, GLuint name, const char* role, bool query_level, TextureInfo* out,
                          std::string* message);
 
 // "GL_TEXTURE_2D" / "GL_TEXTURE_2D_MULTISAMPLE with 4 samples", for messages.
