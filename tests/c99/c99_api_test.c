@@ -24,6 +24,12 @@ int main(void) {
   sss_create_desc desc;
   sss_stats stats;
   sss_frame frame;
+  sss_kernel_desc kd;
+  sss_profile_desc pd;
+  float plan[SSS_KERNEL_MAX_TERMS * 2 * SSS_MAX_SAMPLES * 4];
+  float depth_variance[SSS_KERNEL_MAX_TERMS];
+  float radius = 1.0f, rgb[3], reach = 0.0f;
+  int32_t terms = 0;
 
   sss_default_settings(&settings);
   CHECK(settings.struct_size == sizeof settings);
@@ -55,6 +61,25 @@ int main(void) {
   frame.texture_width = 64;
   frame.texture_height = 48;
   CHECK(sss_apply_frame(NULL, &frame) == SSS_ERROR_INVALID_ARGUMENT);
+
+  /* The kernel-family API (sss_kernels.h, through sss.h). */
+  sss_default_kernel_desc(&kd);
+  kd.family = SSS_KERNEL_SVD;
+  kd.rank = 3;
+  kd.profile.material = SSS_MATERIAL_MARBLE;
+  CHECK(sss_kernel_plan(&kd, SSS_KERNEL_MAX_TERMS, plan, depth_variance, &terms, &reach) == SSS_OK);
+  CHECK(terms == 3 && reach > 0.0f && depth_variance[0] == 0.0f);
+  kd.family = SSS_KERNEL_ARTIST;
+  CHECK(sss_kernel_plan(&kd, SSS_KERNEL_MAX_TERMS, plan, depth_variance, &terms, &reach) == SSS_OK);
+  CHECK(terms == 1 && depth_variance[0] > 0.0f);
+  kd.family = 42;
+  CHECK(sss_kernel_plan(&kd, SSS_KERNEL_MAX_TERMS, plan, NULL, &terms, NULL) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sss_last_error(NULL), "desc->family = 42") != NULL);
+  sss_default_profile_desc(&pd);
+  pd.material = SSS_MATERIAL_APPLE;
+  CHECK(sss_profile_evaluate(&pd, 1, &radius, rgb) == SSS_OK && rgb[0] > 0.0f);
+  CHECK(sss_profile_integral(&pd, rgb) == SSS_OK && rgb[0] > 0.0f && rgb[0] < 1.0f);
+  CHECK(strcmp(sss_material_name(SSS_MATERIAL_APPLE), "apple") == 0);
   printf("%d passed, %d failed\n", failures == 0 ? 1 : 0, failures == 0 ? 0 : 1);
   return failures == 0 ? 0 : 1;
 }

@@ -390,4 +390,7 @@ SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3]
 }
 #endif
 
+/* The kernel families and profiles (GL-free): sss_kernel_plan, sss_profile_evaluate, ... */
+#include "sss_kernels.h"
+
 #endif /* SSS_SSS_H */

@@ -1,0 +1,134 @@
+/*
+ * sss kernels: the GL-free math API for the kernel families of the separable SSS paper and its
+ * supplementary, and the radial profiles they are built from (C99, no GL). Included by sss.h;
+ * may also be included on its own.
+ *
+ * Every kernel is a "plan": a sum of separable terms, each one horizontal and one vertical pass of
+ * `taps` taps {weight r, weight g, weight b, offset in profile millimetres}:
+ *
+ *   out_c(p) = Σ_terms Σ_x Σ_y h_c(x) · v_c(y) · in_c(p + (x, y))
+ *
+ * Plans redistribute irradiance: each channel sums to 1 (SVD with SSS_KERNEL_SVD_NO_RESCALE aside);
+ * the diffuse albedo stays the host's. Profiles are R_c(r) in mm⁻² per RGB channel.
+ *
+ * Errors: as in sss.h, a specific sss_result and a message naming the argument and its value,
+ * readable with sss_last_error(NULL) on the calling thread. Outputs are written only on SSS_OK.
+ * Thread-safe: no shared state.
+ */
+#ifndef SSS_SSS_KERNELS_H
+#define SSS_SSS_KERNELS_H
+
+#include "sss.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Kernel families (sss_kernel_desc.family). Passes = 2 × terms. */
+typedef enum sss_kernel_family {
+  SSS_KERNEL_SEPARABLE = 0,        /**< paper eq. (1) from strength and falloff: 1 term */
+  SSS_KERNEL_SUM_OF_GAUSSIANS = 1, /**< d'Eon et al.: `rank` Gaussians, 1 term each (fitted to non-skin profiles) */
+  SSS_KERNEL_SVD = 2,              /**< rank-`rank` SVD of the discretised 2D profile (supp. S.2-S.4) */
+  SSS_KERNEL_PREINTEGRATED = 3,    /**< a_p(x)a_p(y)/‖R‖₁ (supp. S.5-S.6): exact for E1(x) + E2(y): 1 term */
+  SSS_KERNEL_GUIDED = 4,           /**< guided rank-1 fit with exponent guide_k (supp. S.7-S.9): 1 term */
+  SSS_KERNEL_ARTIST = 5            /**< two Gaussians, near/far variance and weight, depth-corrected (supp. §E): 1 term */
+} sss_kernel_family;
+#define SSS_KERNEL_FAMILY_COUNT 6
+/** The most terms any plan has (sum of Gaussians or SVD at rank 6). */
+#define SSS_KERNEL_MAX_TERMS 6
+
+/** Profile sources (sss_profile_desc.material). The measured materials are those of the
+ *  supplementary's §G (from Jensen et al. 2001), as dipole profiles. */
+typedef enum sss_material {
+  SSS_MATERIAL_SKIN = 0, /**< d'Eon–Luebke six-Gaussian skin (the first gaussian_count terms) */
+  SSS_MATERIAL_APPLE = 1,
+  SSS_MATERIAL_CHICKEN1 = 2,
+  SSS_MATERIAL_CHICKEN2 = 3,
+  SSS_MATERIAL_CREAM = 4,
+  SSS_MATERIAL_KETCHUP = 5,
+  SSS_MATERIAL_MARBLE = 6,
+  SSS_MATERIAL_POTATO = 7,
+  SSS_MATERIAL_SKIMMILK = 8,
+  SSS_MATERIAL_SKIN1 = 9,
+  SSS_MATERIAL_SKIN2 = 10,
+  SSS_MATERIAL_WHOLEMILK = 11,
+  SSS_MATERIAL_TABULATED = 12 /**< the caller's table (table_* fields) */
+} sss_material;
+#define SSS_MATERIAL_COUNT 13
+#define SSS_PROFILE_MAX_TABLE 4096
+
+typedef struct sss_profile_desc {
+  uint32_t struct_size;         /**< sizeof(sss_profile_desc) */
+  int32_t material;             /**< sss_material, default SSS_MATERIAL_SKIN */
+  int32_t gaussian_count;       /**< SSS_MATERIAL_SKIN: the first 1..6 Gaussians, renormalised; default 6 */
+  int32_t table_size;           /**< SSS_MATERIAL_TABULATED: entries, 1..SSS_PROFILE_MAX_TABLE */
+  const float *table_radius_mm; /**< table_size radii, finite, >= 0, strictly increasing */
+  const float *table_rgb;       /**< 3 × table_size values R_c(r) in mm⁻², finite, >= 0; linear between
+                                     radii, constant inside the first, 0 beyond the last */
+} sss_profile_desc;
+
+/** SSS_KERNEL_SVD: keep the plain rank-N truncation (no rescaling to the profile's energy). */
+#define SSS_KERNEL_SVD_NO_RESCALE 0x1u
+#define SSS_KERNEL_ALL_FLAGS 0x1u
+
+typedef struct sss_kernel_desc {
+  uint32_t struct_size;        /**< sizeof(sss_kernel_desc) */
+  int32_t family;              /**< sss_kernel_family; default SSS_KERNEL_SEPARABLE */
+  int32_t taps;                /**< taps per pass, odd, [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES]; default 17 */
+  int32_t rank;                /**< SUM_OF_GAUSSIANS: Gaussians, SVD: rank; 1..6 (default 1); others ignore it */
+  uint32_t flags;              /**< SSS_KERNEL_* flags; default 0 */
+  float guide_k;               /**< GUIDED: guide exponent, [0, 4]; default 1.55 */
+  float radius_mm;             /**< SVD, PREINTEGRATED, GUIDED: grid half-width in mm, 0 (default: the
+                                    profile's 1e-4 extent; guided: its 90% radius) or in (0, 1e4] */
+  float strength[3];           /**< SEPARABLE: [0, 1] each; default the paper's Table 1 (.78 .70 .75) */
+  float falloff[3];            /**< SEPARABLE: [0, 1] each; default (.57 .13 .08) */
+  float near_variance_mm2[3];  /**< ARTIST: (0, 1e4] each */
+  float far_variance_mm2[3];   /**< ARTIST: (0, 1e4] each */
+  float near_weight[3];        /**< ARTIST: [0, 1] each */
+  sss_profile_desc profile;    /**< SUM_OF_GAUSSIANS, SVD, PREINTEGRATED, GUIDED: the profile */
+} sss_kernel_desc;
+
+/** Fills *p with the defaults above (d'Eon skin, six Gaussians). NULL is ignored. */
+SSS_API void sss_default_profile_desc(sss_profile_desc *p);
+
+/** Fills *d with the defaults above (eq. (1) kernel, Table 1 parameters, 17 taps). NULL is ignored. */
+SSS_API void sss_default_kernel_desc(sss_kernel_desc *d);
+
+/** The material's short name ("apple", "skin" for SSS_MATERIAL_SKIN, "tabulated"), or NULL when
+ *  material is outside [0, SSS_MATERIAL_COUNT). */
+SSS_API const char *sss_material_name(int32_t material);
+
+/** R_c(r) of the profile at `count` radii into out_rgb (3 floats per radius, mm⁻²).
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile, radius_mm or out_rgb NULL; count outside [1, 1e8]; a radius
+ *                                     negative or not finite; or the profile invalid (struct_size, material,
+ *                                     gaussian_count, table_size, a table pointer NULL, a table value out of range) */
+SSS_API sss_result sss_profile_evaluate(const sss_profile_desc *profile, int32_t count, const float *radius_mm,
+                                        float *out_rgb);
+
+/** The profile's integral over the plane per channel (its total diffuse reflectance) into out_rgb[3].
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile or out_rgb NULL, or the profile invalid (as for sss_profile_evaluate) */
+SSS_API sss_result sss_profile_integral(const sss_profile_desc *profile, float out_rgb[3]);
+
+/** Builds the kernel `desc` describes. Writes *out_terms (1..SSS_KERNEL_MAX_TERMS) terms of
+ *  2 passes × desc->taps taps: out_taps[((term · 2 + pass) · taps + tap) · 4 + k], pass 0 horizontal,
+ *  1 vertical, k = {weight r, weight g, weight b, offset mm}; taps of a pass in increasing offset
+ *  (the eq. (1) kernel keeps its own layout: centre first). SVD weights may be negative.
+ *  out_taps must hold max_terms · 2 · taps · 4 floats. Optional (may be NULL): out_depth_variance_mm2
+ *  (max_terms floats: > 0 where a term's taps are depth-corrected by exp(-dz²/2v), supp. §E; else 0)
+ *  and out_reach_mm (the largest |offset|). The fitted families (GUIDED, SUM_OF_GAUSSIANS on a
+ *  non-skin profile) run an optimiser: milliseconds to a few hundred; build plans once, not per frame.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT desc, out_taps or out_terms NULL; struct_size; family, taps, rank, flags,
+ *                                     guide_k, radius_mm, strength, falloff, the artist fields or the profile out of
+ *                                     range; or max_terms below the plan's term count (*out_terms then says how
+ *                                     many are needed, nothing else is written) */
+SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_terms, float *out_taps,
+                                   float *out_depth_variance_mm2, int32_t *out_terms, float *out_reach_mm);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSS_SSS_KERNELS_H */

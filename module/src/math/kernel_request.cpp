@@ -1,0 +1,48 @@
+#include "kernel_request.hpp"
+
+#include "kernel_fits.hpp"
+
+namespace sss::math {
+
+std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& r) {
+  if (r.material == kProfileTable) return std::make_unique<TabulatedProfile>(r.table_radii_mm, r.table_values);
+  if (r.material >= 0 && r.material < kMaterialCount) {
+    return std::make_unique<DipoleProfile>(measured_materials()[static_cast<std::size_t>(r.material)]);
+  }
+  return std::make_unique<GaussianSumProfile>(GaussianSumProfile::skin(r.gaussian_count));
+}
+
+ProfileMatrix profile_matrix_for(const RadialProfile& profile, int taps, double radius_mm) {
+  const double radius = radius_mm > 0.0 ? radius_mm : profile.extent_mm();
+  return discretise_profile(profile, make_tap_grid(taps, radius, TapSpacing::quadratic));
+}
+
+KernelPlan build_kernel_plan(const KernelRequest& r) {
+  switch (r.family) {
+    case KernelFamily::separable:
+      return separable_plan(r.taps, r.strength, r.falloff);
+    case KernelFamily::artist:
+      return artist_plan(r.artist, r.taps);
+    default:
+      break;
+  }
+  const auto profile = make_profile(r.profile);
+  switch (r.family) {
+    case KernelFamily::sum_of_gaussians: {
+      if (r.profile.material == kProfileSkin) {
+        return gaussian_sum_plan(GaussianSumProfile::skin(r.rank), r.taps);
+      }
+      return gaussian_sum_plan(GaussianSumProfile(fit_gaussian_sum(*profile, r.rank)), r.taps);
+    }
+    case KernelFamily::svd:
+      return svd_plan(profile_matrix_for(*profile, r.taps, r.radius_mm), r.rank, r.rescale_energy);
+    case KernelFamily::preintegrated:
+      return preintegrated_plan(profile_matrix_for(*profile, r.taps, r.radius_mm));
+    case KernelFamily::guided:
+      return guided_plan(*profile, r.taps, r.radius_mm > 0.0 ? r.radius_mm : guided_radius_mm(*profile), r.guide_k);
+    default:
+      return {};
+  }
+}
+
+}  // namespace sss::math

@@ -1,0 +1,56 @@
+// One description of "which kernel from which profile" and the function that builds its plan: what
+// the C API (sss_kernels.h) and the settings map onto. Math layer: no GL.
+//
+// Units: offsets of plans built from a profile are millimetres of that profile (physical mm for the
+// skin Gaussians, the dipoles and tables in mm). The eq. (1) kernel's offsets are its own profile
+// millimetres; with width = 1.5 · (world units per mm) (DESIGN.md §4, sss_width_for_world_units_per_mm)
+// the two coincide, so one screen scale serves every family.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "kernel_families.hpp"
+#include "radial_profile.hpp"
+
+namespace sss::math {
+
+enum class KernelFamily { separable, sum_of_gaussians, svd, preintegrated, guided, artist };
+
+struct ProfileRequest {
+  // -1: d'Eon–Luebke skin (the first gaussian_count of its six Gaussians); 0..10: the dipole of
+  // measured_materials()[material]; -2: the table below.
+  int material = -1;
+  int gaussian_count = 6;
+  std::vector<double> table_radii_mm;
+  std::vector<Rgb> table_values;
+};
+inline constexpr int kProfileSkin = -1;
+inline constexpr int kProfileTable = -2;
+
+std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& request);
+
+struct KernelRequest {
+  KernelFamily family = KernelFamily::separable;
+  int taps = 17;                 // per pass, odd
+  int rank = 1;                  // sum of Gaussians: N Gaussians; SVD: rank N (1..6)
+  bool rescale_energy = true;    // SVD: scale to the profile's energy (S.4)
+  double guide_k = 1.55;         // guided rank-1: the guide's exponent, [0, 4]
+  double radius_mm = 0.0;        // SVD, pre-integrated, guided: grid half-width; 0 = the family's default
+                                 // (the profile's extent; guided: guided_radius_mm)
+  std::array<float, 3> strength = {0.78f, 0.70f, 0.75f};  // separable (paper Table 1)
+  std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
+  ArtistModel artist{{0.0484, 0.0484, 0.0484}, {1.99, 0.567, 0.567}, {0.5, 0.8, 0.9}};
+  ProfileRequest profile;
+};
+
+// Builds the plan. Sum of Gaussians on a profile that is not the skin Gaussians fits N Gaussians to
+// it first (fit_gaussian_sum). Preconditions (checked by the API layer): the ranges above.
+KernelPlan build_kernel_plan(const KernelRequest& request);
+
+// The matrix the SVD, pre-integrated and guided families start from: the profile on a quadratic
+// grid of `taps` cells out to radius_mm (or the profile's extent).
+ProfileMatrix profile_matrix_for(const RadialProfile& profile, int taps, double radius_mm);
+
+}  // namespace sss::math

@@ -1,0 +1,183 @@
+// Writes docs/kernel-fits.md: the numbers behind the kernel families, computed here (never typed):
+// the eq. (2-3) fit of the separable kernel to d'Eon's skin next to the paper's Table 1, the share of
+// the first singular value per channel (paper Fig. 2), the guided fit against the pre-integrated
+// kernel, and the sum-of-Gaussians fits of the measured materials.
+//
+//   sss_kernel_report [--out FILE]     (default: stdout)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "math/kernel_families.hpp"
+#include "math/kernel_fits.hpp"
+#include "math/kernel_request.hpp"
+
+using namespace sss::math;
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// Σ|a − b| / Σ|b|.
+double relative_l1(const std::vector<double>& a, const std::vector<double>& b) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) num += std::fabs(a[i] - b[i]), den += std::fabs(b[i]);
+  return num / den;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out_path;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
+      out_path = argv[++i];
+    } else {
+      std::cerr << "usage: sss_kernel_report [--out FILE]\n";
+      return 2;
+    }
+  }
+  std::ostringstream md;
+  const auto skin = GaussianSumProfile::skin(6);
+  md << "# Kernel fits and decompositions\n\n"
+     << "Written by `build/tools/sss_kernel_report --out docs/kernel-fits.md` (scripts/generate-profiles.sh runs it);\n"
+     << "do not edit by hand. Profile: d'Eon–Luebke six-Gaussian skin (DESIGN.md §5) unless stated.\n\n";
+
+  // ---- Separable fit, on several sample grids: eq. (3)'s optimum depends on where it samples.
+  md << "## Separable kernel (eq. 1) fitted by eq. (2-3)\n\n"
+     << "NLopt BOBYQA (bounded, derivative-free; the bounds scale ∈ [0.05, 20], strength and falloff ∈ [0, 1]\n"
+     << "are the constraints of the 'constrained nonlinear optimisation'), started from the reference defaults,\n"
+     << "minimising eq. (3): Σ over channels and over the n×n cells of a grid on ±R mm of (K − s sᵀ)², K the\n"
+     << "profile's cell integrals normalised to 1 and s the eq. (1) kernel integrated over the same cells\n"
+     << "(its delta on the centre cell). 'scale' is kernel millimetres per millimetre of skin. The last column\n"
+     << "is eq. (3) at the paper's Table 1 strength and falloff (with the fitted scale) on the same grid.\n\n"
+     << "| grid | n | R mm | scale | strength R G B | falloff R G B | residual | Table 1 residual | evals |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  struct GridCase { TapSpacing spacing; int n; double radius; };
+  for (const GridCase g : {GridCase{TapSpacing::uniform, 17, 3.0}, GridCase{TapSpacing::uniform, 33, 6.0},
+                           GridCase{TapSpacing::uniform, 33, 3.0}, GridCase{TapSpacing::quadratic, 17, 3.0},
+                           GridCase{TapSpacing::quadratic, 33, 3.0}}) {
+    const SeparableFit fit = fit_separable(skin, g.n, g.radius, g.spacing);
+    const ProfileMatrix target = discretise_profile(skin, make_tap_grid(g.n, g.radius, g.spacing));
+    const double table1 = separable_residual(target, fit.scale, {0.78, 0.70, 0.75}, {0.57, 0.13, 0.08});
+    md << "| " << (g.spacing == TapSpacing::uniform ? "uniform" : "quadratic") << " | " << g.n << " | "
+       << fmt("%.0f", g.radius) << " | " << fmt("%.3f", fit.scale) << " | " << fmt("%.2f", fit.strength[0]) << " "
+       << fmt("%.2f", fit.strength[1]) << " " << fmt("%.2f", fit.strength[2]) << " | " << fmt("%.2f", fit.falloff[0])
+       << " " << fmt("%.2f", fit.falloff[1]) << " " << fmt("%.2f", fit.falloff[2]) << " | "
+       << fmt("%.2e", fit.residual) << " | " << fmt("%.2e", table1) << " | " << fit.evaluations << " |\n";
+  }
+  md << "| paper Table 1 | | | (width 0.014) | 0.78 0.70 0.75 | 0.57 0.13 0.08 | | | |\n\n"
+     << "Why they differ: eq. (3) is a sum over a sample set the paper does not list, and the optimum moves\n"
+     << "with it. The delta of eq. (1) can only stand for what lies inside the centre sample: on a coarse\n"
+     << "uniform grid (cells of 0.35 mm on ±3 mm) the narrowest skin Gaussian (σ = 0.08 mm) falls inside the\n"
+     << "centre cell and the fit lands near Table 1 (strength below 1, green and blue falloff near 0.1); on\n"
+     << "grids with fine centre cells the narrow Gaussian is resolved, the delta is not needed and strength\n"
+     << "goes to its bound 1. Red falloff stays near 1 in every fit: the base profile p is the red channel\n"
+     << "itself, so only the scale separates red falloff from width. Width: with DESIGN.md §4 (one kernel\n"
+     << "millimetre spans 2/3·width world units) the matching width is 1.5·(world units per mm)/scale; the\n"
+     << "paper's 0.014 is in the units of its head model, whose scale it does not give, so it cannot be\n"
+     << "checked directly.\n\n";
+
+  // ---- SVD energy.
+  const ProfileMatrix m = profile_matrix_for(skin, 33, 0.0);
+  const auto svd = decompose_profile(m);
+  const Rgb share = first_singular_energy_fraction(svd);
+  md << "## SVD of the discretised profile\n\n"
+     << "33×33 quadratic grid on ±" << fmt("%.2f", m.grid.edges_mm.back()) << " mm (the profile's 1e-4 extent).\n\n"
+     << "| channel | σ1²/Σσ² | σ1/Σσ | σ2/σ1 | σ3/σ1 |\n|---|---|---|---|---|\n";
+  const char* names[3] = {"red", "green", "blue"};
+  for (std::size_t c = 0; c < 3; ++c) {
+    double sum = 0.0;
+    for (double s : svd[c].singular_values) sum += s;
+    const auto& sv = svd[c].singular_values;
+    md << "| " << names[c] << " | " << fmt("%.3f", share[c]) << " | " << fmt("%.3f", sv[0] / sum) << " | "
+       << fmt("%.3f", sv[1] / sv[0]) << " | " << fmt("%.3f", sv[2] / sv[0]) << " |\n";
+  }
+  md << "\nThe first singular value's share σ1²/Σσ² on other grids (uniform grids: the plain 'discrete profile'):\n\n"
+     << "| grid | red | green | blue |\n|---|---|---|---|\n";
+  struct SvdGrid { TapSpacing spacing; int n; double radius; };
+  for (const SvdGrid g : {SvdGrid{TapSpacing::uniform, 65, 3.0}, SvdGrid{TapSpacing::uniform, 65, 6.0},
+                          SvdGrid{TapSpacing::quadratic, 65, 6.0}}) {
+    const ProfileMatrix mg = discretise_profile(skin, make_tap_grid(g.n, g.radius, g.spacing));
+    const Rgb sg = first_singular_energy_fraction(decompose_profile(mg));
+    md << "| " << (g.spacing == TapSpacing::uniform ? "uniform " : "quadratic ") << g.n << "×" << g.n << " on ±"
+       << fmt("%.0f", g.radius) << " mm | " << fmt("%.3f", sg[0]) << " | " << fmt("%.3f", sg[1]) << " | "
+       << fmt("%.3f", sg[2]) << " |\n";
+  }
+  md << "\nThe paper's Figure 2 reports about 80% of the energy in the first eigenvalue. The share depends on\n"
+     << "the discretisation: entries are cell integrals, and on a uniform grid the narrow peak (the\n"
+     << "0.0064 mm² Gaussian) sits in a few cells whose squares dominate the Frobenius norm and are nearly\n"
+     << "rank 1; the centre-dense quadratic grid spreads it and comes closest to the paper's figure in red.\n\n";
+
+  // ---- Pre-integrated kernel against the full matrix on straight shadow edges.
+  {
+    const ProfileMatrix pm = profile_matrix_for(skin, 33, 0.0);
+    const KernelPlan plan = preintegrated_plan(pm);
+    md << "## Pre-integrated kernel on straight shadow edges\n\n"
+       << "Largest difference, as a fraction of the edge's contrast, between the pre-integrated plan and the full\n"
+       << "33×33 profile matrix applied to the edge H(x cos θ + y sin θ − 0.05 mm), sampled across it (red channel):\n\n"
+       << "| θ (degrees) | max difference |\n|---|---|\n";
+    for (double deg : {0.0, 30.0, 45.0, 71.0, 90.0}) {
+      const double th = deg * 3.14159265358979323846 / 180.0, nx = std::cos(th), ny = std::sin(th);
+      auto edge = [&](double x, double y) { return nx * x + ny * y > 0.05 ? 1.0 : 0.0; };
+      double worst = 0.0;
+      for (double t = -1.0; t <= 1.0; t += 0.0625) {
+        const double px = t * nx, py = t * ny;
+        double full = 0.0, sep = 0.0;
+        for (int i = 0; i < pm.n(); ++i) {
+          for (int j = 0; j < pm.n(); ++j) {
+            full += pm.at(0, i, j) * edge(px - pm.grid.offsets_mm[static_cast<std::size_t>(i)],
+                                         py - pm.grid.offsets_mm[static_cast<std::size_t>(j)]);
+          }
+        }
+        for (const auto& h : plan.terms[0].horizontal) {
+          for (const auto& v : plan.terms[0].vertical) sep += double(h.weight[0]) * v.weight[0] * edge(px - h.offset_mm, py - v.offset_mm);
+        }
+        worst = std::max(worst, std::fabs(full - sep));
+      }
+      md << "| " << fmt("%.0f", deg) << " | " << fmt("%.2e", worst) << " |\n";
+    }
+    md << "\nExact (to float rounding) on the axes, where the edge is additively separable; not at other angles.\n\n";
+  }
+
+  // ---- Guided vs pre-integrated.
+  md << "## Guided rank-1 fit against the pre-integrated kernel (S.8)\n\n"
+     << "Relative L1 distance Σ|a − a_p| / Σ a_p of the guided taps from the pre-integrated ones, 33 uniform taps\n"
+     << "on ±" << fmt("%.2f", guided_radius_mm(skin)) << " mm (the radius holding 90% of every channel's energy), mapped to [-1, 1] for the guide:\n\n"
+     << "| k | red | green | blue | SLSQP evaluations |\n|---|---|---|---|---|\n";
+  for (double k : {0.0, 1.0, kGuideDefaultK, 2.0, 3.0, 4.0}) {
+    const GuidedFit g = guided_fit(skin, 33, guided_radius_mm(skin), k);
+    const auto ap = preintegrated_taps(g.matrix);
+    md << "| " << fmt("%.2f", k);
+    for (std::size_t c = 0; c < 3; ++c) md << " | " << fmt("%.3f", relative_l1(g.taps[c], ap[c]));
+    md << " | " << g.evaluations << " |\n";
+  }
+
+  // ---- Sum of Gaussians fits.
+  md << "\n## Sum-of-Gaussians fits of the dipole profiles\n\n"
+     << "Variances (mm²) of N = 4 Gaussians fitted to each material's dipole profile (weights per channel sum to 1):\n\n"
+     << "| material | v1 | v2 | v3 | v4 |\n|---|---|---|---|---|\n";
+  for (const auto& mat : measured_materials()) {
+    const DipoleProfile p(mat);
+    const auto terms = fit_gaussian_sum(p, 4);
+    md << "| " << mat.name;
+    for (const auto& t : terms) md << " | " << fmt("%.4g", t.variance_mm2);
+    md << " |\n";
+  }
+
+  if (out_path.empty()) {
+    std::cout << md.str();
+  } else {
+    std::ofstream(out_path) << md.str();
+  }
+  return 0;
+}
