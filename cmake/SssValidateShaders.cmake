@@ -5,8 +5,9 @@
 #   [-DINTEGRATION_GLSL_DIR=<integration/glsl>]: the host-side includes too
 # Variants: each dialect the library negotiates at create time (module/shaders/version_*.glsl:
 # GLSL 330 core, GLSL 420 core, GLSL ES 300; glslangValidator takes the profile from #version) ×
-# SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur, and
-# SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur.
+# SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0/1 × SSS_LINEAR_DEPTH 0/1 for the blur,
+# SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur; and, for the
+# desktop dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders.
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(failures 0)
 set(count 0)
@@ -28,10 +29,22 @@ file(READ "${SHADER_DIR}/fullscreen.vert" vertex)
 file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
 file(READ "${SHADER_DIR}/cbf_blur.frag" cbf)
+file(READ "${SHADER_DIR}/msaa_resolve.frag" msaa_resolve)
+file(READ "${SHADER_DIR}/msaa_mask.frag" msaa_mask)
+file(READ "${SHADER_DIR}/msaa_write.frag" msaa_write)
 foreach(dialect 330 420 es300)
   file(READ "${SHADER_DIR}/version_${dialect}.glsl" header)
   validate(${dialect}_fullscreen vert "${header}${vertex}")
   validate(${dialect}_copy frag "${header}${copy}")
+  # The MSAA path runs on desktop GL only (sss.h, sss_frame): its shaders read sampler2DMS, which
+  # GLSL ES 3.00 does not have (ES 3.10 does, but the module never builds them on ES).
+  if(NOT dialect STREQUAL "es300")
+    foreach(linear 0 1)
+      validate("${dialect}_msaa_resolve_l${linear}" frag "${header}#define SSS_LINEAR_DEPTH ${linear}\n${msaa_resolve}")
+    endforeach()
+    validate(${dialect}_msaa_mask frag "${header}${msaa_mask}")
+    validate(${dialect}_msaa_write frag "${header}${msaa_write}")
+  endif()
   foreach(outside 0 1 2)
     foreach(follow 0 1)
       foreach(linear 0 1)

@@ -207,7 +207,7 @@ bool create_lighting_pass(LightingPass *pass) {
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
                        const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
                        const TransmittanceInputs &transmittance) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.lighting_framebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, lighting_target(targets));
   glViewport(0, 0, targets.width, targets.height);
   // Background: alpha 0 (no scattering), no specular; depth 1, stencil 0.
   const GLfloat background[4] = {scene.background.r, scene.background.g, scene.background.b, 0.0f};

@@ -23,6 +23,7 @@ SssControls controls_from_options(const Options &o) {
   c.cross_bilateral = o.cross_bilateral;
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
+  c.msaa_samples = o.msaa;
   return c;
 }
 

@@ -80,6 +80,7 @@ void print_usage(const char *program) {
       "  --cross-bilateral   Mikkelsen's cross-bilateral mode instead of the separable kernel\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
+      "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
@@ -96,7 +97,7 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
-    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kHelp, kCrossBilateral,
+    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight
   };
   static const struct option long_options[] = {
@@ -111,6 +112,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"width-scale", required_argument, nullptr, kWidthScale},
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
       {"no-stencil", no_argument, nullptr, kNoStencil},
+      {"msaa", required_argument, nullptr, kMsaa},
       {"exposure", required_argument, nullptr, kExposure},
       {"heat-scale", required_argument, nullptr, kHeatScale},
       {"heat-factor", required_argument, nullptr, kHeatFactor},
@@ -168,6 +170,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kNoFollow: o->follow_surface = false; break;
       case kNoStencil: o->use_stencil = false; break;
+      case kMsaa:
+        ok = (parse_int(optarg, &o->msaa) && (o->msaa == 0 || o->msaa == 4)) || fail("--msaa wants 0 or 4", optarg);
+        break;
       case kExposure:
         ok = (parse_float(optarg, &o->exposure) && o->exposure > 0.0f && o->exposure <= 1000.0f) ||
              fail("--exposure wants a number in (0, 1000]", optarg);

@@ -22,6 +22,7 @@ struct Options {
   bool sss = true;
   int samples = 0;               // SSS taps per pass; 0: the library's default
   bool use_stencil = true;
+  int msaa = 0;                  // 0, or 4: render into 4x multisampled targets and hand those to the library
   bool follow_surface = true;
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
   bool translucency = false;     // transmittance through thin parts

@@ -143,11 +143,16 @@ void draw_panel(WindowState *s) {
     }
   }
   if (ImGui::CollapsingHeader("Subsurface scattering", ImGuiTreeNodeFlags_DefaultOpen)) sss_section(s);
-  if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, MSAA, translucency")) {
+  if (ImGui::CollapsingHeader("MSAA", ImGuiTreeNodeFlags_DefaultOpen)) {
+    bool msaa = s->controls.msaa_samples > 0;
+    if (ImGui::Checkbox("4x MSAA targets (the library resolves them: averaged linear depth)", &msaa)) {
+      s->controls.msaa_samples = msaa ? 4 : 0;
+    }
+  }
+  if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, translucency")) {
     // The marked place for the controls of later issues; translucency is wired, the rest not yet.
     ImGui::TextDisabled("kernel family and measured materials");
     ImGui::TextDisabled("jittered taps");
-    ImGui::TextDisabled("MSAA");
     ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
     ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
     ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"

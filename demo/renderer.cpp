@@ -43,12 +43,14 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance);
+  resolve_lighting(*targets);  // MSAA: the single-sample "before", specular and stencil for the composite
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
 
   if (controls.enabled) {
     if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) ||
-        !apply_sss(r->sss, controls, camera.projection, targets->diffuse, targets->depth_stencil, targets->after)) {
+        !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
+                   targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after)) {
       return false;
     }
     result->sss_ran = true;

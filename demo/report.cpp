@@ -42,13 +42,15 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
   char text[768];
   std::snprintf(text, sizeof text,
                 "SSS %s; width %.6g world units (%.3g x the physical %.6g = sss_width_for_world_units_per_mm(0.001));"
-                " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s",
+                " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s; %s",
                 c.enabled ? "on" : "off", static_cast<double>(s.width), static_cast<double>(c.width_scale),
                 static_cast<double>(physical_width), static_cast<double>(s.strength[0]),
                 static_cast<double>(s.strength[1]), static_cast<double>(s.strength[2]),
                 static_cast<double>(s.falloff[0]), static_cast<double>(s.falloff[1]),
                 static_cast<double>(s.falloff[2]), s.samples, (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
-                c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0");
+                c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0",
+                c.msaa_samples > 0 ? "4x MSAA targets handed to the library (resolved there: averaged linear depth)"
+                                   : "no MSAA");
   std::string result = text;
   if (s.mode == SSS_MODE_CROSS_BILATERAL) {
     std::snprintf(text, sizeof text,

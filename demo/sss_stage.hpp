@@ -11,8 +11,8 @@
 
 namespace demo {
 
-// What the panel and the command line control. Later issues add kernel family / material, jitter,
-// MSAA and translucency here (see panel.cpp for the marked place in the UI).
+// What the panel and the command line control. Later issues add kernel family / material, jitter
+// and translucency here (see panel.cpp for the marked place in the UI).
 struct SssControls {
   bool enabled = true;           // S: the library runs (off: "after" is not produced, the frame shows "before")
   float width_scale = 1.0f;      // x the physical width sss_width_for_world_units_per_mm(world units per mm)
@@ -26,6 +26,7 @@ struct SssControls {
   // with the profile the blur uses.
   bool translucency = false;
   float translucency_amount = 0.95f;  // the include's `translucency`, 0..1 (1: the most light through)
+  int msaa_samples = 0;          // 0, or 4: the lighting pass renders 4x MSAA targets and the library gets those
 };
 
 // The radial profile the blur of these controls uses (for the transmittance terms): Mikkelsen's in

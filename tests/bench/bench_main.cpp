@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@
 #include "host_gl_util.hpp"
 #include "method.hpp"
 #include "metrics.hpp"
+#include "msaa_study.hpp"
 #include "options.hpp"
 #include "reference.hpp"
 #include "report.hpp"
@@ -316,12 +318,26 @@ int run(const Options& options) {
     }
   }
   copy_method.reset();
+  std::vector<MsaaRow> msaa_rows;
+  if (options.msaa) {
+    msaa_rows = run_msaa_study(options, loader, clock);
+    write_msaa_csv(options.out + "/msaa.csv", msaa_rows);
+    std::ofstream md(options.out + "/msaa.md");
+    write_msaa_section(md, msaa_rows, "");
+  }
 
   write_csv(options.out + "/results.csv", rows);
   write_json(options.out + "/results.json", info, rows);
   write_markdown_table(options.out + "/results.md", info, rows);
   const std::vector<std::string> plots = write_pareto_plots(options.out, rows);
-  if (!options.doc.empty()) write_results_document(options.doc, options.out, info, rows, checks, plots);
+  if (!options.doc.empty()) {
+    write_results_document(options.doc, options.out, info, rows, checks, plots);
+    std::ofstream doc(options.doc, std::ios::app);
+    const std::string prefix = std::filesystem::relative(std::filesystem::absolute(options.out),
+                                                         std::filesystem::absolute(options.doc).parent_path())
+                                   .generic_string();
+    write_msaa_section(doc, msaa_rows, prefix.empty() || prefix == "." ? "" : prefix + "/");
+  }
   std::printf("sss_bench: %zu rows, %zu plots in %s%s\n", rows.size(), plots.size(), options.out.c_str(),
               plots.empty() ? " (gnuplot not found: no plots)" : "");
   sss_headless_destroy(headless);

@@ -121,3 +121,30 @@ TEST(BenchQuickOutput, CrossBilateralLeaksLeastAtTheDepthStep) {
   EXPECT_LT(cbf, none);
   EXPECT_LE(cbf, follow + 1e-6);
 }
+
+// The MSAA study: every scene x depth resolve, finite numbers, silhouettes found, the pictures,
+// and the properties that hold whatever the timing: multisampling beats the aliased single-sample
+// filter at the silhouettes, and on the depth step averaged depth beats sample 0.
+TEST(BenchQuickOutput, MsaaStudy) {
+  const Csv csv = read_csv(kDir + "/msaa.csv");
+  ASSERT_EQ(csv.rows.size(), 10u);  // sphere, depth-step x {average, sample-0, min, max, single-sample}
+  std::map<std::string, double> rmse;
+  for (const auto& row : csv.rows) {
+    for (const auto& [key, value] : row) EXPECT_EQ(value.find("nan"), std::string::npos) << key;
+    EXPECT_GT(std::stoi(row.at("silhouette_pixels")), 0) << row.at("scene");
+    rmse[row.at("scene") + "/" + row.at("variant")] = std::stod(row.at("silhouette_relative_rmse"));
+    if (row.at("variant") == "average") {
+      EXPECT_TRUE(std::filesystem::exists(kDir + "/" + row.at("picture"))) << row.at("picture");
+      const double share = std::stod(row.at("resolve_share"));
+      EXPECT_GE(share, 0.0);
+      EXPECT_LE(share, 1.0);
+    }
+  }
+  for (const char* scene : {"sphere", "depth-step"}) {
+    EXPECT_LT(rmse[std::string(scene) + "/average"], rmse[std::string(scene) + "/single-sample"]) << scene;
+  }
+  EXPECT_LT(rmse["depth-step/average"], rmse["depth-step/sample-0"]);
+  std::ifstream doc(kDir + "/benchmarks.md");
+  const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("## MSAA: depth resolve at silhouettes"), std::string::npos);
+}

@@ -25,6 +25,8 @@ struct Options {
   std::string backend = "egl";
   std::string doc;                                  // also write this results document (Markdown)
   bool heat_maps = true;
+  bool msaa = true;                                 // the MSAA study (msaa_study.hpp)
+  std::pair<int, int> msaa_size = {65, 49};         // its filtered size (the reference is made at 2x)
   std::string command_line;
 };
 

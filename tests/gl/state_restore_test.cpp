@@ -150,7 +150,8 @@ TEST_F(StateRestore, FailedCallsLeaveNoErrorAndNoStateBehind) {
   glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
   glActiveTexture(static_cast<GLenum>(active));
   const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
-  // Wrong target: the module's bind fails with GL_INVALID_OPERATION, which it must swallow.
+  // Multisampled colour with single-sample depth: the module's bind to GL_TEXTURE_2D fails with
+  // GL_INVALID_OPERATION (how it finds the target), which it must swallow.
   EXPECT_EQ(sss_apply(sss_, multisample, depth, nullptr), SSS_ERROR_INVALID_TEXTURE);
   EXPECT_EQ(describe_differences(before, take_snapshot()), "");
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));

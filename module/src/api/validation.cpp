@@ -82,6 +82,11 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->viewport = {%d, %d, %d, %d}: x, y must be >= 0 and width, height > 0 (or all 0)", vp[0],
                 vp[1], vp[2], vp[3]);
   }
+  if (frame->msaa_depth_resolve > SSS_MSAA_DEPTH_MAX) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->msaa_depth_resolve = %u: must be SSS_MSAA_DEPTH_AVERAGE, _SAMPLE0, _MIN or _MAX (0..3)",
+                frame->msaa_depth_resolve);
+  }
   if (frame->output_texture != 0 && frame->output_texture == frame->color_texture) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->output_texture = %u is the colour texture: pass 0 to write back in place",

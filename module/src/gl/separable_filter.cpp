@@ -118,6 +118,7 @@ void SeparableFilter::destroy() {
   GLuint samplers[2] = {sampler_, depth_sampler_};
   f.DeleteSamplers(2, samplers);
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
+  destroy_msaa();
   queries_.destroy();
   forget();
 }
@@ -368,7 +369,8 @@ sss_result SeparableFilter::copy_stencil(const StencilInput& stencil, int width,
   sss_result r = ensure_stencil_buffer(stencil.texture.internal_format, width, height, message);
   if (r != SSS_OK) return r;
   f.BindFramebuffer(READ_FRAMEBUFFER, stencil_source_framebuffer_);
-  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, TEXTURE_2D, stencil.texture.name, 0);
+  // A multisampled depth-stencil is resolved by the blit: GL picks one sample's stencil per pixel.
+  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, stencil.texture.target, stencil.texture.name, 0);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer_);
   if (gl_->CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
@@ -483,11 +485,16 @@ void SeparableFilter::draw_copy(GLuint source) {
 }
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
+  last_draws_ = 0;  // run_msaa's draws and those of the run_single it calls add up
+  if (run.color.multisampled()) return run_msaa(run, message);
+  return run_single(run, message);
+}
+
+sss_result SeparableFilter::run_single(const FilterRun& run, std::string* message) {
   const Functions& f = *gl_;
   const int width = run.color.width, height = run.color.height;
   const bool write_back = run.output.name == 0;
   const bool linear_depth = run.constants.linear_depth;
-  last_draws_ = 0;
 
   if (run.identity) return run_identity(run, message);
   if (run.cross_bilateral) return run_cbf(run, message);
@@ -508,7 +515,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
 
   // Attachments: the stencil copy goes on both targets, or comes off both.
-  if (run.stencil != nullptr) {
+  if (run.stencil != nullptr && !run.stencil_ready) {
     r = copy_stencil(*run.stencil, width, height, message);  // creates stencil_buffer_ on first use
     if (r != SSS_OK) return r;
   }
