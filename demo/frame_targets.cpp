@@ -4,7 +4,37 @@
 
 namespace demo {
 
-bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height) {
+namespace {
+GLuint make_multisample(GLenum internal_format, GLsizei width, GLsizei height, int samples) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, texture);
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internal_format, width, height, GL_TRUE);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  return texture;
+}
+}  // namespace
+
+void resolve_lighting(const FrameTargets &t) {
+  if (t.samples == 0) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.lighting_framebuffer_ms);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.lighting_framebuffer);
+  for (GLenum i = 0; i < 2; ++i) {
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+    const GLenum draw = GL_COLOR_ATTACHMENT0 + i;
+    glDrawBuffers(1, &draw);
+    glBlitFramebuffer(0, 0, t.width, t.height, 0, 0, t.width, t.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBlitFramebuffer(0, 0, t.width, t.height, 0, 0, t.width, t.height, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+                    GL_NEAREST);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+}
+
+bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height, int samples) {
   t->width = width;
   t->height = height;
   t->diffuse = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
@@ -27,6 +57,21 @@ bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height) {
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->output, 0);
   glDrawBuffers(1, buffers);
   ok = check_framebuffer("output") && ok;
+
+  if (samples > 0) {
+    t->samples = samples;
+    t->diffuse_ms = make_multisample(GL_RGBA16F, width, height, samples);
+    t->specular_ms = make_multisample(GL_RGBA16F, width, height, samples);
+    t->depth_stencil_ms = make_multisample(GL_DEPTH24_STENCIL8, width, height, samples);
+    glGenFramebuffers(1, &t->lighting_framebuffer_ms);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t->lighting_framebuffer_ms);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, t->diffuse_ms, 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D_MULTISAMPLE, t->specular_ms, 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D_MULTISAMPLE,
+                           t->depth_stencil_ms, 0);
+    glDrawBuffers(2, buffers);
+    ok = check_framebuffer("lighting (MSAA)") && ok;
+  }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   return ok && check_gl("frame targets");
 }
@@ -34,6 +79,11 @@ bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height) {
 void destroy_frame_targets(FrameTargets *t) {
   glDeleteFramebuffers(1, &t->lighting_framebuffer);
   glDeleteFramebuffers(1, &t->output_framebuffer);
+  if (t->samples > 0) {
+    glDeleteFramebuffers(1, &t->lighting_framebuffer_ms);
+    const GLuint ms[3] = {t->diffuse_ms, t->specular_ms, t->depth_stencil_ms};
+    glDeleteTextures(3, ms);
+  }
   const GLuint textures[5] = {t->diffuse, t->specular, t->depth_stencil, t->after, t->output};
   glDeleteTextures(5, textures);
   *t = FrameTargets{};

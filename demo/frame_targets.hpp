@@ -17,10 +17,22 @@ struct FrameTargets {
   GLuint output = 0;         // RGBA8: tone-mapped and sRGB-encoded, what is shown and saved
   GLuint lighting_framebuffer = 0;  // diffuse + specular + depth_stencil
   GLuint output_framebuffer = 0;    // output
+  // MSAA (samples > 0): the lighting pass renders into multisampled copies of diffuse, specular
+  // and depth-stencil; the library reads those; diffuse and specular above get their box resolve
+  // (for the "before" view, the composite and the counts).
+  int samples = 0;
+  GLuint diffuse_ms = 0, specular_ms = 0, depth_stencil_ms = 0;
+  GLuint lighting_framebuffer_ms = 0;
 };
 
+// The framebuffer the lighting pass draws into.
+inline GLuint lighting_target(const FrameTargets &t) { return t.samples > 0 ? t.lighting_framebuffer_ms : t.lighting_framebuffer; }
+// MSAA: resolves diffuse and specular (box filter), depth and stencil (one sample) into the
+// single-sample targets. A no-op without MSAA.
+void resolve_lighting(const FrameTargets &t);
+
 // Returns false (after printing why) when a framebuffer is incomplete or GL fails.
-bool create_frame_targets(FrameTargets *targets, GLsizei width, GLsizei height);
+bool create_frame_targets(FrameTargets *targets, GLsizei width, GLsizei height, int samples = 0);
 void destroy_frame_targets(FrameTargets *targets);
 
 }  // namespace demo

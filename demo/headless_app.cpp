@@ -246,7 +246,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
   FrameTargets targets;
   std::vector<PresetReport> reports;
   bool ok = create_renderer(&renderer, scene, sss_headless_get_proc_address, context.headless) &&
-            create_frame_targets(&targets, o.width, o.height);
+            create_frame_targets(&targets, o.width, o.height, controls.msaa_samples);
   if (ok) {
     std::printf("pass times in ms, median of %d frames (glFinish around each pass):\n", o.repeat);
     for (Preset preset : o.presets) {

@@ -1,6 +1,9 @@
 #include "lighting_pass.hpp"
 
+#include "embedded_shaders.hpp"
 #include "host_gl_util.hpp"
+
+#include <sss/sss.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -31,7 +34,8 @@ void main() {
 }
 )";
 
-// The body after "#version": the pre-integrated variant defines SSS_PREINTEGRATED and prepends
+// After "#version 330 core" and the library's transmittance include (integration/glsl); the
+// pre-integrated variant also defines SSS_PREINTEGRATED and prepends
 // integration/preintegrated/sss_preintegrated.glsl (embedded at build time: SSS_DEMO_PREINTEGRATED_GLSL).
 const char *const kFragmentShader = R"(
 in vec3 v_position;
@@ -58,6 +62,14 @@ uniform float u_green_sign;
 uniform float u_sss_strength;
 uniform float u_specular_intensity;
 uniform float u_roughness;
+uniform sampler2D u_depth_map0;    // the shadow maps again, plain depth (transmittance)
+uniform sampler2D u_depth_map1;
+uniform mat4 u_light_view[2];
+uniform mat4 u_light_projection[2];
+uniform int u_transmittance;       // 1: add the light transmitted through thin parts
+uniform float u_sss_width;
+uniform float u_translucency;
+uniform float u_shrink[2];         // world units the thickness lookup pulls the point inward
 #ifdef SSS_PREINTEGRATED
 uniform sampler2D u_diffuse_lut;     // sss_lut_create_texture(SSS_LUT_DIFFUSE)
 uniform sampler2D u_shadow_lut;      // sss_lut_create_texture(SSS_LUT_SHADOW), box filter
@@ -139,8 +151,15 @@ void main() {
     irradiance += u_light_irradiance[i] * (max(dot(n, l), 0.0) * shadow);
 #endif
     specular += u_light_irradiance[i] * (shadow * ksk_specular(n, l, v, u_roughness, u_specular_intensity));
-    // Transmittance (translucency through thin parts: ears, nostrils) goes here, from the same
-    // shadow maps read as plain depth (see shadow_pass.hpp): comes with its own issue.
+    // Transmittance through thin parts (ears, nostrils): the thickness from the same shadow map
+    // read as plain depth, the profile the blur uses (terms uploaded from the library's C API).
+    if (u_transmittance == 1 && u_sss_strength > 0.0) {
+      float thickness = i == 0 ? sss_thickness(u_depth_map0, u_light_view[0], u_light_projection[0], v_position,
+                                               geometric, u_shrink[0])
+                               : sss_thickness(u_depth_map1, u_light_view[1], u_light_projection[1], v_position,
+                                               geometric, u_shrink[1]);
+      irradiance += u_light_irradiance[i] * sss_transmittance(thickness, u_sss_width, u_translucency, geometric, l);
+    }
   }
   vec3 albedo = texture(u_albedo, v_texcoord).rgb * u_base_color.rgb;
   o_diffuse = vec4(albedo * irradiance, u_sss_strength);
@@ -149,6 +168,8 @@ void main() {
 )";
 
 struct Uniforms {
+  GLint transmittance, sss_width, translucency, terms, term_count;
+  GLint light_view[kMaxLights], light_projection[kMaxLights], shrink[kMaxLights];
   GLint view_projection, light_count, eye, sky_ambient, ground_ambient, base_color, normal_scale, green_sign,
       sss_strength, specular_intensity, roughness;
   GLint light_matrix[kMaxLights], light_direction[kMaxLights], light_irradiance[kMaxLights],
@@ -168,6 +189,11 @@ Uniforms locate(GLuint p) {
   u.sss_strength = glGetUniformLocation(p, "u_sss_strength");
   u.specular_intensity = glGetUniformLocation(p, "u_specular_intensity");
   u.roughness = glGetUniformLocation(p, "u_roughness");
+  u.transmittance = glGetUniformLocation(p, "u_transmittance");
+  u.sss_width = glGetUniformLocation(p, "u_sss_width");
+  u.translucency = glGetUniformLocation(p, "u_translucency");
+  u.terms = glGetUniformLocation(p, "sss_transmittance_terms");
+  u.term_count = glGetUniformLocation(p, "sss_transmittance_term_count");
   for (int i = 0; i < kMaxLights; ++i) {
     const std::string index = "[" + std::to_string(i) + "]";
     u.light_matrix[i] = glGetUniformLocation(p, ("u_light_matrix" + index).c_str());
@@ -175,6 +201,9 @@ Uniforms locate(GLuint p) {
     u.light_irradiance[i] = glGetUniformLocation(p, ("u_light_irradiance" + index).c_str());
     u.shadow_texel[i] = glGetUniformLocation(p, ("u_shadow_texel" + index).c_str());
     u.normal_offset[i] = glGetUniformLocation(p, ("u_normal_offset" + index).c_str());
+    u.light_view[i] = glGetUniformLocation(p, ("u_light_view" + index).c_str());
+    u.shrink[i] = glGetUniformLocation(p, ("u_shrink" + index).c_str());
+    u.light_projection[i] = glGetUniformLocation(p, ("u_light_projection" + index).c_str());
   }
   return u;
 }
@@ -182,21 +211,29 @@ Uniforms locate(GLuint p) {
 }  // namespace
 
 bool create_lighting_pass(LightingPass *pass) {
-  const std::string plain = std::string("#version 330 core\n") + kFragmentShader;
-  const std::string pre = std::string("#version 330 core\n#define SSS_PREINTEGRATED 1\n") +
+  const std::string plain = std::string("#version 330 core\n") + glsl::sss_transmittance_glsl + kFragmentShader;
+  const std::string pre = std::string("#version 330 core\n#define SSS_PREINTEGRATED 1\n") + glsl::sss_transmittance_glsl +
                           kPreintegratedInclude + kFragmentShader;
   pass->program = build_program("lighting", kVertexShader, plain.c_str());
   if (pass->program == 0) return false;
   pass->preintegrated_program = build_program("lighting (pre-integrated)", kVertexShader, pre.c_str());
   if (pass->preintegrated_program == 0) return false;
+  glGenSamplers(1, &pass->depth_sampler);
+  glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
   for (GLuint program : {pass->program, pass->preintegrated_program}) {
     glUseProgram(program);
     glUniform1i(glGetUniformLocation(program, "u_albedo"), 0);
     glUniform1i(glGetUniformLocation(program, "u_normal_map"), 1);
     glUniform1i(glGetUniformLocation(program, "u_shadow_map0"), 2);
     glUniform1i(glGetUniformLocation(program, "u_shadow_map1"), 3);
-    glUniform1i(glGetUniformLocation(program, "u_diffuse_lut"), 4);
-    glUniform1i(glGetUniformLocation(program, "u_shadow_lut"), 5);
+    glUniform1i(glGetUniformLocation(program, "u_depth_map0"), 4);
+    glUniform1i(glGetUniformLocation(program, "u_depth_map1"), 5);
+    glUniform1i(glGetUniformLocation(program, "u_diffuse_lut"), kDiffuseLutUnit);
+    glUniform1i(glGetUniformLocation(program, "u_shadow_lut"), kShadowLutUnit);
   }
   glUseProgram(0);
   return check_gl("lighting pass setup");
@@ -204,8 +241,8 @@ bool create_lighting_pass(LightingPass *pass) {
 
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
                        const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
-                       const PreintegratedLuts *luts) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.lighting_framebuffer);
+                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, lighting_target(targets));
   glViewport(0, 0, targets.width, targets.height);
   // Background: alpha 0 (no scattering), no specular; depth 1, stencil 0.
   const GLfloat background[4] = {scene.background.r, scene.background.g, scene.background.b, 0.0f};
@@ -230,9 +267,9 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   const Uniforms u = locate(program);
   glUseProgram(program);
   if (luts != nullptr) {
-    glActiveTexture(GL_TEXTURE4);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kDiffuseLutUnit));
     glBindTexture(GL_TEXTURE_2D, luts->diffuse);
-    glActiveTexture(GL_TEXTURE5);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kShadowLutUnit));
     glBindTexture(GL_TEXTURE_2D, luts->shadow);
     glUniform2f(glGetUniformLocation(program, "u_curvature_range"), luts->curvature_range[0], luts->curvature_range[1]);
     glUniform2f(glGetUniformLocation(program, "u_penumbra_range"), luts->penumbra_range[0], luts->penumbra_range[1]);
@@ -248,6 +285,16 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glUniform3fv(u.ground_ambient, 1, glm::value_ptr(scene.ground_ambient));
   glUniform1f(u.green_sign, scene.normal_green_sign);
   glUniform1i(u.light_count, shadows.light_count);
+  float terms[SSS_PROFILE_MAX_TERMS * 4] = {};
+  int32_t term_count = 0;
+  const bool transmit = transmittance.enabled &&
+                        sss_profile_transmittance_terms(transmittance.profile, terms, SSS_PROFILE_MAX_TERMS,
+                                                        &term_count) == SSS_OK;
+  glUniform1i(u.transmittance, transmit ? 1 : 0);
+  glUniform4fv(u.terms, SSS_PROFILE_MAX_TERMS, terms);
+  glUniform1i(u.term_count, term_count);
+  glUniform1f(u.sss_width, transmittance.width);
+  glUniform1f(u.translucency, transmittance.translucency);
   for (int i = 0; i < shadows.light_count; ++i) {
     const ShadowMap &map = shadows.maps[static_cast<size_t>(i)];
     const Light &light = scene.lights[static_cast<size_t>(i)];
@@ -256,6 +303,11 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     glUniform3fv(u.light_irradiance[i], 1, glm::value_ptr(light.irradiance));
     glUniform1f(u.shadow_texel[i], 1.0f / static_cast<float>(kShadowMapSize));
     glUniform1f(u.normal_offset[i], 1.5f * map.texel_world);
+    glUniformMatrix4fv(u.light_view[i], 1, GL_FALSE, glm::value_ptr(map.light_view));
+    // A few texels inward: less lets the map's own depth steps (near the terminator, where the
+    // thickness is ~0) show as red streaks; more thickens the ears.
+    glUniform1f(u.shrink[i], 4.0f * map.texel_world);
+    glUniformMatrix4fv(u.light_projection[i], 1, GL_FALSE, glm::value_ptr(map.light_projection));
   }
   // Both shadow units hold a depth texture (the first again when there is one light) so that the
   // unused sampler2DShadow never meets an incomplete texture.
@@ -264,6 +316,9 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE2 + i));
     glBindTexture(GL_TEXTURE_2D, shadows.maps[static_cast<size_t>(map)].depth_texture);
     glBindSampler(static_cast<GLuint>(2 + i), shadows.compare_sampler);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE4 + i));
+    glBindTexture(GL_TEXTURE_2D, shadows.maps[static_cast<size_t>(map)].depth_texture);
+    glBindSampler(static_cast<GLuint>(4 + i), pass.depth_sampler);
   }
 
   glBindVertexArray(gpu.vao);
@@ -284,7 +339,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     draw_primitive(p);
   }
   glBindVertexArray(0);
-  for (GLuint unit = 0; unit < static_cast<GLuint>(6); ++unit) {  // materials, shadow maps, LUTs
+  for (GLuint unit = 0; unit <= static_cast<GLuint>(kShadowLutUnit); ++unit) {  // materials, shadow maps, depth, LUTs
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, 0);
     glBindSampler(unit, 0);
@@ -299,6 +354,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
 void destroy_lighting_pass(LightingPass *pass) {
   glDeleteProgram(pass->program);
   glDeleteProgram(pass->preintegrated_program);
+  glDeleteSamplers(1, &pass->depth_sampler);
   *pass = LightingPass{};
 }
 

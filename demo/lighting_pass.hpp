@@ -15,12 +15,19 @@
 #include "scene.hpp"
 #include "shadow_pass.hpp"
 
+#include <cstdint>
+
 namespace demo {
 
 struct LightingPass {
   GLuint program = 0;
   GLuint preintegrated_program = 0;  // skin shaded with the pre-integrated LUTs (no SSS pass after)
+  GLuint depth_sampler = 0;  // the shadow maps read as plain depth (no compare) for the thickness
 };
+
+// Texture units of the LUTs (0, 1: material; 2, 3: shadow maps; 4, 5: the same as plain depth).
+constexpr int kDiffuseLutUnit = 6;
+constexpr int kShadowLutUnit = 7;
 
 // The library's pre-integrated LUTs (sss_lut_create_texture) and the ranges they were made with.
 struct PreintegratedLuts {
@@ -29,11 +36,19 @@ struct PreintegratedLuts {
   float penumbra_range[2] = {0.0f, 1.0f};   // world units
 };
 
+// Transmittance through thin parts (integration/glsl/sss_transmittance.glsl).
+struct TransmittanceInputs {
+  bool enabled = false;
+  float width = 0.0f;          // sss_settings.width the blur uses (world units)
+  float translucency = 0.8f;   // 0..1
+  std::uint32_t profile = 0;   // SSS_PROFILE_*: the blur's profile, whose terms the include evaluates
+};
+
 bool create_lighting_pass(LightingPass *pass);
 // luts != nullptr: translucent materials are shaded with pre-integrated scattering.
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
                        const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
-                       const PreintegratedLuts *luts = nullptr);
+                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts = nullptr);
 void destroy_lighting_pass(LightingPass *pass);
 
 }  // namespace demo

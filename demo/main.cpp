@@ -5,7 +5,10 @@
 #include "options.hpp"
 #include "scene.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 namespace demo {
@@ -18,6 +21,10 @@ SssControls controls_from_options(const Options &o) {
   c.follow_surface = o.follow_surface;
   c.shading = o.shading;
   c.use_stencil = o.use_stencil;
+  c.cross_bilateral = o.cross_bilateral;
+  c.translucency = o.translucency;
+  c.translucency_amount = o.translucency_amount;
+  c.msaa_samples = o.msaa;
   return c;
 }
 
@@ -34,6 +41,12 @@ bool load_scene(const Options &o, DemoScene *scene) {
   } catch (const std::exception &e) {
     std::fprintf(stderr, "sss_demo: %s\n", e.what());
     return false;
+  }
+  if (o.back_light && !scene->lights.empty()) {
+    // Behind the head and a little to the side: the ears and the nostrils' wings stand between it
+    // and the camera presets, so the light they let through shows.
+    if (scene->lights.size() < 2) scene->lights.push_back(scene->lights.front());
+    scene->lights[1] = {glm::normalize(glm::vec3(0.45f, 0.25f, -1.0f)), glm::vec3(2.4f, 2.3f, 2.2f)};
   }
   for (const std::string &warning : scene->model.warnings) std::fprintf(stderr, "sss_demo: glTF: %s\n", warning.c_str());
   return true;

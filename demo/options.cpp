@@ -79,6 +79,10 @@ void print_usage(const char *program) {
       "  --no-stencil        mask by the diffuse alpha alone instead of the stencil\n"
       "  --shading NAME      screen (the library's filter, default) | preintegrated (LUTs in the lighting\n"
       "                      pass, no SSS pass) | auto (pre-integrated when a mm of skin is < 0.5 pixel)\n"
+      "  --cross-bilateral   Mikkelsen's cross-bilateral mode instead of the separable kernel\n"
+      "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
+      "  --back-light        put the second light behind the head (for the translucency)\n"
+      "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
@@ -95,7 +99,8 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
-    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kShading, kHelp
+    kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
+    kTranslucency, kBackLight, kShading
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -109,6 +114,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"width-scale", required_argument, nullptr, kWidthScale},
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
       {"no-stencil", no_argument, nullptr, kNoStencil},
+      {"msaa", required_argument, nullptr, kMsaa},
       {"exposure", required_argument, nullptr, kExposure},
       {"heat-scale", required_argument, nullptr, kHeatScale},
       {"heat-factor", required_argument, nullptr, kHeatFactor},
@@ -118,6 +124,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
       {"shading", required_argument, nullptr, kShading},
       {"help", no_argument, nullptr, kHelp},
+      {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
+      {"translucency", optional_argument, nullptr, kTranslucency},
+      {"back-light", no_argument, nullptr, kBackLight},
       {nullptr, 0, nullptr, 0}};
 
   opterr = 1;
@@ -170,6 +179,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         ok = o->shading >= 0 || fail("--shading wants screen, preintegrated or auto", optarg);
         break;
       }
+      case kMsaa:
+        ok = (parse_int(optarg, &o->msaa) && (o->msaa == 0 || o->msaa == 4)) || fail("--msaa wants 0 or 4", optarg);
+        break;
       case kExposure:
         ok = (parse_float(optarg, &o->exposure) && o->exposure > 0.0f && o->exposure <= 1000.0f) ||
              fail("--exposure wants a number in (0, 1000]", optarg);
@@ -197,6 +209,21 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
              fail("--screenshot-frame wants a frame number >= 0", optarg);
         break;
       case kHelp: return ParseResult::kHelp;
+      case kCrossBilateral: o->cross_bilateral = true; break;
+      case kBackLight: o->back_light = true; break;
+      case kTranslucency: {
+        o->translucency = true;
+        if (optarg != nullptr) {
+          char *end = nullptr;
+          const float v = std::strtof(optarg, &end);
+          if (end == optarg || *end != '\0' || !(v >= 0.0f && v <= 1.0f)) {
+            std::fprintf(stderr, "sss_demo: --translucency takes a number in [0, 1]: %s\n", optarg);
+            return ParseResult::kError;
+          }
+          o->translucency_amount = v;
+        }
+        break;
+      }
       default: return ParseResult::kError;  // getopt_long already printed what was wrong
     }
     if (!ok) return ParseResult::kError;

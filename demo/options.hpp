@@ -22,7 +22,12 @@ struct Options {
   bool sss = true;
   int samples = 0;               // SSS taps per pass; 0: the library's default
   bool use_stencil = true;
+  int msaa = 0;                  // 0, or 4: render into 4x multisampled targets and hand those to the library
   bool follow_surface = true;
+  bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
+  bool translucency = false;     // transmittance through thin parts
+  float translucency_amount = 0.95f;
+  bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
   float width_scale = 1.0f;      // multiplies the physical width
   int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
   float exposure = 1.0f;

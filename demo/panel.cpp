@@ -47,6 +47,11 @@ void sss_section(WindowState *s) {
   ImGui::Checkbox("follow surface", &c.follow_surface);
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
+  ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
+  if (c.cross_bilateral) {
+    ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"
+                        "  follow surface apply to the separable mode only");
+  }
 }
 
 void view_section(WindowState *s) {
@@ -148,12 +153,20 @@ void draw_panel(WindowState *s) {
                         static_cast<double>(kAutoPreintegratedPixelsPerMm));
     ImGui::Text("this frame: %s", s->preintegrated ? "pre-integrated (diffuse and shadow LUTs)" : "screen-space filter");
   }
-  if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, MSAA, translucency")) {
-    // The marked place for the controls of later issues; nothing here is wired to anything yet.
+  if (ImGui::CollapsingHeader("MSAA", ImGuiTreeNodeFlags_DefaultOpen)) {
+    bool msaa = s->controls.msaa_samples > 0;
+    if (ImGui::Checkbox("4x MSAA targets (the library resolves them: averaged linear depth)", &msaa)) {
+      s->controls.msaa_samples = msaa ? 4 : 0;
+    }
+  }
+  if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, translucency")) {
+    // The marked place for the controls of later issues; translucency is wired, the rest not yet.
     ImGui::TextDisabled("kernel family and measured materials");
     ImGui::TextDisabled("jittered taps");
-    ImGui::TextDisabled("MSAA");
-    ImGui::TextDisabled("translucency (transmittance from the shadow maps)");
+    ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
+    ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
+    ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"
+                        "  --back-light puts a light behind the head");
   }
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) view_section(s);
   if (ImGui::CollapsingHeader("Pass times", ImGuiTreeNodeFlags_DefaultOpen)) timing_section(s);

@@ -94,8 +94,14 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   result->preintegrated = controls.enabled && (controls.shading == kShadingPreintegrated ||
                                                (controls.shading == kShadingAutomatic &&
                                                 result->pixels_per_mm < kAutoPreintegratedPixelsPerMm));
-  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera,
+  TransmittanceInputs transmittance;
+  transmittance.enabled = controls.translucency;
+  transmittance.width = sss_width_for_world_units_per_mm(r->scene->world_units_per_mm) * controls.width_scale;
+  transmittance.translucency = controls.translucency_amount;
+  transmittance.profile = blur_profile(controls);
+  run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,
                     result->preintegrated ? &r->luts : nullptr);
+  resolve_lighting(*targets);  // MSAA: the single-sample "before", specular and stencil for the composite
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
   if (result->preintegrated) {
@@ -103,7 +109,8 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     // result goes where the library's output would ("after") and a Lambert lighting pass refills
     // "before"; untimed: a renderer using pre-integrated shading would not draw it.
     copy_diffuse_to_after(*targets);
-    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, nullptr);
+    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance, nullptr);
+    resolve_lighting(*targets);
     result->sss_ran = true;
     double untimed = 0.0;
     lap(&untimed);
@@ -112,7 +119,8 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
 
   if (controls.enabled && !result->preintegrated) {
     if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) ||
-        !apply_sss(r->sss, controls, camera.projection, targets->diffuse, targets->depth_stencil, targets->after)) {
+        !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
+                   targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after)) {
       return false;
     }
     result->sss_ran = true;

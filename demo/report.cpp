@@ -42,7 +42,7 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
   char text[768];
   std::snprintf(text, sizeof text,
                 "SSS %s; width %.6g world units (%.3g x the physical %.6g = sss_width_for_world_units_per_mm(0.001));"
-                " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s;"
+                " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s; %s;"
                 " shading %s",
                 c.enabled ? "on" : "off", static_cast<double>(s.width), static_cast<double>(c.width_scale),
                 static_cast<double>(physical_width), static_cast<double>(s.strength[0]),
@@ -50,10 +50,25 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
                 static_cast<double>(s.falloff[0]), static_cast<double>(s.falloff[1]),
                 static_cast<double>(s.falloff[2]), s.samples, (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
                 c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0",
+                c.msaa_samples > 0 ? "4x MSAA targets handed to the library (resolved there: averaged linear depth)"
+                                   : "no MSAA",
                 c.shading == kShadingPreintegrated ? "pre-integrated (LUTs, no SSS pass)"
                 : c.shading == kShadingAutomatic   ? "automatic (pre-integrated below 0.5 px per mm)"
                                                    : "screen-space filter");
-  return text;
+  std::string result = text;
+  if (s.mode == SSS_MODE_CROSS_BILATERAL) {
+    std::snprintf(text, sizeof text,
+                  "; cross-bilateral mode (Mikkelsen 2010): %d taps, r_max %.2f mm, profile %u (strength, falloff, "
+                  "taps and follow-surface above are not used)",
+                  s.cbf_taps, static_cast<double>(s.cbf_r_max_mm), s.cbf_profile);
+    result += text;
+  }
+  if (c.translucency) {
+    std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",
+                  static_cast<double>(c.translucency_amount));
+    result += text;
+  }
+  return result;
 }
 
 PngText image_text(const DemoScene &scene, const std::string &title, const std::string &description,

@@ -49,6 +49,8 @@ bool create_shadow_pass(ShadowPass *pass, const DemoScene &scene) {
     const glm::mat4 light_view = glm::lookAt(centre + direction * (2.0f * radius), centre, up);
     const glm::mat4 light_projection = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius);
     map.light_view_projection = light_projection * light_view;
+    map.light_view = light_view;
+    map.light_projection = light_projection;
     map.texel_world = 2.0f * radius / static_cast<float>(kShadowMapSize);
 
     map.depth_texture =

@@ -2,10 +2,10 @@
 // fitted around the scene's bounding sphere. The lighting pass reads it with hardware PCF
 // (GL_COMPARE_REF_TO_TEXTURE, linear filtering, sampler2DShadow) through `compare_sampler`.
 //
-// Transmittance (the paper's translucency through thin parts, JWSG10) will read the same maps as
-// plain depth, through a sampler without compare mode: the thickness the light travels inside the
-// object is the distance between the shaded point and the map's depth, both along the light. That
-// comes with its own issue (the marked place is in lighting_pass.cpp's shader).
+// Transmittance (the paper's translucency through thin parts, JWSG10) reads the same maps as plain
+// depth, through a sampler without compare mode (lighting_pass.cpp, with the library's include
+// integration/glsl/sss_transmittance.glsl): the thickness the light travels inside the object is
+// the distance between the shaded point and the map's depth, both along the light.
 #pragma once
 
 #include "gl_functions.hpp"
@@ -24,6 +24,7 @@ struct ShadowMap {
   GLuint depth_texture = 0;
   GLuint framebuffer = 0;
   glm::mat4 light_view_projection{1.0f};  // world -> light clip space
+  glm::mat4 light_view{1.0f}, light_projection{1.0f};  // its two factors (the transmittance include takes them)
   float texel_world = 0.0f;               // world units covered by one texel
 };
 

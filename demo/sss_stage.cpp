@@ -35,6 +35,13 @@ SssControls default_sss_controls() {
   return c;
 }
 
+std::uint32_t blur_profile(const SssControls &controls) {
+  if (!controls.cross_bilateral) return SSS_MATERIAL_SKIN;
+  sss_settings s{};
+  sss_default_settings(&s);
+  return s.cbf_profile;
+}
+
 bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user) {
   sss_create_desc desc{};
   desc.struct_size = sizeof desc;
@@ -58,6 +65,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   }
   s.samples = controls.samples;
   s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
   stage->settings = s;
   return true;

@@ -11,8 +11,8 @@
 
 namespace demo {
 
-// What the panel and the command line control. Later issues add kernel family / material, jitter,
-// MSAA and translucency here (see panel.cpp for the marked place in the UI).
+// What the panel and the command line control. Later issues add kernel family / material, jitter
+// and translucency here (see panel.cpp for the marked place in the UI).
 struct SssControls {
   bool enabled = true;           // S: the library runs (off: "after" is not produced, the frame shows "before")
   float width_scale = 1.0f;      // x the physical width sss_width_for_world_units_per_mm(world units per mm)
@@ -21,6 +21,12 @@ struct SssControls {
   int samples = SSS_SAMPLES_MEDIUM;
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
+  bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL (Mikkelsen 2010) instead of the separable kernel
+  // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
+  // with the profile the blur uses.
+  bool translucency = false;
+  float translucency_amount = 0.95f;  // the include's `translucency`, 0..1 (1: the most light through)
+  int msaa_samples = 0;          // 0, or 4: the lighting pass renders 4x MSAA targets and the library gets those
   // How skin scatters: the library's screen-space filter, pre-integrated shading in the lighting
   // pass (no SSS pass), or automatic: pre-integrated once a millimetre of skin at the scene's centre
   // covers less than kAutoPreintegratedPixelsPerMm pixels (the filter's kernel then spans about a
@@ -34,6 +40,11 @@ constexpr int kShadingScreenSpace = 0;
 constexpr int kShadingPreintegrated = 1;
 constexpr int kShadingAutomatic = 2;
 constexpr float kAutoPreintegratedPixelsPerMm = 0.5f;
+
+// The radial profile the blur of these controls uses (for the transmittance terms): Mikkelsen's in
+// the cross-bilateral mode (the library's default cbf_profile), d'Eon's skin profile otherwise (the
+// separable kernel's base).
+std::uint32_t blur_profile(const SssControls &controls);
 
 // The library's defaults (sss_default_settings) as controls.
 SssControls default_sss_controls();

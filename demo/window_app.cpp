@@ -306,9 +306,9 @@ int run_window(const Options &o, const DemoScene &scene) {
       glfwWaitEvents();
       continue;
     }
-    if (w != targets.width || h != targets.height) {
+    if (w != targets.width || h != targets.height || s.controls.msaa_samples != targets.samples) {
       if (targets.width != 0) destroy_frame_targets(&targets);
-      if (!(ok = create_frame_targets(&targets, w, h))) break;
+      if (!(ok = create_frame_targets(&targets, w, h, s.controls.msaa_samples))) break;
     }
     s.width = w;
     s.height = h;

@@ -25,6 +25,7 @@
   X(PFNGLCLEARDEPTHPROC, glClearDepth)                           \
   X(PFNGLCLEARSTENCILPROC, glClearStencil)                       \
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                     \
+  X(PFNGLCLEARBUFFERIVPROC, glClearBufferiv)                     \
   X(PFNGLENABLEPROC, glEnable)                                   \
   X(PFNGLDISABLEPROC, glDisable)                                 \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                             \
@@ -122,7 +123,11 @@
   X(PFNGLENDQUERYPROC, glEndQuery)                               \
   X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)        \
   X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)             \
-  X(PFNGLGETQUERYIVPROC, glGetQueryiv)
+  X(PFNGLGETQUERYIVPROC, glGetQueryiv)                           \
+  X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
+  X(PFNGLSAMPLEMASKIPROC, glSampleMaski)                         \
+  X(PFNGLTEXSTORAGE2DMULTISAMPLEPROC, glTexStorage2DMultisample) \
+  X(PFNGLGETTEXLEVELPARAMETERIVPROC, glGetTexLevelParameteriv)
 
 namespace host_gl {
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@
 #include "host_gl_util.hpp"
 #include "method.hpp"
 #include "metrics.hpp"
+#include "msaa_study.hpp"
 #include "options.hpp"
 #include "reference.hpp"
 #include "report.hpp"
@@ -34,7 +36,7 @@ namespace sss_bench {
 namespace {
 
 struct MethodConfig {
-  std::string kind;  // "separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"
+  std::string kind;  // "separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians", "exact-2d"
   int taps = 0;
   bool follow_surface = false;
 };
@@ -48,6 +50,9 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // What the state save and restore costs: the paper's default kernel once more, with the host
   // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
   configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
+  // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
+  // non-translucent neighbours), so no follow-surface variants.
+  for (int taps : o.cbf_taps) configs.push_back({"cross-bilateral", taps, false});
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
   return configs;
 }
@@ -58,6 +63,7 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
   if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
+  if (c.kind == "cross-bilateral") return make_cross_bilateral_method(loader, c.taps);
   return make_exact_method();
 }
 
@@ -76,14 +82,30 @@ class Grid {
       : stride_(stride), width_(width), height_(height) {
     reference_ = decimate(reference);
     mask_.resize(static_cast<std::size_t>(reference_.width) * reference_.height);
+    band_.resize(mask_.size());
     for (int y = 0; y < reference_.height; ++y) {
       for (int x = 0; x < reference_.width; ++x) {
-        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(y * stride_ + stride_ / 2) * width_ +
-                                             static_cast<std::size_t>(x * stride_ + stride_ / 2)];
+        const int fx = x * stride_ + stride_ / 2, fy = y * stride_ + stride_ / 2;
+        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(fy) * width_ + static_cast<std::size_t>(fx)];
+        band_[reference_.index(x, y)] = mask_[reference_.index(x, y)] != 0 && near_outside(mask, fx, fy);
       }
     }
   }
   ErrorMetrics compare(const RgbImage& result) const { return compare_images(decimate(result), reference_, mask_.data()); }
+  // results.hpp's halo_energy on the grid's pixels.
+  double halo(const RgbImage& result, const RgbImage& input) const {
+    const RgbImage small = decimate(result), in = decimate(input);
+    double leaked = 0.0, reference = 0.0;
+    for (std::size_t i = 0; i < band_.size(); ++i) {
+      if (!band_[i]) continue;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double bound = std::max(reference_.rgb[i * 3 + c], in.rgb[i * 3 + c]);
+        leaked += std::max(0.0, small.rgb[i * 3 + c] - bound);
+        reference += reference_.rgb[i * 3 + c];
+      }
+    }
+    return reference > 0.0 ? leaked / reference : 0.0;
+  }
   std::size_t selected() const { return static_cast<std::size_t>(std::count(mask_.begin(), mask_.end(), 1)); }
 
  private:
@@ -97,9 +119,21 @@ class Grid {
     }
     return small;
   }
+  // A non-translucent pixel within kHaloBand pixels (Chebyshev) of (x, y).
+  bool near_outside(const std::vector<uint8_t>& mask, int x, int y) const {
+    for (int dy = -kHaloBand; dy <= kHaloBand; ++dy) {
+      for (int dx = -kHaloBand; dx <= kHaloBand; ++dx) {
+        const int sx = x + dx, sy = y + dy;
+        if (sx < 0 || sy < 0 || sx >= width_ || sy >= height_) continue;
+        if (mask[static_cast<std::size_t>(sy) * width_ + static_cast<std::size_t>(sx)] == 0) return true;
+      }
+    }
+    return false;
+  }
   int stride_, width_, height_;
   RgbImage reference_;
   std::vector<uint8_t> mask_;
+  std::vector<bool> band_;
 };
 
 // Rows [y0, y1) around the middle translucent row holding about 1/stride² of the translucent pixels.
@@ -209,6 +243,7 @@ int run(const Options& options) {
       }
 
       const Grid grid(reference.stride, reference_image, scene.mask, width, height);
+      const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
       for (const MethodConfig& config : configs) {
         ResultRow row;
         row.scene = scene_name;
@@ -254,6 +289,7 @@ int run(const Options& options) {
           row.passes = method->passes();
           const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
           e = grid.compare(result);
+          row.halo_energy = grid.halo(result, input_image);
           if (pictured && is_pictured_method(row)) {
             const std::string stem = options.out + "/" + picture_stem(row);
             write_tonemapped_png(stem + ".png", result);
@@ -282,12 +318,26 @@ int run(const Options& options) {
     }
   }
   copy_method.reset();
+  std::vector<MsaaRow> msaa_rows;
+  if (options.msaa) {
+    msaa_rows = run_msaa_study(options, loader, clock);
+    write_msaa_csv(options.out + "/msaa.csv", msaa_rows);
+    std::ofstream md(options.out + "/msaa.md");
+    write_msaa_section(md, msaa_rows, "");
+  }
 
   write_csv(options.out + "/results.csv", rows);
   write_json(options.out + "/results.json", info, rows);
   write_markdown_table(options.out + "/results.md", info, rows);
   const std::vector<std::string> plots = write_pareto_plots(options.out, rows);
-  if (!options.doc.empty()) write_results_document(options.doc, options.out, info, rows, checks, plots);
+  if (!options.doc.empty()) {
+    write_results_document(options.doc, options.out, info, rows, checks, plots);
+    std::ofstream doc(options.doc, std::ios::app);
+    const std::string prefix = std::filesystem::relative(std::filesystem::absolute(options.out),
+                                                         std::filesystem::absolute(options.doc).parent_path())
+                                   .generic_string();
+    write_msaa_section(doc, msaa_rows, prefix.empty() || prefix == "." ? "" : prefix + "/");
+  }
   std::printf("sss_bench: %zu rows, %zu plots in %s%s\n", rows.size(), plots.size(), options.out.c_str(),
               plots.empty() ? " (gnuplot not found: no plots)" : "");
   sss_headless_destroy(headless);

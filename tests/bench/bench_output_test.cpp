@@ -55,7 +55,7 @@ TEST(BenchQuickOutput, FilesExist) {
 
 TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   const Csv csv = read_csv(kDir + "/results.csv");
-  for (const char* column : {"scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms",
+  for (const char* column : {"halo_energy", "scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms",
                              "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
     EXPECT_NE(std::find(csv.header.begin(), csv.header.end(), column), csv.header.end()) << column;
   }
@@ -64,14 +64,16 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   for (const auto& row : csv.rows) {
     methods.insert(row.at("method"));
     scenes.insert(row.at("scene"));
-    for (const char* numeric : {"time_ms", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim"}) {
+    for (const char* numeric : {"time_ms", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim",
+                                "halo_energy"}) {
       const double v = std::stod(row.at(numeric));
       EXPECT_TRUE(std::isfinite(v)) << numeric << " in " << row.at("scene") << " " << row.at("method");
     }
     EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
   }
-  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "sum-of-gaussians", "exact-2d"}));
-  EXPECT_EQ(scenes.size(), 10u);
+  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians",
+                                            "exact-2d"}));
+  EXPECT_EQ(scenes.size(), 13u);
 }
 
 TEST(BenchQuickOutput, JsonMatchesCsv) {
@@ -101,3 +103,48 @@ TEST(BenchQuickOutput, ErrorsMakeSense) {
 }
 
 }  // namespace
+
+// The depth step: the background is bright and behind; the cross-bilateral mode must leak less light
+// across the silhouette than the separable filter without a depth test, and no more than with it.
+TEST(BenchQuickOutput, CrossBilateralLeaksLeastAtTheDepthStep) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  double follow = -1.0, none = -1.0, cbf = -1.0;
+  for (const auto& row : csv.rows) {
+    if (row.at("scene") != "depth-step") continue;
+    const double halo = std::stod(row.at("halo_energy"));
+    if (row.at("method") == "separable" && row.at("taps") == "17") (row.at("follow_surface") == "1" ? follow : none) = halo;
+    if (row.at("method") == "cross-bilateral") cbf = halo;
+  }
+  ASSERT_GE(follow, 0.0);
+  ASSERT_GE(none, 0.0);
+  ASSERT_GE(cbf, 0.0);
+  EXPECT_LT(cbf, none);
+  EXPECT_LE(cbf, follow + 1e-6);
+}
+
+// The MSAA study: every scene x depth resolve, finite numbers, silhouettes found, the pictures,
+// and the properties that hold whatever the timing: multisampling beats the aliased single-sample
+// filter at the silhouettes, and on the depth step averaged depth beats sample 0.
+TEST(BenchQuickOutput, MsaaStudy) {
+  const Csv csv = read_csv(kDir + "/msaa.csv");
+  ASSERT_EQ(csv.rows.size(), 10u);  // sphere, depth-step x {average, sample-0, min, max, single-sample}
+  std::map<std::string, double> rmse;
+  for (const auto& row : csv.rows) {
+    for (const auto& [key, value] : row) EXPECT_EQ(value.find("nan"), std::string::npos) << key;
+    EXPECT_GT(std::stoi(row.at("silhouette_pixels")), 0) << row.at("scene");
+    rmse[row.at("scene") + "/" + row.at("variant")] = std::stod(row.at("silhouette_relative_rmse"));
+    if (row.at("variant") == "average") {
+      EXPECT_TRUE(std::filesystem::exists(kDir + "/" + row.at("picture"))) << row.at("picture");
+      const double share = std::stod(row.at("resolve_share"));
+      EXPECT_GE(share, 0.0);
+      EXPECT_LE(share, 1.0);
+    }
+  }
+  for (const char* scene : {"sphere", "depth-step"}) {
+    EXPECT_LT(rmse[std::string(scene) + "/average"], rmse[std::string(scene) + "/single-sample"]) << scene;
+  }
+  EXPECT_LT(rmse["depth-step/average"], rmse["depth-step/sample-0"]);
+  std::ifstream doc(kDir + "/benchmarks.md");
+  const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("## MSAA: depth resolve at silhouettes"), std::string::npos);
+}

@@ -15,7 +15,7 @@ namespace sss_bench {
 class Method {
  public:
   virtual ~Method() = default;
-  virtual std::string name() const = 0;  // "separable", "sum-of-gaussians", "exact-2d", "copy"
+  virtual std::string name() const = 0;  // "separable", "cross-bilateral", "sum-of-gaussians", "exact-2d", "copy"
   virtual int taps() const = 0;          // taps per 1D pass (window width for exact-2d: 0)
   virtual bool follow_surface() const = 0;
   virtual int passes() const = 0;        // full-screen passes per frame
@@ -34,6 +34,9 @@ struct GlLoader {
 std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
                                               uint32_t create_flags = 0);
 std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
+// Mikkelsen's cross-bilateral mode (SSS_MODE_CROSS_BILATERAL) with d'Eon's six-Gaussian skin profile,
+// the profile the exact reference uses, so its error is the method's and not a profile mismatch.
+std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int taps);
 // receiver_stride s > 1: only pixels with x % s == s / 2 and y % s == s / 2 are computed (the
 // others keep the input); the full-size exact filter is too slow on a CPU rasteriser otherwise.
 // band_rows = {y0, y1} with y1 > y0: only receivers in those rows (a timing sample; the other

@@ -19,6 +19,7 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --scenes a,b,...      scenes (default: all canonical scenes)
   --taps n,n,...        separable tap counts (odd, 3..65)
   --gaussian-taps n,... taps per pass of the sum of Gaussians
+  --cbf-taps n,...      taps per pass of the cross-bilateral mode (odd, 3..65; default 13)
   --follow on|off|both  follow-surface settings to run (default both)
   --no-exact            do not time the exact 2D filter as a method (it stays the reference)
   --warmup N            untimed frames before timing (default: mode's)
@@ -30,7 +31,10 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --backend NAME        osmesa, egl or egl-device (default egl)
   --out DIR             output folder (default bench-out)
   --doc FILE            also write the results document (Markdown) there
-  --no-heat-maps        skip the error heat-map PNGs
+  --no-heat-maps        skip the error heat-map PNGs (and the MSAA edge pictures)
+  --msaa WxH            size of the MSAA study (sphere and depth-step at 4 samples; the reference
+                        is made at 2W x 2H); default: mode's
+  --no-msaa             skip the MSAA study
   --help
 )";
 
@@ -79,8 +83,12 @@ void apply_mode_defaults(Options* o) {
     o->size_scenes = {{}};
     o->separable_taps = {5, 9, 17, 33, 65};
     o->gaussian_taps = {7};
+    o->cbf_taps = {13};
     o->warmup = 1;
     o->repetitions = 3;
+    // Odd sizes put the canonical scenes' straight edges inside pixels (even ones land them on
+    // pixel borders, where every sample agrees); 130x98 for the reference stays on the CPU.
+    o->msaa_size = {65, 49};
   } else {
     // Every scene at 640×360; at 1080p the head scenes the paper's comparisons need (and the empty
     // frame): the exact reference of a full-frame plane at 1080p takes too long on a CPU rasteriser.
@@ -88,8 +96,10 @@ void apply_mode_defaults(Options* o) {
     o->size_scenes = {{}, {"head-close", "head-mid", "head-far", "empty"}};
     o->separable_taps = {5, 9, 11, 17, 25, 33, 65};
     o->gaussian_taps = {7, 13};
+    o->cbf_taps = {13, 25};
     o->warmup = 3;
     o->repetitions = 15;
+    o->msaa_size = {163, 93};  // odd, and the depth step's edges fall inside pixels there
   }
 }
 
@@ -108,12 +118,14 @@ Options parse_options(int argc, char** argv) {
       {"quick", no_argument, nullptr, 'q'},       {"full", no_argument, nullptr, 'F'},
       {"size", required_argument, nullptr, 's'},  {"scenes", required_argument, nullptr, 'S'},
       {"taps", required_argument, nullptr, 't'},  {"gaussian-taps", required_argument, nullptr, 'g'},
+      {"cbf-taps", required_argument, nullptr, 'C'},
       {"follow", required_argument, nullptr, 'f'}, {"no-exact", no_argument, nullptr, 'E'},
       {"warmup", required_argument, nullptr, 'w'}, {"reps", required_argument, nullptr, 'r'},
       {"cpu-reference-pixels", required_argument, nullptr, 'c'},
       {"reference-stride", required_argument, nullptr, 'R'},
       {"backend", required_argument, nullptr, 'b'}, {"out", required_argument, nullptr, 'o'},
       {"doc", required_argument, nullptr, 'd'},   {"no-heat-maps", no_argument, nullptr, 'H'},
+      {"msaa", required_argument, nullptr, 'M'},  {"no-msaa", no_argument, nullptr, 'N'},
       {"help", no_argument, nullptr, 'h'},        {nullptr, 0, nullptr, 0}};
   int c = 0;
   while ((c = getopt_long(argc, argv, "", long_options, nullptr)) != -1) {
@@ -135,6 +147,12 @@ Options parse_options(int argc, char** argv) {
         }
         break;
       case 'g': o.gaussian_taps = parse_ints(arg, "gaussian tap count"); break;
+      case 'C':
+        o.cbf_taps = parse_ints(arg, "cross-bilateral tap count");
+        for (int t : o.cbf_taps) {
+          if (t < 3 || t > 65 || t % 2 == 0) usage_error("cross-bilateral taps must be odd in [3, 65]: " + std::to_string(t));
+        }
+        break;
       case 'f':
         if (arg == "on") o.follow_surface = {true};
         else if (arg == "off") o.follow_surface = {false};
@@ -156,6 +174,8 @@ Options parse_options(int argc, char** argv) {
       case 'o': o.out = arg; break;
       case 'd': o.doc = arg; break;
       case 'H': o.heat_maps = false; break;
+      case 'M': o.msaa = true, o.msaa_size = parse_size(arg); break;
+      case 'N': o.msaa = false; break;
       case 'h': std::fputs(kUsage, stdout); std::exit(0);
       default: usage_error("unknown option");
     }

@@ -14,6 +14,7 @@ struct Options {
   std::vector<std::string> scenes;                  // canonical scene names
   std::vector<int> separable_taps;                  // tap counts of the separable filter
   std::vector<int> gaussian_taps;                   // taps per 1D pass of the sum of Gaussians
+  std::vector<int> cbf_taps;                        // taps per pass of the cross-bilateral mode
   std::vector<bool> follow_surface = {true, false};
   bool exact_method = true;                         // time the GL exact 2D filter as a method
   int warmup = 2, repetitions = 5;
@@ -24,6 +25,8 @@ struct Options {
   std::string backend = "egl";
   std::string doc;                                  // also write this results document (Markdown)
   bool heat_maps = true;
+  bool msaa = true;                                 // the MSAA study (msaa_study.hpp)
+  std::pair<int, int> msaa_size = {65, 49};         // its filtered size (the reference is made at 2x)
   std::string command_line;
 };
 

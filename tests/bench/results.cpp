@@ -36,7 +36,7 @@ const std::vector<std::string>& csv_columns() {
   static const std::vector<std::string> columns = {
       "scene", "width", "height", "method", "taps", "follow_surface", "passes", "time_ms", "time_min_ms",
       "time_max_ms", "samples", "time_ratio_to_copy", "relative_rmse", "max_abs_error", "p99_abs_error", "ssim",
-      "translucent_pixels", "reference_stride", "time_extrapolated"};
+      "translucent_pixels", "reference_stride", "time_extrapolated", "halo_energy"};
   return columns;
 }
 
@@ -60,7 +60,7 @@ void write_csv(const std::string& path, const std::vector<ResultRow>& rows) {
         << ',' << format(r.time_max_ms) << ',' << r.samples << ',' << format(r.time_ratio_to_copy) << ','
         << format(r.relative_rmse) << ',' << format(r.max_abs_error) << ',' << format(r.p99_abs_error) << ','
         << format(r.ssim) << ',' << r.translucent_pixels << ',' << r.reference_stride << ','
-        << (r.time_extrapolated ? 1 : 0) << "\n";
+        << (r.time_extrapolated ? 1 : 0) << ',' << format(r.halo_energy) << "\n";
   }
 }
 
@@ -88,6 +88,7 @@ void write_json(const std::string& path, const RunInfo& info, const std::vector<
                             {"max_abs_error", r.max_abs_error},
                             {"p99_abs_error", r.p99_abs_error},
                             {"ssim", r.ssim},
+                            {"halo_energy", r.halo_energy},
                             {"translucent_pixels", r.translucent_pixels},
                             {"reference_stride", r.reference_stride},
                             {"time_extrapolated", r.time_extrapolated}});

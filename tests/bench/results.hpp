@@ -28,7 +28,15 @@ struct ResultRow {
   int reference_stride = 1;         // errors over every pixel (1) or a 1-in-stride² grid of them
   bool time_extrapolated = false;   // exact-2d: timed on `band_rows` full-resolution rows, scaled by pixel count
   int band_rows = 0;
+  // Light leaked across silhouettes: over the translucent pixels within kHaloBand pixels of a
+  // non-translucent one, Σ max(0, result − max(reference, input)) / Σ reference (RGB summed): light
+  // above both the exact result and the pixel's own input. The exact reference loses light past a
+  // silhouette (its kernel is cut by the edge) where a normalised filter keeps the input, so
+  // `result − reference` alone would count that as a halo. 0: none, or no such pixels.
+  double halo_energy = 0.0;
 };
+
+constexpr int kHaloBand = 4;
 
 // The CSV header, in column order (the output test checks these).
 const std::vector<std::string>& csv_columns();

@@ -47,6 +47,14 @@ int main(void) {
   CHECK(sss_kernel_separable(4, settings.strength, settings.falloff, taps) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(sss_last_error(NULL), "samples = 4") != NULL);
   CHECK(strcmp(sss_result_string(SSS_ERROR_GL), "SSS_ERROR_GL") == 0);
+  CHECK(settings.mode == SSS_MODE_SEPARABLE && settings.cbf_taps == SSS_CBF_DEFAULT_TAPS);
+  {
+    float transmittance[SSS_PROFILE_MAX_TERMS * 4];
+    int32_t count = 0;
+    CHECK(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
+    CHECK(count == 6 && transmittance[0] > 0.0f);
+    CHECK(settings.cbf_profile == SSS_PROFILE_MIKKELSEN_2010);
+  }
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;
   CHECK(sss_create(&desc, &ctx) == SSS_ERROR_INVALID_ARGUMENT && ctx == NULL);

@@ -27,7 +27,11 @@ bool settings_valid(const sss_settings& s) {
     if (!unit(s.strength[c]) || !unit(s.falloff[c])) return false;
   }
   if (s.samples < 3 || s.samples > 65 || s.samples % 2 == 0) return false;
-  return (s.flags & ~SSS_SETTINGS_ALL_FLAGS) == 0;
+  if ((s.flags & ~SSS_SETTINGS_ALL_FLAGS) != 0) return false;
+  if (s.mode != SSS_MODE_SEPARABLE && s.mode != SSS_MODE_CROSS_BILATERAL) return false;
+  if (s.cbf_taps < 3 || s.cbf_taps > 65 || s.cbf_taps % 2 == 0) return false;
+  if (!(s.cbf_r_max_mm > 0.0f && s.cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) return false;
+  return s.cbf_profile == SSS_PROFILE_MIKKELSEN_2010 || s.cbf_profile <= SSS_MATERIAL_WHOLEMILK;
 }
 
 void check_kernel(const float* taps, int n) {
@@ -62,6 +66,11 @@ void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
   SSS_FUZZ_CHECK(std::memcmp(now.strength, s.strength, sizeof s.strength) == 0);
   SSS_FUZZ_CHECK(std::memcmp(now.falloff, s.falloff, sizeof s.falloff) == 0);
   SSS_FUZZ_CHECK(now.samples == s.samples && now.flags == s.flags);
+  SSS_FUZZ_CHECK(now.mode == s.mode && now.cbf_taps == s.cbf_taps && now.cbf_profile == s.cbf_profile);
+  SSS_FUZZ_CHECK(std::memcmp(&now.cbf_r_max_mm, &s.cbf_r_max_mm, sizeof(float)) == 0);
+  if (s.mode == SSS_MODE_CROSS_BILATERAL) {
+    SSS_FUZZ_CHECK(ctx->cbf_kernel.taps.size() == static_cast<std::size_t>(s.cbf_taps));
+  }
   SSS_FUZZ_CHECK(ctx->kernel.size() == static_cast<std::size_t>(s.samples));
   std::vector<float> taps;
   for (const auto& t : ctx->kernel) taps.insert(taps.end(), {t.weight[0], t.weight[1], t.weight[2], t.offset_mm});

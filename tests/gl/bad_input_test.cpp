@@ -85,7 +85,8 @@ TEST_F(BadInput, WrongTarget) {
   textures_.push_back(cube);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-  expect_apply_fails(frame(cube, depth_), SSS_ERROR_INVALID_TEXTURE, "is not a GL_TEXTURE_2D");
+  expect_apply_fails(frame(cube, depth_), SSS_ERROR_INVALID_TEXTURE,
+                     "is neither GL_TEXTURE_2D nor GL_TEXTURE_2D_MULTISAMPLE");
 }
 
 TEST_F(BadInput, WrongFormats) {

@@ -82,6 +82,7 @@ class StateRestore : public FilterCaseTest {
     glStencilMaskSeparate(GL_BACK, 0xA5);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   }
+  void check_restore(const SyntheticScene& scene, FilterCase c);
 };
 
 TEST_F(StateRestore, EveryListedStateIsRestoredAndTheResultIsUnaffected) {
@@ -89,6 +90,20 @@ TEST_F(StateRestore, EveryListedStateIsRestoredAndTheResultIsUnaffected) {
   FilterCase c;
   sss_default_settings(&c.settings);
   c.settings.width = 0.05f;
+  check_restore(scene, c);
+}
+
+// The cross-bilateral mode with a stencil also clears and draws into its masked colour copy.
+TEST_F(StateRestore, CrossBilateralModeRestoresEveryListedState) {
+  const SyntheticScene scene = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+  FilterCase c;
+  sss_default_settings(&c.settings);
+  c.settings.width = 0.05f;
+  c.settings.mode = SSS_MODE_CROSS_BILATERAL;
+  check_restore(scene, c);
+}
+
+void StateRestore::check_restore(const SyntheticScene& scene, FilterCase c) {
   c.depth = DepthKind::depth24_stencil8;
   c.use_stencil = true;
   const FilterOutcome clean = run_case(scene, c);  // default GL state
@@ -136,7 +151,8 @@ TEST_F(StateRestore, FailedCallsLeaveNoErrorAndNoStateBehind) {
   glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
   glActiveTexture(static_cast<GLenum>(active));
   const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
-  // Wrong target: the module's bind fails with GL_INVALID_OPERATION, which it must swallow.
+  // Multisampled colour with single-sample depth: the module's bind to GL_TEXTURE_2D fails with
+  // GL_INVALID_OPERATION (how it finds the target), which it must swallow.
   EXPECT_EQ(sss_apply(sss_, multisample, depth, nullptr), SSS_ERROR_INVALID_TEXTURE);
   EXPECT_EQ(describe_differences(before, take_snapshot()), "");
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));

@@ -20,6 +20,7 @@ PFNGLTEXIMAGE2DPROC real_tex_image_2d = nullptr;
 PFNGLRENDERBUFFERSTORAGEPROC real_renderbuffer_storage = nullptr;
 PFNGLGETERRORPROC real_get_error = nullptr;
 PFNGLGETINTEGERVPROC real_get_integerv = nullptr;
+PFNGLGETTEXLEVELPARAMETERIVPROC real_get_tex_level_parameteriv = nullptr;
 
 const char* const kBrokenSource = "#version 330 core\nthis line is a fault injected by the test;\n";
 
@@ -67,6 +68,15 @@ void APIENTRY renderbuffer_storage(GLenum target, GLenum internal_format, GLsize
   }
 }
 
+void APIENTRY get_tex_level_parameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
+  real_get_tex_level_parameteriv(target, level, pname, params);
+  if (g_faults.fake_samples_texture != 0 && target == GL_TEXTURE_2D_MULTISAMPLE && pname == GL_TEXTURE_SAMPLES) {
+    GLint bound = 0;
+    real_get_integerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &bound);
+    if (static_cast<unsigned>(bound) == g_faults.fake_samples_texture) *params = g_faults.fake_samples;
+  }
+}
+
 GLenum APIENTRY get_error() {
   if (g_pending_error != GL_NO_ERROR) {
     const GLenum error = g_pending_error;
@@ -105,10 +115,12 @@ void* fault_get_proc_address(const char* name, void* user) {
   load(&real_renderbuffer_storage, "glRenderbufferStorage", user);
   load(&real_get_error, "glGetError", user);
   load(&real_get_integerv, "glGetIntegerv", user);
+  load(&real_get_tex_level_parameteriv, "glGetTexLevelParameteriv", user);
   if (std::strcmp(name, "glShaderSource") == 0) return as_address(&shader_source);
   if (std::strcmp(name, "glTexImage2D") == 0) return as_address(&tex_image_2d);
   if (std::strcmp(name, "glRenderbufferStorage") == 0) return as_address(&renderbuffer_storage);
   if (std::strcmp(name, "glGetError") == 0) return as_address(&get_error);
+  if (std::strcmp(name, "glGetTexLevelParameteriv") == 0) return as_address(&get_tex_level_parameteriv);
   return sss_headless_get_proc_address(name, user);
 }
 

@@ -27,6 +27,13 @@ struct Faults {
   // glRenderbufferStorage: the call goes through, then GL_OUT_OF_MEMORY is injected (the stencil copy).
   int fail_renderbuffer_storage = 0;
 
+  // glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES) while this texture is
+  // bound there: report `fake_samples` instead of the driver's count. Stands in for a driver that
+  // offers several counts (llvmpipe makes every multisample texture with 4), so the module's
+  // mismatched-count and unsupported-count checks can be reached.
+  unsigned fake_samples_texture = 0;
+  int fake_samples = 0;
+
   // What fired.
   int shader_sources_broken = 0;
   int out_of_memory_from_driver = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/separable_kernel.hpp"
 
@@ -29,6 +30,7 @@ void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame
   }
   frame->output_format = frame->output_texture != 0 ? GL_RGBA32F : 0;
   frame->stencil_format = frame->stencil != nullptr ? GL_DEPTH24_STENCIL8 : 0;
+  frame->normal_format = frame->normal_texture != 0 ? GL_RGBA32F : 0;
   frame->texture_width = width;
   frame->texture_height = height;
 }
@@ -79,6 +81,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   frame.depth_texture = depth;
   frame.output_texture = output;
   frame.stencil = c.use_stencil ? &stencil : nullptr;
+  frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
   if (is_gles()) describe_frame(c, w, h, &frame);  // ES 3.0 cannot be asked for formats and sizes
   outcome.result = sss_apply_frame(sss_, &frame);
@@ -109,7 +112,15 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.output_is_half = c.half_color && !c.separate_output;
   outcome.cpu.resize(outcome.input.size());
-  sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+  if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
+    const auto cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(c.settings.cbf_profile),
+                                                  c.settings.cbf_taps, c.settings.cbf_r_max_mm);
+    const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
+    sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
+                              c.normals.empty() ? nullptr : c.normals.data());
+  } else {
+    sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+  }
   if (c.separate_output && c.viewport[2] != 0) {
     // Outside the viewport a separate output keeps what it held.
     for (int y = 0; y < h; ++y) {

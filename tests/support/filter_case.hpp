@@ -20,6 +20,7 @@ struct FilterCase {
   bool use_stencil = false;  // scene.stencil -> stencil ref 1, mask 0xFF (needs depth24_stencil8)
   bool separate_output = false;
   std::array<int32_t, 4> viewport = {0, 0, 0, 0};
+  std::vector<float> normals;  // RGBA32F view-space normals for sss_frame.normal_texture; empty: none
 };
 
 struct FilterOutcome {

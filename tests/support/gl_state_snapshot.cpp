@@ -41,10 +41,17 @@ Snapshot take_snapshot(bool es) {
     glActiveTexture(GL_TEXTURE0 + unit);
     s.integer(("GL_TEXTURE_BINDING_2D unit " + std::to_string(unit)).c_str(), GL_TEXTURE_BINDING_2D);
     s.integer(("GL_SAMPLER_BINDING unit " + std::to_string(unit)).c_str(), GL_SAMPLER_BINDING);
+    s.integer(("GL_TEXTURE_BINDING_2D_MULTISAMPLE unit " + std::to_string(unit)).c_str(),
+              GL_TEXTURE_BINDING_2D_MULTISAMPLE);
   }
   glActiveTexture(static_cast<GLenum>(active));
   s.integer("GL_VIEWPORT", GL_VIEWPORT, 4);
   s.integer("GL_SCISSOR_BOX", GL_SCISSOR_BOX, 4);
+  {
+    GLint mask = -12345;
+    glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
+    s.add("GL_SAMPLE_MASK_VALUE[0]", {mask});
+  }
   const std::pair<const char*, GLenum> caps[] = {
       {"GL_SCISSOR_TEST", GL_SCISSOR_TEST},
       {"GL_DEPTH_TEST", GL_DEPTH_TEST},

@@ -90,3 +90,62 @@ SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba,
 }
 
 }  // namespace sss_test
+
+namespace sss_test {
+
+SyntheticScene downsample_2x2(const SyntheticScene& fine) {
+  SyntheticScene s;
+  s.width = fine.width / 2;
+  s.height = fine.height / 2;
+  s.projection = fine.projection;
+  const std::size_t n = static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height);
+  s.color.assign(n * 4, 0.0f);
+  s.distance.assign(n, 0.0f);
+  s.stencil.assign(n, 0);
+  for (int y = 0; y < s.height; ++y) {
+    for (int x = 0; x < s.width; ++x) {
+      const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
+      double c[4] = {0, 0, 0, 0}, d = 0;
+      for (int i = 0; i < 4; ++i) {  // sample order 0..3, as the resolve shader sums
+        const std::size_t q = static_cast<std::size_t>(2 * y + i / 2) * static_cast<std::size_t>(fine.width) +
+                              static_cast<std::size_t>(2 * x + i % 2);
+        for (int k = 0; k < 4; ++k) c[k] += fine.color[q * 4 + static_cast<std::size_t>(k)];
+        d += fine.distance[q];
+      }
+      for (int k = 0; k < 4; ++k) s.color[p * 4 + static_cast<std::size_t>(k)] = static_cast<float>(c[k] / 4.0);
+      s.distance[p] = static_cast<float>(d / 4.0);
+      if (!fine.stencil.empty()) {
+        s.stencil[p] = fine.stencil[static_cast<std::size_t>(2 * y) * static_cast<std::size_t>(fine.width) +
+                                    static_cast<std::size_t>(2 * x)];
+      }
+    }
+  }
+  compute_window_depth(&s);
+  return s;
+}
+
+SyntheticScene upsample_2x2(const SyntheticScene& coarse) {
+  SyntheticScene s;
+  s.width = coarse.width * 2;
+  s.height = coarse.height * 2;
+  s.projection = coarse.projection;
+  const std::size_t n = static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height);
+  s.color.resize(n * 4);
+  s.distance.resize(n);
+  s.window_depth.resize(n);
+  s.stencil.resize(n);
+  for (int y = 0; y < s.height; ++y) {
+    for (int x = 0; x < s.width; ++x) {
+      const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
+      const std::size_t q = static_cast<std::size_t>(y / 2) * static_cast<std::size_t>(coarse.width) +
+                            static_cast<std::size_t>(x / 2);
+      for (std::size_t k = 0; k < 4; ++k) s.color[p * 4 + k] = coarse.color[q * 4 + k];
+      s.distance[p] = coarse.distance[q];
+      s.window_depth[p] = coarse.window_depth[q];
+      s.stencil[p] = coarse.stencil.empty() ? 0 : coarse.stencil[q];
+    }
+  }
+  return s;
+}
+
+}  // namespace sss_test

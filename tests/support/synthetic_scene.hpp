@@ -35,3 +35,15 @@ SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba,
 void compute_window_depth(SyntheticScene* scene);
 
 }  // namespace sss_test
+
+namespace sss_test {
+
+// Scenes for the MSAA path: a scene made at twice the size is the 4-sample version of the one at
+// the normal size (sample i of pixel (x, y) is texel (2x + i % 2, 2y + i / 2), an ordered 2x2 grid).
+// The single-sample equivalent of such a scene: colour and alpha box-averaged, view distance
+// averaged (the paper's resolve), hardware depth recomputed from it, stencil of sample 0.
+SyntheticScene downsample_2x2(const SyntheticScene& fine);
+// Every pixel repeated into a 2x2 block: a multisampled scene whose samples all equal the pixel.
+SyntheticScene upsample_2x2(const SyntheticScene& coarse);
+
+}  // namespace sss_test

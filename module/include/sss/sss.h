@@ -24,11 +24,12 @@
  *   Saved and restored (SSS_STATE_LIST):
  *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
  *   - GL_DRAW_FRAMEBUFFER_BINDING, GL_READ_FRAMEBUFFER_BINDING, GL_RENDERBUFFER_BINDING
- *   - GL_ACTIVE_TEXTURE; on texture units 0, 1 and 2: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING
+ *   - GL_ACTIVE_TEXTURE; on texture units 0, 1, 2 and 3: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING,
+ *     and GL_TEXTURE_BINDING_2D_MULTISAMPLE where the API has it (GL 3.2+, ES 3.1+)
  *   - GL_PIXEL_UNPACK_BUFFER_BINDING
  *   - GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS (set only
  *     by sss_lut_create_texture's CPU upload, and always put back, even with SSS_CREATE_NO_STATE_RESTORE)
- *   - GL_VIEWPORT
+ *   - GL_VIEWPORT, GL_SAMPLE_MASK_VALUE (word 0)
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
  *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
@@ -41,8 +42,9 @@
  *     GL_TIME_ELAPSED and GL_SAMPLES_PASSED stays the host's).
  *   On OpenGL ES the list is what exists there: the same, without GL_FRAMEBUFFER_SRGB,
  *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7 and GL_POLYGON_MODE (none of them exist
- *   in ES; the module's float targets are never sRGB-converted), and without GL_SAMPLE_MASK before
- *   ES 3.1.
+ *   in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
+ *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
+ *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
  *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, texture
  *   parameters of host textures (the module samples through its own sampler objects).
@@ -139,6 +141,28 @@ typedef struct sss_create_desc {
 #define SSS_MIN_SAMPLES 3
 #define SSS_MAX_SAMPLES 65
 
+/* Filter modes for sss_settings.mode. */
+/** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
+#define SSS_MODE_SEPARABLE 0u
+/** Mikkelsen 2010: a pseudo-separable normalised cross-bilateral filter (two 1D passes). The
+ *  footprint is the projected sphere of radius cbf_r_max_mm, shrunk per axis by the cosine between
+ *  the surface (normal reconstructed from depth) and the view ray in the XZ and YZ planes; taps are
+ *  placed by the inverse CDF of the red channel's profile (cbf_taps of them), green and blue reuse
+ *  them with their own weights; a range Gaussian on the depth difference and zero weight for
+ *  neighbours that are not translucent (alpha 0 or outside the stencil) keep light from crossing
+ *  silhouettes. Uses width (world units per mm, and alpha scaling it) like the separable mode;
+ *  ignores strength, falloff, samples and flags: the profile (cbf_profile) sets the unscattered
+ *  share and the radii. */
+#define SSS_MODE_CROSS_BILATERAL 1u
+
+/* The profile of the cross-bilateral mode (sss_settings.cbf_profile) is named like every profile of
+ * the module: an sss_material value of sss_kernels.h (SSS_MATERIAL_SKIN to SSS_MATERIAL_WHOLEMILK),
+ * or SSS_PROFILE_MIKKELSEN_2010 (also in sss_kernels.h), Mikkelsen's own profile, which is no material. */
+
+#define SSS_CBF_DEFAULT_TAPS 13     /**< Mikkelsen's N */
+#define SSS_CBF_DEFAULT_R_MAX_MM 4.5f /**< Mikkelsen's r_max for skin */
+#define SSS_CBF_MAX_R_MAX_MM 50.0f
+
 /** Filter settings. Units: `width` is in world units, with the paper's meaning: one millimetre of
  *  the diffusion profile spans (2/3)·width world units (so width = 1.5 · world units per mm; a
  *  scene in metres with physical skin uses width = 0.0015; see sss_width_for_world_units_per_mm).
@@ -150,13 +174,22 @@ typedef struct sss_settings {
   float falloff[3];     /**< [0, 1] per channel: profile radius scale. Default .57 .13 .08 */
   int32_t samples;      /**< odd, [3, 65]; taps per pass. Default 17 */
   uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on) */
+  /* Appended in 0.1 for the cross-bilateral mode. */
+  uint32_t mode;        /**< SSS_MODE_SEPARABLE (default) or SSS_MODE_CROSS_BILATERAL */
+  int32_t cbf_taps;     /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
+  float cbf_r_max_mm;   /**< (0, 50] profile millimetres, finite: radius of the footprint sphere (world units
+                             via width: r_max · (2/3)·width, times alpha). Default 4.5 */
+  uint32_t cbf_profile; /**< SSS_PROFILE_MIKKELSEN_2010 (default) or an sss_material in [SSS_MATERIAL_SKIN,
+                             SSS_MATERIAL_WHOLEMILK] (see sss_profile_transmittance_terms for how each is
+                             expressed; a measured material costs a fit, up to ~0.1 s, when first selected) */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
  *  The module copies the stencil into its own renderbuffer (never samples or attaches the host's
  *  texture while drawing to it). */
 typedef struct sss_stencil {
-  uint32_t depth_stencil_texture; /**< GL_TEXTURE_2D, GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, same size as colour */
+  uint32_t depth_stencil_texture; /**< GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, same size, target and sample count
+                                       as colour (multisampled: see sss_frame on MSAA) */
   uint32_t ref;                   /**< [0, 255] */
   uint32_t mask;                  /**< [0, 255]; 0 makes every pixel pass */
 } sss_stencil;
@@ -167,14 +200,40 @@ typedef struct sss_stencil {
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
 #define SSS_FRAME_ALL_FLAGS 0x1u
 
-/** The full form of one application of the filter. */
+/* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
+ * depth. Each sample's depth is first converted to linear view distance with the camera. */
+#define SSS_MSAA_DEPTH_AVERAGE 0u /**< mean of the samples' linear depths (the paper's choice; default) */
+#define SSS_MSAA_DEPTH_SAMPLE0 1u /**< sample 0 alone */
+#define SSS_MSAA_DEPTH_MIN 2u     /**< the nearest sample */
+#define SSS_MSAA_DEPTH_MAX 3u     /**< the farthest sample */
+
+/** The full form of one application of the filter.
+ *
+ *  Multisampling (MSAA): color_texture and depth_texture may both be GL_TEXTURE_2D_MULTISAMPLE
+ *  with the same sample count (any count up to 32 that the context made; not one multisampled and
+ *  the other not). A first pass then resolves them: colour by the box average of the samples,
+ *  depth by msaa_depth_resolve of the samples' linear depths. Without a stencil the module marks
+ *  its own stencil from the resolved alpha (> 0 exactly when some sample's alpha is > 0), so both
+ *  blur passes touch only translucent pixels (the paper's multisampling path); a stencil, if given,
+ *  must be multisampled with the same count and is resolved by glBlitFramebuffer (the driver picks
+ *  one sample's stencil per pixel). With output_texture 0 the result is written back into the
+ *  host's samples: each translucent sample (alpha > 0) of a pixel that changed gets that pixel's
+ *  change times samples / translucent samples (so the box resolve equals the blurred pixel),
+ *  clamped at 0; every other sample, and alpha everywhere, keeps its exact value. With an output
+ *  texture (single-sample) the blurred resolve goes there and untouched pixels get the resolved
+ *  colour.
+ *  The MSAA path is desktop OpenGL only (it needs GLSL sampler2DMS and glSampleMaski). OpenGL ES 3.0
+ *  has no multisampled textures at all (the module never asks for GL_TEXTURE_2D_MULTISAMPLE there);
+ *  on OpenGL ES 3.1+ a multisampled input fails with SSS_ERROR_UNSUPPORTED: resolve it to
+ *  GL_TEXTURE_2D first there (colour by glBlitFramebuffer, depth as linear view distance). */
 typedef struct sss_frame {
   uint32_t struct_size;      /**< sizeof(sss_frame) */
-  uint32_t color_texture;    /**< GL_TEXTURE_2D, GL_RGBA16F or GL_RGBA32F: linear diffuse irradiance, alpha = strength 0..1 */
-  uint32_t depth_texture;    /**< GL_TEXTURE_2D, same size: hardware depth (DEPTH_COMPONENT16/24/32/32F,
+  uint32_t color_texture;    /**< GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA16F or GL_RGBA32F: linear
+                                  diffuse irradiance, alpha = strength 0..1 */
+  uint32_t depth_texture;    /**< same target, size and sample count as colour: hardware depth (DEPTH_COMPONENT16/24/32/32F,
                                   DEPTH24_STENCIL8, DEPTH32F_STENCIL8) or linear view distance (R16F, R32F) */
-  uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D RGBA16F/RGBA32F of the same
-                                  size, not the colour texture: every pixel is written (untouched ones copied) */
+  uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D (single-sample) RGBA16F/RGBA32F
+                                  of the same size, not the colour texture: every pixel is written (untouched ones copied) */
   const sss_stencil *stencil;/**< NULL: the mask is alpha > 0 alone */
   int32_t viewport[4];       /**< x, y, width, height in texels; all 0: the whole texture. Taps never read outside it */
   uint32_t flags;            /**< SSS_FRAME_* */
@@ -191,6 +250,14 @@ typedef struct sss_frame {
   uint32_t stencil_format;   /**< 0, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8; ignored when stencil is NULL */
   int32_t texture_width;     /**< 0 (with texture_height 0), or the width all the textures share, [1, GL_MAX_TEXTURE_SIZE] */
   int32_t texture_height;    /**< 0 (with texture_width 0), or their height, [1, GL_MAX_TEXTURE_SIZE] */
+  /* Appended in 0.1 for the cross-bilateral mode (ignored by the separable mode). */
+  uint32_t normal_texture;   /**< 0: normals are reconstructed from depth; else GL_TEXTURE_2D, GL_RGBA16F or
+                                  GL_RGBA32F, same size: the view-space unit normal in xyz, each in [-1, 1]
+                                  (facing the camera: z > 0), w unused. Used only for the footprint's cosine
+                                  correction; a zero or non-finite normal means no correction */
+  uint32_t normal_format;    /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F: normal_texture's format, like the formats
+                                  above (required on OpenGL ES 3.0 when normal_texture is given); ignored when it is 0 */
+  uint32_t msaa_depth_resolve; /**< SSS_MSAA_DEPTH_* (multisampled inputs only; default 0 = average) */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
@@ -208,7 +275,9 @@ typedef struct sss_stats {
   uint32_t glsl_variant;         /**< SSS_GLSL_*: the dialect the shaders were compiled in */
   uint64_t frames;               /**< sss_apply / sss_apply_frame calls that returned SSS_OK */
   uint64_t passes;               /**< full-screen draws over all those frames (blur passes and the copies of
-                                      stencil-rejected pixels; 0 for an in-place frame with width or strength 0) */
+                                      stencil-rejected pixels, and for multisampled input the resolve, the stencil
+                                      mark and one write per sample; 0 for an in-place frame with width or
+                                      strength 0) */
   uint32_t last_frame_passes;    /**< full-screen draws of the last successful frame */
   /* GPU measurements (SSS_CREATE_STATS only). Read back without stalling: they come from the
    * latest frame whose queries the GPU had finished when a later sss_apply_frame looked, so they
@@ -272,8 +341,12 @@ SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
 
 /** Validates and takes the settings; the kernel is rebuilt only when they change. Does not call GL.
  *  @retval SSS_OK
- *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples or
- *                                     flags outside the ranges on sss_settings; the old settings stay */
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
+ *                                     mode, cbf_taps, cbf_r_max_mm or cbf_profile outside the ranges on
+ *                                     sss_settings (every field is checked, whatever the mode); the old
+ *                                     settings stay
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    building the cross-bilateral kernel of a measured material (cbf_profile)
+ *                                     could not allocate; the old settings stay */
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
 
 /** Current settings into *s (struct_size must be set by the caller).
@@ -297,18 +370,21 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
                              const sss_stencil *stencil);
 
 /** Runs the two passes: horizontal from the colour texture into the module's RGBA16F target,
- *  vertical into the output (or back into the colour texture). Pixels outside the stencil or with
+ *  vertical into the output (or back into the colour texture); multisampled inputs get a resolve
+ *  pass first and, written back, a per-sample write last (see sss_frame). Pixels outside the stencil or with
  *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
  *  Non-finite input never spreads: a pixel whose colour or alpha is NaN or infinite keeps its value,
  *  and a neighbour that is counts as the centre's colour (its weight goes to the centre). Alpha
  *  above 1 counts as 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
- *                                       or output_texture equal to color_texture; a texture description field
- *                                       outside its list, a size given alone, above GL_MAX_TEXTURE_SIZE, or one
- *                                       that differs from the GL's answer; on OpenGL ES 3.0 a description missing
+ *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
+ *                                       color_texture; a texture description field outside its list, a size
+ *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
+ *                                       GL's answer; on OpenGL ES 3.0 a description missing
  *  @retval SSS_ERROR_UNSUPPORTED        OpenGL ES: an RGBA32F colour or output texture without the extension it
- *                                       needs (named in the message; see sss_create)
+ *                                       needs (named in the message; see sss_create), or a multisampled input
+ *                                       (ES 3.1+; the MSAA path is desktop GL only, see sss_frame)
  *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
  *  @retval SSS_ERROR_NO_CONTEXT         no GL context current; or the current one does not hold the module's GL
  *                                       objects: the context the module was created in was lost or destroyed
@@ -316,8 +392,13 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       are forgotten (not deleted: their names may be the host's now) and the
  *                                       next call rebuilds them in the context current then, so a host that
  *                                       recreates its context after a loss just carries on
- *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, not GL_TEXTURE_2D, a format outside
- *                                       the lists on sss_frame, or sizes that differ
+ *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, neither GL_TEXTURE_2D nor
+ *                                       GL_TEXTURE_2D_MULTISAMPLE (or a multisampled output or normal texture), a
+ *                                       texture without storage, a format outside the lists on sss_frame, sizes that
+ *                                       differ (normal_texture included, whatever the mode), or colour, depth and
+ *                                       stencil that differ in target or sample count
+ *  @retval SSS_ERROR_UNSUPPORTED        a sample count above 32 or above the context's GL_MAX_COLOR_TEXTURE_SAMPLES /
+ *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
  *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
@@ -349,6 +430,7 @@ SSS_API sss_result sss_get_stats(const sss_context *ctx, sss_stats *stats);
  *                                     outside [0, 1] or not finite */
 SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3], const float falloff[3],
                                         float *out_rgba);
+
 
 #ifdef __cplusplus
 }

@@ -127,6 +127,36 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc *profile, float o
 SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_terms, float *out_taps,
                                    float *out_depth_variance_mm2, int32_t *out_terms, float *out_reach_mm);
 
+/** Mikkelsen 2010, Table 1 (spike 15/18/20 %, one broad Gaussian per channel of variance
+ *  2.3/1.4/1.1 mm²): the cross-bilateral mode's default profile (sss_settings.cbf_profile). Not an
+ *  sss_material (its spike is a true delta, which R_c(r) cannot hold), so it is a value of its own,
+ *  outside [0, SSS_MATERIAL_COUNT). */
+#define SSS_PROFILE_MIKKELSEN_2010 0x100u
+/** Gaussians fitted to a measured material's dipole for the cross-bilateral mode and the
+ *  transmittance terms (sss_kernel_plan's SSS_KERNEL_SUM_OF_GAUSSIANS fit with rank 4). */
+#define SSS_PROFILE_FIT_GAUSSIANS 4
+/** The most terms sss_profile_transmittance_terms writes. */
+#define SSS_PROFILE_MAX_TERMS 8
+
+/** The transmittance terms of a profile, for the host's lighting pass
+ *  (integration/glsl/sss_transmittance.glsl): out_terms receives up to `capacity` quadruples
+ *  {variance in mm², weight r, weight g, weight b} of the same Gaussians the cross-bilateral mode
+ *  blurs with; *count the number written. The include evaluates Σ w · exp(-s² / v) at the scaled
+ *  thickness s. `profile`, as sss_settings.cbf_profile:
+ *  - SSS_PROFILE_MIKKELSEN_2010: its three broad Gaussians (the spike has no width and transmits nothing);
+ *  - SSS_MATERIAL_SKIN: d'Eon–Luebke's six Gaussians (the 0.0064 mm² one is the blur's spike);
+ *  - SSS_MATERIAL_APPLE .. SSS_MATERIAL_WHOLEMILK: SSS_PROFILE_FIT_GAUSSIANS Gaussians fitted to the
+ *    material's dipole (an NLopt fit: milliseconds to ~0.1 s; no spike). SSS_MATERIAL_TABULATED is
+ *    not accepted (a table needs an sss_profile_desc).
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile neither SSS_PROFILE_MIKKELSEN_2010 nor in [SSS_MATERIAL_SKIN,
+ *                                     SSS_MATERIAL_WHOLEMILK], out_terms or count NULL, or capacity smaller
+ *                                     than the profile's term count (SSS_PROFILE_MAX_TERMS always suffices;
+ *                                     *count then tells the size needed)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    the fit of a measured material could not allocate */
+SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_terms, int32_t capacity,
+                                                   int32_t *count);
+
 #ifdef __cplusplus
 }
 #endif

@@ -20,8 +20,14 @@ sss_result query(sss_context* ctx, const sss_frame& frame, gl::GLuint name, cons
                  std::uint32_t described, gl::TextureInfo* info) {
   std::string message;
   const bool can_ask = ctx->gl.has_texture_query;
-  const sss_result r = gl::query_texture_2d(ctx->gl, name, role, can_ask, info, &message);
+  const sss_result r = gl::query_texture(ctx->gl, name, role, can_ask, info, &message);
   if (r != SSS_OK) return fail(ctx, r, message);
+  if (info->multisampled() && !ctx->gl.has_msaa_path()) {  // OpenGL ES 3.1+ (ES 3.0 has no such textures)
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "%s = %u is GL_TEXTURE_2D_MULTISAMPLE: the MSAA path needs desktop OpenGL; on OpenGL ES resolve "
+                "it to a GL_TEXTURE_2D first (colour by glBlitFramebuffer, depth as linear view distance)",
+                role, name);
+  }
   const bool has_size = frame.texture_width != 0;
   if (!can_ask) {
     if (described == 0 || !has_size) {
@@ -80,6 +86,27 @@ sss_result same_size(sss_context* ctx, const char* role, const gl::TextureInfo& 
               t.width, t.height, color.width, color.height);
 }
 
+// Colour, depth and stencil must agree in target and sample count (an MSAA path needs every
+// sample of every input; a mix has no meaning).
+sss_result same_samples(sss_context* ctx, const char* role, const gl::TextureInfo& t, const gl::TextureInfo& color) {
+  if (t.multisampled() == color.multisampled() && t.samples == color.samples) return SSS_OK;
+  return fail(ctx, SSS_ERROR_INVALID_TEXTURE, "%s = %u is %s but color_texture = %u is %s: both must have the same "
+              "target and sample count", role, t.name, gl::describe_target(t).c_str(), color.name,
+              gl::describe_target(color).c_str());
+}
+
+// A multisampled texture's count against the module's limit (one 32-bit sample mask word) and the
+// context's limits.
+sss_result supported_samples(sss_context* ctx, const char* role, const gl::TextureInfo& t, gl::GLenum limit,
+                             const char* limit_name) {
+  if (!t.multisampled()) return SSS_OK;
+  gl::GLint max_samples = 0;
+  ctx->gl.GetIntegerv(limit, &max_samples);
+  if (t.samples <= 32 && t.samples <= max_samples) return SSS_OK;
+  return fail(ctx, SSS_ERROR_UNSUPPORTED, "%s = %u has %d samples: this context supports at most %d (%s), the "
+              "module at most 32", role, t.name, t.samples, max_samples, limit_name);
+}
+
 // The textures, as the GL describes them, against the lists in sss.h.
 sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
   sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
@@ -89,18 +116,34 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   }
   r = check_es_format(ctx, "color_texture", run->color, true);
   if (r != SSS_OK) return r;
+  r = supported_samples(ctx, "color_texture", run->color, gl::MAX_COLOR_TEXTURE_SAMPLES,
+                        "GL_MAX_COLOR_TEXTURE_SAMPLES");
+  if (r != SSS_OK) return r;
   r = query(ctx, frame, frame.depth_texture, "depth_texture", "depth_format", frame.depth_format, &run->depth);
   if (r != SSS_OK) return r;
   if (!gl::is_hardware_depth_format(run->depth.internal_format) && !gl::is_linear_depth_format(run->depth.internal_format)) {
     return wrong_format(ctx, "depth_texture", run->depth, "a GL_DEPTH_COMPONENT* or GL_DEPTH*_STENCIL8 format, or GL_R16F/GL_R32F");
   }
   r = same_size(ctx, "depth_texture", run->depth, run->color);
+  if (r == SSS_OK) r = same_samples(ctx, "depth_texture", run->depth, run->color);
+  if (r == SSS_OK) {
+    // Linear depth (R16F/R32F) is a colour format to the GL.
+    const bool linear = gl::is_linear_depth_format(run->depth.internal_format);
+    r = supported_samples(ctx, "depth_texture", run->depth,
+                          linear ? gl::MAX_COLOR_TEXTURE_SAMPLES : gl::MAX_DEPTH_TEXTURE_SAMPLES,
+                          linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
+  }
   if (r != SSS_OK) return r;
   if (frame.output_texture != 0) {
     r = query(ctx, frame, frame.output_texture, "output_texture", "output_format", frame.output_format, &run->output);
     if (r != SSS_OK) return r;
     if (!gl::is_color_format(run->output.internal_format)) {
       return wrong_format(ctx, "output_texture", run->output, "GL_RGBA16F or GL_RGBA32F");
+    }
+    if (run->output.multisampled()) {
+      return fail(ctx, SSS_ERROR_INVALID_TEXTURE,
+                  "output_texture = %u is %s: the output is single-sample (pass 0 to write back into the "
+                  "multisampled colour)", run->output.name, gl::describe_target(run->output).c_str());
     }
     r = check_es_format(ctx, "output_texture", run->output, false);
     if (r != SSS_OK) return r;
@@ -116,10 +159,22 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
                           "GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8");
     }
     r = same_size(ctx, "stencil->depth_stencil_texture", stencil->texture, run->color);
+    if (r == SSS_OK) r = same_samples(ctx, "stencil->depth_stencil_texture", stencil->texture, run->color);
     if (r != SSS_OK) return r;
     stencil->ref = frame.stencil->ref;
     stencil->mask = frame.stencil->mask;
     run->stencil = stencil;
+  }
+  if (frame.normal_texture != 0) {
+    r = query(ctx, frame, frame.normal_texture, "normal_texture", "normal_format", frame.normal_format, &run->normals);
+    if (r != SSS_OK) return r;
+    if (!gl::is_color_format(run->normals.internal_format)) {
+      return wrong_format(ctx, "normal_texture", run->normals, "GL_RGBA16F or GL_RGBA32F");
+    }
+    r = check_es_format(ctx, "normal_texture", run->normals, false);
+    if (r != SSS_OK) return r;
+    r = same_size(ctx, "normal_texture", run->normals, run->color);
+    if (r != SSS_OK) return r;
   }
   const int32_t* vp = frame.viewport;
   if (vp[2] == 0) {
@@ -187,12 +242,25 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   geometry.texture_height = run.color.height;
   geometry.viewport = run.viewport;
   geometry.depth = depth_encoding(run.depth, frame->flags);
+  if (run.color.multisampled()) {
+    // The resolve reads the host's encoding; the passes read the resolved linear distance.
+    run.resolve_constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry);
+    geometry.depth = sss::math::DepthEncoding::linear_distance;
+    run.depth_resolve = static_cast<gl::DepthResolve>(frame->msaa_depth_resolve);
+  }
   run.constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry);
   run.kernel = &ctx->kernel;
   run.kernel_revision = ctx->kernel_revision;
   run.follow_surface = ctx->settings.follow_surface;
   run.identity = is_identity(ctx->settings);
   run.frame = ctx->frames + 1;
+  if (ctx->settings.cross_bilateral) {
+    run.cross_bilateral = true;
+    run.identity = ctx->settings.width == 0.0f;  // strength does not apply to this mode
+    run.cbf_kernel = &ctx->cbf_kernel;
+    run.cbf_kernel_revision = ctx->cbf_kernel_revision;
+    run.cbf = sss::math::compute_cbf_constants(ctx->settings, ctx->projection, geometry);
+  }
 
   std::string message;
   r = ctx->filter.run(run, &message);

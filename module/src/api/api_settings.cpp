@@ -1,6 +1,9 @@
 // Settings, camera and the GL-free kernel API: validation and bookkeeping, no GL calls.
 #include <cmath>
 #include <cstring>
+#include <exception>
+#include <new>
+#include <vector>
 
 #include "context.hpp"
 #include "validation.hpp"
@@ -16,8 +19,30 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.falloff = {s.falloff[0], s.falloff[1], s.falloff[2]};
   f.samples = s.samples;
   f.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
+  f.cross_bilateral = s.mode == SSS_MODE_CROSS_BILATERAL;
+  f.cbf_taps = s.cbf_taps;
+  f.cbf_r_max_mm = s.cbf_r_max_mm;
+  f.cbf_profile = s.cbf_profile;
   return f;
 }
+
+void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
+  s->width = f.width;
+  for (int c = 0; c < 3; ++c) {
+    s->strength[c] = f.strength[static_cast<std::size_t>(c)];
+    s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
+  }
+  s->samples = f.samples;
+  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s->mode = f.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
+  s->cbf_taps = f.cbf_taps;
+  s->cbf_r_max_mm = f.cbf_r_max_mm;
+  s->cbf_profile = f.cbf_profile;
+}
+
+static_assert(sss::math::kMikkelsenProfileId == SSS_PROFILE_MIKKELSEN_2010, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kFittedGaussians == SSS_PROFILE_FIT_GAUSSIANS, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kMaterialCount == SSS_MATERIAL_WHOLEMILK, "materials 1..11 follow SSS_MATERIAL_SKIN");
 
 }  // namespace
 
@@ -28,13 +53,7 @@ SSS_API void sss_default_settings(sss_settings* s) {
   const sss::math::FilterSettings d;
   std::memset(s, 0, sizeof *s);
   s->struct_size = sizeof *s;
-  s->width = d.width;
-  for (int c = 0; c < 3; ++c) {
-    s->strength[c] = d.strength[static_cast<std::size_t>(c)];
-    s->falloff[c] = d.falloff[static_cast<std::size_t>(c)];
-  }
-  s->samples = d.samples;
-  s->flags = d.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  from_filter_settings(d, s);
 }
 
 SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm) { return 1.5f * world_units_per_mm; }
@@ -44,6 +63,24 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   const sss_result r = sss::api::check_settings(ctx, s);
   if (r != SSS_OK) return r;
   const sss::math::FilterSettings next = to_filter_settings(*s);
+  // Built lazily (only in the cross-bilateral mode) and compared with what it was built for, not with
+  // the previous settings: the cbf fields may change while the separable mode is selected. Built
+  // first: a measured material runs a fit, and if that fails the old settings stay.
+  const sss::math::CbfKernel& built = ctx->cbf_kernel;
+  if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
+                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
+    try {
+      ctx->cbf_kernel =
+          sss::math::cbf_kernel(sss::math::spike_gaussian_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+    } catch (const std::bad_alloc&) {
+      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
+                  next.cbf_profile);
+    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
+    }
+    ctx->cbf_kernel_profile = next.cbf_profile;
+    ++ctx->cbf_kernel_revision;
+  }
   const sss::math::FilterSettings& old = ctx->settings;
   const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
   ctx->settings = next;
@@ -62,14 +99,7 @@ SSS_API sss_result sss_get_settings(const sss_context* ctx, sss_settings* s) {
                 "settings->struct_size = %u: expected sizeof(sss_settings) = %u", s->struct_size,
                 static_cast<unsigned>(sizeof(sss_settings)));
   }
-  const sss::math::FilterSettings& f = ctx->settings;
-  s->width = f.width;
-  for (int c = 0; c < 3; ++c) {
-    s->strength[c] = f.strength[static_cast<std::size_t>(c)];
-    s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
-  }
-  s->samples = f.samples;
-  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  from_filter_settings(ctx->settings, s);
   return SSS_OK;
 }
 
@@ -103,6 +133,36 @@ SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3]
     out_rgba[i * 4 + 1] = kernel[i].weight[1];
     out_rgba[i * 4 + 2] = kernel[i].weight[2];
     out_rgba[i * 4 + 3] = kernel[i].offset_mm;
+  }
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_terms, int32_t capacity,
+                                                   int32_t* count) {
+  if (!sss::math::is_spike_gaussian_profile_id(profile)) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT,
+                "profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]", profile,
+                SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
+  }
+  if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
+  if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
+  std::vector<sss::math::GaussianTerm> terms;
+  try {
+    terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
+  } catch (const std::bad_alloc&) {
+    return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_profile_transmittance_terms: out of memory");
+  } catch (const std::exception& e) {  // the check above should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_profile_transmittance_terms: profile = %u: %s", profile,
+                e.what());
+  }
+  *count = static_cast<int32_t>(terms.size());
+  if (capacity < *count) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: profile %u has %d terms", capacity, profile,
+                *count);
+  }
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    out_terms[i * 4 + 0] = static_cast<float>(terms[i].variance_mm2);
+    for (std::size_t c = 0; c < 3; ++c) out_terms[i * 4 + 1 + c] = static_cast<float>(terms[i].weight[c]);
   }
   return SSS_OK;
 }

@@ -11,6 +11,7 @@
 #include "../math/filter_constants.hpp"
 #include "../math/lut_cache.hpp"
 #include "../math/projection.hpp"
+#include "../math/cbf_kernel.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
 
@@ -28,6 +29,9 @@ struct sss_context {
   sss::math::FilterSettings settings;
   std::vector<sss::math::KernelTap> kernel;
   std::uint64_t kernel_revision = 1;
+  sss::math::CbfKernel cbf_kernel;  // built for cbf_kernel_profile and its own taps / r_max
+  unsigned cbf_kernel_profile = 0;
+  std::uint64_t cbf_kernel_revision = 1;
 
   sss::math::Matrix4 projection{};
   bool has_camera = false;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "../gl/texture_query.hpp"
+#include "../math/spike_gaussian_profile.hpp"
 
 namespace sss::api {
 
@@ -44,6 +45,23 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->flags = 0x%x has unknown bits 0x%x", s->flags,
                 s->flags & ~SSS_SETTINGS_ALL_FLAGS);
   }
+  if (s->mode != SSS_MODE_SEPARABLE && s->mode != SSS_MODE_CROSS_BILATERAL) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "settings->mode = %u: must be SSS_MODE_SEPARABLE (0) or SSS_MODE_CROSS_BILATERAL (1)", s->mode);
+  }
+  if (s->cbf_taps < SSS_MIN_SAMPLES || s->cbf_taps > SSS_MAX_SAMPLES || s->cbf_taps % 2 == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_taps = %d: must be odd and in [%d, %d]", s->cbf_taps,
+                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
+  }
+  if (!(s->cbf_r_max_mm > 0.0f && s->cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) {  // also rejects NaN
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_r_max_mm = %g: must be finite and in (0, %g]",
+                static_cast<double>(s->cbf_r_max_mm), static_cast<double>(SSS_CBF_MAX_R_MAX_MM));
+  }
+  if (!sss::math::is_spike_gaussian_profile_id(s->cbf_profile)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "settings->cbf_profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]",
+                s->cbf_profile, SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
+  }
   return SSS_OK;
 }
 
@@ -63,6 +81,11 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->viewport = {%d, %d, %d, %d}: x, y must be >= 0 and width, height > 0 (or all 0)", vp[0],
                 vp[1], vp[2], vp[3]);
+  }
+  if (frame->msaa_depth_resolve > SSS_MSAA_DEPTH_MAX) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->msaa_depth_resolve = %u: must be SSS_MSAA_DEPTH_AVERAGE, _SAMPLE0, _MIN or _MAX (0..3)",
+                frame->msaa_depth_resolve);
   }
   if (frame->output_texture != 0 && frame->output_texture == frame->color_texture) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
@@ -99,6 +122,9 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
   }
   if (frame.output_format != 0 && !gl::is_color_format(format(frame.output_format))) {
     return bad("output_format", frame.output_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  }
+  if (frame.normal_format != 0 && !gl::is_color_format(format(frame.normal_format))) {
+    return bad("normal_format", frame.normal_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
   }
   if (frame.stencil_format != 0 && !gl::is_depth_stencil_format(format(frame.stencil_format))) {
     return bad("stencil_format", frame.stencil_format, "GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");

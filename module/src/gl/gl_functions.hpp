@@ -107,13 +107,20 @@ using GLubyte = unsigned char;
   X(void, EndQuery, (GLenum target))                                                                   \
   X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint * params))                              \
   X(void, GetQueryiv, (GLenum target, GLenum pname, GLint * params))                                  \
-  X(void, PixelStorei, (GLenum pname, GLint param))
+  X(void, PixelStorei, (GLenum pname, GLint param))                                                   \
+  X(void, ClearBufferfv, (GLenum buffer, GLint drawbuffer, const GLfloat* value))                   \
+  X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
+  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))
 
 // Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on
-// desktop GL, where they are required; never called on ES.
+// desktop GL, where they are required; never called on ES. The multisample ones serve the MSAA
+// path, which is desktop GL only (sss.h, sss_frame).
 #define SSS_GL_DESKTOP_FUNCTIONS(X)                                                                    \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
-  X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))
+  X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))                     \
+  X(void, TexImage2DMultisample, (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, \
+                                  GLsizei height, GLboolean fixedsamplelocations))                     \
+  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))
 
 // glGetTexLevelParameteriv: desktop GL and OpenGL ES 3.1+. On ES 3.0 the frame describes the
 // textures instead (sss_frame's format and size fields).
@@ -152,6 +159,11 @@ struct Functions {
   bool desktop() const { return !api.es; }
   // GL_SAMPLE_MASK exists (GL 3.2+, ES 3.1+).
   bool has_sample_mask() const { return !api.es || api.version() >= 31; }
+  // GL_TEXTURE_2D_MULTISAMPLE exists (GL 3.2+, ES 3.1+): on ES 3.0 the enum is invalid, so the
+  // module never binds or queries that target there.
+  bool has_multisample_textures() const { return !api.es || api.version() >= 31; }
+  // The MSAA path (sampler2DMS shaders, glTexImage2DMultisample, glSampleMaski): desktop GL only.
+  bool has_msaa_path() const { return !api.es; }
 };
 
 // Loads what `api` needs; on failure returns the name of the first missing one ("glFoo"). Optional
@@ -185,6 +197,17 @@ enum : GLenum {
   TEXTURE_HEIGHT = 0x1001,
   TEXTURE_INTERNAL_FORMAT = 0x1003,
   TEXTURE_SAMPLES = 0x9106,
+  TEXTURE_FIXED_SAMPLE_LOCATIONS = 0x9107,
+  TEXTURE_2D_MULTISAMPLE = 0x9100,
+  TEXTURE_BINDING_2D_MULTISAMPLE = 0x9104,
+  MAX_SAMPLES = 0x8D57,
+  MAX_COLOR_TEXTURE_SAMPLES = 0x910E,
+  MAX_DEPTH_TEXTURE_SAMPLES = 0x910F,
+  SAMPLE_MASK_VALUE = 0x8E52,
+  COLOR_ATTACHMENT1 = 0x8CE1,
+  STENCIL = 0x1802,
+  ALWAYS = 0x0207,
+  REPLACE = 0x1E01,
   TEXTURE_MIN_FILTER = 0x2801,
   TEXTURE_MAG_FILTER = 0x2800,
   TEXTURE_WRAP_S = 0x2802,
@@ -200,6 +223,7 @@ enum : GLenum {
   RGBA = 0x1908,
   HALF_FLOAT = 0x140B,
   FLOAT = 0x1406,
+  COLOR = 0x1800,
   RGBA16F = 0x881A,
   RGBA32F = 0x8814,
   R16F = 0x822D,
@@ -222,6 +246,8 @@ enum : GLenum {
   STENCIL_ATTACHMENT = 0x8D20,
   FRAMEBUFFER_COMPLETE = 0x8CD5,
   STENCIL_BUFFER_BIT = 0x00000400,
+  COLOR_BUFFER_BIT = 0x00004000,
+  RED = 0x1903,
   VERTEX_SHADER = 0x8B31,
   FRAGMENT_SHADER = 0x8B30,
   COMPILE_STATUS = 0x8B81,

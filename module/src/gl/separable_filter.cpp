@@ -11,7 +11,7 @@
 namespace sss::gl {
 
 namespace {
-constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
+constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3;
 
 // A tag in [1025, 1025 + 2^20), exact in float, different for each init() in the process (modulo
 // 2^20). It is stored as the sampler's GL_TEXTURE_MAX_LOD, which has no effect here: the sampler
@@ -104,6 +104,12 @@ void SeparableFilter::destroy() {
     if (p.program != 0) f.DeleteProgram(p.program);
     p = BlurProgram{};
   }
+  for (CbfProgram& p : cbf_programs_) {
+    if (p.program != 0) f.DeleteProgram(p.program);
+    p = CbfProgram{};
+  }
+  if (masked_source_ != 0) f.DeleteTextures(1, &masked_source_);
+  if (masked_framebuffer_ != 0) f.DeleteFramebuffers(1, &masked_framebuffer_);
   if (copy_program_ != 0) f.DeleteProgram(copy_program_);
   GLuint framebuffers[3] = {intermediate_framebuffer_, output_framebuffer_, stencil_source_framebuffer_};
   f.DeleteFramebuffers(3, framebuffers);
@@ -112,6 +118,7 @@ void SeparableFilter::destroy() {
   GLuint samplers[2] = {sampler_, depth_sampler_};
   f.DeleteSamplers(2, samplers);
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
+  destroy_msaa();
   queries_.destroy();
   forget();
 }
@@ -199,6 +206,97 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
   return SSS_OK;
 }
 
+sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
+                                        std::string* message) {
+  const int index = (static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0)) * 2 + (normals ? 1 : 0);
+  CbfProgram& p = cbf_programs_[static_cast<std::size_t>(index)];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  char defines[128];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+  std::string log;
+  const Functions& f = *gl_;
+  p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::cbf_blur_frag, &log);
+  if (p.program == 0) {
+    *message = "cross-bilateral blur shader (" + std::string(defines) + "): " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  char label[64];
+  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d", static_cast<int>(outside),
+                linear_depth ? 1 : 0, normals ? 1 : 0);
+  label_object(f, labels_, PROGRAM, p.program, label);
+  note(std::string("built the cross-bilateral program (") + glsl_variant_name(variant_) + ", " + label + ")");
+  p.source = f.GetUniformLocation(p.program, "u_source");
+  p.depth = f.GetUniformLocation(p.program, "u_depth");
+  p.original = f.GetUniformLocation(p.program, "u_original");
+  p.kernel = f.GetUniformLocation(p.program, "u_kernel");
+  p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
+  p.axis = f.GetUniformLocation(p.program, "u_axis");
+  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.xy_terms = f.GetUniformLocation(p.program, "u_xy_terms");
+  p.xy_offset = f.GetUniformLocation(p.program, "u_xy_offset");
+  p.viewport = f.GetUniformLocation(p.program, "u_viewport");
+  p.world_per_mm = f.GetUniformLocation(p.program, "u_world_per_mm");
+  p.orthographic = f.GetUniformLocation(p.program, "u_orthographic");
+  p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
+  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  p.normals = f.GetUniformLocation(p.program, "u_normals");
+  // Sampler units never change: set them once (GLSL 420 has them in the shader already).
+  if (!has_explicit_bindings(variant_)) {
+    f.UseProgram(p.program);
+    if (p.normals >= 0) f.Uniform1i(p.normals, static_cast<GLint>(kNormalUnit));
+    f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
+    f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
+    if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+  }
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_masked_source(GLint format, int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  if (masked_framebuffer_ == 0) {
+    f.GenFramebuffers(1, &masked_framebuffer_);
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+    label_object(f, labels_, FRAMEBUFFER, masked_framebuffer_, "sss masked colour copy target");
+  }
+  if (masked_source_ != 0 && masked_format_ == format && masked_width_ == width && masked_height_ == height) {
+    return SSS_OK;
+  }
+  if (masked_source_ == 0) f.GenTextures(1, &masked_source_);
+  f.ActiveTexture(TEXTURE0);
+  f.BindTexture(TEXTURE_2D, masked_source_);
+  f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);
+  f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
+  // The host colour's own format: the copy must hold it exactly (its centre share is not blurred),
+  // and on OpenGL ES that format is the one the create-time and frame checks found renderable and
+  // sampleable (RGBA32F there needs extensions an RGBA16F host may lack).
+  f.TexImage2D(TEXTURE_2D, 0, format, width, height, 0, RGBA, FLOAT, nullptr);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d %s masked colour copy failed: %s", width, height,
+                  format_name(format).c_str(), error_name(error).c_str());
+    *message = buffer;
+    f.DeleteTextures(1, &masked_source_);
+    masked_source_ = 0;
+    masked_width_ = masked_height_ = 0;
+    masked_format_ = 0;
+    return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
+  }
+  label_object(f, labels_, TEXTURE, masked_source_, "sss masked colour copy");
+  masked_format_ = format;
+  masked_width_ = width;
+  masked_height_ = height;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, masked_source_, 0);
+  return SSS_OK;
+}
+
 sss_result SeparableFilter::ensure_intermediate(int width, int height, std::string* message) {
   if (intermediate_ != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
   const Functions& f = *gl_;
@@ -271,7 +369,8 @@ sss_result SeparableFilter::copy_stencil(const StencilInput& stencil, int width,
   sss_result r = ensure_stencil_buffer(stencil.texture.internal_format, width, height, message);
   if (r != SSS_OK) return r;
   f.BindFramebuffer(READ_FRAMEBUFFER, stencil_source_framebuffer_);
-  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, TEXTURE_2D, stencil.texture.name, 0);
+  // A multisampled depth-stencil is resolved by the blit: GL picks one sample's stencil per pixel.
+  f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, stencil.texture.target, stencil.texture.name, 0);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer_);
   if (gl_->CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
@@ -328,6 +427,53 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
   ++last_draws_;
 }
 
+void SeparableFilter::draw_cbf(CbfProgram& p, const FilterRun& run, GLuint source, int axis) {
+  const Functions& f = *gl_;
+  const math::PassConstants& k = run.constants;
+  const math::CbfConstants& c = run.cbf;
+  const math::CbfKernel& kernel = *run.cbf_kernel;
+  f.UseProgram(p.program);
+  if (p.kernel_revision != run.cbf_kernel_revision) {
+    std::vector<float> packed;
+    packed.reserve(kernel.taps.size() * 4);
+    for (const math::KernelTap& tap : kernel.taps) {
+      packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
+    }
+    f.Uniform4fv(p.kernel, static_cast<GLsizei>(kernel.taps.size()), packed.data());
+    f.Uniform1i(p.tap_count, static_cast<GLint>(kernel.taps.size()));
+    f.Uniform4f(p.spike_blend, kernel.spike_blend[0], kernel.spike_blend[1], kernel.spike_blend[2], 0.0f);
+    f.Uniform4f(p.inv_two_variance, kernel.inv_two_variance[0], kernel.inv_two_variance[1],
+                kernel.inv_two_variance[2], 0.0f);
+    p.kernel_revision = run.cbf_kernel_revision;
+  }
+  f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
+  f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+  f.Uniform4f(p.xy_terms, c.xy_terms[0], c.xy_terms[1], c.xy_terms[2], c.xy_terms[3]);
+  f.Uniform2f(p.xy_offset, c.xy_offset[0], c.xy_offset[1]);
+  f.Uniform4f(p.viewport, c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]);
+  f.Uniform1f(p.world_per_mm, c.world_per_mm);
+  f.Uniform1f(p.orthographic, c.orthographic ? 1.0f : 0.0f);
+  f.ActiveTexture(TEXTURE0 + kSourceUnit);
+  f.BindTexture(TEXTURE_2D, source);
+  f.BindSampler(kSourceUnit, sampler_);
+  f.ActiveTexture(TEXTURE0 + kDepthUnit);
+  f.BindTexture(TEXTURE_2D, run.depth.name);
+  // Depth and normals are only texelFetch'ed here, but a texture must still be complete for its
+  // sampler: on ES a depth texture (and an RGBA32F one without OES_texture_float_linear) is not
+  // with GL_LINEAR, so both use the depth sampler (GL_NEAREST on ES).
+  f.BindSampler(kDepthUnit, depth_sampler_);
+  if (run.normals.name != 0) {
+    f.ActiveTexture(TEXTURE0 + kNormalUnit);
+    f.BindTexture(TEXTURE_2D, run.normals.name);
+    f.BindSampler(kNormalUnit, depth_sampler_);
+  }
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++last_draws_;
+}
+
 void SeparableFilter::draw_copy(GLuint source) {
   const Functions& f = *gl_;
   f.UseProgram(copy_program_);
@@ -339,13 +485,19 @@ void SeparableFilter::draw_copy(GLuint source) {
 }
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
+  last_draws_ = 0;  // run_msaa's draws and those of the run_single it calls add up
+  if (run.color.multisampled()) return run_msaa(run, message);
+  return run_single(run, message);
+}
+
+sss_result SeparableFilter::run_single(const FilterRun& run, std::string* message) {
   const Functions& f = *gl_;
   const int width = run.color.width, height = run.color.height;
   const bool write_back = run.output.name == 0;
   const bool linear_depth = run.constants.linear_depth;
-  last_draws_ = 0;
 
   if (run.identity) return run_identity(run, message);
+  if (run.cross_bilateral) return run_cbf(run, message);
   // Programs first: a variant that fails to build must not leave a new target behind.
   BlurProgram* horizontal = nullptr;
   BlurProgram* vertical = nullptr;
@@ -363,7 +515,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
 
   // Attachments: the stencil copy goes on both targets, or comes off both.
-  if (run.stencil != nullptr) {
+  if (run.stencil != nullptr && !run.stencil_ready) {
     r = copy_stencil(*run.stencil, width, height, message);  // creates stencil_buffer_ on first use
     if (r != SSS_OK) return r;
   }
@@ -419,6 +571,100 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
     if (measured) queries_.end_frame();
   }
   // Detach the host's texture (see copy_stencil).
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) {
+  const Functions& f = *gl_;
+  const int width = run.color.width, height = run.color.height;
+  const bool write_back = run.output.name == 0;
+  const bool linear_depth = run.constants.linear_depth;
+  last_draws_ = 0;
+
+  CbfProgram* horizontal = nullptr;
+  CbfProgram* vertical = nullptr;
+  const bool normals = run.normals.name != 0;
+  sss_result r = cbf_program(Outside::write_centre, linear_depth, normals, &horizontal, message);
+  if (r == SSS_OK) {
+    r = cbf_program(write_back ? Outside::discard : Outside::copy_original, linear_depth, normals, &vertical, message);
+  }
+  if (r == SSS_OK) r = ensure_intermediate(width, height, message);
+  if (r == SSS_OK && run.stencil != nullptr) r = ensure_masked_source(run.color.internal_format, width, height, message);
+  if (r != SSS_OK) return r;
+
+  set_pass_state(f);
+  f.BindVertexArray(vertex_array_);
+  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  if (run.stencil != nullptr) {
+    r = copy_stencil(*run.stencil, width, height, message);
+    if (r != SSS_OK) return r;
+  }
+  const GLuint stencil_attachment = run.stencil != nullptr ? stencil_buffer_ : 0;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("horizontal pass", message);
+  if (r != SSS_OK) return r;
+  if (run.stencil != nullptr) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+    f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+    r = check_framebuffer("masked colour copy", message);
+    if (r != SSS_OK) return r;
+  }
+  const GLuint output = write_back ? run.color.name : run.output.name;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+  r = check_framebuffer("vertical pass", message);
+
+  if (r == SSS_OK) {
+    const bool measured = measure_ && queries_.begin_frame(run.frame);
+    if (measured) queries_.begin_pass(PassQueries::horizontal);  // the masked copy counts with it
+    GLuint horizontal_source = run.color.name;
+    if (run.stencil != nullptr) {
+      // Neighbours outside the stencil must get no weight, but the shader cannot read the stencil:
+      // copy the colour with alpha 0 there (cleared to 0, then the stencil-passing pixels copied).
+      DebugGroup group(f, labels_, "sss masked colour copy");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, masked_framebuffer_);
+      const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      f.Disable(STENCIL_TEST);
+      f.ClearBufferfv(COLOR, 0, zero);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_copy(run.color.name);
+      horizontal_source = masked_source_;
+    }
+    {
+      DebugGroup group(f, labels_, "sss cross-bilateral horizontal pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+      set_stencil_test(run.stencil, EQUAL);
+      draw_cbf(*horizontal, run, horizontal_source, 0);
+      if (run.stencil != nullptr) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(masked_source_);  // alpha 0: the vertical pass gives these no weight either
+      }
+      if (measured) queries_.end_pass(PassQueries::horizontal);
+    }
+    {
+      DebugGroup group(f, labels_, "sss cross-bilateral vertical pass");
+      f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
+      f.ActiveTexture(TEXTURE0 + kOriginalUnit);
+      f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
+      f.BindSampler(kOriginalUnit, sampler_);
+      if (measured) queries_.begin_pass(PassQueries::vertical);
+      if (write_back) f.ColorMask(1, 1, 1, 0);
+      set_stencil_test(run.stencil, EQUAL);
+      if (measured) queries_.begin_pixels();
+      draw_cbf(*vertical, run, intermediate_, 1);
+      if (measured) queries_.end_pixels();
+      if (run.stencil != nullptr && !write_back) {
+        set_stencil_test(run.stencil, NOTEQUAL);
+        draw_copy(run.color.name);
+      }
+      if (measured) queries_.end_pass(PassQueries::vertical);
+    }
+    if (measured) queries_.end_frame();
+  }
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
   return r;

@@ -1,6 +1,8 @@
 // The two full-screen passes on the GPU and the GL objects they own: programs (one per variant,
 // built on first use), the RGBA16F intermediate, the stencil copy, framebuffers, sampler and VAO.
-// Callers validate their inputs first (api layer) and wrap the call in a StateGuard.
+// Multisampled inputs add a resolve pass in front and, writing back, a per-sample write after
+// (separable_filter_msaa.cpp). Callers validate their inputs first (api layer) and wrap the call
+// in a StateGuard.
 #pragma once
 
 #include <array>
@@ -9,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "../math/cbf_constants.hpp"
+#include "../math/cbf_kernel.hpp"
 #include "../math/filter_constants.hpp"
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
@@ -23,10 +27,16 @@ struct StencilInput {
   GLuint ref = 0, mask = 0;
 };
 
+// How the MSAA resolve turns a pixel's sample depths into one view distance (sss.h
+// SSS_MSAA_DEPTH_*): the paper's average of the samples' linear depths, or the alternatives the
+// benchmark compares it with.
+enum class DepthResolve : int { average = 0, sample0 = 1, nearest = 2, farthest = 3 };
+
 struct FilterRun {
-  TextureInfo color;
+  TextureInfo color;                       // multisampled: the MSAA path (depth has the same samples)
   TextureInfo depth;
   TextureInfo output;                      // name 0: write back into color
+  TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
   const std::vector<math::KernelTap>* kernel = nullptr;
@@ -35,6 +45,16 @@ struct FilterRun {
   bool follow_surface = false;
   bool identity = false;                   // nothing to blur: only copy into a separate output
   std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
+  // The cross-bilateral mode (Mikkelsen 2010) instead of the separable kernel.
+  bool cross_bilateral = false;
+  const math::CbfKernel* cbf_kernel = nullptr;
+  std::uint64_t cbf_kernel_revision = 0;
+  math::CbfConstants cbf;
+  // MSAA path only: the host depth's encoding for the resolve (`constants` then describe the
+  // resolved linear distance the passes read), and how sample depths combine.
+  math::PassConstants resolve_constants;
+  DepthResolve depth_resolve = DepthResolve::average;
+  bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
 };
 
 class SeparableFilter {
@@ -50,7 +70,8 @@ class SeparableFilter {
     software_renderer_ = software_renderer;
   }
   const PassQueries& queries() const { return queries_; }
-  // Full-screen draws of the last run() (blur passes and copies).
+  // Full-screen draws of the last run() (blur passes and copies; MSAA: also the resolve, the
+  // stencil mark and one per-sample write per sample).
   int last_draws() const { return last_draws_; }
   // Where DEBUG notes go (a program variant built on first use, the intermediate reallocated).
   void set_log(std::function<void(int level, const std::string& message)> log) { log_ = std::move(log); }
@@ -81,10 +102,56 @@ class SeparableFilter {
     std::uint64_t kernel_revision = 0;  // 0: never uploaded
   };
   static constexpr int kVariantCount = 3 * 2 * 2;
+  struct CbfProgram {
+    GLuint program = 0;
+    GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
+          ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
+          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1;
+    std::uint64_t kernel_revision = 0;
+  };
+  static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   sss_result blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
                           std::string* message);
   sss_result run_identity(const FilterRun& run, std::string* message);
+  sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
+  sss_result run_cbf(const FilterRun& run, std::string* message);
+  sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
+  void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);
+  sss_result run_single(const FilterRun& run, std::string* message);
+
+  // MSAA path (separable_filter_msaa.cpp).
+  struct ResolveProgram {
+    GLuint program = 0;
+    GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
+  };
+  struct MsaaObjects {
+    std::array<ResolveProgram, 2> resolve{};  // index: host depth is linear
+    GLuint mask_program = 0;
+    GLuint write_program = 0;
+    GLint write_sample = -1, write_samples = -1;
+    GLuint resolve_framebuffer = 0, read_framebuffer = 0, copy_framebuffer = 0, write_framebuffer = 0;
+    // Single-sample targets: resolved colour (host's format), resolved view distance (R32F), and
+    // the blurred result when writing back into the host's samples.
+    GLuint resolved_color = 0, resolved_distance = 0, blurred = 0;
+    GLint color_format = 0;
+    int width = 0, height = 0;
+    bool has_blurred = false;
+    // A copy of the host's colour samples (the write-back pass reads it: never the attached texture).
+    GLuint sample_copy = 0;
+    GLint copy_format = 0;
+    int copy_width = 0, copy_height = 0, copy_samples = 0;
+    GLboolean copy_fixed = 1;
+  };
+  sss_result run_msaa(const FilterRun& run, std::string* message);
+  sss_result msaa_programs(bool linear_depth, bool need_mask, bool need_write, ResolveProgram** resolve,
+                           std::string* message);
+  sss_result ensure_msaa_framebuffers();
+  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred, std::string* message);
+  sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
+  sss_result mark_stencil_from_alpha(int width, int height, std::string* message);
+  sss_result write_samples(const FilterRun& run, std::string* message);
+  void destroy_msaa();
   sss_result ensure_intermediate(int width, int height, std::string* message);
   sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
   sss_result copy_stencil(const StencilInput& stencil, int width, int height, std::string* message);
@@ -115,6 +182,13 @@ class SeparableFilter {
   GLint stencil_format_ = 0;
   int stencil_width_ = 0, stencil_height_ = 0;
   GLuint intermediate_framebuffer_ = 0, output_framebuffer_ = 0, stencil_source_framebuffer_ = 0;
+  // Cross-bilateral mode: its programs, and (with a stencil) an RGBA32F copy of the colour whose
+  // alpha is 0 outside the stencil, so the horizontal pass can tell those neighbours apart.
+  std::array<CbfProgram, kCbfVariantCount> cbf_programs_{};
+  GLuint masked_source_ = 0, masked_framebuffer_ = 0;
+  GLint masked_format_ = 0;
+  int masked_width_ = 0, masked_height_ = 0;
+  MsaaObjects msaa_;
 };
 
 }  // namespace sss::gl

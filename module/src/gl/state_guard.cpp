@@ -14,10 +14,14 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
+    if (gl_.has_multisample_textures()) {  // an invalid enum on ES 3.0
+      gl_.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &multisample_textures_[static_cast<std::size_t>(unit)]);
+    }
     gl_.GetIntegerv(SAMPLER_BINDING, &samplers_[static_cast<std::size_t>(unit)]);
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
+  if (gl_.has_msaa_path()) gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);  // never set on ES
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
   if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
   if (gl_.desktop()) {
@@ -74,9 +78,14 @@ StateGuard::~StateGuard() {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
   gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  if (gl_.has_msaa_path()) gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
   for (int unit = 0; unit < kUnitCount; ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
+    if (gl_.has_multisample_textures()) {
+      gl_.BindTexture(TEXTURE_2D_MULTISAMPLE,
+                      static_cast<GLuint>(multisample_textures_[static_cast<std::size_t>(unit)]));
+    }
     gl_.BindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(samplers_[static_cast<std::size_t>(unit)]));
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));

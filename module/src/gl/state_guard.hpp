@@ -8,8 +8,8 @@
 
 namespace sss::gl {
 
-// Texture units the module binds: 0 pass source, 1 depth, 2 original colour.
-constexpr int kUnitCount = 3;
+// Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
+constexpr int kUnitCount = 4;
 
 class StateGuard {
  public:
@@ -39,10 +39,12 @@ class StateGuard {
   GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint active_texture_ = 0, unpack_buffer_ = 0;
   std::array<GLint, kUnitCount> textures_{}, samplers_{};
+  std::array<GLint, kUnitCount> multisample_textures_{};  // GL 3.2+ / ES 3.1+ only
+  GLint sample_mask_value_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the desktop MSAA write-back sets it)
   std::array<GLint, 4> viewport_{};
   std::array<GLboolean, kCapabilities.size()> capabilities_{};
   std::array<GLboolean, kDesktopCapabilities.size()> desktop_capabilities_{};
-  GLboolean sample_mask_ = 0;
+  GLboolean sample_mask_ = 0;  // the GL_SAMPLE_MASK enable
   std::array<GLboolean, kClipDistances> clip_distances_{};
   std::array<GLboolean, 4> color_mask_{};
   std::array<GLint, 2> polygon_mode_{};

@@ -14,6 +14,11 @@ struct FilterSettings {
   std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
   int samples = 17;
   bool follow_surface = true;
+  // The cross-bilateral mode (sss_settings.mode and cbf_*; see spike_gaussian_profile.hpp, cbf_kernel.hpp).
+  bool cross_bilateral = false;
+  int cbf_taps = 13;
+  float cbf_r_max_mm = 4.5f;
+  unsigned cbf_profile = 0x100u;  // SSS_PROFILE_MIKKELSEN_2010 or an sss_material (spike_gaussian_profile.hpp)
 };
 
 enum class DepthEncoding {

@@ -171,6 +171,44 @@ Scene make_depth_step_scene(int width, int height) {
   return s;
 }
 
+Scene make_tilted_plane_scene(const std::string& name, double degrees, int width, int height) {
+  PinholeCamera camera;
+  Scene s = blank_scene(name, width, height, &camera);
+  const double t = degrees * kPi / 180.0;
+  const Vec3 normal{std::sin(t), 0.0, std::cos(t)}, along{std::cos(t), 0.0, -std::sin(t)};
+  const double anchor_z = -kPlaneDistance;  // the plane holds (0, 0, -kPlaneDistance)
+  constexpr int kSub = 4;                   // 4x4 sub-pixel rays for the edge's coverage
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const Vec3 centre = camera.ray(i, j);
+      // Pinhole rays are linear in the pixel coordinates: one pixel's step from the neighbours.
+      const double step_x = camera.ray(i + 1, j).x - centre.x, step_y = camera.ray(i, j + 1).y - centre.y;
+      auto hit = [&](double x, double y, double* distance, double* u) {
+        const double denominator = normal.x * x + normal.y * y - normal.z;  // n · (x, y, -1)
+        const double numerator = normal.z * anchor_z;                       // n · anchor
+        if (!(denominator < -1e-9)) return false;                           // parallel or behind
+        *distance = numerator / denominator;
+        *u = along.x * x * *distance + along.z * (-*distance - anchor_z);
+        return *distance > 0.0;
+      };
+      double distance = 0.0, u = 0.0;
+      if (!hit(centre.x, centre.y, &distance, &u) || distance > 0.5 * kFar) {
+        set_pixel(s, camera, i, j, 0.3, 0.3, 0.3, false, 0.5 * kFar);
+        continue;
+      }
+      double lit = 0.0;
+      for (int a = 0; a < kSub; ++a)
+        for (int b = 0; b < kSub; ++b) {
+          double d = 0.0, v = 0.0;
+          const double x = centre.x + ((a + 0.5) / kSub - 0.5) * step_x, y = centre.y + ((b + 0.5) / kSub - 0.5) * step_y;
+          if (hit(x, y, &d, &v) && v <= 0.0) lit += 1.0;
+        }
+      const double e = kDark + (kLit - kDark) * lit / (kSub * kSub);
+      set_pixel(s, camera, i, j, e, e, e, true, distance);
+    }
+  return s;
+}
+
 Scene make_empty_scene(int width, int height) {
   PinholeCamera camera;
   Scene s = blank_scene("empty", width, height, &camera);

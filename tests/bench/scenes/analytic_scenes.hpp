@@ -14,6 +14,10 @@ Scene make_sphere_scene(int width, int height);
 // The sphere with its Lambert term replaced by eq. (1.1) at the sphere's curvature (per channel).
 Scene make_preintegrated_sphere_scene(int width, int height);
 Scene make_depth_step_scene(int width, int height);
+// The edge-0 plane turned by `degrees` about the view's vertical axis (0: facing the camera), its
+// shadow edge still through the image centre: what the footprint's per-axis cosine correction buys.
+// Pixels whose ray misses the plane (it turns away at 80°) are a non-translucent backdrop.
+Scene make_tilted_plane_scene(const std::string& name, double degrees, int width, int height);
 Scene make_empty_scene(int width, int height);
 
 // The cameras, shared with the tests and the report (metres, vertical field of view 30 degrees).

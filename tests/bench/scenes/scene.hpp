@@ -11,7 +11,7 @@ namespace sss_bench {
 
 struct Scene {
   std::string name;                 // "dot", "edge-0", "edge-30", "edge-45", "sphere", "depth-step",
-                                    // "head-close", "head-mid", "head-far", "empty"
+                                    // "tilted-30/60/80", "head-close", "head-mid", "head-far", "empty"
   int width = 0, height = 0;
   std::vector<float> irradiance;    // RGBA, row 0 at the bottom (GL order); linear diffuse irradiance
                                     // (albedo included); alpha = SSS strength: 1 translucent, 0 not

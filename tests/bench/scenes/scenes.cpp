@@ -43,8 +43,8 @@ detail::HeadView head_view(const std::string& name) {
 }  // namespace
 
 std::vector<std::string> canonical_scene_names() {
-  return {"dot",        "edge-0",     "edge-30",  "edge-45",  "sphere", "depth-step",
-          "head-close", "head-mid",   "head-far", "empty"};
+  return {"dot",        "edge-0",   "edge-30",  "edge-45", "sphere",    "depth-step", "tilted-30", "tilted-60",
+          "tilted-80",  "head-close", "head-mid", "head-far", "empty"};
 }
 
 bool scene_needs_gl(const std::string& name) {
@@ -60,6 +60,9 @@ Scene make_scene(const std::string& name, int width, int height) {
   if (name == "edge-45") return detail::make_edge_scene(name, 45.0, width, height);
   if (name == "sphere") return detail::make_sphere_scene(width, height);
   if (name == "depth-step") return detail::make_depth_step_scene(width, height);
+  if (name == "tilted-30") return detail::make_tilted_plane_scene(name, 30.0, width, height);
+  if (name == "tilted-60") return detail::make_tilted_plane_scene(name, 60.0, width, height);
+  if (name == "tilted-80") return detail::make_tilted_plane_scene(name, 80.0, width, height);
   if (scene_needs_gl(name)) return detail::render_head_scene(name, width, height, head_view(name));
   if (name == "empty") return detail::make_empty_scene(width, height);
   throw std::invalid_argument("make_scene: unknown scene '" + name + "'");

@@ -102,8 +102,9 @@ std::vector<double> edge_positions(const sss_bench::Scene& s) {
 class SceneTest : public GlTest {};
 
 TEST_F(SceneTest, NamesAndErrors) {
-  const std::vector<std::string> expected = {"dot",        "edge-0",   "edge-30",  "edge-45", "sphere", "depth-step",
-                                             "head-close", "head-mid", "head-far", "empty"};
+  const std::vector<std::string> expected = {"dot",       "edge-0",    "edge-30",    "edge-45",  "sphere",
+                                             "depth-step", "tilted-30", "tilted-60", "tilted-80", "head-close",
+                                             "head-mid",  "head-far",  "empty"};
   EXPECT_EQ(sss_bench::canonical_scene_names(), expected);
   for (const std::string& name : expected)
     EXPECT_EQ(sss_bench::scene_needs_gl(name), name.rfind("head-", 0) == 0) << name;

@@ -1,0 +1,45 @@
+// MSAA resolve (the first pass of the multisampled path, Jimenez et al. 2012 §4): the box average
+// of the colour samples, and one depth per pixel as a LINEAR view distance. Averaging hardware
+// depth would mix non-linear values (a silhouette pixel half on a near face and half on the far
+// background lands far behind both); averaging the samples' view distances gives the distance of
+// the pixel's mean surface, which is what the follow-surface test compares.
+//
+// Compile-time switch: SSS_LINEAR_DEPTH 0: hardware depth, linearised per sample; 1: the host's
+// depth already holds view distance.
+// Desktop GL only: composed after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
+
+SSS_BINDING(0) uniform sampler2DMS u_color;
+SSS_BINDING(1) uniform sampler2DMS u_depth;
+uniform int u_samples;           // the textures' sample count (both have the same)
+uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 3 maximum (farthest)
+uniform vec2 u_ndc_from_depth;   // z_ndc = depth · x + y
+uniform vec4 u_depth_terms;      // projection m10, m11, m14, m15
+
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out float o_distance;
+
+float view_distance(float raw_depth) {
+#if SSS_LINEAR_DEPTH
+  return raw_depth;
+#else
+  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
+  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
+#endif
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 color = vec4(0.0);
+  float first = view_distance(texelFetch(u_depth, pixel, 0).r);
+  float sum = 0.0, nearest = first, farthest = first;
+  for (int i = 0; i < u_samples; ++i) {
+    color += texelFetch(u_color, pixel, i);
+    float d = view_distance(texelFetch(u_depth, pixel, i).r);
+    sum += d;
+    nearest = min(nearest, d);
+    farthest = max(farthest, d);
+  }
+  float n = float(u_samples);
+  o_color = color / n;
+  o_distance = u_depth_mode == 0 ? sum / n : u_depth_mode == 1 ? first : u_depth_mode == 2 ? nearest : farthest;
+}

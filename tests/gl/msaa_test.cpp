@@ -1,0 +1,462 @@
+// The MSAA path (paper §4): multisampled colour and depth are resolved (box-averaged colour, mean of
+// the samples' linear depths) and filtered like single-sample input; written back, only the
+// translucent samples change and the box resolve of the result is the blurred image. Bad
+// multisampled input fails with a specific code and message and changes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "fault_loader.hpp"
+#include "filter_case.hpp"
+#include "gl_state_snapshot.hpp"
+#include "math/filter_constants.hpp"
+#include "multisample_textures.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kW = 48, kH = 40;  // the filtered size; the fine (per-sample) scenes are 96 x 80
+const sss::math::Matrix4 kCamera = perspective_matrix(40.0f, float(kW) / float(kH), 0.1f, 10.0f);
+
+class Msaa : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    if (HasFatalFailure()) return;
+    // sss.h: the MSAA path is desktop GL only; on ES a multisampled input is refused (MsaaOnGles).
+    if (is_gles()) GTEST_SKIP() << "the MSAA path is desktop OpenGL only (see MsaaOnGles for ES)";
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples_);
+    if (max_samples_ < 4) GTEST_SKIP() << "the context offers " << max_samples_ << " samples";
+    sss_ = create_sss();
+    ASSERT_NE(sss_, nullptr);
+    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    sss_settings s;
+    sss_default_settings(&s);
+    s.width = 0.05f;  // several pixels of reach at this size, so the kernel crosses the depth step
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  }
+
+  GLuint ms(GLenum format, const std::vector<float>& fine, int samples = 4) {
+    const GLuint t = make_multisample_texture(format, kW, kH, samples, fine);
+    textures_.push_back(t);
+    return t;
+  }
+
+  sss_frame frame(GLuint color, GLuint depth, GLuint output = 0) const {
+    sss_frame f = {};
+    f.struct_size = sizeof f;
+    f.color_texture = color;
+    f.depth_texture = depth;
+    f.output_texture = output;
+    return f;
+  }
+
+  std::vector<float> apply_to_output(const sss_frame& in) {
+    sss_frame f = in;
+    f.output_texture = make_rgba32f(kW, kH, std::vector<float>(kW * kH * 4, -7.0f));
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    return read_rgba(f.output_texture, kW, kH);
+  }
+
+  GLint max_samples_ = 0;
+};
+
+// Linear view distance per fine texel, as the shader computes it from hardware depth (float).
+std::vector<float> linearised(const SyntheticScene& fine) {
+  sss::math::FrameGeometry g;
+  g.texture_width = fine.width;
+  g.texture_height = fine.height;
+  g.viewport = {0, 0, fine.width, fine.height};
+  const auto k = sss::math::compute_pass_constants(sss::math::FilterSettings{}, fine.projection, g);
+  std::vector<float> d(fine.window_depth.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = sss::math::linearise_depth(k, fine.window_depth[i]);
+  return d;
+}
+
+// Tolerance for "the same filter on the same numbers": the resolve sums four samples in float
+// (a rounding of 2^-24 relative) which can flip one rounding of the RGBA16F intermediate (2^-11
+// relative); the vertical pass's weights sum to 1, so the output moves by at most about 2^-11.
+// 2^-10 leaves room for two such flips.
+constexpr float kSameFilter = 1.0f / 1024.0f;
+
+TEST_F(Msaa, ResolvedInputsGiveTheSingleSampleResultOfTheirBoxAverage) {
+  // The relief scene at twice the size has a depth step, a spherical bump, alpha bands and
+  // per-sample noise: every pixel's samples differ.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 7, kCamera);
+  const SyntheticScene coarse = downsample_2x2(fine);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth = ms(GL_R32F, fine.distance);
+  ASSERT_EQ(texture_samples(color), 4);
+  const std::vector<float> msaa = apply_to_output(frame(color, depth));
+
+  const GLuint single_color = make_rgba32f(kW, kH, coarse.color);
+  const GLuint single_depth = make_texture(GL_R32F, kW, kH, GL_RED, GL_FLOAT, coarse.distance.data());
+  const std::vector<float> single = apply_to_output(frame(single_color, single_depth));
+  EXPECT_LE(largest_relative_difference(msaa, single), kSameFilter);
+}
+
+TEST_F(Msaa, HardwareDepthIsLinearisedPerSampleBeforeAveraging) {
+  // Same scene with hardware depth: the resolve must linearise each sample, then average. The
+  // reference gets the linearised samples directly (float, the shader's formula), so any other
+  // order (averaging window depth first) shows at the depth step.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 8, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const std::vector<float> hardware = apply_to_output(frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth)));
+  const std::vector<float> linear = apply_to_output(frame(color, ms(GL_R32F, linearised(fine))));
+  // The GPU's division differs from the CPU's by a few float ulps (~1e-6 relative in distance);
+  // the follow-surface factor (~1/reach) turns that into blend changes far below kSameFilter.
+  EXPECT_LE(largest_relative_difference(hardware, linear), kSameFilter);
+
+  // And the other resolves really differ from the average along the silhouettes.
+  for (uint32_t mode : {SSS_MSAA_DEPTH_SAMPLE0, SSS_MSAA_DEPTH_MIN, SSS_MSAA_DEPTH_MAX}) {
+    sss_frame f = frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth));
+    f.msaa_depth_resolve = mode;
+    const std::vector<float> other = apply_to_output(f);
+    EXPECT_GT(largest_relative_difference(other, hardware), kSameFilter) << "mode " << mode;
+  }
+}
+
+TEST_F(Msaa, InteriorPixelsWhoseSamplesAgreeMatchTheSingleSampleResult) {
+  // Every sample equals its pixel: the MSAA result must be the single-sample one, hardware depth
+  // on both sides. The single-sample path interpolates hardware depth between texels and then
+  // linearises; the MSAA path interpolates linearised depth: on smooth surfaces the two differ
+  // at second order (tiny), across the depth step both are far beyond the kernel's reach (the
+  // tap falls back to the centre either way).
+  const SyntheticScene coarse = make_relief_scene(kW, kH, 9, kCamera);
+  const SyntheticScene fine = upsample_2x2(coarse);
+  const std::vector<float> msaa =
+      apply_to_output(frame(ms(GL_RGBA32F, fine.color), ms(GL_DEPTH_COMPONENT32F, fine.window_depth)));
+  const std::vector<float> single =
+      apply_to_output(frame(make_rgba32f(kW, kH, coarse.color), make_depth32f(kW, kH, coarse.window_depth)));
+  EXPECT_LE(largest_relative_difference(msaa, single), kSameFilter);
+}
+
+TEST_F(Msaa, WriteBackChangesOnlyTranslucentSamplesAndResolvesToTheBlurredImage) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 10, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const std::vector<float> blurred = apply_to_output(frame(color, depth));
+  const auto before = read_samples(color, kW, kH, 4);
+  const sss_frame in_place = frame(color, depth);
+  ASSERT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const auto after = read_samples(color, kW, kH, 4);
+
+  int changed_pixels = 0, checked_pixels = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    bool clamped = false, changed = false;
+    for (std::size_t s = 0; s < 4; ++s) {
+      const float* b = &before[s][p * 4];
+      const float* a = &after[s][p * 4];
+      ASSERT_EQ(0, std::memcmp(&a[3], &b[3], sizeof(float))) << "alpha changed, pixel " << p << " sample " << s;
+      if (!(b[3] > 0.0f)) {
+        ASSERT_EQ(0, std::memcmp(a, b, 4 * sizeof(float))) << "opaque sample changed, pixel " << p << " sample " << s;
+      }
+      for (int c = 0; c < 3; ++c) {
+        if (a[c] == 0.0f && b[c] != 0.0f) clamped = true;
+        if (a[c] != b[c]) changed = true;
+      }
+    }
+    changed_pixels += changed ? 1 : 0;
+    if (clamped) continue;  // a sample clamped at 0 breaks the average by design (documented)
+    ++checked_pixels;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float mean = (after[0][p * 4 + c] + after[1][p * 4 + c] + after[2][p * 4 + c] + after[3][p * 4 + c]) / 4.0f;
+      // float rounding of (sample + delta · 4/n) and of the mean: a few 2^-24 relative steps.
+      EXPECT_NEAR(mean, blurred[p * 4 + c], 1e-5f * std::fmax(1.0f, std::fabs(blurred[p * 4 + c])))
+          << "pixel " << p << " channel " << c;
+    }
+  }
+  EXPECT_GT(changed_pixels, kW * kH / 2) << "the filter must actually have changed most pixels";
+  EXPECT_GT(checked_pixels, kW * kH * 9 / 10);
+}
+
+TEST_F(Msaa, AMultisampledHostStencilLimitsTheFilter) {
+  // The relief scene's stencil excludes the right quarter; its edge falls between pixels, so every
+  // sample of a pixel agrees and the sample the driver's stencil resolve keeps does not matter.
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth_stencil = make_multisample_depth_stencil(kW, kH, 4, fine.window_depth, fine.stencil);
+  textures_.push_back(depth_stencil);
+  const sss_stencil stencil = {depth_stencil, 1, 0xFF};
+  sss_frame f = frame(color, depth_stencil);
+  f.stencil = &stencil;
+  const std::vector<float> filtered = apply_to_output(f);
+  sss_settings s;
+  ASSERT_EQ((s.struct_size = sizeof s, sss_get_settings(sss_, &s)), SSS_OK);
+  const float width = s.width;
+  s.width = 0.0f;  // identity: the output is the resolved colour
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  const std::vector<float> resolved = apply_to_output(f);
+  s.width = width;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+
+  const SyntheticScene coarse = downsample_2x2(fine);
+  int outside = 0, changed_inside = 0, inside = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    if (coarse.stencil[p] == 0) {
+      ++outside;
+      EXPECT_EQ(0, std::memcmp(&filtered[p * 4], &resolved[p * 4], 4 * sizeof(float))) << "pixel " << p;
+    } else if (coarse.color[p * 4 + 3] > 0.0f) {
+      ++inside;
+      changed_inside += std::memcmp(&filtered[p * 4], &resolved[p * 4], 3 * sizeof(float)) != 0;
+    }
+  }
+  EXPECT_GT(outside, kW * kH / 8);
+  EXPECT_GT(changed_inside, inside * 9 / 10);
+}
+
+TEST_F(Msaa, BadMultisampledInputFailsWithASpecificMessageAndChangesNothing) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 11, kCamera);
+  const SyntheticScene coarse = downsample_2x2(fine);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const GLuint single_color = make_rgba16f(kW, kH, coarse.color);
+  const GLuint single_depth = make_depth32f(kW, kH, coarse.window_depth);
+  const auto before = read_samples(color, kW, kH, 4);
+  const std::vector<float> single_before = read_rgba(single_color, kW, kH);
+
+  auto expect_fails = [&](const sss_frame& f, sss_result code, const std::string& fragment) {
+    EXPECT_EQ(sss_apply_frame(sss_, &f), code) << sss_last_error(sss_);
+    const std::string message = sss_last_error(sss_);
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  };
+  const std::string c = std::to_string(color), d = std::to_string(depth);
+  expect_fails(frame(color, single_depth), SSS_ERROR_INVALID_TEXTURE,
+               "depth_texture = " + std::to_string(single_depth) + " is GL_TEXTURE_2D but color_texture = " + c +
+                   " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+  expect_fails(frame(single_color, depth), SSS_ERROR_INVALID_TEXTURE,
+               "depth_texture = " + d + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples but color_texture");
+  sss_frame bad_mode = frame(color, depth);
+  bad_mode.msaa_depth_resolve = 9;
+  expect_fails(bad_mode, SSS_ERROR_INVALID_ARGUMENT, "frame->msaa_depth_resolve = 9");
+  const GLuint ms_output = ms(GL_RGBA32F, {});
+  expect_fails(frame(color, depth, ms_output), SSS_ERROR_INVALID_TEXTURE,
+               "output_texture = " + std::to_string(ms_output) + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+
+  // A sample count the context does not offer: the GL refuses the storage, the module says so.
+  const GLuint too_many = ms(GL_RGBA16F, {}, 2 * max_samples_);
+  expect_fails(frame(too_many, depth), SSS_ERROR_INVALID_TEXTURE,
+               "color_texture = " + std::to_string(too_many) + " (GL_TEXTURE_2D_MULTISAMPLE) has no storage");
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("at most " + std::to_string(max_samples_) + " samples"),
+            std::string::npos);
+
+  // Mismatched and unsupported counts. llvmpipe makes every multisample texture with 4 samples,
+  // so a module created through the fault loader is told another count for one texture (what a
+  // driver offering 2, 4 and 8 would report).
+  sss_create_desc desc = {};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = fault_get_proc_address;
+  desc.get_proc_address_user = headless_;
+  sss_context* faulty = nullptr;
+  ASSERT_EQ(sss_create(&desc, &faulty), SSS_OK);
+  ASSERT_EQ(sss_set_camera(faulty, kCamera.data()), SSS_OK);
+  auto expect_faulty_fails = [&](GLuint texture, int samples, sss_result code, const std::string& fragment) {
+    reset_faults();
+    faults().fake_samples_texture = texture;
+    faults().fake_samples = samples;
+    const sss_frame f = frame(color, depth);
+    EXPECT_EQ(sss_apply_frame(faulty, &f), code) << sss_last_error(faulty);
+    const std::string message = sss_last_error(faulty);
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    reset_faults();
+  };
+  expect_faulty_fails(depth, 2, SSS_ERROR_INVALID_TEXTURE,
+                      "depth_texture = " + d + " is GL_TEXTURE_2D_MULTISAMPLE with 2 samples but color_texture = " +
+                          c + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples");
+  expect_faulty_fails(color, 8, SSS_ERROR_UNSUPPORTED,
+                      "color_texture = " + c + " has 8 samples: this context supports at most " +
+                          std::to_string(max_samples_));
+  expect_faulty_fails(color, 64, SSS_ERROR_UNSUPPORTED, "has 64 samples");
+  sss_destroy(faulty);
+
+  const auto after = read_samples(color, kW, kH, 4);
+  for (std::size_t s = 0; s < 4; ++s) {
+    EXPECT_EQ(0, std::memcmp(before[s].data(), after[s].data(), before[s].size() * sizeof(float))) << "sample " << s;
+  }
+  const std::vector<float> single_after = read_rgba(single_color, kW, kH);
+  EXPECT_EQ(0, std::memcmp(single_before.data(), single_after.data(), single_before.size() * sizeof(float)));
+}
+
+TEST_F(Msaa, StateIsRestoredAndNoErrorIsLeftInBothOutputModes) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 12, kCamera);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH24_STENCIL8, fine.window_depth);
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
+  // Host bindings on every unit the module uses, on both targets, and a sample mask.
+  const GLuint extra_ms = ms(GL_RGBA16F, {});
+  for (GLenum unit = 0; unit < 3; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, output);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, extra_ms);
+  }
+  glActiveTexture(GL_TEXTURE1);
+  glEnable(GL_SAMPLE_MASK);
+  glSampleMaski(0, 0x5u);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  for (GLuint out : {output, 0u}) {
+    const Snapshot before = take_snapshot();
+    const sss_frame f = frame(color, depth, out);
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "output " << out;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
+}
+
+// sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
+// alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
+// stencil-rejected pixels, vertical blur + copy, since they write a separate target), and written
+// back one draw per sample (4 here).
+TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
+  const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 2 + 4};  // into output, written back
+  const GLuint outputs[2] = {output, 0u};
+  for (int i = 0; i < 2; ++i) {
+    const sss_frame f = frame(color, depth, outputs[i]);
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    sss_stats st = {};
+    st.struct_size = sizeof st;
+    ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+    EXPECT_EQ(st.frames, static_cast<uint64_t>(i + 1));
+    EXPECT_EQ(st.last_frame_passes, expected[i]) << "output " << outputs[i];
+  }
+}
+
+// OpenGL ES (backend egl-gles; llvmpipe gives ES 3.2, so multisampled textures exist): the MSAA
+// path is desktop-only, so a multisampled input fails with SSS_ERROR_UNSUPPORTED and a message
+// that says what to do, before anything is drawn, leaving no error and the state as it was. The
+// module is created the fixture's way on ES (no glGetTexLevelParameteriv), so this also checks
+// that the refusal comes before the ES 3.0 texture description is asked for.
+class MsaaOnGles : public GlTest {};
+
+TEST_F(MsaaOnGles, AMultisampledInputIsUnsupported) {
+  if (!is_gles()) GTEST_SKIP() << "OpenGL ES only (backend egl-gles); desktop GL runs the MSAA path (Msaa.*)";
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  GLuint color = 0;
+  glGenTextures(1, &color);
+  textures_.push_back(color);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, color);
+  glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, kW, kH, GL_TRUE);  // ES 3.1
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const GLuint depth = make_depth32f(kW, kH, std::vector<float>(kW * kH, 0.5f));
+  const GLuint bound = make_rgba16f(4, 4, std::vector<float>(64, 0.25f));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, bound);  // the module's probe binds on unit 0: this must survive it
+  const Snapshot before = take_snapshot(true);
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = color;
+  f.depth_texture = depth;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_UNSUPPORTED) << sss_last_error(sss_);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("color_texture = " + std::to_string(color) + " is GL_TEXTURE_2D_MULTISAMPLE"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("desktop OpenGL"), std::string::npos) << message;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(describe_differences(before, take_snapshot(true)), "");
+}
+
+// OpenGL ES 3.0 has no GL_TEXTURE_2D_MULTISAMPLE (an invalid enum there), so the module must never
+// bind or query it. llvmpipe gives ES 3.2, so the module is told "OpenGL ES 3.0" by the loader
+// (glGetString), loses the ES 3.1 texture query (as on a real ES 3.0 driver), and every use of the
+// multisample enums through glBindTexture, glGetIntegerv and glGetIntegeri_v is counted.
+using GetStringFn = const GLubyte* (*)(GLenum);
+using BindTextureFn = void (*)(GLenum, GLuint);
+using GetIntegervFn = void (*)(GLenum, GLint*);
+using GetIntegeriVFn = void (*)(GLenum, GLuint, GLint*);
+GetStringFn g_real_get_string = nullptr;
+BindTextureFn g_real_bind_texture = nullptr;
+GetIntegervFn g_real_get_integerv = nullptr;
+GetIntegeriVFn g_real_get_integeri_v = nullptr;
+int g_multisample_uses = 0;
+
+const GLubyte* get_string_es30(GLenum name) {
+  if (name == GL_VERSION) return reinterpret_cast<const GLubyte*>("OpenGL ES 3.0 as told by the test");
+  return g_real_get_string(name);
+}
+void bind_texture_counted(GLenum target, GLuint texture) {
+  if (target == GL_TEXTURE_2D_MULTISAMPLE) ++g_multisample_uses;
+  g_real_bind_texture(target, texture);
+}
+void get_integerv_counted(GLenum pname, GLint* data) {
+  if (pname == GL_TEXTURE_BINDING_2D_MULTISAMPLE || pname == GL_MAX_COLOR_TEXTURE_SAMPLES ||
+      pname == GL_MAX_DEPTH_TEXTURE_SAMPLES) {
+    ++g_multisample_uses;
+  }
+  g_real_get_integerv(pname, data);
+}
+void get_integeri_v_counted(GLenum pname, GLuint index, GLint* data) {
+  if (pname == GL_SAMPLE_MASK_VALUE) ++g_multisample_uses;
+  g_real_get_integeri_v(pname, index, data);
+}
+template <typename Fn>
+void* wrap(Fn* real, void* address, void* wrapper) {
+  *real = reinterpret_cast<Fn>(address);
+  return wrapper;
+}
+void* es30_told_get_proc_address(const char* name, void* user) {
+  const std::string n = name;
+  void* real = sss_headless_get_proc_address(name, user);
+  if (n == "glGetTexLevelParameteriv") return nullptr;  // ES 3.1+
+  if (n == "glGetString") return wrap(&g_real_get_string, real, reinterpret_cast<void*>(&get_string_es30));
+  if (n == "glBindTexture") return wrap(&g_real_bind_texture, real, reinterpret_cast<void*>(&bind_texture_counted));
+  if (n == "glGetIntegerv") return wrap(&g_real_get_integerv, real, reinterpret_cast<void*>(&get_integerv_counted));
+  if (n == "glGetIntegeri_v") {
+    return wrap(&g_real_get_integeri_v, real, reinterpret_cast<void*>(&get_integeri_v_counted));
+  }
+  return real;
+}
+
+TEST_F(MsaaOnGles, OnEs30TheMultisampleTargetIsNeverTouched) {
+  if (!is_gles()) GTEST_SKIP() << "OpenGL ES only (backend egl-gles)";
+  loader_override_ = es30_told_get_proc_address;
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  GLuint multisampled = 0;
+  glGenTextures(1, &multisampled);
+  textures_.push_back(multisampled);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, multisampled);
+  glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, kW, kH, GL_TRUE);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  const std::vector<float> rgba(kW * kH * 4, 0.5f);
+  const GLuint color = make_rgba16f(kW, kH, rgba);
+  const GLuint depth = make_depth32f(kW, kH, std::vector<float>(kW * kH, 0.5f));
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = multisampled;
+  f.depth_texture = depth;
+  f.color_format = GL_RGBA16F;
+  f.depth_format = GL_DEPTH_COMPONENT32F;
+  f.texture_width = kW;
+  f.texture_height = kH;
+  g_multisample_uses = 0;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_INVALID_TEXTURE) << sss_last_error(sss_);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("color_texture = " + std::to_string(multisampled) + " is not a GL_TEXTURE_2D"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  f.color_texture = color;  // the ES 3.0 path itself works and touches no multisample state either
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(g_multisample_uses, 0);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace sss_test
