@@ -1,13 +1,20 @@
 // One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
 // along `u_axis`, its footprint scaled per pixel by depth and by the strength in alpha, taps blended
-// back to the centre colour as their depth leaves the kernel's reach (follow-surface).
+// back to the centre colour as their depth leaves the kernel's reach (follow-surface). A kernel of
+// several separable terms (sum of Gaussians, SVD rank N) runs this pair of passes once per term; the
+// vertical pass of a later term adds the earlier terms' sum (SSS_ACCUMULATE).
 //
 // Compile-time switches (prepended by the module):
 //   SSS_OUTSIDE   what a pixel that is not blurred writes: 0 its own value (horizontal pass, which
 //                 fills the intermediate everywhere), 1 nothing (discard: vertical pass writing back
 //                 into the host's colour), 2 the host's original colour (vertical pass into a
 //                 separate output texture)
-//   SSS_FOLLOW_SURFACE  0 or 1
+//   SSS_FOLLOW_SURFACE  0 off; 1 the linear ramp to the kernel's reach; 2 the exact depth correction
+//                       of a Gaussian term (supplementary §E): blend by 1 - exp(-dz² / 2v), dz in
+//                       profile millimetres
+//   SSS_JITTER          1: taps with a jitter width move by (noise - 1/2) · width, noise a per-pixel
+//                       integer hash (supplementary Fig. S.6-S.7); 0: fixed taps
+//   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
 // and from the dialect's header (module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
@@ -21,11 +28,20 @@ SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
 #if SSS_OUTSIDE == 2
 SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
 #endif
+#if SSS_ACCUMULATE
+SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
+#endif
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
 uniform int u_tap_count;
+#if SSS_JITTER
+uniform float u_jitter[SSS_MAX_TAPS];  // per tap: its cell width in profile mm when jittered, else 0
+#endif
+#if SSS_FOLLOW_SURFACE == 2
+uniform float u_inv_two_variance;      // 1 / (2v) of the term's depth Gaussian, v in mm²
+#endif
 uniform vec2 u_axis;                  // (1, 0) or (0, 1)
 uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
-uniform float u_follow_surface;       // 1 / the kernel's reach in world units
+uniform float u_follow_surface;       // 1 / the kernel's reach in world units (SSS_FOLLOW_SURFACE 2: 1 / world units per mm)
 uniform vec2 u_ndc_from_depth;        // z_ndc = depth · x + y
 uniform vec4 u_depth_terms;           // projection m10, m11, m14, m15
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
@@ -58,6 +74,20 @@ float depth_at(vec2 position, vec2 texel_size) {
 #endif
 }
 
+#if SSS_JITTER
+// The jitter noise in [0, 1): must equal sss::math::jitter_noise (module/src/math/pass_kernel.cpp)
+// bit for bit, which 32-bit uint arithmetic guarantees.
+float jitter_noise(ivec2 pixel, int axis) {
+  uint h = uint(pixel.x) * 0x8da6b343u ^ uint(pixel.y) * 0xd8163841u ^ uint(axis + 1) * 0xcb1ab31fu;
+  h ^= h >> 16u;
+  h *= 0x7feb352du;
+  h ^= h >> 15u;
+  h *= 0x846ca68bu;
+  h ^= h >> 16u;
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
+#endif
+
 void leave_untouched(ivec2 pixel, vec4 centre) {
 #if SSS_OUTSIDE == 0
   o_color = centre;
@@ -87,21 +117,37 @@ void main() {
   vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
+#if SSS_JITTER
+  float shift = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0) - 0.5;
+#endif
   vec3 sum = centre.rgb * u_kernel[0].rgb;
   for (int i = 1; i < u_tap_count; ++i) {
-    vec2 position = clamp(gl_FragCoord.xy + u_axis * (u_kernel[i].a * step_pixels), u_clamp.xy, u_clamp.zw);
+#if SSS_JITTER
+    float offset = u_kernel[i].a + shift * u_jitter[i];
+#else
+    float offset = u_kernel[i].a;
+#endif
+    vec2 position = clamp(gl_FragCoord.xy + u_axis * (offset * step_pixels), u_clamp.xy, u_clamp.zw);
     vec2 uv = position * texel_size;
     vec3 tap = texture(u_source, uv).rgb;
     // A non-finite neighbour must not spread: it counts as the centre's colour (its weight goes to
     // the centre), like a tap across a depth step.
     if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
 #if SSS_FOLLOW_SURFACE
-    float s = follow_surface * abs(centre_distance - view_distance(depth_at(position, texel_size)));
+    float d = follow_surface * abs(centre_distance - view_distance(depth_at(position, texel_size)));
+#if SSS_FOLLOW_SURFACE == 2
+    float s = 1.0 - exp(-d * d * u_inv_two_variance);
+#else
+    float s = d;
+#endif
     if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
     tap = mix(tap, centre.rgb, s);
 #endif
     sum += u_kernel[i].rgb * tap;
   }
+#if SSS_ACCUMULATE
+  sum += texelFetch(u_accumulated, pixel, 0).rgb;
+#endif
 #if SSS_OUTSIDE == 2
   o_color = vec4(sum, texelFetch(u_original, pixel, 0).a);
 #else

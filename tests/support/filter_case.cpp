@@ -5,6 +5,7 @@
 
 #include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
+#include "math/pass_kernel.hpp"
 #include "math/separable_kernel.hpp"
 
 using namespace host_gl;
@@ -33,6 +34,37 @@ void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame
   frame->normal_format = frame->normal_texture != 0 ? GL_RGBA32F : 0;
   frame->texture_width = width;
   frame->texture_height = height;
+}
+
+sss::math::KernelPlan plan_for(const sss_settings& settings) {
+  sss_kernel_desc desc = settings.kernel;
+  desc.taps = settings.samples;
+  for (int c = 0; c < 3; ++c) {
+    desc.strength[c] = settings.strength[c];
+    desc.falloff[c] = settings.falloff[c];
+  }
+  const auto taps = static_cast<std::size_t>(desc.taps);
+  std::vector<float> packed(SSS_KERNEL_MAX_TERMS * 2 * taps * 4);
+  std::array<float, SSS_KERNEL_MAX_TERMS> variance{};
+  int32_t terms = 0;
+  float reach = 0.0f;
+  const sss_result r = sss_kernel_plan(&desc, SSS_KERNEL_MAX_TERMS, packed.data(), variance.data(), &terms, &reach);
+  EXPECT_EQ(r, SSS_OK) << sss_last_error(nullptr);
+  sss::math::KernelPlan plan;
+  for (int32_t t = 0; t < terms && r == SSS_OK; ++t) {
+    sss::math::SeparableTerm term;
+    for (std::size_t pass = 0; pass < 2; ++pass) {
+      auto& out = pass == 0 ? term.horizontal : term.vertical;
+      for (std::size_t i = 0; i < taps; ++i) {
+        const float* q = &packed[((static_cast<std::size_t>(t) * 2 + pass) * taps + i) * 4];
+        out.push_back(sss::math::KernelTap{{q[0], q[1], q[2]}, q[3]});
+      }
+    }
+    term.depth_variance_mm2 = variance[static_cast<std::size_t>(t)];
+    plan.terms.push_back(std::move(term));
+  }
+  plan.reach_mm = reach;
+  return plan;
 }
 
 FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const FilterCase& c) {
@@ -102,8 +134,9 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
                                   : std::array<int, 4>{c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]};
   g.depth = c.depth == DepthKind::linear_r32f ? sss::math::DepthEncoding::linear_distance
                                               : sss::math::DepthEncoding::hardware_minus_one_to_one;
-  const auto constants = sss::math::compute_pass_constants(fs, scene.projection, g);
-  const auto kernel = sss::math::separable_kernel(fs.samples, fs.strength, fs.falloff);
+  // The kernel through the public GL-free API (sss_kernel_plan), shaped for the passes by the math layer.
+  const sss::math::PassKernel kernel = sss::math::make_pass_kernel(plan_for(c.settings), c.settings.jitter);
+  const auto constants = sss::math::compute_pass_constants(fs, scene.projection, g, kernel.reach_mm);
   sss::math::CpuFilterImage image;
   image.width = w;
   image.height = h;
@@ -111,6 +144,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.depth = stored_depth.data();
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.output_is_half = c.half_color && !c.separate_output;
+  image.accumulator_is_half = is_gles();  // the module sums terms in RGBA16F there
   outcome.cpu.resize(outcome.input.size());
   if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(c.settings.cbf_profile),
@@ -119,7 +153,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
                               c.normals.empty() ? nullptr : c.normals.data());
   } else {
-    sss::math::cpu_separable_filter(kernel, constants, image, outcome.cpu.data());
+    sss::math::cpu_pass_kernel_filter(kernel, constants, image, outcome.cpu.data());
   }
   if (c.separate_output && c.viewport[2] != 0) {
     // Outside the viewport a separate output keeps what it held.

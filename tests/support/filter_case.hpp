@@ -7,6 +7,7 @@
 
 #include "gl_fixture.hpp"
 #include "math/filter_constants.hpp"
+#include "math/kernel_plan.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sss_test {
@@ -33,6 +34,10 @@ struct FilterOutcome {
 // Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|) (equal values,
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
+
+// The kernel the settings select (settings.kernel with samples, strength, falloff), from the public
+// sss_kernel_plan: what the CPU model runs.
+sss::math::KernelPlan plan_for(const sss_settings& settings);
 
 // Fills the frame's texture description (formats and size) for the textures run_case makes; run_case
 // does it on OpenGL ES, which cannot be asked.

@@ -53,45 +53,12 @@
 #ifndef SSS_SSS_H
 #define SSS_SSS_H
 
-#include <stddef.h>
-#include <stdint.h>
+#include "sss_common.h"
+#include "sss_kernels.h" /* the kernel families and profiles (GL-free): sss_kernel_desc, ... */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-#if defined(_WIN32) && defined(SSS_SHARED)
-#  ifdef SSS_BUILDING
-#    define SSS_API __declspec(dllexport)
-#  else
-#    define SSS_API __declspec(dllimport)
-#  endif
-#elif defined(__GNUC__) && defined(SSS_SHARED)
-#  define SSS_API __attribute__((visibility("default")))
-#else
-#  define SSS_API
-#endif
-
-#define SSS_VERSION_MAJOR 0
-#define SSS_VERSION_MINOR 1
-#define SSS_VERSION_PATCH 0
-
-/** Status codes. Every failing call also leaves a message naming the bad argument and its value,
- *  readable with sss_last_error(). */
-typedef enum sss_result {
-  SSS_OK = 0,
-  SSS_ERROR_INVALID_ARGUMENT,     /**< a pointer, number or flag outside its documented range */
-  SSS_ERROR_UNSUPPORTED,          /**< valid, but not supported (GL version, projection kind) */
-  SSS_ERROR_GL_FUNCTION_MISSING,  /**< get_proc_address gave no pointer for a needed function */
-  SSS_ERROR_SHADER_COMPILE,       /**< an embedded shader did not compile or link (driver log in the message) */
-  SSS_ERROR_FRAMEBUFFER,          /**< a framebuffer the module built is incomplete */
-  SSS_ERROR_INVALID_TEXTURE,      /**< not a texture name, wrong target, format or size */
-  SSS_ERROR_OUT_OF_MEMORY,        /**< host or GL allocation failed */
-  SSS_ERROR_GL,                   /**< the GL raised an error inside the module's work */
-  SSS_ERROR_NO_CONTEXT,           /**< no GL context is current on this thread, or the current one does not hold
-                                       the module's objects (the one it was created in was lost or destroyed) */
-  SSS_ERROR_INVALID_OPERATION     /**< call order: e.g. sss_apply before sss_set_camera */
-} sss_result;
 
 /** Loader callback: return the address of the GL function `name` ("glDrawArrays"), or NULL.
  *  OSMesaGetProcAddress, eglGetProcAddress and glfwGetProcAddress all fit (wrap them to add
@@ -130,16 +97,11 @@ typedef struct sss_create_desc {
 /* Flags for sss_settings.flags. */
 /** Follow-surface test (paper §3.2): a tap is blended back towards the centre colour in proportion
  *  to its depth difference from the centre, fully once that difference reaches the kernel's reach
- *  (its range R in profile millimetres, scaled like the taps by width and the pixel's alpha). */
+ *  (its largest tap offset in profile millimetres, scaled like the taps by width and the pixel's
+ *  alpha). The artist family (SSS_KERNEL_ARTIST) blends by its exact depth correction instead:
+ *  1 - exp(-dz²/2τ_max), dz in profile millimetres (supplementary §E). */
 #define SSS_FOLLOW_SURFACE 0x1u
 #define SSS_SETTINGS_ALL_FLAGS 0x1u
-
-/* Tap-count presets (any odd count in [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES] is accepted). */
-#define SSS_SAMPLES_LOW 11
-#define SSS_SAMPLES_MEDIUM 17 /**< the paper's default */
-#define SSS_SAMPLES_HIGH 25
-#define SSS_MIN_SAMPLES 3
-#define SSS_MAX_SAMPLES 65
 
 /* Filter modes for sss_settings.mode. */
 /** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
@@ -182,6 +144,21 @@ typedef struct sss_settings {
   uint32_t cbf_profile; /**< SSS_PROFILE_MIKKELSEN_2010 (default) or an sss_material in [SSS_MATERIAL_SKIN,
                              SSS_MATERIAL_WHOLEMILK] (see sss_profile_transmittance_terms for how each is
                              expressed; a measured material costs a fit, up to ~0.1 s, when first selected) */
+  /* Appended in 0.1 for the kernel families of sss_kernels.h (read by SSS_MODE_SEPARABLE only). */
+  sss_kernel_desc kernel; /**< the kernel the passes run, one horizontal and one vertical pass per term
+                               (sss_kernel_plan). Default SSS_KERNEL_SEPARABLE: the paper's eq. (1) from
+                               strength and falloff above. kernel.taps, .strength and .falloff are never read:
+                               samples, strength and falloff above are the filter's, for every family (strength
+                               applies to eq. (1) alone; the other families scatter all light their profile
+                               does). Every other field is checked against its range on sss_kernel_desc, whatever
+                               the family. A tabulated profile's table is copied (the pointers need not outlive the
+                               call; sss_get_settings returns pointers to the context's copy, valid until the
+                               next sss_set_settings). The fitted families (guided; sum of Gaussians of a
+                               measured material) run an optimiser when first selected: up to ~0.3 s */
+  float jitter;           /**< [0, 1], finite: the share of each pass's taps, the outermost, whose position moves
+                               per pixel within the cell it stands for, by deterministic noise (supplementary
+                               Fig. S.6-S.7 use 0.33): turns the banding of few taps into fine noise, with no
+                               temporal filter. Default 0 */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
@@ -339,13 +316,15 @@ SSS_API void sss_default_settings(sss_settings *s);
 /** Width for a scene whose world unit is `world_units_per_mm` per millimetre (1.5 × it). */
 SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
 
-/** Validates and takes the settings; the kernel is rebuilt only when they change. Does not call GL.
+/** Validates and takes the settings; a kernel is rebuilt only when its inputs change. Does not call GL.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
- *                                     mode, cbf_taps, cbf_r_max_mm or cbf_profile outside the ranges on
- *                                     sss_settings (every field is checked, whatever the mode); the old
- *                                     settings stay
- *  @retval SSS_ERROR_OUT_OF_MEMORY    building the cross-bilateral kernel of a measured material (cbf_profile)
+ *                                     mode, cbf_taps, cbf_r_max_mm, cbf_profile, jitter or a field of kernel
+ *                                     (any but taps, strength and falloff, which are not read) outside
+ *                                     its range (every field is checked, whatever the mode and family); a
+ *                                     profile that integrates to 0 in a channel for a family that needs its
+ *                                     energy; the old settings stay
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    building a kernel (a measured material's fit, the cross-bilateral kernel)
  *                                     could not allocate; the old settings stay */
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
 
@@ -435,8 +414,5 @@ SSS_API sss_result sss_kernel_separable(int32_t samples, const float strength[3]
 #ifdef __cplusplus
 }
 #endif
-
-/* The kernel families and profiles (GL-free): sss_kernel_plan, sss_profile_evaluate, ... */
-#include "sss_kernels.h"
 
 #endif /* SSS_SSS_H */

@@ -18,7 +18,7 @@
 #ifndef SSS_SSS_KERNELS_H
 #define SSS_SSS_KERNELS_H
 
-#include "sss.h"
+#include "sss_common.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -160,5 +160,9 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_
 #ifdef __cplusplus
 }
 #endif
+
+/* The rest of the API (sss_last_error, sss_settings, which embeds sss_kernel_desc): included last so
+ * that either header may be included first. */
+#include "sss.h"
 
 #endif /* SSS_SSS_KERNELS_H */

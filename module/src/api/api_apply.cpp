@@ -197,7 +197,10 @@ sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint3
 // Width 0 or no strength in any channel: the filter is the identity, so nothing is drawn unless a
 // separate output must receive the colour.
 bool is_identity(const sss::math::FilterSettings& s) {
-  return s.width == 0.0f || (s.strength[0] == 0.0f && s.strength[1] == 0.0f && s.strength[2] == 0.0f);
+  if (s.width == 0.0f) return true;
+  // Strength applies to eq. (1) alone (the separable family); the others scatter what their profile does.
+  return s.kernel.family == sss::math::KernelFamily::separable && s.strength[0] == 0.0f && s.strength[1] == 0.0f &&
+         s.strength[2] == 0.0f;
 }
 
 }  // namespace
@@ -244,11 +247,12 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   geometry.depth = depth_encoding(run.depth, frame->flags);
   if (run.color.multisampled()) {
     // The resolve reads the host's encoding; the passes read the resolved linear distance.
-    run.resolve_constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry);
+    run.resolve_constants =
+        sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry, ctx->kernel.reach_mm);
     geometry.depth = sss::math::DepthEncoding::linear_distance;
     run.depth_resolve = static_cast<gl::DepthResolve>(frame->msaa_depth_resolve);
   }
-  run.constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry);
+  run.constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry, ctx->kernel.reach_mm);
   run.kernel = &ctx->kernel;
   run.kernel_revision = ctx->kernel_revision;
   run.follow_surface = ctx->settings.follow_surface;

@@ -134,7 +134,8 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     if (!message.empty()) fail(nullptr, r, message);
     return r;
   }
-  ctx->kernel = sss::math::separable_kernel(ctx->settings.samples, ctx->settings.strength, ctx->settings.falloff);
+  ctx->kernel = sss::math::build_pass_kernel(ctx->settings);
+  sss_default_kernel_desc(&ctx->kernel_desc);
   char info[320];
   std::snprintf(info, sizeof info, "sss %d.%d.%d on OpenGL %s%d.%d, %s: shaders in %s%s", SSS_VERSION_MAJOR,
                 SSS_VERSION_MINOR, SSS_VERSION_PATCH, api.es ? "ES " : "", ctx->gl_major, ctx->gl_minor,

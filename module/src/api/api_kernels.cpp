@@ -13,119 +13,11 @@
 namespace {
 
 using sss::api::fail;
+using sss::api::check_kernel_desc;
+using sss::api::check_profile;
+using sss::api::to_request;
 
 bool finite_in(float v, float lo, float hi) { return std::isfinite(v) && v >= lo && v <= hi; }
-
-sss_result check_profile(const sss_profile_desc* p, const char* name) {
-  if (p == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
-  if (p->struct_size != sizeof(sss_profile_desc)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->struct_size = %u: expected sizeof(sss_profile_desc) = %u",
-                name, p->struct_size, static_cast<unsigned>(sizeof(sss_profile_desc)));
-  }
-  if (p->material < 0 || p->material >= SSS_MATERIAL_COUNT) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->material = %d: must be in [0, %d)", name, p->material,
-                SSS_MATERIAL_COUNT);
-  }
-  if (p->material == SSS_MATERIAL_SKIN && (p->gaussian_count < 1 || p->gaussian_count > 6)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->gaussian_count = %d: must be in [1, 6]", name,
-                p->gaussian_count);
-  }
-  if (p->material != SSS_MATERIAL_TABULATED) return SSS_OK;
-  if (p->table_size < 1 || p->table_size > SSS_PROFILE_MAX_TABLE) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->table_size = %d: must be in [1, %d]", name, p->table_size,
-                SSS_PROFILE_MAX_TABLE);
-  }
-  if (p->table_radius_mm == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->table_radius_mm is NULL", name);
-  if (p->table_rgb == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->table_rgb is NULL", name);
-  for (int32_t i = 0; i < p->table_size; ++i) {
-    const float r = p->table_radius_mm[i];
-    if (!finite_in(r, 0.0f, 1e30f) || (i > 0 && !(r > p->table_radius_mm[i - 1]))) {
-      return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT,
-                  "%s->table_radius_mm[%d] = %g: must be finite, >= 0 and above the previous radius", name, i,
-                  static_cast<double>(r));
-    }
-    for (int c = 0; c < 3; ++c) {
-      const float v = p->table_rgb[i * 3 + c];
-      if (!finite_in(v, 0.0f, 1e30f)) {
-        return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s->table_rgb[%d] = %g: must be finite and >= 0", name,
-                    i * 3 + c, static_cast<double>(v));
-      }
-    }
-  }
-  return SSS_OK;
-}
-
-sss::math::ProfileRequest to_request(const sss_profile_desc& p) {
-  sss::math::ProfileRequest r;
-  if (p.material == SSS_MATERIAL_SKIN) {
-    r.material = sss::math::kProfileSkin;
-    r.gaussian_count = p.gaussian_count;
-  } else if (p.material == SSS_MATERIAL_TABULATED) {
-    r.material = sss::math::kProfileTable;
-    for (int32_t i = 0; i < p.table_size; ++i) {
-      r.table_radii_mm.push_back(p.table_radius_mm[i]);
-      r.table_values.push_back({p.table_rgb[i * 3], p.table_rgb[i * 3 + 1], p.table_rgb[i * 3 + 2]});
-    }
-  } else {
-    r.material = p.material - SSS_MATERIAL_APPLE;  // the math table starts at apple
-  }
-  return r;
-}
-
-sss_result check_positive3(const char* name, const float v[3]) {
-  for (int c = 0; c < 3; ++c) {
-    if (!(finite_in(v[c], 0.0f, 1e4f) && v[c] > 0.0f)) {
-      return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "%s[%d] = %g: must be in (0, 1e4]", name, c,
-                  static_cast<double>(v[c]));
-    }
-  }
-  return SSS_OK;
-}
-
-sss_result check_kernel_desc(const sss_kernel_desc* d) {
-  if (d == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
-  if (d->struct_size != sizeof(sss_kernel_desc)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_kernel_desc) = %u",
-                d->struct_size, static_cast<unsigned>(sizeof(sss_kernel_desc)));
-  }
-  if (d->family < 0 || d->family >= SSS_KERNEL_FAMILY_COUNT) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->family = %d: must be in [0, %d)", d->family,
-                SSS_KERNEL_FAMILY_COUNT);
-  }
-  if (d->taps < SSS_MIN_SAMPLES || d->taps > SSS_MAX_SAMPLES || d->taps % 2 == 0) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->taps = %d: must be odd and in [%d, %d]", d->taps,
-                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
-  }
-  if ((d->flags & ~SSS_KERNEL_ALL_FLAGS) != 0u) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x: unknown bits 0x%x", d->flags,
-                d->flags & ~SSS_KERNEL_ALL_FLAGS);
-  }
-  switch (d->family) {
-    case SSS_KERNEL_SEPARABLE: {
-      sss_result r = sss::api::check_unit_range(nullptr, "desc->strength", d->strength);
-      return r == SSS_OK ? sss::api::check_unit_range(nullptr, "desc->falloff", d->falloff) : r;
-    }
-    case SSS_KERNEL_ARTIST: {
-      sss_result r = check_positive3("desc->near_variance_mm2", d->near_variance_mm2);
-      if (r == SSS_OK) r = check_positive3("desc->far_variance_mm2", d->far_variance_mm2);
-      return r == SSS_OK ? sss::api::check_unit_range(nullptr, "desc->near_weight", d->near_weight) : r;
-    }
-    default:
-      break;
-  }
-  if ((d->family == SSS_KERNEL_SUM_OF_GAUSSIANS || d->family == SSS_KERNEL_SVD) && (d->rank < 1 || d->rank > 6)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->rank = %d: must be in [1, 6]", d->rank);
-  }
-  if (d->family == SSS_KERNEL_GUIDED && !finite_in(d->guide_k, 0.0f, 4.0f)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->guide_k = %g: must be in [0, 4]",
-                static_cast<double>(d->guide_k));
-  }
-  if (!finite_in(d->radius_mm, 0.0f, 1e4f)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->radius_mm = %g: must be 0 or in (0, 1e4]",
-                static_cast<double>(d->radius_mm));
-  }
-  return check_profile(&d->profile, "desc->profile");
-}
 
 }  // namespace
 
@@ -167,7 +59,7 @@ SSS_API const char* sss_material_name(int32_t material) {
 
 SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t count, const float* radius_mm,
                                         float* out_rgb) {
-  sss_result r = check_profile(profile, "profile");
+  sss_result r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (count < 1 || count > 100000000) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count = %d: must be in [1, 1e8]", count);
@@ -195,7 +87,7 @@ SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t
 }
 
 SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float out_rgb[3]) {
-  sss_result r = check_profile(profile, "profile");
+  sss_result r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (out_rgb == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_rgb is NULL");
   try {
@@ -211,28 +103,14 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float o
 
 SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* desc, int32_t max_terms, float* out_taps,
                                    float* out_depth_variance_mm2, int32_t* out_terms, float* out_reach_mm) {
-  sss_result r = check_kernel_desc(desc);
+  sss_result r = check_kernel_desc(nullptr, desc, "desc->", false);
   if (r != SSS_OK) return r;
   if (out_taps == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_taps is NULL");
   if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
   if (max_terms < 1) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "max_terms = %d: must be >= 1", max_terms);
   sss::math::KernelPlan plan;
   try {
-    sss::math::KernelRequest q;
-    q.family = static_cast<sss::math::KernelFamily>(desc->family);
-    q.taps = desc->taps;
-    q.rank = desc->rank;
-    q.rescale_energy = (desc->flags & SSS_KERNEL_SVD_NO_RESCALE) == 0u;
-    q.guide_k = desc->guide_k;
-    q.radius_mm = desc->radius_mm;
-    for (std::size_t c = 0; c < 3; ++c) {
-      q.strength[c] = desc->strength[c];
-      q.falloff[c] = desc->falloff[c];
-      q.artist.near_variance_mm2[c] = desc->near_variance_mm2[c];
-      q.artist.far_variance_mm2[c] = desc->far_variance_mm2[c];
-      q.artist.near_weight[c] = desc->near_weight[c];
-    }
-    q.profile = to_request(desc->profile);
+    sss::math::KernelRequest q = sss::api::to_kernel_request(*desc);
     if (desc->family != SSS_KERNEL_SEPARABLE && desc->family != SSS_KERNEL_ARTIST) {
       // A kernel normalises each channel by the profile's energy: none there, no kernel.
       const auto total = sss::math::make_profile(q.profile)->integral();

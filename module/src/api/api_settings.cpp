@@ -23,6 +23,8 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.cbf_taps = s.cbf_taps;
   f.cbf_r_max_mm = s.cbf_r_max_mm;
   f.cbf_profile = s.cbf_profile;
+  f.kernel = sss::api::to_kernel_request(s.kernel);
+  f.jitter = s.jitter;
   return f;
 }
 
@@ -38,6 +40,21 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
   s->cbf_taps = f.cbf_taps;
   s->cbf_r_max_mm = f.cbf_r_max_mm;
   s->cbf_profile = f.cbf_profile;
+  s->jitter = f.jitter;
+}
+
+// A family that normalises by the profile's energy needs some in every channel (as sss_kernel_plan).
+sss_result check_profile_energy(sss_context* ctx, const sss::math::KernelRequest& k) {
+  if (k.family == sss::math::KernelFamily::separable || k.family == sss::math::KernelFamily::artist) return SSS_OK;
+  const auto total = sss::math::make_profile(k.profile)->integral();
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (!(total[c] > 0.0)) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "settings->kernel.profile: channel %d integrates to %g; a kernel needs a positive integral",
+                  static_cast<int>(c), total[c]);
+    }
+  }
+  return SSS_OK;
 }
 
 static_assert(sss::math::kMikkelsenProfileId == SSS_PROFILE_MIKKELSEN_2010, "one value in sss_kernels.h and the math");
@@ -54,6 +71,7 @@ SSS_API void sss_default_settings(sss_settings* s) {
   std::memset(s, 0, sizeof *s);
   s->struct_size = sizeof *s;
   from_filter_settings(d, s);
+  sss_default_kernel_desc(&s->kernel);
 }
 
 SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm) { return 1.5f * world_units_per_mm; }
@@ -81,12 +99,33 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
     ctx->cbf_kernel_profile = next.cbf_profile;
     ++ctx->cbf_kernel_revision;
   }
-  const sss::math::FilterSettings& old = ctx->settings;
-  const bool kernel_changed = next.samples != old.samples || next.strength != old.strength || next.falloff != old.falloff;
-  ctx->settings = next;
-  if (kernel_changed) {
-    ctx->kernel = sss::math::separable_kernel(next.samples, next.strength, next.falloff);
+  // The separable mode's kernel, rebuilt only when what it is built from changes (a fitted family
+  // runs an optimiser); built before anything is replaced, so a failure keeps the old settings.
+  if (!sss::math::same_pass_kernel_inputs(next, ctx->settings)) {
+    try {
+      sss_result r2 = check_profile_energy(ctx, next.kernel);
+      if (r2 != SSS_OK) return r2;
+      ctx->kernel = sss::math::build_pass_kernel(next);
+    } catch (const std::bad_alloc&) {
+      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
+                  s->kernel.family);
+    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", s->kernel.family, e.what());
+    }
     ++ctx->kernel_revision;
+  }
+  ctx->settings = next;
+  // What sss_get_settings gives back: the desc as given, its table pointing at the context's copy.
+  ctx->kernel_desc = s->kernel;
+  const sss_profile_desc& profile = s->kernel.profile;
+  if (profile.material == SSS_MATERIAL_TABULATED) {
+    ctx->table_radius_mm.assign(profile.table_radius_mm, profile.table_radius_mm + profile.table_size);
+    ctx->table_rgb.assign(profile.table_rgb, profile.table_rgb + 3 * static_cast<std::size_t>(profile.table_size));
+    ctx->kernel_desc.profile.table_radius_mm = ctx->table_radius_mm.data();
+    ctx->kernel_desc.profile.table_rgb = ctx->table_rgb.data();
+  } else {
+    ctx->table_radius_mm.clear();
+    ctx->table_rgb.clear();
   }
   return SSS_OK;
 }
@@ -100,6 +139,7 @@ SSS_API sss_result sss_get_settings(const sss_context* ctx, sss_settings* s) {
                 static_cast<unsigned>(sizeof(sss_settings)));
   }
   from_filter_settings(ctx->settings, s);
+  s->kernel = ctx->kernel_desc;
   return SSS_OK;
 }
 

@@ -12,6 +12,7 @@
 #include "../math/lut_cache.hpp"
 #include "../math/projection.hpp"
 #include "../math/cbf_kernel.hpp"
+#include "../math/pass_kernel.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
 
@@ -27,8 +28,11 @@ struct sss_context {
   bool es_float_render = false, es_float_linear = false;
 
   sss::math::FilterSettings settings;
-  std::vector<sss::math::KernelTap> kernel;
+  sss::math::PassKernel kernel;        // what the separable mode's passes run (settings.kernel, jitter)
   std::uint64_t kernel_revision = 1;
+  sss_kernel_desc kernel_desc{};       // settings.kernel as given, for sss_get_settings; its table pointers
+  std::vector<float> table_radius_mm;  // point at these copies
+  std::vector<float> table_rgb;
   sss::math::CbfKernel cbf_kernel;  // built for cbf_kernel_profile and its own taps / r_max
   unsigned cbf_kernel_profile = 0;
   std::uint64_t cbf_kernel_revision = 1;

@@ -62,7 +62,11 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
                 "settings->cbf_profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]",
                 s->cbf_profile, SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
   }
-  return SSS_OK;
+  if (!(s->jitter >= 0.0f && s->jitter <= 1.0f)) {  // also rejects NaN
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->jitter = %g: must be finite and in [0, 1]",
+                static_cast<double>(s->jitter));
+  }
+  return check_kernel_desc(ctx, &s->kernel, "settings->kernel.", true);
 }
 
 sss_result check_frame(sss_context* ctx, const sss_frame* frame) {

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "../math/kernel_request.hpp"
 #include "context.hpp"
 #include "sss/sss_lut.h"
 
@@ -15,6 +16,15 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s);
 sss_result check_frame(sss_context* ctx, const sss_frame* frame);
 // The optional texture description of sss_frame (formats in their lists, sizes both 0 or both > 0).
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame);
+
+// sss_profile_desc and sss_kernel_desc (kernel_desc.cpp). `name` is how the fields are reached in
+// messages: check_profile's the struct itself ("profile"), check_kernel_desc's a prefix ("desc->",
+// "settings->kernel."). in_settings: the desc embedded in sss_settings, whose taps, strength and
+// falloff are not read (the settings' own are).
+sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char* name);
+sss_result check_kernel_desc(sss_context* ctx, const sss_kernel_desc* d, const char* name, bool in_settings);
+sss::math::ProfileRequest to_request(const sss_profile_desc& p);
+sss::math::KernelRequest to_kernel_request(const sss_kernel_desc& d);
 
 // Which fields of an sss_lut_desc a call uses: the diffuse or the shadow ones, and the format.
 struct LutUse {

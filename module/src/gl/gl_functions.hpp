@@ -87,6 +87,7 @@ using GLubyte = unsigned char;
   X(GLint, GetUniformLocation, (GLuint program, const GLchar* name))                                   \
   X(void, Uniform1i, (GLint location, GLint v0))                                                       \
   X(void, Uniform1f, (GLint location, GLfloat v0))                                                     \
+  X(void, Uniform1fv, (GLint location, GLsizei count, const GLfloat* value))                           \
   X(void, Uniform2f, (GLint location, GLfloat v0, GLfloat v1))                                         \
   X(void, Uniform4f, (GLint location, GLfloat v0, GLfloat v1, GLfloat v2, GLfloat v3))                 \
   X(void, Uniform4fv, (GLint location, GLsizei count, const GLfloat* value))                           \

@@ -11,7 +11,7 @@
 namespace sss::gl {
 
 namespace {
-constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3;
+constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3, kAccumulatedUnit = 3;
 
 // A tag in [1025, 1025 + 2^20), exact in float, different for each init() in the process (modulo
 // 2^20). It is stored as the sampler's GL_TEXTURE_MAX_LOD, which has no effect here: the sampler
@@ -42,11 +42,12 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
 
   f.GenVertexArrays(1, &vertex_array_);
   // A framebuffer name becomes an object on first bind; the caller's StateGuard restores bindings.
-  GLuint framebuffers[3] = {0, 0, 0};
-  f.GenFramebuffers(3, framebuffers);
+  GLuint framebuffers[4] = {0, 0, 0, 0};
+  f.GenFramebuffers(4, framebuffers);
   intermediate_framebuffer_ = framebuffers[0];
   output_framebuffer_ = framebuffers[1];
   stencil_source_framebuffer_ = framebuffers[2];
+  accumulator_framebuffer_ = framebuffers[3];
   for (GLuint fb : framebuffers) f.BindFramebuffer(FRAMEBUFFER, fb);
   f.BindVertexArray(vertex_array_);
   // The stencil source is only ever read from, and has no colour.
@@ -74,6 +75,7 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
   label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
   label_object(f, labels_, FRAMEBUFFER, stencil_source_framebuffer_, "sss host stencil source");
+  label_object(f, labels_, FRAMEBUFFER, accumulator_framebuffer_, "sss sum of the kernel's terms");
   label_object(f, labels_, SAMPLER, sampler_, "sss bilinear clamp");
   label_object(f, labels_, SAMPLER, depth_sampler_, "sss depth clamp");
 
@@ -92,8 +94,11 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   // The variants every host uses (write back, follow-surface, hardware depth) are built now so a
   // driver that cannot compile them fails in sss_create rather than in the first frame.
   BlurProgram* unused = nullptr;
-  sss_result r = blur_program(Outside::write_centre, true, false, &unused, message);
-  if (r == SSS_OK) r = blur_program(Outside::discard, true, false, &unused, message);
+  BlurVariant common;
+  common.follow_surface = 1;
+  sss_result r = blur_program(common, &unused, message);
+  common.outside = Outside::discard;
+  if (r == SSS_OK) r = blur_program(common, &unused, message);
   return r;
 }
 
@@ -111,9 +116,13 @@ void SeparableFilter::destroy() {
   if (masked_source_ != 0) f.DeleteTextures(1, &masked_source_);
   if (masked_framebuffer_ != 0) f.DeleteFramebuffers(1, &masked_framebuffer_);
   if (copy_program_ != 0) f.DeleteProgram(copy_program_);
-  GLuint framebuffers[3] = {intermediate_framebuffer_, output_framebuffer_, stencil_source_framebuffer_};
-  f.DeleteFramebuffers(3, framebuffers);
+  GLuint framebuffers[4] = {intermediate_framebuffer_, output_framebuffer_, stencil_source_framebuffer_,
+                            accumulator_framebuffer_};
+  f.DeleteFramebuffers(4, framebuffers);
   if (intermediate_ != 0) f.DeleteTextures(1, &intermediate_);
+  for (GLuint& t : accumulators_) {
+    if (t != 0) f.DeleteTextures(1, &t);
+  }
   if (stencil_buffer_ != 0) f.DeleteRenderbuffers(1, &stencil_buffer_);
   GLuint samplers[2] = {sampler_, depth_sampler_};
   f.DeleteSamplers(2, samplers);
@@ -160,19 +169,34 @@ sss_result SeparableFilter::rebuild(std::string* message) {
   return r;
 }
 
-sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
-                                         std::string* message) {
-  const int index = (static_cast<int>(outside) * 2 + (follow_surface ? 1 : 0)) * 2 + (linear_depth ? 1 : 0);
+SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run, std::size_t term, int axis,
+                                                          Outside outside) const {
+  const math::PassTerm& t = run.kernel->terms[term];
+  const math::PassTaps& taps = axis == 0 ? t.horizontal : t.vertical;
+  BlurVariant v;
+  v.outside = outside;
+  v.follow_surface = !run.follow_surface ? 0 : (t.depth_variance_mm2 > 0.0f ? 2 : 1);
+  v.linear_depth = run.constants.linear_depth;
+  v.jitter = !taps.jitter_mm.empty();
+  v.accumulate = axis == 1 && term > 0;
+  return v;
+}
+
+sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out, std::string* message) {
+  const int index =
+      (((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 + (v.jitter ? 1 : 0)) *
+          2 +
+      (v.accumulate ? 1 : 0);
   BlurProgram& p = blur_programs_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
 
-  char defines[160];
+  char defines[256];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_MAX_TAPS %d\n",
-                static_cast<int>(outside), follow_surface ? 1 : 0, linear_depth ? 1 : 0,
-                static_cast<int>(SSS_MAX_SAMPLES));
+                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
   std::string log;
   const Functions& f = *gl_;
   p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::separable_blur_frag, &log);
@@ -180,16 +204,20 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
     *message = "separable blur shader (" + std::string(defines) + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  char label[64];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d", static_cast<int>(outside),
-                follow_surface ? 1 : 0, linear_depth ? 1 : 0);
+  char label[96];
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                v.accumulate ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
+  p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
   p.kernel = f.GetUniformLocation(p.program, "u_kernel");
   p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
+  p.jitter = f.GetUniformLocation(p.program, "u_jitter");
+  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
   p.axis = f.GetUniformLocation(p.program, "u_axis");
   p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
   p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");
@@ -202,6 +230,7 @@ sss_result SeparableFilter::blur_program(Outside outside, bool follow_surface, b
     f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
     f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
     if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+    if (p.accumulated >= 0) f.Uniform1i(p.accumulated, static_cast<GLint>(kAccumulatedUnit));
   }
   return SSS_OK;
 }
@@ -297,34 +326,60 @@ sss_result SeparableFilter::ensure_masked_source(GLint format, int width, int he
   return SSS_OK;
 }
 
-sss_result SeparableFilter::ensure_intermediate(int width, int height, std::string* message) {
-  if (intermediate_ != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
+sss_result SeparableFilter::allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width,
+                                            int height, const char* what, std::string* message) {
   const Functions& f = *gl_;
-  if (intermediate_ == 0) f.GenTextures(1, &intermediate_);
+  if (*texture == 0) f.GenTextures(1, texture);
   f.ActiveTexture(TEXTURE0);
-  f.BindTexture(TEXTURE_2D, intermediate_);
+  f.BindTexture(TEXTURE_2D, *texture);
   f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);  // NULL data must not read from a host buffer
   f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
-  f.TexImage2D(TEXTURE_2D, 0, static_cast<GLint>(RGBA16F), width, height, 0, RGBA, HALF_FLOAT, nullptr);
+  f.TexImage2D(TEXTURE_2D, 0, static_cast<GLint>(internal_format), width, height, 0, RGBA, type, nullptr);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d RGBA16F intermediate target failed: %s", width,
-                  height, error_name(error).c_str());
+    char buffer[192];
+    std::snprintf(buffer, sizeof buffer, "allocating the %dx%d %s failed: %s", width, height, what,
+                  error_name(error).c_str());
     *message = buffer;
-    f.DeleteTextures(1, &intermediate_);
-    intermediate_ = 0;
-    intermediate_width_ = intermediate_height_ = 0;
+    f.DeleteTextures(1, texture);
+    *texture = 0;
     return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
   }
-  label_object(f, labels_, TEXTURE, intermediate_, "sss intermediate (horizontal pass)");
-  char note_text[96];
-  std::snprintf(note_text, sizeof note_text, "allocated the %dx%d RGBA16F intermediate target", width, height);
+  label_object(f, labels_, TEXTURE, *texture, (std::string("sss ") + what).c_str());
+  char note_text[160];
+  std::snprintf(note_text, sizeof note_text, "allocated the %dx%d %s", width, height, what);
   note(note_text);
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_intermediate(int width, int height, std::string* message) {
+  if (intermediate_ != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
+  intermediate_width_ = intermediate_height_ = 0;
+  const sss_result r =
+      allocate_target(&intermediate_, RGBA16F, HALF_FLOAT, width, height, "RGBA16F intermediate target", message);
+  if (r != SSS_OK) return r;
   intermediate_width_ = width;
   intermediate_height_ = height;
+  const Functions& f = *gl_;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, intermediate_, 0);
+  return SSS_OK;
+}
+
+sss_result SeparableFilter::ensure_accumulators(int width, int height, std::string* message) {
+  if (accumulators_[1] != 0 && accumulator_width_ == width && accumulator_height_ == height) return SSS_OK;
+  accumulator_width_ = accumulator_height_ = 0;
+  // RGBA32F keeps the sum of up to six terms at float precision; OpenGL ES may not render to it
+  // (GL_EXT_color_buffer_float), while every ES context the module accepts renders RGBA16F.
+  const bool es = gl_->api.es;
+  for (GLuint& t : accumulators_) {
+    const sss_result r = allocate_target(&t, es ? RGBA16F : RGBA32F, es ? HALF_FLOAT : FLOAT, width, height,
+                                         es ? "RGBA16F sum of the kernel's terms" : "RGBA32F sum of the kernel's terms",
+                                         message);
+    if (r != SSS_OK) return r;
+  }
+  accumulator_width_ = width;
+  accumulator_height_ = height;
   return SSS_OK;
 }
 
@@ -397,23 +452,30 @@ void SeparableFilter::set_stencil_test(const StencilInput* stencil, GLenum func)
   f.StencilMaskSeparate(FRONT_AND_BACK, 0);
 }
 
-void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, int axis) {
+void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
   const Functions& f = *gl_;
   const math::PassConstants& k = run.constants;
+  const math::PassTerm& t = run.kernel->terms[term];
+  const math::PassTaps& taps = axis == 0 ? t.horizontal : t.vertical;
   f.UseProgram(p.program);
-  if (p.kernel_revision != run.kernel_revision) {
+  if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
     std::vector<float> packed;
-    packed.reserve(run.kernel->size() * 4);
-    for (const math::KernelTap& tap : *run.kernel) {
+    packed.reserve(taps.taps.size() * 4);
+    for (const math::KernelTap& tap : taps.taps) {
       packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
     }
-    f.Uniform4fv(p.kernel, static_cast<GLsizei>(run.kernel->size()), packed.data());
-    f.Uniform1i(p.tap_count, static_cast<GLint>(run.kernel->size()));
+    f.Uniform4fv(p.kernel, static_cast<GLsizei>(taps.taps.size()), packed.data());
+    f.Uniform1i(p.tap_count, static_cast<GLint>(taps.taps.size()));
+    if (p.jitter >= 0) f.Uniform1fv(p.jitter, static_cast<GLsizei>(taps.jitter_mm.size()), taps.jitter_mm.data());
+    if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
     p.kernel_revision = run.kernel_revision;
+    p.uploaded_term = term;
+    p.uploaded_axis = axis;
   }
   f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
   f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
-  f.Uniform1f(p.follow_surface, k.follow_surface_factor);
+  // The Gaussian depth correction measures depth in profile millimetres; the ramp in reaches.
+  f.Uniform1f(p.follow_surface, p.inv_two_variance >= 0 ? k.mm_per_world : k.follow_surface_factor);
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
@@ -494,27 +556,33 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
   const Functions& f = *gl_;
   const int width = run.color.width, height = run.color.height;
   const bool write_back = run.output.name == 0;
-  const bool linear_depth = run.constants.linear_depth;
 
   if (run.identity) return run_identity(run, message);
   if (run.cross_bilateral) return run_cbf(run, message);
+  // One horizontal and one vertical pass per term. The vertical passes of all terms but the last
+  // write the running sum into the module's accumulators; the last adds that sum and writes the
+  // output. The host colour is only written by the very last draw, after every horizontal pass has
+  // read it, so it is never read and written at once.
+  const std::size_t terms = run.kernel->terms.size();
+  const Outside last_outside = write_back ? Outside::discard : Outside::copy_original;
   // Programs first: a variant that fails to build must not leave a new target behind.
-  BlurProgram* horizontal = nullptr;
-  BlurProgram* vertical = nullptr;
-  sss_result r = blur_program(Outside::write_centre, run.follow_surface, linear_depth, &horizontal, message);
-  if (r == SSS_OK) {
-    r = blur_program(write_back ? Outside::discard : Outside::copy_original, run.follow_surface, linear_depth,
-                     &vertical, message);
+  std::array<BlurProgram*, 2 * math::kMaxPlanTerms> programs{};
+  sss_result r = SSS_OK;
+  for (std::size_t t = 0; t < terms && r == SSS_OK; ++t) {
+    r = blur_program(blur_variant(run, t, 0, Outside::write_centre), &programs[2 * t], message);
+    const Outside outside = t + 1 == terms ? last_outside : Outside::write_centre;
+    if (r == SSS_OK) r = blur_program(blur_variant(run, t, 1, outside), &programs[2 * t + 1], message);
   }
   if (r != SSS_OK) return r;
   r = ensure_intermediate(width, height, message);
+  if (r == SSS_OK && terms > 1) r = ensure_accumulators(width, height, message);
   if (r != SSS_OK) return r;
 
   set_pass_state(f);
   f.BindVertexArray(vertex_array_);
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
 
-  // Attachments: the stencil copy goes on both targets, or comes off both.
+  // Attachments: the stencil copy goes on every target, or comes off every one.
   if (run.stencil != nullptr && !run.stencil_ready) {
     r = copy_stencil(*run.stencil, width, height, message);  // creates stencil_buffer_ on first use
     if (r != SSS_OK) return r;
@@ -524,6 +592,13 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
   r = check_framebuffer("horizontal pass", message);
   if (r != SSS_OK) return r;
+  if (terms > 1) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, accumulator_framebuffer_);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, accumulators_[0], 0);
+    f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
+    r = check_framebuffer("sum of the kernel's terms", message);
+    if (r != SSS_OK) return r;
+  }
   const GLuint output = write_back ? run.color.name : run.output.name;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
@@ -531,24 +606,39 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
   r = check_framebuffer("vertical pass", message);
 
   if (r == SSS_OK) {
+    // gpu_time_ms[0] spans everything before the last vertical pass (for one term: the horizontal
+    // pass), [1] that pass.
     const bool measured = measure_ && queries_.begin_frame(run.frame);
-    // Horizontal: host colour -> intermediate. Pixels the stencil excludes are copied so the
-    // vertical pass's taps find defined values there.
-    {
-      DebugGroup group(f, labels_, "sss horizontal pass");
-      if (measured) queries_.begin_pass(PassQueries::horizontal);
-      f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
-      set_stencil_test(run.stencil, EQUAL);
-      draw_blur(*horizontal, run, run.color.name, 0);
-      if (run.stencil != nullptr) {
-        set_stencil_test(run.stencil, NOTEQUAL);
-        draw_copy(run.color.name);
+    if (measured) queries_.begin_pass(PassQueries::horizontal);
+    for (std::size_t t = 0; t < terms; ++t) {
+      const bool last = t + 1 == terms;
+      // Horizontal: host colour -> intermediate. Pixels the stencil excludes are copied so the
+      // vertical pass's taps find defined values there.
+      {
+        DebugGroup group(f, labels_, terms > 1 ? "sss horizontal pass (one term)" : "sss horizontal pass");
+        f.BindFramebuffer(DRAW_FRAMEBUFFER, intermediate_framebuffer_);
+        set_stencil_test(run.stencil, EQUAL);
+        draw_blur(*programs[2 * t], run, run.color.name, t, 0);
+        if (run.stencil != nullptr) {
+          set_stencil_test(run.stencil, NOTEQUAL);
+          draw_copy(run.color.name);
+        }
+      }
+      f.ActiveTexture(TEXTURE0 + kAccumulatedUnit);
+      f.BindTexture(TEXTURE_2D, t > 0 ? accumulators_[(t - 1) % 2] : 0);
+      f.BindSampler(kAccumulatedUnit, depth_sampler_);  // texelFetch only; GL_NEAREST keeps ES RGBA32F complete
+      if (!last) {
+        // Vertical into the running sum (pixels outside the stencil are never read from it).
+        DebugGroup group(f, labels_, "sss vertical pass (one term, into the sum)");
+        f.BindFramebuffer(DRAW_FRAMEBUFFER, accumulator_framebuffer_);
+        f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, accumulators_[t % 2], 0);
+        set_stencil_test(run.stencil, EQUAL);
+        draw_blur(*programs[2 * t + 1], run, intermediate_, t, 1);
+        continue;
       }
       if (measured) queries_.end_pass(PassQueries::horizontal);
-    }
-    // Vertical: intermediate -> output. Writing back, the host colour is attached here, so it is
-    // bound to no unit, and alpha is masked off (it keeps the host's exact value).
-    {
+      // Vertical: intermediate -> output. Writing back, the host colour is attached here, so it is
+      // bound to no unit, and alpha is masked off (it keeps the host's exact value).
       DebugGroup group(f, labels_, "sss vertical pass");
       f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
       f.ActiveTexture(TEXTURE0 + kOriginalUnit);
@@ -560,7 +650,7 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
       // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
       // exactly the blurred ones; into a separate output every pixel the stencil lets through.
       if (measured) queries_.begin_pixels();
-      draw_blur(*vertical, run, intermediate_, 1);
+      draw_blur(*programs[2 * t + 1], run, intermediate_, t, 1);
       if (measured) queries_.end_pixels();
       if (run.stencil != nullptr && !write_back) {
         set_stencil_test(run.stencil, NOTEQUAL);

@@ -14,6 +14,7 @@
 #include "../math/cbf_constants.hpp"
 #include "../math/cbf_kernel.hpp"
 #include "../math/filter_constants.hpp"
+#include "../math/pass_kernel.hpp"
 #include "../math/separable_kernel.hpp"
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
@@ -39,7 +40,7 @@ struct FilterRun {
   TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
-  const std::vector<math::KernelTap>* kernel = nullptr;
+  const math::PassKernel* kernel = nullptr;  // one pair of passes per term
   std::uint64_t kernel_revision = 0;       // changes whenever the kernel does
   math::PassConstants constants;
   bool follow_surface = false;
@@ -95,13 +96,23 @@ class SeparableFilter {
 
  private:
   enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
+  // The separable blur's compile-time switches (separable_blur.frag).
+  struct BlurVariant {
+    Outside outside = Outside::write_centre;
+    int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
+    bool linear_depth = false, jitter = false, accumulate = false;
+  };
   struct BlurProgram {
     GLuint program = 0;
-    GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
-          follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1;
-    std::uint64_t kernel_revision = 0;  // 0: never uploaded
+    GLint source = -1, depth = -1, original = -1, accumulated = -1, kernel = -1, tap_count = -1, jitter = -1,
+          inv_two_variance = -1, axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1,
+          depth_terms = -1, clamp = -1;
+    // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
+    std::uint64_t kernel_revision = 0;
+    std::size_t uploaded_term = 0;
+    int uploaded_axis = -1;
   };
-  static constexpr int kVariantCount = 3 * 2 * 2;
+  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2;
   struct CbfProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
@@ -111,8 +122,9 @@ class SeparableFilter {
   };
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
-  sss_result blur_program(Outside outside, bool follow_surface, bool linear_depth, BlurProgram** out,
-                          std::string* message);
+  sss_result blur_program(const BlurVariant& v, BlurProgram** out, std::string* message);
+  // The variant of term `term`'s pass on `axis` (0 horizontal, 1 vertical) writing `outside`.
+  BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) const;
   sss_result run_identity(const FilterRun& run, std::string* message);
   sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
   sss_result run_cbf(const FilterRun& run, std::string* message);
@@ -153,10 +165,14 @@ class SeparableFilter {
   sss_result write_samples(const FilterRun& run, std::string* message);
   void destroy_msaa();
   sss_result ensure_intermediate(int width, int height, std::string* message);
+  // A colour texture the module owns, (re)allocated at this size and format; false with *message set.
+  sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
+                             const char* what, std::string* message);
+  sss_result ensure_accumulators(int width, int height, std::string* message);
   sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
   sss_result copy_stencil(const StencilInput& stencil, int width, int height, std::string* message);
   sss_result check_framebuffer(const char* which, std::string* message);
-  void draw_blur(BlurProgram& program, const FilterRun& run, GLuint source, int axis);
+  void draw_blur(BlurProgram& program, const FilterRun& run, GLuint source, std::size_t term, int axis);
   void draw_copy(GLuint source);
   void set_stencil_test(const StencilInput* stencil, GLenum func);
 
@@ -182,6 +198,11 @@ class SeparableFilter {
   GLint stencil_format_ = 0;
   int stencil_width_ = 0, stencil_height_ = 0;
   GLuint intermediate_framebuffer_ = 0, output_framebuffer_ = 0, stencil_source_framebuffer_ = 0;
+  // Kernels of several terms: the running sum of the earlier terms' vertical passes, ping-ponged
+  // between two targets (RGBA32F; RGBA16F on OpenGL ES, where RGBA32F may not be renderable).
+  std::array<GLuint, 2> accumulators_{};
+  int accumulator_width_ = 0, accumulator_height_ = 0;
+  GLuint accumulator_framebuffer_ = 0;
   // Cross-bilateral mode: its programs, and (with a stencil) an RGBA32F copy of the colour whose
   // alpha is 0 outside the stencil, so the horizontal pass can tell those neighbours apart.
   std::array<CbfProgram, kCbfVariantCount> cbf_programs_{};

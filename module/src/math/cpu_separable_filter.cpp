@@ -42,8 +42,9 @@ struct Plane {
 
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y). Returns false when the pixel is left
 // as it is (not translucent or no usable depth).
-bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, const Plane& source,
+bool filter_pixel(const PassTaps& pass, float depth_variance_mm2, const PassConstants& k, const Plane& source,
                   const Plane& depth, int axis, int x, int y, Rgba* result) {
+  const std::vector<KernelTap>& kernel = pass.taps;
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
   if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
@@ -53,19 +54,24 @@ bool filter_pixel(const std::vector<KernelTap>& kernel, const PassConstants& k, 
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
   const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
-  const float follow_surface = k.follow_surface_factor / strength;
+  const bool gaussian_depth = depth_variance_mm2 > 0.0f;
+  const float follow_surface = (gaussian_depth ? k.mm_per_world : k.follow_surface_factor) / strength;
+  const float inv_two_variance = gaussian_depth ? 0.5f / depth_variance_mm2 : 0.0f;
+  const float shift = pass.jitter_mm.empty() ? 0.0f : jitter_noise(x, y, axis) - 0.5f;
   Rgba sum = {centre[0] * kernel[0].weight[0], centre[1] * kernel[0].weight[1], centre[2] * kernel[0].weight[2],
               centre[3]};
   for (std::size_t i = 1; i < kernel.size(); ++i) {
     float px = cx, py = cy;
-    (axis == 0 ? px : py) += kernel[i].offset_mm * step;
+    const float offset = pass.jitter_mm.empty() ? kernel[i].offset_mm : kernel[i].offset_mm + shift * pass.jitter_mm[i];
+    (axis == 0 ? px : py) += offset * step;
     px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
     py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
     std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
     if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
     if (k.follow_surface_factor > 0.0f) {
       const float tap_distance = linearise_depth(k, depth.bilinear(px, py, 0));
-      float s = follow_surface * std::fabs(centre_distance - tap_distance);
+      const float d = follow_surface * std::fabs(centre_distance - tap_distance);
+      float s = gaussian_depth ? 1.0f - std::exp(-d * d * inv_two_variance) : d;
       if (!(s < 1.0f)) s = 1.0f;  // also catches NaN
       for (int c = 0; c < 3; ++c) tap[c] = tap[c] * (1.0f - s) + centre[c] * s;  // GLSL mix()
     }
@@ -84,38 +90,62 @@ bool inside(const PassConstants& k, int x, int y) {
 
 void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
                           const CpuFilterImage& image, float* out) {
+  PassKernel k;
+  PassTerm term;
+  term.horizontal.taps = kernel;
+  term.vertical.taps = kernel;
+  k.terms.push_back(std::move(term));
+  cpu_pass_kernel_filter(k, constants, image, out);
+}
+
+void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
+                            float* out) {
   const int w = image.width, h = image.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   const Plane color{w, h, 4, image.color};
   const Plane depth{w, h, 1, image.depth};
-
-  // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
-  std::vector<float> intermediate(count * 4);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      Rgba value = {image.color[i * 4], image.color[i * 4 + 1], image.color[i * 4 + 2], image.color[i * 4 + 3]};
-      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-      if (inside(constants, x, y) && masked_in) {
-        Rgba blurred;
-        if (filter_pixel(kernel, constants, color, depth, 0, x, y, &blurred)) value = blurred;
-      }
-      for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[c]);
-    }
-  }
-
-  // Vertical pass from the intermediate into the output; alpha keeps its input value.
-  const Plane half_plane{w, h, 4, intermediate.data()};
   std::copy(image.color, image.color + count * 4, out);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-      if (!inside(constants, x, y) || !masked_in) continue;
-      Rgba blurred;
-      if (!filter_pixel(kernel, constants, half_plane, depth, 1, x, y, &blurred)) continue;
-      for (int c = 0; c < 3; ++c) {
-        out[i * 4 + c] = image.output_is_half ? round_to_half(blurred[c]) : blurred[c];
+  std::vector<float> intermediate(count * 4);
+  std::vector<float> accumulated(count * 3, 0.0f);  // the earlier terms' vertical sums
+  const std::size_t terms = kernel.terms.size();
+  for (std::size_t t = 0; t < terms; ++t) {
+    const PassTerm& term = kernel.terms[t];
+    const bool last = t + 1 == terms;
+    // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        Rgba value = {image.color[i * 4], image.color[i * 4 + 1], image.color[i * 4 + 2], image.color[i * 4 + 3]};
+        const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
+        if (inside(constants, x, y) && masked_in) {
+          Rgba blurred;
+          if (filter_pixel(term.horizontal, term.depth_variance_mm2, constants, color, depth, 0, x, y, &blurred)) {
+            value = blurred;
+          }
+        }
+        for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[c]);
+      }
+    }
+    // Vertical pass from the intermediate, plus the earlier terms: into the module's sum target,
+    // or (the last term) into the output, where alpha keeps its input value.
+    const Plane half_plane{w, h, 4, intermediate.data()};
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
+        if (!inside(constants, x, y) || !masked_in) continue;
+        Rgba blurred;
+        if (!filter_pixel(term.vertical, term.depth_variance_mm2, constants, half_plane, depth, 1, x, y, &blurred)) {
+          continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+          const float v = blurred[static_cast<std::size_t>(c)] + accumulated[i * 3 + c];
+          if (last) {
+            out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
+          } else {
+            accumulated[i * 3 + c] = image.accumulator_is_half ? round_to_half(v) : v;
+          }
+        }
       }
     }
   }

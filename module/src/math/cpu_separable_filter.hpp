@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "filter_constants.hpp"
+#include "pass_kernel.hpp"
 #include "separable_kernel.hpp"
 
 namespace sss::math {
@@ -18,6 +19,7 @@ struct CpuFilterImage {
   const float* depth = nullptr;    // raw depth as stored in the depth texture, one per pixel
   const uint8_t* mask = nullptr;   // optional: 1 where the stencil test passes; nullptr: everywhere
   bool output_is_half = false;     // the output texture is RGBA16F: round the result like the GL
+  bool accumulator_is_half = false;  // several terms: the module's sum of the earlier terms is RGBA16F (ES)
 };
 
 // Runs both passes into `out` (RGBA, width·height·4 floats; may not alias color). Pixels that are
@@ -26,5 +28,12 @@ struct CpuFilterImage {
 // Alpha above 1 counts as 1. A non-finite tap counts as the centre's colour (it does not spread).
 void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
                           const CpuFilterImage& image, float* out);
+
+// The same for any kernel the passes run (pass_kernel.hpp): per term a horizontal pass into the
+// RGBA16F intermediate and a vertical pass that adds the sum of the earlier terms (kept in RGBA32F,
+// or RGBA16F with accumulator_is_half, as the GL does); jittered taps move by jitter_noise; a term
+// with a depth variance blends taps towards the centre by 1 - exp(-dz²/2v) instead of the ramp.
+void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
+                            float* out);
 
 }  // namespace sss::math

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "kernel_request.hpp"
 #include "projection.hpp"
 
 namespace sss::math {
@@ -19,6 +20,11 @@ struct FilterSettings {
   int cbf_taps = 13;
   float cbf_r_max_mm = 4.5f;
   unsigned cbf_profile = 0x100u;  // SSS_PROFILE_MIKKELSEN_2010 or an sss_material (spike_gaussian_profile.hpp)
+  // The kernel family of the separable mode (sss_settings.kernel): kernel.family separable is eq. (1)
+  // from samples, strength and falloff above; every other family is built by build_kernel_plan with
+  // `samples` taps (kernel.taps, .strength and .falloff are not read).
+  KernelRequest kernel;
+  float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
 };
 
 enum class DepthEncoding {
@@ -42,6 +48,9 @@ struct PassConstants {
   float follow_surface_factor = 0.0f;
   // z_ndc = raw_depth · ndc_scale + ndc_bias (hardware depth only).
   float ndc_scale = 2.0f, ndc_bias = -1.0f;
+  // Profile millimetres per world unit at alpha 1 (1 / ((2/3)·width), FLT_MAX for a zero width): the
+  // depth correction of supplementary §E measures depth differences in profile millimetres.
+  float mm_per_world = 0.0f;
   // Projection elements the depth linearisation uses: m10, m11, m14, m15.
   std::array<float, 4> depth_terms = {0.0f, 0.0f, 0.0f, 0.0f};
   // Tap positions (pixel coordinates, texel centres at +0.5) are clamped to this box, so bilinear
@@ -50,8 +59,10 @@ struct PassConstants {
   bool linear_depth = false;
 };
 
+// reach_mm: the kernel's largest |offset| (PassKernel::reach_mm), where the follow-surface ramp
+// reaches a full blend; below 0: eq. (1)'s range for settings.samples.
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
-                                     const FrameGeometry& geometry);
+                                     const FrameGeometry& geometry, double reach_mm = -1.0);
 
 // The linear view distance for a raw depth value, in float as the shader computes it.
 float linearise_depth(const PassConstants& k, float raw_depth);

@@ -26,6 +26,9 @@ struct SeparableTerm {
   float depth_variance_mm2 = 0.0f;
 };
 
+// The most terms a plan has (sum of Gaussians or SVD at rank 6; sss_kernels.h SSS_KERNEL_MAX_TERMS).
+inline constexpr std::size_t kMaxPlanTerms = 6;
+
 struct KernelPlan {
   std::vector<SeparableTerm> terms;
   std::array<float, 3> identity = {0.0f, 0.0f, 0.0f};  // share of the unfiltered input per channel

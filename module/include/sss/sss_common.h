@@ -1,0 +1,59 @@
+/*
+ * sss: what every public header shares (C99): export macro, version, status codes, tap-count limits.
+ * Included by sss.h and sss_kernels.h; not meant to be included alone.
+ */
+#ifndef SSS_SSS_COMMON_H
+#define SSS_SSS_COMMON_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(SSS_SHARED)
+#  ifdef SSS_BUILDING
+#    define SSS_API __declspec(dllexport)
+#  else
+#    define SSS_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__) && defined(SSS_SHARED)
+#  define SSS_API __attribute__((visibility("default")))
+#else
+#  define SSS_API
+#endif
+
+#define SSS_VERSION_MAJOR 0
+#define SSS_VERSION_MINOR 1
+#define SSS_VERSION_PATCH 0
+
+/** Status codes. Every failing call also leaves a message naming the bad argument and its value,
+ *  readable with sss_last_error(). */
+typedef enum sss_result {
+  SSS_OK = 0,
+  SSS_ERROR_INVALID_ARGUMENT,     /**< a pointer, number or flag outside its documented range */
+  SSS_ERROR_UNSUPPORTED,          /**< valid, but not supported (GL version, projection kind) */
+  SSS_ERROR_GL_FUNCTION_MISSING,  /**< get_proc_address gave no pointer for a needed function */
+  SSS_ERROR_SHADER_COMPILE,       /**< an embedded shader did not compile or link (driver log in the message) */
+  SSS_ERROR_FRAMEBUFFER,          /**< a framebuffer the module built is incomplete */
+  SSS_ERROR_INVALID_TEXTURE,      /**< not a texture name, wrong target, format or size */
+  SSS_ERROR_OUT_OF_MEMORY,        /**< host or GL allocation failed */
+  SSS_ERROR_GL,                   /**< the GL raised an error inside the module's work */
+  SSS_ERROR_NO_CONTEXT,           /**< no GL context is current on this thread, or the current one does not hold
+                                       the module's objects (the one it was created in was lost or destroyed) */
+  SSS_ERROR_INVALID_OPERATION     /**< call order: e.g. sss_apply before sss_set_camera */
+} sss_result;
+
+/* Tap-count presets (any odd count in [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES] is accepted). */
+#define SSS_SAMPLES_LOW 11
+#define SSS_SAMPLES_MEDIUM 17 /**< the paper's default */
+#define SSS_SAMPLES_HIGH 25
+#define SSS_MIN_SAMPLES 3
+#define SSS_MAX_SAMPLES 65
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSS_SSS_COMMON_H */

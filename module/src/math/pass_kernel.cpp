@@ -1,0 +1,124 @@
+#include "pass_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+#include "kernel_families.hpp"
+
+namespace sss::math {
+
+namespace {
+
+// Cell widths of taps sorted by offset: the distance between the midpoints to the neighbours; an
+// end tap's outer half mirrors its inner half (a single tap has no cell: 0).
+std::vector<float> cell_widths(const std::vector<KernelTap>& sorted) {
+  const std::size_t n = sorted.size();
+  std::vector<float> widths(n, 0.0f);
+  if (n < 2) return widths;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float left = i > 0 ? 0.5f * (sorted[i].offset_mm - sorted[i - 1].offset_mm) : -1.0f;
+    const float right = i + 1 < n ? 0.5f * (sorted[i + 1].offset_mm - sorted[i].offset_mm) : -1.0f;
+    widths[i] = (left < 0.0f ? right : left) + (right < 0.0f ? left : right);
+  }
+  return widths;
+}
+
+PassTaps make_pass_taps(std::vector<KernelTap> taps, float jitter) {
+  std::stable_sort(taps.begin(), taps.end(),
+                   [](const KernelTap& a, const KernelTap& b) { return a.offset_mm < b.offset_mm; });
+  const std::vector<float> widths = cell_widths(taps);
+  // The outermost round(jitter · n) taps, by |offset| (ties kept together: a symmetric kernel
+  // jitters both sides alike).
+  std::vector<float> jitter_mm(taps.size(), 0.0f);
+  const auto count = static_cast<std::size_t>(std::lround(static_cast<double>(jitter) * static_cast<double>(taps.size())));
+  if (count > 0) {
+    std::vector<std::size_t> order(taps.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::fabs(taps[a].offset_mm) > std::fabs(taps[b].offset_mm);
+    });
+    const float threshold = std::fabs(taps[order[std::min(count, order.size()) - 1]].offset_mm);
+    for (std::size_t i = 0; i < taps.size(); ++i) {
+      if (std::fabs(taps[i].offset_mm) >= threshold && taps[i].offset_mm != 0.0f) jitter_mm[i] = widths[i];
+    }
+  }
+  // Centre first: the tap at offset 0, or a zero-weight one.
+  PassTaps out;
+  auto centre = std::find_if(taps.begin(), taps.end(), [](const KernelTap& t) { return t.offset_mm == 0.0f; });
+  if (centre == taps.end()) {
+    out.taps.push_back(KernelTap{{0.0f, 0.0f, 0.0f}, 0.0f});
+    out.jitter_mm.push_back(0.0f);
+  } else {
+    const auto at = static_cast<std::size_t>(centre - taps.begin());
+    out.taps.push_back(*centre);
+    out.jitter_mm.push_back(0.0f);
+    taps.erase(centre);
+    jitter_mm.erase(jitter_mm.begin() + static_cast<std::ptrdiff_t>(at));
+  }
+  out.taps.insert(out.taps.end(), taps.begin(), taps.end());
+  out.jitter_mm.insert(out.jitter_mm.end(), jitter_mm.begin(), jitter_mm.end());
+  if (std::all_of(out.jitter_mm.begin(), out.jitter_mm.end(), [](float w) { return w == 0.0f; })) {
+    out.jitter_mm.clear();
+  }
+  return out;
+}
+
+}  // namespace
+
+PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
+  PassKernel k;
+  for (const SeparableTerm& term : plan.terms) {
+    PassTerm t;
+    t.horizontal = make_pass_taps(term.horizontal, jitter);
+    t.vertical = make_pass_taps(term.vertical, jitter);
+    t.depth_variance_mm2 = term.depth_variance_mm2;
+    k.jittered = k.jittered || !t.horizontal.jitter_mm.empty() || !t.vertical.jitter_mm.empty();
+    k.terms.push_back(std::move(t));
+  }
+  k.reach_mm = plan_reach_mm(plan);
+  return k;
+}
+
+PassKernel build_pass_kernel(const FilterSettings& settings) {
+  KernelRequest request = settings.kernel;
+  request.taps = settings.samples;
+  request.strength = settings.strength;
+  request.falloff = settings.falloff;
+  return make_pass_kernel(build_kernel_plan(request), settings.jitter);
+}
+
+bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b) {
+  if (a.samples != b.samples || a.jitter != b.jitter || a.kernel.family != b.kernel.family) return false;
+  const KernelRequest& x = a.kernel;
+  const KernelRequest& y = b.kernel;
+  switch (x.family) {
+    case KernelFamily::separable: return a.strength == b.strength && a.falloff == b.falloff;
+    case KernelFamily::artist:
+      return x.artist.near_variance_mm2 == y.artist.near_variance_mm2 &&
+             x.artist.far_variance_mm2 == y.artist.far_variance_mm2 && x.artist.near_weight == y.artist.near_weight;
+    default: break;
+  }
+  const ProfileRequest& p = x.profile;
+  const ProfileRequest& q = y.profile;
+  const bool same_profile = p.material == q.material && p.gaussian_count == q.gaussian_count &&
+                            p.table_radii_mm == q.table_radii_mm && p.table_values == q.table_values;
+  return same_profile && x.rank == y.rank && x.rescale_energy == y.rescale_energy && x.guide_k == y.guide_k &&
+         x.radius_mm == y.radius_mm;
+}
+
+float jitter_noise(int x, int y, int axis) {
+  // A 32-bit integer hash (xorshift-multiply rounds) of the pixel and the axis, then its top 24 bits
+  // as a fraction: exact in float and identical in GLSL's uint arithmetic.
+  std::uint32_t h = static_cast<std::uint32_t>(x) * 0x8da6b343u ^ static_cast<std::uint32_t>(y) * 0xd8163841u ^
+                    static_cast<std::uint32_t>(axis + 1) * 0xcb1ab31fu;
+  h ^= h >> 16;
+  h *= 0x7feb352du;
+  h ^= h >> 15;
+  h *= 0x846ca68bu;
+  h ^= h >> 16;
+  return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+}
+
+}  // namespace sss::math

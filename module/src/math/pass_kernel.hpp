@@ -1,0 +1,57 @@
+// The kernel in the shape the passes consume (the GPU shader and its CPU model alike): a list of
+// separable terms, each tap list with the centre tap first (the shader weights the pixel's own
+// colour with it without a texture fetch), per-tap jitter widths, and each term's depth rule.
+// Built once from the settings, never per frame. Math layer: no GL.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "filter_constants.hpp"
+#include "kernel_plan.hpp"
+#include "kernel_request.hpp"
+
+namespace sss::math {
+
+struct PassTaps {
+  // taps[0] has offset 0 (the centre); the others in increasing offset. Weights may be negative.
+  std::vector<KernelTap> taps;
+  // Per tap, in profile millimetres: the width of the cell the tap stands for when the tap is
+  // jittered (its position moves by (noise - 1/2) · width), 0 when it is not. Empty: no jitter.
+  std::vector<float> jitter_mm;
+};
+
+struct PassTerm {
+  PassTaps horizontal, vertical;
+  // > 0: supplementary §E's depth correction exp(-dz² / 2v) (dz in profile mm) blends each tap
+  // towards the centre, in place of the follow-surface ramp. 0: the follow-surface ramp.
+  float depth_variance_mm2 = 0.0f;
+};
+
+struct PassKernel {
+  std::vector<PassTerm> terms;  // 1..SSS_KERNEL_MAX_TERMS
+  float reach_mm = 0.0f;        // the largest |offset|: the follow-surface ramp's full blend
+  bool jittered = false;        // some tap has a jitter width
+};
+
+// Reorders each pass of `plan` centre first (a zero-weight centre tap is added when the plan has
+// no tap at offset 0) and gives the outermost round(jitter · taps) taps of every pass (ties at equal
+// |offset| both in or both out) a jitter width: the distance between the midpoints to their
+// neighbours (the outer edge mirrors the inner one). jitter in [0, 1].
+PassKernel make_pass_kernel(const KernelPlan& plan, float jitter);
+
+// The kernel the settings describe: eq. (1) from samples, strength and falloff for the separable
+// family, else build_kernel_plan(settings.kernel) with settings.samples taps; then jitter. May run an
+// optimiser (the fitted families): build it when the settings change, not per frame.
+PassKernel build_pass_kernel(const FilterSettings& settings);
+
+// Whether a and b describe the same PassKernel (every input build_pass_kernel reads), so the
+// kernel is rebuilt only when one of them changes.
+bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b);
+
+// Deterministic per-pixel noise in [0, 1) for the jittered taps: an integer hash of the pixel and
+// the pass axis (0 horizontal, 1 vertical), exact in GLSL's 32-bit uint arithmetic too
+// (separable_blur.frag computes the same bits).
+float jitter_noise(int x, int y, int axis);
+
+}  // namespace sss::math
