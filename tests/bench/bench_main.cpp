@@ -53,6 +53,10 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
   // non-translucent neighbours), so no follow-surface variants.
   for (int taps : o.cbf_taps) configs.push_back({"cross-bilateral", taps, false});
+  // The kernel families through the library (sss_settings.kernel), follow-surface on.
+  for (const KernelChoice& k : kernel_family_choices()) {
+    for (int taps : o.family_taps) configs.push_back({k.name, taps, true});
+  }
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
   return configs;
 }
@@ -64,6 +68,9 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   }
   if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
   if (c.kind == "cross-bilateral") return make_cross_bilateral_method(loader, c.taps);
+  for (const KernelChoice& k : kernel_family_choices()) {
+    if (c.kind == k.name) return make_kernel_family_method(loader, k, c.taps);
+  }
   return make_exact_method();
 }
 
@@ -245,6 +252,12 @@ int run(const Options& options) {
       const Grid grid(reference.stride, reference_image, scene.mask, width, height);
       const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
       for (const MethodConfig& config : configs) {
+        // The kernel families are compared at up to 640x360 (their Pareto curves); the 1080p head
+        // rows keep the methods of the paper's Table 2.
+        if (config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
+          ++done;
+          continue;
+        }
         ResultRow row;
         row.scene = scene_name;
         row.width = width;

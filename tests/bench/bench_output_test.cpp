@@ -72,7 +72,9 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
     EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
   }
   EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians",
-                                            "exact-2d"}));
+                                            "exact-2d", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
+                                            "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
+                                            "kernel-preintegrated", "kernel-guided", "kernel-artist"}));
   EXPECT_EQ(scenes.size(), 13u);
 }
 
@@ -103,6 +105,39 @@ TEST(BenchQuickOutput, ErrorsMakeSense) {
 }
 
 }  // namespace
+
+// The kernel families run by the library: a pass pair per term, errors of the same order as the
+// eq. (1) kernel's at the same taps on every scene (a wrong weight, term or sum would be far off),
+// and on the axis-aligned shadow edge (additively separable light, supplementary Fig. S.3) the
+// pre-integrated kernel closer to the exact result than eq. (1). Errors do not depend on timing.
+TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  const std::map<std::string, int> passes = {
+      {"kernel-separable-jitter-33", 2}, {"kernel-sum-of-gaussians-6", 12}, {"kernel-sum-of-gaussians-2", 4},
+      {"kernel-svd-1", 2},  {"kernel-svd-3", 6}, {"kernel-preintegrated", 2}, {"kernel-guided", 2},
+      {"kernel-artist", 2}};
+  std::map<std::string, double> separable;  // scene -> eq. (1) error at the families' tap count
+  int families = 0;
+  for (const auto& row : csv.rows) {
+    if (row.at("method") == "separable" && row.at("taps") == "9" && row.at("follow_surface") == "1") {
+      separable[row.at("scene")] = std::stod(row.at("relative_rmse"));
+    }
+  }
+  double preintegrated_edge = -1.0;
+  for (const auto& row : csv.rows) {
+    const auto it = passes.find(row.at("method"));
+    if (it == passes.end() || std::stoi(row.at("translucent_pixels")) == 0) continue;
+    ++families;
+    EXPECT_EQ(std::stoi(row.at("passes")), it->second) << row.at("method");
+    const double rmse = std::stod(row.at("relative_rmse"));
+    ASSERT_TRUE(separable.count(row.at("scene"))) << row.at("scene");
+    EXPECT_LT(rmse, 2.0 * separable[row.at("scene")] + 0.01) << row.at("scene") << " " << row.at("method");
+    if (row.at("scene") == "edge-0" && row.at("method") == "kernel-preintegrated") preintegrated_edge = rmse;
+  }
+  EXPECT_GE(families, 8 * 10);  // every family on every scene with translucent pixels
+  ASSERT_GE(preintegrated_edge, 0.0);
+  EXPECT_LT(preintegrated_edge, separable["edge-0"]);
+}
 
 // The depth step: the background is bright and behind; the cross-bilateral mode must leak less light
 // across the silhouette than the separable filter without a depth test, and no more than with it.

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "gpu_scene.hpp"
 
@@ -33,6 +34,15 @@ struct GlLoader {
 // create_flags: sss_create_desc.flags (SSS_CREATE_NO_STATE_RESTORE measures the state queries).
 std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
                                               uint32_t create_flags = 0);
+// A kernel family of sss_kernels.h run by the library (sss_settings.kernel, jitter), on the skin
+// profile, follow-surface on. Its passes are 2 × the plan's terms.
+struct KernelChoice {
+  std::string name;  // the method's name in the results, "kernel-svd-3"
+  int32_t family = 0, rank = 1;
+  float jitter = 0.0f;
+};
+const std::vector<KernelChoice>& kernel_family_choices();
+std::unique_ptr<Method> make_kernel_family_method(const GlLoader& loader, const KernelChoice& kernel, int taps);
 std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
 // Mikkelsen's cross-bilateral mode (SSS_MODE_CROSS_BILATERAL) with d'Eon's six-Gaussian skin profile,
 // the profile the exact reference uses, so its error is the method's and not a profile mismatch.

@@ -20,6 +20,9 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --taps n,n,...        separable tap counts (odd, 3..65)
   --gaussian-taps n,... taps per pass of the sum of Gaussians
   --cbf-taps n,...      taps per pass of the cross-bilateral mode (odd, 3..65; default 13)
+  --family-taps n,...   taps per pass of each kernel family run by the library (sum of Gaussians,
+                        SVD, pre-integrated, guided, artist, jittered eq. 1), at sizes up to 640x360;
+                        empty ("") skips them (quick: 9; full: 9,17,33)
   --follow on|off|both  follow-surface settings to run (default both)
   --no-exact            do not time the exact 2D filter as a method (it stays the reference)
   --warmup N            untimed frames before timing (default: mode's)
@@ -84,6 +87,7 @@ void apply_mode_defaults(Options* o) {
     o->separable_taps = {5, 9, 17, 33, 65};
     o->gaussian_taps = {7};
     o->cbf_taps = {13};
+    o->family_taps = {9};
     o->warmup = 1;
     o->repetitions = 3;
     // Odd sizes put the canonical scenes' straight edges inside pixels (even ones land them on
@@ -97,6 +101,7 @@ void apply_mode_defaults(Options* o) {
     o->separable_taps = {5, 9, 11, 17, 25, 33, 65};
     o->gaussian_taps = {7, 13};
     o->cbf_taps = {13, 25};
+    o->family_taps = {9, 17, 33};
     o->warmup = 3;
     o->repetitions = 15;
     o->msaa_size = {163, 93};  // odd, and the depth step's edges fall inside pixels there
@@ -118,7 +123,7 @@ Options parse_options(int argc, char** argv) {
       {"quick", no_argument, nullptr, 'q'},       {"full", no_argument, nullptr, 'F'},
       {"size", required_argument, nullptr, 's'},  {"scenes", required_argument, nullptr, 'S'},
       {"taps", required_argument, nullptr, 't'},  {"gaussian-taps", required_argument, nullptr, 'g'},
-      {"cbf-taps", required_argument, nullptr, 'C'},
+      {"cbf-taps", required_argument, nullptr, 'C'}, {"family-taps", required_argument, nullptr, 'T'},
       {"follow", required_argument, nullptr, 'f'}, {"no-exact", no_argument, nullptr, 'E'},
       {"warmup", required_argument, nullptr, 'w'}, {"reps", required_argument, nullptr, 'r'},
       {"cpu-reference-pixels", required_argument, nullptr, 'c'},
@@ -151,6 +156,12 @@ Options parse_options(int argc, char** argv) {
         o.cbf_taps = parse_ints(arg, "cross-bilateral tap count");
         for (int t : o.cbf_taps) {
           if (t < 3 || t > 65 || t % 2 == 0) usage_error("cross-bilateral taps must be odd in [3, 65]: " + std::to_string(t));
+        }
+        break;
+      case 'T':
+        o.family_taps = arg.empty() ? std::vector<int>{} : parse_ints(arg, "family tap count");
+        for (int t : o.family_taps) {
+          if (t < 3 || t > 65 || t % 2 == 0) usage_error("family taps must be odd in [3, 65]: " + std::to_string(t));
         }
         break;
       case 'f':

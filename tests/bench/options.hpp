@@ -15,6 +15,8 @@ struct Options {
   std::vector<int> separable_taps;                  // tap counts of the separable filter
   std::vector<int> gaussian_taps;                   // taps per 1D pass of the sum of Gaussians
   std::vector<int> cbf_taps;                        // taps per pass of the cross-bilateral mode
+  std::vector<int> family_taps;                     // taps per pass of each kernel family (kernel_family_choices)
+  long family_max_pixels = 640 * 360;               // the families run at sizes up to this many pixels
   std::vector<bool> follow_surface = {true, false};
   bool exact_method = true;                         // time the GL exact 2D filter as a method
   int warmup = 2, repetitions = 5;

@@ -23,7 +23,7 @@ constexpr double kPaperTaps9 = 1.02, kPaperTaps17 = 1.77, kPaperTaps33 = 3.15;
 // Ratios within this factor of the paper's count as agreeing.
 constexpr double kAgreementFactor = 1.3;
 
-const char* const kPicturedScenes[] = {"head-close", "head-mid", "edge-30", "depth-step", "tilted-60"};
+const char* const kPicturedScenes[] = {"head-close", "head-mid", "edge-30", "depth-step", "tilted-60", "dot"};
 
 std::string fmt(double v, const char* spec) {
   char buffer[64];
@@ -82,6 +82,8 @@ bool is_pictured_scene(const std::string& scene, int width, const std::vector<st
 
 bool is_pictured_method(const ResultRow& row) {
   if (row.method == "exact-2d" || row.method == "cross-bilateral") return true;
+  // The kernel families on the dot, where their shapes differ most (supplementary Fig. S.5).
+  if (row.method.rfind("kernel-", 0) == 0) return row.scene == "dot" && row.taps == 17;
   if (row.method == "separable" && row.taps == 17) return true;  // with and without the depth test
   if (!row.follow_surface) return false;
   return (row.method == "separable" && row.taps == 17) || row.method == "sum-of-gaussians";
@@ -239,6 +241,30 @@ void write_results_document(const std::string& path, const std::string& out_dir,
     out << "| " << r.scene << " | " << r.width << "×" << r.height << " | " << fmt(r.relative_rmse, "%.4f") << " | "
         << (none != nullptr ? fmt(none->relative_rmse, "%.4f") : "–") << " | "
         << (cbf != nullptr ? fmt(cbf->relative_rmse, "%.4f") : "–") << " |\n";
+  }
+
+  // The kernel families (sss_settings.kernel) side by side where they differ most: the white dot
+  // (the rank-1 kernels' radial asymmetry, supplementary Fig. S.5), the shadow edges (exact for the
+  // pre-integrated kernel along the axes, Fig. S.3) and the head.
+  int family_taps = 0;
+  for (const ResultRow& r : rows) {
+    if (r.method.rfind("kernel-", 0) == 0 && (family_taps == 0 || std::abs(r.taps - 17) < std::abs(family_taps - 17))) {
+      family_taps = r.taps;
+    }
+  }
+  if (family_taps > 0) {
+    out << "\n## Kernel families\n\nEvery family of `sss_kernels.h` run by the library through "
+           "`sss_settings.kernel` on d'Eon's skin profile, " << family_taps << " taps per pass, follow-surface on, at "
+        << small_width << "×" << small_height << ", next to the eq. (1) kernel with the same taps (`kernel-*` rows; "
+           "passes = 2 × terms). Every tap count is in the Pareto plots and the table of every row.\n";
+    for (const char* scene : {"dot", "edge-0", "edge-30", "head-close"}) {
+      out << "\n**" << scene << "**\n\n| method | passes | ms | × copy | rel. RMSE | p99 abs | max abs | SSIM |\n"
+             "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+      for (const ResultRow& r : rows) {
+        if (r.scene != scene || r.width != small_width || r.taps != family_taps || !r.follow_surface) continue;
+        if (r.method == "separable" || r.method.rfind("kernel-", 0) == 0) row_line(out, r);
+      }
+    }
   }
 
   if (!plots.empty()) {

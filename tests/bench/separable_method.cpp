@@ -1,5 +1,7 @@
 // The library's separable filter, through its public C API, as a host would call it.
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "method.hpp"
 #include "sss/sss.h"
@@ -10,8 +12,10 @@ namespace {
 
 class SeparableMethod : public Method {
  public:
-  SeparableMethod(const GlLoader& loader, int taps, bool follow, uint32_t create_flags)
+  SeparableMethod(const GlLoader& loader, int taps, bool follow, uint32_t create_flags,
+                  const KernelChoice* kernel = nullptr)
       : taps_(taps), follow_(follow), restores_state_((create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0) {
+    if (kernel != nullptr) kernel_ = *kernel;
     sss_create_desc desc = {};
     desc.struct_size = sizeof desc;
     desc.flags = create_flags;
@@ -21,10 +25,13 @@ class SeparableMethod : public Method {
   }
   ~SeparableMethod() override { sss_destroy(ctx_); }
 
-  std::string name() const override { return restores_state_ ? "separable" : "separable-no-restore"; }
+  std::string name() const override {
+    if (!kernel_.name.empty()) return kernel_.name;
+    return restores_state_ ? "separable" : "separable-no-restore";
+  }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return follow_; }
-  int passes() const override { return 2; }
+  int passes() const override { return 2 * terms_; }
 
   bool run(const GpuScene& scene, GLuint output, std::string* error) override {
     sss_settings s;
@@ -32,6 +39,11 @@ class SeparableMethod : public Method {
     s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
     s.samples = taps_;
     s.flags = follow_ ? SSS_FOLLOW_SURFACE : 0u;
+    if (!kernel_.name.empty()) {
+      s.kernel.family = kernel_.family;
+      s.kernel.rank = kernel_.rank;
+      s.jitter = kernel_.jitter;
+    }
     sss_frame frame = {};
     frame.struct_size = sizeof frame;
     frame.color_texture = scene.irradiance;
@@ -42,10 +54,15 @@ class SeparableMethod : public Method {
       *error = sss_last_error(ctx_);
       return false;
     }
+    sss_stats stats;
+    stats.struct_size = sizeof stats;
+    if (sss_get_stats(ctx_, &stats) == SSS_OK) terms_ = std::max(1, static_cast<int>(stats.last_frame_passes) / 2);
     return true;
   }
 
  private:
+  KernelChoice kernel_;
+  int terms_ = 1;
   int taps_;
   bool follow_;
   bool restores_state_;
@@ -57,6 +74,24 @@ class SeparableMethod : public Method {
 std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
                                               uint32_t create_flags) {
   return std::make_unique<SeparableMethod>(loader, taps, follow_surface, create_flags);
+}
+
+const std::vector<KernelChoice>& kernel_family_choices() {
+  static const std::vector<KernelChoice> choices = {
+      {"kernel-separable-jitter-33", SSS_KERNEL_SEPARABLE, 1, 0.33f},
+      {"kernel-sum-of-gaussians-6", SSS_KERNEL_SUM_OF_GAUSSIANS, 6, 0.0f},
+      {"kernel-sum-of-gaussians-2", SSS_KERNEL_SUM_OF_GAUSSIANS, 2, 0.0f},
+      {"kernel-svd-1", SSS_KERNEL_SVD, 1, 0.0f},
+      {"kernel-svd-3", SSS_KERNEL_SVD, 3, 0.0f},
+      {"kernel-preintegrated", SSS_KERNEL_PREINTEGRATED, 1, 0.0f},
+      {"kernel-guided", SSS_KERNEL_GUIDED, 1, 0.0f},
+      {"kernel-artist", SSS_KERNEL_ARTIST, 1, 0.0f},
+  };
+  return choices;
+}
+
+std::unique_ptr<Method> make_kernel_family_method(const GlLoader& loader, const KernelChoice& kernel, int taps) {
+  return std::make_unique<SeparableMethod>(loader, taps, true, 0u, &kernel);
 }
 
 }  // namespace sss_bench
