@@ -22,6 +22,10 @@ SssControls controls_from_options(const Options &o) {
   c.shading = o.shading;
   c.use_stencil = o.use_stencil;
   c.cross_bilateral = o.cross_bilateral;
+  c.kernel_family = o.kernel_family;
+  c.kernel_rank = o.kernel_rank;
+  c.material = o.material;
+  c.jitter = o.jitter;
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
   c.msaa_samples = o.msaa;

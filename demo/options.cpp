@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include <sss/sss.h>
 #include <sss_headless.h>
 
 #include <getopt.h>
@@ -9,10 +10,34 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace demo {
 
 namespace {
+
+// "svd:3" -> SSS_KERNEL_SVD, rank 3.
+bool parse_kernel(const char *text, Options *o) {
+  static const char *const kNames[] = {"separable", "sum-of-gaussians", "svd", "preintegrated", "guided", "artist"};
+  const std::string arg = text;
+  const std::size_t colon = arg.find(':');
+  const std::string name = arg.substr(0, colon);
+  int rank = 1;
+  if (colon != std::string::npos) {
+    char *end = nullptr;
+    const long v = std::strtol(arg.c_str() + colon + 1, &end, 10);
+    if (end == arg.c_str() + colon + 1 || *end != '\0' || v < 1 || v > SSS_KERNEL_MAX_TERMS) return false;
+    rank = static_cast<int>(v);
+  }
+  for (int f = 0; f < SSS_KERNEL_FAMILY_COUNT; ++f) {
+    if (name == kNames[f]) {
+      o->kernel_family = f;
+      o->kernel_rank = rank;
+      return true;
+    }
+  }
+  return false;
+}
 
 bool parse_int(const char *text, int *out) {
   char *end = nullptr;
@@ -80,6 +105,11 @@ void print_usage(const char *program) {
       "  --shading NAME      screen (the library's filter, default) | preintegrated (LUTs in the lighting\n"
       "                      pass, no SSS pass) | auto (pre-integrated when a mm of skin is < 0.5 pixel)\n"
       "  --cross-bilateral   Mikkelsen's cross-bilateral mode instead of the separable kernel\n"
+      "  --kernel NAME[:N]   the separable mode's kernel family: separable (eq. 1, default), sum-of-gaussians:N,\n"
+      "                      svd:N (N terms, 1..6, two passes each), preintegrated, guided, artist\n"
+      "  --material NAME     the profile of those families: skin (default), apple, chicken1, chicken2, cream,\n"
+      "                      ketchup, marble, potato, skimmilk, skin1, skin2, wholemilk\n"
+      "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
@@ -100,7 +130,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
-    kTranslucency, kBackLight, kShading
+    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -123,6 +153,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"frames", required_argument, nullptr, kFrames},
       {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
       {"shading", required_argument, nullptr, kShading},
+      {"kernel", required_argument, nullptr, kKernel},
+      {"material", required_argument, nullptr, kMaterial},
+      {"jitter", required_argument, nullptr, kJitter},
       {"help", no_argument, nullptr, kHelp},
       {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
       {"translucency", optional_argument, nullptr, kTranslucency},
@@ -210,6 +243,25 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kHelp: return ParseResult::kHelp;
       case kCrossBilateral: o->cross_bilateral = true; break;
+      case kKernel: ok = parse_kernel(optarg, o) || fail("--kernel wants separable, sum-of-gaussians[:N], svd[:N], "
+                                                        "preintegrated, guided or artist (N in 1..6)", optarg);
+        break;
+      case kMaterial: {
+        o->material = -1;
+        for (int m = SSS_MATERIAL_SKIN; m <= SSS_MATERIAL_WHOLEMILK; ++m) {
+          if (std::strcmp(optarg, sss_material_name(m)) == 0) o->material = m;
+        }
+        ok = o->material >= 0 || fail("--material wants skin, apple, chicken1, chicken2, cream, ketchup, marble, "
+                                      "potato, skimmilk, skin1, skin2 or wholemilk", optarg);
+        break;
+      }
+      case kJitter: {
+        char *end = nullptr;
+        const float v = std::strtof(optarg, &end);
+        ok = (end != optarg && *end == '\0' && v >= 0.0f && v <= 1.0f) || fail("--jitter wants a number in [0, 1]", optarg);
+        if (ok) o->jitter = v;
+        break;
+      }
       case kBackLight: o->back_light = true; break;
       case kTranslucency: {
         o->translucency = true;

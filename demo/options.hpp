@@ -25,6 +25,10 @@ struct Options {
   int msaa = 0;                  // 0, or 4: render into 4x multisampled targets and hand those to the library
   bool follow_surface = true;
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
+  int kernel_family = 0;         // sss_kernel_family (SSS_KERNEL_SEPARABLE: eq. (1))
+  int kernel_rank = 1;           // sum of Gaussians / SVD: terms
+  int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
+  float jitter = 0.0f;           // sss_settings.jitter
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)

@@ -47,6 +47,23 @@ void sss_section(WindowState *s) {
   ImGui::Checkbox("follow surface", &c.follow_surface);
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
+  // The kernel family and the material its profile comes from (sss_settings.kernel), and jitter.
+  static const char *const kFamilies[] = {"eq. (1) separable (width, strength, falloff)", "sum of Gaussians",
+                                          "SVD rank N", "pre-integrated (exact for E1(x) + E2(y))",
+                                          "guided rank-1 fit (k = 1.55)", "artist two-Gaussian, exact depth"};
+  ImGui::Combo("kernel family", &c.kernel_family, kFamilies, SSS_KERNEL_FAMILY_COUNT);
+  if (c.kernel_family == SSS_KERNEL_SUM_OF_GAUSSIANS || c.kernel_family == SSS_KERNEL_SVD) {
+    ImGui::SliderInt("terms (2 passes each)", &c.kernel_rank, 1, SSS_KERNEL_MAX_TERMS);
+  }
+  if (c.kernel_family != SSS_KERNEL_SEPARABLE && c.kernel_family != SSS_KERNEL_ARTIST) {
+    auto material_name = [](void *, int i, const char **out) {
+      *out = sss_material_name(i);
+      return *out != nullptr;
+    };
+    ImGui::Combo("material", &c.material, material_name, nullptr, SSS_MATERIAL_WHOLEMILK + 1);
+    ImGui::TextDisabled("  a measured material is fitted when chosen (up to ~0.3 s)");
+  }
+  ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
   if (c.cross_bilateral) {
     ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"
@@ -159,10 +176,7 @@ void draw_panel(WindowState *s) {
       s->controls.msaa_samples = msaa ? 4 : 0;
     }
   }
-  if (ImGui::CollapsingHeader("Later issues: kernel family, jitter, translucency")) {
-    // The marked place for the controls of later issues; translucency is wired, the rest not yet.
-    ImGui::TextDisabled("kernel family and measured materials");
-    ImGui::TextDisabled("jittered taps");
+  if (ImGui::CollapsingHeader("Translucency")) {
     ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
     ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
     ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"

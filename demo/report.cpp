@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace demo {
 
@@ -56,6 +57,18 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
                 : c.shading == kShadingAutomatic   ? "automatic (pre-integrated below 0.5 px per mm)"
                                                    : "screen-space filter");
   std::string result = text;
+  if (s.mode == SSS_MODE_SEPARABLE && (s.kernel.family != SSS_KERNEL_SEPARABLE || s.jitter > 0.0f)) {
+    static const char *const kNames[] = {"eq. (1)", "sum of Gaussians", "SVD", "pre-integrated", "guided rank-1",
+                                         "artist two-Gaussian"};
+    const bool profiled = s.kernel.family != SSS_KERNEL_SEPARABLE && s.kernel.family != SSS_KERNEL_ARTIST;
+    std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", kNames[s.kernel.family % 6],
+                  s.kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || s.kernel.family == SSS_KERNEL_SVD
+                      ? (" rank " + std::to_string(s.kernel.rank)).c_str()
+                      : "",
+                  profiled ? " of " : "", profiled ? sss_material_name(s.kernel.profile.material) : "",
+                  static_cast<double>(s.jitter));
+    result += text;
+  }
   if (s.mode == SSS_MODE_CROSS_BILATERAL) {
     std::snprintf(text, sizeof text,
                   "; cross-bilateral mode (Mikkelsen 2010): %d taps, r_max %.2f mm, profile %u (strength, falloff, "

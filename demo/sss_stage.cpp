@@ -36,7 +36,12 @@ SssControls default_sss_controls() {
 }
 
 std::uint32_t blur_profile(const SssControls &controls) {
-  if (!controls.cross_bilateral) return SSS_MATERIAL_SKIN;
+  if (!controls.cross_bilateral) {
+    // The families built from a profile blur with the chosen material's; eq. (1) and the artist
+    // model have their own shapes, closest to skin.
+    const bool profiled = controls.kernel_family != SSS_KERNEL_SEPARABLE && controls.kernel_family != SSS_KERNEL_ARTIST;
+    return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_MATERIAL_SKIN);
+  }
   sss_settings s{};
   sss_default_settings(&s);
   return s.cbf_profile;
@@ -66,6 +71,10 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.samples = controls.samples;
   s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
   s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
+  s.kernel.family = controls.kernel_family;
+  s.kernel.rank = controls.kernel_rank;
+  s.kernel.profile.material = controls.material;
+  s.jitter = controls.jitter;
   if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
   stage->settings = s;
   return true;

@@ -22,6 +22,12 @@ struct SssControls {
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL (Mikkelsen 2010) instead of the separable kernel
+  // The separable mode's kernel family (sss_settings.kernel): eq. (1), sum of Gaussians, SVD rank N,
+  // pre-integrated, guided rank-1, artist; the profile's material; the share of jittered taps.
+  int kernel_family = SSS_KERNEL_SEPARABLE;
+  int kernel_rank = 1;
+  int material = SSS_MATERIAL_SKIN;
+  float jitter = 0.0f;
   // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
   // with the profile the blur uses.
   bool translucency = false;
