@@ -251,7 +251,7 @@ typedef struct sss_stats {
   uint32_t struct_size;          /**< sizeof(sss_stats), set by the caller */
   uint32_t glsl_variant;         /**< SSS_GLSL_*: the dialect the shaders were compiled in */
   uint64_t frames;               /**< sss_apply / sss_apply_frame calls that returned SSS_OK */
-  uint64_t passes;               /**< full-screen draws over all those frames (blur passes and the copies of
+  uint64_t passes;               /**< full-screen draws over all those frames (blur passes, two per kernel term, and the copies of
                                       stencil-rejected pixels, and for multisampled input the resolve, the stencil
                                       mark and one write per sample; 0 for an in-place frame with width or
                                       strength 0) */
@@ -267,7 +267,8 @@ typedef struct sss_stats {
                                       output, every pixel of the viewport in the mask. Desktop GL only (OpenGL ES
                                       has no sample count) */
   double gpu_time_ms[2];         /**< GPU time of the horizontal and the vertical pass, each with its copies
-                                      (GL_TIME_ELAPSED), >= 0. Only where timer queries are trustworthy:
+                                      (GL_TIME_ELAPSED), >= 0. A kernel of several terms (sss_settings.kernel):
+                                      [0] is every pass before the last vertical one, [1] that last pass. Only where timer queries are trustworthy:
                                       GL_QUERY_COUNTER_BITS > 0, on OpenGL ES through GL_EXT_disjoint_timer_query
                                       (a disjoint event voids the results it spans), and not on Mesa's software
                                       rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
