@@ -174,6 +174,26 @@ class StateHarness : public GlTest {
            uint32_t texture = 0;
            EXPECT_EQ(sss_lut_create_texture(sss_, SSS_LUT_SHADOW, &d, &texture), SSS_OK) << sss_last_error(sss_);
          }},
+        // A kernel of several terms (the accumulators on unit 3), jittered taps and the artist
+        // model's Gaussian depth correction: every shader variant and target the families add.
+        {"sss_apply (3 Gaussians, jitter; then the artist model), stencil",
+         [this] {
+           sss_settings s;
+           sss_default_settings(&s);
+           s.width = 0.05f;
+           s.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+           s.kernel.rank = 3;
+           s.jitter = 0.5f;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+           const sss_stencil stencil = {depth_, 1, 0xFF};
+           EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
+           s.kernel.family = SSS_KERNEL_ARTIST;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+           EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
+           sss_default_settings(&s);
+           s.width = 0.05f;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+         }},
         {"sss_set_settings + sss_set_camera",
          [this] {
            sss_settings s;

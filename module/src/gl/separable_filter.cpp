@@ -624,9 +624,11 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
           draw_copy(run.color.name);
         }
       }
-      f.ActiveTexture(TEXTURE0 + kAccumulatedUnit);
-      f.BindTexture(TEXTURE_2D, t > 0 ? accumulators_[(t - 1) % 2] : 0);
-      f.BindSampler(kAccumulatedUnit, depth_sampler_);  // texelFetch only; GL_NEAREST keeps ES RGBA32F complete
+      if (terms > 1) {  // the earlier terms' sum, read by this term's vertical pass
+        f.ActiveTexture(TEXTURE0 + kAccumulatedUnit);
+        f.BindTexture(TEXTURE_2D, t > 0 ? accumulators_[(t - 1) % 2] : 0);
+        f.BindSampler(kAccumulatedUnit, depth_sampler_);  // texelFetch only; GL_NEAREST is complete for any format
+      }
       if (!last) {
         // Vertical into the running sum (pixels outside the stencil are never read from it).
         DebugGroup group(f, labels_, "sss vertical pass (one term, into the sum)");
