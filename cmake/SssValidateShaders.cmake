@@ -6,7 +6,7 @@
 # Variants: each dialect the library negotiates at create time (module/shaders/version_*.glsl:
 # GLSL 330 core, GLSL 420 core, GLSL ES 300; glslangValidator takes the profile from #version) ×
 # SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0..2 × SSS_LINEAR_DEPTH 0/1 × SSS_JITTER 0/1 × SSS_ACCUMULATE 0/1
-# for the blur,
+# for the blur (and SSS_ADAPTIVE 1 with SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH),
 # SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur; SSS_LUT_KIND 0/1 for
 # the LUT generator and the host include of pre-integrated skin shading; and, for the desktop
 # dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders.
@@ -52,10 +52,19 @@ foreach(dialect 330 420 es300)
       foreach(linear 0 1)
         foreach(jitter 0 1)
           foreach(accumulate 0 1)
-            set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_ACCUMULATE ${accumulate}\n#define SSS_MAX_TAPS 65\n")
+            set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_ACCUMULATE ${accumulate}\n#define SSS_MAX_TAPS 65\n#define SSS_ADAPTIVE 0\n#define SSS_MAX_LEVELS 4\n#define SSS_KERNEL_SLOTS 128\n")
             validate("${dialect}_blur_o${outside}_f${follow}_l${linear}_j${jitter}_a${accumulate}" frag "${header}${defines}${blur}")
           endforeach()
         endforeach()
+      endforeach()
+    endforeach()
+  endforeach()
+  # Footprint-adaptive taps (SSS_ADAPTIVE 1): eq. (1) alone, so never with jitter or several terms.
+  foreach(outside 0 1 2)
+    foreach(follow 0 1 2)
+      foreach(linear 0 1)
+        set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER 0\n#define SSS_ACCUMULATE 0\n#define SSS_MAX_TAPS 65\n#define SSS_ADAPTIVE 1\n#define SSS_MAX_LEVELS 4\n#define SSS_KERNEL_SLOTS 128\n")
+        validate("${dialect}_blur_adaptive_o${outside}_f${follow}_l${linear}" frag "${header}${defines}${blur}")
       endforeach()
     endforeach()
   endforeach()

@@ -26,6 +26,8 @@ SssControls controls_from_options(const Options &o) {
   c.kernel_rank = o.kernel_rank;
   c.material = o.material;
   c.jitter = o.jitter;
+  c.adaptive_taps = o.adaptive_taps;
+  c.region = o.region;
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
   c.msaa_samples = o.msaa;

@@ -110,6 +110,8 @@ void print_usage(const char *program) {
       "  --material NAME     the profile of those families: skin (default), apple, chicken1, chicken2, cream,\n"
       "                      ketchup, marble, potato, skimmilk, skin1, skin2, wholemilk\n"
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
+      "  --adaptive-taps     footprint-adaptive taps: fewer (or none) where the kernel spans few pixels\n"
+      "  --region            tell the library the head's projected bounds (work only there)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
@@ -128,7 +130,7 @@ void print_usage(const char *program) {
 
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
-    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil,
+    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
@@ -143,6 +145,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"samples", required_argument, nullptr, kSamples},
       {"width-scale", required_argument, nullptr, kWidthScale},
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
+      {"adaptive-taps", no_argument, nullptr, kAdaptive},
+      {"region", no_argument, nullptr, kRegion},
       {"no-stencil", no_argument, nullptr, kNoStencil},
       {"msaa", required_argument, nullptr, kMsaa},
       {"exposure", required_argument, nullptr, kExposure},
@@ -205,6 +209,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
              fail("--width-scale wants a number in [0, 1000]", optarg);
         break;
       case kNoFollow: o->follow_surface = false; break;
+      case kAdaptive: o->adaptive_taps = true; break;
+      case kRegion: o->region = true; break;
       case kNoStencil: o->use_stencil = false; break;
       case kShading: {
         const std::string v = optarg;

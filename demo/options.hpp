@@ -29,6 +29,8 @@ struct Options {
   int kernel_rank = 1;           // sum of Gaussians / SVD: terms
   int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
   float jitter = 0.0f;           // sss_settings.jitter
+  bool adaptive_taps = false;    // SSS_ADAPTIVE_TAPS
+  bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)

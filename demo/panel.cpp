@@ -64,6 +64,9 @@ void sss_section(WindowState *s) {
     ImGui::TextDisabled("  a measured material is fitted when chosen (up to ~0.3 s)");
   }
   ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
+  ImGui::Checkbox("adaptive taps", &c.adaptive_taps);
+  ImGui::SameLine();
+  ImGui::Checkbox("region from the head's bounds", &c.region);
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
   if (c.cross_bilateral) {
     ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"

@@ -1,6 +1,8 @@
 #include "renderer.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "host_gl_util.hpp"
@@ -52,6 +54,42 @@ float pixels_per_mm(const DemoScene &scene, const CameraMatrices &camera, int he
   const float distance = glm::length(scene.subject.centre() - camera.eye);
   if (!(distance > 0.0f)) return 0.0f;
   return 0.5f * static_cast<float>(height) * camera.projection[1][1] * scene.world_units_per_mm / distance;
+}
+
+// SSS_FRAME_REGION as a host computes it: the screen rectangle of every vertex's bounds (all
+// translucent geometry is inside them), padded by the kernel's reach in pixels at the nearest
+// corner (eq. (1) reaches 3 mm at most, times width_scale, at alpha 1). False when a corner is behind
+// the camera: then no region is given (the whole viewport is filtered).
+bool translucent_region(const DemoScene &scene, const CameraMatrices &camera, const SssControls &controls, int width,
+                        int height, std::int32_t region[4]) {
+  float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f, nearest = 1e30f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? scene.all.max.x : scene.all.min.x, (corner & 2) ? scene.all.max.y : scene.all.min.y,
+                      (corner & 4) ? scene.all.max.z : scene.all.min.z);
+    const glm::vec4 clip = camera.view_projection * glm::vec4(p, 1.0f);
+    if (!(clip.w > camera.near_plane * 0.5f)) return false;
+    const float sx = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(width);
+    const float sy = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(height);
+    x0 = std::min(x0, sx);
+    x1 = std::max(x1, sx);
+    y0 = std::min(y0, sy);
+    y1 = std::max(y1, sy);
+    nearest = std::min(nearest, clip.w);
+  }
+  const float reach_mm = 3.0f * controls.width_scale;
+  const float pixels_per_mm_at_nearest =
+      0.5f * static_cast<float>(std::max(width, height)) *
+      std::max(camera.projection[0][0], camera.projection[1][1]) * scene.world_units_per_mm / nearest;
+  const float pad = std::ceil(reach_mm * pixels_per_mm_at_nearest) + 2.0f;
+  const int left = std::clamp(static_cast<int>(std::floor(x0 - pad)), 0, width);
+  const int bottom = std::clamp(static_cast<int>(std::floor(y0 - pad)), 0, height);
+  const int right = std::clamp(static_cast<int>(std::ceil(x1 + pad)), 0, width);
+  const int top = std::clamp(static_cast<int>(std::ceil(y1 + pad)), 0, height);
+  region[0] = left;
+  region[1] = bottom;
+  region[2] = right - left;  // 0 when the bounds are off screen: nothing translucent is visible
+  region[3] = top - bottom;
+  return true;
 }
 
 }  // namespace
@@ -118,9 +156,13 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   }
 
   if (controls.enabled && !result->preintegrated) {
+    std::int32_t region[4] = {0, 0, 0, 0};
+    const bool has_region = controls.region && translucent_region(*r->scene, camera, controls, targets->width,
+                                                                  targets->height, region);
     if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) ||
         !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
-                   targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after)) {
+                   targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
+                   has_region ? region : nullptr)) {
       return false;
     }
     result->sss_ran = true;

@@ -69,7 +69,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
     s.falloff[i] = controls.falloff[i];
   }
   s.samples = controls.samples;
-  s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s.flags = (controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u) | (controls.adaptive_taps ? SSS_ADAPTIVE_TAPS : 0u);
   s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   s.kernel.family = controls.kernel_family;
   s.kernel.rank = controls.kernel_rank;
@@ -81,7 +81,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
 }
 
 bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
-               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after) {
+               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region) {
   if (!report(sss_set_camera(stage.context, glm::value_ptr(projection)), "sss_set_camera", stage.context)) return false;
   sss_stencil stencil{};
   stencil.depth_stencil_texture = depth_stencil;
@@ -93,6 +93,10 @@ bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::ma
   frame.depth_texture = depth_stencil;
   frame.output_texture = after;
   frame.stencil = controls.use_stencil ? &stencil : nullptr;
+  if (region != nullptr) {
+    frame.flags |= SSS_FRAME_REGION;
+    for (int i = 0; i < 4; ++i) frame.region[i] = region[i];
+  }
   return report(sss_apply_frame(stage.context, &frame), "sss_apply_frame", stage.context);
 }
 

@@ -28,6 +28,10 @@ struct SssControls {
   int kernel_rank = 1;
   int material = SSS_MATERIAL_SKIN;
   float jitter = 0.0f;
+  // Skipping work: footprint-adaptive taps (SSS_ADAPTIVE_TAPS), and the head's projected bounds,
+  // padded by the kernel's reach, as the frame's region of translucent pixels (SSS_FRAME_REGION).
+  bool adaptive_taps = false;
+  bool region = false;
   // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
   // with the profile the blur uses.
   bool translucency = false;
@@ -66,9 +70,11 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
 // sss_set_settings from the controls (width = physical width x width_scale). Prints the error on failure.
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm);
 
-// sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`.
+// sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,
+// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none.
 bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
-               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after);
+               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after,
+               const std::int32_t *region = nullptr);
 
 void destroy_sss_stage(SssStage *stage);
 

@@ -54,4 +54,13 @@ if [[ -e build/consumer-subdirectory/sss/tests || -e build/consumer-subdirectory
   echo "check-consumers: as a subdirectory sss built its tests or demo" >&2
   exit 1
 fi
-echo "check-consumers: static and shared installs and a subdirectory build run, for CMake and pkg-config consumers"
+echo "== consumer (FetchContent): FetchContent_MakeAvailable, its source pointed at this checkout"
+cmake -S integration/consumer -B build/consumer-fetch -G Ninja -DSSS_FETCH=ON -DFETCHCONTENT_SOURCE_DIR_SSS="$PWD"
+cmake --build build/consumer-fetch --parallel "$jobs"
+build/consumer-fetch/minimal_integration
+build/consumer-fetch/minimal_integration_cpp
+if [[ -e build/consumer-fetch/_deps/sss-build/tests || -e build/consumer-fetch/_deps/sss-build/demo ]]; then
+  echo "check-consumers: through FetchContent sss built its tests or demo" >&2
+  exit 1
+fi
+echo "check-consumers: static and shared installs, a subdirectory and a FetchContent build run, for CMake and pkg-config consumers"

@@ -16,6 +16,10 @@
 //                       integer hash (supplementary Fig. S.6-S.7); 0: fixed taps
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
+//   SSS_ADAPTIVE        1: footprint-adaptive taps (SSS_ADAPTIVE_TAPS): the first level of u_levels
+//                       whose largest step is at least this pixel's runs (no taps: the pixel is left
+//                       as it is); a pixel past every level runs the full kernel. Must choose exactly
+//                       as sss::math::adaptive_taps (module/src/math/pass_kernel.cpp)
 // and from the dialect's header (module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
@@ -31,8 +35,14 @@ SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attach
 #if SSS_ACCUMULATE
 SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
 #endif
+#if SSS_ADAPTIVE
+uniform vec4 u_kernel[SSS_KERNEL_SLOTS];  // the full kernel, then each level's taps
+uniform vec4 u_levels[SSS_MAX_LEVELS];    // x: first tap in u_kernel, y: tap count (0: pass through), z: largest step
+uniform int u_level_count;
+#else
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
-uniform int u_tap_count;
+#endif
+uniform int u_tap_count;              // the full kernel's
 #if SSS_JITTER
 uniform float u_jitter[SSS_MAX_TAPS];  // per tap: its cell width in profile mm when jittered, else 0
 #endif
@@ -120,8 +130,23 @@ void main() {
 #if SSS_JITTER
   float shift = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0) - 0.5;
 #endif
-  vec3 sum = centre.rgb * u_kernel[0].rgb;
-  for (int i = 1; i < u_tap_count; ++i) {
+  int first = 0;
+  int end = u_tap_count;
+#if SSS_ADAPTIVE
+  for (int l = 0; l < u_level_count; ++l) {
+    if (step_pixels <= u_levels[l].z) {
+      first = int(u_levels[l].x);
+      end = first + int(u_levels[l].y);
+      break;
+    }
+  }
+  if (end == first) {  // the whole kernel within half a pixel: nothing to blur
+    leave_untouched(pixel, centre);
+    return;
+  }
+#endif
+  vec3 sum = centre.rgb * u_kernel[first].rgb;
+  for (int i = first + 1; i < end; ++i) {
 #if SSS_JITTER
     float offset = u_kernel[i].a + shift * u_jitter[i];
 #else

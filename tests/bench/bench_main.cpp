@@ -28,6 +28,7 @@
 #include "scenes/scenes.hpp"
 #include "sss/sss.h"
 #include "sss_headless.h"
+#include "state_cost.hpp"
 #include "timing.hpp"
 
 using namespace host_gl;
@@ -36,7 +37,8 @@ namespace sss_bench {
 namespace {
 
 struct MethodConfig {
-  std::string kind;  // "separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians", "exact-2d"
+  std::string kind;  // "separable", "separable-no-restore", "cross-bilateral", "cross-bilateral-no-tilt",
+                     // "sum-of-gaussians", "exact-2d", "kernel-*"
   int taps = 0;
   bool follow_surface = false;
 };
@@ -50,9 +52,17 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // What the state save and restore costs: the paper's default kernel once more, with the host
   // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
   configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
+  // Skipping what a frame does not need: the default kernel written back in place (a host's
+  // frame), with footprint-adaptive taps, and with those and the host's region of translucent
+  // pixels.
+  for (const char* kind : {"separable-in-place", "separable-adaptive", "separable-adaptive-region"}) {
+    configs.push_back({kind, SSS_SAMPLES_MEDIUM, true});
+  }
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
   // non-translucent neighbours), so no follow-surface variants.
   for (int taps : o.cbf_taps) configs.push_back({"cross-bilateral", taps, false});
+  // The same without the footprint's cosine correction, at the default tap count only.
+  if (!o.cbf_taps.empty()) configs.push_back({"cross-bilateral-no-tilt", o.cbf_taps.front(), false});
   // The kernel families through the library (sss_settings.kernel), follow-surface on.
   for (const KernelChoice& k : kernel_family_choices()) {
     for (int taps : o.family_taps) configs.push_back({k.name, taps, true});
@@ -66,8 +76,12 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   if (c.kind == "separable-no-restore") {
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
+  if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false, false);
+  if (c.kind == "separable-adaptive") return make_in_place_method(loader, c.taps, true, false);
+  if (c.kind == "separable-adaptive-region") return make_in_place_method(loader, c.taps, true, true);
   if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
   if (c.kind == "cross-bilateral") return make_cross_bilateral_method(loader, c.taps);
+  if (c.kind == "cross-bilateral-no-tilt") return make_cross_bilateral_method(loader, c.taps, false);
   for (const KernelChoice& k : kernel_family_choices()) {
     if (c.kind == k.name) return make_kernel_family_method(loader, k, c.taps);
   }
@@ -207,6 +221,15 @@ int run(const Options& options) {
               info.version.c_str(), info.clock.c_str());
 
   const GlLoader loader{sss_headless_get_proc_address, headless};
+  {
+    const StateCost cost = measure_state_cost(loader);
+    info.state_with_restore_us = cost.with_restore_us;
+    info.state_without_restore_us = cost.without_restore_us;
+    info.state_calls = cost.calls_per_batch;
+    info.state_batches = cost.batches;
+    std::printf("sss_bench: one sss_apply_frame on 16x16: %.1f us with the state restore, %.1f us without\n",
+                cost.with_restore_us, cost.without_restore_us);
+  }
   const std::vector<std::string> default_scenes = options.scenes.empty() ? canonical_scene_names() : options.scenes;
   auto scenes_at = [&](std::size_t size_index) {
     const bool own = size_index < options.size_scenes.size() && !options.size_scenes[size_index].empty();
@@ -292,8 +315,10 @@ int run(const Options& options) {
           auto method = make_method(config, loader);
           // The exact filter is slow on a software rasteriser: one frame (after one that compiles
           // its shaders) is its measurement.
-          t = time_frames(clock, exact ? 1 : options.warmup, exact ? 1 : options.repetitions,
-                          [&] { return method->run(gpu, output, &message); });
+          t = time_frames(
+              clock, exact ? 1 : options.warmup, exact ? 1 : options.repetitions,
+              [&] { return method->run(gpu, output, &message); }, [&] { method->before_run(gpu); },
+              [&] { method->after_run(gpu, output); });
           if (t.samples == 0) throw std::runtime_error(tag + " " + config.kind + ": " + message);
           if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
           row.method = method->name();

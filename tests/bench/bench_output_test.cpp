@@ -71,8 +71,9 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
     }
     EXPECT_GT(std::stod(row.at("time_ms")), 0.0);
   }
-  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral", "sum-of-gaussians",
-                                            "exact-2d", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
+  EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral",
+                                            "cross-bilateral-no-tilt", "sum-of-gaussians", "exact-2d",
+                                            "separable-in-place", "separable-adaptive", "separable-adaptive-region", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
                                             "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
                                             "kernel-preintegrated", "kernel-guided", "kernel-artist"}));
   EXPECT_EQ(scenes.size(), 13u);
@@ -139,6 +140,27 @@ TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
   EXPECT_LT(preintegrated_edge, separable["edge-0"]);
 }
 
+// The host's region, padded by the kernel's reach, must not change the result: the adaptive filter
+// with and without it scores the same on every scene (bit-identical images give identical metrics).
+TEST(BenchQuickOutput, APaddedRegionChangesNothing) {
+  const Csv csv = read_csv(kDir + "/results.csv");
+  std::map<std::string, std::map<std::string, std::string>> rmse;  // scene -> method -> value as written
+  for (const auto& row : csv.rows) {
+    if (row.at("taps") != "17" || row.at("follow_surface") != "1") continue;
+    rmse[row.at("scene")][row.at("method")] = row.at("relative_rmse");
+  }
+  int scenes = 0;
+  for (const auto& [scene, methods] : rmse) {
+    if (methods.count("separable-adaptive-region") == 0) continue;
+    ++scenes;
+    EXPECT_EQ(methods.at("separable-adaptive-region"), methods.at("separable-adaptive")) << scene;
+  }
+  EXPECT_EQ(scenes, 13);
+  std::ifstream doc(kDir + "/benchmarks.md");
+  const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("## Skipping what a frame does not need"), std::string::npos);
+}
+
 // The depth step: the background is bright and behind; the cross-bilateral mode must leak less light
 // across the silhouette than the separable filter without a depth test, and no more than with it.
 TEST(BenchQuickOutput, CrossBilateralLeaksLeastAtTheDepthStep) {
@@ -159,15 +181,18 @@ TEST(BenchQuickOutput, CrossBilateralLeaksLeastAtTheDepthStep) {
 
 // The MSAA study: every scene x depth resolve, finite numbers, silhouettes found, the pictures,
 // and the properties that hold whatever the timing: multisampling beats the aliased single-sample
-// filter at the silhouettes, and on the depth step averaged depth beats sample 0.
+// filter at the silhouettes (error and fringe pixels), and on the depth step averaged depth beats
+// sample 0, min and max.
 TEST(BenchQuickOutput, MsaaStudy) {
   const Csv csv = read_csv(kDir + "/msaa.csv");
   ASSERT_EQ(csv.rows.size(), 10u);  // sphere, depth-step x {average, sample-0, min, max, single-sample}
   std::map<std::string, double> rmse;
+  std::map<std::string, int> fringe;
   for (const auto& row : csv.rows) {
     for (const auto& [key, value] : row) EXPECT_EQ(value.find("nan"), std::string::npos) << key;
     EXPECT_GT(std::stoi(row.at("silhouette_pixels")), 0) << row.at("scene");
     rmse[row.at("scene") + "/" + row.at("variant")] = std::stod(row.at("silhouette_relative_rmse"));
+    fringe[row.at("scene") + "/" + row.at("variant")] = std::stoi(row.at("fringe_pixels"));
     if (row.at("variant") == "average") {
       EXPECT_TRUE(std::filesystem::exists(kDir + "/" + row.at("picture"))) << row.at("picture");
       const double share = std::stod(row.at("resolve_share"));
@@ -176,9 +201,17 @@ TEST(BenchQuickOutput, MsaaStudy) {
     }
   }
   for (const char* scene : {"sphere", "depth-step"}) {
-    EXPECT_LT(rmse[std::string(scene) + "/average"], rmse[std::string(scene) + "/single-sample"]) << scene;
+    const std::string s(scene);
+    EXPECT_LT(rmse[s + "/average"], rmse[s + "/single-sample"]) << scene;
+    EXPECT_LT(fringe[s + "/average"], fringe[s + "/single-sample"]) << scene;
   }
-  EXPECT_LT(rmse["depth-step/average"], rmse["depth-step/sample-0"]);
+  // Where translucent surfaces at two depths share pixels (the depth step), the paper's average of
+  // the samples' linear depths beats every other resolve. On the sphere's silhouette against the
+  // empty background the resolves differ by a few per cent and none wins everywhere (the measured
+  // numbers are in the results document): not asserted.
+  for (const char* other : {"sample-0", "min", "max"}) {
+    EXPECT_LT(rmse["depth-step/average"], rmse[std::string("depth-step/") + other]) << other;
+  }
   std::ifstream doc(kDir + "/benchmarks.md");
   const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("## MSAA: depth resolve at silhouettes"), std::string::npos);

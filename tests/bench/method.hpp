@@ -23,6 +23,10 @@ class Method {
   // Renders the result for `scene` into `output` (GL_RGBA32F, scene size). Non-translucent pixels
   // must hold the input. Returns false with `error` set when the GL refused something.
   virtual bool run(const GpuScene& scene, GLuint output, std::string* error) = 0;
+  // Untimed work around each run (time_frames' before and after): an in-place method refills its
+  // colour target before, and copies its result into `output` after.
+  virtual void before_run(const GpuScene& /*scene*/) {}
+  virtual void after_run(const GpuScene& /*scene*/, GLuint /*output*/) {}
 };
 
 // The loader the library gets from its host (sss_create_desc.get_proc_address and its user).
@@ -46,11 +50,20 @@ std::unique_ptr<Method> make_kernel_family_method(const GlLoader& loader, const 
 std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
 // Mikkelsen's cross-bilateral mode (SSS_MODE_CROSS_BILATERAL) with d'Eon's six-Gaussian skin profile,
 // the profile the exact reference uses, so its error is the method's and not a profile mismatch.
-std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int taps);
+// tilt_correction false: a zero normal texture switches the per-axis cosine correction of the
+// footprint off ("cross-bilateral-no-tilt"), to show what that correction buys on tilted surfaces.
+std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int taps, bool tilt_correction = true);
 // receiver_stride s > 1: only pixels with x % s == s / 2 and y % s == s / 2 are computed (the
 // others keep the input); the full-size exact filter is too slow on a CPU rasteriser otherwise.
 // band_rows = {y0, y1} with y1 > y0: only receivers in those rows (a timing sample; the other
 // rows of the output are left as they were).
+// The library written back in place (sss_apply_frame with output_texture 0, into an RGBA16F copy of
+// the irradiance refilled before each timed frame), as a host's frame calls it, 17 taps or `taps`,
+// follow-surface on: "separable-in-place" (fixed taps), "separable-adaptive" (SSS_ADAPTIVE_TAPS) and
+// "separable-adaptive-region" (also SSS_FRAME_REGION: the translucent pixels' bounding rectangle
+// padded by the kernel's reach at the nearest translucent pixel, as a host would project its skin
+// meshes' bounds; the result equals the whole viewport's).
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();
 

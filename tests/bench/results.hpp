@@ -11,6 +11,9 @@ namespace sss_bench {
 struct RunInfo {
   std::string renderer, version, backend, clock, date, mode, command_line, reference;
   int warmup = 0, repetitions = 0;
+  // The GL state save and restore per sss_apply_frame call (state_cost.hpp); 0: not measured.
+  double state_with_restore_us = 0.0, state_without_restore_us = 0.0;
+  int state_calls = 0, state_batches = 0;
 };
 
 struct ResultRow {

@@ -27,16 +27,23 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-Timing time_frames(Clock clock, int warmup, int repetitions, const std::function<bool()>& frame) {
+Timing time_frames(Clock clock, int warmup, int repetitions, const std::function<bool()>& frame,
+                   const std::function<void()>& before, const std::function<void()>& after) {
   Timing t;
   for (int i = 0; i < warmup; ++i) {
+    if (before) before();
     if (!frame()) return t;
+    if (after) after();
   }
   glFinish();
   std::vector<double> samples;
   GLuint query = 0;
   if (clock == Clock::timer_query) glGenQueries(1, &query);
   for (int i = 0; i < repetitions; ++i) {
+    if (before) {
+      before();
+      glFinish();
+    }
     if (clock == Clock::timer_query) {
       glBeginQuery(GL_TIME_ELAPSED, query);
       const bool ok = frame();
@@ -53,6 +60,7 @@ Timing time_frames(Clock clock, int warmup, int repetitions, const std::function
       if (!ok) break;
       samples.push_back(std::chrono::duration<double, std::milli>(end - start).count());
     }
+    if (after) after();
   }
   if (query != 0) glDeleteQueries(1, &query);
   if (samples.empty()) return t;

@@ -23,8 +23,11 @@ struct Timing {
 };
 
 // Runs `frame` `warmup` times untimed, then `repetitions` times timed. `frame` returns false to
-// abort (the timing then has 0 samples).
-Timing time_frames(Clock clock, int warmup, int repetitions, const std::function<bool()>& frame);
+// abort (the timing then has 0 samples). `before` and `after`, when given, run around every frame
+// outside the timed span (the GPU finished before the clock starts): what a method needs that a
+// host's frame would not pay for, such as refilling the colour an in-place filter overwrote.
+Timing time_frames(Clock clock, int warmup, int repetitions, const std::function<bool()>& frame,
+                   const std::function<void()>& before = {}, const std::function<void()>& after = {});
 
 double median(std::vector<double> values);
 

@@ -79,6 +79,7 @@ int main(void) {
   CHECK(strstr(sss_last_error(NULL), "out_floats = 31") != NULL);
   CHECK(sss_lut_create_texture(NULL, SSS_LUT_DIFFUSE, &lut, NULL) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(sss_lut_generation_count(NULL) == 0);
+  CHECK(sss_lut_fill_generation_count() >= 1); /* the fills above generated at least one LUT */
   /* sss_get_stats and the frame's texture description are plain C99 too. */
   memset(&stats, 0, sizeof stats);
   stats.struct_size = sizeof stats;

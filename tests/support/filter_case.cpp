@@ -115,6 +115,10 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   frame.stencil = c.use_stencil ? &stencil : nullptr;
   frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
+  if (c.use_region) {
+    frame.flags |= SSS_FRAME_REGION;
+    for (int i = 0; i < 4; ++i) frame.region[i] = c.region[static_cast<std::size_t>(i)];
+  }
   if (is_gles()) describe_frame(c, w, h, &frame);  // ES 3.0 cannot be asked for formats and sizes
   outcome.result = sss_apply_frame(sss_, &frame);
   EXPECT_EQ(outcome.result, SSS_OK) << sss_last_error(sss_);
@@ -127,6 +131,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   fs.falloff = {c.settings.falloff[0], c.settings.falloff[1], c.settings.falloff[2]};
   fs.samples = c.settings.samples;
   fs.follow_surface = (c.settings.flags & SSS_FOLLOW_SURFACE) != 0;
+  fs.adaptive_taps = (c.settings.flags & SSS_ADAPTIVE_TAPS) != 0;
   sss::math::FrameGeometry g;
   g.texture_width = w;
   g.texture_height = h;
@@ -135,8 +140,17 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   g.depth = c.depth == DepthKind::linear_r32f ? sss::math::DepthEncoding::linear_distance
                                               : sss::math::DepthEncoding::hardware_minus_one_to_one;
   // The kernel through the public GL-free API (sss_kernel_plan), shaped for the passes by the math layer.
-  const sss::math::PassKernel kernel = sss::math::make_pass_kernel(plan_for(c.settings), c.settings.jitter);
-  const auto constants = sss::math::compute_pass_constants(fs, scene.projection, g, kernel.reach_mm);
+  sss::math::PassKernel kernel = sss::math::make_pass_kernel(plan_for(c.settings), c.settings.jitter);
+  if (fs.adaptive_taps && c.settings.kernel.family == SSS_KERNEL_SEPARABLE && !kernel.jittered) {
+    kernel.adaptive = sss::math::adaptive_levels(fs.samples, fs.strength, fs.falloff);
+  }
+  auto constants = sss::math::compute_pass_constants(fs, scene.projection, g, kernel.reach_mm);
+  const bool empty_region = c.use_region && (c.region[2] == 0 || c.region[3] == 0);
+  if (c.use_region && !empty_region) {  // what sss_apply_frame does: taps and drawn pixels inside the region
+    constants.clamp_min = {static_cast<float>(c.region[0]) + 0.5f, static_cast<float>(c.region[1]) + 0.5f};
+    constants.clamp_max = {static_cast<float>(c.region[0] + c.region[2]) - 0.5f,
+                           static_cast<float>(c.region[1] + c.region[3]) - 0.5f};
+  }
   sss::math::CpuFilterImage image;
   image.width = w;
   image.height = h;
@@ -146,7 +160,9 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.output_is_half = c.half_color && !c.separate_output;
   image.accumulator_is_half = is_gles();  // the module sums terms in RGBA16F there
   outcome.cpu.resize(outcome.input.size());
-  if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
+  if (empty_region) {
+    outcome.cpu = outcome.input;  // nothing translucent: the image (or its copy) as it was
+  } else if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::spike_gaussian_profile(c.settings.cbf_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);

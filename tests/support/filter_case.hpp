@@ -22,6 +22,8 @@ struct FilterCase {
   bool separate_output = false;
   std::array<int32_t, 4> viewport = {0, 0, 0, 0};
   std::vector<float> normals;  // RGBA32F view-space normals for sss_frame.normal_texture; empty: none
+  bool use_region = false;     // SSS_FRAME_REGION with `region` (x, y, width, height)
+  std::array<int32_t, 4> region = {0, 0, 0, 0};
 };
 
 struct FilterOutcome {

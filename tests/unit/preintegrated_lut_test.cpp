@@ -281,6 +281,32 @@ TEST(LutCApi, FillMatchesTheMathLayer) {
   EXPECT_EQ(out, expected);
 }
 
+// The fill functions keep their LUTs by input (issue: nothing regenerated while the parameters stay
+// the same): the same description again is a copy, the thread count is not an input of the values,
+// and any field that changes a value makes a new LUT.
+TEST(LutCApi, FillsWithTheSameInputsAreCached) {
+  sss_lut_desc desc;
+  sss_lut_default_desc(&desc);
+  desc.width = 12;
+  desc.height = 5;
+  desc.curvature_max = 0.77f;  // a description no other test fills
+  std::vector<float> first(4u * 12 * 5, -1.0f), again(first.size(), -2.0f);
+  const uint64_t before = sss_lut_fill_generation_count();
+  ASSERT_EQ(sss_lut_diffuse_fill(&desc, first.data(), first.size()), SSS_OK);
+  EXPECT_EQ(sss_lut_fill_generation_count(), before + 1);
+  desc.threads = 3;
+  ASSERT_EQ(sss_lut_diffuse_fill(&desc, again.data(), again.size()), SSS_OK);
+  EXPECT_EQ(sss_lut_fill_generation_count(), before + 1);
+  EXPECT_EQ(first, again);
+  // The shadow LUT of the same description is another LUT, and so is another curvature range.
+  ASSERT_EQ(sss_lut_shadow_fill(&desc, again.data(), again.size()), SSS_OK);
+  EXPECT_EQ(sss_lut_fill_generation_count(), before + 2);
+  desc.curvature_max = 0.78f;
+  ASSERT_EQ(sss_lut_diffuse_fill(&desc, again.data(), again.size()), SSS_OK);
+  EXPECT_EQ(sss_lut_fill_generation_count(), before + 3);
+  EXPECT_NE(first, again);
+}
+
 TEST(LutCApi, EveryMaterialGivesItsOwnLut) {
   // sss_lut_desc.profile takes sss_kernels.h's materials: each LUT is in [0, 1], flat rows are
   // saturate(N·L) exactly, and the materials differ (a strongly scattering one is brighter at the

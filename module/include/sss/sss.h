@@ -101,7 +101,17 @@ typedef struct sss_create_desc {
  *  alpha). The artist family (SSS_KERNEL_ARTIST) blends by its exact depth correction instead:
  *  1 - exp(-dz²/2τ_max), dz in profile millimetres (supplementary §E). */
 #define SSS_FOLLOW_SURFACE 0x1u
-#define SSS_SETTINGS_ALL_FLAGS 0x1u
+/** Footprint-adaptive taps: each pixel's kernel is sized by its footprint, the pixels one profile
+ *  millimetre spans there (width, projection, depth and alpha decide it). A pixel whose whole kernel
+ *  spans less than half a pixel is passed through untouched (no taps: the exact convolution keeps
+ *  nearly all such a pixel's light in it); above that, the pixel runs eq. (1) with 9, 17 or 33 taps
+ *  over the same range, the fewest whose mean spacing stays within a quarter of a pixel, up to
+ *  `samples`; a pixel that needs more runs the full kernel. A distant head pays for a few taps or
+ *  none instead of `samples`; a close-up at full resolution is unchanged. Applies to eq. (1)
+ *  (SSS_KERNEL_SEPARABLE) without jitter; other families and jittered kernels run every tap, and
+ *  the cross-bilateral mode is not affected. Default off (the paper's fixed taps). */
+#define SSS_ADAPTIVE_TAPS 0x2u
+#define SSS_SETTINGS_ALL_FLAGS 0x3u
 
 /* Filter modes for sss_settings.mode. */
 /** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
@@ -135,7 +145,7 @@ typedef struct sss_settings {
   float strength[3];    /**< [0, 1] per channel: share of light that scatters. Default .78 .70 .75 */
   float falloff[3];     /**< [0, 1] per channel: profile radius scale. Default .57 .13 .08 */
   int32_t samples;      /**< odd, [3, 65]; taps per pass. Default 17 */
-  uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on) */
+  uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on), SSS_ADAPTIVE_TAPS (default off) */
   /* Appended in 0.1 for the cross-bilateral mode. */
   uint32_t mode;        /**< SSS_MODE_SEPARABLE (default) or SSS_MODE_CROSS_BILATERAL */
   int32_t cbf_taps;     /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
@@ -175,7 +185,9 @@ typedef struct sss_stencil {
 /** Hardware depth was written with glClipControl(..., GL_ZERO_TO_ONE): window depth equals NDC z.
  *  Without it depth = (z_ndc + 1) / 2 (the GL default). glDepthRange is assumed [0, 1]. */
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
-#define SSS_FRAME_ALL_FLAGS 0x1u
+/** sss_frame.region holds the host's bounding rectangle of the translucent pixels: see there. */
+#define SSS_FRAME_REGION 0x2u
+#define SSS_FRAME_ALL_FLAGS 0x3u
 
 /* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
  * depth. Each sample's depth is first converted to linear view distance with the camera. */
@@ -235,6 +247,16 @@ typedef struct sss_frame {
   uint32_t normal_format;    /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F: normal_texture's format, like the formats
                                   above (required on OpenGL ES 3.0 when normal_texture is given); ignored when it is 0 */
   uint32_t msaa_depth_resolve; /**< SSS_MSAA_DEPTH_* (multisampled inputs only; default 0 = average) */
+  /* Appended in 0.1 to skip what a frame does not need. */
+  int32_t region[4];         /**< read only with SSS_FRAME_REGION: x, y, width, height in texels, inside the
+                                  viewport, width and height >= 0. The host's promise that no pixel outside
+                                  it is translucent (e.g. the projected bounds of its skin meshes). The
+                                  passes are drawn over the region alone and their taps never read outside it
+                                  (like the viewport's edge: pad the region by the kernel's reach in pixels for
+                                  the result of the whole viewport). Width or height 0: nothing is translucent,
+                                  and in place nothing is drawn at all (a separate output gets the colour
+                                  copied). With a separate output, the viewport outside the region gets the
+                                  colour copied (one more draw): writing back costs less */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */

@@ -82,7 +82,10 @@ typedef struct sss_lut_desc {
 SSS_API void sss_lut_default_desc(sss_lut_desc *desc);
 
 /** Writes the diffuse LUT, width·height RGBA floats row by row (row 0 = curvature_min), into
- *  out_rgba. Uses width, height, profile, curvature_min/max and threads. No GL.
+ *  out_rgba. Uses width, height, profile, curvature_min/max and threads. No GL. Cached: the fill
+ *  functions keep the 8 most recently requested LUTs of the process (keyed by every input that
+ *  changes a value; thread-safe), so asking again with the same description copies instead of
+ *  generating (sss_lut_fill_generation_count counts the generations).
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT desc or out_rgba NULL, bad struct_size, a field outside its range
  *                                     on sss_lut_desc (named in sss_last_error(NULL)), or out_floats below
@@ -122,6 +125,10 @@ SSS_API sss_result sss_lut_shadow_fill(const sss_lut_desc *desc, float *out_rgba
  *  On failure *out_texture is 0 and nothing is left in the GL. */
 SSS_API sss_result sss_lut_create_texture(sss_context *ctx, int32_t which, const sss_lut_desc *desc,
                                           uint32_t *out_texture);
+
+/** How many LUTs sss_lut_diffuse_fill and sss_lut_shadow_fill have generated in this process: a
+ *  fill that found its LUT cached leaves it unchanged. */
+SSS_API uint64_t sss_lut_fill_generation_count(void);
 
 /** How many LUTs the context has generated (CPU or GPU) since it was created: a call that found its
  *  LUT cached leaves it unchanged. 0 for NULL. */

@@ -185,6 +185,20 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   } else {
     run->viewport = {vp[0], vp[1], vp[2], vp[3]};
   }
+  run->draw_rect = run->viewport;
+  if ((frame.flags & SSS_FRAME_REGION) != 0) {
+    const int32_t* rg = frame.region;
+    const std::array<int, 4>& v = run->viewport;
+    // In 64 bits: x + width of two large int32 values must not wrap into range.
+    const auto end = [](int32_t a, int32_t b) { return static_cast<int64_t>(a) + static_cast<int64_t>(b); };
+    if (rg[0] < v[0] || rg[1] < v[1] || end(rg[0], rg[2]) > end(v[0], v[2]) || end(rg[1], rg[3]) > end(v[1], v[3])) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "frame->region = {%d, %d, %d, %d} reaches outside the viewport {%d, %d, %d, %d}", rg[0], rg[1], rg[2],
+                  rg[3], v[0], v[1], v[2], v[3]);
+    }
+    run->draw_rect = {rg[0], rg[1], rg[2], rg[3]};
+    run->region = true;
+  }
   return SSS_OK;
 }
 
@@ -264,6 +278,19 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
     run.cbf_kernel = &ctx->cbf_kernel;
     run.cbf_kernel_revision = ctx->cbf_kernel_revision;
     run.cbf = sss::math::compute_cbf_constants(ctx->settings, ctx->projection, geometry);
+  }
+
+  if (run.region) {
+    // The host's promise: nothing translucent outside draw_rect. An empty one means nothing is;
+    // otherwise the passes draw there alone and their taps stay inside it, like at the viewport's
+    // edge (the projection is still the viewport's: only the clamp and the drawn rectangle change).
+    if (run.draw_rect[2] == 0 || run.draw_rect[3] == 0) {
+      run.identity = true;
+    } else {
+      const std::array<int, 4>& d = run.draw_rect;
+      run.constants.clamp_min = {static_cast<float>(d[0]) + 0.5f, static_cast<float>(d[1]) + 0.5f};
+      run.constants.clamp_max = {static_cast<float>(d[0] + d[2]) - 0.5f, static_cast<float>(d[1] + d[3]) - 0.5f};
+    }
   }
 
   std::string message;

@@ -8,7 +8,9 @@
 #include "context.hpp"
 #include "lut_inputs.hpp"
 #include "../math/kernel_request.hpp"
+#include "../math/lut_cache.hpp"
 #include "../math/materials.hpp"
+#include "../math/preintegrated_lut.hpp"
 #include "validation.hpp"
 
 namespace sss::api {
@@ -61,6 +63,14 @@ namespace {
 
 using sss::api::fail;
 
+// The fill functions' LUTs, kept by the full text of their inputs (not the thread count, which
+// changes nothing in the values): a second fill with the same description copies instead of
+// generating. Process-wide, since these calls have no context; thread-safe (LutCache's lock).
+sss::math::LutCache& fill_cache() {
+  static sss::math::LutCache cache(8);
+  return cache;
+}
+
 template <typename Generate>
 sss_result fill(const sss_lut_desc* desc, float* out_rgba, size_t out_floats, bool diffuse, Generate generate) {
   sss::api::LutUse use;
@@ -74,7 +84,12 @@ sss_result fill(const sss_lut_desc* desc, float* out_rgba, size_t out_floats, bo
                 desc->width, desc->height, needed);
   }
   try {
-    generate(*desc, out_rgba);
+    const sss::math::LutCache::Data data = fill_cache().get(generate.key(*desc), [&] {
+      std::vector<float> values(needed);
+      generate(*desc, values.data());
+      return values;
+    });
+    std::memcpy(out_rgba, data->data(), needed * sizeof(float));
   } catch (const std::system_error& e) {  // std::thread could not start
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "starting a generator thread failed: %s", e.what());
   } catch (const std::bad_alloc&) {
@@ -82,6 +97,24 @@ sss_result fill(const sss_lut_desc* desc, float* out_rgba, size_t out_floats, bo
   }
   return SSS_OK;
 }
+
+struct DiffuseGenerator {
+  std::string key(const sss_lut_desc& d) const {
+    return sss::math::diffuse_lut_key(sss::api::lut_profile(d), sss::api::diffuse_lut_desc(d));
+  }
+  void operator()(const sss_lut_desc& d, float* out) const {
+    sss::math::generate_diffuse_lut(sss::api::lut_profile(d), sss::api::diffuse_lut_desc(d), d.threads, out);
+  }
+};
+
+struct ShadowGenerator {
+  std::string key(const sss_lut_desc& d) const {
+    return sss::math::shadow_lut_key(sss::api::lut_profile(d), sss::api::shadow_lut_desc(d));
+  }
+  void operator()(const sss_lut_desc& d, float* out) const {
+    sss::math::generate_shadow_lut(sss::api::lut_profile(d), sss::api::shadow_lut_desc(d), d.threads, out);
+  }
+};
 
 }  // namespace
 
@@ -109,16 +142,14 @@ SSS_API void sss_lut_default_desc(sss_lut_desc* desc) {
 }
 
 SSS_API sss_result sss_lut_diffuse_fill(const sss_lut_desc* desc, float* out_rgba, size_t out_floats) {
-  return fill(desc, out_rgba, out_floats, true, [](const sss_lut_desc& d, float* out) {
-    sss::math::generate_diffuse_lut(sss::api::lut_profile(d), sss::api::diffuse_lut_desc(d), d.threads, out);
-  });
+  return fill(desc, out_rgba, out_floats, true, DiffuseGenerator{});
 }
 
 SSS_API sss_result sss_lut_shadow_fill(const sss_lut_desc* desc, float* out_rgba, size_t out_floats) {
-  return fill(desc, out_rgba, out_floats, false, [](const sss_lut_desc& d, float* out) {
-    sss::math::generate_shadow_lut(sss::api::lut_profile(d), sss::api::shadow_lut_desc(d), d.threads, out);
-  });
+  return fill(desc, out_rgba, out_floats, false, ShadowGenerator{});
 }
+
+SSS_API uint64_t sss_lut_fill_generation_count(void) { return fill_cache().generations(); }
 
 SSS_API uint64_t sss_lut_generation_count(const sss_context* ctx) {
   return ctx == nullptr ? 0u : ctx->lut_gpu_generations + ctx->lut_data.generations();

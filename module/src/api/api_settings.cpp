@@ -25,6 +25,7 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.cbf_profile = s.cbf_profile;
   f.kernel = sss::api::to_kernel_request(s.kernel);
   f.jitter = s.jitter;
+  f.adaptive_taps = (s.flags & SSS_ADAPTIVE_TAPS) != 0;
   return f;
 }
 
@@ -35,7 +36,7 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
     s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
   }
   s->samples = f.samples;
-  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s->flags = (f.follow_surface ? SSS_FOLLOW_SURFACE : 0u) | (f.adaptive_taps ? SSS_ADAPTIVE_TAPS : 0u);
   s->mode = f.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   s->cbf_taps = f.cbf_taps;
   s->cbf_r_max_mm = f.cbf_r_max_mm;

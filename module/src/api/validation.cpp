@@ -86,6 +86,12 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->viewport = {%d, %d, %d, %d}: x, y must be >= 0 and width, height > 0 (or all 0)", vp[0],
                 vp[1], vp[2], vp[3]);
   }
+  const int32_t* rg = frame->region;
+  if ((frame->flags & SSS_FRAME_REGION) != 0 && (rg[0] < 0 || rg[1] < 0 || rg[2] < 0 || rg[3] < 0)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->region = {%d, %d, %d, %d}: x, y, width and height must be >= 0 (SSS_FRAME_REGION is set)", rg[0],
+                rg[1], rg[2], rg[3]);
+  }
   if (frame->msaa_depth_resolve > SSS_MSAA_DEPTH_MAX) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->msaa_depth_resolve = %u: must be SSS_MSAA_DEPTH_AVERAGE, _SAMPLE0, _MIN or _MAX (0..3)",

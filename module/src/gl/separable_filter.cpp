@@ -12,6 +12,10 @@ namespace sss::gl {
 
 namespace {
 constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3, kAccumulatedUnit = 3;
+// u_kernel's length in the adaptive variant: the full kernel and every level below it (at most
+// 9 + 17 + 33 taps under 65), 128 vec4 in all: within GL 3.3's 256 and ES 3.0's 224 fragment
+// uniform vectors with the other uniforms.
+constexpr int kKernelSlots = SSS_MAX_SAMPLES + 9 + 17 + 33 + 4;
 
 // A tag in [1025, 1025 + 2^20), exact in float, different for each init() in the process (modulo
 // 2^20). It is stored as the sampler's GL_TEXTURE_MAX_LOD, which has no effect here: the sampler
@@ -179,24 +183,30 @@ SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run,
   v.linear_depth = run.constants.linear_depth;
   v.jitter = !taps.jitter_mm.empty();
   v.accumulate = axis == 1 && term > 0;
+  // The levels are eq. (1) of one term: a kernel of several terms never has them.
+  v.adaptive = !run.kernel->adaptive.empty() && run.kernel->terms.size() == 1;
   return v;
 }
 
 sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out, std::string* message) {
   const int index =
-      (((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 + (v.jitter ? 1 : 0)) *
+      ((((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 + (v.jitter ? 1 : 0)) *
+           2 +
+       (v.accumulate ? 1 : 0)) *
           2 +
-      (v.accumulate ? 1 : 0);
+      (v.adaptive ? 1 : 0);
   BlurProgram& p = blur_programs_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
 
-  char defines[256];
+  char defines[320];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_MAX_TAPS %d\n",
+                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_MAX_TAPS %d\n"
+                "#define SSS_ADAPTIVE %d\n#define SSS_MAX_LEVELS %d\n#define SSS_KERNEL_SLOTS %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES), v.adaptive ? 1 : 0, math::kMaxAdaptiveLevels,
+                kKernelSlots);
   std::string log;
   const Functions& f = *gl_;
   p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::separable_blur_frag, &log);
@@ -204,10 +214,10 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
     *message = "separable blur shader (" + std::string(defines) + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  char label[96];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
+  char label[112];
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d adaptive=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0);
+                v.accumulate ? 1 : 0, v.adaptive ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
   p.source = f.GetUniformLocation(p.program, "u_source");
@@ -224,6 +234,8 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.levels = f.GetUniformLocation(p.program, "u_levels");
+  p.level_count = f.GetUniformLocation(p.program, "u_level_count");
   // Sampler units never change: set them once (GLSL 420 has them in the shader already).
   if (!has_explicit_bindings(variant_)) {
     f.UseProgram(p.program);
@@ -461,10 +473,25 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
   if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
     std::vector<float> packed;
     packed.reserve(taps.taps.size() * 4);
-    for (const math::KernelTap& tap : taps.taps) {
-      packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
+    const auto pack = [&packed](const std::vector<math::KernelTap>& list) {
+      for (const math::KernelTap& tap : list) {
+        packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
+      }
+    };
+    pack(taps.taps);
+    if (p.levels >= 0) {
+      // The adaptive levels' taps follow the full kernel's in u_kernel; u_levels says where each
+      // starts, how many it has (0: pass through) and the largest step it serves.
+      std::vector<float> levels;
+      for (const math::AdaptiveLevel& level : run.kernel->adaptive) {
+        levels.insert(levels.end(), {static_cast<float>(packed.size() / 4), static_cast<float>(level.taps.taps.size()),
+                                     level.max_step, 0.0f});
+        pack(level.taps.taps);
+      }
+      f.Uniform4fv(p.levels, static_cast<GLsizei>(levels.size() / 4), levels.data());
+      f.Uniform1i(p.level_count, static_cast<GLint>(levels.size() / 4));
     }
-    f.Uniform4fv(p.kernel, static_cast<GLsizei>(taps.taps.size()), packed.data());
+    f.Uniform4fv(p.kernel, static_cast<GLsizei>(packed.size() / 4), packed.data());
     f.Uniform1i(p.tap_count, static_cast<GLint>(taps.taps.size()));
     if (p.jitter >= 0) f.Uniform1fv(p.jitter, static_cast<GLsizei>(taps.jitter_mm.size()), taps.jitter_mm.data());
     if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
@@ -580,7 +607,7 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
 
   set_pass_state(f);
   f.BindVertexArray(vertex_array_);
-  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
 
   // Attachments: the stencil copy goes on every target, or comes off every one.
   if (run.stencil != nullptr && !run.stencil_ready) {
@@ -604,6 +631,7 @@ sss_result SeparableFilter::run_single(const FilterRun& run, std::string* messag
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
   r = check_framebuffer("vertical pass", message);
+  if (r == SSS_OK && run.region && !write_back) copy_outside_region(run);
 
   if (r == SSS_OK) {
     // gpu_time_ms[0] spans everything before the last vertical pass (for one term: the horizontal
@@ -688,7 +716,7 @@ sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) 
 
   set_pass_state(f);
   f.BindVertexArray(vertex_array_);
-  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
   if (run.stencil != nullptr) {
     r = copy_stencil(*run.stencil, width, height, message);
     if (r != SSS_OK) return r;
@@ -709,6 +737,7 @@ sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) 
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, output, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_attachment);
   r = check_framebuffer("vertical pass", message);
+  if (r == SSS_OK && run.region && !write_back) copy_outside_region(run);
 
   if (r == SSS_OK) {
     const bool measured = measure_ && queries_.begin_frame(run.frame);
@@ -760,6 +789,15 @@ sss_result SeparableFilter::run_cbf(const FilterRun& run, std::string* message) 
   f.BindFramebuffer(DRAW_FRAMEBUFFER, output_framebuffer_);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
   return r;
+}
+
+void SeparableFilter::copy_outside_region(const FilterRun& run) {
+  const Functions& f = *gl_;
+  DebugGroup group(f, labels_, "sss copy of the viewport outside the region");
+  f.Disable(STENCIL_TEST);
+  f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
+  draw_copy(run.color.name);
+  f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
 }
 
 sss_result SeparableFilter::run_identity(const FilterRun& run, std::string* message) {

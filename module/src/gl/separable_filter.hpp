@@ -40,6 +40,11 @@ struct FilterRun {
   TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
+  // Where the passes draw and their taps stay (constants.clamp_*): the viewport, or the host's
+  // region of translucent pixels (SSS_FRAME_REGION; region true). With a separate output the rest of
+  // the viewport gets the colour copied first.
+  std::array<int, 4> draw_rect = {0, 0, 0, 0};
+  bool region = false;
   const math::PassKernel* kernel = nullptr;  // one pair of passes per term
   std::uint64_t kernel_revision = 0;       // changes whenever the kernel does
   math::PassConstants constants;
@@ -101,18 +106,19 @@ class SeparableFilter {
     Outside outside = Outside::write_centre;
     int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
     bool linear_depth = false, jitter = false, accumulate = false;
+    bool adaptive = false;  // footprint-adaptive taps (math::PassKernel::adaptive)
   };
   struct BlurProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, accumulated = -1, kernel = -1, tap_count = -1, jitter = -1,
           inv_two_variance = -1, axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1,
-          depth_terms = -1, clamp = -1;
+          depth_terms = -1, clamp = -1, levels = -1, level_count = -1;
     // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
     std::uint64_t kernel_revision = 0;
     std::size_t uploaded_term = 0;
     int uploaded_axis = -1;
   };
-  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2;
+  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
   struct CbfProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
@@ -131,6 +137,9 @@ class SeparableFilter {
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
   void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);
   sss_result run_single(const FilterRun& run, std::string* message);
+  // With a region and a separate output: the viewport's colour into the output (bound as the draw
+  // framebuffer), so the pixels the region leaves out hold their input.
+  void copy_outside_region(const FilterRun& run);
 
   // MSAA path (separable_filter_msaa.cpp).
   struct ResolveProgram {

@@ -58,28 +58,41 @@ void StateGuard::restore_stencil_face(GLenum face_enum, const StencilFace& face)
   gl_.StencilMaskSeparate(face_enum, static_cast<GLuint>(face.write_mask));
 }
 
+std::atomic<uint32_t>& restore_skip_mask_for_tests() {
+  static std::atomic<uint32_t> mask{0};
+  return mask;
+}
+
 StateGuard::~StateGuard() {
   if (!enabled_) return;
-  restore_stencil_face(FRONT, front_);
-  restore_stencil_face(BACK, back_);
-  gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
+  const uint32_t skip = restore_skip_mask_for_tests().load(std::memory_order_relaxed);
+  const auto restore = [skip](uint32_t group) { return (skip & group) == 0; };
+  if (restore(restore_group::stencil)) {
+    restore_stencil_face(FRONT, front_);
+    restore_stencil_face(BACK, back_);
+  }
+  if (restore(restore_group::color_mask)) gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
   if (gl_.desktop()) {
-    gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
-    for (int i = 0; i < kClipDistances; ++i) {
+    if (restore(restore_group::polygon_mode)) gl_.PolygonMode(FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    for (int i = 0; i < kClipDistances && restore(restore_group::clip_distances); ++i) {
       const GLenum cap = CLIP_DISTANCE0 + static_cast<GLenum>(i);
       clip_distances_[static_cast<std::size_t>(i)] ? gl_.Enable(cap) : gl_.Disable(cap);
     }
-    for (std::size_t i = 0; i < kDesktopCapabilities.size(); ++i) {
+    for (std::size_t i = 0; i < kDesktopCapabilities.size() && restore(restore_group::desktop_enables); ++i) {
       desktop_capabilities_[i] ? gl_.Enable(kDesktopCapabilities[i]) : gl_.Disable(kDesktopCapabilities[i]);
     }
   }
-  if (gl_.has_sample_mask()) sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
-  for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
+  if (gl_.has_sample_mask() && restore(restore_group::sample_mask_enable)) {
+    sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
+  }
+  for (std::size_t i = 0; i < kCapabilities.size() && restore(restore_group::enables); ++i) {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
-  gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  if (gl_.has_msaa_path()) gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
-  for (int unit = 0; unit < kUnitCount; ++unit) {
+  if (restore(restore_group::viewport)) gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  if (gl_.has_msaa_path() && restore(restore_group::sample_mask_value)) {
+    gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
+  }
+  for (int unit = 0; unit < kUnitCount && restore(restore_group::texture_units); ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
     if (gl_.has_multisample_textures()) {
@@ -88,17 +101,21 @@ StateGuard::~StateGuard() {
     }
     gl_.BindSampler(static_cast<GLuint>(unit), static_cast<GLuint>(samplers_[static_cast<std::size_t>(unit)]));
   }
-  gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
-  gl_.BindBuffer(PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
-  gl_.BindRenderbuffer(RENDERBUFFER, static_cast<GLuint>(renderbuffer_));
-  gl_.BindFramebuffer(READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
-  gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
-  gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
+  if (restore(restore_group::active_texture)) gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
+  if (restore(restore_group::unpack_buffer)) gl_.BindBuffer(PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+  if (restore(restore_group::renderbuffer)) gl_.BindRenderbuffer(RENDERBUFFER, static_cast<GLuint>(renderbuffer_));
+  if (restore(restore_group::read_framebuffer)) {
+    gl_.BindFramebuffer(READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
+  }
+  if (restore(restore_group::draw_framebuffer)) {
+    gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
+  }
+  if (restore(restore_group::vertex_array)) gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
   // A program the host deleted while it was current lives on only while current: once the
   // passes bound another, it is gone and binding its name would raise GL_INVALID_VALUE. Zero is
   // what the host's own next glUseProgram would have found then.
   const GLuint program = static_cast<GLuint>(program_);
-  gl_.UseProgram(program != 0 && gl_.IsProgram(program) ? program : 0);
+  if (restore(restore_group::program)) gl_.UseProgram(program != 0 && gl_.IsProgram(program) ? program : 0);
 }
 
 void set_pass_state(const Functions& gl) {

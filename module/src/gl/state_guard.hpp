@@ -3,10 +3,39 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <cstdint>
 
 #include "gl_functions.hpp"
 
 namespace sss::gl {
+
+// Groups of restores in ~StateGuard. A test hook (restore_skip_mask_for_tests) can skip any of
+// them, so the state harness can show that it notices each single missing restore
+// (tests/gl/state_fuzz_test.cpp). Not part of the public API; the mask is 0 outside that test.
+namespace restore_group {
+enum : uint32_t {
+  stencil = 1u << 0,          // both faces: func, ref, masks, ops
+  color_mask = 1u << 1,
+  polygon_mode = 1u << 2,     // desktop
+  clip_distances = 1u << 3,   // desktop
+  desktop_enables = 1u << 4,  // FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP
+  sample_mask_enable = 1u << 5,
+  enables = 1u << 6,          // kCapabilities
+  viewport = 1u << 7,
+  sample_mask_value = 1u << 8,   // set by the MSAA write-back only
+  texture_units = 1u << 9,       // 2D and 2D-multisample bindings and samplers of units 0-3
+  active_texture = 1u << 10,
+  unpack_buffer = 1u << 11,
+  renderbuffer = 1u << 12,
+  read_framebuffer = 1u << 13,
+  draw_framebuffer = 1u << 14,
+  vertex_array = 1u << 15,
+  program = 1u << 16,
+  all = (1u << 17) - 1u
+};
+}  // namespace restore_group
+std::atomic<uint32_t>& restore_skip_mask_for_tests();
 
 // Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
 constexpr int kUnitCount = 4;

@@ -42,9 +42,9 @@ struct Plane {
 
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y). Returns false when the pixel is left
 // as it is (not translucent or no usable depth).
-bool filter_pixel(const PassTaps& pass, float depth_variance_mm2, const PassConstants& k, const Plane& source,
-                  const Plane& depth, int axis, int x, int y, Rgba* result) {
-  const std::vector<KernelTap>& kernel = pass.taps;
+bool filter_pixel(const PassTaps& full, const std::vector<AdaptiveLevel>& levels, float depth_variance_mm2,
+                  const PassConstants& k, const Plane& source, const Plane& depth, int axis, int x, int y,
+                  Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
   if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
@@ -54,6 +54,10 @@ bool filter_pixel(const PassTaps& pass, float depth_variance_mm2, const PassCons
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
   const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
+  const PassTaps* chosen = adaptive_taps(levels, full, step);
+  if (chosen == nullptr) return false;  // the kernel spans under half a pixel: passed through
+  const PassTaps& pass = *chosen;
+  const std::vector<KernelTap>& kernel = pass.taps;
   const bool gaussian_depth = depth_variance_mm2 > 0.0f;
   const float follow_surface = (gaussian_depth ? k.mm_per_world : k.follow_surface_factor) / strength;
   const float inv_two_variance = gaussian_depth ? 0.5f / depth_variance_mm2 : 0.0f;
@@ -119,7 +123,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
         const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
         if (inside(constants, x, y) && masked_in) {
           Rgba blurred;
-          if (filter_pixel(term.horizontal, term.depth_variance_mm2, constants, color, depth, 0, x, y, &blurred)) {
+          if (filter_pixel(term.horizontal, kernel.adaptive, term.depth_variance_mm2, constants, color, depth, 0, x,
+                           y, &blurred)) {
             value = blurred;
           }
         }
@@ -135,7 +140,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
         const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
         if (!inside(constants, x, y) || !masked_in) continue;
         Rgba blurred;
-        if (!filter_pixel(term.vertical, term.depth_variance_mm2, constants, half_plane, depth, 1, x, y, &blurred)) {
+        if (!filter_pixel(term.vertical, kernel.adaptive, term.depth_variance_mm2, constants, half_plane, depth, 1,
+                          x, y, &blurred)) {
           continue;
         }
         for (int c = 0; c < 3; ++c) {

@@ -25,6 +25,7 @@ struct FilterSettings {
   // `samples` taps (kernel.taps, .strength and .falloff are not read).
   KernelRequest kernel;
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
+  bool adaptive_taps = false;  // SSS_ADAPTIVE_TAPS: taps follow each pixel's footprint (pass_kernel.hpp)
 };
 
 enum class DepthEncoding {

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "kernel_families.hpp"
+#include "separable_kernel.hpp"
 
 namespace sss::math {
 
@@ -81,16 +82,48 @@ PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
   return k;
 }
 
+std::vector<AdaptiveLevel> adaptive_levels(int samples, const std::array<float, 3>& strength,
+                                           const std::array<float, 3>& falloff) {
+  const double range = separable_kernel_range_mm(samples);
+  std::vector<AdaptiveLevel> levels;
+  AdaptiveLevel pass_through;
+  pass_through.max_step = static_cast<float>(kPassThroughRadiusPx / range);
+  levels.push_back(pass_through);
+  for (int n : kAdaptiveTapCounts) {
+    if (n >= samples) break;
+    AdaptiveLevel level;
+    level.max_step = static_cast<float>(kLevelSpacingPx * static_cast<double>((n - 1) / 2) / range);
+    if (level.max_step <= levels.back().max_step) continue;  // would never be chosen
+    level.taps = make_pass_taps(separable_kernel(n, strength, falloff, range), 0.0f);
+    levels.push_back(std::move(level));
+  }
+  return levels;
+}
+
+const PassTaps* adaptive_taps(const std::vector<AdaptiveLevel>& levels, const PassTaps& full, float step) {
+  for (const AdaptiveLevel& level : levels) {
+    if (step <= level.max_step) return level.taps.taps.empty() ? nullptr : &level.taps;
+  }
+  return &full;
+}
+
 PassKernel build_pass_kernel(const FilterSettings& settings) {
   KernelRequest request = settings.kernel;
   request.taps = settings.samples;
   request.strength = settings.strength;
   request.falloff = settings.falloff;
-  return make_pass_kernel(build_kernel_plan(request), settings.jitter);
+  PassKernel k = make_pass_kernel(build_kernel_plan(request), settings.jitter);
+  if (settings.adaptive_taps && request.family == KernelFamily::separable && !k.jittered) {
+    k.adaptive = adaptive_levels(settings.samples, settings.strength, settings.falloff);
+  }
+  return k;
 }
 
 bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b) {
-  if (a.samples != b.samples || a.jitter != b.jitter || a.kernel.family != b.kernel.family) return false;
+  if (a.samples != b.samples || a.jitter != b.jitter || a.kernel.family != b.kernel.family ||
+      a.adaptive_taps != b.adaptive_taps) {
+    return false;
+  }
   const KernelRequest& x = a.kernel;
   const KernelRequest& y = b.kernel;
   switch (x.family) {

@@ -28,11 +28,47 @@ struct PassTerm {
   float depth_variance_mm2 = 0.0f;
 };
 
+// Footprint-adaptive filtering (SSS_ADAPTIVE_TAPS): a pixel whose kernel covers few pixels needs
+// few taps. Each level serves the pixels whose step, the pixels one profile millimetre spans there
+// (the pass's pixels_per_mm · strength / clip w), is at most max_step; the first level that serves
+// a pixel is used, and a pixel no level serves runs the full kernel (terms[0]).
+struct AdaptiveLevel {
+  PassTaps taps;           // eq. (1) with fewer taps over the full kernel's range; no taps: pass through
+  float max_step = 0.0f;   // pixels per profile mm
+};
+
+// The footprint rules, in pixels: a kernel whose whole range spans less than kPassThroughRadiusPx
+// around the centre leaves the pixel as it is: the exact surface convolution keeps almost all of
+// such a pixel's light in it, while bilinear taps at sub-pixel offsets would blend in neighbours
+// (measured: passing through is closer to the exact reference there than the full kernel).
+// Otherwise a level of n taps serves while its mean tap spacing, range / ((n - 1) / 2), stays within
+// kLevelSpacingPx: a quarter pixel keeps the error within about 1 % of the full kernel's on the
+// benchmark's head shots (half a pixel cost 6 % on the mid shot, a whole pixel 18 %).
+constexpr float kPassThroughRadiusPx = 0.5f;
+constexpr float kLevelSpacingPx = 0.25f;
+// The tap counts of the levels below the kernel's own (only those smaller than it are used; 3 and
+// 5 taps would serve only footprints the pass-through already takes).
+constexpr int kAdaptiveTapCounts[] = {9, 17, 33};
+constexpr int kMaxAdaptiveLevels = 1 + static_cast<int>(sizeof kAdaptiveTapCounts / sizeof kAdaptiveTapCounts[0]);
+
 struct PassKernel {
   std::vector<PassTerm> terms;  // 1..SSS_KERNEL_MAX_TERMS
   float reach_mm = 0.0f;        // the largest |offset|: the follow-surface ramp's full blend
   bool jittered = false;        // some tap has a jitter width
+  // Empty unless SSS_ADAPTIVE_TAPS is on and the kernel is eq. (1) without jitter (one term, the
+  // same taps on both axes): in increasing max_step, the pass-through level first.
+  std::vector<AdaptiveLevel> adaptive;
 };
+
+// The levels of eq. (1) with `samples` taps: pass-through, then every count of kAdaptiveTapCounts
+// below `samples` that serves a larger footprint than the level before it, each over
+// separable_kernel_range_mm(samples).
+std::vector<AdaptiveLevel> adaptive_levels(int samples, const std::array<float, 3>& strength,
+                                           const std::array<float, 3>& falloff);
+
+// The taps a pixel with this step runs: a level's, the full kernel's (`full`), or nullptr to pass
+// the pixel through. The shader makes the same choice (separable_blur.frag, SSS_ADAPTIVE).
+const PassTaps* adaptive_taps(const std::vector<AdaptiveLevel>& levels, const PassTaps& full, float step);
 
 // Reorders each pass of `plan` centre first (a zero-weight centre tap is added when the plan has
 // no tap at offset 0) and gives the outermost round(jitter · taps) taps of every pass (ties at equal

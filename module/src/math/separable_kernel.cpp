@@ -9,7 +9,10 @@ namespace sss::math {
 double separable_kernel_range_mm(int samples) { return samples > 20 ? 3.0 : 2.0; }
 
 std::vector<double> separable_kernel_offsets(int samples) {
-  const double range = separable_kernel_range_mm(samples);
+  return separable_kernel_offsets(samples, separable_kernel_range_mm(samples));
+}
+
+std::vector<double> separable_kernel_offsets(int samples, double range) {
   std::vector<double> offsets(static_cast<std::size_t>(samples));
   const int half = samples / 2;
   for (int i = 0; i < samples; ++i) {
@@ -22,8 +25,12 @@ std::vector<double> separable_kernel_offsets(int samples) {
 
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
                                         const std::array<float, 3>& falloff) {
-  const double range = separable_kernel_range_mm(samples);
-  const std::vector<double> offsets = separable_kernel_offsets(samples);
+  return separable_kernel(samples, strength, falloff, separable_kernel_range_mm(samples));
+}
+
+std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
+                                        const std::array<float, 3>& falloff, double range) {
+  const std::vector<double> offsets = separable_kernel_offsets(samples, range);
   const std::size_t n = offsets.size();
 
   // Weights in spatial order: the profile integrated over each tap's interval.

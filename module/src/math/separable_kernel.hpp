@@ -18,6 +18,8 @@ double separable_kernel_range_mm(int samples);
 // Tap offsets for an odd `samples` in [3, 65]: samples spaced evenly in t ∈ [-R, R] mapped to
 // sign(t)·t²/R, so taps are denser at the centre where the profile is peaked.
 std::vector<double> separable_kernel_offsets(int samples);
+// The same spacing on [-range_mm, range_mm] (range_mm > 0).
+std::vector<double> separable_kernel_offsets(int samples, double range_mm);
 
 // The kernel: centre tap first, then the rest from most negative to most positive offset (the
 // reference shader's layout). Each weight is the base profile integrated exactly over its tap's
@@ -26,5 +28,9 @@ std::vector<double> separable_kernel_offsets(int samples);
 // Preconditions (checked by the API layer): samples odd in [3, 65]; strength, falloff in [0, 1].
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
                                         const std::array<float, 3>& falloff);
+// The same with an explicit half-extent (the footprint-adaptive levels of a kernel keep its range
+// whatever their tap count, so they all stand for the same profile interval).
+std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
+                                        const std::array<float, 3>& falloff, double range_mm);
 
 }  // namespace sss::math

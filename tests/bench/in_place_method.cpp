@@ -1,0 +1,142 @@
+// The library as a host's frame calls it: written back in place into the host's lit colour, with the
+// options that skip work a frame does not need (footprint-adaptive taps, the region of translucent
+// pixels). Only sss_apply_frame is timed: refilling the colour before each frame and copying the
+// result out for scoring happen outside the clock (Method::before_run / after_run).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "method.hpp"
+#include "sss/sss.h"
+
+using namespace host_gl;
+
+namespace sss_bench {
+
+namespace {
+
+class InPlaceMethod : public Method {
+ public:
+  InPlaceMethod(const GlLoader& loader, int taps, bool adaptive, bool region)
+      : taps_(taps), adaptive_(adaptive), region_(region) {
+    sss_create_desc desc = {};
+    desc.struct_size = sizeof desc;
+    desc.get_proc_address = loader.get_proc_address;
+    desc.get_proc_address_user = loader.user;
+    if (sss_create(&desc, &ctx_) != SSS_OK) throw std::runtime_error(sss_last_error(nullptr));
+    glGenFramebuffers(2, framebuffers_);
+  }
+  ~InPlaceMethod() override {
+    sss_destroy(ctx_);
+    glDeleteFramebuffers(2, framebuffers_);
+    if (work_ != 0) glDeleteTextures(1, &work_);
+  }
+
+  std::string name() const override {
+    if (!adaptive_) return "separable-in-place";
+    return region_ ? "separable-adaptive-region" : "separable-adaptive";
+  }
+  int taps() const override { return taps_; }
+  bool follow_surface() const override { return true; }
+  int passes() const override { return 2; }
+
+  void before_run(const GpuScene& scene) override {
+    prepare(scene);
+    blit(scene.irradiance, work_, scene.width, scene.height);
+  }
+
+  bool run(const GpuScene& scene, GLuint /*output*/, std::string* error) override {
+    sss_settings s;
+    sss_default_settings(&s);
+    s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
+    s.samples = taps_;
+    s.flags = SSS_FOLLOW_SURFACE | (adaptive_ ? SSS_ADAPTIVE_TAPS : 0u);
+    sss_frame frame = {};
+    frame.struct_size = sizeof frame;
+    frame.color_texture = work_;
+    frame.depth_texture = scene.depth;
+    if (region_) {
+      frame.flags |= SSS_FRAME_REGION;
+      for (int i = 0; i < 4; ++i) frame.region[i] = region_rect_[static_cast<std::size_t>(i)];
+    }
+    if (sss_set_settings(ctx_, &s) != SSS_OK || sss_set_camera(ctx_, scene.projection.data()) != SSS_OK ||
+        sss_apply_frame(ctx_, &frame) != SSS_OK) {
+      *error = sss_last_error(ctx_);
+      return false;
+    }
+    return true;
+  }
+
+  void after_run(const GpuScene& scene, GLuint output) override { blit(work_, output, scene.width, scene.height); }
+
+ private:
+  // A float colour texture into another of the same size (GL_NEAREST: texel for texel).
+  void blit(GLuint from, GLuint to, int width, int height) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[0]);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[1]);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  // The work texture for this scene's size, and the region a host would pass: the bounding
+  // rectangle of the translucent pixels, padded by the kernel's reach in pixels at the nearest
+  // translucent pixel (range 2 or 3 mm, at alpha 1), clipped to the frame; empty when none is.
+  void prepare(const GpuScene& scene) {
+    if (work_ == 0 || work_width_ != scene.width || work_height_ != scene.height) {
+      if (work_ == 0) glGenTextures(1, &work_);
+      glBindTexture(GL_TEXTURE_2D, work_);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, scene.width, scene.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      work_width_ = scene.width;
+      work_height_ = scene.height;
+    }
+    // Recomputed before every frame (untimed): a host would project its meshes' bounds each frame.
+    int x0 = scene.width, y0 = scene.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < scene.height; ++y) {
+      for (int x = 0; x < scene.width; ++x) {
+        if (!(scene.irradiance_half[(static_cast<std::size_t>(y) * scene.width + x) * 4 + 3] > 0.0f)) continue;
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y);
+        x1 = std::max(x1, x);
+        y1 = std::max(y1, y);
+      }
+    }
+    if (x1 < 0) {
+      region_rect_ = {0, 0, 0, 0};
+      return;
+    }
+    const double range_mm = taps_ > 20 ? 3.0 : 2.0;  // eq. (1)'s range (separable_kernel_range_mm)
+    const double world_per_mm = scene.world_units_per_mm;
+    const double pixels_per_mm = std::max(std::fabs(scene.projection[0]) * 0.5 * scene.width,
+                                          std::fabs(scene.projection[5]) * 0.5 * scene.height) *
+                                 world_per_mm;
+    // Perspective scenes: clip w is the view distance, so the nearest translucent pixel has the
+    // widest kernel (alpha at most 1).
+    const int pad = static_cast<int>(std::ceil(range_mm * pixels_per_mm / scene.nearest_translucent_distance)) + 2;
+    x0 = std::max(0, x0 - pad);
+    y0 = std::max(0, y0 - pad);
+    x1 = std::min(scene.width - 1, x1 + pad);
+    y1 = std::min(scene.height - 1, y1 + pad);
+    region_rect_ = {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
+  }
+
+  int taps_;
+  bool adaptive_, region_;
+  sss_context* ctx_ = nullptr;
+  GLuint framebuffers_[2] = {0, 0};
+  GLuint work_ = 0;
+  int work_width_ = 0, work_height_ = 0;
+  std::array<int, 4> region_rect_ = {0, 0, 0, 0};
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region) {
+  return std::make_unique<InPlaceMethod>(loader, taps, adaptive, region);
+}
+
+}  // namespace sss_bench

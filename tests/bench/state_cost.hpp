@@ -1,0 +1,19 @@
+// What SSS_CREATE_NO_STATE_RESTORE saves: the CPU-side cost of one sss_apply_frame with and without
+// the module's GL state save and restore, on a frame so small that its draws cost next to nothing.
+#pragma once
+
+#include "method.hpp"
+
+namespace sss_bench {
+
+struct StateCost {
+  double with_restore_us = 0.0;     // per call, median over batches
+  double without_restore_us = 0.0;  // the same with SSS_CREATE_NO_STATE_RESTORE
+  int calls_per_batch = 0, batches = 0;
+};
+
+// Times batches of in-place sss_apply_frame calls on a 16x16 frame (glFinish after each batch) for a
+// context that restores state and one that does not.
+StateCost measure_state_cost(const GlLoader& loader);
+
+}  // namespace sss_bench
