@@ -227,7 +227,7 @@ int run(const Options& options) {
     info.state_without_restore_us = cost.without_restore_us;
     info.state_calls = cost.calls_per_batch;
     info.state_batches = cost.batches;
-    std::printf("sss_bench: one sss_apply_frame on 16x16: %.1f us with the state restore, %.1f us without\n",
+    std::printf("sss_bench: one sss_apply_frame drawing nothing: %.1f us with the state restore, %.1f us without\n",
                 cost.with_restore_us, cost.without_restore_us);
   }
   const std::vector<std::string> default_scenes = options.scenes.empty() ? canonical_scene_names() : options.scenes;

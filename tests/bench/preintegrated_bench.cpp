@@ -43,7 +43,7 @@ struct Args {
   std::string backend = "egl", out = ".", doc;
   int width = 320, height = 180, repetitions = 5;
   int lut_size = 256;  // the timed LUTs are lut_size²
-  std::vector<std::string> scenes = {"sphere", "head-close", "head-mid", "head-far"};
+  std::vector<std::string> scenes = {"sphere", "sphere-20mm", "sphere-10mm", "head-close", "head-mid", "head-far"};
   std::string command_line;
 };
 
@@ -99,6 +99,25 @@ struct ErrorRow {
 };
 
 }  // namespace
+
+// The mask without its pixels within kInteriorBand pixels (Chebyshev) of a pixel outside it.
+constexpr int kInteriorBand = 6;
+static std::vector<uint8_t> interior(const std::vector<uint8_t>& mask, int width, int height) {
+  std::vector<uint8_t> out(mask.size(), 0);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      bool keep = mask[static_cast<std::size_t>(y) * width + x] != 0;
+      for (int dy = -kInteriorBand; dy <= kInteriorBand && keep; ++dy) {
+        for (int dx = -kInteriorBand; dx <= kInteriorBand && keep; ++dx) {
+          const int sx = x + dx, sy = y + dy;
+          keep = sx >= 0 && sy >= 0 && sx < width && sy < height && mask[static_cast<std::size_t>(sy) * width + sx] != 0;
+        }
+      }
+      out[static_cast<std::size_t>(y) * width + x] = keep ? 1 : 0;
+    }
+  }
+  return out;
+}
 
 int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
@@ -222,6 +241,17 @@ int main(int argc, char** argv) {
     errors.push_back({name, "input (no scattering)", sss_bench::compare_images(input, ref, mask.data())});
     errors.push_back({name, "separable 17 taps, follow-surface", sss_bench::compare_images(filtered, ref, mask.data())});
     errors.push_back({name, "pre-integrated (LUTs)", sss_bench::compare_images(preintegrated, ref, mask.data())});
+    if (name.rfind("sphere", 0) == 0) {
+      // The spheres again away from their silhouette (no background pixel within kInteriorBand):
+      // there every method shares the error of the grazing surface, and the terminator, where
+      // pre-integration acts, is what remains.
+      const std::vector<uint8_t> inner = interior(mask, scene.width, scene.height);
+      const std::string scene_name = name + " (interior)";
+      errors.push_back({scene_name, "input (no scattering)", sss_bench::compare_images(input, ref, inner.data())});
+      errors.push_back({scene_name, "separable 17 taps, follow-surface",
+                        sss_bench::compare_images(filtered, ref, inner.data())});
+      errors.push_back({scene_name, "pre-integrated (LUTs)", sss_bench::compare_images(preintegrated, ref, inner.data())});
+    }
     const std::string base = args.out + "/preintegrated-" + name + "-" + std::to_string(args.width) + "x" +
                              std::to_string(args.height);
     sss_bench::write_tonemapped_png(base + ".png", preintegrated);
@@ -267,8 +297,11 @@ int main(int argc, char** argv) {
                     verdict(pre, sep), verdict(pre, in));
       md << line;
     }
-    md << "\nWhat decides it: pre-integration is exact only for a smooth sphere lit from one direction (the sphere "
-          "scene, where all three agree because at this size the scattering is sub-pixel), and it never scatters "
+    md << "\nWhat decides it: pre-integration is exact only for a smooth sphere lit from one direction. The spheres "
+          "(80, 20 and 10 mm, each framed alike) show it: over their interiors (no background within "
+       << kInteriorBand << " pixels; at the silhouette every method shares the error of the grazing surface) it "
+          "lands where the separable filter does, and both move away from the unscattered image as the sphere "
+          "shrinks and the terminator's scattering widens, at no pass at all. It never scatters "
           "light across albedo detail, normal-map creases finer than the blurred map, or shadow edges sharper than "
           "the PCF penumbra it reinterprets; at the close-up those are what the reference blurs. Where skin is far "
           "(head-mid, head-far) the reference is nearly the unscattered image: the filter's kernel spans about a "

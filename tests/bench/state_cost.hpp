@@ -1,5 +1,6 @@
 // What SSS_CREATE_NO_STATE_RESTORE saves: the CPU-side cost of one sss_apply_frame with and without
-// the module's GL state save and restore, on a frame so small that its draws cost next to nothing.
+// the module's GL state save and restore, on a call that draws nothing (width 0, in place), so the
+// difference is the save and restore alone.
 #pragma once
 
 #include "method.hpp"
@@ -12,8 +13,8 @@ struct StateCost {
   int calls_per_batch = 0, batches = 0;
 };
 
-// Times batches of in-place sss_apply_frame calls on a 16x16 frame (glFinish after each batch) for a
-// context that restores state and one that does not.
+// Times batches of in-place sss_apply_frame calls with width 0 on a 16x16 frame (glFinish after each
+// batch) for a context that restores state and one that does not.
 StateCost measure_state_cost(const GlLoader& loader);
 
 }  // namespace sss_bench

@@ -21,18 +21,8 @@ namespace {
 constexpr float kTolerance = 3e-3f;
 
 sss_settings visible_settings(int samples, bool follow_surface) {
-  sss_settings s;
-  sss_default_settings(&s);
-  s.width = 0.045f;  // about 2 pixels per profile millimetre on the 64x48 relief scene
-  s.strength[0] = 0.9f;
-  s.strength[1] = 0.8f;
-  s.strength[2] = 0.7f;
-  s.falloff[0] = 1.0f;
-  s.falloff[1] = 0.6f;
-  s.falloff[2] = 0.4f;
-  s.samples = samples;
-  s.flags = follow_surface ? SSS_FOLLOW_SURFACE : 0u;
-  return s;
+  // width: about 2 pixels per profile millimetre on the 64x48 relief scene
+  return sss_test::visible_settings(samples, follow_surface ? SSS_FOLLOW_SURFACE : 0u, 0.045f);
 }
 
 SyntheticScene relief() { return make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)); }

@@ -27,20 +27,7 @@ namespace {
 constexpr float kTolerance = 3e-3f;
 constexpr int kWidth = 100, kHeight = 30;
 
-sss_settings settings_for(uint32_t flags, float width) {
-  sss_settings s;
-  sss_default_settings(&s);
-  s.width = width;
-  s.strength[0] = 0.9f;
-  s.strength[1] = 0.8f;
-  s.strength[2] = 0.7f;
-  s.falloff[0] = 1.0f;
-  s.falloff[1] = 0.6f;
-  s.falloff[2] = 0.4f;
-  s.samples = 17;
-  s.flags = flags;
-  return s;
-}
+sss_settings settings_for(uint32_t flags, float width) { return visible_settings(17, flags, width); }
 
 // Five vertical bands of a plane facing the camera, each at its own distance, chosen so that a
 // pixel's step (pixels_per_mm / distance at alpha 1) is `steps[band]`; colour is seeded noise so

@@ -22,6 +22,21 @@ float largest_relative_difference(const std::vector<float>& gpu, const std::vect
   return worst;
 }
 
+sss_settings visible_settings(int samples, uint32_t flags, float width) {
+  sss_settings s;
+  sss_default_settings(&s);
+  s.width = width;
+  s.strength[0] = 0.9f;
+  s.strength[1] = 0.8f;
+  s.strength[2] = 0.7f;
+  s.falloff[0] = 1.0f;
+  s.falloff[1] = 0.6f;
+  s.falloff[2] = 0.4f;
+  s.samples = samples;
+  s.flags = flags;
+  return s;
+}
+
 void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame) {
   frame->color_format = c.half_color ? GL_RGBA16F : GL_RGBA32F;
   switch (c.depth) {

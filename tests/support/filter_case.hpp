@@ -33,6 +33,9 @@ struct FilterOutcome {
   sss_result result = SSS_OK;
 };
 
+// Settings whose blur shows clearly on the synthetic scenes: strength .9/.8/.7, falloff 1/.6/.4.
+sss_settings visible_settings(int samples, uint32_t flags, float width);
+
 // Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|) (equal values,
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);

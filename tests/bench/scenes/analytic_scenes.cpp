@@ -124,24 +124,25 @@ Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int
   return s;
 }
 
-static Scene sphere_scene(int width, int height, bool preintegrated) {
+static Scene sphere_scene(const std::string& name, int width, int height, bool preintegrated, double radius,
+                          double distance) {
   PinholeCamera camera;
-  Scene s = blank_scene("sphere", width, height, &camera);
-  const Vec3 centre{0, 0, -kSphereDistance};
+  Scene s = blank_scene(name, width, height, &camera);
+  const Vec3 centre{0, 0, -distance};
   const Vec3 light = normalize(Vec3{0.8, 0.45, 0.4});  // view space, towards the light
   const double albedo[3] = {0.85, 0.6, 0.5}, ambient = 0.03, backdrop = 0.3;
-  const double curvature = 1.0 / (kSphereRadius * 1000.0);  // 1/mm (the scene is in metres)
+  const double curvature = 1.0 / (radius * 1000.0);  // 1/mm (the scene is in metres)
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {
       const Vec3 ray = camera.ray(i, j);  // z = -1: the hit's distance is its parameter
-      const double a = dot(ray, ray), b = -2 * dot(ray, centre), c = dot(centre, centre) - kSphereRadius * kSphereRadius;
+      const double a = dot(ray, ray), b = -2 * dot(ray, centre), c = dot(centre, centre) - radius * radius;
       const double disc = b * b - 4 * a * c;
       if (disc < 0) {
         set_pixel(s, camera, i, j, backdrop, backdrop, backdrop, false, kSphereBackdropDistance);
         continue;
       }
       const double hit = (-b - std::sqrt(disc)) / (2 * a);
-      const Vec3 normal = (ray * hit - centre) * (1.0 / kSphereRadius);
+      const Vec3 normal = (ray * hit - centre) * (1.0 / radius);
       const double ndotl = dot(normalize(normal), light);
       std::array<double, 3> e{std::max(0.0, ndotl), std::max(0.0, ndotl), std::max(0.0, ndotl)};
       if (preintegrated) e = sss::math::preintegrated_diffuse(sss::math::deon_skin_profile(), ndotl, curvature);
@@ -151,8 +152,17 @@ static Scene sphere_scene(int width, int height, bool preintegrated) {
   return s;
 }
 
-Scene make_sphere_scene(int width, int height) { return sphere_scene(width, height, false); }
-Scene make_preintegrated_sphere_scene(int width, int height) { return sphere_scene(width, height, true); }
+Scene make_sphere_scene(int width, int height) {
+  return sphere_scene("sphere", width, height, false, kSphereRadius, kSphereDistance);
+}
+Scene make_preintegrated_sphere_scene(int width, int height) {
+  return sphere_scene("sphere", width, height, true, kSphereRadius, kSphereDistance);
+}
+Scene make_small_sphere_scene(const std::string& name, double radius, int width, int height, bool preintegrated) {
+  // As far as frames it as the big sphere is framed (0.16 of the distance): the same picture, with
+  // curvature 1/radius, where scattering bends the terminator visibly.
+  return sphere_scene(name, width, height, preintegrated, radius, radius * (kSphereDistance / kSphereRadius));
+}
 
 Scene make_depth_step_scene(int width, int height) {
   PinholeCamera camera;

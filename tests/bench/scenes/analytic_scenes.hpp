@@ -13,6 +13,9 @@ Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int
 Scene make_sphere_scene(int width, int height);
 // The sphere with its Lambert term replaced by eq. (1.1) at the sphere's curvature (per channel).
 Scene make_preintegrated_sphere_scene(int width, int height);
+// The sphere scene scaled to `radius` metres (camera distance scaled alike): "sphere-20mm",
+// "sphere-10mm"; preintegrated: shaded with the diffuse LUT's function at curvature 1/radius.
+Scene make_small_sphere_scene(const std::string& name, double radius, int width, int height, bool preintegrated);
 Scene make_depth_step_scene(int width, int height);
 // The edge-0 plane turned by `degrees` about the view's vertical axis (0: facing the camera), its
 // shadow edge still through the image centre: what the footprint's per-axis cosine correction buys.

@@ -65,6 +65,8 @@ Scene make_scene(const std::string& name, int width, int height) {
   if (name == "tilted-80") return detail::make_tilted_plane_scene(name, 80.0, width, height);
   if (scene_needs_gl(name)) return detail::render_head_scene(name, width, height, head_view(name));
   if (name == "empty") return detail::make_empty_scene(width, height);
+  if (name == "sphere-20mm") return detail::make_small_sphere_scene(name, 0.020, width, height, false);
+  if (name == "sphere-10mm") return detail::make_small_sphere_scene(name, 0.010, width, height, false);
   throw std::invalid_argument("make_scene: unknown scene '" + name + "'");
 }
 
@@ -72,6 +74,8 @@ Scene make_preintegrated_scene(const std::string& name, int width, int height) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::invalid_argument("make_preintegrated_scene: bad size " + std::to_string(width) + "x" + std::to_string(height));
   if (name == "sphere") return detail::make_preintegrated_sphere_scene(width, height);
+  if (name == "sphere-20mm") return detail::make_small_sphere_scene(name, 0.020, width, height, true);
+  if (name == "sphere-10mm") return detail::make_small_sphere_scene(name, 0.010, width, height, true);
   if (scene_needs_gl(name)) {
     detail::HeadView view = head_view(name);
     view.preintegrated = true;
