@@ -60,6 +60,57 @@ TEST_F(CrossBilateral, MatchesCpuModelMeasuredMaterial) {
   expect_blurred_and_matching(run_case(relief(), c));
 }
 
+// SSS_PROFILE_KERNEL: the cross-bilateral mode takes the kernel families' profile, here a table
+// (fitted with four Gaussians) and d'Eon's skin cut to three Gaussians (taken as they are).
+TEST_F(CrossBilateral, MatchesCpuModelWithTheKernelsProfile) {
+  // A table of d'Eon's red, green and blue profiles at 0..6 mm.
+  std::vector<float> radii, rgb;
+  for (int i = 0; i <= 60; ++i) {
+    const double r = 0.1 * i;
+    radii.push_back(static_cast<float>(r));
+    sss_profile_desc skin;
+    skin.struct_size = sizeof skin;
+    skin.material = SSS_MATERIAL_SKIN;
+    skin.gaussian_count = 6;
+    skin.table_size = 0;
+    skin.table_radius_mm = nullptr;
+    skin.table_rgb = nullptr;
+    float value[3] = {0.0f, 0.0f, 0.0f};
+    const float radius = static_cast<float>(r);
+    ASSERT_EQ(sss_profile_evaluate(&skin, 1, &radius, value), SSS_OK) << sss_last_error(nullptr);
+    rgb.insert(rgb.end(), {value[0], value[1], value[2]});
+  }
+  for (int variant = 0; variant < 2; ++variant) {
+    SCOPED_TRACE(variant == 0 ? "tabulated" : "skin, 3 Gaussians");
+    FilterCase c;
+    c.settings = cbf_settings(SSS_PROFILE_KERNEL);
+    sss_profile_desc& p = c.settings.kernel.profile;
+    if (variant == 0) {
+      p.material = SSS_MATERIAL_TABULATED;
+      p.table_size = static_cast<int32_t>(radii.size());
+      p.table_radius_mm = radii.data();
+      p.table_rgb = rgb.data();
+    } else {
+      p.material = SSS_MATERIAL_SKIN;
+      p.gaussian_count = 3;
+    }
+    expect_blurred_and_matching(run_case(relief(), c));
+    // The transmittance terms of the same desc are the Gaussians the blur uses: 4 fitted, or 3.
+    float terms[4 * SSS_PROFILE_MAX_TERMS];
+    int32_t count = 0;
+    ASSERT_EQ(sss_profile_desc_transmittance_terms(&p, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK)
+        << sss_last_error(nullptr);
+    EXPECT_EQ(count, variant == 0 ? SSS_PROFILE_FIT_GAUSSIANS : 3);
+    for (int ch = 0; ch < 3; ++ch) {
+      double sum = 0.0;
+      for (int32_t t = 0; t < count; ++t) sum += terms[t * 4 + 1 + ch];
+      EXPECT_NEAR(sum, 1.0, 0.05) << ch;  // a fit's weights, or the renormalised Gaussians' exactly
+    }
+    TearDown();
+    SetUp();
+  }
+}
+
 TEST_F(CrossBilateral, MatchesCpuModelSkinProfileManyTapsLinearDepth) {
   FilterCase c;
   c.settings = cbf_settings(SSS_MATERIAL_SKIN, 25);

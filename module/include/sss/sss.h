@@ -129,7 +129,9 @@ typedef struct sss_create_desc {
 
 /* The profile of the cross-bilateral mode (sss_settings.cbf_profile) is named like every profile of
  * the module: an sss_material value of sss_kernels.h (SSS_MATERIAL_SKIN to SSS_MATERIAL_WHOLEMILK),
- * or SSS_PROFILE_MIKKELSEN_2010 (also in sss_kernels.h), Mikkelsen's own profile, which is no material. */
+ * or SSS_PROFILE_MIKKELSEN_2010 (also in sss_kernels.h), Mikkelsen's own profile, which is no material,
+ * or SSS_PROFILE_KERNEL: whatever sss_settings.kernel.profile holds (d'Eon with 1..6 Gaussians, a
+ * material, a tabulated table). */
 
 #define SSS_CBF_DEFAULT_TAPS 13     /**< Mikkelsen's N */
 #define SSS_CBF_DEFAULT_R_MAX_MM 4.5f /**< Mikkelsen's r_max for skin */
@@ -151,9 +153,11 @@ typedef struct sss_settings {
   int32_t cbf_taps;     /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
   float cbf_r_max_mm;   /**< (0, 50] profile millimetres, finite: radius of the footprint sphere (world units
                              via width: r_max · (2/3)·width, times alpha). Default 4.5 */
-  uint32_t cbf_profile; /**< SSS_PROFILE_MIKKELSEN_2010 (default) or an sss_material in [SSS_MATERIAL_SKIN,
+  uint32_t cbf_profile; /**< SSS_PROFILE_MIKKELSEN_2010 (default), an sss_material in [SSS_MATERIAL_SKIN,
                              SSS_MATERIAL_WHOLEMILK] (see sss_profile_transmittance_terms for how each is
-                             expressed; a measured material costs a fit, up to ~0.1 s, when first selected) */
+                             expressed; a measured material costs a fit, up to ~0.1 s, when first selected), or
+                             SSS_PROFILE_KERNEL: the profile of kernel.profile below, read in this mode too (see
+                             sss_profile_desc_transmittance_terms; a table is fitted when selected or changed) */
   /* Appended in 0.1 for the kernel families of sss_kernels.h (read by SSS_MODE_SEPARABLE only). */
   sss_kernel_desc kernel; /**< the kernel the passes run, one horizontal and one vertical pass per term
                                (sss_kernel_plan). Default SSS_KERNEL_SEPARABLE: the paper's eq. (1) from

@@ -132,6 +132,13 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_term
  *  sss_material (its spike is a true delta, which R_c(r) cannot hold), so it is a value of its own,
  *  outside [0, SSS_MATERIAL_COUNT). */
 #define SSS_PROFILE_MIKKELSEN_2010 0x100u
+/** For sss_settings.cbf_profile: the profile of sss_settings.kernel.profile, whatever it is (d'Eon's
+ *  skin with 1..6 Gaussians, a measured material or your tabulated table), so the cross-bilateral
+ *  mode takes every profile the kernel families take. A sum of Gaussians is used as it is; any other
+ *  profile is fitted with SSS_PROFILE_FIT_GAUSSIANS Gaussians when sss_set_settings selects it (an
+ *  NLopt fit, up to ~0.1 s); no spike in either case. Its transmittance terms:
+ *  sss_profile_desc_transmittance_terms with the same sss_profile_desc. */
+#define SSS_PROFILE_KERNEL 0x101u
 /** Gaussians fitted to a measured material's dipole for the cross-bilateral mode and the
  *  transmittance terms (sss_kernel_plan's SSS_KERNEL_SUM_OF_GAUSSIANS fit with rank 4). */
 #define SSS_PROFILE_FIT_GAUSSIANS 4
@@ -156,6 +163,18 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_term
  *  @retval SSS_ERROR_OUT_OF_MEMORY    the fit of a measured material could not allocate */
 SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_terms, int32_t capacity,
                                                    int32_t *count);
+
+/** The transmittance terms of any sss_profile_desc, written like sss_profile_transmittance_terms:
+ *  the Gaussians the cross-bilateral mode blurs with when sss_settings.cbf_profile is
+ *  SSS_PROFILE_KERNEL and sss_settings.kernel.profile is *profile (a sum of Gaussians as it is, any
+ *  other profile fitted with SSS_PROFILE_FIT_GAUSSIANS Gaussians).
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile, out_terms or count NULL, a field of *profile outside its range
+ *                                     (named in sss_last_error(NULL)), or capacity below the term count
+ *                                     (*count then tells the size needed)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    the fit could not allocate */
+SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc *profile, float *out_terms,
+                                                        int32_t capacity, int32_t *count);
 
 #ifdef __cplusplus
 }

@@ -59,6 +59,31 @@ sss_result check_profile_energy(sss_context* ctx, const sss::math::KernelRequest
 }
 
 static_assert(sss::math::kMikkelsenProfileId == SSS_PROFILE_MIKKELSEN_2010, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kKernelProfileId == SSS_PROFILE_KERNEL, "one value in sss_kernels.h and the math");
+
+// The body of both transmittance-term entry points: `make` builds the cross-bilateral profile.
+template <typename Make>
+sss_result write_transmittance_terms(Make make, const char* what, float* out_terms, int32_t capacity, int32_t* count) {
+  if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
+  if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
+  std::vector<sss::math::GaussianTerm> terms;
+  try {
+    terms = sss::math::transmittance_terms(make());
+  } catch (const std::bad_alloc&) {
+    return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "transmittance terms of %s: out of memory", what);
+  } catch (const std::exception& e) {  // the checks before should leave nothing for the math layer to refuse
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "transmittance terms of %s: %s", what, e.what());
+  }
+  *count = static_cast<int32_t>(terms.size());
+  if (capacity < *count) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: %s has %d terms", capacity, what, *count);
+  }
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    out_terms[i * 4 + 0] = static_cast<float>(terms[i].variance_mm2);
+    for (std::size_t c = 0; c < 3; ++c) out_terms[i * 4 + 1 + c] = static_cast<float>(terms[i].weight[c]);
+  }
+  return SSS_OK;
+}
 static_assert(sss::math::kFittedGaussians == SSS_PROFILE_FIT_GAUSSIANS, "one value in sss_kernels.h and the math");
 static_assert(sss::math::kMaterialCount == SSS_MATERIAL_WHOLEMILK, "materials 1..11 follow SSS_MATERIAL_SKIN");
 
@@ -86,11 +111,18 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   // the previous settings: the cbf fields may change while the separable mode is selected. Built
   // first: a measured material runs a fit, and if that fails the old settings stay.
   const sss::math::CbfKernel& built = ctx->cbf_kernel;
+  const bool kernel_profile = next.cbf_profile == SSS_PROFILE_KERNEL;
+  const sss::math::ProfileRequest cbf_request =
+      kernel_profile ? sss::api::to_request(s->kernel.profile) : sss::math::ProfileRequest{};
+  const sss::math::ProfileRequest& was = ctx->cbf_kernel_request;
+  const bool same_request = was.material == cbf_request.material && was.gaussian_count == cbf_request.gaussian_count &&
+                            was.table_radii_mm == cbf_request.table_radii_mm && was.table_values == cbf_request.table_values;
   if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
-                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile)) {
+                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile ||
+                               (kernel_profile && !same_request))) {
     try {
       ctx->cbf_kernel =
-          sss::math::cbf_kernel(sss::math::spike_gaussian_profile(next.cbf_profile), next.cbf_taps, next.cbf_r_max_mm);
+          sss::math::cbf_kernel(sss::math::cbf_profile(next.cbf_profile, cbf_request), next.cbf_taps, next.cbf_r_max_mm);
     } catch (const std::bad_alloc&) {
       return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
                   next.cbf_profile);
@@ -98,6 +130,7 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
       return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
     }
     ctx->cbf_kernel_profile = next.cbf_profile;
+    ctx->cbf_kernel_request = cbf_request;
     ++ctx->cbf_kernel_revision;
   }
   // The separable mode's kernel, rebuilt only when what it is built from changes (a fitted family
@@ -182,30 +215,24 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_
                                                    int32_t* count) {
   if (!sss::math::is_spike_gaussian_profile_id(profile)) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT,
-                "profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]", profile,
-                SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
+                "profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d] (a profile "
+                "desc, SSS_PROFILE_KERNEL's, goes to sss_profile_desc_transmittance_terms)",
+                profile, SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
   }
-  if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");
-  if (count == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count is NULL");
-  std::vector<sss::math::GaussianTerm> terms;
-  try {
-    terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));
-  } catch (const std::bad_alloc&) {
-    return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_profile_transmittance_terms: out of memory");
-  } catch (const std::exception& e) {  // the check above should leave nothing for the math layer to refuse
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_profile_transmittance_terms: profile = %u: %s", profile,
-                e.what());
-  }
-  *count = static_cast<int32_t>(terms.size());
-  if (capacity < *count) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "capacity = %d: profile %u has %d terms", capacity, profile,
-                *count);
-  }
-  for (std::size_t i = 0; i < terms.size(); ++i) {
-    out_terms[i * 4 + 0] = static_cast<float>(terms[i].variance_mm2);
-    for (std::size_t c = 0; c < 3; ++c) out_terms[i * 4 + 1 + c] = static_cast<float>(terms[i].weight[c]);
-  }
-  return SSS_OK;
+  char what[48];
+  std::snprintf(what, sizeof what, "profile %u", profile);
+  return write_transmittance_terms([profile] { return sss::math::spike_gaussian_profile(profile); }, what, out_terms,
+                                   capacity, count);
+}
+
+SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc* profile, float* out_terms,
+                                                        int32_t capacity, int32_t* count) {
+  const sss_result r = sss::api::check_profile(nullptr, profile, "profile");
+  if (r != SSS_OK) return r;
+  const sss::math::ProfileRequest request = sss::api::to_request(*profile);
+  return write_transmittance_terms(
+      [&request] { return sss::math::cbf_profile(sss::math::kKernelProfileId, request); }, "the profile", out_terms,
+      capacity, count);
 }
 
 }  // extern "C"

@@ -35,6 +35,7 @@ struct sss_context {
   std::vector<float> table_rgb;
   sss::math::CbfKernel cbf_kernel;  // built for cbf_kernel_profile and its own taps / r_max
   unsigned cbf_kernel_profile = 0;
+  sss::math::ProfileRequest cbf_kernel_request;  // with SSS_PROFILE_KERNEL: the kernel.profile it was built from
   std::uint64_t cbf_kernel_revision = 1;
 
   sss::math::Matrix4 projection{};

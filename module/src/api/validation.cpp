@@ -57,10 +57,12 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_r_max_mm = %g: must be finite and in (0, %g]",
                 static_cast<double>(s->cbf_r_max_mm), static_cast<double>(SSS_CBF_MAX_R_MAX_MM));
   }
-  if (!sss::math::is_spike_gaussian_profile_id(s->cbf_profile)) {
+  if (!sss::math::is_cbf_profile_id(s->cbf_profile)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                "settings->cbf_profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x) or an sss_material in [%d, %d]",
-                s->cbf_profile, SSS_PROFILE_MIKKELSEN_2010, SSS_MATERIAL_SKIN, SSS_MATERIAL_WHOLEMILK);
+                "settings->cbf_profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x), SSS_PROFILE_KERNEL (0x%x) or "
+                "an sss_material in [%d, %d]",
+                s->cbf_profile, SSS_PROFILE_MIKKELSEN_2010, SSS_PROFILE_KERNEL, SSS_MATERIAL_SKIN,
+                SSS_MATERIAL_WHOLEMILK);
   }
   if (!(s->jitter >= 0.0f && s->jitter <= 1.0f)) {  // also rejects NaN
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->jitter = %g: must be finite and in [0, 1]",

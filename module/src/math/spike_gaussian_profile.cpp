@@ -40,6 +40,21 @@ SpikeGaussianProfile spike_gaussian_profile(unsigned id) {
   return p;
 }
 
+SpikeGaussianProfile spike_gaussian_profile(const RadialProfile& profile, const std::string& name) {
+  SpikeGaussianProfile p;
+  p.name = name;
+  const std::vector<GaussianTerm>* terms = profile.gaussian_terms();
+  p.terms = terms != nullptr ? *terms : fit_gaussian_sum(profile, kFittedGaussians);
+  return p;
+}
+
+bool is_cbf_profile_id(unsigned id) { return id == kKernelProfileId || is_spike_gaussian_profile_id(id); }
+
+SpikeGaussianProfile cbf_profile(unsigned id, const ProfileRequest& kernel_profile) {
+  if (id != kKernelProfileId) return spike_gaussian_profile(id);
+  return spike_gaussian_profile(*make_profile(kernel_profile), "kernel profile");
+}
+
 std::vector<GaussianTerm> transmittance_terms(const SpikeGaussianProfile& p) {
   std::vector<GaussianTerm> terms;
   if (p.spike_variance_mm2 > 0.0) terms.push_back({p.spike_variance_mm2, p.spike});

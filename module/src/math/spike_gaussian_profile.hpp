@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "kernel_request.hpp"
 #include "materials.hpp"
+#include "radial_profile.hpp"
 #include "skin_profile.hpp"
 
 namespace sss::math {
@@ -36,6 +38,15 @@ inline constexpr unsigned kMikkelsenProfileId = 0x100u;
 inline constexpr int kFittedGaussians = 4;
 bool is_spike_gaussian_profile_id(unsigned id);
 SpikeGaussianProfile spike_gaussian_profile(unsigned id);
+
+// SSS_PROFILE_KERNEL: sss_settings.cbf_profile naming the profile of sss_settings.kernel.profile.
+// A sum of Gaussians (d'Eon's, any count) is taken as it is, any other profile (a dipole, a table)
+// fitted with kFittedGaussians Gaussians; no spike.
+inline constexpr unsigned kKernelProfileId = 0x101u;
+SpikeGaussianProfile spike_gaussian_profile(const RadialProfile& profile, const std::string& name);
+// Any cbf_profile id, kKernelProfileId taking `kernel_profile`.
+bool is_cbf_profile_id(unsigned id);
+SpikeGaussianProfile cbf_profile(unsigned id, const ProfileRequest& kernel_profile);
 
 // The Gaussians that transmit light through a slab (for the host's transmittance include): the broad
 // terms, and the spike when it has a width. Weights as in the profile.
