@@ -54,6 +54,13 @@ int main(void) {
     CHECK(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
     CHECK(count == 6 && transmittance[0] > 0.0f);
     CHECK(settings.cbf_profile == SSS_PROFILE_MIKKELSEN_2010);
+    /* The same from a profile desc: settings.kernel.profile is d'Eon's six Gaussians by default. */
+    CHECK(sss_profile_desc_transmittance_terms(&settings.kernel.profile, transmittance, SSS_PROFILE_MAX_TERMS,
+                                               &count) == SSS_OK);
+    CHECK(count == 6);
+    CHECK(sss_profile_desc_transmittance_terms(NULL, transmittance, SSS_PROFILE_MAX_TERMS, &count) ==
+          SSS_ERROR_INVALID_ARGUMENT);
+    CHECK((settings.flags & SSS_ADAPTIVE_TAPS) == 0u);
   }
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;
