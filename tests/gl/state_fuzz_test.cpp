@@ -151,6 +151,32 @@ class StateHarness : public GlTest {
            f.viewport[3] = 15;
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
          }},
+        // Skipping work: adaptive taps, a region inside the viewport into a separate output (the
+        // viewport copied first, then the passes over the region), and an empty region in place.
+        {"sss_apply_frame (adaptive taps, region, separate output; then an empty region)",
+         [this] {
+           sss_settings s;
+           sss_default_settings(&s);
+           s.width = 0.05f;
+           s.flags |= SSS_ADAPTIVE_TAPS;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+           sss_frame f = {};
+           f.struct_size = sizeof f;
+           f.color_texture = color_;
+           f.depth_texture = depth_;
+           f.output_texture = output_;
+           f.flags = SSS_FRAME_REGION;
+           f.region[0] = 4;
+           f.region[1] = 5;
+           f.region[2] = 12;
+           f.region[3] = 9;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           f.output_texture = 0;
+           f.region[2] = 0;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           s.flags = SSS_FOLLOW_SURFACE;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+         }},
         {"sss_apply (failing: wrong format)",
          [this] { EXPECT_EQ(sss_apply(sss_, host_textures_[3] /* RGBA16F */, color_, nullptr), SSS_ERROR_INVALID_TEXTURE); }},
         // New inputs on every call (a cached LUT would call no GL): the GPU generator and the CPU upload.
@@ -239,6 +265,7 @@ TEST_F(StateHarness, EveryEntryPointRestoresRandomState) {
     }
   }
   RecordProperty("calls_checked", checked);
+  EXPECT_EQ(checked, 40 * 10);
 }
 
 TEST_F(StateHarness, FailsWhenTheRestoresAreOff) {
