@@ -332,6 +332,47 @@ TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
   }
 }
 
+// Without a host stencil the path marks its own from the resolved alpha (the paper's multisampling
+// path), so the blur passes touch exactly the pixels with a translucent sample: the vertical pass's
+// sample count (SSS_CREATE_STATS, into a separate output) equals that many pixels.
+TEST_F(Msaa, TheStencilBuiltFromTheMaskLimitsThePassesToTranslucentPixels) {
+  sss_destroy(sss_);
+  sss_ = create_sss(SSS_CREATE_STATS);
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  sss_settings s;
+  sss_default_settings(&s);
+  s.width = 0.05f;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  uint64_t translucent = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      bool any = false;
+      for (int i = 0; i < 4; ++i) {
+        const std::size_t t = static_cast<std::size_t>(2 * y + i / 2) * (2 * kW) + static_cast<std::size_t>(2 * x + i % 2);
+        any = any || fine.color[t * 4 + 3] > 0.0f;
+      }
+      translucent += any ? 1u : 0u;
+    }
+  }
+  ASSERT_GT(translucent, 0u);
+  ASSERT_LT(translucent, static_cast<uint64_t>(kW) * kH);  // the relief scene has an opaque corner
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
+  const sss_frame f = frame(color, depth, output);
+  for (int i = 0; i < 3; ++i) {  // the counts are read back without stalling, a frame or more later
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    glFinish();
+  }
+  sss_stats st = {};
+  st.struct_size = sizeof st;
+  ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+  ASSERT_NE(st.measured & SSS_STATS_PIXELS, 0u);
+  EXPECT_EQ(st.pixels_touched, translucent);
+}
+
 // OpenGL ES (backend egl-gles; llvmpipe gives ES 3.2, so multisampled textures exist): the MSAA
 // path is desktop-only, so a multisampled input fails with SSS_ERROR_UNSUPPORTED and a message
 // that says what to do, before anything is drawn, leaving no error and the state as it was. The
