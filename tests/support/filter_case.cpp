@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "api/validation.hpp"
 #include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/pass_kernel.hpp"
@@ -179,19 +180,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     outcome.cpu = outcome.input;  // nothing translucent: the image (or its copy) as it was
   } else if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
     // The profile as sss_set_settings builds it (SSS_PROFILE_KERNEL: from settings.kernel.profile).
-    sss::math::ProfileRequest kernel_profile;
-    const sss_profile_desc& p = c.settings.kernel.profile;
-    if (p.material == SSS_MATERIAL_TABULATED) {
-      kernel_profile.material = sss::math::kProfileTable;
-      for (int32_t i = 0; i < p.table_size; ++i) {
-        kernel_profile.table_radii_mm.push_back(p.table_radius_mm[i]);
-        kernel_profile.table_values.push_back({p.table_rgb[i * 3], p.table_rgb[i * 3 + 1], p.table_rgb[i * 3 + 2]});
-      }
-    } else if (p.material == SSS_MATERIAL_SKIN) {
-      kernel_profile.gaussian_count = p.gaussian_count;
-    } else {
-      kernel_profile.material = p.material - SSS_MATERIAL_APPLE;
-    }
+    const sss::math::ProfileRequest kernel_profile = sss::api::to_request(c.settings.kernel.profile);
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::cbf_profile(c.settings.cbf_profile, kernel_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);

@@ -60,6 +60,8 @@ sss_result check_profile_energy(sss_context* ctx, const sss::math::KernelRequest
 
 static_assert(sss::math::kMikkelsenProfileId == SSS_PROFILE_MIKKELSEN_2010, "one value in sss_kernels.h and the math");
 static_assert(sss::math::kKernelProfileId == SSS_PROFILE_KERNEL, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kFittedGaussians == SSS_PROFILE_FIT_GAUSSIANS, "one value in sss_kernels.h and the math");
+static_assert(sss::math::kMaterialCount == SSS_MATERIAL_WHOLEMILK, "materials 1..11 follow SSS_MATERIAL_SKIN");
 
 // The body of both transmittance-term entry points: `make` builds the cross-bilateral profile.
 template <typename Make>
@@ -84,8 +86,6 @@ sss_result write_transmittance_terms(Make make, const char* what, float* out_ter
   }
   return SSS_OK;
 }
-static_assert(sss::math::kFittedGaussians == SSS_PROFILE_FIT_GAUSSIANS, "one value in sss_kernels.h and the math");
-static_assert(sss::math::kMaterialCount == SSS_MATERIAL_WHOLEMILK, "materials 1..11 follow SSS_MATERIAL_SKIN");
 
 }  // namespace
 
@@ -114,12 +114,10 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   const bool kernel_profile = next.cbf_profile == SSS_PROFILE_KERNEL;
   const sss::math::ProfileRequest cbf_request =
       kernel_profile ? sss::api::to_request(s->kernel.profile) : sss::math::ProfileRequest{};
-  const sss::math::ProfileRequest& was = ctx->cbf_kernel_request;
-  const bool same_request = was.material == cbf_request.material && was.gaussian_count == cbf_request.gaussian_count &&
-                            was.table_radii_mm == cbf_request.table_radii_mm && was.table_values == cbf_request.table_values;
-  if (next.cross_bilateral && (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) ||
-                               built.r_max_mm != next.cbf_r_max_mm || ctx->cbf_kernel_profile != next.cbf_profile ||
-                               (kernel_profile && !same_request))) {
+  if (next.cross_bilateral &&
+      (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) || built.r_max_mm != next.cbf_r_max_mm ||
+       ctx->cbf_kernel_profile != next.cbf_profile ||
+       (kernel_profile && !sss::math::same_profile_request(ctx->cbf_kernel_request, cbf_request)))) {
     try {
       ctx->cbf_kernel =
           sss::math::cbf_kernel(sss::math::cbf_profile(next.cbf_profile, cbf_request), next.cbf_taps, next.cbf_r_max_mm);

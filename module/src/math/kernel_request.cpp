@@ -4,6 +4,11 @@
 
 namespace sss::math {
 
+bool same_profile_request(const ProfileRequest& a, const ProfileRequest& b) {
+  return a.material == b.material && a.gaussian_count == b.gaussian_count && a.table_radii_mm == b.table_radii_mm &&
+         a.table_values == b.table_values;
+}
+
 std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& r) {
   if (r.material == kProfileTable) return std::make_unique<TabulatedProfile>(r.table_radii_mm, r.table_values);
   if (r.material >= 0 && r.material < kMaterialCount) {

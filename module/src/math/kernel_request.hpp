@@ -30,6 +30,8 @@ inline constexpr int kProfileSkin = -1;
 inline constexpr int kProfileTable = -2;
 
 std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& request);
+// Whether two requests describe the same profile (every field make_profile reads).
+bool same_profile_request(const ProfileRequest& a, const ProfileRequest& b);
 
 struct KernelRequest {
   KernelFamily family = KernelFamily::separable;

@@ -133,11 +133,7 @@ bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b) {
              x.artist.far_variance_mm2 == y.artist.far_variance_mm2 && x.artist.near_weight == y.artist.near_weight;
     default: break;
   }
-  const ProfileRequest& p = x.profile;
-  const ProfileRequest& q = y.profile;
-  const bool same_profile = p.material == q.material && p.gaussian_count == q.gaussian_count &&
-                            p.table_radii_mm == q.table_radii_mm && p.table_values == q.table_values;
-  return same_profile && x.rank == y.rank && x.rescale_energy == y.rescale_energy && x.guide_k == y.guide_k &&
+  return same_profile_request(x.profile, y.profile) && x.rank == y.rank && x.rescale_energy == y.rescale_energy && x.guide_k == y.guide_k &&
          x.radius_mm == y.radius_mm;
 }
 
