@@ -384,6 +384,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  above 1 counts as 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
+ *                                       with SSS_FRAME_REGION a region field negative or the region reaching
+ *                                       outside the viewport,
  *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
  *                                       color_texture; a texture description field outside its list, a size
  *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
