@@ -107,6 +107,7 @@
   X(PFNGLUNIFORM3FVPROC, glUniform3fv)                           \
   X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)              \
   X(PFNGLDEBUGMESSAGECALLBACKPROC, glDebugMessageCallback)      \
+  X(PFNGLGETOBJECTLABELPROC, glGetObjectLabel)                  \
   X(PFNGLENABLEIPROC, glEnablei)                                 \
   X(PFNGLDISABLEIPROC, glDisablei)                               \
   X(PFNGLBLENDCOLORPROC, glBlendColor)                           \
