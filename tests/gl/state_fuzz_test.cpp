@@ -126,6 +126,16 @@ class StateHarness : public GlTest {
     }
   }
 
+  // The fixture's colour and depth into its separate output texture.
+  sss_frame frame_into_output() const {
+    sss_frame f = {};
+    f.struct_size = sizeof f;
+    f.color_texture = color_;
+    f.depth_texture = depth_;
+    f.output_texture = output_;
+    return f;
+  }
+
   // The entry points that call GL, each as the harness runs it.
   std::vector<std::pair<std::string, std::function<void()>>> entry_points(uint32_t create_flags) {
     return {
@@ -140,11 +150,7 @@ class StateHarness : public GlTest {
          }},
         {"sss_apply_frame (separate output, viewport)",
          [this] {
-           sss_frame f = {};
-           f.struct_size = sizeof f;
-           f.color_texture = color_;
-           f.depth_texture = depth_;
-           f.output_texture = output_;
+           sss_frame f = frame_into_output();
            f.viewport[0] = 2;
            f.viewport[1] = 3;
            f.viewport[2] = 17;
@@ -160,11 +166,7 @@ class StateHarness : public GlTest {
            s.width = 0.05f;
            s.flags |= SSS_ADAPTIVE_TAPS;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-           sss_frame f = {};
-           f.struct_size = sizeof f;
-           f.color_texture = color_;
-           f.depth_texture = depth_;
-           f.output_texture = output_;
+           sss_frame f = frame_into_output();
            f.flags = SSS_FRAME_REGION;
            f.region[0] = 4;
            f.region[1] = 5;
