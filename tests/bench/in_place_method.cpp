@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "math/separable_kernel.hpp"
 #include "method.hpp"
 #include "sss/sss.h"
 
@@ -109,7 +110,7 @@ class InPlaceMethod : public Method {
       region_rect_ = {0, 0, 0, 0};
       return;
     }
-    const double range_mm = taps_ > 20 ? 3.0 : 2.0;  // eq. (1)'s range (separable_kernel_range_mm)
+    const double range_mm = sss::math::separable_kernel_range_mm(taps_);
     const double world_per_mm = scene.world_units_per_mm;
     const double pixels_per_mm = std::max(std::fabs(scene.projection[0]) * 0.5 * scene.width,
                                           std::fabs(scene.projection[5]) * 0.5 * scene.height) *

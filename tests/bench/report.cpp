@@ -248,7 +248,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       return r != nullptr ? 100.0 * r->time_ms / base->time_ms : -1.0;
     };
     // The error of the adaptive filter with its region against the fixed 17 taps, as a relative change.
-    const auto no_worse = [&](const char* scene) {
+    const auto error_change = [&](const char* scene) {
       const ResultRow* fixed = find(rows, scene, w, h, "separable-in-place", 17, true);
       const ResultRow* adaptive = find(rows, scene, w, h, "separable-adaptive-region", 17, true);
       if (fixed == nullptr || adaptive == nullptr || !(fixed->relative_rmse > 0.0)) return std::string("–");
@@ -260,7 +260,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       const double v = share(scene);
       if (v < 0.0) return;
       out << "| " << what << " | " << fmt(limit, "%.0f") << " % | " << fmt(v, "%.2f") << " % | "
-          << (v <= limit ? "met" : "not met") << " | " << (std::string(scene) == "empty" ? "–" : no_worse(scene))
+          << (v <= limit ? "met" : "not met") << " | " << (std::string(scene) == "empty" ? "–" : error_change(scene))
           << " |\n";
     };
     out << "\n| target (adaptive taps and region) | limit | measured | verdict | rel. RMSE against fixed 17 taps |\n"
@@ -270,7 +270,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
     target("far shot", "head-far", 3.0);
     if (const ResultRow* close = find(rows, "head-close", w, h, "separable-adaptive-region", 17, true)) {
       out << "| close-up, cost over the two-pass copy | 4 × | " << fmt(close->time_ratio_to_copy, "%.2f") << " × | "
-          << (close->time_ratio_to_copy <= 4.0 ? "met" : "not met") << " | " << no_worse("head-close") << " |\n";
+          << (close->time_ratio_to_copy <= 4.0 ? "met" : "not met") << " | " << error_change("head-close") << " |\n";
     }
   }
 

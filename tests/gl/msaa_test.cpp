@@ -46,14 +46,7 @@ class Msaa : public GlTest {
     return t;
   }
 
-  sss_frame frame(GLuint color, GLuint depth, GLuint output = 0) const {
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color;
-    f.depth_texture = depth;
-    f.output_texture = output;
-    return f;
-  }
+  sss_frame frame(GLuint color, GLuint depth, GLuint output = 0) const { return frame_of(color, depth, output); }
 
   std::vector<float> apply_to_output(const sss_frame& in) {
     sss_frame f = in;

@@ -281,10 +281,7 @@ TEST_F(Region, BadRegionsAreRejectedNamingTheValueAndChangeNothing) {
       {{0, 0, 0, 0}, {2147483647, 0, 2147483647, 1}, "reaches outside the viewport"},
   };
   for (const Bad& b : cases) {
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color;
-    f.depth_texture = depth;
+    sss_frame f = frame_of(color, depth);
     f.flags = SSS_FRAME_REGION;
     for (int i = 0; i < 4; ++i) {
       f.viewport[i] = b.viewport[static_cast<std::size_t>(i)];
@@ -300,10 +297,7 @@ TEST_F(Region, BadRegionsAreRejectedNamingTheValueAndChangeNothing) {
   }
   EXPECT_EQ(read_rgba(color, kWidth, kHeight), before);
   // Without the flag the same region is not read.
-  sss_frame f = {};
-  f.struct_size = sizeof f;
-  f.color_texture = color;
-  f.depth_texture = depth;
+  sss_frame f = frame_of(color, depth);
   f.region[0] = -5;
   if (is_gles()) {
     FilterCase c;

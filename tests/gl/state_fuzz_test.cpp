@@ -126,16 +126,6 @@ class StateHarness : public GlTest {
     }
   }
 
-  // The fixture's colour and depth into its separate output texture.
-  sss_frame frame_into_output() const {
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color_;
-    f.depth_texture = depth_;
-    f.output_texture = output_;
-    return f;
-  }
-
   // The entry points that call GL, each as the harness runs it.
   std::vector<std::pair<std::string, std::function<void()>>> entry_points(uint32_t create_flags) {
     return {
@@ -150,7 +140,7 @@ class StateHarness : public GlTest {
          }},
         {"sss_apply_frame (separate output, viewport)",
          [this] {
-           sss_frame f = frame_into_output();
+           sss_frame f = frame_of(color_, depth_, output_);
            f.viewport[0] = 2;
            f.viewport[1] = 3;
            f.viewport[2] = 17;
@@ -166,7 +156,7 @@ class StateHarness : public GlTest {
            s.width = 0.05f;
            s.flags |= SSS_ADAPTIVE_TAPS;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-           sss_frame f = frame_into_output();
+           sss_frame f = frame_of(color_, depth_, output_);
            f.flags = SSS_FRAME_REGION;
            f.region[0] = 4;
            f.region[1] = 5;

@@ -82,11 +82,7 @@ TEST_F(SteadyFrame, AllocatesNothing) {
     sss_settings s = visible_settings(17, c.settings_flags, 0.045f);
     s.mode = c.mode;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color;
-    f.depth_texture = depth;
-    f.output_texture = c.output;
+    sss_frame f = frame_of(color, depth, c.output);
     f.flags = c.frame_flags;
     f.region[0] = 3;
     f.region[1] = 2;

@@ -23,6 +23,15 @@ float largest_relative_difference(const std::vector<float>& gpu, const std::vect
   return worst;
 }
 
+sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = color;
+  f.depth_texture = depth;
+  f.output_texture = output;
+  return f;
+}
+
 sss_settings visible_settings(int samples, uint32_t flags, float width) {
   sss_settings s;
   sss_default_settings(&s);
@@ -163,9 +172,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   auto constants = sss::math::compute_pass_constants(fs, scene.projection, g, kernel.reach_mm);
   const bool empty_region = c.use_region && (c.region[2] == 0 || c.region[3] == 0);
   if (c.use_region && !empty_region) {  // what sss_apply_frame does: taps and drawn pixels inside the region
-    constants.clamp_min = {static_cast<float>(c.region[0]) + 0.5f, static_cast<float>(c.region[1]) + 0.5f};
-    constants.clamp_max = {static_cast<float>(c.region[0] + c.region[2]) - 0.5f,
-                           static_cast<float>(c.region[1] + c.region[3]) - 0.5f};
+    sss::math::clamp_to_rect(&constants, {c.region[0], c.region[1], c.region[2], c.region[3]});
   }
   sss::math::CpuFilterImage image;
   image.width = w;

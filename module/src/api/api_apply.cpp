@@ -287,9 +287,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
     if (run.draw_rect[2] == 0 || run.draw_rect[3] == 0) {
       run.identity = true;
     } else {
-      const std::array<int, 4>& d = run.draw_rect;
-      run.constants.clamp_min = {static_cast<float>(d[0]) + 0.5f, static_cast<float>(d[1]) + 0.5f};
-      run.constants.clamp_max = {static_cast<float>(d[0] + d[2]) - 0.5f, static_cast<float>(d[1] + d[3]) - 0.5f};
+      sss::math::clamp_to_rect(&run.constants, run.draw_rect);
     }
   }
 

@@ -50,10 +50,13 @@ PassConstants compute_pass_constants(const FilterSettings& settings, const Matri
   }
   k.depth_terms = {projection[10], projection[11], projection[14], projection[15]};
 
-  const auto& vp = geometry.viewport;
-  k.clamp_min = {static_cast<float>(vp[0]) + 0.5f, static_cast<float>(vp[1]) + 0.5f};
-  k.clamp_max = {static_cast<float>(vp[0] + vp[2]) - 0.5f, static_cast<float>(vp[1] + vp[3]) - 0.5f};
+  clamp_to_rect(&k, geometry.viewport);
   return k;
+}
+
+void clamp_to_rect(PassConstants* k, const std::array<int, 4>& rect) {
+  k->clamp_min = {static_cast<float>(rect[0]) + 0.5f, static_cast<float>(rect[1]) + 0.5f};
+  k->clamp_max = {static_cast<float>(rect[0] + rect[2]) - 0.5f, static_cast<float>(rect[1] + rect[3]) - 0.5f};
 }
 
 float linearise_depth(const PassConstants& k, float raw_depth) {

@@ -65,6 +65,11 @@ struct PassConstants {
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
                                      const FrameGeometry& geometry, double reach_mm = -1.0);
 
+// Keeps tap positions (and the pixels the CPU model filters) inside `rect` (x, y, width, height in
+// pixels; not empty): texel centres from rect.xy + 0.5 to rect.xy + size - 0.5. compute_pass_constants
+// uses the viewport; a host's region (SSS_FRAME_REGION) narrows it.
+void clamp_to_rect(PassConstants* k, const std::array<int, 4>& rect);
+
 // The linear view distance for a raw depth value, in float as the shader computes it.
 float linearise_depth(const PassConstants& k, float raw_depth);
 
