@@ -9,7 +9,8 @@
 # for the blur (and SSS_ADAPTIVE 1 with SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH),
 # SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur; SSS_LUT_KIND 0/1 for
 # the LUT generator and the host include of pre-integrated skin shading; and, for the desktop
-# dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders.
+# dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders; and the
+# compute path's blur in GLSL 430 (every variant).
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(failures 0)
 set(count 0)
@@ -87,6 +88,23 @@ foreach(dialect 330 420 es300)
     set(main "uniform sampler2D b, n; uniform mat4 p; out vec4 o;\nvoid main() {\n  o = vec4(sss_back_transmittance(b, n, gl_FragCoord.xy, vec3(0.0, 0.0, -1.0), vec3(0.0, 0.0, 1.0), p, vec4(0.0, 0.0, 64.0, 64.0), 0.0015, 4.5), 1.0);\n}\n")
     validate(${dialect}_sss_back_transmittance frag "${header}${transmittance}${back}${main}")
   endif()
+endforeach()
+# The compute path's blur (desktop GLSL 430 only: the module builds it on OpenGL 4.3+), every
+# variant: SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH × SSS_JITTER × SSS_ADAPTIVE × image format.
+file(READ "${SHADER_DIR}/separable_blur.comp" blur_compute)
+foreach(outside 0 1 2)
+  foreach(follow 0 1 2)
+    foreach(linear 0 1)
+      foreach(jitter 0 1)
+        foreach(adaptive 0 1)
+          foreach(format rgba16f rgba32f)
+            set(defines "#version 430 core\n#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_MAX_TAPS 65\n#define SSS_ADAPTIVE ${adaptive}\n#define SSS_MAX_LEVELS 4\n#define SSS_KERNEL_SLOTS 128\n#define SSS_SEGMENT 128\n#define SSS_APRON 64\n#define SSS_IMAGE_FORMAT ${format}\n")
+            validate("430_blur_compute_o${outside}_f${follow}_l${linear}_j${jitter}_a${adaptive}_${format}" comp "${defines}${blur_compute}")
+          endforeach()
+        endforeach()
+      endforeach()
+    endforeach()
+  endforeach()
 endforeach()
 # The pre-integrated LUT generator (SSS_LUT_KIND 0 = diffuse, 1 = shadow) and the host-side
 # include (integration/preintegrated/sss_preintegrated.glsl, in a fragment shader that calls every

@@ -126,6 +126,8 @@
   X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)             \
   X(PFNGLGETQUERYIVPROC, glGetQueryiv)                           \
   X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
+  X(PFNGLGETBOOLEANI_VPROC, glGetBooleani_v)                     \
+  X(PFNGLBINDIMAGETEXTUREPROC, glBindImageTexture)               \
   X(PFNGLSAMPLEMASKIPROC, glSampleMaski)                         \
   X(PFNGLTEXSTORAGE2DMULTISAMPLEPROC, glTexStorage2DMultisample) \
   X(PFNGLGETTEXLEVELPARAMETERIVPROC, glGetTexLevelParameteriv)

@@ -19,8 +19,8 @@ namespace {
 
 class InPlaceMethod : public Method {
  public:
-  InPlaceMethod(const GlLoader& loader, int taps, bool adaptive, bool region)
-      : taps_(taps), adaptive_(adaptive), region_(region) {
+  InPlaceMethod(const GlLoader& loader, int taps, bool adaptive, bool region, uint32_t path)
+      : taps_(taps), adaptive_(adaptive), region_(region), path_(path) {
     sss_create_desc desc = {};
     desc.struct_size = sizeof desc;
     desc.get_proc_address = loader.get_proc_address;
@@ -35,8 +35,9 @@ class InPlaceMethod : public Method {
   }
 
   std::string name() const override {
-    if (!adaptive_) return "separable-in-place";
-    return region_ ? "separable-adaptive-region" : "separable-adaptive";
+    const std::string base = path_ == SSS_PATH_COMPUTE ? "separable-compute" : path_ == SSS_PATH_AUTO ? "separable-auto" : "separable";
+    if (!adaptive_) return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;
+    return base + (region_ ? "-adaptive-region" : "-adaptive");
   }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return true; }
@@ -53,6 +54,7 @@ class InPlaceMethod : public Method {
     s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
     s.samples = taps_;
     s.flags = SSS_FOLLOW_SURFACE | (adaptive_ ? SSS_ADAPTIVE_TAPS : 0u);
+    s.path = path_;
     sss_frame frame = {};
     frame.struct_size = sizeof frame;
     frame.color_texture = work_;
@@ -127,6 +129,7 @@ class InPlaceMethod : public Method {
 
   int taps_;
   bool adaptive_, region_;
+  uint32_t path_;
   sss_context* ctx_ = nullptr;
   GLuint framebuffers_[2] = {0, 0};
   GLuint work_ = 0;
@@ -136,8 +139,9 @@ class InPlaceMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region) {
-  return std::make_unique<InPlaceMethod>(loader, taps, adaptive, region);
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region,
+                                             uint32_t path) {
+  return std::make_unique<InPlaceMethod>(loader, taps, adaptive, region, path);
 }
 
 }  // namespace sss_bench

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gpu_scene.hpp"
+#include "sss/sss.h"
 
 namespace sss_bench {
 
@@ -63,7 +64,10 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // "separable-adaptive-region" (also SSS_FRAME_REGION: the translucent pixels' bounding rectangle
 // padded by the kernel's reach at the nearest translucent pixel, as a host would project its skin
 // meshes' bounds; the result equals the whole viewport's).
-std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region);
+// path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-adaptive[-region]";
+// SSS_PATH_COMPUTE: "separable-compute[-adaptive-region]"; SSS_PATH_AUTO: "separable-auto[...]").
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region,
+                                             uint32_t path = SSS_PATH_FRAGMENT);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();
 

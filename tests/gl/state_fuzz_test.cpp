@@ -99,6 +99,11 @@ class StateHarness : public GlTest {
       glBindSampler(u, pick<GLuint>(rng, {0, samplers_[0], samplers_[1]}));
     }
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit(rng)));
+    if (has_image_units()) {
+      glBindImageTexture(0, pick<GLuint>(rng, {0, host_textures_[0], host_textures_[1]}), 0, GL_FALSE, 0,
+                         pick<GLenum>(rng, {GL_READ_ONLY, GL_WRITE_ONLY, GL_READ_WRITE}),
+                         pick<GLenum>(rng, {GL_RGBA16F, GL_RG32F, GL_RGBA16UI}));
+    }
     glViewport(small(rng), small(rng), 1 + small(rng), 1 + small(rng));
     glScissor(small(rng), small(rng), 1 + small(rng), 1 + small(rng));
     for (GLenum cap : {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_FRAMEBUFFER_SRGB,
@@ -124,6 +129,14 @@ class StateHarness : public GlTest {
                           pick<GLenum>(rng, {GL_INVERT, GL_INCR_WRAP}));
       glStencilMaskSeparate(face, static_cast<GLuint>(byte(rng)));
     }
+  }
+
+  // Image load/store (desktop GL 4.3+): the compute path binds image unit 0.
+  bool has_image_units() {
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    return major * 10 + minor >= 43;
   }
 
   // The entry points that call GL, each as the harness runs it.
@@ -167,6 +180,27 @@ class StateHarness : public GlTest {
            f.region[2] = 0;
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            s.flags = SSS_FOLLOW_SURFACE;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+         }},
+        // The compute path (image unit 0, dispatches, memory barriers): in place, then a region into
+        // a separate output (its copy outside the region is a fragment draw).
+        {"sss_apply_frame (compute path: in place; a region into an output)",
+         [this] {
+           sss_settings s;
+           sss_default_settings(&s);
+           s.width = 0.05f;
+           s.path = SSS_PATH_COMPUTE;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+           sss_frame f = frame_of(color_, depth_);
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           f.output_texture = output_;
+           f.flags = SSS_FRAME_REGION;
+           f.region[0] = 3;
+           f.region[1] = 4;
+           f.region[2] = 14;
+           f.region[3] = 11;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           s.path = SSS_PATH_FRAGMENT;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
          }},
         {"sss_apply (failing: wrong format)",
@@ -257,7 +291,7 @@ TEST_F(StateHarness, EveryEntryPointRestoresRandomState) {
     }
   }
   RecordProperty("calls_checked", checked);
-  EXPECT_EQ(checked, 40 * 10);
+  EXPECT_EQ(checked, 40 * 11);
 }
 
 TEST_F(StateHarness, FailsWhenTheRestoresAreOff) {
@@ -294,6 +328,7 @@ TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
       {"draw framebuffer", g::draw_framebuffer},
       {"vertex array", g::vertex_array},
       {"program", g::program},
+      {"image unit", g::image_unit},
   };
   std::atomic<uint32_t>& skip = sss::gl::restore_skip_mask_for_tests();
   for (const auto& [name, group] : groups) {

@@ -69,6 +69,7 @@ TEST_F(SteadyFrame, AllocatesNothing) {
     const char* name;
     uint32_t settings_flags, mode, frame_flags;
     GLuint output;
+    uint32_t path = SSS_PATH_FRAGMENT;
   };
   const Case cases[] = {
       {"separable, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u},
@@ -76,11 +77,16 @@ TEST_F(SteadyFrame, AllocatesNothing) {
       {"adaptive taps and a region, separate output", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, SSS_MODE_SEPARABLE,
        SSS_FRAME_REGION, output},
       {"cross-bilateral, in place", 0u, SSS_MODE_CROSS_BILATERAL, 0u, 0u},
+      {"compute path, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_COMPUTE},
+      {"compute path, adaptive taps and a region, separate output", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS,
+       SSS_MODE_SEPARABLE, SSS_FRAME_REGION, output, SSS_PATH_COMPUTE},
+      {"automatic path, in place (after its decision)", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_AUTO},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     sss_settings s = visible_settings(17, c.settings_flags, 0.045f);
     s.mode = c.mode;
+    s.path = c.path;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
     sss_frame f = frame_of(color, depth, c.output);
     f.flags = c.frame_flags;

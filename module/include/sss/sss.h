@@ -113,6 +113,29 @@ typedef struct sss_create_desc {
 #define SSS_ADAPTIVE_TAPS 0x2u
 #define SSS_SETTINGS_ALL_FLAGS 0x3u
 
+/* How the separable passes run, for sss_settings.path. */
+/** Two full-screen fragment passes (the paper's; every feature, every API). The default. */
+#define SSS_PATH_FRAGMENT 0u
+/** Two compute dispatches (desktop OpenGL 4.3+): each work group reads its row, then column, segment
+ *  of 128 pixels and 64 on either side into shared memory once, and the taps interpolate there
+ *  instead of sampling the textures again; taps farther out than the cached span sample the
+ *  textures, so any kernel width gives the same image as the fragment path. Writes the target
+ *  through image unit 0 (saved and restored with the rest of the state list). A frame the compute
+ *  path cannot run takes the fragment path: OpenGL ES or a context before 4.3, the cross-bilateral
+ *  mode, a stencil mask, multisampled colour or a kernel of several terms (sss_stats.last_frame_path
+ *  says which path ran). Written back in place, the host's alpha is read back from the colour and
+ *  stored unchanged. sss_stats.pixels_touched is not measured for
+ *  compute frames (SSS_STATS_PIXELS stays clear: there are no samples to count). */
+#define SSS_PATH_COMPUTE 1u
+/** Whichever of the two is faster here. Where timer queries are trustworthy (see sss_stats), the
+ *  first frames at a size alternate the paths, timing each pass pair with GL_TIME_ELAPSED read
+ *  back without stalling, and the faster median wins until the size, the settings or the frame's
+ *  flags change. On Mesa's software rasterisers (no trustworthy timer) it takes the path the
+ *  benchmark measured faster there: the fragment path (llvmpipe runs the compute path about 2x
+ *  slower; docs/benchmarks.md). While it times a frame, SSS_CREATE_STATS has no GPU time for it. The choice is logged at
+ *  SSS_LOG_INFO. Frames the compute path cannot run take the fragment path. */
+#define SSS_PATH_AUTO 2u
+
 /* Filter modes for sss_settings.mode. */
 /** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
 #define SSS_MODE_SEPARABLE 0u
@@ -173,6 +196,10 @@ typedef struct sss_settings {
                                per pixel within the cell it stands for, by deterministic noise (supplementary
                                Fig. S.6-S.7 use 0.33): turns the banding of few taps into fine noise, with no
                                temporal filter. Default 0 */
+  /* Appended in 0.1 for the compute path. */
+  uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE or SSS_PATH_AUTO: how the separable
+                               mode's two passes run (see SSS_PATH_*). Every path gives the same image within
+                               fp16 rounding */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
@@ -298,6 +325,9 @@ typedef struct sss_stats {
                                       GL_QUERY_COUNTER_BITS > 0, on OpenGL ES through GL_EXT_disjoint_timer_query
                                       (a disjoint event voids the results it spans), and not on Mesa's software
                                       rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
+  uint32_t last_frame_path;      /**< SSS_PATH_FRAGMENT or SSS_PATH_COMPUTE: how the last successful frame's passes ran
+                                      (what sss_settings.path asked for, SSS_PATH_AUTO's choice, or the fragment path
+                                      where the compute path cannot run that frame) */
 } sss_stats;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */

@@ -108,6 +108,26 @@ sss_result supported_samples(sss_context* ctx, const char* role, const gl::Textu
 }
 
 // The textures, as the GL describes them, against the lists in sss.h.
+// SSS_PATH_AUTO times the paths again when this changes: what decides their relative cost (the
+// size, the kernel, follow-surface, where the result goes and in which format, the frame's flags).
+std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::uint32_t frame_flags) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the fields
+  const auto mix = [&h](std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) {
+      h ^= (v >> (8 * i)) & 0xFFu;
+      h *= 1099511628211ull;
+    }
+  };
+  mix(static_cast<std::uint64_t>(run.color.width));
+  mix(static_cast<std::uint64_t>(run.color.height));
+  mix(ctx.kernel_revision);
+  mix(ctx.settings.follow_surface ? 1u : 0u);
+  mix(run.output.name != 0 ? static_cast<std::uint64_t>(run.output.internal_format) : 0u);
+  mix(static_cast<std::uint64_t>(run.color.internal_format));
+  mix(frame_flags);
+  return h;
+}
+
 sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
   sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
   if (r != SSS_OK) return r;
@@ -272,6 +292,8 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   run.follow_surface = ctx->settings.follow_surface;
   run.identity = is_identity(ctx->settings);
   run.frame = ctx->frames + 1;
+  run.path = ctx->settings.path;
+  run.path_key = path_key(*ctx, run, frame->flags);
   if (ctx->settings.cross_bilateral) {
     run.cross_bilateral = true;
     run.identity = ctx->settings.width == 0.0f;  // strength does not apply to this mode
@@ -301,6 +323,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   if (r == SSS_OK) {
     ++ctx->frames;
     ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());
+    ctx->last_frame_path = ctx->filter.last_run_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT;
     ctx->passes += ctx->last_frame_passes;
   }
   return r;
@@ -324,6 +347,7 @@ SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
   s.frames = ctx->frames;
   s.passes = ctx->passes;
   s.last_frame_passes = ctx->last_frame_passes;
+  s.last_frame_path = ctx->last_frame_path;
   const gl::PassMeasurement& m = ctx->filter.queries().latest();
   if (m.frame != 0) {
     s.measured_frame = m.frame;

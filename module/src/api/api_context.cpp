@@ -116,8 +116,9 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
                                  renderer_name.find("softpipe") != std::string::npos ||
                                  renderer_name.find("swrast") != std::string::npos;
   if ((desc->flags & SSS_CREATE_STATS) != 0) {
-    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"), software_renderer);
+    ctx->filter.enable_measurements(api.es && has_extension(f, "GL_EXT_disjoint_timer_query"));
   }
+  ctx->filter.set_software_renderer(software_renderer);
 
   sss_context* raw = ctx.get();
   ctx->filter.set_log([raw](int level, const std::string& text) { sss::api::log(raw, level, text); });

@@ -26,6 +26,7 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.kernel = sss::api::to_kernel_request(s.kernel);
   f.jitter = s.jitter;
   f.adaptive_taps = (s.flags & SSS_ADAPTIVE_TAPS) != 0;
+  f.path = s.path;
   return f;
 }
 
@@ -42,6 +43,7 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
   s->cbf_r_max_mm = f.cbf_r_max_mm;
   s->cbf_profile = f.cbf_profile;
   s->jitter = f.jitter;
+  s->path = f.path;
 }
 
 // A family that normalises by the profile's energy needs some in every channel (as sss_kernel_plan).

@@ -56,6 +56,7 @@ struct sss_context {
   // sss_get_stats counters.
   std::uint64_t frames = 0, passes = 0;
   std::uint32_t last_frame_passes = 0;
+  std::uint32_t last_frame_path = SSS_PATH_FRAGMENT;  // sss_stats.last_frame_path
 };
 
 namespace sss::api {

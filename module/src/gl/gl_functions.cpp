@@ -36,6 +36,12 @@ bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const 
     SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
     SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
   }
+  if (!api.es && api.version() >= 43) {
+    SSS_GL_COMPUTE_FUNCTIONS(SSS_GL_LOAD_OPTIONAL)
+  }
+#define SSS_GL_COMPUTE_PRESENT(ret, name, params) &&f.name != nullptr
+  f.has_compute = !api.es && api.version() >= 43 SSS_GL_COMPUTE_FUNCTIONS(SSS_GL_COMPUTE_PRESENT);
+#undef SSS_GL_COMPUTE_PRESENT
   // ES 3.0 has no texture level query; ES 3.1 and desktop GL do.
   f.has_texture_query = f.GetTexLevelParameteriv != nullptr && (!api.es || api.version() >= 31);
 #undef SSS_GL_LOAD_OPTIONAL

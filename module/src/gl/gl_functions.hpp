@@ -113,6 +113,16 @@ using GLubyte = unsigned char;
   X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
   X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))
 
+// Compute shaders and image load/store (desktop OpenGL 4.3+): the compute path of the separable
+// filter (sss.h SSS_PATH_*). Loaded on desktop GL 4.3+ only; has_compute says they are there.
+#define SSS_GL_COMPUTE_FUNCTIONS(X)                                                                    \
+  X(void, DispatchCompute, (GLuint x, GLuint y, GLuint z))                                              \
+  X(void, BindImageTexture, (GLuint unit, GLuint texture, GLint level, GLboolean layered, GLint layer, \
+                             GLenum access, GLenum format))                                            \
+  X(void, MemoryBarrier, (GLbitfield barriers))                                                        \
+  X(void, Uniform4i, (GLint location, GLint v0, GLint v1, GLint v2, GLint v3))                         \
+  X(void, Uniform2i, (GLint location, GLint v0, GLint v1))                                             \
+  X(void, GetBooleani_v, (GLenum target, GLuint index, GLboolean * data))
 // Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on
 // desktop GL, where they are required; never called on ES. The multisample ones serve the MSAA
 // path, which is desktop GL only (sss.h, sss_frame).
@@ -152,10 +162,12 @@ struct Functions {
   SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_DEBUG_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_COMPUTE_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
 #undef SSS_GL_DECLARE_MEMBER
   Api api;
   bool has_debug = false;          // KHR_debug present and all three functions loaded
   bool has_texture_query = false;  // glGetTexLevelParameteriv may be called (desktop, ES 3.1+)
+  bool has_compute = false;        // compute shaders and image units (desktop GL 4.3+, all loaded)
   // Desktop-only state exists (polygon mode, depth clamp, logic op, clip distances, sRGB enable).
   bool desktop() const { return !api.es; }
   // GL_SAMPLE_MASK exists (GL 3.2+, ES 3.1+).
@@ -318,6 +330,18 @@ enum : GLenum {
   QUERY_RESULT = 0x8866,
   QUERY_RESULT_AVAILABLE = 0x8867,
   GPU_DISJOINT = 0x8FBB,
+  COMPUTE_SHADER = 0x91B9,
+  IMAGE_BINDING_NAME = 0x8F3A,
+  IMAGE_BINDING_LEVEL = 0x8F3B,
+  IMAGE_BINDING_LAYERED = 0x8F3C,
+  IMAGE_BINDING_LAYER = 0x8F3D,
+  IMAGE_BINDING_ACCESS = 0x8F3E,
+  IMAGE_BINDING_FORMAT = 0x906E,
+  READ_ONLY = 0x88B8,
+  WRITE_ONLY = 0x88B9,
+  READ_WRITE = 0x88BA,
+  TEXTURE_FETCH_BARRIER_BIT = 0x00000008,
+  ALL_BARRIER_BITS = 0xFFFFFFFF,
 };
 
 // "GL_INVALID_OPERATION" for an error code, or "0x1234".

@@ -12,4 +12,8 @@ namespace sss::gl {
 GLuint build_program(const Functions& gl, const std::string& header, const char* vertex_source,
                      const char* fragment_source, std::string* log);
 
+// Links a program from one compute shader source preceded by `header`; the same contract.
+GLuint build_compute_program(const Functions& gl, const std::string& header, const char* compute_source,
+                             std::string* log);
+
 }  // namespace sss::gl

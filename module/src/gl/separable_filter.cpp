@@ -12,10 +12,6 @@ namespace sss::gl {
 
 namespace {
 constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2, kNormalUnit = 3, kAccumulatedUnit = 3;
-// u_kernel's length in the adaptive variant: the full kernel and every level below it (at most
-// 9 + 17 + 33 taps under 65), 128 vec4 in all: within GL 3.3's 256 and ES 3.0's 224 fragment
-// uniform vectors with the other uniforms.
-constexpr int kKernelSlots = SSS_MAX_SAMPLES + 9 + 17 + 33 + 4;
 
 // A tag in [1025, 1025 + 2^20), exact in float, different for each init() in the process (modulo
 // 2^20). It is stored as the sampler's GL_TEXTURE_MAX_LOD, which has no effect here: the sampler
@@ -75,6 +71,11 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   f.SamplerParameterf(sampler_, TEXTURE_MAX_LOD, sampler_tag_);
 
   if (measure_) queries_.init(gl_, es_timer_extension_, software_renderer_);
+  if (gl_->has_compute) {
+    GLint bits = 0;
+    if (!software_renderer_) f.GetQueryiv(TIME_ELAPSED, QUERY_COUNTER_BITS, &bits);
+    chooser_.init(gl_, bits > 0);
+  }
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
   label_object(f, labels_, FRAMEBUFFER, intermediate_framebuffer_, "sss horizontal pass target");
   label_object(f, labels_, FRAMEBUFFER, output_framebuffer_, "sss vertical pass target");
@@ -113,6 +114,10 @@ void SeparableFilter::destroy() {
     if (p.program != 0) f.DeleteProgram(p.program);
     p = BlurProgram{};
   }
+  for (BlurProgram& p : compute_programs_) {
+    if (p.program != 0) f.DeleteProgram(p.program);
+    p = BlurProgram{};
+  }
   for (CbfProgram& p : cbf_programs_) {
     if (p.program != 0) f.DeleteProgram(p.program);
     p = CbfProgram{};
@@ -133,6 +138,7 @@ void SeparableFilter::destroy() {
   if (vertex_array_ != 0) f.DeleteVertexArrays(1, &vertex_array_);
   destroy_msaa();
   queries_.destroy();
+  chooser_.destroy();
   forget();
 }
 
@@ -220,6 +226,21 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
                 v.accumulate ? 1 : 0, v.adaptive ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
+  find_blur_uniforms(&p);
+  // Sampler units never change: set them once (GLSL 420 has them in the shader already).
+  if (!has_explicit_bindings(variant_)) {
+    f.UseProgram(p.program);
+    f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
+    f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
+    if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
+    if (p.accumulated >= 0) f.Uniform1i(p.accumulated, static_cast<GLint>(kAccumulatedUnit));
+  }
+  return SSS_OK;
+}
+
+void SeparableFilter::find_blur_uniforms(BlurProgram* program) const {
+  const Functions& f = *gl_;
+  BlurProgram& p = *program;
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
@@ -236,15 +257,7 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
   p.clamp = f.GetUniformLocation(p.program, "u_clamp");
   p.levels = f.GetUniformLocation(p.program, "u_levels");
   p.level_count = f.GetUniformLocation(p.program, "u_level_count");
-  // Sampler units never change: set them once (GLSL 420 has them in the shader already).
-  if (!has_explicit_bindings(variant_)) {
-    f.UseProgram(p.program);
-    f.Uniform1i(p.source, static_cast<GLint>(kSourceUnit));
-    f.Uniform1i(p.depth, static_cast<GLint>(kDepthUnit));
-    if (p.original >= 0) f.Uniform1i(p.original, static_cast<GLint>(kOriginalUnit));
-    if (p.accumulated >= 0) f.Uniform1i(p.accumulated, static_cast<GLint>(kAccumulatedUnit));
-  }
-  return SSS_OK;
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
 }
 
 sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
@@ -464,7 +477,7 @@ void SeparableFilter::set_stencil_test(const StencilInput* stencil, GLenum func)
   f.StencilMaskSeparate(FRONT_AND_BACK, 0);
 }
 
-void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+void SeparableFilter::set_blur_uniforms(BlurProgram& p, const FilterRun& run, std::size_t term, int axis) {
   const Functions& f = *gl_;
   const math::PassConstants& k = run.constants;
   const math::PassTerm& t = run.kernel->terms[term];
@@ -499,13 +512,22 @@ void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint sou
     p.uploaded_term = term;
     p.uploaded_axis = axis;
   }
-  f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  if (p.compute) {
+    f.Uniform2i(p.axis, axis == 0 ? 1 : 0, axis == 0 ? 0 : 1);
+  } else {
+    f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  }
   f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
   // The Gaussian depth correction measures depth in profile millimetres; the ramp in reaches.
   f.Uniform1f(p.follow_surface, p.inv_two_variance >= 0 ? k.mm_per_world : k.follow_surface_factor);
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+}
+
+void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+  const Functions& f = *gl_;
+  set_blur_uniforms(p, run, term, axis);
   f.ActiveTexture(TEXTURE0 + kSourceUnit);
   f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kSourceUnit, sampler_);
@@ -575,8 +597,24 @@ void SeparableFilter::draw_copy(GLuint source) {
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   last_draws_ = 0;  // run_msaa's draws and those of the run_single it calls add up
+  last_compute_ = false;
   if (run.color.multisampled()) return run_msaa(run, message);
-  return run_single(run, message);
+  PathChooser::Choice choice;
+  if (run.path != SSS_PATH_FRAGMENT && !run.identity && *compute_unavailable(run) == '\0') {
+    if (run.path == SSS_PATH_COMPUTE) {
+      choice.compute = true;
+    } else {
+      choice = chooser_.choose(run.path_key);
+      if (*chooser_.decision() != '\0' && log_) {
+        log_(SSS_LOG_INFO, std::string("SSS_PATH_AUTO chose the ") + chooser_.decision());
+      }
+    }
+  }
+  chooser_.begin(choice);
+  const sss_result r = choice.compute ? run_compute(run, message) : run_single(run, message);
+  chooser_.end();
+  last_compute_ = choice.compute && r == SSS_OK;
+  return r;
 }
 
 sss_result SeparableFilter::run_single(const FilterRun& run, std::string* message) {

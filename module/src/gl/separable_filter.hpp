@@ -19,6 +19,7 @@
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
 #include "pass_queries.hpp"
+#include "path_chooser.hpp"
 #include "texture_query.hpp"
 
 namespace sss::gl {
@@ -61,20 +62,37 @@ struct FilterRun {
   math::PassConstants resolve_constants;
   DepthResolve depth_resolve = DepthResolve::average;
   bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
+  // sss.h SSS_PATH_*: the compute path is taken (SSS_PATH_COMPUTE), or chosen by timing
+  // (SSS_PATH_AUTO, per path_key: the frame's configuration), when compute_unavailable() is "";
+  // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
+  unsigned path = SSS_PATH_FRAGMENT;
+  std::uint64_t path_key = 0;
 };
+
+// Pixels a compute work group writes along a pass's axis, and those it caches on each side of
+// them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
+// u_kernel's length in the adaptive variant: the full kernel and every level below it (at most
+// 9 + 17 + 33 taps under 65), 128 vec4 in all: within GL 3.3's 256 and ES 3.0's 224 fragment
+// uniform vectors with the other uniforms.
+constexpr int kKernelSlots = SSS_MAX_SAMPLES + 9 + 17 + 33 + 4;
+constexpr int kComputeSegment = 128;
+constexpr int kComputeApron = 64;
 
 class SeparableFilter {
  public:
+  // The compute path's target image formats (RGBA16F, RGBA32F: every colour and output format).
+  static constexpr int kImageFormats = 2;
   // Builds the objects that do not depend on frame size and the most common program variants, so a
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
   GlslVariant variant() const { return variant_; }
   // Measurements for sss_get_stats; call before init(). Off by default: no query objects exist.
-  void enable_measurements(bool es_timer_extension, bool software_renderer) {
+  void enable_measurements(bool es_timer_extension) {
     measure_ = true;
     es_timer_extension_ = es_timer_extension;
-    software_renderer_ = software_renderer;
   }
+  // Mesa's software rasterisers (their GL_TIME_ELAPSED covers one tile); call before init().
+  void set_software_renderer(bool software_renderer) { software_renderer_ = software_renderer; }
   const PassQueries& queries() const { return queries_; }
   // Full-screen draws of the last run() (blur passes and copies; MSAA: also the resolve, the
   // stencil mark and one per-sample write per sample).
@@ -85,6 +103,11 @@ class SeparableFilter {
   // forget()s them.
   void destroy();
   sss_result run(const FilterRun& run, std::string* message);
+  // Whether run() would take the compute path for `run` (run.compute set): "" when it would, else
+  // why not (no GL 4.3, stencil, multisampled, several terms, a target format without an image
+  // format). last_run_compute(): whether the last successful run() did.
+  const char* compute_unavailable(const FilterRun& run) const;
+  bool last_run_compute() const { return last_compute_; }
 
   // Context loss. The objects live in the GL context that init() ran in. When that context was
   // lost or destroyed and the host made a new one current (or made another, unrelated one current)
@@ -113,12 +136,17 @@ class SeparableFilter {
     GLint source = -1, depth = -1, original = -1, accumulated = -1, kernel = -1, tap_count = -1, jitter = -1,
           inv_two_variance = -1, axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1,
           depth_terms = -1, clamp = -1, levels = -1, level_count = -1;
+    GLint rect = -1;  // compute programs only
+    bool compute = false;
     // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
     std::uint64_t kernel_revision = 0;
     std::size_t uploaded_term = 0;
     int uploaded_axis = -1;
   };
   static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
+  // Compute variants: outside × follow-surface × linear depth × jitter × adaptive × target image
+  // format (kImageFormats); never accumulating (one term only).
+  static constexpr int kComputeVariantCount = 3 * 3 * 2 * 2 * 2 * kImageFormats;
   struct CbfProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
@@ -132,6 +160,13 @@ class SeparableFilter {
   // The variant of term `term`'s pass on `axis` (0 horizontal, 1 vertical) writing `outside`.
   BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) const;
   sss_result run_identity(const FilterRun& run, std::string* message);
+  // Compute path (separable_filter_compute.cpp).
+  sss_result compute_program(const BlurVariant& v, int image_format, BlurProgram** out, std::string* message);
+  sss_result run_compute(const FilterRun& run, std::string* message);
+  void dispatch_blur(BlurProgram& program, const FilterRun& run, GLuint source, int axis);
+  // The kernel and per-frame uniforms of a blur pass (fragment or compute program).
+  void set_blur_uniforms(BlurProgram& program, const FilterRun& run, std::size_t term, int axis);
+  void find_blur_uniforms(BlurProgram* program) const;
   sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
   sss_result run_cbf(const FilterRun& run, std::string* message);
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
@@ -198,6 +233,9 @@ class SeparableFilter {
   std::string glsl_header_;
   bool labels_ = false;
   std::array<BlurProgram, kVariantCount> blur_programs_{};
+  std::array<BlurProgram, kComputeVariantCount> compute_programs_{};
+  bool last_compute_ = false;
+  PathChooser chooser_;
   GLuint copy_program_ = 0;
   GLuint vertex_array_ = 0, sampler_ = 0, depth_sampler_ = 0;
   GLfloat sampler_tag_ = 0.0f;  // maximum LOD that marks this instance's sampler

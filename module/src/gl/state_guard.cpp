@@ -34,6 +34,14 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
     gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   }
   gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
+  if (gl_.has_compute) {
+    gl_.GetIntegeri_v(IMAGE_BINDING_NAME, 0, &image_unit_.name);
+    gl_.GetIntegeri_v(IMAGE_BINDING_LEVEL, 0, &image_unit_.level);
+    gl_.GetBooleani_v(IMAGE_BINDING_LAYERED, 0, &image_unit_.layered);
+    gl_.GetIntegeri_v(IMAGE_BINDING_LAYER, 0, &image_unit_.layer);
+    gl_.GetIntegeri_v(IMAGE_BINDING_ACCESS, 0, &image_unit_.access);
+    gl_.GetIntegeri_v(IMAGE_BINDING_FORMAT, 0, &image_unit_.format);
+  }
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
   save_stencil_face(STENCIL_BACK_FUNC, STENCIL_BACK_REF, STENCIL_BACK_VALUE_MASK, STENCIL_BACK_FAIL,
@@ -109,6 +117,14 @@ StateGuard::~StateGuard() {
   }
   if (restore(restore_group::draw_framebuffer)) {
     gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
+  }
+  if (gl_.has_compute && restore(restore_group::image_unit)) {
+    // A texture the host deleted meanwhile left the unit by itself (glDeleteTextures unbinds it),
+    // so a name that is no texture any more restores as 0.
+    const GLuint name = static_cast<GLuint>(image_unit_.name);
+    gl_.BindImageTexture(0, name != 0 && gl_.IsTexture(name) ? name : 0, image_unit_.level, image_unit_.layered,
+                         image_unit_.layer, static_cast<GLenum>(image_unit_.access),
+                         static_cast<GLenum>(image_unit_.format));
   }
   if (restore(restore_group::vertex_array)) gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
   // A program the host deleted while it was current lives on only while current: once the

@@ -32,7 +32,8 @@ enum : uint32_t {
   draw_framebuffer = 1u << 14,
   vertex_array = 1u << 15,
   program = 1u << 16,
-  all = (1u << 17) - 1u
+  image_unit = 1u << 17,         // image unit 0 (the compute path's target), GL 4.3+
+  all = (1u << 18) - 1u
 };
 }  // namespace restore_group
 std::atomic<uint32_t>& restore_skip_mask_for_tests();
@@ -78,6 +79,11 @@ class StateGuard {
   std::array<GLboolean, 4> color_mask_{};
   std::array<GLint, 2> polygon_mode_{};
   StencilFace front_{}, back_{};
+  // Image unit 0 (GL 4.3+: has_compute), which the compute path binds its target to.
+  struct ImageUnit {
+    GLint name = 0, level = 0, layer = 0, access = 0, format = 0;
+    GLboolean layered = 0;
+  } image_unit_;
 };
 
 // Sets the fixed-function state the passes need (after a StateGuard saved it): everything that

@@ -26,6 +26,7 @@ struct FilterSettings {
   KernelRequest kernel;
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
   bool adaptive_taps = false;  // SSS_ADAPTIVE_TAPS: taps follow each pixel's footprint (pass_kernel.hpp)
+  unsigned path = 0;           // SSS_PATH_*: fragment passes, compute dispatches, or the faster one
 };
 
 enum class DepthEncoding {

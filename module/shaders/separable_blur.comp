@@ -1,0 +1,190 @@
+// One pass of the separable filter as a compute shader (OpenGL 4.3+): the same arithmetic as
+// separable_blur.frag, but a work group first reads its row (or column) segment and an apron on
+// both sides into shared memory, once per texel, and the taps then interpolate there instead of
+// each pixel sampling its neighbours from the textures again. Taps that fall outside the cached
+// span (a kernel wider than the apron, for a close-up at a large width) read the textures, as the
+// fragment shader does, so any footprint gives the same image.
+//
+// Compile-time switches, as in separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the
+// pixel as it is, 2 copy u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH,
+// SSS_ADAPTIVE, SSS_MAX_TAPS, SSS_MAX_LEVELS, SSS_KERNEL_SLOTS; and
+//   SSS_SEGMENT        pixels one work group writes along the pass's axis (its local size)
+//   SSS_APRON          pixels cached on each side of the segment
+//   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f or rgba32f)
+// The target is written with imageStore. Writing back into the host's colour (SSS_OUTSIDE 1), the
+// pixel's alpha is read from the target itself, so the host's exact alpha stays (the fragment
+// path masks alpha off instead); every other pass reads only textures it does not write.
+
+layout(local_size_x = SSS_SEGMENT, local_size_y = 1, local_size_z = 1) in;
+
+layout(binding = 0) uniform sampler2D u_source;  // the pass input (host colour, then the intermediate)
+layout(binding = 1) uniform sampler2D u_depth;   // the host's depth
+#if SSS_OUTSIDE == 2
+layout(binding = 2) uniform sampler2D u_original;  // the host's colour (the target is the separate output)
+#endif
+#if SSS_OUTSIDE == 1
+layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
+#else
+layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
+#endif
+
+#if SSS_ADAPTIVE
+uniform vec4 u_kernel[SSS_KERNEL_SLOTS];
+uniform vec4 u_levels[SSS_MAX_LEVELS];
+uniform int u_level_count;
+#else
+uniform vec4 u_kernel[SSS_MAX_TAPS];
+#endif
+uniform int u_tap_count;
+#if SSS_JITTER
+uniform float u_jitter[SSS_MAX_TAPS];
+#endif
+#if SSS_FOLLOW_SURFACE == 2
+uniform float u_inv_two_variance;
+#endif
+uniform ivec2 u_axis;           // (1, 0) or (0, 1)
+uniform ivec4 u_rect;           // the pixels this pass writes: x, y, width, height
+uniform float u_pixels_per_mm;
+uniform float u_follow_surface;
+uniform vec2 u_ndc_from_depth;
+uniform vec4 u_depth_terms;
+uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
+
+const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
+shared vec3 s_color[kCached];
+shared float s_depth[kCached];  // raw depth, as the fragment shader's bilinear depth taps read it
+
+float view_distance(float raw_depth) {
+#if SSS_LINEAR_DEPTH
+  return raw_depth;
+#else
+  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
+  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
+#endif
+}
+
+#if SSS_JITTER
+// Must equal sss::math::jitter_noise bit for bit (and separable_blur.frag's).
+float jitter_noise(ivec2 pixel, int axis) {
+  uint h = uint(pixel.x) * 0x8da6b343u ^ uint(pixel.y) * 0xd8163841u ^ uint(axis + 1) * 0xcb1ab31fu;
+  h ^= h >> 16u;
+  h *= 0x7feb352du;
+  h ^= h >> 15u;
+  h *= 0x846ca68bu;
+  h ^= h >> 16u;
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
+#endif
+
+void write_untouched(ivec2 pixel, vec4 centre) {
+#if SSS_OUTSIDE == 0
+  imageStore(u_target, pixel, centre);
+#elif SSS_OUTSIDE == 2
+  imageStore(u_target, pixel, texelFetch(u_original, pixel, 0));
+#endif
+}
+
+void main() {
+  const int axis_index = u_axis.y;  // 0 horizontal, 1 vertical
+  const int along_start = u_rect[axis_index];
+  const int along_end = along_start + u_rect[2 + axis_index];  // exclusive
+  const int across = u_rect[1 - axis_index] + int(gl_WorkGroupID.y);
+  const int segment_start = along_start + int(gl_WorkGroupID.x) * SSS_SEGMENT;
+  const int cache_start = segment_start - SSS_APRON;  // pixel coordinate of s_color[0]
+  const ivec2 cross_axis = ivec2(1) - u_axis;
+
+  // Fill the cache: every texel of segment and apron once, clamped into the rectangle (no tap
+  // reads past it: positions are clamped to u_clamp first).
+  for (int i = int(gl_LocalInvocationID.x); i < kCached; i += SSS_SEGMENT) {
+    int along = clamp(cache_start + i, along_start, along_end - 1);
+    ivec2 texel = u_axis * along + cross_axis * across;
+    s_color[i] = texelFetch(u_source, texel, 0).rgb;
+    s_depth[i] = texelFetch(u_depth, texel, 0).r;
+  }
+  barrier();
+
+  const int along = segment_start + int(gl_LocalInvocationID.x);
+  if (along >= along_end) return;
+  const ivec2 pixel = u_axis * along + cross_axis * across;
+  const int centre_index = along - cache_start;
+  vec4 centre = vec4(s_color[centre_index], texelFetch(u_source, pixel, 0).a);
+  if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
+    write_untouched(pixel, centre);
+    return;
+  }
+  float strength = min(centre.a, 1.0);
+  float centre_distance = view_distance(s_depth[centre_index]);
+  float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
+  if (!(w > 0.0) || isinf(w)) {
+    write_untouched(pixel, centre);
+    return;
+  }
+  vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
+  float step_pixels = u_pixels_per_mm * strength / w;
+  float follow_surface = u_follow_surface / strength;
+#if SSS_JITTER
+  float shift = jitter_noise(pixel, axis_index) - 0.5;
+#endif
+  int first = 0;
+  int end = u_tap_count;
+#if SSS_ADAPTIVE
+  for (int l = 0; l < u_level_count; ++l) {
+    if (step_pixels <= u_levels[l].z) {
+      first = int(u_levels[l].x);
+      end = first + int(u_levels[l].y);
+      break;
+    }
+  }
+  if (end == first) {
+    write_untouched(pixel, centre);
+    return;
+  }
+#endif
+  const float centre_coord = float(along) + 0.5;
+  const float clamp_min = u_clamp[axis_index], clamp_max = u_clamp[2 + axis_index];
+  const vec2 centre_position = vec2(pixel) + 0.5;
+  vec3 sum = centre.rgb * u_kernel[first].rgb;
+  for (int i = first + 1; i < end; ++i) {
+#if SSS_JITTER
+    float offset = u_kernel[i].a + shift * u_jitter[i];
+#else
+    float offset = u_kernel[i].a;
+#endif
+    float position = clamp(centre_coord + offset * step_pixels, clamp_min, clamp_max);
+    // Linear interpolation between the two texels around the position, as GL_LINEAR does along
+    // the axis (across it the position is a texel centre).
+    float texel_coord = position - 0.5;
+    float lower = floor(texel_coord);
+    float f = texel_coord - lower;
+    int index = int(lower) - cache_start;
+    vec3 tap;
+    float tap_depth;
+    if (index >= 0 && index + 1 < kCached) {
+      tap = mix(s_color[index], s_color[index + 1], f);
+      tap_depth = mix(s_depth[index], s_depth[index + 1], f);
+    } else {
+      vec2 uv = (vec2(u_axis) * position + vec2(cross_axis) * centre_position) * texel_size;
+      tap = texture(u_source, uv).rgb;
+      tap_depth = texture(u_depth, uv).r;
+    }
+    if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
+#if SSS_FOLLOW_SURFACE
+    float d = follow_surface * abs(centre_distance - view_distance(tap_depth));
+#if SSS_FOLLOW_SURFACE == 2
+    float s = 1.0 - exp(-d * d * u_inv_two_variance);
+#else
+    float s = d;
+#endif
+    if (!(s < 1.0)) s = 1.0;
+    tap = mix(tap, centre.rgb, s);
+#endif
+    sum += u_kernel[i].rgb * tap;
+  }
+#if SSS_OUTSIDE == 2
+  imageStore(u_target, pixel, vec4(sum, texelFetch(u_original, pixel, 0).a));
+#elif SSS_OUTSIDE == 1
+  imageStore(u_target, pixel, vec4(sum, imageLoad(u_target, pixel).a));
+#else
+  imageStore(u_target, pixel, vec4(sum, centre.a));
+#endif
+}

@@ -1,0 +1,228 @@
+// The compute path (sss_settings.path = SSS_PATH_COMPUTE, separable_blur.comp) against the CPU model
+// and against the fragment path, and where it gives way to the fragment path.
+//
+// Tolerance: matches_cpu_model_test's 3e-3 against the CPU model (one fp16 half-ulp flip of the
+// intermediate and one of the output). The compute path interpolates its cached taps in fp32
+// where the fragment path lets the texture unit filter (8 bits of fraction on many GPUs; llvmpipe
+// filters in fp32 too), so the two paths agree to the same bound, not bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "filter_case.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr float kTolerance = 3e-3f;
+
+SyntheticScene relief(int width = 64, int height = 48) {
+  return make_relief_scene(width, height, 3,
+                           perspective_matrix(40.0f, static_cast<float>(width) / static_cast<float>(height), 0.1f, 10.0f));
+}
+
+class ComputePath : public FilterCaseTest {
+ protected:
+  // The GL can run compute shaders (desktop 4.3+): else every frame must take the fragment path.
+  bool has_compute() {
+    if (is_gles()) return false;
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    return major * 10 + minor >= 43;
+  }
+  uint32_t last_path() {
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    return stats.last_frame_path;
+  }
+  // Runs `c` on each path; checks both against the CPU model and each other, and which path ran.
+  void expect_paths_agree(const SyntheticScene& scene, FilterCase c, bool compute_expected) {
+    std::vector<float> results[2];
+    for (int compute = 0; compute < 2; ++compute) {
+      SCOPED_TRACE(compute ? "compute path" : "fragment path");
+      c.settings.path = compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT;
+      const FilterOutcome o = run_case(scene, c);
+      ASSERT_EQ(o.result, SSS_OK);
+      const float difference = largest_relative_difference(o.gpu, o.cpu);
+      RecordProperty(compute ? "compute_vs_cpu" : "fragment_vs_cpu", std::to_string(difference));
+      EXPECT_LE(difference, kTolerance);
+      EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);  // the case blurs something
+      EXPECT_EQ(last_path(), compute && compute_expected && has_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+      results[compute] = o.gpu;
+      TearDown();
+      SetUp();
+    }
+    const float between = largest_relative_difference(results[1], results[0]);
+    std::printf("compute vs fragment path: largest relative difference %.3g (tolerance %.3g)\n", between, kTolerance);
+    EXPECT_LE(between, kTolerance);
+  }
+};
+
+TEST_F(ComputePath, MatchesTheCpuModelInPlaceAndIntoAnOutput) {
+  for (bool separate : {false, true}) {
+    for (bool half : {false, true}) {
+      SCOPED_TRACE(std::string(separate ? "separate output" : "in place") + (half ? ", RGBA16F" : ", RGBA32F"));
+      FilterCase c;
+      c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+      c.separate_output = separate;
+      c.half_color = half;
+      expect_paths_agree(relief(), c, true);
+    }
+  }
+}
+
+TEST_F(ComputePath, EveryVariantOfTheShader) {
+  struct Variant {
+    const char* name;
+    uint32_t flags;
+    DepthKind depth;
+    float jitter;
+    uint32_t family;
+  };
+  const Variant variants[] = {
+      {"no follow-surface", 0u, DepthKind::depth32f, 0.0f, SSS_KERNEL_SEPARABLE},
+      {"linear depth", SSS_FOLLOW_SURFACE, DepthKind::linear_r32f, 0.0f, SSS_KERNEL_SEPARABLE},
+      {"jitter", SSS_FOLLOW_SURFACE, DepthKind::depth32f, 0.33f, SSS_KERNEL_SEPARABLE},
+      {"adaptive taps", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, DepthKind::depth32f, 0.0f, SSS_KERNEL_SEPARABLE},
+      // One Gaussian term with the exact depth correction (SSS_FOLLOW_SURFACE 2 in the shader).
+      {"artist kernel", SSS_FOLLOW_SURFACE, DepthKind::depth32f, 0.0f, SSS_KERNEL_ARTIST},
+  };
+  for (const Variant& v : variants) {
+    SCOPED_TRACE(v.name);
+    FilterCase c;
+    c.settings = visible_settings(17, v.flags, 0.045f);
+    c.settings.jitter = v.jitter;
+    c.settings.kernel.family = v.family;
+    c.depth = v.depth;
+    expect_paths_agree(relief(), c, true);
+  }
+}
+
+TEST_F(ComputePath, AKernelWiderThanTheCachedSpanReadsTheTextures) {
+  // 300 px wide, about 40 px per profile mm: the 17-tap kernel reaches ~80 px each way, past the
+  // 64-pixel apron, so the outer taps take the texture path; the result must not change.
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.9f);
+  for (bool separate : {false, true}) {
+    SCOPED_TRACE(separate ? "separate output" : "in place");
+    c.separate_output = separate;
+    expect_paths_agree(relief(300, 40), c, true);
+  }
+}
+
+TEST_F(ComputePath, RegionAndViewport) {
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, 0.045f);
+  c.use_region = true;
+  c.region = {9, 7, 40, 30};
+  for (bool separate : {false, true}) {
+    SCOPED_TRACE(separate ? "region, separate output" : "region, in place");
+    c.separate_output = separate;
+    expect_paths_agree(relief(), c, true);
+  }
+  FilterCase v;
+  v.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  v.viewport = {5, 4, 50, 36};
+  SCOPED_TRACE("viewport inside the texture");
+  expect_paths_agree(relief(), v, true);
+}
+
+TEST_F(ComputePath, GivesWayToTheFragmentPathWhereItCannotRun) {
+  // A stencil mask and a kernel of several terms: the fragment passes run, with the same result.
+  FilterCase stencil;
+  stencil.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  stencil.depth = DepthKind::depth24_stencil8;
+  stencil.use_stencil = true;
+  {
+    SCOPED_TRACE("stencil");
+    expect_paths_agree(relief(), stencil, false);
+  }
+  FilterCase terms;
+  terms.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  terms.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  terms.settings.kernel.rank = 2;
+  SCOPED_TRACE("two terms");
+  expect_paths_agree(relief(), terms, false);
+}
+
+TEST_F(ComputePath, KeepsTheHostsAlphaExactly) {
+  // Written back in place, the image store writes all four channels: the compute path reads the
+  // host's own alpha back from the target (the fragment path masks alpha off). Strengths that fp16
+  // cannot hold must come back bit for bit in an RGBA32F colour.
+  SyntheticScene scene = relief();
+  for (std::size_t i = 3; i < scene.color.size(); i += 4) {
+    if (scene.color[i] > 0.0f) scene.color[i] = 0.6f + 0.3f * static_cast<float>(i % 7) / 7.0f + 1e-5f;
+  }
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.settings.path = SSS_PATH_COMPUTE;
+  const FilterOutcome o = run_case(scene, c);
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_EQ(last_path(), has_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+  EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), kTolerance);
+  for (std::size_t i = 3; i < o.gpu.size(); i += 4) ASSERT_EQ(o.gpu[i], o.input[i]) << "alpha of pixel " << i / 4;
+}
+
+TEST_F(ComputePath, AutoDecidesOnceAndEveryFrameMatches) {
+  // SSS_PATH_AUTO: frames alternate while it times the paths (GPUs with timer queries), or it keeps
+  // the fragment path (software rasterisers, OpenGL ES, GL before 4.3). Either way it logs one
+  // decision for an unchanged configuration and every frame gives the same image within tolerance.
+  const SyntheticScene scene = relief();
+  const int w = scene.width, h = scene.height;
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.settings.path = SSS_PATH_AUTO;
+  const FilterOutcome first = run_case(scene, c);  // the reference frame (CPU model checked here)
+  ASSERT_EQ(first.result, SSS_OK);
+  EXPECT_LE(largest_relative_difference(first.gpu, first.cpu), kTolerance);
+  // More frames on the same context: the input refilled each time, the result compared.
+  const GLuint color = make_rgba32f(w, h, scene.color);
+  const GLuint depth = make_depth32f(w, h, scene.window_depth);
+  sss_frame frame = frame_of(color, depth);
+  if (is_gles()) describe_frame(c, w, h, &frame);  // ES 3.0 cannot be asked
+  int computed = 0;
+  for (int i = 0; i < 12; ++i) {
+    glBindTexture(GL_TEXTURE_2D, color);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, scene.color.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+    glFinish();  // lets the timer results arrive between frames
+    computed += last_path() == SSS_PATH_COMPUTE ? 1 : 0;
+    EXPECT_LE(largest_relative_difference(read_rgba(color, w, h), first.gpu), kTolerance) << "frame " << i;
+  }
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer != nullptr && std::string(renderer).find("llvmpipe") != std::string::npos;
+  if (software || !has_compute()) {
+    EXPECT_EQ(computed, 0);
+  }
+  std::printf("SSS_PATH_AUTO on %s: %d of 12 frames on the compute path\n", renderer ? renderer : "?", computed);
+}
+
+TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  sss_settings s;
+  sss_default_settings(&s);
+  EXPECT_EQ(s.path, SSS_PATH_FRAGMENT);
+  s.path = 3;
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 3"), std::string::npos) << sss_last_error(sss_);
+  sss_settings back;
+  back.struct_size = sizeof back;
+  ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
+  EXPECT_EQ(back.path, SSS_PATH_FRAGMENT);  // nothing changed
+  s.path = SSS_PATH_AUTO;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
+  EXPECT_EQ(back.path, SSS_PATH_AUTO);
+}
+
+}  // namespace
+}  // namespace sss_test
