@@ -257,6 +257,13 @@ int run_headless(const Options &o, const DemoScene &scene) {
       std::printf("         shading: %s (1 mm = %.2f px at the subject)\n",
                   report.preintegrated ? "pre-integrated LUTs" : "screen-space filter",
                   static_cast<double>(report.pixels_per_mm));
+      sss_stats stats = {};
+      stats.struct_size = sizeof stats;
+      if (!report.preintegrated && sss_get_stats(renderer.sss.context, &stats) == SSS_OK && stats.frames > 0) {
+        std::printf("         passes: %s\n", stats.last_frame_path == SSS_PATH_COMPUTE
+                                                 ? "compute dispatches (sss_stats.last_frame_path)"
+                                                 : "fragment passes (sss_stats.last_frame_path)");
+      }
       std::printf("         heat map: exact reference at %dx%d in %.2f s; relative RMSE %.4f with SSS, %.4f without;"
                   " touched %llu of %llu marked pixels\n",
                   report.small_width, report.small_height, report.reference.seconds, report.heat.relative_rmse_after,

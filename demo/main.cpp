@@ -28,6 +28,7 @@ SssControls controls_from_options(const Options &o) {
   c.jitter = o.jitter;
   c.adaptive_taps = o.adaptive_taps;
   c.region = o.region;
+  c.path = static_cast<int>(o.path);
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
   c.msaa_samples = o.msaa;

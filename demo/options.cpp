@@ -112,6 +112,8 @@ void print_usage(const char *program) {
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
       "  --adaptive-taps     footprint-adaptive taps: fewer (or none) where the kernel spans few pixels\n"
       "  --region            tell the library the head's projected bounds (work only there)\n"
+      "  --path NAME         how the separable passes run: fragment (default) | compute (OpenGL 4.3+ compute\n"
+      "                      dispatches, shared-memory rows and columns) | auto (whichever is faster here)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
@@ -130,7 +132,7 @@ void print_usage(const char *program) {
 
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
-    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion,
+    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
@@ -147,6 +149,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
       {"adaptive-taps", no_argument, nullptr, kAdaptive},
       {"region", no_argument, nullptr, kRegion},
+      {"path", required_argument, nullptr, kPath},
       {"no-stencil", no_argument, nullptr, kNoStencil},
       {"msaa", required_argument, nullptr, kMsaa},
       {"exposure", required_argument, nullptr, kExposure},
@@ -259,6 +262,19 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         }
         ok = o->material >= 0 || fail("--material wants skin, apple, chicken1, chicken2, cream, ketchup, marble, "
                                       "potato, skimmilk, skin1, skin2 or wholemilk", optarg);
+        break;
+      }
+      case kPath: {
+        const std::string v = optarg;
+        if (v == "fragment") {
+          o->path = SSS_PATH_FRAGMENT;
+        } else if (v == "compute") {
+          o->path = SSS_PATH_COMPUTE;
+        } else if (v == "auto") {
+          o->path = SSS_PATH_AUTO;
+        } else {
+          ok = fail("--path wants fragment, compute or auto", optarg);
+        }
         break;
       }
       case kJitter: {

@@ -30,6 +30,7 @@ struct Options {
   int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
   float jitter = 0.0f;           // sss_settings.jitter
   bool adaptive_taps = false;    // SSS_ADAPTIVE_TAPS
+  unsigned path = 0;             // sss_settings.path: SSS_PATH_FRAGMENT, _COMPUTE or _AUTO
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;

@@ -75,6 +75,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.kernel.rank = controls.kernel_rank;
   s.kernel.profile.material = controls.material;
   s.jitter = controls.jitter;
+  s.path = static_cast<uint32_t>(controls.path);
   if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
   stage->settings = s;
   return true;

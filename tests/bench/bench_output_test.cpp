@@ -4,6 +4,7 @@
 // beats a do-nothing copy on scenes with light to scatter).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -73,7 +74,9 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   }
   EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral",
                                             "cross-bilateral-no-tilt", "sum-of-gaussians", "exact-2d",
-                                            "separable-in-place", "separable-adaptive", "separable-adaptive-region", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
+                                            "separable-in-place", "separable-adaptive", "separable-adaptive-region",
+                                            "separable-compute", "separable-compute-adaptive-region",
+                                            "separable-auto-adaptive-region", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
                                             "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
                                             "kernel-preintegrated", "kernel-guided", "kernel-artist"}));
   EXPECT_EQ(scenes.size(), 13u);
@@ -154,6 +157,16 @@ TEST(BenchQuickOutput, APaddedRegionChangesNothing) {
     if (methods.count("separable-adaptive-region") == 0) continue;
     ++scenes;
     EXPECT_EQ(methods.at("separable-adaptive-region"), methods.at("separable-adaptive")) << scene;
+    // The compute path gives the fragment path's image (within fp16 rounding): the same score to
+    // three significant digits, fixed taps and adaptive with the region alike; so does the
+    // automatic choice, whichever path it took.
+    const auto close = [&](const char* a, const char* b) {
+      const double x = std::stod(methods.at(a)), y = std::stod(methods.at(b));
+      EXPECT_LE(std::fabs(x - y), 1e-3 * std::max(x, 1e-3)) << scene << ": " << a << " vs " << b;
+    };
+    close("separable-compute", "separable-in-place");
+    close("separable-compute-adaptive-region", "separable-adaptive-region");
+    close("separable-auto-adaptive-region", "separable-adaptive-region");
   }
   EXPECT_EQ(scenes, 13);
   std::ifstream doc(kDir + "/benchmarks.md");

@@ -228,12 +228,18 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "(`SSS_ADAPTIVE_TAPS`: no taps where the kernel spans under half a pixel, 9 taps where their mean "
            "spacing stays within a quarter pixel), then with those and the host's region (`SSS_FRAME_REGION`: the "
            "translucent pixels' bounding rectangle padded by the kernel's reach, as a host projects its skin "
-           "meshes' bounds). `% of close-up` is each time over `separable-in-place` on the head close-up at this "
-           "size; `separable` is the library into a separate output, the rows of the tables above.\n\n"
+           "meshes' bounds). `separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
+           "each work group caches a row or column segment of 128 pixels and 64 on either side in shared memory), "
+           "alone and with adaptive taps and the region; `separable-auto-adaptive-region` lets the library pick the "
+           "faster path (`SSS_PATH_AUTO`: timed on GPUs, the fragment path on software rasterisers). `% of "
+           "close-up` is each time over `separable-in-place` on the head close-up at this size; `separable` is the "
+           "library into a separate output, the rows of the tables above.\n\n"
            "| scene | method | ms | × copy | % of close-up | rel. RMSE | p99 abs | SSIM |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const char* scene : {"head-close", "head-mid", "head-far", "empty"}) {
-      for (const char* method : {"separable", "separable-in-place", "separable-adaptive", "separable-adaptive-region"}) {
+      for (const char* method : {"separable", "separable-in-place", "separable-adaptive", "separable-adaptive-region",
+                                 "separable-compute", "separable-compute-adaptive-region",
+                                 "separable-auto-adaptive-region"}) {
         const ResultRow* r = find(rows, scene, w, h, method, 17, true);
         if (r == nullptr) continue;
         out << "| " << scene << " | " << method << " | " << fmt(r->time_ms, "%.2f") << " | "
@@ -263,6 +269,19 @@ void write_results_document(const std::string& path, const std::string& out_dir,
           << (v <= limit ? "met" : "not met") << " | " << (std::string(scene) == "empty" ? "–" : error_change(scene))
           << " |\n";
     };
+    // The two paths side by side: the compute path's time over the fragment path's, same frames.
+    out << "\n| scene | compute / fragment, fixed 17 taps | compute / fragment, adaptive taps and region |\n"
+           "|---|---:|---:|\n";
+    for (const char* scene : {"head-close", "head-mid", "head-far", "empty"}) {
+      const auto ratio = [&](const char* compute, const char* fragment) {
+        const ResultRow* c = find(rows, scene, w, h, compute, 17, true);
+        const ResultRow* f = find(rows, scene, w, h, fragment, 17, true);
+        if (c == nullptr || f == nullptr || !(f->time_ms > 0.0)) return std::string("–");
+        return fmt(c->time_ms / f->time_ms, "%.2f");
+      };
+      out << "| " << scene << " | " << ratio("separable-compute", "separable-in-place") << " | "
+          << ratio("separable-compute-adaptive-region", "separable-adaptive-region") << " |\n";
+    }
     out << "\n| target (adaptive taps and region) | limit | measured | verdict | rel. RMSE against fixed 17 taps |\n"
            "|---|---:|---:|---|---|\n";
     target("empty frame", "empty", 1.0);
