@@ -260,9 +260,10 @@ int run_headless(const Options &o, const DemoScene &scene) {
       sss_stats stats = {};
       stats.struct_size = sizeof stats;
       if (!report.preintegrated && sss_get_stats(renderer.sss.context, &stats) == SSS_OK && stats.frames > 0) {
-        std::printf("         passes: %s\n", stats.last_frame_path == SSS_PATH_COMPUTE
-                                                 ? "compute dispatches (sss_stats.last_frame_path)"
-                                                 : "fragment passes (sss_stats.last_frame_path)");
+        std::printf("         passes: %s (sss_stats.last_frame_path)\n",
+                    stats.last_frame_path == SSS_PATH_COMPUTE           ? "compute dispatches"
+                    : stats.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "fragment passes behind a stencil from alpha"
+                                                                        : "fragment passes");
       }
       std::printf("         heat map: exact reference at %dx%d in %.2f s; relative RMSE %.4f with SSS, %.4f without;"
                   " touched %llu of %llu marked pixels\n",

@@ -112,8 +112,9 @@ void print_usage(const char *program) {
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
       "  --adaptive-taps     footprint-adaptive taps: fewer (or none) where the kernel spans few pixels\n"
       "  --region            tell the library the head's projected bounds (work only there)\n"
-      "  --path NAME         how the separable passes run: fragment (default) | compute (OpenGL 4.3+ compute\n"
-      "                      dispatches, shared-memory rows and columns) | auto (whichever is faster here)\n"
+      "  --path NAME         how the separable passes run: fragment (default) | masked (behind a stencil\n"
+      "                      marked from alpha) | compute (OpenGL 4.3+ compute dispatches, shared-memory rows\n"
+      "                      and columns) | auto (whichever is fastest here)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
@@ -272,8 +273,10 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
           o->path = SSS_PATH_COMPUTE;
         } else if (v == "auto") {
           o->path = SSS_PATH_AUTO;
+        } else if (v == "masked") {
+          o->path = SSS_PATH_FRAGMENT_MASKED;
         } else {
-          ok = fail("--path wants fragment, compute or auto", optarg);
+          ok = fail("--path wants fragment, masked, compute or auto", optarg);
         }
         break;
       }

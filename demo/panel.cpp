@@ -67,8 +67,9 @@ void sss_section(WindowState *s) {
   ImGui::Checkbox("adaptive taps", &c.adaptive_taps);
   ImGui::SameLine();
   ImGui::Checkbox("region from the head's bounds", &c.region);
-  const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the faster)"};
-  ImGui::Combo("path", &c.path, paths, 3);
+  // Indexed by SSS_PATH_*: fragment 0, compute 1, auto 2, masked 3.
+  const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked"};
+  ImGui::Combo("path", &c.path, paths, 4);
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
   if (c.cross_bilateral) {
     ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"

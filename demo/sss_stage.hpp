@@ -32,8 +32,8 @@ struct SssControls {
   // padded by the kernel's reach, as the frame's region of translucent pixels (SSS_FRAME_REGION).
   bool adaptive_taps = false;
   bool region = false;
-  // How the separable passes run (sss_settings.path): fragment passes, compute dispatches, or the
-  // faster of the two.
+  // How the separable passes run (sss_settings.path, SSS_PATH_*): fragment passes, behind a
+  // stencil from alpha, compute dispatches, or the fastest of them.
   int path = 0;
   // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
   // with the profile the blur uses.

@@ -55,9 +55,11 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // Skipping what a frame does not need: the default kernel written back in place (a host's
   // frame), with footprint-adaptive taps, and with those and the host's region of translucent
   // pixels.
-  // The compute path (sss_settings.path) the same two ways, and the automatic choice.
+  // The masked fragment path and the compute path (sss_settings.path) the same two ways, and the
+  // automatic choice.
   for (const char* kind : {"separable-in-place", "separable-adaptive", "separable-adaptive-region",
-                           "separable-compute", "separable-compute-adaptive-region", "separable-auto-adaptive-region"}) {
+                           "separable-masked", "separable-masked-adaptive-region", "separable-compute",
+                           "separable-compute-adaptive-region", "separable-auto-adaptive-region"}) {
     configs.push_back({kind, SSS_SAMPLES_MEDIUM, true});
   }
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
@@ -81,6 +83,12 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false, false);
   if (c.kind == "separable-adaptive") return make_in_place_method(loader, c.taps, true, false);
   if (c.kind == "separable-adaptive-region") return make_in_place_method(loader, c.taps, true, true);
+  if (c.kind == "separable-masked") {
+    return make_in_place_method(loader, c.taps, false, false, SSS_PATH_FRAGMENT_MASKED);
+  }
+  if (c.kind == "separable-masked-adaptive-region") {
+    return make_in_place_method(loader, c.taps, true, true, SSS_PATH_FRAGMENT_MASKED);
+  }
   if (c.kind == "separable-compute") return make_in_place_method(loader, c.taps, false, false, SSS_PATH_COMPUTE);
   if (c.kind == "separable-compute-adaptive-region") {
     return make_in_place_method(loader, c.taps, true, true, SSS_PATH_COMPUTE);

@@ -75,6 +75,7 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   EXPECT_EQ(methods, (std::set<std::string>{"separable", "separable-no-restore", "cross-bilateral",
                                             "cross-bilateral-no-tilt", "sum-of-gaussians", "exact-2d",
                                             "separable-in-place", "separable-adaptive", "separable-adaptive-region",
+                                            "separable-masked", "separable-masked-adaptive-region",
                                             "separable-compute", "separable-compute-adaptive-region",
                                             "separable-auto-adaptive-region", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
                                             "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
@@ -157,14 +158,16 @@ TEST(BenchQuickOutput, APaddedRegionChangesNothing) {
     if (methods.count("separable-adaptive-region") == 0) continue;
     ++scenes;
     EXPECT_EQ(methods.at("separable-adaptive-region"), methods.at("separable-adaptive")) << scene;
-    // The compute path gives the fragment path's image (within fp16 rounding): the same score to
-    // three significant digits, fixed taps and adaptive with the region alike; so does the
-    // automatic choice, whichever path it took.
+    // The compute and masked paths give the fragment path's image (within fp16 rounding; the masked
+    // one bit for bit): the same score to three significant digits, fixed taps and adaptive with
+    // the region alike; so does the automatic choice, whichever path it took.
     const auto close = [&](const char* a, const char* b) {
       const double x = std::stod(methods.at(a)), y = std::stod(methods.at(b));
       EXPECT_LE(std::fabs(x - y), 1e-3 * std::max(x, 1e-3)) << scene << ": " << a << " vs " << b;
     };
     close("separable-compute", "separable-in-place");
+    close("separable-masked", "separable-in-place");
+    close("separable-masked-adaptive-region", "separable-adaptive-region");
     close("separable-compute-adaptive-region", "separable-adaptive-region");
     close("separable-auto-adaptive-region", "separable-adaptive-region");
   }

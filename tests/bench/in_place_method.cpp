@@ -35,7 +35,10 @@ class InPlaceMethod : public Method {
   }
 
   std::string name() const override {
-    const std::string base = path_ == SSS_PATH_COMPUTE ? "separable-compute" : path_ == SSS_PATH_AUTO ? "separable-auto" : "separable";
+    const std::string base = path_ == SSS_PATH_COMPUTE           ? "separable-compute"
+                             : path_ == SSS_PATH_AUTO            ? "separable-auto"
+                             : path_ == SSS_PATH_FRAGMENT_MASKED ? "separable-masked"
+                                                                 : "separable";
     if (!adaptive_) return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;
     return base + (region_ ? "-adaptive-region" : "-adaptive");
   }

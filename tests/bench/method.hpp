@@ -65,7 +65,8 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // padded by the kernel's reach at the nearest translucent pixel, as a host would project its skin
 // meshes' bounds; the result equals the whole viewport's).
 // path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-adaptive[-region]";
-// SSS_PATH_COMPUTE: "separable-compute[-adaptive-region]"; SSS_PATH_AUTO: "separable-auto[...]").
+// SSS_PATH_FRAGMENT_MASKED: "separable-masked[-adaptive-region]"; SSS_PATH_COMPUTE:
+// "separable-compute[-adaptive-region]"; SSS_PATH_AUTO: "separable-auto[...]").
 std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region,
                                              uint32_t path = SSS_PATH_FRAGMENT);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});

@@ -1,5 +1,7 @@
-// The compute path (sss_settings.path = SSS_PATH_COMPUTE, separable_blur.comp) against the CPU model
-// and against the fragment path, and where it gives way to the fragment path.
+// The ways the passes can run (sss_settings.path): the compute path (SSS_PATH_COMPUTE,
+// separable_blur.comp) and the masked fragment path (SSS_PATH_FRAGMENT_MASKED: a stencil marked from
+// alpha) against the CPU model and the plain fragment path; where each gives way to the plain
+// fragment path; and SSS_PATH_AUTO's choice.
 //
 // Tolerance: matches_cpu_model_test's 3e-3 against the CPU model (one fp16 half-ulp flip of the
 // intermediate and one of the output). The compute path interpolates its cached taps in fp32
@@ -187,7 +189,7 @@ TEST_F(ComputePath, AutoDecidesOnceAndEveryFrameMatches) {
   const GLuint depth = make_depth32f(w, h, scene.window_depth);
   sss_frame frame = frame_of(color, depth);
   if (is_gles()) describe_frame(c, w, h, &frame);  // ES 3.0 cannot be asked
-  int computed = 0;
+  int computed = 0, masked = 0;
   for (int i = 0; i < 12; ++i) {
     glBindTexture(GL_TEXTURE_2D, color);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, scene.color.data());
@@ -195,14 +197,55 @@ TEST_F(ComputePath, AutoDecidesOnceAndEveryFrameMatches) {
     ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
     glFinish();  // lets the timer results arrive between frames
     computed += last_path() == SSS_PATH_COMPUTE ? 1 : 0;
+    masked += last_path() == SSS_PATH_FRAGMENT_MASKED ? 1 : 0;
     EXPECT_LE(largest_relative_difference(read_rgba(color, w, h), first.gpu), kTolerance) << "frame " << i;
   }
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const bool software = renderer != nullptr && std::string(renderer).find("llvmpipe") != std::string::npos;
-  if (software || !has_compute()) {
+  if (software || is_gles()) {  // no trustworthy timer: the masked fragment path, every frame
+    EXPECT_EQ(masked, 12);
+  }
+  if (!has_compute()) {
     EXPECT_EQ(computed, 0);
   }
-  std::printf("SSS_PATH_AUTO on %s: %d of 12 frames on the compute path\n", renderer ? renderer : "?", computed);
+  std::printf("SSS_PATH_AUTO on %s: of 12 frames, %d on the compute path, %d on the masked fragment path\n",
+              renderer ? renderer : "?", computed, masked);
+}
+
+TEST_F(ComputePath, StatsCountNoPixelsForAComputeFrame) {
+  // SSS_CREATE_STATS: a dispatch has no samples to count, so SSS_STATS_PIXELS stays clear for a
+  // compute frame; the same frames on the fragment path count them (desktop GL).
+  if (is_gles()) GTEST_SKIP() << "OpenGL ES counts no pixels on either path";
+  const SyntheticScene scene = relief();
+  const GLuint color = make_rgba32f(scene.width, scene.height, scene.color);
+  const GLuint depth = make_depth32f(scene.width, scene.height, scene.window_depth);
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_COMPUTE}) {
+    SCOPED_TRACE(path == SSS_PATH_COMPUTE ? "compute path" : "fragment path");
+    sss_ = create_sss(SSS_CREATE_STATS);
+    ASSERT_NE(sss_, nullptr);
+    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    s.path = path;
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    const sss_frame frame = frame_of(color, depth);
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+      glFinish();
+    }
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    const bool compute_ran = stats.last_frame_path == SSS_PATH_COMPUTE;
+    EXPECT_EQ(compute_ran, path == SSS_PATH_COMPUTE && has_compute());
+    // A compute frame has only its GPU time to report, where the timer is trustworthy (on llvmpipe
+    // nothing at all: measured stays 0); a fragment frame always has its pixel count.
+    EXPECT_EQ((stats.measured & SSS_STATS_PIXELS) != 0, !compute_ran);
+    if (!compute_ran) {
+      EXPECT_NE(stats.measured_frame, 0u);
+    }
+    sss_destroy(sss_);
+    sss_ = nullptr;
+  }
 }
 
 TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
@@ -211,9 +254,9 @@ TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
   sss_settings s;
   sss_default_settings(&s);
   EXPECT_EQ(s.path, SSS_PATH_FRAGMENT);
-  s.path = 3;
+  s.path = 4;
   EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 3"), std::string::npos) << sss_last_error(sss_);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 4"), std::string::npos) << sss_last_error(sss_);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
@@ -222,6 +265,100 @@ TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
   EXPECT_EQ(back.path, SSS_PATH_AUTO);
+}
+
+// ---- The masked fragment path (SSS_PATH_FRAGMENT_MASKED).
+
+class MaskedPath : public ComputePath {
+ protected:
+  // `c` on the plain and the masked fragment path: both match the CPU model and each other bit
+  // for bit (the same shader on the same pixels; the rest copied or left alone either way).
+  void expect_bit_identical(const SyntheticScene& scene, FilterCase c, uint32_t expected_path) {
+    std::vector<float> results[2];
+    for (int masked = 0; masked < 2; ++masked) {
+      SCOPED_TRACE(masked ? "masked" : "plain");
+      c.settings.path = masked ? SSS_PATH_FRAGMENT_MASKED : SSS_PATH_FRAGMENT;
+      const FilterOutcome o = run_case(scene, c);
+      ASSERT_EQ(o.result, SSS_OK);
+      EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), kTolerance);
+      EXPECT_EQ(last_path(), masked ? expected_path : SSS_PATH_FRAGMENT);
+      results[masked] = o.gpu;
+      TearDown();
+      SetUp();
+    }
+    EXPECT_EQ(results[0], results[1]);
+  }
+};
+
+TEST_F(MaskedPath, GivesThePlainFragmentResultBitForBit) {
+  // The relief scene has pixels that are not translucent (alpha 0) among translucent ones.
+  for (bool separate : {false, true}) {
+    SCOPED_TRACE(separate ? "separate output" : "in place");
+    FilterCase c;
+    c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    c.separate_output = separate;
+    expect_bit_identical(relief(), c, SSS_PATH_FRAGMENT_MASKED);
+    FilterCase r = c;
+    r.settings.flags |= SSS_ADAPTIVE_TAPS;
+    r.use_region = true;
+    r.region = {9, 7, 40, 30};
+    SCOPED_TRACE("adaptive taps and a region");
+    expect_bit_identical(relief(), r, SSS_PATH_FRAGMENT_MASKED);
+  }
+  FilterCase terms;
+  terms.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  terms.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  terms.settings.kernel.rank = 2;
+  SCOPED_TRACE("two terms");
+  expect_bit_identical(relief(), terms, SSS_PATH_FRAGMENT_MASKED);
+}
+
+TEST_F(MaskedPath, AHostStencilKeepsThePlainPath) {
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  expect_bit_identical(relief(), c, SSS_PATH_FRAGMENT);
+}
+
+TEST_F(MaskedPath, DrawsTheMarkAndCountsTheTranslucentPixels) {
+  // In place: the mark, the horizontal blur and the copy of the rest, the vertical blur. The
+  // vertical pass's samples are the blurred pixels, as on the plain path.
+  const SyntheticScene scene = relief();
+  const GLuint depth = make_depth32f(scene.width, scene.height, scene.window_depth);
+  std::uint64_t touched[2] = {0, 0};
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED}) {
+    const GLuint color = make_rgba32f(scene.width, scene.height, scene.color);
+    sss_ = create_sss(SSS_CREATE_STATS);
+    ASSERT_NE(sss_, nullptr);
+    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    s.path = path;
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    sss_frame frame = frame_of(color, depth);
+    if (is_gles()) {
+      FilterCase description;
+      describe_frame(description, scene.width, scene.height, &frame);
+    }
+    ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+    glFinish();
+    ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+    glFinish();
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    EXPECT_EQ(stats.last_frame_passes, path == SSS_PATH_FRAGMENT_MASKED ? 4u : 2u);
+    if (!is_gles()) {
+      ASSERT_NE(stats.measured & SSS_STATS_PIXELS, 0u);
+      touched[path == SSS_PATH_FRAGMENT ? 0 : 1] = stats.pixels_touched;
+    }
+    sss_destroy(sss_);
+    sss_ = nullptr;
+  }
+  EXPECT_EQ(touched[0], touched[1]);
+  if (!is_gles()) {
+    EXPECT_GT(touched[0], 0u);
+  }
 }
 
 }  // namespace

@@ -184,7 +184,7 @@ class StateHarness : public GlTest {
          }},
         // The compute path (image unit 0, dispatches, memory barriers): in place, then a region into
         // a separate output (its copy outside the region is a fragment draw).
-        {"sss_apply_frame (compute path: in place; a region into an output)",
+        {"sss_apply_frame (compute path: in place; a region into an output; masked fragment path)",
          [this] {
            sss_settings s;
            sss_default_settings(&s);
@@ -199,6 +199,10 @@ class StateHarness : public GlTest {
            f.region[1] = 4;
            f.region[2] = 14;
            f.region[3] = 11;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           // The masked fragment path: its own stencil marked from alpha, then the masked passes.
+           s.path = SSS_PATH_FRAGMENT_MASKED;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            s.path = SSS_PATH_FRAGMENT;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);

@@ -27,6 +27,8 @@
  *   - GL_ACTIVE_TEXTURE; on texture units 0, 1, 2 and 3: GL_TEXTURE_BINDING_2D, GL_SAMPLER_BINDING,
  *     and GL_TEXTURE_BINDING_2D_MULTISAMPLE where the API has it (GL 3.2+, ES 3.1+)
  *   - GL_PIXEL_UNPACK_BUFFER_BINDING
+ *   - image unit 0 (desktop GL 4.3+: the compute path's target): GL_IMAGE_BINDING_NAME, _LEVEL,
+ *     _LAYERED, _LAYER, _ACCESS, _FORMAT (a texture the host deleted in between restores as 0)
  *   - GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS (set only
  *     by sss_lut_create_texture's CPU upload, and always put back, even with SSS_CREATE_NO_STATE_RESTORE)
  *   - GL_VIEWPORT, GL_SAMPLE_MASK_VALUE (word 0)
@@ -127,14 +129,29 @@ typedef struct sss_create_desc {
  *  stored unchanged. sss_stats.pixels_touched is not measured for
  *  compute frames (SSS_STATS_PIXELS stays clear: there are no samples to count). */
 #define SSS_PATH_COMPUTE 1u
-/** Whichever of the two is faster here. Where timer queries are trustworthy (see sss_stats), the
- *  first frames at a size alternate the paths, timing each pass pair with GL_TIME_ELAPSED read
- *  back without stalling, and the faster median wins until the size, the settings or the frame's
- *  flags change. On Mesa's software rasterisers (no trustworthy timer) it takes the path the
- *  benchmark measured faster there: the fragment path (llvmpipe runs the compute path about 2x
- *  slower; docs/benchmarks.md). While it times a frame, SSS_CREATE_STATS has no GPU time for it. The choice is logged at
- *  SSS_LOG_INFO. Frames the compute path cannot run take the fragment path. */
+/** Whichever path is fastest here, among those that can run the frame: SSS_PATH_FRAGMENT,
+ *  SSS_PATH_FRAGMENT_MASKED and SSS_PATH_COMPUTE. Where timer queries are trustworthy (desktop GL,
+ *  GL_QUERY_COUNTER_BITS > 0, not a software rasteriser), the first frames of a configuration
+ *  cycle through the candidates, timing each frame with GL_TIME_ELAPSED read back without stalling
+ *  (three per path), and the lowest median wins until the size, the settings, the formats or the
+ *  frame's flags change. Elsewhere (Mesa's software rasterisers, OpenGL ES) it takes the masked
+ *  fragment path, the fastest on llvmpipe by the benchmark (docs/benchmarks.md; the compute path
+ *  runs about 2x slower there), or the plain one where the mask cannot be used. The choice is
+ *  logged at SSS_LOG_INFO. While it times a frame, SSS_CREATE_STATS has no GPU time for that frame
+ *  (GL_TIME_ELAPSED queries cannot nest), and a frame with the host's own GL_TIME_ELAPSED query
+ *  active is not timed. */
 #define SSS_PATH_AUTO 2u
+/** The fragment passes behind a stencil mask the module marks from the colour's alpha (one
+ *  full-screen draw that writes only stencil: alpha > 0 and a finite colour), the paper's stencil
+ *  culling without a host stencil: the blur is shaded on translucent pixels alone, the rest are
+ *  copied (horizontal pass; and into a separate output) or left alone. The same image as
+ *  SSS_PATH_FRAGMENT, bit for bit; it costs the mark and a copy draw, and saves shading every
+ *  pixel that is not translucent, which on llvmpipe (whose shaders pay for their masked-off code)
+ *  cuts frames with few translucent pixels to a fraction (docs/benchmarks.md, "Skipping what a
+ *  frame does not need"). Frames with a host stencil (already culled),
+ *  the cross-bilateral mode or multisampled colour (whose path marks the stencil from alpha
+ *  anyway) take their usual path. */
+#define SSS_PATH_FRAGMENT_MASKED 3u
 
 /* Filter modes for sss_settings.mode. */
 /** Jimenez et al. 2012: the two-pass separable kernel of eq. (1), follow-surface blend (the default). */
@@ -197,9 +214,9 @@ typedef struct sss_settings {
                                Fig. S.6-S.7 use 0.33): turns the banding of few taps into fine noise, with no
                                temporal filter. Default 0 */
   /* Appended in 0.1 for the compute path. */
-  uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE or SSS_PATH_AUTO: how the separable
-                               mode's two passes run (see SSS_PATH_*). Every path gives the same image within
-                               fp16 rounding */
+  uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE, SSS_PATH_AUTO or
+                               SSS_PATH_FRAGMENT_MASKED: how the separable mode's two passes run (see SSS_PATH_*).
+                               Every path gives the same image within fp16 rounding */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
@@ -306,8 +323,9 @@ typedef struct sss_stats {
   uint64_t frames;               /**< sss_apply / sss_apply_frame calls that returned SSS_OK */
   uint64_t passes;               /**< full-screen draws over all those frames (blur passes, two per kernel term, and the copies of
                                       stencil-rejected pixels, and for multisampled input the resolve, the stencil
-                                      mark and one write per sample; 0 for an in-place frame with width or
-                                      strength 0) */
+                                      mark and one write per sample; SSS_PATH_FRAGMENT_MASKED adds its stencil mark,
+                                      the compute path counts its two dispatches; 0 for an in-place frame with width
+                                      or strength 0) */
   uint32_t last_frame_passes;    /**< full-screen draws of the last successful frame */
   /* GPU measurements (SSS_CREATE_STATS only). Read back without stalling: they come from the
    * latest frame whose queries the GPU had finished when a later sss_apply_frame looked, so they
@@ -325,7 +343,7 @@ typedef struct sss_stats {
                                       GL_QUERY_COUNTER_BITS > 0, on OpenGL ES through GL_EXT_disjoint_timer_query
                                       (a disjoint event voids the results it spans), and not on Mesa's software
                                       rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
-  uint32_t last_frame_path;      /**< SSS_PATH_FRAGMENT or SSS_PATH_COMPUTE: how the last successful frame's passes ran
+  uint32_t last_frame_path;      /**< SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful frame's passes ran
                                       (what sss_settings.path asked for, SSS_PATH_AUTO's choice, or the fragment path
                                       where the compute path cannot run that frame) */
 } sss_stats;

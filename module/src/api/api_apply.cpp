@@ -323,7 +323,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   if (r == SSS_OK) {
     ++ctx->frames;
     ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());
-    ctx->last_frame_path = ctx->filter.last_run_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT;
+    ctx->last_frame_path = ctx->filter.last_run_path();
     ctx->passes += ctx->last_frame_passes;
   }
   return r;

@@ -68,9 +68,11 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->jitter = %g: must be finite and in [0, 1]",
                 static_cast<double>(s->jitter));
   }
-  if (s->path > SSS_PATH_AUTO) {
+  if (s->path > SSS_PATH_FRAGMENT_MASKED) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                "settings->path = %u: must be SSS_PATH_FRAGMENT (0), SSS_PATH_COMPUTE (1) or SSS_PATH_AUTO (2)", s->path);
+                "settings->path = %u: must be SSS_PATH_FRAGMENT (0), SSS_PATH_COMPUTE (1), SSS_PATH_AUTO (2) or "
+                "SSS_PATH_FRAGMENT_MASKED (3)",
+                s->path);
   }
   return check_kernel_desc(ctx, &s->kernel, "settings->kernel.", true);
 }

@@ -11,6 +11,14 @@ double median(std::vector<double> v) {
   const std::size_t n = v.size();
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+
+const char* path_name(int path) {
+  switch (path) {
+    case PathChooser::masked: return "masked fragment";
+    case PathChooser::compute: return "compute";
+    default: return "fragment";
+  }
+}
 }  // namespace
 
 void PathChooser::init(const Functions* gl, bool trustworthy_timer) {
@@ -41,9 +49,10 @@ void PathChooser::reset(std::uint64_t key) {
   trials_started_ = 0;
   for (auto& v : samples_) {
     v.clear();
-    v.reserve(2 * kTrials + 2);  // every pending query's result fits: no allocation after the first reset
+    v.reserve(pending_.size());  // every pending query's result fits: no allocation after the first reset
   }
-  // Results of an earlier configuration's trials still in flight are read and dropped.
+  // Results of an earlier configuration's trials still in flight are dropped (the query objects
+  // are simply begun again later).
   for (Pending& p : pending_) p.waiting = false;
 }
 
@@ -57,39 +66,57 @@ void PathChooser::collect() {
     std::uint64_t ns = 0;
     f.GetQueryObjectui64v(p.query, QUERY_RESULT, &ns);
     p.waiting = false;
-    samples_[p.compute ? 1 : 0].push_back(static_cast<double>(ns) * 1e-6);
+    samples_[static_cast<std::size_t>(p.path)].push_back(static_cast<double>(ns) * 1e-6);
   }
 }
 
-PathChooser::Choice PathChooser::choose(std::uint64_t key) {
+PathChooser::Choice PathChooser::choose(std::uint64_t key, unsigned available) {
   decision_[0] = '\0';
-  if (!timer_) {
-    if (!has_key_ || key != key_) {
-      reset(key);
-      decided_ = true;
-      compute_ = false;
-      std::snprintf(decision_.data(), decision_.size(), "%s",
-                    "fragment path (no trustworthy timer here; the benchmark measured it faster on software "
-                    "rasterisers)");
-    }
-    return {false, false};
-  }
+  available |= 1u << fragment;
+  key = key * 31u + available;  // a path becoming (un)available is a new configuration
   if (!has_key_ || key != key_) reset(key);
-  if (decided_) return {compute_, false};
-  collect();
-  if (static_cast<int>(samples_[0].size()) >= kTrials && static_cast<int>(samples_[1].size()) >= kTrials) {
-    const double fragment = median(samples_[0]), compute = median(samples_[1]);
+  if (decided_) return {chosen_, false};
+  if (!timer_) {
     decided_ = true;
-    compute_ = compute < fragment;
-    std::snprintf(decision_.data(), decision_.size(), "%s path: %.3f ms against %.3f ms for the %s path (medians of %d timed frames)",
-                  compute_ ? "compute" : "fragment", compute_ ? compute : fragment, compute_ ? fragment : compute,
-                  compute_ ? "fragment" : "compute", kTrials);
-    return {compute_, false};
+    chosen_ = (available & (1u << masked)) != 0 ? masked : fragment;
+    std::snprintf(decision_.data(), decision_.size(),
+                  "%s path (no trustworthy timer here; the benchmark measured it the fastest on software "
+                  "rasterisers)",
+                  path_name(chosen_));
+    return {chosen_, false};
   }
-  // Alternate until each path has its trials in flight or done; then wait (fragment, untimed).
-  const int issued = trials_started_;
-  if (issued >= 2 * kTrials) return {false, false};
-  return {issued % 2 == 1, true};
+  collect();
+  int candidates[kPaths];
+  int count = 0;
+  for (int p = 0; p < kPaths; ++p) {
+    if ((available & (1u << p)) != 0) candidates[count++] = p;
+  }
+  bool complete = true;
+  for (int i = 0; i < count; ++i) {
+    complete = complete && static_cast<int>(samples_[static_cast<std::size_t>(candidates[i])].size()) >= kTrials;
+  }
+  if (complete) {
+    int best = candidates[0];
+    for (int i = 1; i < count; ++i) {
+      if (median(samples_[static_cast<std::size_t>(candidates[i])]) < median(samples_[static_cast<std::size_t>(best)])) {
+        best = candidates[i];
+      }
+    }
+    decided_ = true;
+    chosen_ = best;
+    int n = std::snprintf(decision_.data(), decision_.size(), "%s path (medians of %d timed frames:", path_name(best),
+                          kTrials);
+    for (int i = 0; i < count && n > 0 && n < static_cast<int>(decision_.size()); ++i) {
+      n += std::snprintf(decision_.data() + n, decision_.size() - static_cast<std::size_t>(n), " %s %.3f ms",
+                         path_name(candidates[i]), median(samples_[static_cast<std::size_t>(candidates[i])]));
+    }
+    if (n > 0 && n + 1 < static_cast<int>(decision_.size())) std::snprintf(decision_.data() + n, 2, ")");
+    return {chosen_, false};
+  }
+  // Cycle through the candidates until each has its trials in flight or done; then wait on the
+  // plain fragment path, untimed.
+  if (trials_started_ >= kTrials * count) return {fragment, false};
+  return {candidates[trials_started_ % count], true};
 }
 
 void PathChooser::begin(const Choice& choice) {
@@ -103,7 +130,7 @@ void PathChooser::begin(const Choice& choice) {
     Pending& p = pending_[static_cast<std::size_t>(i)];
     if (p.waiting) continue;
     if (p.query == 0) f.GenQueries(1, &p.query);
-    p.compute = choice.compute;
+    p.path = choice.path;
     f.BeginQuery(TIME_ELAPSED, p.query);
     active_ = i;
     return;

@@ -1,9 +1,11 @@
-// SSS_PATH_AUTO: which of the fragment and compute paths runs a frame. Where timer queries are
-// trustworthy, the first frames of a configuration alternate the two paths, each timed with one
-// GL_TIME_ELAPSED query around the whole pair of passes and read back only once available (never
-// stalling); when both have kTrials results the lower median wins until the configuration changes.
-// Without a trustworthy timer (Mesa's software rasterisers, where GL_TIME_ELAPSED covers one tile)
-// it keeps the fragment path, the faster one there by the benchmark (docs/benchmarks.md).
+// SSS_PATH_AUTO: which way of running the passes a frame takes: the plain fragment passes, the
+// fragment passes behind a stencil marked from alpha, or the compute dispatches. Where timer
+// queries are trustworthy, the first frames of a configuration cycle through the paths that can
+// run it, each timed with one GL_TIME_ELAPSED query around the whole frame and read back only once
+// available (never stalling); when each has kTrials results the lowest median wins until the
+// configuration changes. Without a trustworthy timer (Mesa's software rasterisers, where
+// GL_TIME_ELAPSED covers one tile) it takes the masked fragment path, the fastest there by the
+// benchmark (docs/benchmarks.md), or the plain one where the mask cannot be used.
 #pragma once
 
 #include <array>
@@ -17,6 +19,8 @@ namespace sss::gl {
 class PathChooser {
  public:
   static constexpr int kTrials = 3;  // timed frames of each path before deciding
+  // The candidates, as bits of choose()'s `available` and values of Choice::path.
+  enum Path : int { fragment = 0, masked = 1, compute = 2, kPaths = 3 };
 
   // trustworthy_timer: GL_TIME_ELAPSED measures whole passes here (not a software rasteriser, and
   // GL_QUERY_COUNTER_BITS > 0). Query objects are made on first use.
@@ -24,23 +28,22 @@ class PathChooser {
   void destroy();  // deletes the query objects (they must exist in the current context)
   void forget();   // drops the names (context lost)
 
-  // Whether the frame of configuration `key` (size, settings, frame flags) runs the compute path.
-  // A trial frame is timed: call begin() before its passes and end() after them.
   struct Choice {
-    bool compute = false;
-    bool trial = false;
+    int path = fragment;
+    bool trial = false;  // timed: call begin() before the frame's passes and end() after them
   };
-  Choice choose(std::uint64_t key);
+  // The path for a frame of configuration `key` (size, settings, formats, frame flags) that can run
+  // the paths whose bits are set in `available` (fragment always is).
+  Choice choose(std::uint64_t key, unsigned available);
   void begin(const Choice& choice);
   void end();
-  // Set when a decision was made during the last choose() (for the log): "compute path: 0.41 ms
-  // against 0.62 ms for the fragment path" and the like; "" otherwise.
+  // Set when a decision was made during the last choose() (for the log); "" otherwise.
   const char* decision() const { return decision_.data(); }
 
  private:
   struct Pending {
     GLuint query = 0;
-    bool compute = false;
+    int path = fragment;
     bool waiting = false;
   };
   void collect();
@@ -49,12 +52,13 @@ class PathChooser {
   const Functions* gl_ = nullptr;
   bool timer_ = false;
   std::uint64_t key_ = 0;
-  bool has_key_ = false, decided_ = false, compute_ = false;
+  bool has_key_ = false, decided_ = false;
+  int chosen_ = fragment;
   int trials_started_ = 0;
-  std::array<std::vector<double>, 2> samples_;  // [0] fragment, [1] compute, milliseconds (capacity kept)
-  std::array<Pending, 2 * kTrials + 2> pending_{};
+  std::array<std::vector<double>, kPaths> samples_;  // milliseconds per path (capacity kept)
+  std::array<Pending, kPaths * kTrials + 2> pending_{};
   int active_ = -1;  // index into pending_ of the query begun for this frame
-  std::array<char, 192> decision_{};  // fixed storage: a steady frame allocates nothing
+  std::array<char, 256> decision_{};  // fixed storage: a steady frame allocates nothing
 };
 
 }  // namespace sss::gl

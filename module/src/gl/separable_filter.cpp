@@ -71,9 +71,11 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   f.SamplerParameterf(sampler_, TEXTURE_MAX_LOD, sampler_tag_);
 
   if (measure_) queries_.init(gl_, es_timer_extension_, software_renderer_);
-  if (gl_->has_compute) {
+  {
+    // SSS_PATH_AUTO times the paths only where GL_TIME_ELAPSED is whole and readable without an
+    // extension: desktop GL, not a software rasteriser, with counter bits.
     GLint bits = 0;
-    if (!software_renderer_) f.GetQueryiv(TIME_ELAPSED, QUERY_COUNTER_BITS, &bits);
+    if (!software_renderer_ && !gl_->api.es) f.GetQueryiv(TIME_ELAPSED, QUERY_COUNTER_BITS, &bits);
     chooser_.init(gl_, bits > 0);
   }
   label_object(f, labels_, VERTEX_ARRAY, vertex_array_, "sss fullscreen triangle");
@@ -597,24 +599,61 @@ void SeparableFilter::draw_copy(GLuint source) {
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   last_draws_ = 0;  // run_msaa's draws and those of the run_single it calls add up
-  last_compute_ = false;
   if (run.color.multisampled()) return run_msaa(run, message);
+  // Which way the passes run (sss.h SSS_PATH_*): asked for, chosen by timing, or the plain fragment
+  // passes where the one asked for cannot run this frame.
+  const bool compute_ok = !run.identity && *compute_unavailable(run) == '\0';
+  const bool masked_ok = masked_available(run);
   PathChooser::Choice choice;
-  if (run.path != SSS_PATH_FRAGMENT && !run.identity && *compute_unavailable(run) == '\0') {
-    if (run.path == SSS_PATH_COMPUTE) {
-      choice.compute = true;
-    } else {
-      choice = chooser_.choose(run.path_key);
-      if (*chooser_.decision() != '\0' && log_) {
-        log_(SSS_LOG_INFO, std::string("SSS_PATH_AUTO chose the ") + chooser_.decision());
+  switch (run.path) {
+    case SSS_PATH_COMPUTE: choice.path = compute_ok ? PathChooser::compute : PathChooser::fragment; break;
+    case SSS_PATH_FRAGMENT_MASKED: choice.path = masked_ok ? PathChooser::masked : PathChooser::fragment; break;
+    case SSS_PATH_AUTO:
+      if (!run.identity && (compute_ok || masked_ok)) {
+        choice = chooser_.choose(run.path_key, (compute_ok ? 1u << PathChooser::compute : 0u) |
+                                                   (masked_ok ? 1u << PathChooser::masked : 0u));
+        if (*chooser_.decision() != '\0' && log_) {
+          log_(SSS_LOG_INFO, std::string("SSS_PATH_AUTO chose the ") + chooser_.decision());
+        }
       }
-    }
+      break;
+    default: break;
   }
   chooser_.begin(choice);
-  const sss_result r = choice.compute ? run_compute(run, message) : run_single(run, message);
+  sss_result r = SSS_OK;
+  switch (choice.path) {
+    case PathChooser::compute: r = run_compute(run, message); break;
+    case PathChooser::masked: r = run_masked(run, message); break;
+    default: r = run_single(run, message); break;
+  }
   chooser_.end();
-  last_compute_ = choice.compute && r == SSS_OK;
+  if (r == SSS_OK) {
+    last_path_ = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
+                 : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
+                                                      : SSS_PATH_FRAGMENT;
+  }
   return r;
+}
+
+sss_result SeparableFilter::run_masked(const FilterRun& run, std::string* message) {
+  // The stencil marked from alpha, then the host-stencil passes with it: only translucent pixels
+  // are shaded by the blur; the rest are copied (horizontal) or left alone (vertical).
+  const Functions& f = *gl_;
+  sss_result r = ensure_mask_program(message);
+  if (r == SSS_OK) r = ensure_intermediate(run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
+  set_pass_state(f);
+  f.BindVertexArray(vertex_array_);
+  f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
+  r = mark_stencil_from_alpha(run.color.name, run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
+  StencilInput own;  // the module's stencil holds 1 where translucent
+  own.ref = 1;
+  own.mask = 0xFF;
+  FilterRun inner = run;
+  inner.stencil = &own;
+  inner.stencil_ready = true;
+  return run_single(inner, message);
 }
 
 sss_result SeparableFilter::run_single(const FilterRun& run, std::string* message) {

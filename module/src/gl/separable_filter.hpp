@@ -103,11 +103,15 @@ class SeparableFilter {
   // forget()s them.
   void destroy();
   sss_result run(const FilterRun& run, std::string* message);
-  // Whether run() would take the compute path for `run` (run.compute set): "" when it would, else
-  // why not (no GL 4.3, stencil, multisampled, several terms, a target format without an image
-  // format). last_run_compute(): whether the last successful run() did.
+  // Whether run() can take the compute path for `run`: "" when it can, else why not (no GL 4.3,
+  // stencil, multisampled, several terms, the cross-bilateral mode).
   const char* compute_unavailable(const FilterRun& run) const;
-  bool last_run_compute() const { return last_compute_; }
+  // Whether it can take the masked fragment path: the separable mode, single-sample, no host stencil.
+  bool masked_available(const FilterRun& run) const {
+    return !run.color.multisampled() && !run.cross_bilateral && run.stencil == nullptr && !run.identity;
+  }
+  // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
+  unsigned last_run_path() const { return last_path_; }
 
   // Context loss. The objects live in the GL context that init() ran in. When that context was
   // lost or destroyed and the host made a new one current (or made another, unrelated one current)
@@ -205,7 +209,10 @@ class SeparableFilter {
   sss_result ensure_msaa_framebuffers();
   sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred, std::string* message);
   sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
-  sss_result mark_stencil_from_alpha(int width, int height, std::string* message);
+  sss_result ensure_mask_program(std::string* message);
+  sss_result mark_stencil_from_alpha(GLuint source, int width, int height, std::string* message);
+  // SSS_PATH_FRAGMENT_MASKED: the fragment passes behind a stencil marked from the colour's alpha.
+  sss_result run_masked(const FilterRun& run, std::string* message);
   sss_result write_samples(const FilterRun& run, std::string* message);
   void destroy_msaa();
   sss_result ensure_intermediate(int width, int height, std::string* message);
@@ -234,7 +241,7 @@ class SeparableFilter {
   bool labels_ = false;
   std::array<BlurProgram, kVariantCount> blur_programs_{};
   std::array<BlurProgram, kComputeVariantCount> compute_programs_{};
-  bool last_compute_ = false;
+  unsigned last_path_ = SSS_PATH_FRAGMENT;
   PathChooser chooser_;
   GLuint copy_program_ = 0;
   GLuint vertex_array_ = 0, sampler_ = 0, depth_sampler_ = 0;

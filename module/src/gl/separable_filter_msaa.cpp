@@ -61,17 +61,9 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
       f.Uniform1i(f.GetUniformLocation(p.program, "u_depth"), static_cast<GLint>(kDepthUnit));
     }
   }
-  if (need_mask && msaa_.mask_program == 0) {
-    msaa_.mask_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_mask_frag, &log);
-    if (msaa_.mask_program == 0) {
-      *message = "MSAA stencil mask shader: " + log;
-      return SSS_ERROR_SHADER_COMPILE;
-    }
-    label_object(f, labels_, PROGRAM, msaa_.mask_program, "sss msaa stencil mask");
-    if (!has_explicit_bindings(variant_)) {
-      f.UseProgram(msaa_.mask_program);
-      f.Uniform1i(f.GetUniformLocation(msaa_.mask_program, "u_source"), static_cast<GLint>(kColorUnit));
-    }
+  if (need_mask) {
+    const sss_result r = ensure_mask_program(message);
+    if (r != SSS_OK) return r;
   }
   if (need_write && msaa_.write_program == 0) {
     msaa_.write_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_write_frag, &log);
@@ -184,9 +176,28 @@ sss_result SeparableFilter::ensure_sample_copy(const TextureInfo& color, std::st
   return SSS_OK;
 }
 
-// The paper's multisampling path: the stencil is initialised from the strength mask, so both blur
-// passes run only on translucent pixels. Needs the intermediate framebuffer allocated.
-sss_result SeparableFilter::mark_stencil_from_alpha(int width, int height, std::string* message) {
+sss_result SeparableFilter::ensure_mask_program(std::string* message) {
+  if (msaa_.mask_program != 0) return SSS_OK;
+  const Functions& f = *gl_;
+  std::string log;
+  msaa_.mask_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_mask_frag, &log);
+  if (msaa_.mask_program == 0) {
+    *message = "stencil mask shader: " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  label_object(f, labels_, PROGRAM, msaa_.mask_program, "sss stencil mask from alpha");
+  if (!has_explicit_bindings(variant_)) {
+    f.UseProgram(msaa_.mask_program);
+    f.Uniform1i(f.GetUniformLocation(msaa_.mask_program, "u_source"), static_cast<GLint>(kColorUnit));
+  }
+  return SSS_OK;
+}
+
+// The paper's stencil culling: the stencil is initialised from the strength mask, so both blur
+// passes run only on translucent pixels (the multisampling path, on its resolved colour, and the
+// masked fragment path, SSS_PATH_FRAGMENT_MASKED, on the host's). Needs the intermediate
+// framebuffer allocated; draws over the current viewport.
+sss_result SeparableFilter::mark_stencil_from_alpha(GLuint source, int width, int height, std::string* message) {
   const Functions& f = *gl_;
   sss_result r = ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
   if (r != SSS_OK) return r;
@@ -194,7 +205,7 @@ sss_result SeparableFilter::mark_stencil_from_alpha(int width, int height, std::
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer_);
   r = check_framebuffer("MSAA stencil mask", message);
   if (r != SSS_OK) return r;
-  DebugGroup group(f, labels_, "sss msaa stencil from alpha");
+  DebugGroup group(f, labels_, "sss stencil from alpha");
   f.StencilMaskSeparate(FRONT_AND_BACK, 0xFF);
   const GLint zero = 0;
   f.ClearBufferiv(STENCIL, 0, &zero);  // glClearBuffer leaves the host's clear values alone
@@ -204,7 +215,7 @@ sss_result SeparableFilter::mark_stencil_from_alpha(int width, int height, std::
   f.StencilOpSeparate(FRONT_AND_BACK, KEEP, KEEP, REPLACE);
   f.UseProgram(msaa_.mask_program);
   f.ActiveTexture(TEXTURE0 + kColorUnit);
-  f.BindTexture(TEXTURE_2D, msaa_.resolved_color);
+  f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kColorUnit, sampler_);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++last_draws_;
@@ -276,7 +287,7 @@ sss_result SeparableFilter::run_msaa(const FilterRun& run, std::string* message)
   if (run.stencil != nullptr) {
     r = copy_stencil(*run.stencil, width, height, message);
   } else {
-    r = mark_stencil_from_alpha(width, height, message);
+    r = mark_stencil_from_alpha(msaa_.resolved_color, width, height, message);
     inner.stencil = &own;
   }
   if (r != SSS_OK) return r;
