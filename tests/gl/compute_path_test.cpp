@@ -208,6 +208,15 @@ TEST_F(ComputePath, AutoDecidesOnceAndEveryFrameMatches) {
   if (!has_compute()) {
     EXPECT_EQ(computed, 0);
   }
+  // With the host's region the untimed choice is the plain fragment path (the region already
+  // leaves out what the mask would).
+  frame.flags |= SSS_FRAME_REGION;
+  frame.region[2] = w;
+  frame.region[3] = h;
+  ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
+  if (software || is_gles()) {
+    EXPECT_EQ(last_path(), SSS_PATH_FRAGMENT);
+  }
   std::printf("SSS_PATH_AUTO on %s: of 12 frames, %d on the compute path, %d on the masked fragment path\n",
               renderer ? renderer : "?", computed, masked);
 }

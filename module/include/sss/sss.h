@@ -134,9 +134,10 @@ typedef struct sss_create_desc {
  *  GL_QUERY_COUNTER_BITS > 0, not a software rasteriser), the first frames of a configuration
  *  cycle through the candidates, timing each frame with GL_TIME_ELAPSED read back without stalling
  *  (three per path), and the lowest median wins until the size, the settings, the formats or the
- *  frame's flags change. Elsewhere (Mesa's software rasterisers, OpenGL ES) it takes the masked
- *  fragment path, the fastest on llvmpipe by the benchmark (docs/benchmarks.md; the compute path
- *  runs about 2x slower there), or the plain one where the mask cannot be used. The choice is
+ *  frame's flags change. Elsewhere (Mesa's software rasterisers, OpenGL ES) it takes what the
+ *  benchmark measured fastest on llvmpipe (docs/benchmarks.md; the compute path runs about 2x slower
+ *  there): the masked fragment path, or the plain one when the frame has SSS_FRAME_REGION (the
+ *  region already leaves out what is not translucent) or the mask cannot be used. The choice is
  *  logged at SSS_LOG_INFO. While it times a frame, SSS_CREATE_STATS has no GPU time for that frame
  *  (GL_TIME_ELAPSED queries cannot nest), and a frame with the host's own GL_TIME_ELAPSED query
  *  active is not timed. */

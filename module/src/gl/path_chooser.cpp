@@ -70,7 +70,7 @@ void PathChooser::collect() {
   }
 }
 
-PathChooser::Choice PathChooser::choose(std::uint64_t key, unsigned available) {
+PathChooser::Choice PathChooser::choose(std::uint64_t key, unsigned available, bool region) {
   decision_[0] = '\0';
   available |= 1u << fragment;
   key = key * 31u + available;  // a path becoming (un)available is a new configuration
@@ -78,11 +78,11 @@ PathChooser::Choice PathChooser::choose(std::uint64_t key, unsigned available) {
   if (decided_) return {chosen_, false};
   if (!timer_) {
     decided_ = true;
-    chosen_ = (available & (1u << masked)) != 0 ? masked : fragment;
+    chosen_ = (available & (1u << masked)) != 0 && !region ? masked : fragment;
     std::snprintf(decision_.data(), decision_.size(),
                   "%s path (no trustworthy timer here; the benchmark measured it the fastest on software "
-                  "rasterisers)",
-                  path_name(chosen_));
+                  "rasterisers %s)",
+                  path_name(chosen_), region ? "given a region" : "without a region");
     return {chosen_, false};
   }
   collect();

@@ -4,8 +4,10 @@
 // run it, each timed with one GL_TIME_ELAPSED query around the whole frame and read back only once
 // available (never stalling); when each has kTrials results the lowest median wins until the
 // configuration changes. Without a trustworthy timer (Mesa's software rasterisers, where
-// GL_TIME_ELAPSED covers one tile) it takes the masked fragment path, the fastest there by the
-// benchmark (docs/benchmarks.md), or the plain one where the mask cannot be used.
+// GL_TIME_ELAPSED covers one tile) it takes what the benchmark measured fastest there
+// (docs/benchmarks.md): the masked fragment path, or the plain one when the host's region already
+// leaves out what is not translucent (the mark and its copy then cost more than they save) or the
+// mask cannot be used.
 #pragma once
 
 #include <array>
@@ -33,8 +35,9 @@ class PathChooser {
     bool trial = false;  // timed: call begin() before the frame's passes and end() after them
   };
   // The path for a frame of configuration `key` (size, settings, formats, frame flags) that can run
-  // the paths whose bits are set in `available` (fragment always is).
-  Choice choose(std::uint64_t key, unsigned available);
+  // the paths whose bits are set in `available` (fragment always is). `region`: the host gave the
+  // region of translucent pixels (it decides between the fragment paths where nothing is timed).
+  Choice choose(std::uint64_t key, unsigned available, bool region);
   void begin(const Choice& choice);
   void end();
   // Set when a decision was made during the last choose() (for the log); "" otherwise.

@@ -610,8 +610,10 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
     case SSS_PATH_FRAGMENT_MASKED: choice.path = masked_ok ? PathChooser::masked : PathChooser::fragment; break;
     case SSS_PATH_AUTO:
       if (!run.identity && (compute_ok || masked_ok)) {
-        choice = chooser_.choose(run.path_key, (compute_ok ? 1u << PathChooser::compute : 0u) |
-                                                   (masked_ok ? 1u << PathChooser::masked : 0u));
+        choice = chooser_.choose(run.path_key,
+                                 (compute_ok ? 1u << PathChooser::compute : 0u) |
+                                     (masked_ok ? 1u << PathChooser::masked : 0u),
+                                 run.region);
         if (*chooser_.decision() != '\0' && log_) {
           log_(SSS_LOG_INFO, std::string("SSS_PATH_AUTO chose the ") + chooser_.decision());
         }
