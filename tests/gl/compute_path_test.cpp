@@ -28,6 +28,23 @@ SyntheticScene relief(int width = 64, int height = 48) {
                            perspective_matrix(40.0f, static_cast<float>(width) / static_cast<float>(height), 0.1f, 10.0f));
 }
 
+// A frame the compute path cannot run, for each reason a test checks: the host's stencil mask, and a
+// kernel of two terms.
+FilterCase stencil_case() {
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.depth = DepthKind::depth24_stencil8;
+  c.use_stencil = true;
+  return c;
+}
+FilterCase two_term_case() {
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  c.settings.kernel.rank = 2;
+  return c;
+}
+
 class ComputePath : public FilterCaseTest {
  protected:
   // The GL can run compute shaders (desktop 4.3+): else every frame must take the fragment path.
@@ -38,32 +55,52 @@ class ComputePath : public FilterCaseTest {
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     return major * 10 + minor >= 43;
   }
+  // sss_ with SSS_CREATE_STATS, the tests' settings on `path` and the scene's camera.
+  bool create_measured(const SyntheticScene& scene, uint32_t path) {
+    sss_ = create_sss(SSS_CREATE_STATS);
+    if (sss_ == nullptr) return false;
+    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    s.path = path;
+    return sss_set_settings(sss_, &s) == SSS_OK && sss_set_camera(sss_, scene.projection.data()) == SSS_OK;
+  }
   uint32_t last_path() {
     sss_stats stats = {};
     stats.struct_size = sizeof stats;
     EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
     return stats.last_frame_path;
   }
-  // Runs `c` on each path; checks both against the CPU model and each other, and which path ran.
-  void expect_paths_agree(const SyntheticScene& scene, FilterCase c, bool compute_expected) {
+  // Runs `c` on the plain fragment path and on `path`; checks both against the CPU model, which path
+  // ran (`expected` for the second: `path`, or SSS_PATH_FRAGMENT where it cannot run), and the two
+  // results against each other: within kTolerance, or bit for bit when `exact`.
+  void expect_paths_match(const SyntheticScene& scene, FilterCase c, uint32_t path, uint32_t expected, bool exact) {
     std::vector<float> results[2];
-    for (int compute = 0; compute < 2; ++compute) {
-      SCOPED_TRACE(compute ? "compute path" : "fragment path");
-      c.settings.path = compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT;
+    for (int second = 0; second < 2; ++second) {
+      SCOPED_TRACE(second ? "the path under test" : "the plain fragment path");
+      c.settings.path = second ? path : SSS_PATH_FRAGMENT;
       const FilterOutcome o = run_case(scene, c);
       ASSERT_EQ(o.result, SSS_OK);
       const float difference = largest_relative_difference(o.gpu, o.cpu);
-      RecordProperty(compute ? "compute_vs_cpu" : "fragment_vs_cpu", std::to_string(difference));
+      RecordProperty(second ? "path_vs_cpu" : "fragment_vs_cpu", std::to_string(difference));
       EXPECT_LE(difference, kTolerance);
       EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);  // the case blurs something
-      EXPECT_EQ(last_path(), compute && compute_expected && has_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
-      results[compute] = o.gpu;
+      EXPECT_EQ(last_path(), second ? expected : SSS_PATH_FRAGMENT);
+      results[second] = o.gpu;
       TearDown();
       SetUp();
     }
     const float between = largest_relative_difference(results[1], results[0]);
-    std::printf("compute vs fragment path: largest relative difference %.3g (tolerance %.3g)\n", between, kTolerance);
-    EXPECT_LE(between, kTolerance);
+    std::printf("path %u vs the fragment path: largest relative difference %.3g (tolerance %.3g)\n", path, between,
+                exact ? 0.0 : kTolerance);
+    if (exact) {
+      EXPECT_EQ(results[1], results[0]);
+    } else {
+      EXPECT_LE(between, kTolerance);
+    }
+  }
+  // The compute path against the plain one; `runs`: the frame can take it (and the GL has compute).
+  void expect_paths_agree(const SyntheticScene& scene, const FilterCase& c, bool runs) {
+    expect_paths_match(scene, c, SSS_PATH_COMPUTE, runs && has_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT,
+                       false);
   }
 };
 
@@ -138,20 +175,12 @@ TEST_F(ComputePath, RegionAndViewport) {
 
 TEST_F(ComputePath, GivesWayToTheFragmentPathWhereItCannotRun) {
   // A stencil mask and a kernel of several terms: the fragment passes run, with the same result.
-  FilterCase stencil;
-  stencil.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-  stencil.depth = DepthKind::depth24_stencil8;
-  stencil.use_stencil = true;
   {
     SCOPED_TRACE("stencil");
-    expect_paths_agree(relief(), stencil, false);
+    expect_paths_agree(relief(), stencil_case(), false);
   }
-  FilterCase terms;
-  terms.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-  terms.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  terms.settings.kernel.rank = 2;
   SCOPED_TRACE("two terms");
-  expect_paths_agree(relief(), terms, false);
+  expect_paths_agree(relief(), two_term_case(), false);
 }
 
 TEST_F(ComputePath, KeepsTheHostsAlphaExactly) {
@@ -230,12 +259,7 @@ TEST_F(ComputePath, StatsCountNoPixelsForAComputeFrame) {
   const GLuint depth = make_depth32f(scene.width, scene.height, scene.window_depth);
   for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_COMPUTE}) {
     SCOPED_TRACE(path == SSS_PATH_COMPUTE ? "compute path" : "fragment path");
-    sss_ = create_sss(SSS_CREATE_STATS);
-    ASSERT_NE(sss_, nullptr);
-    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-    s.path = path;
-    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
-    ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    ASSERT_TRUE(create_measured(scene, path));
     const sss_frame frame = frame_of(color, depth);
     sss_stats stats = {};
     stats.struct_size = sizeof stats;
@@ -280,22 +304,10 @@ TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
 
 class MaskedPath : public ComputePath {
  protected:
-  // `c` on the plain and the masked fragment path: both match the CPU model and each other bit
-  // for bit (the same shader on the same pixels; the rest copied or left alone either way).
-  void expect_bit_identical(const SyntheticScene& scene, FilterCase c, uint32_t expected_path) {
-    std::vector<float> results[2];
-    for (int masked = 0; masked < 2; ++masked) {
-      SCOPED_TRACE(masked ? "masked" : "plain");
-      c.settings.path = masked ? SSS_PATH_FRAGMENT_MASKED : SSS_PATH_FRAGMENT;
-      const FilterOutcome o = run_case(scene, c);
-      ASSERT_EQ(o.result, SSS_OK);
-      EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), kTolerance);
-      EXPECT_EQ(last_path(), masked ? expected_path : SSS_PATH_FRAGMENT);
-      results[masked] = o.gpu;
-      TearDown();
-      SetUp();
-    }
-    EXPECT_EQ(results[0], results[1]);
+  // The plain and the masked fragment path: the same shader on the same pixels, the rest copied or
+  // left alone either way, so bit for bit the same image.
+  void expect_bit_identical(const SyntheticScene& scene, const FilterCase& c, uint32_t expected) {
+    expect_paths_match(scene, c, SSS_PATH_FRAGMENT_MASKED, expected, true);
   }
 };
 
@@ -314,20 +326,12 @@ TEST_F(MaskedPath, GivesThePlainFragmentResultBitForBit) {
     SCOPED_TRACE("adaptive taps and a region");
     expect_bit_identical(relief(), r, SSS_PATH_FRAGMENT_MASKED);
   }
-  FilterCase terms;
-  terms.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-  terms.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  terms.settings.kernel.rank = 2;
   SCOPED_TRACE("two terms");
-  expect_bit_identical(relief(), terms, SSS_PATH_FRAGMENT_MASKED);
+  expect_bit_identical(relief(), two_term_case(), SSS_PATH_FRAGMENT_MASKED);
 }
 
 TEST_F(MaskedPath, AHostStencilKeepsThePlainPath) {
-  FilterCase c;
-  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-  c.depth = DepthKind::depth24_stencil8;
-  c.use_stencil = true;
-  expect_bit_identical(relief(), c, SSS_PATH_FRAGMENT);
+  expect_bit_identical(relief(), stencil_case(), SSS_PATH_FRAGMENT);
 }
 
 TEST_F(MaskedPath, DrawsTheMarkAndCountsTheTranslucentPixels) {
@@ -338,12 +342,7 @@ TEST_F(MaskedPath, DrawsTheMarkAndCountsTheTranslucentPixels) {
   std::uint64_t touched[2] = {0, 0};
   for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED}) {
     const GLuint color = make_rgba32f(scene.width, scene.height, scene.color);
-    sss_ = create_sss(SSS_CREATE_STATS);
-    ASSERT_NE(sss_, nullptr);
-    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-    s.path = path;
-    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
-    ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+    ASSERT_TRUE(create_measured(scene, path));
     sss_frame frame = frame_of(color, depth);
     if (is_gles()) {
       FilterCase description;

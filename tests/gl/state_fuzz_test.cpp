@@ -5,6 +5,7 @@
 // is seen by the comparison.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
 #include <random>
 
@@ -131,6 +132,12 @@ class StateHarness : public GlTest {
     }
   }
 
+  static sss_frame with_region(sss_frame f, const std::array<int32_t, 4>& region) {
+    f.flags |= SSS_FRAME_REGION;
+    for (std::size_t i = 0; i < 4; ++i) f.region[i] = region[i];
+    return f;
+  }
+
   // Image load/store (desktop GL 4.3+): the compute path binds image unit 0.
   bool has_image_units() {
     GLint major = 0, minor = 0;
@@ -169,12 +176,7 @@ class StateHarness : public GlTest {
            s.width = 0.05f;
            s.flags |= SSS_ADAPTIVE_TAPS;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-           sss_frame f = frame_of(color_, depth_, output_);
-           f.flags = SSS_FRAME_REGION;
-           f.region[0] = 4;
-           f.region[1] = 5;
-           f.region[2] = 12;
-           f.region[3] = 9;
+           sss_frame f = with_region(frame_of(color_, depth_, output_), {4, 5, 12, 9});
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            f.output_texture = 0;
            f.region[2] = 0;
@@ -193,12 +195,7 @@ class StateHarness : public GlTest {
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            sss_frame f = frame_of(color_, depth_);
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-           f.output_texture = output_;
-           f.flags = SSS_FRAME_REGION;
-           f.region[0] = 3;
-           f.region[1] = 4;
-           f.region[2] = 14;
-           f.region[3] = 11;
+           f = with_region(frame_of(color_, depth_, output_), {3, 4, 14, 11});
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            // The masked fragment path: its own stencil marked from alpha, then the masked passes.
            s.path = SSS_PATH_FRAGMENT_MASKED;

@@ -196,17 +196,16 @@ SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run,
   return v;
 }
 
-sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out, std::string* message) {
-  const int index =
-      ((((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 + (v.jitter ? 1 : 0)) *
-           2 +
-       (v.accumulate ? 1 : 0)) *
-          2 +
-      (v.adaptive ? 1 : 0);
-  BlurProgram& p = blur_programs_[static_cast<std::size_t>(index)];
-  *out = &p;
-  if (p.program != 0) return SSS_OK;
+int SeparableFilter::variant_index(const BlurVariant& v) {
+  return ((((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 +
+           (v.jitter ? 1 : 0)) *
+              2 +
+          (v.accumulate ? 1 : 0)) *
+             2 +
+         (v.adaptive ? 1 : 0);
+}
 
+std::string SeparableFilter::variant_defines(const BlurVariant& v) {
   char defines[320];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
@@ -215,11 +214,20 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
                 v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES), v.adaptive ? 1 : 0, math::kMaxAdaptiveLevels,
                 kKernelSlots);
+  return defines;
+}
+
+sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out, std::string* message) {
+  BlurProgram& p = blur_programs_[static_cast<std::size_t>(variant_index(v))];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+
+  const std::string defines = variant_defines(v);
   std::string log;
   const Functions& f = *gl_;
   p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::separable_blur_frag, &log);
   if (p.program == 0) {
-    *message = "separable blur shader (" + std::string(defines) + "): " + log;
+    *message = "separable blur shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[112];
@@ -527,15 +535,20 @@ void SeparableFilter::set_blur_uniforms(BlurProgram& p, const FilterRun& run, st
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
 }
 
-void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+void SeparableFilter::bind_blur_inputs(GLuint source, GLuint depth) {
   const Functions& f = *gl_;
-  set_blur_uniforms(p, run, term, axis);
   f.ActiveTexture(TEXTURE0 + kSourceUnit);
   f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kSourceUnit, sampler_);
   f.ActiveTexture(TEXTURE0 + kDepthUnit);
-  f.BindTexture(TEXTURE_2D, run.depth.name);
+  f.BindTexture(TEXTURE_2D, depth);
   f.BindSampler(kDepthUnit, depth_sampler_);
+}
+
+void SeparableFilter::draw_blur(BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+  const Functions& f = *gl_;
+  set_blur_uniforms(p, run, term, axis);
+  bind_blur_inputs(source, run.depth.name);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++last_draws_;
 }

@@ -148,9 +148,9 @@ class SeparableFilter {
     int uploaded_axis = -1;
   };
   static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
-  // Compute variants: outside × follow-surface × linear depth × jitter × adaptive × target image
-  // format (kImageFormats); never accumulating (one term only).
-  static constexpr int kComputeVariantCount = 3 * 3 * 2 * 2 * 2 * kImageFormats;
+  // Compute variants: a fragment variant's index (SSS_ACCUMULATE never set there: one term only) ×
+  // the target's image format (kImageFormats).
+  static constexpr int kComputeVariantCount = kVariantCount * kImageFormats;
   struct CbfProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
@@ -161,6 +161,9 @@ class SeparableFilter {
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   sss_result blur_program(const BlurVariant& v, BlurProgram** out, std::string* message);
+  // A variant's index among kVariantCount, and its #defines (both kinds of blur program use them).
+  static int variant_index(const BlurVariant& v);
+  static std::string variant_defines(const BlurVariant& v);
   // The variant of term `term`'s pass on `axis` (0 horizontal, 1 vertical) writing `outside`.
   BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) const;
   sss_result run_identity(const FilterRun& run, std::string* message);
@@ -171,6 +174,8 @@ class SeparableFilter {
   // The kernel and per-frame uniforms of a blur pass (fragment or compute program).
   void set_blur_uniforms(BlurProgram& program, const FilterRun& run, std::size_t term, int axis);
   void find_blur_uniforms(BlurProgram* program) const;
+  // The pass input and the host's depth on their units, with the module's samplers.
+  void bind_blur_inputs(GLuint source, GLuint depth);
   sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
   sss_result run_cbf(const FilterRun& run, std::string* message);
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);

@@ -14,7 +14,7 @@
 namespace sss::gl {
 
 namespace {
-constexpr GLuint kSourceUnit = 0, kDepthUnit = 1, kOriginalUnit = 2;
+constexpr GLuint kOriginalUnit = 2;
 
 // The target formats the vertical pass writes through an image unit, with their GLSL qualifiers:
 // the colour and output formats sss_apply_frame accepts (both have image formats).
@@ -52,30 +52,21 @@ const char* SeparableFilter::compute_unavailable(const FilterRun& run) const {
 
 sss_result SeparableFilter::compute_program(const BlurVariant& v, int image_format, BlurProgram** out,
                                             std::string* message) {
-  const int index =
-      ((((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 + (v.jitter ? 1 : 0)) *
-           2 +
-       (v.adaptive ? 1 : 0)) *
-          kImageFormats +
-      image_format;
-  BlurProgram& p = compute_programs_[static_cast<std::size_t>(index)];
+  BlurProgram& p = compute_programs_[static_cast<std::size_t>(variant_index(v) * kImageFormats + image_format)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
 
-  char defines[480];
-  std::snprintf(defines, sizeof defines,
-                "#version 430 core\n#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_JITTER %d\n#define SSS_MAX_TAPS %d\n#define SSS_ADAPTIVE %d\n#define SSS_MAX_LEVELS %d\n"
-                "#define SSS_KERNEL_SLOTS %d\n#define SSS_SEGMENT %d\n#define SSS_APRON %d\n"
-                "#define SSS_IMAGE_FORMAT %s\n",
-                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                static_cast<int>(SSS_MAX_SAMPLES), v.adaptive ? 1 : 0, math::kMaxAdaptiveLevels, kKernelSlots,
-                kComputeSegment, kComputeApron, kImageFormatTable[image_format].qualifier);
+  // The fragment variant's switches (SSS_ACCUMULATE is always 0 here), then the compute ones.
+  char compute_defines[160];
+  std::snprintf(compute_defines, sizeof compute_defines,
+                "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n", kComputeSegment,
+                kComputeApron, kImageFormatTable[image_format].qualifier);
+  const std::string defines = "#version 430 core\n" + variant_defines(v) + compute_defines;
   std::string log;
   const Functions& f = *gl_;
   p.program = build_compute_program(f, defines, shaders::separable_blur_comp, &log);
   if (p.program == 0) {
-    *message = "separable blur compute shader (" + std::string(defines) + "): " + log;
+    *message = "separable blur compute shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[128];
@@ -94,12 +85,7 @@ void SeparableFilter::dispatch_blur(BlurProgram& p, const FilterRun& run, GLuint
   set_blur_uniforms(p, run, 0, axis);
   const std::array<int, 4>& rect = run.draw_rect;
   f.Uniform4i(p.rect, rect[0], rect[1], rect[2], rect[3]);
-  f.ActiveTexture(TEXTURE0 + kSourceUnit);
-  f.BindTexture(TEXTURE_2D, source);
-  f.BindSampler(kSourceUnit, sampler_);
-  f.ActiveTexture(TEXTURE0 + kDepthUnit);
-  f.BindTexture(TEXTURE_2D, run.depth.name);
-  f.BindSampler(kDepthUnit, depth_sampler_);
+  bind_blur_inputs(source, run.depth.name);
   // One work group per segment of a row (horizontal) or column (vertical) of the rectangle.
   if (axis == 0) {
     f.DispatchCompute(groups(rect[2]), static_cast<GLuint>(rect[3]), 1);
