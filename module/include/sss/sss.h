@@ -214,7 +214,7 @@ typedef struct sss_settings {
                                per pixel within the cell it stands for, by deterministic noise (supplementary
                                Fig. S.6-S.7 use 0.33): turns the banding of few taps into fine noise, with no
                                temporal filter. Default 0 */
-  /* Appended in 0.1 for the compute path. */
+  /* Appended in 0.1 for the choice of how the passes run. */
   uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE, SSS_PATH_AUTO or
                                SSS_PATH_FRAGMENT_MASKED: how the separable mode's two passes run (see SSS_PATH_*).
                                Every path gives the same image within fp16 rounding */
@@ -345,8 +345,8 @@ typedef struct sss_stats {
                                       (a disjoint event voids the results it spans), and not on Mesa's software
                                       rasterisers (llvmpipe, softpipe: their GL_TIME_ELAPSED covers one tile) */
   uint32_t last_frame_path;      /**< SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful frame's passes ran
-                                      (what sss_settings.path asked for, SSS_PATH_AUTO's choice, or the fragment path
-                                      where the compute path cannot run that frame) */
+                                      (what sss_settings.path asked for, SSS_PATH_AUTO's choice, or SSS_PATH_FRAGMENT
+                                      where the path asked for cannot run that frame) */
 } sss_stats;
 
 /** Short English name of a status code ("SSS_ERROR_INVALID_TEXTURE"); never NULL. */
@@ -395,7 +395,7 @@ SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
 /** Validates and takes the settings; a kernel is rebuilt only when its inputs change. Does not call GL.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
- *                                     mode, cbf_taps, cbf_r_max_mm, cbf_profile, jitter or a field of kernel
+ *                                     mode, cbf_taps, cbf_r_max_mm, cbf_profile, jitter, path (0..3) or a field of kernel
  *                                     (any but taps, strength and falloff, which are not read) outside
  *                                     its range (every field is checked, whatever the mode and family); a
  *                                     profile that integrates to 0 in a channel for a family that needs its

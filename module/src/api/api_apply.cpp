@@ -107,7 +107,6 @@ sss_result supported_samples(sss_context* ctx, const char* role, const gl::Textu
               "module at most 32", role, t.name, t.samples, max_samples, limit_name);
 }
 
-// The textures, as the GL describes them, against the lists in sss.h.
 // SSS_PATH_AUTO times the paths again when this changes: what decides their relative cost (the
 // size, the kernel, follow-surface, where the result goes and in which format, the frame's flags).
 std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::uint32_t frame_flags) {
@@ -128,6 +127,7 @@ std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::ui
   return h;
 }
 
+// The textures, as the GL describes them, against the lists in sss.h.
 sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
   sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
   if (r != SSS_OK) return r;

@@ -22,7 +22,9 @@ GLuint compile(const Functions& gl, GLenum type, const std::string& header, cons
   GLint ok = 0;
   gl.GetShaderiv(shader, COMPILE_STATUS, &ok);
   if (!ok) {
-    const char* stage = type == VERTEX_SHADER ? "vertex shader: " : type == COMPUTE_SHADER ? "compute shader: " : "fragment shader: ";
+    const char* stage = type == VERTEX_SHADER    ? "vertex shader: "
+                        : type == COMPUTE_SHADER ? "compute shader: "
+                                                 : "fragment shader: ";
     if (log) *log = stage + shader_log(gl, shader);
     gl.DeleteShader(shader);
     return 0;

@@ -139,7 +139,8 @@ sss_result SeparableFilter::run_compute(const FilterRun& run, std::string* messa
     f.ActiveTexture(TEXTURE0 + kOriginalUnit);
     f.BindTexture(TEXTURE_2D, write_back ? 0 : run.color.name);
     f.BindSampler(kOriginalUnit, sampler_);
-    f.BindImageTexture(0, target.name, 0, 0, 0, write_back ? READ_WRITE : WRITE_ONLY, kImageFormatTable[target_format].internal_format);
+    f.BindImageTexture(0, target.name, 0, 0, 0, write_back ? READ_WRITE : WRITE_ONLY,
+                       kImageFormatTable[target_format].internal_format);
     dispatch_blur(*vertical, run, intermediate_, 1);
     if (measured) queries_.end_pass(PassQueries::vertical);
   }
