@@ -34,6 +34,8 @@ bool settings_valid(const sss_settings& s) {
   if (!(s.cbf_r_max_mm > 0.0f && s.cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) return false;
   if (!(s.cbf_profile == SSS_PROFILE_MIKKELSEN_2010 || s.cbf_profile <= SSS_MATERIAL_WHOLEMILK)) return false;
   if (!unit(s.jitter)) return false;
+  // SSS_PATH_FRAGMENT, _COMPUTE, _AUTO, _FRAGMENT_MASKED.
+  if (s.path > 3u) return false;
   // The embedded kernel: every field but taps, strength and falloff, whatever the family.
   const sss_kernel_desc& k = s.kernel;
   if (k.struct_size != sizeof(sss_kernel_desc) || k.family < 0 || k.family >= SSS_KERNEL_FAMILY_COUNT) return false;
@@ -55,7 +57,7 @@ bool same_settings(const sss::math::FilterSettings& a, const sss::math::FilterSe
   auto bits = [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; };
   return bits(a.width, b.width) && a.strength == b.strength && a.falloff == b.falloff && a.samples == b.samples &&
          a.follow_surface == b.follow_surface && a.cross_bilateral == b.cross_bilateral && a.cbf_taps == b.cbf_taps &&
-         bits(a.cbf_r_max_mm, b.cbf_r_max_mm) && a.cbf_profile == b.cbf_profile &&
+         bits(a.cbf_r_max_mm, b.cbf_r_max_mm) && a.cbf_profile == b.cbf_profile && a.path == b.path &&
          sss::math::same_pass_kernel_inputs(a, b);
 }
 
