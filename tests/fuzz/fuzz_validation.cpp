@@ -32,7 +32,10 @@ bool settings_valid(const sss_settings& s) {
   if (s.mode != SSS_MODE_SEPARABLE && s.mode != SSS_MODE_CROSS_BILATERAL) return false;
   if (s.cbf_taps < 3 || s.cbf_taps > 65 || s.cbf_taps % 2 == 0) return false;
   if (!(s.cbf_r_max_mm > 0.0f && s.cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) return false;
-  if (!(s.cbf_profile == SSS_PROFILE_MIKKELSEN_2010 || s.cbf_profile <= SSS_MATERIAL_WHOLEMILK)) return false;
+  if (!(s.cbf_profile == SSS_PROFILE_MIKKELSEN_2010 || s.cbf_profile == SSS_PROFILE_KERNEL ||
+        s.cbf_profile <= SSS_MATERIAL_WHOLEMILK)) {
+    return false;
+  }
   if (!unit(s.jitter)) return false;
   // SSS_PATH_FRAGMENT, _COMPUTE, _AUTO, _FRAGMENT_MASKED.
   if (s.path > 3u) return false;
