@@ -132,6 +132,14 @@ class StateHarness : public GlTest {
     }
   }
 
+  // The defaults with a width that blurs visibly on the harness's scene.
+  static sss_settings harness_settings() {
+    sss_settings s;
+    sss_default_settings(&s);
+    s.width = 0.05f;
+    return s;
+  }
+
   static sss_frame with_region(sss_frame f, const std::array<int32_t, 4>& region) {
     f.flags |= SSS_FRAME_REGION;
     for (std::size_t i = 0; i < 4; ++i) f.region[i] = region[i];
@@ -171,9 +179,7 @@ class StateHarness : public GlTest {
         // viewport copied first, then the passes over the region), and an empty region in place.
         {"sss_apply_frame (adaptive taps, region, separate output; then an empty region)",
          [this] {
-           sss_settings s;
-           sss_default_settings(&s);
-           s.width = 0.05f;
+           sss_settings s = harness_settings();
            s.flags |= SSS_ADAPTIVE_TAPS;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            sss_frame f = with_region(frame_of(color_, depth_, output_), {4, 5, 12, 9});
@@ -188,9 +194,7 @@ class StateHarness : public GlTest {
         // a separate output (its copy outside the region is a fragment draw).
         {"sss_apply_frame (compute path: in place; a region into an output; masked fragment path)",
          [this] {
-           sss_settings s;
-           sss_default_settings(&s);
-           s.width = 0.05f;
+           sss_settings s = harness_settings();
            s.path = SSS_PATH_COMPUTE;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            sss_frame f = frame_of(color_, depth_);
@@ -232,9 +236,7 @@ class StateHarness : public GlTest {
         // model's Gaussian depth correction: every shader variant and target the families add.
         {"sss_apply (3 Gaussians, jitter; then the artist model), stencil",
          [this] {
-           sss_settings s;
-           sss_default_settings(&s);
-           s.width = 0.05f;
+           sss_settings s = harness_settings();
            s.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
            s.kernel.rank = 3;
            s.jitter = 0.5f;
@@ -244,15 +246,12 @@ class StateHarness : public GlTest {
            s.kernel.family = SSS_KERNEL_ARTIST;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
-           sss_default_settings(&s);
-           s.width = 0.05f;
+           s = harness_settings();
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
          }},
         {"sss_set_settings + sss_set_camera",
          [this] {
-           sss_settings s;
-           sss_default_settings(&s);
-           s.width = 0.05f;
+           sss_settings s = harness_settings();
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
            EXPECT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
          }},
@@ -262,9 +261,7 @@ class StateHarness : public GlTest {
   void prepare(uint32_t create_flags) {
     sss_ = create_sss(create_flags);
     ASSERT_NE(sss_, nullptr);
-    sss_settings s;
-    sss_default_settings(&s);
-    s.width = 0.05f;
+    sss_settings s = harness_settings();
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
     ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
   }

@@ -293,7 +293,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   run.identity = is_identity(ctx->settings);
   run.frame = ctx->frames + 1;
   run.path = ctx->settings.path;
-  run.path_key = path_key(*ctx, run, frame->flags);
+  if (run.path == SSS_PATH_AUTO) run.path_key = path_key(*ctx, run, frame->flags);  // only AUTO reads it
   if (ctx->settings.cross_bilateral) {
     run.cross_bilateral = true;
     run.identity = ctx->settings.width == 0.0f;  // strength does not apply to this mode

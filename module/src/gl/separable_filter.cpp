@@ -615,23 +615,25 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   if (run.color.multisampled()) return run_msaa(run, message);
   // Which way the passes run (sss.h SSS_PATH_*): asked for, chosen by timing, or the plain fragment
   // passes where the one asked for cannot run this frame.
-  const bool compute_ok = !run.identity && *compute_unavailable(run) == '\0';
-  const bool masked_ok = masked_available(run);
+  // Availability is asked only when a path other than the plain one is.
+  const auto compute_ok = [&] { return !run.identity && *compute_unavailable(run) == '\0'; };
   PathChooser::Choice choice;
   switch (run.path) {
-    case SSS_PATH_COMPUTE: choice.path = compute_ok ? PathChooser::compute : PathChooser::fragment; break;
-    case SSS_PATH_FRAGMENT_MASKED: choice.path = masked_ok ? PathChooser::masked : PathChooser::fragment; break;
-    case SSS_PATH_AUTO:
-      if (!run.identity && (compute_ok || masked_ok)) {
-        choice = chooser_.choose(run.path_key,
-                                 (compute_ok ? 1u << PathChooser::compute : 0u) |
-                                     (masked_ok ? 1u << PathChooser::masked : 0u),
-                                 run.region);
+    case SSS_PATH_COMPUTE: choice.path = compute_ok() ? PathChooser::compute : PathChooser::fragment; break;
+    case SSS_PATH_FRAGMENT_MASKED:
+      choice.path = masked_available(run) ? PathChooser::masked : PathChooser::fragment;
+      break;
+    case SSS_PATH_AUTO: {
+      const unsigned available = (compute_ok() ? 1u << PathChooser::compute : 0u) |
+                                 (masked_available(run) ? 1u << PathChooser::masked : 0u);
+      if (available != 0) {
+        choice = chooser_.choose(run.path_key, available, run.region);
         if (*chooser_.decision() != '\0' && log_) {
           log_(SSS_LOG_INFO, std::string("SSS_PATH_AUTO chose the ") + chooser_.decision());
         }
       }
       break;
+    }
     default: break;
   }
   chooser_.begin(choice);
