@@ -466,27 +466,47 @@ static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, 
     }
   }
 
-  attribs[n++] = EGL_CONTEXT_MAJOR_VERSION;
-  attribs[n++] = desc->major;
-  attribs[n++] = EGL_CONTEXT_MINOR_VERSION;
-  attribs[n++] = desc->minor;
-  if (h->egl_api == EGL_OPENGL_API && (desc->major > 3 || (desc->major == 3 && desc->minor >= 2))) {
-    attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
-    attribs[n++] = desc->core_profile ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
-                                      : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
-  }
-  if (desc->debug) {
-    if (egl15) {
-      attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG;
-      attribs[n++] = EGL_TRUE;
-    } else {
-      attribs[n++] = EGL_CONTEXT_FLAGS_KHR;
-      attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
+  /* A desktop core profile gets the newest version at or above the request: Mesa does that by
+   * itself, NVIDIA's driver gives exactly what is asked (3.3 for 3.3, and with it no compute
+   * shaders), so the same request means the same features on both. */
+  {
+    static const int newer[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}, {3, 2}};
+    const int upgrade = h->egl_api == EGL_OPENGL_API && desc->core_profile;
+    size_t v;
+    for (v = 0; v <= sizeof newer / sizeof newer[0] && h->egl_ctx == EGL_NO_CONTEXT; ++v) {
+      int want_major = desc->major, want_minor = desc->minor;
+      if (v < sizeof newer / sizeof newer[0]) {
+        if (!upgrade) continue;
+        want_major = newer[v][0];
+        want_minor = newer[v][1];
+        /* Only versions above the request; the request itself comes last. */
+        if (want_major < desc->major || (want_major == desc->major && want_minor <= desc->minor)) continue;
+      }
+      n = 0;
+      attribs[n++] = EGL_CONTEXT_MAJOR_VERSION;
+      attribs[n++] = want_major;
+      attribs[n++] = EGL_CONTEXT_MINOR_VERSION;
+      attribs[n++] = want_minor;
+      if (h->egl_api == EGL_OPENGL_API && (want_major > 3 || (want_major == 3 && want_minor >= 2))) {
+        attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
+        attribs[n++] = desc->core_profile ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
+                                          : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
+      }
+      if (desc->debug) {
+        if (egl15) {
+          attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG;
+          attribs[n++] = EGL_TRUE;
+        } else {
+          attribs[n++] = EGL_CONTEXT_FLAGS_KHR;
+          attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
+        }
+      }
+      attribs[n++] = EGL_NONE;
+      h->egl_ctx = g_egl.CreateContext(dpy, config, EGL_NO_CONTEXT, attribs);
+      /* A newer version refused: its error is not the caller's (the request itself comes next). */
+      if (h->egl_ctx == EGL_NO_CONTEXT && v < sizeof newer / sizeof newer[0]) (void)g_egl.GetError();
     }
   }
-  attribs[n++] = EGL_NONE;
-
-  h->egl_ctx = g_egl.CreateContext(dpy, config, EGL_NO_CONTEXT, attribs);
   if (h->egl_ctx == EGL_NO_CONTEXT) {
     snprintf(what, sizeof what, "%s: eglCreateContext(OpenGL %s%d.%d %s%s)", display_label,
              h->egl_api == EGL_OPENGL_ES_API ? "ES " : "", desc->major, desc->minor,

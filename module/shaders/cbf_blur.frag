@@ -74,7 +74,7 @@ void main() {
   float strength = min(centre.a, 1.0);
   float d0 = depth_at(pixel);
   float w0 = clip_w(d0);
-  if (!(w0 > 0.0) || isinf(w0)) {
+  if (isnan(w0) || !(w0 > 0.0) || isinf(w0)) {  // isnan(): see separable_blur.frag
     leave_untouched(pixel, centre);
     return;
   }
@@ -91,7 +91,8 @@ void main() {
   ivec2 tp = clamp(pixel + step_texel, lo, hi), tm = clamp(pixel - step_texel, lo, hi);
   float dp = depth_at(tp), dm = depth_at(tm);
   // At the viewport's edge the clamped neighbour on one side is the pixel itself: take the other.
-  bool plus = tm == pixel || (tp != pixel && !(abs(dm - d0) < abs(dp - d0)));
+  // A NaN depth on either side picks +, as the CPU model's !(a < b) does (spelt out for NVIDIA).
+  bool plus = tm == pixel || (tp != pixel && (isnan(dm) || isnan(dp) || !(abs(dm - d0) < abs(dp - d0))));
   ivec2 tn = plus ? tp : tm;
   vec3 pn = view_point(vec2(tn) + 0.5, plus ? dp : dm);
   float ta = dot(pn.xy - p0.xy, u_axis), tz = pn.z - p0.z;
@@ -99,7 +100,7 @@ void main() {
   float ea = u_orthographic > 0.5 ? 0.0 : -dot(p0.xy, u_axis);
   float ez = u_orthographic > 0.5 ? 1.0 : -p0.z;
   float cosine = abs(ta * ez - tz * ea) / (sqrt(ta * ta + tz * tz) * sqrt(ea * ea + ez * ez));
-  if (!(cosine <= 1.0)) cosine = 1.0;  // degenerate directions (NaN) and rounding: no correction
+  if (isnan(cosine) || !(cosine <= 1.0)) cosine = 1.0;  // degenerate directions (NaN) and rounding: no correction
   float sine2 = 1.0 - cosine * cosine;
 
   float step_pixels = u_pixels_per_mm * strength / w0 * cosine;

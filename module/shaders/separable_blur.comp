@@ -51,8 +51,9 @@ uniform vec4 u_depth_terms;
 uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
 
 const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
-shared vec3 s_color[kCached];
-shared float s_depth[kCached];  // raw depth, as the fragment shader's bilinear depth taps read it
+// rgb: colour; a: raw depth, as the fragment shader's bilinear depth taps read it. One vec4 per
+// texel: a tap's two texels are two 128-bit shared loads (a vec3 and a float apart were four).
+shared vec4 s_texel[kCached];
 
 float view_distance(float raw_depth) {
 #if SSS_LINEAR_DEPTH
@@ -90,7 +91,7 @@ void main() {
   const int along_end = along_start + u_rect[2 + axis_index];  // exclusive
   const int across = u_rect[1 - axis_index] + int(gl_WorkGroupID.y);
   const int segment_start = along_start + int(gl_WorkGroupID.x) * SSS_SEGMENT;
-  const int cache_start = segment_start - SSS_APRON;  // pixel coordinate of s_color[0]
+  const int cache_start = segment_start - SSS_APRON;  // pixel coordinate of s_texel[0]
   const ivec2 cross_axis = ivec2(1) - u_axis;
 
   // Fill the cache: every texel of segment and apron once, clamped into the rectangle (no tap
@@ -98,8 +99,7 @@ void main() {
   for (int i = int(gl_LocalInvocationID.x); i < kCached; i += SSS_SEGMENT) {
     int along = clamp(cache_start + i, along_start, along_end - 1);
     ivec2 texel = u_axis * along + cross_axis * across;
-    s_color[i] = texelFetch(u_source, texel, 0).rgb;
-    s_depth[i] = texelFetch(u_depth, texel, 0).r;
+    s_texel[i] = vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
   }
   barrier();
 
@@ -107,15 +107,15 @@ void main() {
   if (along >= along_end) return;
   const ivec2 pixel = u_axis * along + cross_axis * across;
   const int centre_index = along - cache_start;
-  vec4 centre = vec4(s_color[centre_index], texelFetch(u_source, pixel, 0).a);
+  vec4 centre = vec4(s_texel[centre_index].rgb, texelFetch(u_source, pixel, 0).a);
   if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
     write_untouched(pixel, centre);
     return;
   }
   float strength = min(centre.a, 1.0);
-  float centre_distance = view_distance(s_depth[centre_index]);
+  float centre_distance = view_distance(s_texel[centre_index].a);
   float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
-  if (!(w > 0.0) || isinf(w)) {
+  if (isnan(w) || !(w > 0.0) || isinf(w)) {  // isnan(): see separable_blur.frag
     write_untouched(pixel, centre);
     return;
   }
@@ -160,8 +160,9 @@ void main() {
     vec3 tap;
     float tap_depth;
     if (index >= 0 && index + 1 < kCached) {
-      tap = mix(s_color[index], s_color[index + 1], f);
-      tap_depth = mix(s_depth[index], s_depth[index + 1], f);
+      vec4 texel = mix(s_texel[index], s_texel[index + 1], f);
+      tap = texel.rgb;
+      tap_depth = texel.a;
     } else {
       vec2 uv = (vec2(u_axis) * position + vec2(cross_axis) * centre_position) * texel_size;
       tap = texture(u_source, uv).rgb;
@@ -175,7 +176,7 @@ void main() {
 #else
     float s = d;
 #endif
-    if (!(s < 1.0)) s = 1.0;
+    if (isnan(s) || !(s < 1.0)) s = 1.0;
     tap = mix(tap, centre.rgb, s);
 #endif
     sum += u_kernel[i].rgb * tap;

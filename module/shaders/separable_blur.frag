@@ -119,7 +119,9 @@ void main() {
   float strength = min(centre.a, 1.0);  // alpha is documented as 0..1; more must not widen the kernel
   float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
   float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
-  if (!(w > 0.0) || isinf(w)) {  // behind the camera, on an infinite far plane, or NaN
+  // Behind the camera, on an infinite far plane, or NaN. isnan() and not only !(w > 0.0): NVIDIA's
+  // compiler turns a negated comparison into the opposite one, which a NaN passes.
+  if (isnan(w) || !(w > 0.0) || isinf(w)) {
     leave_untouched(pixel, centre);
     return;
   }
@@ -165,7 +167,7 @@ void main() {
 #else
     float s = d;
 #endif
-    if (!(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
+    if (isnan(s) || !(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
     tap = mix(tap, centre.rgb, s);
 #endif
     sum += u_kernel[i].rgb * tap;

@@ -76,6 +76,15 @@ class InPlaceMethod : public Method {
 
   void after_run(const GpuScene& scene, GLuint output) override { blit(work_, output, scene.width, scene.height); }
 
+  std::string path_ran() const override {
+    sss_stats st = {};
+    st.struct_size = sizeof st;
+    if (sss_get_stats(ctx_, &st) != SSS_OK) return "";
+    return st.last_frame_path == SSS_PATH_COMPUTE           ? "compute"
+           : st.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "masked"
+                                                            : "fragment";
+  }
+
  private:
   // A float colour texture into another of the same size (GL_NEAREST: texel for texel).
   void blit(GLuint from, GLuint to, int width, int height) {

@@ -28,6 +28,9 @@ class Method {
   // colour target before, and copies its result into `output` after.
   virtual void before_run(const GpuScene& /*scene*/) {}
   virtual void after_run(const GpuScene& /*scene*/, GLuint /*output*/) {}
+  // How the library ran the last frame ("fragment", "masked", "compute"; sss_stats.last_frame_path),
+  // for the progress log; "" for methods that do not choose.
+  virtual std::string path_ran() const { return ""; }
 };
 
 // The loader the library gets from its host (sss_create_desc.get_proc_address and its user).
@@ -71,5 +74,7 @@ std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, b
                                              uint32_t path = SSS_PATH_FRAGMENT);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();
+// The same two copies as compute dispatches ("copy-compute"); nullptr below GL 4.3.
+std::unique_ptr<Method> make_compute_copy_method(const GlLoader& loader);
 
 }  // namespace sss_bench

@@ -38,6 +38,9 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --msaa WxH            size of the MSAA study (sphere and depth-step at 4 samples; the reference
                         is made at 2W x 2H); default: mode's
   --no-msaa             skip the MSAA study
+  --gpu-preload-ms MS   on a GPU (timer queries), keep it busy this long before each timed frame so
+                        the frame's commands are queued when it starts (gpu_busy.hpp; default 0.5,
+                        0: time from an idle GPU, CPU issue gaps included)
   --help
 )";
 
@@ -131,6 +134,7 @@ Options parse_options(int argc, char** argv) {
       {"backend", required_argument, nullptr, 'b'}, {"out", required_argument, nullptr, 'o'},
       {"doc", required_argument, nullptr, 'd'},   {"no-heat-maps", no_argument, nullptr, 'H'},
       {"msaa", required_argument, nullptr, 'M'},  {"no-msaa", no_argument, nullptr, 'N'},
+      {"gpu-preload-ms", required_argument, nullptr, 'P'},
       {"help", no_argument, nullptr, 'h'},        {nullptr, 0, nullptr, 0}};
   int c = 0;
   while ((c = getopt_long(argc, argv, "", long_options, nullptr)) != -1) {
@@ -187,6 +191,14 @@ Options parse_options(int argc, char** argv) {
       case 'H': o.heat_maps = false; break;
       case 'M': o.msaa = true, o.msaa_size = parse_size(arg); break;
       case 'N': o.msaa = false; break;
+      case 'P': {
+        char* end = nullptr;
+        o.gpu_preload_ms = std::strtod(arg.c_str(), &end);
+        if (end == arg.c_str() || *end != '\0' || !(o.gpu_preload_ms >= 0.0 && o.gpu_preload_ms <= 100.0)) {
+          usage_error("bad --gpu-preload-ms: " + arg);
+        }
+        break;
+      }
       case 'h': std::fputs(kUsage, stdout); std::exit(0);
       default: usage_error("unknown option");
     }

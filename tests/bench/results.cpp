@@ -45,7 +45,7 @@ std::string method_label(const ResultRow& row) {
     return row.time_extrapolated ? "exact-2d (time scaled from a band of " + std::to_string(row.band_rows) + " rows)"
                                  : "exact-2d";
   }
-  if (row.method == "copy") return row.method;
+  if (row.method == "copy" || row.method == "copy-compute") return row.method;
   return row.method + " " + std::to_string(row.taps) + " taps" + (row.follow_surface ? ", follow-surface" : "");
 }
 
@@ -111,12 +111,16 @@ void write_markdown_table(const std::string& path, const RunInfo& info, const st
   }
 }
 
-std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows) {
+std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows,
+                                            bool* drawn) {
   std::vector<std::string> written;
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return written;
+  // Without gnuplot (a lent GPU machine has none) the data and scripts are still written, and the
+  // PNGs they name are listed: `gnuplot FILE.gp`, from the folder the benchmark ran in, draws them.
+  const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+  if (drawn != nullptr) *drawn = have_gnuplot;
   std::map<std::string, std::vector<const ResultRow*>> by_scene;
   for (const ResultRow& r : rows) {
-    if (r.method == "copy" || r.translucent_pixels == 0) continue;
+    if (r.method == "copy" || r.method == "copy-compute" || r.translucent_pixels == 0) continue;
     by_scene[r.scene + "-" + std::to_string(r.width) + "x" + std::to_string(r.height)].push_back(&r);
   }
   for (const auto& [key, scene_rows] : by_scene) {
@@ -153,7 +157,9 @@ std::vector<std::string> write_pareto_plots(const std::string& directory, const 
     }
     script << "\n";
     script.close();
-    if (std::system(("gnuplot '" + script_path + "' 2>/dev/null").c_str()) == 0) {
+    if (!have_gnuplot) {
+      written.push_back(png_path);
+    } else if (std::system(("gnuplot '" + script_path + "' 2>/dev/null").c_str()) == 0) {
       written.push_back(png_path);
     } else if (std::system(("sed -i 's/pngcairo/png/' '" + script_path + "' && gnuplot '" + script_path + "'").c_str()) == 0) {
       written.push_back(png_path);

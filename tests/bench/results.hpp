@@ -14,6 +14,8 @@ struct RunInfo {
   // The GL state save and restore per sss_apply_frame call (state_cost.hpp); 0: not measured.
   double state_with_restore_us = 0.0, state_without_restore_us = 0.0;
   int state_calls = 0, state_batches = 0;
+  // The GPU spin before each timed frame (gpu_busy.hpp), as calibrated; 0: none.
+  double gpu_preload_ms = 0.0;
 };
 
 struct ResultRow {
@@ -48,8 +50,11 @@ void write_csv(const std::string& path, const std::vector<ResultRow>& rows);
 void write_json(const std::string& path, const RunInfo& info, const std::vector<ResultRow>& rows);
 void write_markdown_table(const std::string& path, const RunInfo& info, const std::vector<ResultRow>& rows);
 // One PNG per (scene, resolution) with translucent pixels: relative RMSE against time, a curve per
-// method (and per follow-surface setting). Returns the files written; empty when gnuplot is missing.
-std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows);
+// method (and per follow-surface setting), drawn by gnuplot. Returns the PNG files; `*drawn` says
+// whether gnuplot drew them (when it is missing, their .dat and .gp files are left for a later
+// `gnuplot FILE.gp` run from the same working folder).
+std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows,
+                                            bool* drawn = nullptr);
 
 std::string method_label(const ResultRow& row);  // "separable 17 taps, follow-surface"
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "host_gl.hpp"
 
@@ -19,6 +20,12 @@ Clock clock_for_renderer(const std::string& renderer) {
 const char* clock_name(Clock clock) {
   return clock == Clock::wall_with_finish ? "wall clock around glFinish" : "GL_TIME_ELAPSED timer queries";
 }
+
+namespace {
+std::function<void()> g_timer_preamble;
+}
+
+void set_timer_preamble(std::function<void()> preamble) { g_timer_preamble = std::move(preamble); }
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -45,6 +52,7 @@ Timing time_frames(Clock clock, int warmup, int repetitions, const std::function
       glFinish();
     }
     if (clock == Clock::timer_query) {
+      if (g_timer_preamble) g_timer_preamble();
       glBeginQuery(GL_TIME_ELAPSED, query);
       const bool ok = frame();
       glEndQuery(GL_TIME_ELAPSED);

@@ -31,4 +31,8 @@ Timing time_frames(Clock clock, int warmup, int repetitions, const std::function
 
 double median(std::vector<double> values);
 
+// Run right before each timed frame on the timer-query clock (after the untimed `before` and its
+// glFinish): the benchmark installs a GpuBusy spin there on GPUs (gpu_busy.hpp). Empty: none.
+void set_timer_preamble(std::function<void()> preamble);
+
 }  // namespace sss_bench

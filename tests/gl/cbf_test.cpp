@@ -5,11 +5,16 @@
 // Tolerance against the CPU model: 3e-3 relative, the separable mode's budget (one RGBA16F
 // intermediate rounding flip, 2^-10, carried with weight <= 1, plus one on an RGBA16F output: 1.95e-3).
 // The taps here are nearest-texel fetches at floor(position): a few float ulps of difference in a
-// position can only move a tap to the next texel when it lies within ulps of a texel edge, which the
-// scenes below do not hit (measured differences are at the half-float rounding level). A wrong
-// tap, weight, footprint, cosine or range weight moves values by 1e-2 or more on these scenes.
+// position can only move a tap to the next texel when it lies within ulps of a texel edge. GLSL
+// lets a division be 2.5 ulp off (GLSL 4.60 §4.7.1), so where a tap lies that close, one driver
+// floors to one texel and the CPU model to its neighbour: on llvmpipe the scenes below never do
+// (every difference is at the half-float rounding level); NVIDIA's driver (580, H100) did once, one
+// pixel of the ketchup case at 1.6e-2. So a few values (kEdgeTaps per channel, each under one tap's
+// share of the local contrast, kOneTap) may exceed the tolerance; a wrong tap, weight, footprint,
+// cosine or range weight moves many values by 1e-2 or more on these scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -22,6 +27,8 @@ namespace sss_test {
 namespace {
 
 constexpr float kTolerance = 3e-3f;
+constexpr std::size_t kEdgeTaps = 8;
+constexpr float kOneTap = 0.05f;
 
 sss_settings cbf_settings(uint32_t profile = SSS_PROFILE_MIKKELSEN_2010, int taps = SSS_CBF_DEFAULT_TAPS) {
   sss_settings s;
@@ -40,9 +47,19 @@ using CrossBilateral = FilterCaseTest;
 void expect_blurred_and_matching(const FilterOutcome& o) {
   ASSERT_EQ(o.result, SSS_OK);
   const float difference = largest_relative_difference(o.gpu, o.cpu);
-  std::printf("cross-bilateral GPU vs CPU model: largest relative difference %.3g (tolerance %.3g)\n", difference,
-              kTolerance);
-  EXPECT_LE(difference, kTolerance);
+  std::size_t beyond = 0;
+  for (std::size_t i = 0; i < o.gpu.size(); ++i) {
+    const float d = std::fabs(o.gpu[i] - o.cpu[i]) / std::max(1.0f, std::fabs(o.cpu[i]));
+    if (!(d <= kTolerance)) {
+      ++beyond;
+      std::printf("  value %zu (pixel %zu, channel %zu): GPU %.6g, CPU model %.6g\n", i, i / 4, i % 4, o.gpu[i],
+                  o.cpu[i]);
+    }
+  }
+  std::printf("cross-bilateral GPU vs CPU model: largest relative difference %.3g (tolerance %.3g; %zu values "
+              "beyond it)\n", difference, kTolerance, beyond);
+  EXPECT_LE(beyond, kEdgeTaps) << "more values off than taps at a texel edge explain";
+  EXPECT_LE(difference, kOneTap) << "more than one tap moved by one texel";
   EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);  // the case must change the image
 }
 

@@ -330,6 +330,7 @@ TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
   };
   std::atomic<uint32_t>& skip = sss::gl::restore_skip_mask_for_tests();
   for (const auto& [name, group] : groups) {
+    if (group == g::image_unit && !has_image_units()) continue;  // no compute path to restore it for
     // A new context each time: some restores matter only on a first frame (the renderbuffer is
     // bound only while the stencil copy is allocated).
     if (sss_ != nullptr) sss_destroy(sss_);

@@ -69,12 +69,12 @@ struct FilterRun {
   std::uint64_t path_key = 0;
 };
 
-// Pixels a compute work group writes along a pass's axis, and those it caches on each side of
-// them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
 // u_kernel's length in the adaptive variant: the full kernel and every level below it (at most
 // 9 + 17 + 33 taps under 65), 128 vec4 in all: within GL 3.3's 256 and ES 3.0's 224 fragment
 // uniform vectors with the other uniforms.
 constexpr int kKernelSlots = SSS_MAX_SAMPLES + 9 + 17 + 33 + 4;
+// Pixels a compute work group writes along a pass's axis, and those it caches on each side of
+// them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
 constexpr int kComputeSegment = 128;
 constexpr int kComputeApron = 64;
 
