@@ -39,7 +39,7 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
                         is made at 2W x 2H); default: mode's
   --no-msaa             skip the MSAA study
   --gpu-preload-ms MS   on a GPU (timer queries), keep it busy this long before each timed frame so
-                        the frame's commands are queued when it starts (gpu_busy.hpp; default 0.5,
+                        the frame's commands are queued when it starts (gpu_busy.hpp; default 2,
                         0: time from an idle GPU, CPU issue gaps included)
   --help
 )";

@@ -27,7 +27,7 @@ struct Options {
   std::string backend = "egl";
   std::string doc;                                  // also write this results document (Markdown)
   bool heat_maps = true;
-  double gpu_preload_ms = 0.5;                      // GpuBusy before each timed frame on a GPU; 0: none
+  double gpu_preload_ms = 2.0;                      // GpuBusy before each timed frame on a GPU; 0: none
   bool msaa = true;                                 // the MSAA study (msaa_study.hpp)
   std::pair<int, int> msaa_size = {65, 49};         // its filtered size (the reference is made at 2x)
   std::string command_line;

@@ -27,7 +27,9 @@ namespace {
 constexpr float kTolerance = 3e-3f;
 constexpr int kWidth = 100, kHeight = 30;
 
-sss_settings settings_for(uint32_t flags, float width) { return visible_settings(17, flags, width); }
+// 33 taps: the kernel with a level between the pass-through and itself (17 taps; the default 17
+// has none at an eighth-pixel spacing, see math/pass_kernel.hpp).
+sss_settings settings_for(uint32_t flags, float width) { return visible_settings(33, flags, width); }
 
 // Five vertical bands of a plane facing the camera, each at its own distance, chosen so that a
 // pixel's step (pixels_per_mm / distance at alpha 1) is `steps[band]`; colour is seeded noise so
@@ -64,10 +66,10 @@ SyntheticScene banded_scene(const sss_settings& s, const std::array<float, 5>& s
   return scene;
 }
 
-// Steps between the levels' limits of a 17-tap kernel (range 2 mm): pass through up to 0.25 px/mm
-// (the kernel within half a pixel), 9 taps to 0.5 (mean spacing within a quarter pixel), the full
-// kernel above.
-constexpr std::array<float, 5> kSteps = {0.15f, 0.37f, 0.74f, 1.5f, 3.2f};
+// Steps between the levels' limits of a 33-tap kernel (range 3 mm): pass through up to 1/6 px/mm
+// (the kernel within half a pixel), 17 taps to 1/3 (mean spacing within an eighth of a pixel), the
+// full kernel above.
+constexpr std::array<float, 5> kSteps = {0.1f, 0.25f, 0.5f, 1.0f, 2.0f};
 
 std::size_t pixel(int x, int y) { return (static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4; }
 
@@ -75,10 +77,10 @@ using AdaptiveTaps = FilterCaseTest;
 
 TEST_F(AdaptiveTaps, TheLevelsAreTheOnesTheStepsSelect) {
   // The premise of this file's scenes: each band's step lies inside one level, far from a limit.
-  const auto levels = sss::math::adaptive_levels(17, {0.9f, 0.8f, 0.7f}, {1.0f, 0.6f, 0.4f});
-  ASSERT_EQ(levels.size(), 2u);  // pass through, 9 taps
-  EXPECT_EQ(levels[1].taps.taps.size(), 9u);
-  const float limits[] = {0.25f, 0.5f};
+  const auto levels = sss::math::adaptive_levels(33, {0.9f, 0.8f, 0.7f}, {1.0f, 0.6f, 0.4f});
+  ASSERT_EQ(levels.size(), 2u);  // pass through, 17 taps
+  EXPECT_EQ(levels[1].taps.taps.size(), 17u);
+  const float limits[] = {1.0f / 6.0f, 1.0f / 3.0f};
   for (std::size_t l = 0; l < levels.size(); ++l) {
     EXPECT_FLOAT_EQ(levels[l].max_step, limits[l]) << l;
     EXPECT_LT(kSteps[l], 0.8f * limits[l]);
@@ -168,7 +170,7 @@ TEST_F(AdaptiveTaps, IsReportedBackAndIgnoredByOtherFamilies) {
 
 // The banded scene with translucent pixels only inside `inner` (x, y, w, h).
 SyntheticScene island_scene(const sss_settings& s, const std::array<int, 4>& inner) {
-  SyntheticScene scene = banded_scene(s, {3.0f, 3.0f, 3.0f, 3.0f, 3.0f});
+  SyntheticScene scene = banded_scene(s, {2.0f, 2.0f, 2.0f, 2.0f, 2.0f});  // 2 px per profile mm
   for (int y = 0; y < kHeight; ++y) {
     for (int x = 0; x < kWidth; ++x) {
       const bool in = x >= inner[0] && x < inner[0] + inner[2] && y >= inner[1] && y < inner[1] + inner[3];
@@ -182,8 +184,8 @@ SyntheticScene island_scene(const sss_settings& s, const std::array<int, 4>& inn
 using Region = FilterCaseTest;
 
 TEST_F(Region, APaddedRegionGivesTheFullFrameResultBitForBit) {
-  // The kernel reaches 2 mm · 3 px/mm = 6 px: a region 8 px larger than the island on every side
-  // holds every tap, so restricting the passes to it changes nothing.
+  // The kernel (33 taps) reaches 3 mm · 2 px/mm = 6 px: a region 8 px larger than the island on
+  // every side holds every tap, so restricting the passes to it changes nothing.
   const std::array<int, 4> island = {30, 10, 25, 10};
   const std::array<int32_t, 4> padded = {22, 2, 41, 26};
   for (uint32_t mode : {SSS_MODE_SEPARABLE, SSS_MODE_CROSS_BILATERAL}) {

@@ -210,18 +210,21 @@ TEST(AdaptiveLevels, EachLevelIsEquationOneOverTheFullRange) {
       EXPECT_NEAR(largest, range, 1e-6);
     }
   }
-  // Up to 9 taps: nothing below the kernel but the pass-through; 17: and 9 taps; 65: 9, 17 and 33.
+  // Up to 17 taps: nothing below the kernel but the pass-through (9 taps at an eighth-pixel spacing
+  // would serve only what it takes); 33: and 17 taps; 65: 17 and 33.
   EXPECT_EQ(sss::math::adaptive_levels(3, strength, falloff).size(), 1u);
   EXPECT_EQ(sss::math::adaptive_levels(9, strength, falloff).size(), 1u);
-  EXPECT_EQ(sss::math::adaptive_levels(17, strength, falloff).size(), 2u);
-  EXPECT_EQ(sss::math::adaptive_levels(65, strength, falloff).size(), 4u);
+  EXPECT_EQ(sss::math::adaptive_levels(17, strength, falloff).size(), 1u);
+  EXPECT_EQ(sss::math::adaptive_levels(33, strength, falloff).size(), 2u);
+  EXPECT_EQ(sss::math::adaptive_levels(65, strength, falloff).size(), 3u);
 }
 
 TEST(AdaptiveLevels, TheChoiceIsTheFirstLevelWhoseLimitHoldsTheStep) {
   const std::array<float, 3> strength = {0.78f, 0.70f, 0.75f}, falloff = {0.57f, 0.13f, 0.08f};
-  const auto levels = sss::math::adaptive_levels(17, strength, falloff);
+  const auto levels = sss::math::adaptive_levels(65, strength, falloff);  // pass-through, 17, 33
+  ASSERT_EQ(levels.size(), 3u);
   sss::math::PassTaps full;
-  full.taps = sss::math::separable_kernel(17, strength, falloff);
+  full.taps = sss::math::separable_kernel(65, strength, falloff);
   EXPECT_EQ(sss::math::adaptive_taps(levels, full, 0.0f), nullptr);
   EXPECT_EQ(sss::math::adaptive_taps(levels, full, levels[0].max_step), nullptr);
   for (std::size_t l = 1; l < levels.size(); ++l) {

@@ -106,10 +106,12 @@ typedef struct sss_create_desc {
 /** Footprint-adaptive taps: each pixel's kernel is sized by its footprint, the pixels one profile
  *  millimetre spans there (width, projection, depth and alpha decide it). A pixel whose whole kernel
  *  spans less than half a pixel is passed through untouched (no taps: the exact convolution keeps
- *  nearly all such a pixel's light in it); above that, the pixel runs eq. (1) with 9, 17 or 33 taps
- *  over the same range, the fewest whose mean spacing stays within a quarter of a pixel, up to
- *  `samples`; a pixel that needs more runs the full kernel. A distant head pays for a few taps or
- *  none instead of `samples`; a close-up at full resolution is unchanged. Applies to eq. (1)
+ *  nearly all such a pixel's light in it); above that, the pixel runs eq. (1) with 17 or 33 taps
+ *  over the same range, the fewest whose mean spacing stays within an eighth of a pixel, up to
+ *  `samples`; a pixel that needs more runs the full kernel (with the default 17 taps: pass-through
+ *  or the full kernel). The error stays the fixed kernel's (benchmark: the far head shot at 1080p
+ *  gives 0.01301 relative RMSE either way). A distant head pays for few taps or none instead of
+ *  `samples`; a close-up at full resolution is unchanged. Applies to eq. (1)
  *  (SSS_KERNEL_SEPARABLE) without jitter; other families and jittered kernels run every tap, and
  *  the cross-bilateral mode is not affected. Default off (the paper's fixed taps). */
 #define SSS_ADAPTIVE_TAPS 0x2u
