@@ -417,13 +417,39 @@ static EGLDisplay egl_platform_display(EGLenum platform, void *native, char *err
 
 /* Initializes dpy, creates the context and makes it current. On failure everything acquired here
  * is released again. */
+/* One eglCreateContext of OpenGL (ES) major.minor with the desc's profile and debug flag. */
+static EGLContext egl_context_of_version(const sss_headless_desc *desc, const sss_headless *h,
+                                         EGLDisplay dpy, EGLConfig config, int egl15, int major,
+                                         int minor) {
+  EGLint attribs[16];
+  int n = 0;
+  attribs[n++] = EGL_CONTEXT_MAJOR_VERSION;
+  attribs[n++] = major;
+  attribs[n++] = EGL_CONTEXT_MINOR_VERSION;
+  attribs[n++] = minor;
+  if (h->egl_api == EGL_OPENGL_API && (major > 3 || (major == 3 && minor >= 2))) {
+    attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
+    attribs[n++] = desc->core_profile ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
+                                      : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
+  }
+  if (desc->debug) {
+    if (egl15) {
+      attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG;
+      attribs[n++] = EGL_TRUE;
+    } else {
+      attribs[n++] = EGL_CONTEXT_FLAGS_KHR;
+      attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
+    }
+  }
+  attribs[n++] = EGL_NONE;
+  return g_egl.CreateContext(dpy, config, EGL_NO_CONTEXT, attribs);
+}
+
 static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, sss_headless *h,
                                  const char *display_label, char *err, size_t err_size) {
   EGLint major = 0, minor = 0;
   const char *exts;
   EGLConfig config = EGL_NO_CONFIG_KHR;
-  EGLint attribs[16];
-  int n = 0;
   int egl15, create_ctx_khr;
   char what[128];
 
@@ -468,44 +494,19 @@ static int egl_create_on_display(const sss_headless_desc *desc, EGLDisplay dpy, 
 
   /* A desktop core profile gets the newest version at or above the request: Mesa does that by
    * itself, NVIDIA's driver gives exactly what is asked (3.3 for 3.3, and with it no compute
-   * shaders), so the same request means the same features on both. */
-  {
-    static const int newer[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}, {3, 2}};
-    const int upgrade = h->egl_api == EGL_OPENGL_API && desc->core_profile;
+   * shaders), so the same request means the same features on both. A newer version refused is
+   * not the caller's error: its EGL error is dropped and the request itself comes last. */
+  if (h->egl_api == EGL_OPENGL_API && desc->core_profile) {
+    static const int newer[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}};
     size_t v;
-    for (v = 0; v <= sizeof newer / sizeof newer[0] && h->egl_ctx == EGL_NO_CONTEXT; ++v) {
-      int want_major = desc->major, want_minor = desc->minor;
-      if (v < sizeof newer / sizeof newer[0]) {
-        if (!upgrade) continue;
-        want_major = newer[v][0];
-        want_minor = newer[v][1];
-        /* Only versions above the request; the request itself comes last. */
-        if (want_major < desc->major || (want_major == desc->major && want_minor <= desc->minor)) continue;
-      }
-      n = 0;
-      attribs[n++] = EGL_CONTEXT_MAJOR_VERSION;
-      attribs[n++] = want_major;
-      attribs[n++] = EGL_CONTEXT_MINOR_VERSION;
-      attribs[n++] = want_minor;
-      if (h->egl_api == EGL_OPENGL_API && (want_major > 3 || (want_major == 3 && want_minor >= 2))) {
-        attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
-        attribs[n++] = desc->core_profile ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
-                                          : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
-      }
-      if (desc->debug) {
-        if (egl15) {
-          attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG;
-          attribs[n++] = EGL_TRUE;
-        } else {
-          attribs[n++] = EGL_CONTEXT_FLAGS_KHR;
-          attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
-        }
-      }
-      attribs[n++] = EGL_NONE;
-      h->egl_ctx = g_egl.CreateContext(dpy, config, EGL_NO_CONTEXT, attribs);
-      /* A newer version refused: its error is not the caller's (the request itself comes next). */
-      if (h->egl_ctx == EGL_NO_CONTEXT && v < sizeof newer / sizeof newer[0]) (void)g_egl.GetError();
+    for (v = 0; v < sizeof newer / sizeof newer[0] && h->egl_ctx == EGL_NO_CONTEXT; ++v) {
+      if (newer[v][0] < desc->major || (newer[v][0] == desc->major && newer[v][1] <= desc->minor)) continue;
+      h->egl_ctx = egl_context_of_version(desc, h, dpy, config, egl15, newer[v][0], newer[v][1]);
+      if (h->egl_ctx == EGL_NO_CONTEXT) (void)g_egl.GetError();
     }
+  }
+  if (h->egl_ctx == EGL_NO_CONTEXT) {
+    h->egl_ctx = egl_context_of_version(desc, h, dpy, config, egl15, desc->major, desc->minor);
   }
   if (h->egl_ctx == EGL_NO_CONTEXT) {
     snprintf(what, sizeof what, "%s: eglCreateContext(OpenGL %s%d.%d %s%s)", display_label,

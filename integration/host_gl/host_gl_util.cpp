@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <initializer_list>
 #include <vector>
 
 namespace host_gl {
@@ -51,19 +52,13 @@ bool check_gl(const char *stage) {
   return ok;
 }
 
-GLuint build_program(const char *name, const char *vertex_source, const char *fragment_source) {
-  GLuint vs = compile(name, GL_VERTEX_SHADER, vertex_source);
-  GLuint fs = vs != 0 ? compile(name, GL_FRAGMENT_SHADER, fragment_source) : 0;
-  if (vs == 0 || fs == 0) {
-    if (vs != 0) glDeleteShader(vs);
-    return 0;
-  }
+namespace {
+// Links the compiled shaders (deleting them); 0 and the log on stderr when linking fails.
+GLuint link_program(const char *name, std::initializer_list<GLuint> shaders) {
   GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
+  for (GLuint shader : shaders) glAttachShader(program, shader);
   glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint shader : shaders) glDeleteShader(shader);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
@@ -76,6 +71,29 @@ GLuint build_program(const char *name, const char *vertex_source, const char *fr
     return 0;
   }
   return program;
+}
+}  // namespace
+
+GLuint build_program(const char *name, const char *vertex_source, const char *fragment_source) {
+  GLuint vs = compile(name, GL_VERTEX_SHADER, vertex_source);
+  GLuint fs = vs != 0 ? compile(name, GL_FRAGMENT_SHADER, fragment_source) : 0;
+  if (vs == 0 || fs == 0) {
+    if (vs != 0) glDeleteShader(vs);
+    return 0;
+  }
+  return link_program(name, {vs, fs});
+}
+
+bool has_compute_shaders() {
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  return major * 10 + minor >= 43;
+}
+
+GLuint build_compute_program(const char *name, const char *source) {
+  GLuint cs = compile(name, GL_COMPUTE_SHADER, source);
+  return cs != 0 ? link_program(name, {cs}) : 0;
 }
 
 GLuint make_texture(GLint internal_format, GLsizei width, GLsizei height, GLenum format, GLenum type) {

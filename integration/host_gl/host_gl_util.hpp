@@ -14,6 +14,12 @@ bool check_gl(const char *stage);
 // Compiles and links a vertex + fragment program. Returns 0 and prints the driver log on failure.
 GLuint build_program(const char *name, const char *vertex_source, const char *fragment_source);
 
+// Desktop OpenGL 4.3 or newer: compute shaders (the caller loads glDispatchCompute and
+// glMemoryBarrier itself; the host loader asks only for what every context has).
+bool has_compute_shaders();
+// A compute program, as build_program.
+GLuint build_compute_program(const char *name, const char *source);
+
 // A 2D texture with storage of the given format, NEAREST filtering, CLAMP_TO_EDGE.
 GLuint make_texture(GLint internal_format, GLsizei width, GLsizei height, GLenum format, GLenum type);
 

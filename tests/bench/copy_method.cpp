@@ -76,17 +76,9 @@ using MemoryBarrierFn = void (*)(GLbitfield);
 
 class ComputeCopyMethod : public Method {
  public:
-  ComputeCopyMethod(DispatchComputeFn dispatch, MemoryBarrierFn barrier) : dispatch_(dispatch), barrier_(barrier) {
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    glShaderSource(shader, 1, &kComputeCopyShader, nullptr);
-    glCompileShader(shader);
-    program_ = glCreateProgram();
-    glAttachShader(program_, shader);
-    glLinkProgram(program_);
-    glDeleteShader(shader);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &linked);
-    if (linked != GL_TRUE) throw std::runtime_error("the compute copy program did not link");
+  ComputeCopyMethod(DispatchComputeFn dispatch, MemoryBarrierFn barrier)
+      : dispatch_(dispatch), barrier_(barrier), program_(build_compute_program("copy-compute", kComputeCopyShader)) {
+    if (program_ == 0) throw std::runtime_error("the compute copy program did not build");
   }
   ~ComputeCopyMethod() override {
     glUseProgram(0);
@@ -133,10 +125,7 @@ class ComputeCopyMethod : public Method {
 std::unique_ptr<Method> make_copy_method() { return std::make_unique<CopyMethod>(); }
 
 std::unique_ptr<Method> make_compute_copy_method(const GlLoader& loader) {
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 43) return nullptr;
+  if (!has_compute_shaders()) return nullptr;
   const auto dispatch = reinterpret_cast<DispatchComputeFn>(loader.get_proc_address("glDispatchCompute", loader.user));
   const auto barrier = reinterpret_cast<MemoryBarrierFn>(loader.get_proc_address("glMemoryBarrier", loader.user));
   if (dispatch == nullptr || barrier == nullptr) return nullptr;

@@ -26,26 +26,12 @@ void main() {
 }  // namespace
 
 std::unique_ptr<GpuBusy> GpuBusy::create(const GlLoader& loader, double busy_ms) {
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 43) return nullptr;
+  if (!has_compute_shaders()) return nullptr;
   const auto dispatch = reinterpret_cast<DispatchComputeFn>(loader.get_proc_address("glDispatchCompute", loader.user));
   const auto flush = reinterpret_cast<FlushFn>(loader.get_proc_address("glFlush", loader.user));
   if (dispatch == nullptr || flush == nullptr) return nullptr;
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  glShaderSource(shader, 1, &kSpinShader, nullptr);
-  glCompileShader(shader);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  GLint linked = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  if (linked != GL_TRUE) {
-    glDeleteProgram(program);
-    return nullptr;
-  }
+  const GLuint program = build_compute_program("gpu busy", kSpinShader);
+  if (program == 0) return nullptr;
   const GLuint sink = make_texture(GL_R32F, 64, 1, GL_RED, GL_FLOAT);
   std::unique_ptr<GpuBusy> busy(new GpuBusy(dispatch, flush, program, sink));
   // Calibrate: the spin's time grows with its iterations; scale them to the wanted time.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "filter_case.hpp"
+#include "host_gl_util.hpp"
 
 using namespace host_gl;
 
@@ -48,13 +49,7 @@ FilterCase two_term_case() {
 class ComputePath : public FilterCaseTest {
  protected:
   // The GL can run compute shaders (desktop 4.3+): else every frame must take the fragment path.
-  bool has_compute() {
-    if (is_gles()) return false;
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    return major * 10 + minor >= 43;
-  }
+  bool has_compute() { return !is_gles() && host_gl::has_compute_shaders(); }
   // sss_ with SSS_CREATE_STATS, the tests' settings on `path` and the scene's camera.
   bool create_measured(const SyntheticScene& scene, uint32_t path) {
     sss_ = create_sss(SSS_CREATE_STATS);

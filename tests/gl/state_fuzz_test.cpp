@@ -10,6 +10,7 @@
 #include <random>
 
 #include "filter_case.hpp"
+#include "host_gl_util.hpp"
 #include "gl/state_guard.hpp"
 #include "gl_state_snapshot.hpp"
 #include "sss/sss_lut.h"
@@ -147,12 +148,7 @@ class StateHarness : public GlTest {
   }
 
   // Image load/store (desktop GL 4.3+): the compute path binds image unit 0.
-  bool has_image_units() {
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    return major * 10 + minor >= 43;
-  }
+  bool has_image_units() { return host_gl::has_compute_shaders(); }
 
   // The entry points that call GL, each as the harness runs it.
   std::vector<std::pair<std::string, std::function<void()>>> entry_points(uint32_t create_flags) {
