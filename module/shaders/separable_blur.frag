@@ -119,8 +119,8 @@ void main() {
   float strength = min(centre.a, 1.0);  // alpha is documented as 0..1; more must not widen the kernel
   float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
   float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
-  // Behind the camera, on an infinite far plane, or NaN. isnan() and not only !(w > 0.0): NVIDIA's
-  // compiler turns a negated comparison into the opposite one, which a NaN passes.
+  // Behind the camera, on an infinite far plane, or NaN. isnan() and not only !(w > 0.0): on
+  // NVIDIA's driver (580) the negated comparison behaved as the opposite one, which a NaN passes.
   if (isnan(w) || !(w > 0.0) || isinf(w)) {
     leave_untouched(pixel, centre);
     return;

@@ -44,8 +44,8 @@ struct AdaptiveLevel {
 // Otherwise a level of n taps serves while its mean tap spacing, range / ((n - 1) / 2), stays within
 // kLevelSpacingPx. An eighth of a pixel keeps the error at the full kernel's on the benchmark's
 // head shots at 1080p (far shot: relative RMSE 0.01301 either way); a quarter let 9 taps serve
-// footprints up to a 1-pixel radius and raised the far shot's to 0.01312 (+0.8 %, the same on
-// llvmpipe and an H100), half a pixel cost 6 % on the mid shot, a whole pixel 18 %. With the
+// footprints up to a 1-pixel radius and raised the far shot's to 0.01312 (+0.8 % on llvmpipe,
+// +1.0 % on an H100), half a pixel cost 6 % on the mid shot, a whole pixel 18 %. With the
 // default 17 taps an eighth leaves the pass-through and the full kernel (9 taps would serve only
 // what the pass-through takes); 33 taps add 17 up to a 1-pixel radius, 65 taps 17 and 33.
 constexpr float kPassThroughRadiusPx = 0.5f;
