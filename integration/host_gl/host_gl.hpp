@@ -18,6 +18,7 @@
   X(PFNGLGETFLOATVPROC, glGetFloatv)                             \
   X(PFNGLISENABLEDPROC, glIsEnabled)                             \
   X(PFNGLFINISHPROC, glFinish)                                   \
+  X(PFNGLFLUSHPROC, glFlush)                                     \
   X(PFNGLVIEWPORTPROC, glViewport)                               \
   X(PFNGLSCISSORPROC, glScissor)                                 \
   X(PFNGLCLEARPROC, glClear)                                     \
@@ -128,6 +129,8 @@
   X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
   X(PFNGLGETBOOLEANI_VPROC, glGetBooleani_v)                     \
   X(PFNGLBINDIMAGETEXTUREPROC, glBindImageTexture)               \
+  X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                 \
+  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)                     \
   X(PFNGLSAMPLEMASKIPROC, glSampleMaski)                         \
   X(PFNGLTEXSTORAGE2DMULTISAMPLEPROC, glTexStorage2DMultisample) \
   X(PFNGLGETTEXLEVELPARAMETERIVPROC, glGetTexLevelParameteriv)

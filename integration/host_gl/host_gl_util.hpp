@@ -14,8 +14,9 @@ bool check_gl(const char *stage);
 // Compiles and links a vertex + fragment program. Returns 0 and prints the driver log on failure.
 GLuint build_program(const char *name, const char *vertex_source, const char *fragment_source);
 
-// Desktop OpenGL 4.3 or newer: compute shaders (the caller loads glDispatchCompute and
-// glMemoryBarrier itself; the host loader asks only for what every context has).
+// Desktop OpenGL 4.3 or newer: compute shaders. The loader takes glDispatchCompute and the image
+// functions from every context (the drivers hand out their entry points); only such a context
+// may call them.
 bool has_compute_shaders();
 // A compute program, as build_program.
 GLuint build_compute_program(const char *name, const char *source);

@@ -80,7 +80,7 @@ std::vector<MethodConfig> method_configs(const Options& o) {
 
 // nullptr: the configuration cannot run on this context (copy-compute below GL 4.3).
 std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loader) {
-  if (c.kind == "copy-compute") return make_compute_copy_method(loader);
+  if (c.kind == "copy-compute") return make_compute_copy_method();
   if (c.kind == "separable") return make_separable_method(loader, c.taps, c.follow_surface);
   if (c.kind == "separable-no-restore") {
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
@@ -242,7 +242,7 @@ int run(const Options& options) {
 
   const GlLoader loader{sss_headless_get_proc_address, headless};
   std::unique_ptr<GpuBusy> busy;
-  if (clock == Clock::timer_query && options.gpu_preload_ms > 0.0) busy = GpuBusy::create(loader, options.gpu_preload_ms);
+  if (clock == Clock::timer_query && options.gpu_preload_ms > 0.0) busy = GpuBusy::create(options.gpu_preload_ms);
   if (busy != nullptr) {
     info.gpu_preload_ms = busy->calibrated_ms();
     set_timer_preamble([&busy] { busy->run(); });

@@ -22,42 +22,65 @@ out vec4 o_color;
 void main() { o_color = texelFetch(u_source, ivec2(gl_FragCoord.xy), 0); }
 )";
 
-class CopyMethod : public Method {
+// What both copies share: the program, a temporary of the scene's size, and what they report.
+class TwoPassCopy : public Method {
  public:
-  CopyMethod() : program_(build_fullscreen_program("copy", kCopyShader)) {}
-  ~CopyMethod() override {
+  TwoPassCopy(GLuint program, GLint temporary_format) : program_(program), temporary_format_(temporary_format) {
+    if (program_ == 0) throw std::runtime_error("a copy program did not build");
+  }
+  ~TwoPassCopy() override {
     glUseProgram(0);  // a deleted program that stays current would be restored by name later
     glDeleteProgram(program_);
     glDeleteTextures(1, &temporary_);
   }
-  std::string name() const override { return "copy"; }
   int taps() const override { return 1; }
   bool follow_surface() const override { return false; }
   int passes() const override { return 2; }
 
-  bool run(const GpuScene& scene, GLuint output, std::string* error) override {
+ protected:
+  // The temporary for this scene's size, (re)made when the size changes.
+  GLuint temporary(const GpuScene& scene) {
     if (temporary_ == 0 || width_ != scene.width || height_ != scene.height) {
       glDeleteTextures(1, &temporary_);
-      temporary_ = make_texture(GL_RGBA16F, scene.width, scene.height, GL_RGBA, GL_HALF_FLOAT);
+      temporary_ = temporary_format_ == GL_RGBA16F
+                       ? make_texture(GL_RGBA16F, scene.width, scene.height, GL_RGBA, GL_HALF_FLOAT)
+                       : make_texture(temporary_format_, scene.width, scene.height, GL_RGBA, GL_FLOAT);
       width_ = scene.width;
       height_ = scene.height;
     }
+    return temporary_;
+  }
+  const GLuint program_;
+
+ private:
+  const GLint temporary_format_;
+  GLuint temporary_ = 0;
+  int width_ = 0, height_ = 0;
+};
+
+class CopyMethod : public TwoPassCopy {
+ public:
+  CopyMethod() : TwoPassCopy(build_fullscreen_program("copy", kCopyShader), GL_RGBA16F) {
     glUseProgram(program_);
     glUniform1i(glGetUniformLocation(program_, "u_source"), 0);
-    if (!pass_.bind_targets({temporary_}, scene.width, scene.height, error)) return false;
+    glUseProgram(0);
+  }
+  std::string name() const override { return "copy"; }
+
+  bool run(const GpuScene& scene, GLuint output, std::string* error) override {
+    const GLuint middle = temporary(scene);
+    glUseProgram(program_);
+    if (!pass_.bind_targets({middle}, scene.width, scene.height, error)) return false;
     FullscreenPass::bind_texture(0, scene.irradiance);
     pass_.draw();
     if (!pass_.bind_targets({output}, scene.width, scene.height, error)) return false;
-    FullscreenPass::bind_texture(0, temporary_);
+    FullscreenPass::bind_texture(0, middle);
     pass_.draw();
     return true;
   }
 
  private:
-  GLuint program_;
   FullscreenPass pass_;
-  GLuint temporary_ = 0;
-  int width_ = 0, height_ = 0;
 };
 
 const char* const kComputeCopyShader = R"(#version 430 core
@@ -71,65 +94,35 @@ void main() {
 }
 )";
 
-using DispatchComputeFn = void (*)(GLuint, GLuint, GLuint);
-using MemoryBarrierFn = void (*)(GLbitfield);
-
-class ComputeCopyMethod : public Method {
+class ComputeCopyMethod : public TwoPassCopy {
  public:
-  ComputeCopyMethod(DispatchComputeFn dispatch, MemoryBarrierFn barrier)
-      : dispatch_(dispatch), barrier_(barrier), program_(build_compute_program("copy-compute", kComputeCopyShader)) {
-    if (program_ == 0) throw std::runtime_error("the compute copy program did not build");
-  }
-  ~ComputeCopyMethod() override {
-    glUseProgram(0);
-    glDeleteProgram(program_);
-    glDeleteTextures(1, &temporary_);
-  }
+  ComputeCopyMethod() : TwoPassCopy(build_compute_program("copy-compute", kComputeCopyShader), GL_RGBA32F) {}
   std::string name() const override { return "copy-compute"; }
-  int taps() const override { return 1; }
-  bool follow_surface() const override { return false; }
-  int passes() const override { return 2; }
 
   bool run(const GpuScene& scene, GLuint output, std::string* /*error*/) override {
-    if (temporary_ == 0 || width_ != scene.width || height_ != scene.height) {
-      glDeleteTextures(1, &temporary_);
-      temporary_ = make_texture(GL_RGBA32F, scene.width, scene.height, GL_RGBA, GL_FLOAT);
-      width_ = scene.width;
-      height_ = scene.height;
-    }
+    const GLuint middle = temporary(scene);
     glUseProgram(program_);
     const GLuint groups_x = static_cast<GLuint>((scene.width + 15) / 16);
     const GLuint groups_y = static_cast<GLuint>((scene.height + 15) / 16);
     FullscreenPass::bind_texture(0, scene.irradiance);
-    glBindImageTexture(0, temporary_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_(groups_x, groups_y, 1);
-    barrier_(GL_TEXTURE_FETCH_BARRIER_BIT);
-    FullscreenPass::bind_texture(0, temporary_);
+    glBindImageTexture(0, middle, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(groups_x, groups_y, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    FullscreenPass::bind_texture(0, middle);
     glBindImageTexture(0, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatch_(groups_x, groups_y, 1);
-    barrier_(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glDispatchCompute(groups_x, groups_y, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     return true;
   }
-
- private:
-  DispatchComputeFn dispatch_;
-  MemoryBarrierFn barrier_;
-  GLuint program_ = 0;
-  GLuint temporary_ = 0;
-  int width_ = 0, height_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<Method> make_copy_method() { return std::make_unique<CopyMethod>(); }
 
-std::unique_ptr<Method> make_compute_copy_method(const GlLoader& loader) {
-  if (!has_compute_shaders()) return nullptr;
-  const auto dispatch = reinterpret_cast<DispatchComputeFn>(loader.get_proc_address("glDispatchCompute", loader.user));
-  const auto barrier = reinterpret_cast<MemoryBarrierFn>(loader.get_proc_address("glMemoryBarrier", loader.user));
-  if (dispatch == nullptr || barrier == nullptr) return nullptr;
-  return std::make_unique<ComputeCopyMethod>(dispatch, barrier);
+std::unique_ptr<Method> make_compute_copy_method() {
+  return has_compute_shaders() ? std::make_unique<ComputeCopyMethod>() : nullptr;
 }
 
 }  // namespace sss_bench

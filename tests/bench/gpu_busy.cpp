@@ -25,15 +25,12 @@ void main() {
 
 }  // namespace
 
-std::unique_ptr<GpuBusy> GpuBusy::create(const GlLoader& loader, double busy_ms) {
+std::unique_ptr<GpuBusy> GpuBusy::create(double busy_ms) {
   if (!has_compute_shaders()) return nullptr;
-  const auto dispatch = reinterpret_cast<DispatchComputeFn>(loader.get_proc_address("glDispatchCompute", loader.user));
-  const auto flush = reinterpret_cast<FlushFn>(loader.get_proc_address("glFlush", loader.user));
-  if (dispatch == nullptr || flush == nullptr) return nullptr;
   const GLuint program = build_compute_program("gpu busy", kSpinShader);
   if (program == 0) return nullptr;
   const GLuint sink = make_texture(GL_R32F, 64, 1, GL_RED, GL_FLOAT);
-  std::unique_ptr<GpuBusy> busy(new GpuBusy(dispatch, flush, program, sink));
+  std::unique_ptr<GpuBusy> busy(new GpuBusy(program, sink));
   // Calibrate: the spin's time grows with its iterations; scale them to the wanted time.
   for (int round = 0; round < 3; ++round) {
     const double ms = busy->time_once();
@@ -44,8 +41,8 @@ std::unique_ptr<GpuBusy> GpuBusy::create(const GlLoader& loader, double busy_ms)
   return busy;
 }
 
-GpuBusy::GpuBusy(DispatchComputeFn dispatch, FlushFn flush, GLuint program, GLuint sink)
-    : dispatch_(dispatch), flush_(flush), program_(program), sink_(sink) {}
+GpuBusy::GpuBusy(GLuint program, GLuint sink)
+    : program_(program), sink_(sink), iterations_location_(glGetUniformLocation(program, "u_iterations")) {}
 
 GpuBusy::~GpuBusy() {
   glDeleteProgram(program_);
@@ -54,12 +51,12 @@ GpuBusy::~GpuBusy() {
 
 void GpuBusy::run() {
   glUseProgram(program_);
-  glUniform1i(glGetUniformLocation(program_, "u_iterations"), iterations_);
+  glUniform1i(iterations_location_, iterations_);
   glBindImageTexture(0, sink_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  dispatch_(1, 1, 1);
+  glDispatchCompute(1, 1, 1);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   glUseProgram(0);
-  flush_();  // the GPU starts spinning now, while the CPU goes on to issue the timed frame
+  glFlush();  // the GPU starts spinning now, while the CPU goes on to issue the timed frame
 }
 
 double GpuBusy::time_once() {

@@ -8,14 +8,14 @@
 
 #include <memory>
 
-#include "method.hpp"
+#include "host_gl.hpp"
 
 namespace sss_bench {
 
 class GpuBusy {
  public:
   // nullptr below OpenGL 4.3 (no compute shaders). The spin is calibrated to about `busy_ms`.
-  static std::unique_ptr<GpuBusy> create(const GlLoader& loader, double busy_ms);
+  static std::unique_ptr<GpuBusy> create(double busy_ms);
   ~GpuBusy();
   GpuBusy(const GpuBusy&) = delete;
   GpuBusy& operator=(const GpuBusy&) = delete;
@@ -24,14 +24,11 @@ class GpuBusy {
   double calibrated_ms() const { return calibrated_ms_; }
 
  private:
-  using DispatchComputeFn = void (*)(GLuint, GLuint, GLuint);
-  using FlushFn = void (*)();
-  GpuBusy(DispatchComputeFn dispatch, FlushFn flush, GLuint program, GLuint sink);
+  GpuBusy(GLuint program, GLuint sink);
   double time_once();
 
-  DispatchComputeFn dispatch_;
-  FlushFn flush_;
   GLuint program_, sink_;
+  GLint iterations_location_;
   int iterations_ = 4096;
   double calibrated_ms_ = 0.0;
 };

@@ -75,6 +75,6 @@ std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, b
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();
 // The same two copies as compute dispatches ("copy-compute"); nullptr below GL 4.3.
-std::unique_ptr<Method> make_compute_copy_method(const GlLoader& loader);
+std::unique_ptr<Method> make_compute_copy_method();
 
 }  // namespace sss_bench
