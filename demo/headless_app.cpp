@@ -148,9 +148,10 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
       char extra[256];
       std::snprintf(extra, sizeof extra,
                     ". Heat map: |after - exact| (max over RGB, linear) / %.3g on a viridis-like ramp, computed at "
-                    "%dx%d; relative RMSE %.4f (no SSS: %.4f)",
+                    "%dx%d; share of the needed change missed on the interior %.3f (no SSS: 1), relative RMSE "
+                    "%.4f (no SSS: %.4f)",
                     static_cast<double>(o.heat_scale), report->small_width, report->small_height,
-                    report->heat.relative_rmse_after, report->heat.relative_rmse_before);
+                    report->heat.miss_interior, report->heat.relative_rmse_after, report->heat.relative_rmse_before);
       description += extra;
     }
     ok = write_png(prefix + v.file + ".png", image,
@@ -214,12 +215,14 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
   for (const PresetReport &r : reports) {
     std::snprintf(line, sizeof line,
                   "  %-5s  marked %7llu (%4.1f %%), touched %7llu; reference at %dx%d (%zu translucent px) in %.2f s;"
-                  " relative RMSE %.4f with SSS, %.4f without; p99 |error| %.4f\n",
+                  " interior (%zu px) miss %.3f (worst channel %.3f; no SSS: 1); relative RMSE %.4f with SSS, %.4f"
+                  " without; p99 |error| %.4f\n",
                   preset_name(r.preset), static_cast<unsigned long long>(r.counts.marked),
                   100.0 * static_cast<double>(r.counts.marked) / static_cast<double>(std::max<std::uint64_t>(r.counts.total, 1)),
                   static_cast<unsigned long long>(r.counts.touched), r.small_width, r.small_height,
-                  r.reference.translucent_pixels, r.reference.seconds, r.heat.relative_rmse_after,
-                  r.heat.relative_rmse_before, r.heat.p99_abs_error);
+                  r.reference.translucent_pixels, r.reference.seconds, r.heat.interior_pixels, r.heat.miss_interior,
+                  r.heat.miss_interior_worst_channel, r.heat.relative_rmse_after, r.heat.relative_rmse_before,
+                  r.heat.p99_abs_error);
     t += line;
   }
   if (!scene.attribution.empty()) t += "\nAttribution: " + scene.attribution + "\n";
@@ -265,9 +268,10 @@ int run_headless(const Options &o, const DemoScene &scene) {
                     : stats.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "fragment passes behind a stencil from alpha"
                                                                         : "fragment passes");
       }
-      std::printf("         heat map: exact reference at %dx%d in %.2f s; relative RMSE %.4f with SSS, %.4f without;"
-                  " touched %llu of %llu marked pixels\n",
-                  report.small_width, report.small_height, report.reference.seconds, report.heat.relative_rmse_after,
+      std::printf("         heat map: exact reference at %dx%d in %.2f s; interior miss %.3f (worst channel %.3f; no SSS:"
+                  " 1); relative RMSE %.4f with SSS, %.4f without; touched %llu of %llu marked pixels\n",
+                  report.small_width, report.small_height, report.reference.seconds, report.heat.miss_interior,
+                  report.heat.miss_interior_worst_channel, report.heat.relative_rmse_after,
                   report.heat.relative_rmse_before, static_cast<unsigned long long>(report.counts.touched),
                   static_cast<unsigned long long>(report.counts.marked));
       reports.push_back(report);

@@ -1,5 +1,7 @@
 #include "heat_map.hpp"
 
+#include "regions.hpp"
+
 #include "gl_functions.hpp"
 #include "metrics.hpp"
 
@@ -98,6 +100,23 @@ HeatMap make_heat_map(const SmallFrame &frame, const Reference &reference, bool 
     const sss_bench::RgbImage after = rgb_of(frame.after, w, height);
     h.relative_rmse_after = sss_bench::relative_rmse(after, ref, frame.mask.data());
     if (h.shows_after) shown = after;
+  }
+  {
+    sss_bench::RegionInput regions;
+    regions.width = w;
+    regions.height = height;
+    regions.mask = frame.mask.data();
+    regions.distance = frame.distance.data();
+    regions.projection = frame.projection;
+    regions.world_units_per_mm = frame.world_units_per_mm;
+    regions.reach_mm = sss_bench::profile_reach_mm(sss::math::skin_profile_terms());
+    const std::vector<uint8_t> interior =
+        sss_bench::region_mask(sss_bench::classify_regions(regions), sss_bench::Region::interior);
+    const sss_bench::Miss miss =
+        sss_bench::miss_share(frame.after.empty() ? before : rgb_of(frame.after, w, height), ref, before, interior.data());
+    h.interior_pixels = miss.pixels;
+    h.miss_interior = frame.after.empty() ? std::nan("") : miss.pooled;
+    h.miss_interior_worst_channel = frame.after.empty() ? std::nan("") : miss.worst_channel();
   }
   h.max_abs_error = sss_bench::max_abs_error(shown, ref, frame.mask.data());
   h.p99_abs_error = sss_bench::percentile_abs_error(shown, ref, frame.mask.data(), 0.99);

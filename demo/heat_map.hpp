@@ -20,6 +20,7 @@
 #include "image.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -56,6 +57,13 @@ struct HeatMap {
   Image image;                    // the small frame's size, rows top-down
   double relative_rmse_before = 0;  // no SSS against the reference (translucent pixels)
   double relative_rmse_after = 0;   // the library against the reference (0 when SSS is off)
+  // The share of the needed change the library misses (tests/bench/metrics.hpp: 0 exact, 1 as wrong
+  // as no SSS) on the interior of tests/bench/regions.hpp (translucent pixels beyond the profile's
+  // reach from a silhouette or the frame edge), pooled and its worst channel; NaN when the interior
+  // is empty or SSS is off.
+  double miss_interior = 0;
+  double miss_interior_worst_channel = 0;
+  std::size_t interior_pixels = 0;
   double max_abs_error = 0;         // of what is shown
   double p99_abs_error = 0;
   bool shows_after = false;         // the map is of the library's output (else of "before")

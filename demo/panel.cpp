@@ -117,6 +117,8 @@ void view_section(WindowState *s) {
     if (s->heat_computing) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "computing the exact reference ...");
     if (s->heat_ready) {
       ImGui::Text("reference took %.2f s", s->reference_seconds);
+      ImGui::Text("missed change (interior): %.3f, worst channel %.3f (no SSS: 1)", s->heat.miss_interior,
+                  s->heat.miss_interior_worst_channel);
       ImGui::Text("relative RMSE: SSS %.4f, no SSS %.4f", s->heat.relative_rmse_after, s->heat.relative_rmse_before);
       ImGui::Text("|error| of the shown: max %.4f, p99 %.4f", s->heat.max_abs_error, s->heat.p99_abs_error);
     }

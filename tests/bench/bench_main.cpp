@@ -10,12 +10,14 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gpu_busy.hpp"
+#include "math/exact_reference.hpp"
 #include "gpu_scene.hpp"
 #include "host_gl.hpp"
 #include "host_gl_util.hpp"
@@ -24,6 +26,7 @@
 #include "msaa_study.hpp"
 #include "options.hpp"
 #include "reference.hpp"
+#include "regions.hpp"
 #include "report.hpp"
 #include "results.hpp"
 #include "scenes/scenes.hpp"
@@ -78,6 +81,26 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   return configs;
 }
 
+// The footprint sweep measures accuracy on planes facing the camera, where the depth test, the
+// paths and the region change nothing but time: there it runs each kernel once (follow-surface on)
+// with the sum of Gaussians, the cross-bilateral mode, the kernel families and the adaptive taps
+// (which do change the image: they pass small footprints through).
+bool runs_on_sweep(const MethodConfig& c) {
+  if (c.kind == "separable" || c.kind == "sum-of-gaussians") return c.follow_surface;
+  return c.kind == "separable-adaptive" || c.kind == "cross-bilateral" || c.kind.rfind("kernel-", 0) == 0;
+}
+
+// The side of the sweep frames' interior in millimetres, at least: the widest content (plane-disk,
+// 6 mm across) with a millimetre on either side, so that the interior holds every edge of the light.
+constexpr double kSweepInteriorMm = 8.0;
+
+// One scene at one size: a canonical scene, or a footprint sweep plane (footprint_mm > 0).
+struct SceneJob {
+  std::string name;
+  int width = 0, height = 0;
+  double footprint_mm = 0.0;
+};
+
 // nullptr: the configuration cannot run on this context (copy-compute below GL 4.3).
 std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loader) {
   if (c.kind == "copy-compute") return make_compute_copy_method();
@@ -117,30 +140,49 @@ std::string now_utc() {
 
 // Scores results where the reference holds values: every pixel (stride 1), or the 1-in-stride²
 // grid of receivers, decimated to a small image so that SSIM's windows see only reference pixels.
+// Each translucent pixel is in one region of regions.hpp (classified at full size, then decimated).
 class Grid {
  public:
-  Grid(int stride, const RgbImage& reference, const std::vector<uint8_t>& mask, int width, int height)
+  Grid(int stride, const RgbImage& reference, const RgbImage& input, const std::vector<uint8_t>& mask,
+       const std::vector<uint8_t>& regions, int width, int height)
       : stride_(stride), width_(width), height_(height) {
     reference_ = decimate(reference);
+    input_ = decimate(input);
     mask_.resize(static_cast<std::size_t>(reference_.width) * reference_.height);
     band_.resize(mask_.size());
+    for (auto& m : region_masks_) m.resize(mask_.size());
     for (int y = 0; y < reference_.height; ++y) {
       for (int x = 0; x < reference_.width; ++x) {
         const int fx = x * stride_ + stride_ / 2, fy = y * stride_ + stride_ / 2;
-        mask_[reference_.index(x, y)] = mask[static_cast<std::size_t>(fy) * width_ + static_cast<std::size_t>(fx)];
-        band_[reference_.index(x, y)] = mask_[reference_.index(x, y)] != 0 && near_outside(mask, fx, fy);
+        const std::size_t full = static_cast<std::size_t>(fy) * width_ + static_cast<std::size_t>(fx);
+        const std::size_t i = reference_.index(x, y);
+        mask_[i] = mask[full];
+        band_[i] = mask_[i] != 0 && near_outside(mask, fx, fy);
+        for (int r = 0; r < kRegionCount; ++r) region_masks_[static_cast<std::size_t>(r)][i] = regions[full] == r + 1 ? 1 : 0;
       }
     }
   }
   ErrorMetrics compare(const RgbImage& result) const { return compare_images(decimate(result), reference_, mask_.data()); }
+  // The miss of `result` in each region, and relative RMSE on the interior, into `row`.
+  void score_regions(const RgbImage& result, ResultRow* row) const {
+    const RgbImage small = decimate(result);
+    for (std::size_t r = 0; r < region_masks_.size(); ++r) {
+      const Miss m = miss_share(small, reference_, input_, region_masks_[r].data());
+      row->region[r].miss = m.pooled;
+      row->region[r].miss_channel = m.channel;
+      row->region[r].pixels = static_cast<int>(m.pixels);
+    }
+    row->relative_rmse_interior = row->region[0].pixels > 0 ? relative_rmse(small, reference_, region_masks_[0].data())
+                                                            : std::numeric_limits<double>::quiet_NaN();
+  }
   // results.hpp's halo_energy on the grid's pixels.
-  double halo(const RgbImage& result, const RgbImage& input) const {
-    const RgbImage small = decimate(result), in = decimate(input);
+  double halo(const RgbImage& result) const {
+    const RgbImage small = decimate(result);
     double leaked = 0.0, reference = 0.0;
     for (std::size_t i = 0; i < band_.size(); ++i) {
       if (!band_[i]) continue;
       for (std::size_t c = 0; c < 3; ++c) {
-        const double bound = std::max(reference_.rgb[i * 3 + c], in.rgb[i * 3 + c]);
+        const double bound = std::max(reference_.rgb[i * 3 + c], input_.rgb[i * 3 + c]);
         leaked += std::max(0.0, small.rgb[i * 3 + c] - bound);
         reference += reference_.rgb[i * 3 + c];
       }
@@ -172,9 +214,10 @@ class Grid {
     return false;
   }
   int stride_, width_, height_;
-  RgbImage reference_;
+  RgbImage reference_, input_;
   std::vector<uint8_t> mask_;
   std::vector<bool> band_;
+  std::array<std::vector<uint8_t>, kRegionCount> region_masks_;
 };
 
 // Rows [y0, y1) around the middle translucent row holding about 1/stride² of the translucent pixels.
@@ -199,6 +242,18 @@ Band translucent_band(const std::vector<uint8_t>& mask, int width, int height, i
     if (b.inside < wanted && b.y0 > 0) b.inside += per_row[static_cast<std::size_t>(--b.y0)];
   }
   return b;
+}
+
+RegionInput region_input_of(const Scene& scene, double reach_mm) {
+  RegionInput in;
+  in.width = scene.width;
+  in.height = scene.height;
+  in.mask = scene.mask.data();
+  in.distance = scene.distance.data();
+  in.projection = scene.projection;
+  in.world_units_per_mm = scene.world_units_per_mm;
+  in.reach_mm = reach_mm;
+  return in;
 }
 
 int count(const std::vector<uint8_t>& mask) {
@@ -262,18 +317,38 @@ int run(const Options& options) {
     const bool own = size_index < options.size_scenes.size() && !options.size_scenes[size_index].empty();
     return own ? options.size_scenes[size_index] : default_scenes;
   };
+  // The profile's reach (regions.hpp) sizes the sweep's frames and defines the regions.
+  const double reach_mm = profile_reach_mm(sss::math::skin_profile_terms());
+  std::vector<SceneJob> jobs;
+  for (std::size_t i = 0; i < options.sizes.size(); ++i) {
+    for (const std::string& name : scenes_at(i)) jobs.push_back({name, options.sizes[i].first, options.sizes[i].second, 0.0});
+  }
+  for (const std::string& name : options.sweep_scenes.empty() ? footprint_scene_names() : options.sweep_scenes) {
+    for (double f : options.footprints) {
+      // The interior, at least --sweep-interior pixels and kSweepInteriorMm (the disk whole, with
+      // its edge inside), and the reach on every side (border pixels), plus one for the float camera.
+      const int interior = std::max(options.sweep_interior_px, static_cast<int>(std::ceil(kSweepInteriorMm / f)));
+      const int side = interior + 2 * (static_cast<int>(std::ceil(reach_mm / f)) + 1);
+      jobs.push_back({name, side, side, f});
+    }
+  }
+  info.reach_mm = reach_mm;
   const std::vector<MethodConfig> configs = method_configs(options);
+  const auto sweep_count = static_cast<std::size_t>(std::count_if(configs.begin(), configs.end(), runs_on_sweep));
   std::size_t total = 0;
-  for (std::size_t i = 0; i < options.sizes.size(); ++i) total += scenes_at(i).size() * (configs.size() + 1);
+  for (const SceneJob& job : jobs) total += (job.footprint_mm > 0.0 ? sweep_count : configs.size()) + 1;
   std::size_t done = 0;
   std::vector<ResultRow> rows;
   std::vector<ReferenceCheck> checks;
   auto copy_method = make_copy_method();
 
-  for (std::size_t size_index = 0; size_index < options.sizes.size(); ++size_index) {
-    const auto [width, height] = options.sizes[size_index];
-    for (const std::string& scene_name : scenes_at(size_index)) {
-      const Scene scene = make_scene(scene_name, width, height);
+  for (const SceneJob& job : jobs) {
+    const int width = job.width, height = job.height;
+    const std::string& scene_name = job.name;
+    const bool sweep = job.footprint_mm > 0.0;
+    {
+      const Scene scene = sweep ? make_footprint_scene(scene_name, job.footprint_mm, width, height)
+                                : make_scene(scene_name, width, height);
       GpuScene gpu = upload_scene(scene);
       const GLuint output = make_output_texture(width, height);
       const std::string tag = scene_name + "-" + std::to_string(width) + "x" + std::to_string(height);
@@ -282,26 +357,51 @@ int run(const Options& options) {
       if (!check_gl(("making " + tag).c_str())) throw std::runtime_error("making " + tag + " left a GL error");
       const int stride = options.reference_stride > 0 ? options.reference_stride : std::max(1, (height + 90) / 180);
       const Reference reference =
-          make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
+          sweep ? make_plane_reference(scene, gpu)
+                : make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
       if (reference.check.checked > 0) checks.push_back(reference.check);
       std::string message;
       const Timing copy = time_frames(clock, options.warmup, options.repetitions,
                                       [&] { return copy_method->run(gpu, output, &message); });
       ++done;
-      std::printf("[%zu/%zu] %s: reference %s, copy %.3f ms\n", done, total, tag.c_str(), reference.source.c_str(),
-                  copy.median_ms);
+      std::printf("[%zu/%zu] %s%s: reference %s, copy %.3f ms\n", done, total, tag.c_str(),
+                  sweep ? (" (" + std::to_string(job.footprint_mm).substr(0, 6) + " mm/px)").c_str() : "",
+                  reference.source.c_str(), copy.median_ms);
       std::fflush(stdout);
       const RgbImage reference_image = RgbImage::from_rgba(reference.rgba.data(), width, height);
-      const bool pictured = options.heat_maps && is_pictured_scene(scene_name, width, options.sizes);
+      const bool pictured = !sweep && options.heat_maps && is_pictured_scene(scene_name, width, options.sizes);
       if (pictured) {
         write_tonemapped_png(options.out + "/" + tag + "-input.png",
                              RgbImage::from_rgba(gpu.irradiance_half.data(), width, height));
         write_tonemapped_png(options.out + "/" + tag + "-reference.png", reference_image);
       }
 
-      const Grid grid(reference.stride, reference_image, scene.mask, width, height);
+      const RegionInput region_input = region_input_of(scene, reach_mm);
+      const std::vector<uint8_t> regions = classify_regions(region_input);
+      const double footprint_mm = sweep ? job.footprint_mm : median_footprint_mm(region_input);
       const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
+      const Grid grid(reference.stride, reference_image, input_image, scene.mask, regions, width, height);
+      // Doing nothing: the input itself, the row every other one is read against.
+      {
+        ResultRow row;
+        row.scene = scene_name;
+        row.width = width;
+        row.height = height;
+        row.footprint_mm = footprint_mm;
+        row.sweep = sweep;
+        row.reference_stride = reference.stride;
+        row.method = "no-scattering";
+        const ErrorMetrics e = grid.compare(input_image);
+        grid.score_regions(input_image, &row);
+        row.relative_rmse = e.relative_rmse;
+        row.max_abs_error = e.max_abs;
+        row.p99_abs_error = e.p99_abs;
+        row.ssim = e.ssim;
+        row.translucent_pixels = count(scene.mask);
+        rows.push_back(row);
+      }
       for (const MethodConfig& config : configs) {
+        if (sweep && !runs_on_sweep(config)) continue;
         // The kernel families are compared at up to 640x360 (their Pareto curves); the 1080p head
         // rows keep the methods of the paper's Table 2.
         if (config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
@@ -313,6 +413,8 @@ int run(const Options& options) {
         row.scene = scene_name;
         row.width = width;
         row.height = height;
+        row.footprint_mm = footprint_mm;
+        row.sweep = sweep;
         row.reference_stride = reference.stride;
         ErrorMetrics e;
         Timing t;
@@ -325,6 +427,7 @@ int run(const Options& options) {
           row.method = "exact-2d";
           row.passes = 2;
           e.pixels = grid.selected();
+          grid.score_regions(reference_image, &row);
           if (reference.stride == 1) {
             t.median_ms = t.min_ms = t.max_ms = reference.gl_time_ms;
           } else {
@@ -348,7 +451,8 @@ int run(const Options& options) {
           // The exact filter is slow on a software rasteriser: one frame (after one that compiles
           // its shaders) is its measurement.
           t = time_frames(
-              clock, exact ? 1 : options.warmup, exact ? 1 : options.repetitions,
+              clock, exact ? 1 : options.warmup,
+              exact ? 1 : (sweep && options.sweep_repetitions > 0 ? options.sweep_repetitions : options.repetitions),
               [&] { return method->run(gpu, output, &message); }, [&] { method->before_run(gpu); },
               [&] { method->after_run(gpu, output); });
           if (t.samples == 0) throw std::runtime_error(tag + " " + config.kind + ": " + message);
@@ -360,7 +464,8 @@ int run(const Options& options) {
           row.passes = method->passes();
           const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
           e = grid.compare(result);
-          row.halo_energy = grid.halo(result, input_image);
+          grid.score_regions(result, &row);
+          row.halo_energy = grid.halo(result);
           if (pictured && is_pictured_method(row)) {
             const std::string stem = options.out + "/" + picture_stem(row);
             write_tonemapped_png(stem + ".png", result);
@@ -380,8 +485,10 @@ int run(const Options& options) {
         row.ssim = e.ssim;
         row.translucent_pixels = count(scene.mask);
         rows.push_back(row);
-        std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), rel. RMSE %.4g, SSIM %.4f%s%s\n", done, total, tag.c_str(),
-                    method_label(row).c_str(), row.time_ms, row.time_ratio_to_copy, row.relative_rmse, row.ssim,
+        std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), miss interior %s (no scattering: 1), rel. RMSE %.4g, "
+                    "SSIM %.4f%s%s\n",
+                    done, total, tag.c_str(), method_label(row).c_str(), row.time_ms, row.time_ratio_to_copy,
+                    miss_text(row.interior().miss).c_str(), row.relative_rmse, row.ssim,
                     path_ran.empty() ? "" : ", path ", path_ran.c_str());
         std::fflush(stdout);
       }
@@ -399,19 +506,23 @@ int run(const Options& options) {
   }
 
   write_csv(options.out + "/results.csv", rows);
+  write_miss_csv(options.out + "/miss.csv", rows);
   write_json(options.out + "/results.json", info, rows);
   write_markdown_table(options.out + "/results.md", info, rows);
   bool plots_drawn = false;
   const std::vector<std::string> plots = write_pareto_plots(options.out, rows, &plots_drawn);
+  const std::vector<std::string> footprint_plots = write_footprint_plots(options.out, rows);
+  const std::vector<std::string> band_plots = write_band_pareto_plots(options.out, rows);
   if (!options.doc.empty()) {
-    write_results_document(options.doc, options.out, info, rows, checks, plots);
+    write_results_document(options.doc, options.out, info, rows, checks, plots, footprint_plots, band_plots);
     std::ofstream doc(options.doc, std::ios::app);
     const std::string prefix = std::filesystem::relative(std::filesystem::absolute(options.out),
                                                          std::filesystem::absolute(options.doc).parent_path())
                                    .generic_string();
     write_msaa_section(doc, msaa_rows, prefix.empty() || prefix == "." ? "" : prefix + "/");
   }
-  std::printf("sss_bench: %zu rows, %zu plots in %s%s\n", rows.size(), plots.size(), options.out.c_str(),
+  std::printf("sss_bench: %zu rows, %zu plots in %s%s\n", rows.size(),
+              plots.size() + footprint_plots.size() + band_plots.size(), options.out.c_str(),
               plots_drawn ? "" : " (gnuplot not found: their .gp scripts are there to draw them)");
   set_timer_preamble({});
   busy.reset();

@@ -121,6 +121,42 @@ double relative_rmse(const RgbImage& a, const RgbImage& r, const uint8_t* mask) 
   return std::sqrt(err / ref);
 }
 
+namespace {
+
+double share(double undone, double needed) {
+  if (needed > 0.0) return std::sqrt(undone / needed);
+  return undone > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+}  // namespace
+
+double Miss::worst_channel() const { return std::max({channel[0], channel[1], channel[2]}); }
+
+Miss miss_share(const RgbImage& result, const RgbImage& reference, const RgbImage& input, const uint8_t* mask) {
+  check_pair(result, reference);
+  check_pair(input, reference);
+  std::array<double, 3> undone{}, needed{};
+  Miss m;
+  for (std::size_t i = 0; i < reference.rgb.size() / 3; ++i) {
+    if (!selected(mask, i)) continue;
+    ++m.pixels;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double r = reference.rgb[i * 3 + c];
+      undone[c] += (result.rgb[i * 3 + c] - r) * (result.rgb[i * 3 + c] - r);
+      needed[c] += (input.rgb[i * 3 + c] - r) * (input.rgb[i * 3 + c] - r);
+    }
+  }
+  if (m.pixels == 0) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    m.channel = {nan, nan, nan};
+    m.pooled = nan;
+    return m;
+  }
+  for (std::size_t c = 0; c < 3; ++c) m.channel[c] = share(undone[c], needed[c]);
+  m.pooled = share(undone[0] + undone[1] + undone[2], needed[0] + needed[1] + needed[2]);
+  return m;
+}
+
 double max_abs_error(const RgbImage& a, const RgbImage& r, const uint8_t* mask) {
   check_pair(a, r);
   double worst = 0.0;

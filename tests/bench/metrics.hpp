@@ -26,6 +26,16 @@
 //     f(x) = x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), clamped to [0, 1],
 //   then the sRGB transfer function (12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055).
 //   Negative inputs clamp to 0.
+// - miss: the share of the needed change that a method leaves undone,
+//     miss = ‖result − reference‖ / ‖input − reference‖   (L2 norms over the selected pixels)
+//   per channel and pooled over R, G and B. 0: the result is the reference; 1: as far from it as
+//   the unfiltered input (doing nothing); above 1: worse than doing nothing. Unlike relative RMSE,
+//   which divides by the reference's own energy (large: most of the light does not move), it says
+//   how much of the filter's job was done. With no pixel selected it is NaN (not measured). Where
+//   the input already is the reference (nothing to change: light that stays inside its pixel, a
+//   uniform area, to the reference's float precision) a result equal to it misses 0 and any other
+//   +inf: no floor is put under the needed change, because any floor large enough to matter also
+//   hides a channel made many times worse than the input where it needed a small change.
 #pragma once
 
 #include <array>
@@ -60,7 +70,16 @@ struct ErrorMetrics {
   std::size_t pixels = 0;  // selected pixels
 };
 
+// The metrics/miss definition above: channel[c] per channel, pooled over the three.
+struct Miss {
+  std::array<double, 3> channel{};
+  double pooled = 0.0;
+  std::size_t pixels = 0;  // selected pixels
+  double worst_channel() const;  // the largest of channel[] (NaN when nothing was selected)
+};
+
 // The functions below throw std::invalid_argument when the sizes differ or are not positive.
+Miss miss_share(const RgbImage& result, const RgbImage& reference, const RgbImage& input, const uint8_t* mask);
 // `mask`: width · height bytes, non-zero selects; nullptr selects all.
 double relative_rmse(const RgbImage& a, const RgbImage& reference, const uint8_t* mask);
 double max_abs_error(const RgbImage& a, const RgbImage& reference, const uint8_t* mask);

@@ -2,6 +2,7 @@
 
 #include <getopt.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -38,6 +39,12 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --msaa WxH            size of the MSAA study (sphere and depth-step at 4 samples; the reference
                         is made at 2W x 2H); default: mode's
   --no-msaa             skip the MSAA study
+  --footprints f,f,...  the footprint sweep's millimetres per pixel (default: 7 log-spaced values
+                        from 0.05 to 2); "" skips the sweep
+  --sweep-scenes a,b,.. the sweep's scenes (default: every plane-* scene)
+  --sweep-reps N        timed frames of each sweep row (quick: 1; full: --reps)
+  --sweep-interior N    pixels of the sweep frames' interior side, at least (default 64; and at
+                        least 8 mm, so that the 6 mm disk is inside it)
   --gpu-preload-ms MS   on a GPU (timer queries), keep it busy this long before each timed frame so
                         the frame's commands are queued when it starts (gpu_busy.hpp; default 2,
                         0: time from an idle GPU, CPU issue gaps included)
@@ -73,6 +80,19 @@ std::vector<std::string> split_names(const std::string& text) {
   return names;
 }
 
+std::vector<double> parse_footprints(const std::string& text) {
+  std::vector<double> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !(v >= 0.005 && v <= 50.0)) usage_error("bad footprint (mm per pixel, 0.005..50): " + item);
+    values.push_back(v);
+  }
+  return values;
+}
+
 std::pair<int, int> parse_size(const std::string& text) {
   int w = 0, h = 0;
   char x = 0;
@@ -93,6 +113,8 @@ void apply_mode_defaults(Options* o) {
     o->family_taps = {9};
     o->warmup = 1;
     o->repetitions = 3;
+    // The sweep's many frames are there for their errors; in CI one timed frame each is enough.
+    o->sweep_repetitions = 1;
     // Odd sizes put the canonical scenes' straight edges inside pixels (even ones land them on
     // pixel borders, where every sample agrees); 130x98 for the reference stays on the CPU.
     o->msaa_size = {65, 49};
@@ -113,8 +135,15 @@ void apply_mode_defaults(Options* o) {
 
 }  // namespace
 
+std::vector<double> default_sweep_footprints() {
+  std::vector<double> footprints;
+  for (int k = 0; k <= 6; ++k) footprints.push_back(0.05 * std::pow(40.0, k / 6.0));
+  return footprints;
+}
+
 Options parse_options(int argc, char** argv) {
   Options o;
+  o.footprints = default_sweep_footprints();
   for (int i = 0; i < argc; ++i) o.command_line += (i ? " " : "") + std::string(argv[i]);
   // The mode first, so explicit flags override its defaults wherever they stand.
   for (int i = 1; i < argc; ++i) {
@@ -135,6 +164,8 @@ Options parse_options(int argc, char** argv) {
       {"doc", required_argument, nullptr, 'd'},   {"no-heat-maps", no_argument, nullptr, 'H'},
       {"msaa", required_argument, nullptr, 'M'},  {"no-msaa", no_argument, nullptr, 'N'},
       {"gpu-preload-ms", required_argument, nullptr, 'P'},
+      {"footprints", required_argument, nullptr, 'p'},  {"sweep-scenes", required_argument, nullptr, 'W'},
+      {"sweep-interior", required_argument, nullptr, 'I'},  {"sweep-reps", required_argument, nullptr, 'X'},
       {"help", no_argument, nullptr, 'h'},        {nullptr, 0, nullptr, 0}};
   int c = 0;
   while ((c = getopt_long(argc, argv, "", long_options, nullptr)) != -1) {
@@ -199,6 +230,13 @@ Options parse_options(int argc, char** argv) {
         }
         break;
       }
+      case 'p': o.footprints = arg.empty() ? std::vector<double>{} : parse_footprints(arg); break;
+      case 'W': o.sweep_scenes = split_names(arg); break;
+      case 'I':
+        o.sweep_interior_px = parse_ints(arg, "sweep interior")[0];
+        if (o.sweep_interior_px < 8 || o.sweep_interior_px > 4096) usage_error("--sweep-interior must be in [8, 4096]");
+        break;
+      case 'X': o.sweep_repetitions = parse_ints(arg, "sweep repetition count")[0]; break;
       case 'h': std::fputs(kUsage, stdout); std::exit(0);
       default: usage_error("unknown option");
     }

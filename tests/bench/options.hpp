@@ -30,8 +30,18 @@ struct Options {
   double gpu_preload_ms = 2.0;                      // GpuBusy before each timed frame on a GPU; 0: none
   bool msaa = true;                                 // the MSAA study (msaa_study.hpp)
   std::pair<int, int> msaa_size = {65, 49};         // its filtered size (the reference is made at 2x)
+  // The footprint sweep (scenes.hpp: footprint_scene_names): each scene at each footprint, a frame
+  // of sweep_interior_px plus the profile's reach on every side. Empty footprints: no sweep.
+  std::vector<double> footprints;                   // millimetres per pixel (default: sweep_footprints())
+  std::vector<std::string> sweep_scenes;            // empty: every sweep scene
+  int sweep_interior_px = 64;
+  int sweep_repetitions = 0;                        // timed frames of the sweep's rows; 0: `repetitions`
   std::string command_line;
 };
+
+// The default footprints: seven log-spaced values from 0.05 to 2 mm per pixel (a 4K close-up of a
+// face to a crowd), 0.05 · 40^(k/6).
+std::vector<double> default_sweep_footprints();
 
 // Parses argv (after the mode's defaults); prints usage and exits on --help or bad input.
 Options parse_options(int argc, char** argv);

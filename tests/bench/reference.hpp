@@ -30,6 +30,11 @@ struct Reference {
 // receivers of a `stride` grid, compared with the CPU at `spot_checks` of those receivers.
 Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_pixels, int spot_checks, int stride);
 
+// The footprint sweep's planes (scene.footprint_mm > 0): the separable exact reference
+// (math/plane_reference.hpp) in double, every pixel, with the footprint the 2D reference would
+// derive from the scene's projection and depth.
+Reference make_plane_reference(const Scene& scene, const GpuScene& gpu);
+
 // The pixels where a reference holds values: the scene's mask, on the stride grid.
 bool on_grid(int x, int y, int stride);
 

@@ -1,5 +1,6 @@
 #include "report.hpp"
 
+#include "accuracy_report.hpp"
 #include "timing.hpp"
 
 #include <algorithm>
@@ -68,11 +69,7 @@ std::string relative(const std::string& file, const std::string& document) {
   return fs::relative(fs::absolute(file), fs::absolute(fs::path(document).parent_path())).generic_string();
 }
 
-void row_line(std::ofstream& out, const ResultRow& r) {
-  out << "| " << method_label(r) << " | " << r.passes << " | " << fmt(r.time_ms, "%.2f") << " | "
-      << fmt(r.time_ratio_to_copy, "%.2f") << " | " << fmt(r.relative_rmse, "%.4f") << " | "
-      << fmt(r.p99_abs_error, "%.4f") << " | " << fmt(r.max_abs_error, "%.3f") << " | " << fmt(r.ssim, "%.4f") << " |\n";
-}
+void row_line(std::ofstream& out, const ResultRow& r) { write_error_row(out, r); }
 
 }  // namespace
 
@@ -109,11 +106,13 @@ double heat_map_scale(const RgbImage& reference, const uint8_t* mask) {
 
 void write_results_document(const std::string& path, const std::string& out_dir, const RunInfo& info,
                             const std::vector<ResultRow>& rows, const std::vector<ReferenceCheck>& checks,
-                            const std::vector<std::string>& plots) {
+                            const std::vector<std::string>& plots, const std::vector<std::string>& footprint_plots,
+                            const std::vector<std::string>& band_plots) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   int width = 0, height = 0, small_width = 1 << 30, small_height = 0;
   for (const ResultRow& r : rows) {
+    if (r.sweep) continue;  // the footprint sweep's frames have sizes of their own
     if (r.width > width) width = r.width, height = r.height;
     if (r.width < small_width) small_width = r.width, small_height = r.height;
   }
@@ -138,7 +137,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "full-screen copy measured in the same run (`× copy`), which makes numbers from different machines "
          "comparable.\n"
       << "- Error: against the " << info.reference
-      << ", over the translucent pixels: relative RMSE in linear light, 99th-percentile and maximum absolute error, and "
+      << ": the share of the needed change a method misses (`miss`, per region and channel; next section), and over "
+         "the translucent pixels relative RMSE in linear light, 99th-percentile and maximum absolute error, and "
          "SSIM of the tone-mapped images (tests/bench/metrics.hpp). Where the reference comes from the GL, it is "
          "computed for receivers on a 1-in-stride² grid (stride in the `reference_stride` column of results.csv) "
          "and every metric is taken on that grid (SSIM on the decimated images).\n"
@@ -156,9 +156,12 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "same reference): [benchmarks/preintegrated.md](benchmarks/preintegrated.md), written by "
          "`sss_bench_preintegrated` in the same script.\n\n";
 
+  write_error_definitions(out, info);
+  write_footprint_sweep(out, rows, footprint_plots, band_plots, path);
+
   // The head close-up table the issue asks for.
-  out << "## Head close-up at " << width << "×" << height << "\n\n"
-      << "| method | passes | ms | × copy | rel. RMSE | p99 abs | max abs | SSIM |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  out << "\n## Head close-up at " << width << "×" << height << "\n\n" << kErrorTableHeader;
+  if (const ResultRow* r = find(rows, "head-close", width, height, "no-scattering", 0, false)) row_line(out, *r);
   for (int taps : {9, 17, 25, 33}) {
     if (const ResultRow* r = find(rows, "head-close", width, height, "separable", taps, true)) row_line(out, *r);
   }
@@ -205,9 +208,10 @@ void write_results_document(const std::string& path, const std::string& out_dir,
   ratio_line("separable 33 / 9 taps, close-up (Figure 5)", kPaperTaps33 / kPaperTaps9, s33, s9);
   ratio_line("separable 17, mid / close (Table 2)", kPaperSeparableMid / kPaperSeparableClose, s17_mid, s17_close);
   if (s17_close != nullptr && g_close != nullptr) {
-    out << "\nError at the close-up: the separable filter with 17 taps is at " << fmt(s17_close->relative_rmse, "%.4f")
-        << " relative RMSE (SSIM " << fmt(s17_close->ssim, "%.4f") << "), the sum of Gaussians at "
-        << fmt(g_close->relative_rmse, "%.4f") << " (SSIM " << fmt(g_close->ssim, "%.4f")
+    out << "\nError at the close-up: the separable filter with 17 taps misses " << miss_text(s17_close->interior().miss)
+        << " of the needed change on the interior (relative RMSE " << fmt(s17_close->relative_rmse, "%.4f") << ", SSIM "
+        << fmt(s17_close->ssim, "%.4f") << "), the sum of Gaussians " << miss_text(g_close->interior().miss) << " ("
+        << fmt(g_close->relative_rmse, "%.4f") << ", SSIM " << fmt(g_close->ssim, "%.4f")
         << "). The sum of Gaussians convolves with d'Eon's profile itself, up to its screen-space sampling; the "
            "separable filter uses the paper's Table 1 kernel (width, strength, falloff fitted by the authors in their "
            "own units), here at the physical width of a metric scene, so part of its error is that fit's and not "
@@ -246,8 +250,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "fastest path (`SSS_PATH_AUTO`: timed on GPUs, the masked fragment path on software rasterisers). `% of "
            "close-up` is each time over `separable-in-place` on the head close-up at this size; `separable` is the "
            "library into a separate output, the rows of the tables above.\n\n"
-           "| scene | method | ms | × copy | % of close-up | rel. RMSE | p99 abs | SSIM |\n"
-           "|---|---|---:|---:|---:|---:|---:|---:|\n";
+           "| scene | method | ms | × copy | % of close-up | miss interior | rel. RMSE | p99 abs | SSIM |\n"
+           "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const char* scene : {"head-close", "head-mid", "head-far", "empty"}) {
       for (const char* method : {"separable", "separable-in-place", "separable-adaptive", "separable-adaptive-region",
                                  "separable-masked", "separable-masked-adaptive-region", "separable-compute",
@@ -256,7 +260,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
         if (r == nullptr) continue;
         out << "| " << scene << " | " << method << " | " << fmt(r->time_ms, "%.2f") << " | "
             << fmt(r->time_ratio_to_copy, "%.2f") << " | " << fmt(100.0 * r->time_ms / base->time_ms, "%.1f") << " | "
-            << fmt(r->relative_rmse, "%.4f") << " | " << fmt(r->p99_abs_error, "%.4f") << " | " << fmt(r->ssim, "%.4f")
+            << miss_text(r->interior().miss) << " | " << fmt(r->relative_rmse, "%.4f") << " | "
+            << fmt(r->p99_abs_error, "%.4f") << " | " << fmt(r->ssim, "%.4f")
             << " |\n";
       }
     }
@@ -355,7 +360,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "| scene | size | separable 17, follow-surface | separable 17, no depth test | cross-bilateral |\n"
          "|---|---|---:|---:|---:|\n";
   for (const ResultRow& r : rows) {
-    if (r.method != "separable" || r.taps != 17 || !r.follow_surface || r.translucent_pixels == 0) continue;
+    if (r.sweep || r.method != "separable" || r.taps != 17 || !r.follow_surface || r.translucent_pixels == 0) continue;
     const ResultRow* none = find(rows, r.scene, r.width, r.height, "separable", 17, false);
     const ResultRow* cbf = nullptr;
     for (const ResultRow& c : rows) {
@@ -369,7 +374,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
 
   // Tilted planes: what the per-axis footprint correction buys.
   out << "\n## Tilted planes\n\nThe shadow-edge plane turned 30°, 60° and 80° away from the view direction "
-         "(at 80° part of the frame misses it): relative RMSE against the exact reference. The cross-bilateral "
+         "(at 80° part of the frame misses it): the interior miss (no scattering: 1) and, after the slash, relative "
+         "RMSE against the exact reference. The cross-bilateral "
          "mode shrinks its footprint by the cosine per axis and weighs taps by the screen-parallel distance and "
          "the depth difference; the separable filter steps by depth only. The last column is the cross-bilateral "
          "mode with the cosine correction switched off (a zero normal texture), at the same taps: the difference "
@@ -387,10 +393,11 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       if (c.method == "cross-bilateral" && cbf == nullptr) cbf = &c;
       if (c.method == "cross-bilateral-no-tilt" && flat == nullptr) flat = &c;
     }
-    out << "| " << r.scene << " | " << r.width << "×" << r.height << " | " << fmt(r.relative_rmse, "%.4f") << " | "
-        << (none != nullptr ? fmt(none->relative_rmse, "%.4f") : "–") << " | "
-        << (cbf != nullptr ? fmt(cbf->relative_rmse, "%.4f") : "–") << " | "
-        << (flat != nullptr ? fmt(flat->relative_rmse, "%.4f") : "–") << " |\n";
+    const auto cell = [](const ResultRow* x) {
+      return x != nullptr ? miss_text(x->interior().miss) + " / " + fmt(x->relative_rmse, "%.4f") : std::string("–");
+    };
+    out << "| " << r.scene << " | " << r.width << "×" << r.height << " | " << cell(&r) << " | " << cell(none) << " | "
+        << cell(cbf) << " | " << cell(flat) << " |\n";
   }
 
   // The kernel families (sss_settings.kernel) side by side where they differ most: the white dot
@@ -408,10 +415,10 @@ void write_results_document(const std::string& path, const std::string& out_dir,
         << small_width << "×" << small_height << ", next to the eq. (1) kernel with the same taps (`kernel-*` rows; "
            "passes = 2 × terms). Every tap count is in the Pareto plots and the table of every row.\n";
     for (const char* scene : {"dot", "edge-0", "edge-30", "head-close"}) {
-      out << "\n**" << scene << "**\n\n| method | passes | ms | × copy | rel. RMSE | p99 abs | max abs | SSIM |\n"
-             "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+      out << "\n**" << scene << "**\n\n" << kErrorTableHeader;
+      if (const ResultRow* r = find(rows, scene, small_width, small_height, "no-scattering", 0, false)) row_line(out, *r);
       for (const ResultRow& r : rows) {
-        if (r.scene != scene || r.width != small_width || r.taps != family_taps || !r.follow_surface) continue;
+        if (r.sweep || r.scene != scene || r.width != small_width || r.taps != family_taps || !r.follow_surface) continue;
         if (r.method == "separable" || r.method.rfind("kernel-", 0) == 0) row_line(out, r);
       }
     }
@@ -419,7 +426,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
 
   if (!plots.empty()) {
     out << "\n## Error against time (Pareto plots)\n\nOne curve per method; the label on each point is its taps "
-           "per pass.\n\n";
+           "per pass. Left: relative RMSE over every translucent pixel; right: the interior `miss` (the dashed line "
+           "is doing nothing).\n\n";
     for (const std::string& plot : plots) out << "![" << fs::path(plot).stem().string() << "](" << relative(plot, path) << ")\n\n";
   }
 
@@ -450,12 +458,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
     }
   }
 
-  out << "\n## Every row\n\n| scene | size | method | passes | ms | × copy | rel. RMSE | p99 abs | max abs | SSIM |\n"
-         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const ResultRow& r : rows) {
-    out << "| " << r.scene << " | " << r.width << "×" << r.height << " ";
-    row_line(out, r);
-  }
+  write_scene_tables(out, rows);
 }
 
 }  // namespace sss_bench

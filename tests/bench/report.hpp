@@ -1,5 +1,5 @@
-// The results document (docs/benchmarks.md): how it was measured, the head close-up table the
-// issue asks for, the comparison with the paper's Table 2 and Figure 5, Pareto plots, heat maps,
+// The results document (docs/benchmarks.md): how it was measured, how errors are measured and the
+// footprint sweep (accuracy_report.hpp), the head close-up table the issue asks for, the comparison with the paper's Table 2 and Figure 5, Pareto plots, heat maps,
 // the reference's own check, and every row.
 #pragma once
 
@@ -25,6 +25,7 @@ double heat_map_scale(const RgbImage& reference, const uint8_t* mask);
 
 void write_results_document(const std::string& path, const std::string& out_dir, const RunInfo& info,
                             const std::vector<ResultRow>& rows, const std::vector<ReferenceCheck>& checks,
-                            const std::vector<std::string>& plots);
+                            const std::vector<std::string>& plots, const std::vector<std::string>& footprint_plots,
+                            const std::vector<std::string>& band_plots);
 
 }  // namespace sss_bench

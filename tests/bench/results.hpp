@@ -3,6 +3,8 @@
 // gnuplot when it is installed.
 #pragma once
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,11 +18,27 @@ struct RunInfo {
   int state_calls = 0, state_batches = 0;
   // The GPU spin before each timed frame (gpu_busy.hpp), as calibrated; 0: none.
   double gpu_preload_ms = 0.0;
+  // The profile's reach (regions.hpp: profile_reach_mm), which the regions are measured with.
+  double reach_mm = 0.0;
+};
+
+// metrics.hpp's miss over one region of regions.hpp: pooled and per channel (R, G, B), NaN where
+// the region holds no pixel.
+struct RegionScore {
+  double miss = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 3> miss_channel{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                                     std::numeric_limits<double>::quiet_NaN()};
+  int pixels = 0;
 };
 
 struct ResultRow {
   std::string scene;
   int width = 0, height = 0;
+  // Millimetres per pixel: the footprint sweep's (its planes face the camera), or the median over
+  // the translucent pixels of their footprint on a plane facing the camera at their depth; 0 when
+  // nothing is translucent.
+  double footprint_mm = 0.0;
+  bool sweep = false;  // one of the footprint sweep's plane-* scenes
   std::string method;
   int taps = 0;
   bool follow_surface = false;
@@ -39,6 +57,11 @@ struct ResultRow {
   // silhouette (its kernel is cut by the edge) where a normalised filter keeps the input, so
   // `result − reference` alone would count that as a halo. 0: none, or no such pixels.
   double halo_energy = 0.0;
+  // miss in each region of regions.hpp (interior, silhouette, border), and relative RMSE over the
+  // interior alone (relative_rmse above is over every translucent pixel).
+  std::array<RegionScore, 3> region;
+  double relative_rmse_interior = std::numeric_limits<double>::quiet_NaN();
+  const RegionScore& interior() const { return region[0]; }
 };
 
 constexpr int kHaloBand = 4;
@@ -49,13 +72,25 @@ const std::vector<std::string>& csv_columns();
 void write_csv(const std::string& path, const std::vector<ResultRow>& rows);
 void write_json(const std::string& path, const RunInfo& info, const std::vector<ResultRow>& rows);
 void write_markdown_table(const std::string& path, const RunInfo& info, const std::vector<ResultRow>& rows);
-// One PNG per (scene, resolution) with translucent pixels: relative RMSE against time, a curve per
-// method (and per follow-surface setting), drawn by gnuplot. Returns the PNG files; `*drawn` says
+// One PNG per (scene, resolution) with translucent pixels, outside the footprint sweep: relative
+// RMSE and interior miss against time, a curve per method (and per follow-surface setting), drawn
+// by gnuplot. Returns the PNG files; `*drawn` says
 // whether gnuplot drew them (when it is missing, their .dat and .gp files are left for a later
 // `gnuplot FILE.gp` run from the same working folder).
 std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows,
                                             bool* drawn = nullptr);
 
+// The footprint sweep: interior miss against millimetres per pixel, one curve per method
+// configuration, one PNG per sweep scene and one of their median ("footprint-SCENE.png").
+std::vector<std::string> write_footprint_plots(const std::string& directory, const std::vector<ResultRow>& rows);
+// Per footprint band (sweep_summary.hpp): median interior miss against median time (× copy), a
+// curve per method with a point per tap count ("pareto-band-NAME.png").
+std::vector<std::string> write_band_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows);
+
 std::string method_label(const ResultRow& row);  // "separable 17 taps, follow-surface"
+// A miss value for a table: "0.123", "–" for NaN (nothing measured), "∞" for infinity.
+std::string miss_text(double miss);
+// The rows' results for the regression guard (miss.csv): the key columns and every miss value.
+void write_miss_csv(const std::string& path, const std::vector<ResultRow>& rows);
 
 }  // namespace sss_bench

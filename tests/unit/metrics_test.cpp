@@ -118,6 +118,53 @@ TEST(Metrics, OnlySelectedPixelsCount) {
   EXPECT_EQ(e.ssim, 1.0);
 }
 
+// miss (metrics.hpp): 1 for the input itself, 0 for the reference, in every channel and pooled;
+// the halfway image misses half; per channel it sees what the pooled value averages away.
+TEST(Metrics, MissIsOneForTheInputAndZeroForTheReference) {
+  const RgbImage reference = gradient_image(32, 24);
+  RgbImage input = reference;
+  for (std::size_t i = 0; i < input.rgb.size(); ++i) input.rgb[i] += 0.1 * std::sin(0.7 * static_cast<double>(i));
+  const auto nothing = sss_bench::miss_share(input, reference, input, nullptr);
+  const auto exact = sss_bench::miss_share(reference, reference, input, nullptr);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(nothing.channel[c], 1.0) << c;
+    EXPECT_EQ(exact.channel[c], 0.0) << c;
+  }
+  EXPECT_EQ(nothing.pooled, 1.0);
+  EXPECT_EQ(exact.pooled, 0.0);
+  EXPECT_EQ(nothing.pixels, 32u * 24u);
+
+  RgbImage halfway = reference;
+  for (std::size_t i = 0; i < halfway.rgb.size(); ++i) halfway.rgb[i] = 0.5 * (input.rgb[i] + reference.rgb[i]);
+  EXPECT_NEAR(sss_bench::miss_share(halfway, reference, input, nullptr).pooled, 0.5, 1e-12);
+
+  // Only blue made worse, three times as far as the input: pooled ~1, blue 3, the others 0.
+  RgbImage blue_worse = reference;
+  for (std::size_t i = 2; i < blue_worse.rgb.size(); i += 3) blue_worse.rgb[i] = reference.rgb[i] + 3.0 * (input.rgb[i] - reference.rgb[i]);
+  const auto m = sss_bench::miss_share(blue_worse, reference, input, nullptr);
+  EXPECT_EQ(m.channel[0], 0.0);
+  EXPECT_NEAR(m.channel[2], 3.0, 1e-12);
+  EXPECT_NEAR(m.worst_channel(), 3.0, 1e-12);
+  EXPECT_LT(m.pooled, 3.0);
+}
+
+TEST(Metrics, MissWithNothingToChangeOrNothingSelected) {
+  const RgbImage reference = gradient_image(8, 8);
+  RgbImage off = reference;
+  off.rgb[0] += 0.5;
+  // The input is already the reference: a result equal to it misses nothing, any other infinitely much.
+  EXPECT_EQ(sss_bench::miss_share(reference, reference, reference, nullptr).pooled, 0.0);
+  EXPECT_TRUE(std::isinf(sss_bench::miss_share(off, reference, reference, nullptr).pooled));
+  const std::vector<uint8_t> none(64, 0);
+  const auto empty = sss_bench::miss_share(off, reference, off, none.data());
+  EXPECT_TRUE(std::isnan(empty.pooled));
+  EXPECT_EQ(empty.pixels, 0u);
+  // Only the selected pixels count: the changed pixel left out, nothing is left to miss.
+  std::vector<uint8_t> mask(64, 1);
+  mask[0] = 0;
+  EXPECT_EQ(sss_bench::miss_share(off, reference, off, mask.data()).pooled, 0.0);
+}
+
 TEST(Metrics, ToneMapAndRamp) {
   EXPECT_EQ(sss_bench::tone_map(0.0), 0.0);
   EXPECT_EQ(sss_bench::tone_map(-1.0), 0.0);

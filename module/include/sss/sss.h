@@ -109,8 +109,8 @@ typedef struct sss_create_desc {
  *  nearly all such a pixel's light in it); above that, the pixel runs eq. (1) with 17 or 33 taps
  *  over the same range, the fewest whose mean spacing stays within an eighth of a pixel, up to
  *  `samples`; a pixel that needs more runs the full kernel (with the default 17 taps: pass-through
- *  or the full kernel). The error stays the fixed kernel's (benchmark: the far head shot at 1080p
- *  gives 0.01301 relative RMSE either way). A distant head pays for few taps or none instead of
+ *  or the full kernel). The error stays the fixed kernel's (docs/benchmarks.md, "Skipping what a
+ *  frame does not need", compares the two on the head shots). A distant head pays for few taps or none instead of
  *  `samples`; a close-up at full resolution is unchanged. Applies to eq. (1)
  *  (SSS_KERNEL_SEPARABLE) without jitter; other families and jittered kernels run every tap, and
  *  the cross-bilateral mode is not affected. Default off (the paper's fixed taps). */

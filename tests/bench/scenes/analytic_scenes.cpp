@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "scene_math.hpp"
 
@@ -120,6 +121,68 @@ Scene make_edge_scene(const std::string& name, double degrees_from_vertical, int
       const double c = half_plane_coverage(i - 0.5 * width, j - 0.5 * height, nx, ny);
       const double e = kDark + (kLit - kDark) * c;
       set_pixel(s, camera, i, j, e, e, e, true, kPlaneDistance);
+    }
+  return s;
+}
+
+// A plane facing the camera at the view distance where one pixel measures `footprint_mm`, with the
+// same 30-degree camera as the other scenes (near and far planes at half and twice the distance).
+static Scene blank_plane_scene(const std::string& name, double footprint_mm, int width, int height,
+                               PinholeCamera* camera, double* distance) {
+  const double tan_half = std::tan(0.5 * kFovyDegrees * kPi / 180.0);
+  *distance = footprint_mm * 1e-3 * height / (2.0 * tan_half);  // metres
+  *camera = make_pinhole(width, height, kFovyDegrees * kPi / 180.0, 0.5 * *distance, 2.0 * *distance);
+  Scene s;
+  s.name = name;
+  s.width = width;
+  s.height = height;
+  s.projection = to_float(camera->projection);
+  s.footprint_mm = footprint_mm;
+  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+  s.irradiance.assign(n * 4, 0.0f);
+  s.distance.assign(n, 0.0f);
+  s.window_depth.assign(n, 0.0f);
+  s.mask.assign(n, 0);
+  return s;
+}
+
+// A deterministic value in [0, 1) per pixel (an integer hash: no pattern at any scale).
+static double pixel_hash(int i, int j) {
+  uint32_t h = static_cast<uint32_t>(i) * 0x8da6b343u ^ static_cast<uint32_t>(j) * 0xd8163841u;
+  h ^= h >> 16;
+  h *= 0x7feb352du;
+  h ^= h >> 15;
+  h *= 0x846ca68bu;
+  h ^= h >> 16;
+  return static_cast<double>(h) / 4294967296.0;
+}
+
+Scene make_footprint_plane_scene(const std::string& name, double footprint_mm, int width, int height) {
+  PinholeCamera camera;
+  double distance = 0.0;
+  Scene s = blank_plane_scene(name, footprint_mm, width, height, &camera, &distance);
+  // The content is placed in millimetres on the plane (the same light at every footprint), centred
+  // on the pixel nearest the image centre; the albedo detail is per pixel (a texture at the mip
+  // level a renderer samples it at: always about one texel per pixel).
+  const double cx = std::floor(0.5 * width) + 0.5, cy = std::floor(0.5 * height) + 0.5;
+  double edge_degrees = -1.0, disk_mm = 0.0;
+  if (name == "plane-edge-0") edge_degrees = 0.0;
+  else if (name == "plane-edge-20") edge_degrees = 20.0;
+  else if (name == "plane-edge-45") edge_degrees = 45.0;
+  else if (name == "plane-spot") disk_mm = kSpotRadiusMm;
+  else if (name == "plane-disk") disk_mm = kDiskRadiusMm;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      double e = kLit;
+      if (edge_degrees >= 0.0) {
+        const double t = edge_degrees * kPi / 180.0;
+        e = kDark + (kLit - kDark) * half_plane_coverage(i - cx, j - cy, std::cos(t), -std::sin(t));
+      } else if (disk_mm > 0.0) {
+        e = kDark + (kLit - kDark) * disk_coverage(i - cx, j - cy, disk_mm / footprint_mm);
+      } else {
+        e = kLit * (kAlbedoLow + (1.0 - kAlbedoLow) * pixel_hash(i, j));
+      }
+      set_pixel(s, camera, i, j, e, e, e, true, distance);
     }
   return s;
 }

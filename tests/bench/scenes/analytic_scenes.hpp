@@ -22,6 +22,9 @@ Scene make_depth_step_scene(int width, int height);
 // Pixels whose ray misses the plane (it turns away at 80°) are a non-translucent backdrop.
 Scene make_tilted_plane_scene(const std::string& name, double degrees, int width, int height);
 Scene make_empty_scene(int width, int height);
+// The footprint sweep's planes (scenes.hpp: footprint_scene_names), facing the camera at the
+// distance where a pixel measures footprint_mm.
+Scene make_footprint_plane_scene(const std::string& name, double footprint_mm, int width, int height);
 
 // The cameras, shared with the tests and the report (metres, vertical field of view 30 degrees).
 constexpr double kFovyDegrees = 30.0;
@@ -35,5 +38,8 @@ constexpr double kStepNearDistance = 0.3;       // depth step: the square
 constexpr double kStepHalfSize = 0.04;
 constexpr double kStepFarDistance = 0.6;        // depth step: the background, 0.3 m behind
 constexpr double kEmptyDistance = 1.0;
+constexpr double kSpotRadiusMm = 0.5;    // plane-spot: a small bright spot (the dot's)
+constexpr double kDiskRadiusMm = 3.0;    // plane-disk
+constexpr double kAlbedoLow = 0.25;      // plane-albedo: per-pixel albedo in [0.25, 1)
 
 }  // namespace sss_bench::detail

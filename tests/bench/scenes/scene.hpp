@@ -11,7 +11,8 @@ namespace sss_bench {
 
 struct Scene {
   std::string name;                 // "dot", "edge-0", "edge-30", "edge-45", "sphere", "depth-step",
-                                    // "tilted-30/60/80", "head-close", "head-mid", "head-far", "empty"
+                                    // "tilted-30/60/80", "head-close", "head-mid", "head-far", "empty",
+                                    // the footprint sweep's "plane-*"
   int width = 0, height = 0;
   std::vector<float> irradiance;    // RGBA, row 0 at the bottom (GL order); linear diffuse irradiance
                                     // (albedo included); alpha = SSS strength: 1 translucent, 0 not
@@ -22,6 +23,9 @@ struct Scene {
   std::vector<uint8_t> mask;        // 1 where translucent (alpha > 0), else 0
   std::array<float, 16> projection{};  // column-major GL projection matrix used to make the scene
   float world_units_per_mm = 0.001f;   // scene units are metres
+  // The footprint sweep's planes (plane-*): the millimetres one pixel measures on the plane, which
+  // faces the camera, so every pixel's footprint is this square; 0 for every other scene.
+  double footprint_mm = 0.0;
 };
 
 }  // namespace sss_bench

@@ -1,5 +1,6 @@
 #include "scenes.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "analytic_scenes.hpp"
@@ -68,6 +69,24 @@ Scene make_scene(const std::string& name, int width, int height) {
   if (name == "sphere-20mm") return detail::make_small_sphere_scene(name, 0.020, width, height, false);
   if (name == "sphere-10mm") return detail::make_small_sphere_scene(name, 0.010, width, height, false);
   throw std::invalid_argument("make_scene: unknown scene '" + name + "'");
+}
+
+std::vector<std::string> footprint_scene_names() {
+  return {"plane-edge-0", "plane-edge-20", "plane-edge-45", "plane-spot", "plane-disk", "plane-albedo"};
+}
+
+Scene make_footprint_scene(const std::string& name, double footprint_mm, int width, int height) {
+  const auto names = footprint_scene_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    throw std::invalid_argument("make_footprint_scene: unknown scene '" + name + "'");
+  }
+  if (!(footprint_mm > 0.0) || !(footprint_mm < 1000.0)) {
+    throw std::invalid_argument("make_footprint_scene: footprint_mm must be in (0, 1000), got " + std::to_string(footprint_mm));
+  }
+  if (width < 1 || height < 1 || width > 16384 || height > 16384) {
+    throw std::invalid_argument("make_footprint_scene: bad size " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  return detail::make_footprint_plane_scene(name, footprint_mm, width, height);
 }
 
 Scene make_preintegrated_scene(const std::string& name, int width, int height) {

@@ -13,6 +13,15 @@
 //                an ambient term, in front of a dark backdrop (needs GL)
 //   empty        the backdrop alone (nothing translucent)
 //
+// The footprint sweep (footprint_scene_names): a translucent plane facing the camera, filling the
+// frame, at the distance where one pixel measures a given number of millimetres, so that the same
+// light is seen from a 4K close-up (0.05 mm per pixel) to a crowd (2 mm and more):
+//   plane-edge-0/20/45  a straight shadow edge (1.0 left, 0.02 right) through the centre, 0, 20 and
+//                       45 degrees from the vertical: additively separable light
+//   plane-spot          a bright spot of radius 0.5 mm on 0.02: non-separable, narrower than the profile
+//   plane-disk          a bright disk of radius 3 mm on 0.02
+//   plane-albedo        uniform light times a per-pixel albedo in [0.25, 1): detail at the pixel scale
+//
 // Every scene is in metres (world_units_per_mm = 0.001), deterministic, with finite distances and
 // a perspective camera (vertical field of view 30 degrees). The head scenes render with GL: a GL
 // 3.3 core context must be current and host_gl loaded for it; every GL object they make is deleted
@@ -31,6 +40,13 @@ std::vector<std::string> canonical_scene_names();
 
 // True for the scenes that need a current GL context (the head scenes).
 bool scene_needs_gl(const std::string& name);
+
+// The footprint sweep's scenes, in the order listed above.
+std::vector<std::string> footprint_scene_names();
+
+// A footprint sweep scene at footprint_mm (> 0) millimetres per pixel, width x height (>= 1).
+// Throws std::invalid_argument for an unknown name or bad arguments.
+Scene make_footprint_scene(const std::string& name, double footprint_mm, int width, int height);
 
 // Builds the scene at width x height (both >= 1). Throws std::invalid_argument for an unknown name
 // or a bad size, std::runtime_error when the head asset cannot be loaded or GL fails.

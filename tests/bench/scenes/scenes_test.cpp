@@ -16,6 +16,7 @@
 #include "gl_fixture.hpp"
 #include "head_asset.hpp"
 #include "head_scene.hpp"
+#include "math/plane_reference.hpp"
 #include "math/projection.hpp"
 #include "scenes.hpp"
 
@@ -122,6 +123,61 @@ TEST_F(SceneTest, EveryScenePromisesWhatSceneHppSays) {
     EXPECT_TRUE(bit_identical(a, b)) << name << " is not deterministic";
   }
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// The footprint sweep's planes: everything scene.hpp promises, translucent everywhere at one
+// distance, each pixel `footprint` millimetres on the plane (as the references derive it from the
+// projection), and the light where scenes.hpp puts it, in millimetres at every footprint.
+TEST_F(SceneTest, FootprintPlanesMeasureTheirFootprint) {
+  const std::vector<std::string> expected = {"plane-edge-0", "plane-edge-20", "plane-edge-45",
+                                             "plane-spot",   "plane-disk",    "plane-albedo"};
+  EXPECT_EQ(sss_bench::footprint_scene_names(), expected);
+  EXPECT_THROW(sss_bench::make_footprint_scene("dot", 0.1, 64, 64), std::invalid_argument);
+  EXPECT_THROW(sss_bench::make_footprint_scene("plane-disk", 0.0, 64, 64), std::invalid_argument);
+  EXPECT_THROW(sss_bench::make_footprint_scene("plane-disk", 0.1, 0, 64), std::invalid_argument);
+  for (double footprint : {0.05, 0.3, 2.0}) {
+    for (const std::string& name : expected) {
+      const sss_bench::Scene s = sss_bench::make_footprint_scene(name, footprint, 81, 81);
+      check_scene(s, name, 81, 81);
+      EXPECT_EQ(s.footprint_mm, footprint);
+      EXPECT_EQ(translucent_fraction(s), 1.0) << name;
+      EXPECT_TRUE(std::all_of(s.distance.begin(), s.distance.end(), [&](float d) { return d == s.distance[0]; })) << name;
+      sss::math::Matrix4 m{};
+      std::copy(s.projection.begin(), s.projection.end(), m.begin());
+      EXPECT_NEAR(sss::math::plane_pixel_mm_x(m, s.width, s.distance[0], s.world_units_per_mm), footprint, 1e-5 * footprint);
+      EXPECT_NEAR(sss::math::plane_pixel_mm_y(m, s.height, s.distance[0], s.world_units_per_mm), footprint, 1e-5 * footprint);
+    }
+    // The disk's and the spot's light above the dark level is their area in pixels (coverage is
+    // exact to 0.1 %), at every footprint; at 2 mm per pixel the spot is a fifth of one pixel.
+    for (const auto& [name, radius] : {std::pair<const char*, double>{"plane-spot", sss_bench::detail::kSpotRadiusMm},
+                                       {"plane-disk", sss_bench::detail::kDiskRadiusMm}}) {
+      if (radius / footprint > 35.0) continue;  // it would not fit in the frame
+      const sss_bench::Scene s = sss_bench::make_footprint_scene(name, footprint, 81, 81);
+      double light = 0.0;
+      for (size_t p = 0; p < pixel_count(s); ++p) {
+        light += (s.irradiance[p * 4] - sss_bench::detail::kDark) / (sss_bench::detail::kLit - sss_bench::detail::kDark);
+      }
+      const double area = kPi * radius * radius / (footprint * footprint);
+      EXPECT_NEAR(light, area, 2e-3 * area + 1e-4) << name << " at " << footprint;
+    }
+    // The straight edges: each row's lit share puts the edge through the centre of pixel (40, 40),
+    // x = 40.5 at the centre of row 40, at its angle.
+    const sss_bench::Scene edge = sss_bench::make_footprint_scene("plane-edge-20", footprint, 81, 81);
+    const std::vector<double> x = edge_positions(edge);
+    const double slope = std::tan(20.0 * kPi / 180.0);
+    for (int j = 10; j < 71; ++j) EXPECT_NEAR(x[static_cast<size_t>(j)], 40.5 + slope * (j - 40), 1e-6) << j;
+  }
+  // The albedo detail: per pixel, between the low albedo and 1, not repeating.
+  const sss_bench::Scene albedo = sss_bench::make_footprint_scene("plane-albedo", 0.5, 64, 64);
+  double lo = 2.0, hi = -1.0;
+  for (size_t p = 0; p < pixel_count(albedo); ++p) {
+    lo = std::min(lo, static_cast<double>(albedo.irradiance[p * 4]));
+    hi = std::max(hi, static_cast<double>(albedo.irradiance[p * 4]));
+  }
+  EXPECT_GE(lo, sss_bench::detail::kAlbedoLow - 1e-6);
+  EXPECT_LT(hi, 1.0);
+  EXPECT_GT(hi - lo, 0.7);
+  EXPECT_NE(albedo.irradiance[0], albedo.irradiance[4]);
 }
 
 TEST_F(SceneTest, OddSizes) {
