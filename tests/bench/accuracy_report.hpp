@@ -26,6 +26,6 @@ void write_scene_tables(std::ostream& out, const std::vector<ResultRow>& rows);
 
 // The table header and one row in the layout every error table of the document shares.
 extern const char* const kErrorTableHeader;
-void write_error_row(std::ostream& out, const ResultRow& r, const std::string& first_cells = "");
+void write_error_row(std::ostream& out, const ResultRow& r);
 
 }  // namespace sss_bench

@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "gpu_busy.hpp"
-#include "math/exact_reference.hpp"
 #include "gpu_scene.hpp"
 #include "host_gl.hpp"
 #include "host_gl_util.hpp"
+#include "math/exact_reference.hpp"
 #include "method.hpp"
 #include "metrics.hpp"
 #include "msaa_study.hpp"
@@ -85,8 +85,12 @@ std::vector<MethodConfig> method_configs(const Options& o) {
 // paths and the region change nothing but time: there it runs each kernel once (follow-surface on)
 // with the sum of Gaussians, the cross-bilateral mode, the kernel families and the adaptive taps
 // (which do change the image: they pass small footprints through).
-bool runs_on_sweep(const MethodConfig& c) {
-  if (c.kind == "separable" || c.kind == "sum-of-gaussians") return c.follow_surface;
+bool runs_on_sweep(const MethodConfig& c, const Options& o) {
+  if (c.kind == "separable") {
+    return c.follow_surface &&
+           (o.sweep_taps.empty() || std::find(o.sweep_taps.begin(), o.sweep_taps.end(), c.taps) != o.sweep_taps.end());
+  }
+  if (c.kind == "sum-of-gaussians") return c.follow_surface;
   return c.kind == "separable-adaptive" || c.kind == "cross-bilateral" || c.kind.rfind("kernel-", 0) == 0;
 }
 
@@ -334,7 +338,8 @@ int run(const Options& options) {
   }
   info.reach_mm = reach_mm;
   const std::vector<MethodConfig> configs = method_configs(options);
-  const auto sweep_count = static_cast<std::size_t>(std::count_if(configs.begin(), configs.end(), runs_on_sweep));
+  const auto sweep_count = static_cast<std::size_t>(
+      std::count_if(configs.begin(), configs.end(), [&](const MethodConfig& c) { return runs_on_sweep(c, options); }));
   std::size_t total = 0;
   for (const SceneJob& job : jobs) total += (job.footprint_mm > 0.0 ? sweep_count : configs.size()) + 1;
   std::size_t done = 0;
@@ -381,15 +386,17 @@ int run(const Options& options) {
       const double footprint_mm = sweep ? job.footprint_mm : median_footprint_mm(region_input);
       const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
       const Grid grid(reference.stride, reference_image, input_image, scene.mask, regions, width, height);
+      // What every row of this scene shares.
+      ResultRow scene_row;
+      scene_row.scene = scene_name;
+      scene_row.width = width;
+      scene_row.height = height;
+      scene_row.footprint_mm = footprint_mm;
+      scene_row.sweep = sweep;
+      scene_row.reference_stride = reference.stride;
       // Doing nothing: the input itself, the row every other one is read against.
       {
-        ResultRow row;
-        row.scene = scene_name;
-        row.width = width;
-        row.height = height;
-        row.footprint_mm = footprint_mm;
-        row.sweep = sweep;
-        row.reference_stride = reference.stride;
+        ResultRow row = scene_row;
         row.method = "no-scattering";
         const ErrorMetrics e = grid.compare(input_image);
         grid.score_regions(input_image, &row);
@@ -401,21 +408,15 @@ int run(const Options& options) {
         rows.push_back(row);
       }
       for (const MethodConfig& config : configs) {
-        if (sweep && !runs_on_sweep(config)) continue;
+        if (sweep && !runs_on_sweep(config, options)) continue;
         // The kernel families are compared at up to 640x360 (their Pareto curves); the 1080p head
-        // rows keep the methods of the paper's Table 2.
-        if (config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
+        // rows keep the methods of the paper's Table 2. The sweep runs them at every footprint.
+        if (!sweep && config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
           ++done;
           continue;
         }
-        ResultRow row;
+        ResultRow row = scene_row;
         std::string path_ran;
-        row.scene = scene_name;
-        row.width = width;
-        row.height = height;
-        row.footprint_mm = footprint_mm;
-        row.sweep = sweep;
-        row.reference_stride = reference.stride;
         ErrorMetrics e;
         Timing t;
         const bool exact = config.kind == "exact-2d";

@@ -180,6 +180,14 @@ TEST(BenchQuickOutput, FootprintSweepIsWhole) {
     EXPECT_GT(std::stoi(row.at("pixels_border")), 0);
   }
   ASSERT_EQ(footprints.size(), 6u);
+  // Every method of the sweep on every plane at every footprint, the kernel families included
+  // (they are limited to 640x360 elsewhere; the finest sweep frames are larger).
+  std::map<std::string, int> instances;  // method/taps -> scene x footprint count
+  for (const auto& row : csv.rows) {
+    if (row.at("sweep") == "1") ++instances[row.at("method") + "/" + row.at("taps")];
+  }
+  EXPECT_GE(instances.size(), 1u + 4u + 1u + 1u + 1u + 8u);  // input, 5/9/17/33 taps, sum of Gaussians, adaptive, cbf, families
+  for (const auto& [method, n] : instances) EXPECT_EQ(n, 6 * 7) << method;
   for (const auto& [scene, values] : footprints) {
     ASSERT_EQ(values.size(), 7u) << scene;
     EXPECT_NEAR(*values.begin(), 0.05, 1e-9) << scene;

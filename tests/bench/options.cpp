@@ -42,6 +42,7 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
   --footprints f,f,...  the footprint sweep's millimetres per pixel (default: 7 log-spaced values
                         from 0.05 to 2); "" skips the sweep
   --sweep-scenes a,b,.. the sweep's scenes (default: every plane-* scene)
+  --sweep-taps n,n,...  eq. (1) tap counts on the sweep (quick: 5,9,17,33; full: --taps)
   --sweep-reps N        timed frames of each sweep row (quick: 1; full: --reps)
   --sweep-interior N    pixels of the sweep frames' interior side, at least (default 64; and at
                         least 8 mm, so that the 6 mm disk is inside it)
@@ -113,8 +114,10 @@ void apply_mode_defaults(Options* o) {
     o->family_taps = {9};
     o->warmup = 1;
     o->repetitions = 3;
-    // The sweep's many frames are there for their errors; in CI one timed frame each is enough.
+    // The sweep's many frames are there for their errors; in CI one timed frame each is enough, and
+    // 65 taps on its largest frames (484x484) would cost more than the rest of the sweep.
     o->sweep_repetitions = 1;
+    o->sweep_taps = {5, 9, 17, 33};
     // Odd sizes put the canonical scenes' straight edges inside pixels (even ones land them on
     // pixel borders, where every sample agrees); 130x98 for the reference stays on the CPU.
     o->msaa_size = {65, 49};
@@ -166,6 +169,7 @@ Options parse_options(int argc, char** argv) {
       {"gpu-preload-ms", required_argument, nullptr, 'P'},
       {"footprints", required_argument, nullptr, 'p'},  {"sweep-scenes", required_argument, nullptr, 'W'},
       {"sweep-interior", required_argument, nullptr, 'I'},  {"sweep-reps", required_argument, nullptr, 'X'},
+      {"sweep-taps", required_argument, nullptr, 'Y'},
       {"help", no_argument, nullptr, 'h'},        {nullptr, 0, nullptr, 0}};
   int c = 0;
   while ((c = getopt_long(argc, argv, "", long_options, nullptr)) != -1) {
@@ -236,6 +240,7 @@ Options parse_options(int argc, char** argv) {
         o.sweep_interior_px = parse_ints(arg, "sweep interior")[0];
         if (o.sweep_interior_px < 8 || o.sweep_interior_px > 4096) usage_error("--sweep-interior must be in [8, 4096]");
         break;
+      case 'Y': o.sweep_taps = parse_ints(arg, "sweep tap count"); break;
       case 'X': o.sweep_repetitions = parse_ints(arg, "sweep repetition count")[0]; break;
       case 'h': std::fputs(kUsage, stdout); std::exit(0);
       default: usage_error("unknown option");

@@ -36,6 +36,7 @@ struct Options {
   std::vector<std::string> sweep_scenes;            // empty: every sweep scene
   int sweep_interior_px = 64;
   int sweep_repetitions = 0;                        // timed frames of the sweep's rows; 0: `repetitions`
+  std::vector<int> sweep_taps;                      // eq. (1) tap counts on the sweep; empty: separable_taps
   std::string command_line;
 };
 

@@ -96,6 +96,7 @@ const char* verdict(double mine, double other) {
 struct ErrorRow {
   std::string scene, method;
   sss_bench::ErrorMetrics metrics;
+  sss_bench::Miss miss;  // against the input (metrics.hpp): 1 for the input's own row
 };
 
 }  // namespace
@@ -238,19 +239,23 @@ int main(int argc, char** argv) {
     // Pixels translucent in both renders (the pre-integrated head shades the same triangles).
     std::vector<uint8_t> mask(scene.mask.size());
     for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = scene.mask[i] && pre.mask[i];
-    errors.push_back({name, "input (no scattering)", sss_bench::compare_images(input, ref, mask.data())});
-    errors.push_back({name, "separable 17 taps, follow-surface", sss_bench::compare_images(filtered, ref, mask.data())});
-    errors.push_back({name, "pre-integrated (LUTs)", sss_bench::compare_images(preintegrated, ref, mask.data())});
+    const auto row = [&](const std::string& scene_name, const char* method, const sss_bench::RgbImage& image,
+                         const std::vector<uint8_t>& selected) {
+      errors.push_back({scene_name, method, sss_bench::compare_images(image, ref, selected.data()),
+                        sss_bench::miss_share(image, ref, input, selected.data())});
+    };
+    row(name, "input (no scattering)", input, mask);
+    row(name, "separable 17 taps, follow-surface", filtered, mask);
+    row(name, "pre-integrated (LUTs)", preintegrated, mask);
     if (name.rfind("sphere", 0) == 0) {
       // The spheres again away from their silhouette (no background pixel within kInteriorBand):
       // there every method shares the error of the grazing surface, and the terminator, where
       // pre-integration acts, is what remains.
       const std::vector<uint8_t> inner = interior(mask, scene.width, scene.height);
       const std::string scene_name = name + " (interior)";
-      errors.push_back({scene_name, "input (no scattering)", sss_bench::compare_images(input, ref, inner.data())});
-      errors.push_back({scene_name, "separable 17 taps, follow-surface",
-                        sss_bench::compare_images(filtered, ref, inner.data())});
-      errors.push_back({scene_name, "pre-integrated (LUTs)", sss_bench::compare_images(preintegrated, ref, inner.data())});
+      row(scene_name, "input (no scattering)", input, inner);
+      row(scene_name, "separable 17 taps, follow-surface", filtered, inner);
+      row(scene_name, "pre-integrated (LUTs)", preintegrated, inner);
     }
     const std::string base = args.out + "/preintegrated-" + name + "-" + std::to_string(args.width) + "x" +
                              std::to_string(args.height);
@@ -259,8 +264,9 @@ int main(int argc, char** argv) {
     sss_bench::destroy_scene(&gpu);
   }
   for (const auto& e : errors) {
-    std::printf("  %-11s %-36s rel RMSE %.4f  p99 %.4f  max %.4f  SSIM %.4f\n", e.scene.c_str(), e.method.c_str(),
-                e.metrics.relative_rmse, e.metrics.p99_abs, e.metrics.max_abs, e.metrics.ssim);
+    std::printf("  %-11s %-36s miss %.3f (worst channel %.3f)  rel RMSE %.4f  p99 %.4f  max %.4f  SSIM %.4f\n",
+                e.scene.c_str(), e.method.c_str(), e.miss.pooled, e.miss.worst_channel(), e.metrics.relative_rmse,
+                e.metrics.p99_abs, e.metrics.max_abs, e.metrics.ssim);
   }
 
   if (!args.doc.empty()) {
@@ -281,10 +287,14 @@ int main(int argc, char** argv) {
           "scene's Lambert irradiance (reference.hpp, CPU double). Pre-integrated shading replaces the Lambert "
           "terms (curvature from derivatives, per-channel normals between the normal map and its profile-blurred "
           "copy, a 9x9 box PCF on the key's shadow read through the shadow LUT); it never blurs the albedo or the normal map, which the reference "
-          "does.\n\n| scene | method | relative RMSE | p99 abs | max abs | SSIM |\n|---|---|---:|---:|---:|---:|\n";
+          "does. *miss* is the share of the needed change (the input's distance from the reference) a method leaves "
+          "undone, pooled over R, G and B (0 exact, 1 as wrong as no scattering, above 1 worse; tests/bench/metrics.hpp), "
+          "with its worst channel.\n\n| scene | method | miss | worst channel | relative RMSE | p99 abs | max abs | SSIM |\n"
+          "|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& e : errors) {
-      std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f | %.4f | %.4f |\n", e.scene.c_str(), e.method.c_str(),
-                    e.metrics.relative_rmse, e.metrics.p99_abs, e.metrics.max_abs, e.metrics.ssim);
+      std::snprintf(line, sizeof line, "| %s | %s | %.3f | %.3f | %.4f | %.4f | %.4f | %.4f |\n", e.scene.c_str(),
+                    e.method.c_str(), e.miss.pooled, e.miss.worst_channel(), e.metrics.relative_rmse, e.metrics.p99_abs,
+                    e.metrics.max_abs, e.metrics.ssim);
       md << line;
     }
     // Where it wins and loses, from the rows above (relative RMSE).

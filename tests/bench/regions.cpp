@@ -18,22 +18,23 @@ const char* region_name(Region r) {
   }
 }
 
+double profile_tail_share(const sss::math::GaussianProfile& profile, double r_mm) {
+  double worst = 0.0;
+  for (std::size_t c = 0; c < 3; ++c) {
+    double share = 0.0;
+    for (const auto& t : profile) share += t.weight[c] * std::exp(-r_mm * r_mm / (2.0 * t.variance_mm2));
+    worst = std::max(worst, share);
+  }
+  return worst;
+}
+
 double profile_reach_mm(const sss::math::GaussianProfile& profile, double tail) {
   if (!(tail > 0.0 && tail < 1.0)) throw std::invalid_argument("profile_reach_mm: tail must be in (0, 1), got " + std::to_string(tail));
-  const auto beyond = [&](double r) {  // the largest channel's share beyond r
-    double worst = 0.0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      double share = 0.0;
-      for (const auto& t : profile) share += t.weight[c] * std::exp(-r * r / (2.0 * t.variance_mm2));
-      worst = std::max(worst, share);
-    }
-    return worst;
-  };
   double lo = 0.0, hi = 1.0;
-  while (beyond(hi) > tail) hi *= 2.0;
+  while (profile_tail_share(profile, hi) > tail) hi *= 2.0;
   while (hi - lo > 1e-9) {
     const double mid = 0.5 * (lo + hi);
-    (beyond(mid) > tail ? lo : hi) = mid;
+    (profile_tail_share(profile, mid) > tail ? lo : hi) = mid;
   }
   return hi;
 }

@@ -37,6 +37,10 @@ const char* region_name(Region r);  // "interior", "silhouette", "border"
 // The tail share that defines the reach above.
 constexpr double kReachTail = 1e-3;
 
+// The share of a point's light that lands beyond r (mm) in the profile's widest-reaching channel:
+// max over c of Σ_t w_t,c exp(-r² / 2 v_t) (each 2D-normalised term has exp(-r²/2v) of its mass there).
+double profile_tail_share(const sss::math::GaussianProfile& profile, double r_mm);
+
 // The smallest radius R (mm) with Σ_t w_t,c exp(-R² / 2 v_t) <= tail for every channel c: the
 // share of a point's light that lands beyond R (each 2D-normalised term has exp(-R²/2v) of its mass
 // there). Bisection to 1e-9 mm. Throws std::invalid_argument for tail outside (0, 1).

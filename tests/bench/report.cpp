@@ -253,6 +253,11 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "| scene | method | ms | × copy | % of close-up | miss interior | rel. RMSE | p99 abs | SSIM |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const char* scene : {"head-close", "head-mid", "head-far", "empty"}) {
+      if (const ResultRow* none = find(rows, scene, w, h, "no-scattering", 0, false); none && none->translucent_pixels > 0) {
+        out << "| " << scene << " | no-scattering | – | – | – | " << miss_text(none->interior().miss) << " | "
+            << fmt(none->relative_rmse, "%.4f") << " | " << fmt(none->p99_abs_error, "%.4f") << " | "
+            << fmt(none->ssim, "%.4f") << " |\n";
+      }
       for (const char* method : {"separable", "separable-in-place", "separable-adaptive", "separable-adaptive-region",
                                  "separable-masked", "separable-masked-adaptive-region", "separable-compute",
                                  "separable-compute-adaptive-region", "separable-auto-adaptive-region"}) {
@@ -380,9 +385,9 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "the depth difference; the separable filter steps by depth only. The last column is the cross-bilateral "
          "mode with the cosine correction switched off (a zero normal texture), at the same taps: the difference "
          "between the last two columns is what the per-axis correction buys.\n\n"
-         "| scene | size | separable 17, follow-surface | separable 17, no depth test | cross-bilateral | "
-         "cross-bilateral, no tilt correction |\n"
-         "|---|---|---:|---:|---:|---:|\n";
+         "| scene | size | no scattering | separable 17, follow-surface | separable 17, no depth test | "
+         "cross-bilateral | cross-bilateral, no tilt correction |\n"
+         "|---|---|---:|---:|---:|---:|---:|\n";
   for (const ResultRow& r : rows) {
     if (r.scene.rfind("tilted-", 0) != 0 || r.method != "separable" || r.taps != 17 || !r.follow_surface) continue;
     const ResultRow* none = find(rows, r.scene, r.width, r.height, "separable", 17, false);
@@ -396,8 +401,9 @@ void write_results_document(const std::string& path, const std::string& out_dir,
     const auto cell = [](const ResultRow* x) {
       return x != nullptr ? miss_text(x->interior().miss) + " / " + fmt(x->relative_rmse, "%.4f") : std::string("–");
     };
-    out << "| " << r.scene << " | " << r.width << "×" << r.height << " | " << cell(&r) << " | " << cell(none) << " | "
-        << cell(cbf) << " | " << cell(flat) << " |\n";
+    out << "| " << r.scene << " | " << r.width << "×" << r.height << " | "
+        << cell(find(rows, r.scene, r.width, r.height, "no-scattering", 0, false)) << " | " << cell(&r) << " | "
+        << cell(none) << " | " << cell(cbf) << " | " << cell(flat) << " |\n";
   }
 
   // The kernel families (sss_settings.kernel) side by side where they differ most: the white dot

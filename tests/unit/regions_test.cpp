@@ -15,21 +15,21 @@ namespace {
 
 using sss_bench::Region;
 
+// The tail share of one term is exp(-r²/2v) times its weight; of a profile, the largest channel's sum.
+TEST(Regions, TailShareOfTheProfile) {
+  const sss::math::GaussianProfile one = {{2.0, {0.5, 0.25, 1.0}}};
+  EXPECT_DOUBLE_EQ(sss_bench::profile_tail_share(one, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(sss_bench::profile_tail_share(one, 3.0), std::exp(-9.0 / 4.0));
+  const sss::math::GaussianProfile two = {{1.0, {0.5, 0.0, 0.0}}, {4.0, {0.5, 0.0, 0.0}}};
+  EXPECT_DOUBLE_EQ(sss_bench::profile_tail_share(two, 2.0), 0.5 * std::exp(-2.0) + 0.5 * std::exp(-0.5));
+}
+
 // The reach leaves exactly the tail share beyond it in the widest channel, and more just inside.
 TEST(Regions, ReachLeavesTheTailShareBeyondIt) {
   const auto profile = sss::math::skin_profile_terms();
   const double reach = sss_bench::profile_reach_mm(profile);
-  const auto beyond = [&](double r) {
-    double worst = 0.0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      double share = 0.0;
-      for (const auto& t : profile) share += t.weight[c] * std::exp(-r * r / (2.0 * t.variance_mm2));
-      worst = std::max(worst, share);
-    }
-    return worst;
-  };
-  EXPECT_LE(beyond(reach), sss_bench::kReachTail);
-  EXPECT_GT(beyond(reach - 1e-6), sss_bench::kReachTail);
+  EXPECT_LE(sss_bench::profile_tail_share(profile, reach), sss_bench::kReachTail);
+  EXPECT_GT(sss_bench::profile_tail_share(profile, reach - 1e-6), sss_bench::kReachTail);
   // Red's widest term (7.41 mm², weight 0.078) alone puts it near sqrt(2 v ln(w / tail)) = 8.0 mm.
   EXPECT_NEAR(reach, std::sqrt(2.0 * 7.41 * std::log(0.078 / 1e-3)), 0.05);
   EXPECT_THROW(sss_bench::profile_reach_mm(profile, 0.0), std::invalid_argument);

@@ -13,7 +13,8 @@
 //
 // which is exactly I_t of exact_reference.hpp with h = 0, u0 = d·sx, v0 = e·sy (the 2D Gaussian is
 // the product of two 1D ones). Each term costs two 1D passes over the image, so any footprint and
-// size is cheap; nothing is truncated (every source pixel of the frame contributes).
+// size is cheap. Only taps of weight below 1e-18 are skipped (together under 1e-14 of the light,
+// below the double sums' rounding): every source pixel of the frame that matters contributes.
 //
 // Past the frame edge the plane is taken to end, as the 2D reference does: sources outside the
 // frame contribute nothing, and light a receiver would scatter past the edge is lost (the same rule

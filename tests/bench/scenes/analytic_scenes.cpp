@@ -16,19 +16,24 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kNear = 0.05, kFar = 2.0;
 
-Scene blank_scene(const std::string& name, int width, int height, PinholeCamera* camera) {
-  *camera = make_pinhole(width, height, kFovyDegrees * kPi / 180.0, kNear, kFar);
+// An empty scene (nothing translucent, zero everywhere) of the camera's size and projection.
+Scene scene_for_camera(const std::string& name, const PinholeCamera& camera) {
   Scene s;
   s.name = name;
-  s.width = width;
-  s.height = height;
-  s.projection = to_float(camera->projection);
-  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+  s.width = camera.width;
+  s.height = camera.height;
+  s.projection = to_float(camera.projection);
+  const size_t n = static_cast<size_t>(camera.width) * static_cast<size_t>(camera.height);
   s.irradiance.assign(n * 4, 0.0f);
   s.distance.assign(n, 0.0f);
   s.window_depth.assign(n, 0.0f);
   s.mask.assign(n, 0);
   return s;
+}
+
+Scene blank_scene(const std::string& name, int width, int height, PinholeCamera* camera) {
+  *camera = make_pinhole(width, height, kFovyDegrees * kPi / 180.0, kNear, kFar);
+  return scene_for_camera(name, *camera);
 }
 
 void set_pixel(Scene& s, const PinholeCamera& camera, int i, int j, double r, double g, double b, bool translucent,
@@ -132,17 +137,8 @@ static Scene blank_plane_scene(const std::string& name, double footprint_mm, int
   const double tan_half = std::tan(0.5 * kFovyDegrees * kPi / 180.0);
   *distance = footprint_mm * 1e-3 * height / (2.0 * tan_half);  // metres
   *camera = make_pinhole(width, height, kFovyDegrees * kPi / 180.0, 0.5 * *distance, 2.0 * *distance);
-  Scene s;
-  s.name = name;
-  s.width = width;
-  s.height = height;
-  s.projection = to_float(camera->projection);
+  Scene s = scene_for_camera(name, *camera);
   s.footprint_mm = footprint_mm;
-  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
-  s.irradiance.assign(n * 4, 0.0f);
-  s.distance.assign(n, 0.0f);
-  s.window_depth.assign(n, 0.0f);
-  s.mask.assign(n, 0);
   return s;
 }
 
