@@ -248,6 +248,13 @@ Band translucent_band(const std::vector<uint8_t>& mask, int width, int height, i
   return b;
 }
 
+void set_error_metrics(const ErrorMetrics& e, ResultRow* row) {
+  row->relative_rmse = e.relative_rmse;
+  row->max_abs_error = e.max_abs;
+  row->p99_abs_error = e.p99_abs;
+  row->ssim = e.ssim;
+}
+
 RegionInput region_input_of(const Scene& scene, double reach_mm) {
   RegionInput in;
   in.width = scene.width;
@@ -394,17 +401,13 @@ int run(const Options& options) {
       scene_row.footprint_mm = footprint_mm;
       scene_row.sweep = sweep;
       scene_row.reference_stride = reference.stride;
+      scene_row.translucent_pixels = count(scene.mask);
       // Doing nothing: the input itself, the row every other one is read against.
       {
         ResultRow row = scene_row;
         row.method = "no-scattering";
-        const ErrorMetrics e = grid.compare(input_image);
+        set_error_metrics(grid.compare(input_image), &row);
         grid.score_regions(input_image, &row);
-        row.relative_rmse = e.relative_rmse;
-        row.max_abs_error = e.max_abs;
-        row.p99_abs_error = e.p99_abs;
-        row.ssim = e.ssim;
-        row.translucent_pixels = count(scene.mask);
         rows.push_back(row);
       }
       for (const MethodConfig& config : configs) {
@@ -480,11 +483,7 @@ int run(const Options& options) {
         row.time_max_ms = t.max_ms;
         row.samples = t.samples;
         row.time_ratio_to_copy = copy.median_ms > 0.0 ? t.median_ms / copy.median_ms : 0.0;
-        row.relative_rmse = e.relative_rmse;
-        row.max_abs_error = e.max_abs;
-        row.p99_abs_error = e.p99_abs;
-        row.ssim = e.ssim;
-        row.translucent_pixels = count(scene.mask);
+        set_error_metrics(e, &row);
         rows.push_back(row);
         std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), miss interior %s (no scattering: 1), rel. RMSE %.4g, "
                     "SSIM %.4f%s%s\n",
