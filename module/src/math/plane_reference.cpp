@@ -53,10 +53,12 @@ void convolve_axis(const std::vector<double>& k, int axis, int width, int height
     // Receivers i with a source i + d inside [0, count).
     const int i0 = std::max(0, -d), i1 = std::min(count, count - d);
     if (axis == 0) {
+      const auto n = static_cast<std::size_t>(i1 - i0);
       for (int y = 0; y < height; ++y) {
-        const double* src = in.data() + static_cast<std::size_t>(y) * w + d;
-        double* dst = out->data() + static_cast<std::size_t>(y) * w;
-        for (int x = i0; x < i1; ++x) dst[x] += weight * src[x];
+        // Receivers i0 .. i1 - 1 of row y and their sources i0 + d .. i1 - 1 + d, all inside the row.
+        const double* src = in.data() + static_cast<std::size_t>(y) * w + static_cast<std::size_t>(i0 + d);
+        double* dst = out->data() + static_cast<std::size_t>(y) * w + static_cast<std::size_t>(i0);
+        for (std::size_t x = 0; x < n; ++x) dst[x] += weight * src[x];
       }
     } else {
       for (int y = i0; y < i1; ++y) {
