@@ -358,143 +358,141 @@ int run(const Options& options) {
     const int width = job.width, height = job.height;
     const std::string& scene_name = job.name;
     const bool sweep = job.footprint_mm > 0.0;
+    const Scene scene = sweep ? make_footprint_scene(scene_name, job.footprint_mm, width, height)
+                              : make_scene(scene_name, width, height);
+    GpuScene gpu = upload_scene(scene);
+    const GLuint output = make_output_texture(width, height);
+    const std::string tag = scene_name + "-" + std::to_string(width) + "x" + std::to_string(height);
+
+    // The reference, and the yardstick time.
+    if (!check_gl(("making " + tag).c_str())) throw std::runtime_error("making " + tag + " left a GL error");
+    const int stride = options.reference_stride > 0 ? options.reference_stride : std::max(1, (height + 90) / 180);
+    const Reference reference =
+        sweep ? make_plane_reference(scene, gpu)
+              : make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
+    if (reference.check.checked > 0) checks.push_back(reference.check);
+    std::string message;
+    const Timing copy = time_frames(clock, options.warmup, options.repetitions,
+                                    [&] { return copy_method->run(gpu, output, &message); });
+    ++done;
+    std::printf("[%zu/%zu] %s%s: reference %s, copy %.3f ms\n", done, total, tag.c_str(),
+                sweep ? (" (" + std::to_string(job.footprint_mm).substr(0, 6) + " mm/px)").c_str() : "",
+                reference.source.c_str(), copy.median_ms);
+    std::fflush(stdout);
+    const RgbImage reference_image = RgbImage::from_rgba(reference.rgba.data(), width, height);
+    const bool pictured = !sweep && options.heat_maps && is_pictured_scene(scene_name, width, options.sizes);
+    if (pictured) {
+      write_tonemapped_png(options.out + "/" + tag + "-input.png",
+                           RgbImage::from_rgba(gpu.irradiance_half.data(), width, height));
+      write_tonemapped_png(options.out + "/" + tag + "-reference.png", reference_image);
+    }
+
+    const RegionInput region_input = region_input_of(scene, reach_mm);
+    const std::vector<uint8_t> regions = classify_regions(region_input);
+    const double footprint_mm = sweep ? job.footprint_mm : median_footprint_mm(region_input);
+    const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
+    const Grid grid(reference.stride, reference_image, input_image, scene.mask, regions, width, height);
+    // What every row of this scene shares.
+    ResultRow scene_row;
+    scene_row.scene = scene_name;
+    scene_row.width = width;
+    scene_row.height = height;
+    scene_row.footprint_mm = footprint_mm;
+    scene_row.sweep = sweep;
+    scene_row.reference_stride = reference.stride;
+    scene_row.translucent_pixels = count(scene.mask);
+    // Doing nothing: the input itself, the row every other one is read against.
     {
-      const Scene scene = sweep ? make_footprint_scene(scene_name, job.footprint_mm, width, height)
-                                : make_scene(scene_name, width, height);
-      GpuScene gpu = upload_scene(scene);
-      const GLuint output = make_output_texture(width, height);
-      const std::string tag = scene_name + "-" + std::to_string(width) + "x" + std::to_string(height);
-
-      // The reference, and the yardstick time.
-      if (!check_gl(("making " + tag).c_str())) throw std::runtime_error("making " + tag + " left a GL error");
-      const int stride = options.reference_stride > 0 ? options.reference_stride : std::max(1, (height + 90) / 180);
-      const Reference reference =
-          sweep ? make_plane_reference(scene, gpu)
-                : make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
-      if (reference.check.checked > 0) checks.push_back(reference.check);
-      std::string message;
-      const Timing copy = time_frames(clock, options.warmup, options.repetitions,
-                                      [&] { return copy_method->run(gpu, output, &message); });
-      ++done;
-      std::printf("[%zu/%zu] %s%s: reference %s, copy %.3f ms\n", done, total, tag.c_str(),
-                  sweep ? (" (" + std::to_string(job.footprint_mm).substr(0, 6) + " mm/px)").c_str() : "",
-                  reference.source.c_str(), copy.median_ms);
-      std::fflush(stdout);
-      const RgbImage reference_image = RgbImage::from_rgba(reference.rgba.data(), width, height);
-      const bool pictured = !sweep && options.heat_maps && is_pictured_scene(scene_name, width, options.sizes);
-      if (pictured) {
-        write_tonemapped_png(options.out + "/" + tag + "-input.png",
-                             RgbImage::from_rgba(gpu.irradiance_half.data(), width, height));
-        write_tonemapped_png(options.out + "/" + tag + "-reference.png", reference_image);
+      ResultRow row = scene_row;
+      row.method = "no-scattering";
+      set_error_metrics(grid.compare(input_image), &row);
+      grid.score_regions(input_image, &row);
+      rows.push_back(row);
+    }
+    for (const MethodConfig& config : configs) {
+      if (sweep && !runs_on_sweep(config, options)) continue;
+      // The kernel families are compared at up to 640x360 (their Pareto curves); the 1080p head
+      // rows keep the methods of the paper's Table 2. The sweep runs them at every footprint.
+      if (!sweep && config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
+        ++done;
+        continue;
       }
-
-      const RegionInput region_input = region_input_of(scene, reach_mm);
-      const std::vector<uint8_t> regions = classify_regions(region_input);
-      const double footprint_mm = sweep ? job.footprint_mm : median_footprint_mm(region_input);
-      const RgbImage input_image = RgbImage::from_rgba(gpu.irradiance_half.data(), width, height);  // as the GL holds it
-      const Grid grid(reference.stride, reference_image, input_image, scene.mask, regions, width, height);
-      // What every row of this scene shares.
-      ResultRow scene_row;
-      scene_row.scene = scene_name;
-      scene_row.width = width;
-      scene_row.height = height;
-      scene_row.footprint_mm = footprint_mm;
-      scene_row.sweep = sweep;
-      scene_row.reference_stride = reference.stride;
-      scene_row.translucent_pixels = count(scene.mask);
-      // Doing nothing: the input itself, the row every other one is read against.
-      {
-        ResultRow row = scene_row;
-        row.method = "no-scattering";
-        set_error_metrics(grid.compare(input_image), &row);
-        grid.score_regions(input_image, &row);
-        rows.push_back(row);
-      }
-      for (const MethodConfig& config : configs) {
-        if (sweep && !runs_on_sweep(config, options)) continue;
-        // The kernel families are compared at up to 640x360 (their Pareto curves); the 1080p head
-        // rows keep the methods of the paper's Table 2. The sweep runs them at every footprint.
-        if (!sweep && config.kind.rfind("kernel-", 0) == 0 && static_cast<long>(width) * height > options.family_max_pixels) {
+      ResultRow row = scene_row;
+      std::string path_ran;
+      ErrorMetrics e;
+      Timing t;
+      const bool exact = config.kind == "exact-2d";
+      if (exact && reference.source.rfind("GL", 0) == 0) {
+        // The reference was this filter, so its error is zero by definition. Its time: the
+        // reference's own frame at stride 1; on a grid, a full-resolution band of rows holding
+        // 1/stride² of the translucent pixels, timed and scaled by the pixel count (the grid
+        // itself runs less coherently on SIMD hardware and would overstate the cost).
+        row.method = "exact-2d";
+        row.passes = 2;
+        e.pixels = grid.selected();
+        grid.score_regions(reference_image, &row);
+        if (reference.stride == 1) {
+          t.median_ms = t.min_ms = t.max_ms = reference.gl_time_ms;
+        } else {
+          const Band band = translucent_band(scene.mask, width, height, reference.stride);
+          auto method = make_exact_method(1, {band.y0, band.y1});
+          t = time_frames(clock, 1, 1, [&] { return method->run(gpu, output, &message); });
+          if (t.samples == 0) throw std::runtime_error(tag + " exact-2d band: " + message);
+          // Nothing translucent: the band was the whole frame, so the time is measured as it is.
+          const double scale = band.total > 0 ? static_cast<double>(band.total) / static_cast<double>(band.inside) : 1.0;
+          t.median_ms = t.min_ms = t.max_ms = t.median_ms * scale;
+          row.time_extrapolated = band.total > 0;
+          row.band_rows = band.y1 - band.y0;
+        }
+        t.samples = 1;
+      } else {
+        auto method = make_method(config, loader);
+        if (method == nullptr) {
           ++done;
           continue;
         }
-        ResultRow row = scene_row;
-        std::string path_ran;
-        ErrorMetrics e;
-        Timing t;
-        const bool exact = config.kind == "exact-2d";
-        if (exact && reference.source.rfind("GL", 0) == 0) {
-          // The reference was this filter, so its error is zero by definition. Its time: the
-          // reference's own frame at stride 1; on a grid, a full-resolution band of rows holding
-          // 1/stride² of the translucent pixels, timed and scaled by the pixel count (the grid
-          // itself runs less coherently on SIMD hardware and would overstate the cost).
-          row.method = "exact-2d";
-          row.passes = 2;
-          e.pixels = grid.selected();
-          grid.score_regions(reference_image, &row);
-          if (reference.stride == 1) {
-            t.median_ms = t.min_ms = t.max_ms = reference.gl_time_ms;
-          } else {
-            const Band band = translucent_band(scene.mask, width, height, reference.stride);
-            auto method = make_exact_method(1, {band.y0, band.y1});
-            t = time_frames(clock, 1, 1, [&] { return method->run(gpu, output, &message); });
-            if (t.samples == 0) throw std::runtime_error(tag + " exact-2d band: " + message);
-            // Nothing translucent: the band was the whole frame, so the time is measured as it is.
-            const double scale = band.total > 0 ? static_cast<double>(band.total) / static_cast<double>(band.inside) : 1.0;
-            t.median_ms = t.min_ms = t.max_ms = t.median_ms * scale;
-            row.time_extrapolated = band.total > 0;
-            row.band_rows = band.y1 - band.y0;
-          }
-          t.samples = 1;
-        } else {
-          auto method = make_method(config, loader);
-          if (method == nullptr) {
-            ++done;
-            continue;
-          }
-          // The exact filter is slow on a software rasteriser: one frame (after one that compiles
-          // its shaders) is its measurement.
-          t = time_frames(
-              clock, exact ? 1 : options.warmup,
-              exact ? 1 : (sweep && options.sweep_repetitions > 0 ? options.sweep_repetitions : options.repetitions),
-              [&] { return method->run(gpu, output, &message); }, [&] { method->before_run(gpu); },
-              [&] { method->after_run(gpu, output); });
-          if (t.samples == 0) throw std::runtime_error(tag + " " + config.kind + ": " + message);
-          if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
-          row.method = method->name();
-          path_ran = method->path_ran();
-          row.taps = method->taps();
-          row.follow_surface = method->follow_surface();
-          row.passes = method->passes();
-          const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
-          e = grid.compare(result);
-          grid.score_regions(result, &row);
-          row.halo_energy = grid.halo(result);
-          if (pictured && is_pictured_method(row)) {
-            const std::string stem = options.out + "/" + picture_stem(row);
-            write_tonemapped_png(stem + ".png", result);
-            write_error_heatmap_png(stem + "-error.png", result, reference_image, scene.mask.data(),
-                                    heat_map_scale(reference_image, scene.mask.data()));
-          }
+        // The exact filter is slow on a software rasteriser: one frame (after one that compiles
+        // its shaders) is its measurement.
+        t = time_frames(
+            clock, exact ? 1 : options.warmup,
+            exact ? 1 : (sweep && options.sweep_repetitions > 0 ? options.sweep_repetitions : options.repetitions),
+            [&] { return method->run(gpu, output, &message); }, [&] { method->before_run(gpu); },
+            [&] { method->after_run(gpu, output); });
+        if (t.samples == 0) throw std::runtime_error(tag + " " + config.kind + ": " + message);
+        if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
+        row.method = method->name();
+        path_ran = method->path_ran();
+        row.taps = method->taps();
+        row.follow_surface = method->follow_surface();
+        row.passes = method->passes();
+        const RgbImage result = RgbImage::from_rgba(read_texture_rgba(output, width, height).data(), width, height);
+        e = grid.compare(result);
+        grid.score_regions(result, &row);
+        row.halo_energy = grid.halo(result);
+        if (pictured && is_pictured_method(row)) {
+          const std::string stem = options.out + "/" + picture_stem(row);
+          write_tonemapped_png(stem + ".png", result);
+          write_error_heatmap_png(stem + "-error.png", result, reference_image, scene.mask.data(),
+                                  heat_map_scale(reference_image, scene.mask.data()));
         }
-        ++done;
-        row.time_ms = t.median_ms;
-        row.time_min_ms = t.min_ms;
-        row.time_max_ms = t.max_ms;
-        row.samples = t.samples;
-        row.time_ratio_to_copy = copy.median_ms > 0.0 ? t.median_ms / copy.median_ms : 0.0;
-        set_error_metrics(e, &row);
-        rows.push_back(row);
-        std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), miss interior %s (no scattering: 1), rel. RMSE %.4g, "
-                    "SSIM %.4f%s%s\n",
-                    done, total, tag.c_str(), method_label(row).c_str(), row.time_ms, row.time_ratio_to_copy,
-                    miss_text(row.interior().miss).c_str(), row.relative_rmse, row.ssim,
-                    path_ran.empty() ? "" : ", path ", path_ran.c_str());
-        std::fflush(stdout);
       }
-      glDeleteTextures(1, &output);
-      destroy_scene(&gpu);
+      ++done;
+      row.time_ms = t.median_ms;
+      row.time_min_ms = t.min_ms;
+      row.time_max_ms = t.max_ms;
+      row.samples = t.samples;
+      row.time_ratio_to_copy = copy.median_ms > 0.0 ? t.median_ms / copy.median_ms : 0.0;
+      set_error_metrics(e, &row);
+      rows.push_back(row);
+      std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), miss interior %s (no scattering: 1), rel. RMSE %.4g, "
+                  "SSIM %.4f%s%s\n",
+                  done, total, tag.c_str(), method_label(row).c_str(), row.time_ms, row.time_ratio_to_copy,
+                  miss_text(row.interior().miss).c_str(), row.relative_rmse, row.ssim,
+                  path_ran.empty() ? "" : ", path ", path_ran.c_str());
+      std::fflush(stdout);
     }
+    glDeleteTextures(1, &output);
+    destroy_scene(&gpu);
   }
   copy_method.reset();
   std::vector<MsaaRow> msaa_rows;

@@ -9,15 +9,6 @@
 
 namespace sss_bench {
 
-const char* region_name(Region r) {
-  switch (r) {
-    case Region::interior: return "interior";
-    case Region::silhouette: return "silhouette";
-    case Region::border: return "border";
-    default: return "none";
-  }
-}
-
 double profile_tail_share(const sss::math::GaussianProfile& profile, double r_mm) {
   double worst = 0.0;
   for (std::size_t c = 0; c < 3; ++c) {

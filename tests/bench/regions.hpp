@@ -32,7 +32,6 @@ namespace sss_bench {
 
 enum class Region : uint8_t { none = 0, interior = 1, silhouette = 2, border = 3 };
 constexpr int kRegionCount = 3;  // interior, silhouette, border
-const char* region_name(Region r);  // "interior", "silhouette", "border"
 
 // The tail share that defines the reach above.
 constexpr double kReachTail = 1e-3;

@@ -199,9 +199,6 @@ bool draw(const std::string& script_path, bool have_gnuplot) {
   return false;
 }
 
-// Curves of (method, follow-surface) with one point per tap count: the Pareto plots' series.
-std::string curve_name(const ResultRow& r) { return series_name(r); }
-
 }  // namespace
 
 std::vector<std::string> write_pareto_plots(const std::string& directory, const std::vector<ResultRow>& rows,
@@ -219,7 +216,7 @@ std::vector<std::string> write_pareto_plots(const std::string& directory, const 
   }
   for (const auto& [key, scene_rows] : by_scene) {
     std::map<std::string, std::vector<const ResultRow*>> series;
-    for (const ResultRow* r : scene_rows) series[curve_name(*r)].push_back(r);
+    for (const ResultRow* r : scene_rows) series[series_name(*r)].push_back(r);
     const std::string data_path = directory + "/pareto-" + key + ".dat";
     const std::string script_path = directory + "/pareto-" + key + ".gp";
     const std::string png_path = directory + "/pareto-" + key + ".png";
@@ -330,7 +327,7 @@ std::vector<std::string> write_band_pareto_plots(const std::string& directory, c
       ResultRow probe;
       probe.method = s.method;
       probe.follow_surface = s.follow_surface;
-      curves[curve_name(probe)].push_back({&s, b});
+      curves[series_name(probe)].push_back({&s, b});
     }
     if (curves.empty()) continue;
     const std::string stem = directory + "/pareto-band-" + band.name;
