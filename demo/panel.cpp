@@ -37,7 +37,7 @@ void sss_section(WindowState *s) {
     c = default_sss_controls();
     c.enabled = enabled;
   }
-  const float physical = sss_width_for_world_units_per_mm(s->scene->world_units_per_mm);
+  const float physical = (s->scene->world_units_per_mm);
   ImGui::SliderFloat("width x", &c.width_scale, 0.0f, 8.0f, "%.2f");
   ImGui::TextDisabled("  = %.5f world units (physical skin: %.5f)", static_cast<double>(physical * c.width_scale),
                       static_cast<double>(physical));

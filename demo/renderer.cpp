@@ -134,7 +134,7 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
                                                 result->pixels_per_mm < kAutoPreintegratedPixelsPerMm));
   TransmittanceInputs transmittance;
   transmittance.enabled = controls.translucency;
-  transmittance.width = sss_width_for_world_units_per_mm(r->scene->world_units_per_mm) * controls.width_scale;
+  transmittance.width = 1.5f * (r->scene->world_units_per_mm) * controls.width_scale;
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,

@@ -45,7 +45,7 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float p
                 "SSS %s; width %.6g world units (%.3g x the physical %.6g = sss_width_for_world_units_per_mm(0.001));"
                 " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s; %s;"
                 " shading %s",
-                c.enabled ? "on" : "off", static_cast<double>(s.width), static_cast<double>(c.width_scale),
+                c.enabled ? "on" : "off", static_cast<double>(s.world_units_per_mm), static_cast<double>(c.width_scale),
                 static_cast<double>(physical_width), static_cast<double>(s.strength[0]),
                 static_cast<double>(s.strength[1]), static_cast<double>(s.strength[2]),
                 static_cast<double>(s.falloff[0]), static_cast<double>(s.falloff[1]),

@@ -63,7 +63,7 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm) {
   sss_settings s{};
   sss_default_settings(&s);
-  s.width = sss_width_for_world_units_per_mm(world_units_per_mm) * controls.width_scale;
+  s.world_units_per_mm = (world_units_per_mm) * controls.width_scale;
   for (int i = 0; i < 3; ++i) {
     s.strength[i] = controls.strength[i];
     s.falloff[i] = controls.falloff[i];

@@ -7,7 +7,7 @@
 //
 // Compile-time switches, as in separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the
 // pixel as it is, 2 copy u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH,
-// SSS_ADAPTIVE, SSS_MAX_TAPS, SSS_MAX_LEVELS, SSS_KERNEL_SLOTS; and
+// SSS_FOOTPRINT, SSS_MAX_TAPS, SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS; and
 //   SSS_SEGMENT        pixels one work group writes along the pass's axis (its local size)
 //   SSS_APRON          pixels cached on each side of the segment
 //   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f or rgba32f)
@@ -28,14 +28,15 @@ layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
 #endif
 
-#if SSS_ADAPTIVE
-uniform vec4 u_kernel[SSS_KERNEL_SLOTS];
-uniform vec4 u_levels[SSS_MAX_LEVELS];
-uniform int u_level_count;
+#if SSS_FOOTPRINT
+uniform vec4 u_cdf[SSS_CDF_ENTRIES];
+uniform vec4 u_footprint;
+uniform float u_spacing[SSS_MAX_HALF_TAPS];
+uniform int u_half_taps;
 #else
 uniform vec4 u_kernel[SSS_MAX_TAPS];
-#endif
 uniform int u_tap_count;
+#endif
 #if SSS_JITTER
 uniform float u_jitter[SSS_MAX_TAPS];
 #endif
@@ -74,6 +75,20 @@ float jitter_noise(ivec2 pixel, int axis) {
   h *= 0x846ca68bu;
   h ^= h >> 16u;
   return float(h >> 8u) * (1.0 / 16777216.0);
+}
+#endif
+
+#if SSS_FOOTPRINT
+// As in separable_blur.frag (and sss::math::footprint_half_cdf, footprint_taps).
+vec3 half_cdf(float x_mm) {
+  float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  int j = min(int(u), SSS_CDF_ENTRIES - 2);
+  float f = u - float(j);
+  return u_cdf[j].rgb * (1.0 - f) + u_cdf[j + 1].rgb * f;
+}
+
+float tap_position(int i, float previous, bool dense, float reach_pixels) {
+  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
 }
 #endif
 
@@ -125,26 +140,56 @@ void main() {
 #if SSS_JITTER
   float shift = jitter_noise(pixel, axis_index) - 0.5;
 #endif
-  int first = 0;
-  int end = u_tap_count;
-#if SSS_ADAPTIVE
-  for (int l = 0; l < u_level_count; ++l) {
-    if (step_pixels <= u_levels[l].z) {
-      first = int(u_levels[l].x);
-      end = first + int(u_levels[l].y);
-      break;
-    }
-  }
-  if (end == first) {
-    write_untouched(pixel, centre);
-    return;
-  }
-#endif
   const float centre_coord = float(along) + 0.5;
   const float clamp_min = u_clamp[axis_index], clamp_max = u_clamp[2 + axis_index];
   const vec2 centre_position = vec2(pixel) + 0.5;
-  vec3 sum = centre.rgb * u_kernel[first].rgb;
-  for (int i = first + 1; i < end; ++i) {
+#if SSS_FOOTPRINT
+  float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
+  bool dense = reach_pixels <= float(u_half_taps) + 0.5;
+  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+  vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
+  float p = count > 0 ? tap_position(1, 0.0, dense, reach_pixels) : 0.0;
+  vec3 below = count > 0 ? half_cdf(0.5 * p / step_pixels) : total;
+  vec3 sum = centre.rgb * (2.0 * below + u_footprint.yzw);
+  for (int i = 1; i <= count; ++i) {
+    float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
+    vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    vec3 pair = vec3(0.0);
+    for (int side = 0; side < 2; ++side) {
+      // Whole pixels: the cached texel, or the textures' where the tap is past the apron.
+      float position = clamp(centre_coord + (side == 0 ? p : -p), clamp_min, clamp_max);
+      int along_tap = int(position);
+      int index = along_tap - cache_start;
+      vec3 tap;
+      float tap_depth;
+      if (index >= 0 && index < kCached) {
+        tap = s_texel[index].rgb;
+        tap_depth = s_texel[index].a;
+      } else {
+        ivec2 texel = u_axis * along_tap + cross_axis * across;
+        tap = texelFetch(u_source, texel, 0).rgb;
+        tap_depth = texelFetch(u_depth, texel, 0).r;
+      }
+      if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
+#if SSS_FOLLOW_SURFACE
+      float d = follow_surface * abs(centre_distance - view_distance(tap_depth));
+#if SSS_FOLLOW_SURFACE == 2
+      float s = 1.0 - exp(-d * d * u_inv_two_variance);
+#else
+      float s = d;
+#endif
+      if (isnan(s) || !(s < 1.0)) s = 1.0;
+      tap = mix(tap, centre.rgb, s);
+#endif
+      pair += tap;
+    }
+    sum += (upto - below) * pair;
+    below = upto;
+    p = next;
+  }
+#else
+  vec3 sum = centre.rgb * u_kernel[0].rgb;
+  for (int i = 1; i < u_tap_count; ++i) {
 #if SSS_JITTER
     float offset = u_kernel[i].a + shift * u_jitter[i];
 #else
@@ -181,6 +226,7 @@ void main() {
 #endif
     sum += u_kernel[i].rgb * tap;
   }
+#endif
 #if SSS_OUTSIDE == 2
   imageStore(u_target, pixel, vec4(sum, texelFetch(u_original, pixel, 0).a));
 #elif SSS_OUTSIDE == 1

@@ -16,10 +16,12 @@
 //                       integer hash (supplementary Fig. S.6-S.7); 0: fixed taps
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
-//   SSS_ADAPTIVE        1: footprint-adaptive taps (SSS_ADAPTIVE_TAPS): the first level of u_levels
-//                       whose largest step is at least this pixel's runs (no taps: the pixel is left
-//                       as it is); a pixel past every level runs the full kernel. Must choose exactly
-//                       as sss::math::adaptive_taps (module/src/math/pass_kernel.cpp)
+//   SSS_FOOTPRINT       1: footprint-aware taps (every kernel without jitter): the taps sit on whole
+//                       pixels chosen from this pixel's footprint and each weighs the pass's kernel
+//                       integrated over the pixels it stands for, from its cumulative table u_cdf.
+//                       Must compute exactly what sss::math::footprint_taps does
+//                       (module/src/math/footprint_kernel.cpp). 0: the fixed tap list u_kernel,
+//                       offsets scaled per pixel and read bilinearly (jittered kernels)
 // and from the dialect's header (module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
@@ -35,14 +37,15 @@ SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attach
 #if SSS_ACCUMULATE
 SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
 #endif
-#if SSS_ADAPTIVE
-uniform vec4 u_kernel[SSS_KERNEL_SLOTS];  // the full kernel, then each level's taps
-uniform vec4 u_levels[SSS_MAX_LEVELS];    // x: first tap in u_kernel, y: tap count (0: pass through), z: largest step
-uniform int u_level_count;
+#if SSS_FOOTPRINT
+uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
+uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
+uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
+uniform int u_half_taps;                      // the most taps on either side
 #else
 uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
+uniform int u_tap_count;
 #endif
-uniform int u_tap_count;              // the full kernel's
 #if SSS_JITTER
 uniform float u_jitter[SSS_MAX_TAPS];  // per tap: its cell width in profile mm when jittered, else 0
 #endif
@@ -98,6 +101,21 @@ float jitter_noise(ivec2 pixel, int axis) {
 }
 #endif
 
+#if SSS_FOOTPRINT
+// The pass's kernel integrated from 0 to x_mm, as sss::math::footprint_half_cdf.
+vec3 half_cdf(float x_mm) {
+  float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  int j = min(int(u), SSS_CDF_ENTRIES - 2);
+  float f = u - float(j);
+  return u_cdf[j].rgb * (1.0 - f) + u_cdf[j + 1].rgb * f;
+}
+
+// The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
+float tap_position(int i, float previous, bool dense, float reach_pixels) {
+  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
+}
+#endif
+
 void leave_untouched(ivec2 pixel, vec4 centre) {
 #if SSS_OUTSIDE == 0
   o_color = centre;
@@ -132,23 +150,45 @@ void main() {
 #if SSS_JITTER
   float shift = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0) - 0.5;
 #endif
-  int first = 0;
-  int end = u_tap_count;
-#if SSS_ADAPTIVE
-  for (int l = 0; l < u_level_count; ++l) {
-    if (step_pixels <= u_levels[l].z) {
-      first = int(u_levels[l].x);
-      end = first + int(u_levels[l].y);
-      break;
-    }
-  }
-  if (end == first) {  // the whole kernel within half a pixel: nothing to blur
-    leave_untouched(pixel, centre);
-    return;
-  }
+#if SSS_FOOTPRINT
+  // Taps on whole pixels: every pixel out to the reach where the kernel spans at most u_half_taps
+  // on a side, else u_half_taps spread quadratically (never two on one pixel). A tap's weight is the
+  // kernel over the pixels between the midpoints to its neighbours; the last one takes the tail.
+  float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
+  bool dense = reach_pixels <= float(u_half_taps) + 0.5;
+  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+  vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
+  float p = count > 0 ? tap_position(1, 0.0, dense, reach_pixels) : 0.0;
+  vec3 below = count > 0 ? half_cdf(0.5 * p / step_pixels) : total;
+  vec3 sum = centre.rgb * (2.0 * below + u_footprint.yzw);
+  for (int i = 1; i <= count; ++i) {
+    float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
+    vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    vec3 pair = vec3(0.0);
+    for (int side = 0; side < 2; ++side) {
+      vec2 position = clamp(gl_FragCoord.xy + u_axis * (side == 0 ? p : -p), u_clamp.xy, u_clamp.zw);
+      ivec2 texel = ivec2(position);
+      vec3 tap = texelFetch(u_source, texel, 0).rgb;
+      if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
+#if SSS_FOLLOW_SURFACE
+      float d = follow_surface * abs(centre_distance - view_distance(texelFetch(u_depth, texel, 0).r));
+#if SSS_FOLLOW_SURFACE == 2
+      float s = 1.0 - exp(-d * d * u_inv_two_variance);
+#else
+      float s = d;
 #endif
-  vec3 sum = centre.rgb * u_kernel[first].rgb;
-  for (int i = first + 1; i < end; ++i) {
+      if (isnan(s) || !(s < 1.0)) s = 1.0;
+      tap = mix(tap, centre.rgb, s);
+#endif
+      pair += tap;
+    }
+    sum += (upto - below) * pair;
+    below = upto;
+    p = next;
+  }
+#else
+  vec3 sum = centre.rgb * u_kernel[0].rgb;
+  for (int i = 1; i < u_tap_count; ++i) {
 #if SSS_JITTER
     float offset = u_kernel[i].a + shift * u_jitter[i];
 #else
@@ -172,6 +212,7 @@ void main() {
 #endif
     sum += u_kernel[i].rgb * tap;
   }
+#endif
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif

@@ -35,7 +35,7 @@ class CrossBilateralMethod : public Method {
   bool run(const GpuScene& scene, GLuint output, std::string* error) override {
     sss_settings s;
     sss_default_settings(&s);
-    s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
+    s.world_units_per_mm = (scene.world_units_per_mm);
     s.mode = SSS_MODE_CROSS_BILATERAL;
     s.cbf_taps = taps_;
     s.cbf_profile = SSS_MATERIAL_SKIN;

@@ -54,7 +54,7 @@ class InPlaceMethod : public Method {
   bool run(const GpuScene& scene, GLuint /*output*/, std::string* error) override {
     sss_settings s;
     sss_default_settings(&s);
-    s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
+    s.world_units_per_mm = (scene.world_units_per_mm);
     s.samples = taps_;
     s.flags = SSS_FOLLOW_SURFACE | (adaptive_ ? SSS_ADAPTIVE_TAPS : 0u);
     s.path = path_;

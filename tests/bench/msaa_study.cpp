@@ -92,7 +92,7 @@ class Study {
   void configure(const Scene& scene, float width_scale) {
     sss_settings s;
     sss_default_settings(&s);
-    s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm) * width_scale;
+    s.world_units_per_mm = (scene.world_units_per_mm) * width_scale;
     if (sss_set_settings(ctx_, &s) != SSS_OK || sss_set_camera(ctx_, scene.projection.data()) != SSS_OK) {
       throw std::runtime_error(std::string("msaa study: ") + sss_last_error(ctx_));
     }

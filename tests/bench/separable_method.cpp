@@ -36,7 +36,7 @@ class SeparableMethod : public Method {
   bool run(const GpuScene& scene, GLuint output, std::string* error) override {
     sss_settings s;
     sss_default_settings(&s);
-    s.width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
+    s.world_units_per_mm = (scene.world_units_per_mm);
     s.samples = taps_;
     s.flags = follow_ ? SSS_FOLLOW_SURFACE : 0u;
     if (!kernel_.name.empty()) {

@@ -29,7 +29,7 @@ double time_calls(const GlLoader& loader, uint32_t flags, GLuint color, GLuint d
   // Width 0 written back in place draws nothing (the identity), so a call is its validation, the
   // texture queries and the state save and restore: the difference between the two contexts is the
   // restore alone, not buried under the software rasteriser's per-draw cost.
-  s.width = 0.0f;
+  s.world_units_per_mm = 0.0f;
   sss_frame frame = {};
   frame.struct_size = sizeof frame;
   frame.color_texture = color;

@@ -127,7 +127,7 @@ TEST_F(BadInput, OutputEqualToColourAndBadStencilValues) {
 TEST_F(BadInput, SettingsOutOfRangeKeepThePreviousSettings) {
   sss_settings good;
   sss_default_settings(&good);
-  good.width = 0.01f;
+  good.world_units_per_mm = 0.01f;
   ASSERT_EQ(sss_set_settings(sss_, &good), SSS_OK);
   struct Case {
     void (*mutate)(sss_settings*);
@@ -137,9 +137,9 @@ TEST_F(BadInput, SettingsOutOfRangeKeepThePreviousSettings) {
       {[](sss_settings* s) { s->samples = 16; }, "samples = 16"},
       {[](sss_settings* s) { s->samples = 1; }, "samples = 1"},
       {[](sss_settings* s) { s->samples = 67; }, "samples = 67"},
-      {[](sss_settings* s) { s->width = NAN; }, "settings->width = nan"},
-      {[](sss_settings* s) { s->width = -1.0f; }, "settings->width = -1"},
-      {[](sss_settings* s) { s->width = INFINITY; }, "settings->width = inf"},
+      {[](sss_settings* s) { s->world_units_per_mm = NAN; }, "settings->world_units_per_mm = nan"},
+      {[](sss_settings* s) { s->world_units_per_mm = -1.0f; }, "settings->world_units_per_mm = -1"},
+      {[](sss_settings* s) { s->world_units_per_mm = INFINITY; }, "settings->world_units_per_mm = inf"},
       {[](sss_settings* s) { s->strength[2] = 1.01f; }, "settings->strength[2] = 1.01"},
       {[](sss_settings* s) { s->falloff[0] = -0.5f; }, "settings->falloff[0] = -0.5"},
       {[](sss_settings* s) { s->flags = 0x40; }, "settings->flags = 0x40"},
@@ -153,7 +153,7 @@ TEST_F(BadInput, SettingsOutOfRangeKeepThePreviousSettings) {
     sss_settings now;
     now.struct_size = sizeof now;
     ASSERT_EQ(sss_get_settings(sss_, &now), SSS_OK);
-    EXPECT_EQ(now.width, good.width);
+    EXPECT_EQ(now.world_units_per_mm, good.world_units_per_mm);
     EXPECT_EQ(now.samples, good.samples);
   }
 }

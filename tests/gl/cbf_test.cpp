@@ -34,7 +34,7 @@ sss_settings cbf_settings(uint32_t profile = SSS_PROFILE_MIKKELSEN_2010, int tap
   sss_settings s;
   sss_default_settings(&s);
   s.mode = SSS_MODE_CROSS_BILATERAL;
-  s.width = 0.02f;  // about 1 pixel per profile millimetre on the 64x48 relief scene: r_max spans ~4 px
+  s.world_units_per_mm = 0.02f;  // about 1 pixel per profile millimetre on the 64x48 relief scene: r_max spans ~4 px
   s.cbf_profile = profile;
   s.cbf_taps = taps;
   return s;
@@ -161,7 +161,7 @@ TEST_F(CrossBilateral, MatchesCpuModelViewportAndOrthographic) {
   SetUp();
   FilterCase o;
   o.settings = cbf_settings();
-  o.settings.width = 0.015f;
+  o.settings.world_units_per_mm = 0.015f;
   expect_blurred_and_matching(run_case(make_relief_scene(64, 48, 5, orthographic_matrix(0.6f, 0.45f, 0.1f, 5.0f)), o));
 }
 
@@ -190,7 +190,7 @@ SyntheticScene tilted_plane(float degrees, std::vector<float>* normals) {
 TEST_F(CrossBilateral, MatchesCpuModelWithNormalTexture) {
   FilterCase c;
   c.settings = cbf_settings();
-  c.settings.width = 0.03f;
+  c.settings.world_units_per_mm = 0.03f;
   const SyntheticScene scene = tilted_plane(60.0f, &c.normals);
   expect_blurred_and_matching(run_case(scene, c));
 }
@@ -201,7 +201,7 @@ TEST_F(CrossBilateral, MatchesCpuModelWithNormalTexture) {
 TEST_F(CrossBilateral, ReconstructedNormalsAgreeWithExactOnesOnAPlane) {
   FilterCase exact;
   exact.settings = cbf_settings();
-  exact.settings.width = 0.03f;
+  exact.settings.world_units_per_mm = 0.03f;
   exact.separate_output = true;
   const SyntheticScene scene = tilted_plane(60.0f, &exact.normals);
   const FilterOutcome with_normals = run_case(scene, exact);
@@ -266,7 +266,7 @@ TEST_F(CrossBilateral, NoLightCrossesADepthStep) {
     SCOPED_TRACE(background_alpha);
     FilterCase c;
     c.settings = cbf_settings();
-    c.settings.width = 0.06f;  // r_max spans ~10 pixels at the square's distance: taps reach the background
+    c.settings.world_units_per_mm = 0.06f;  // r_max spans ~10 pixels at the square's distance: taps reach the background
     c.separate_output = true;
     const FilterOutcome cbf = run_case(depth_step_scene(background_alpha), c);
     ASSERT_EQ(cbf.result, SSS_OK);
@@ -283,7 +283,7 @@ TEST_F(CrossBilateral, NoLightCrossesADepthStep) {
     FilterCase s;
     s.settings.struct_size = 0;
     sss_default_settings(&s.settings);
-    s.settings.width = 0.06f;
+    s.settings.world_units_per_mm = 0.06f;
     s.settings.flags = 0;
     s.separate_output = true;
     const FilterOutcome separable = run_case(depth_step_scene(background_alpha), s);

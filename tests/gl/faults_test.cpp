@@ -24,7 +24,7 @@ const sss::math::Matrix4 kCamera = perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
 sss_settings wide_settings() {
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.05f;
+  s.world_units_per_mm = 0.05f;
   return s;
 }
 

@@ -72,7 +72,7 @@ TEST_F(Variant, FramesLogAllocationsAtDebugAndFailuresAtErrorWithTheLastErrorTex
   LogRecord log;
   FilterCase c;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.02f;
+  c.settings.world_units_per_mm = 0.02f;
   const SyntheticScene scene = make_relief_scene(24, 16, 2, perspective_matrix(40.0f, 1.5f, 0.1f, 10.0f));
   const GLuint color = make_rgba16f(24, 16, scene.color);
   const GLuint depth = make_depth32f(24, 16, scene.window_depth);
@@ -193,7 +193,7 @@ TEST_F(Variant, Glsl330OnAGl33ContextMatchesTheCpuModel) {
   loader_override_ = gl33_get_proc_address;
   FilterCase c;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.045f;
+  c.settings.world_units_per_mm = 0.045f;
   c.depth = DepthKind::depth24_stencil8;
   c.use_stencil = true;
   const FilterOutcome o = run_case(make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)), c);
@@ -249,7 +249,7 @@ TEST_F(Gles, EveryStateOfTheEsListIsRestored) {
   FilterCase c;
   c.settings.struct_size = sizeof c.settings;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.03f;
+  c.settings.world_units_per_mm = 0.03f;
   c.depth = DepthKind::depth24_stencil8;
   c.use_stencil = true;
 

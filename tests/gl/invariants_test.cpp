@@ -16,7 +16,7 @@ using Invariants = FilterCaseTest;
 sss_settings wide_settings() {
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.06f;
+  s.world_units_per_mm = 0.06f;
   s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
   s.falloff[0] = 1.0f;
   s.falloff[1] = 0.5f;
@@ -52,7 +52,7 @@ TEST_F(Invariants, StrengthZeroSettingsAreTheIdentityBitForBit) {
 TEST_F(Invariants, WidthZeroIntoASeparateOutputCopiesBitForBit) {
   FilterCase c;
   c.settings = wide_settings();
-  c.settings.width = 0.0f;
+  c.settings.world_units_per_mm = 0.0f;
   c.separate_output = true;
   const FilterOutcome o = run_case(make_relief_scene(40, 30, 1, kCamera), c);
   ASSERT_EQ(o.result, SSS_OK);

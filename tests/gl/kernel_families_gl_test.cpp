@@ -29,7 +29,7 @@ constexpr float kTolerance = 3e-3f;
 sss_settings family_settings(int32_t family, int32_t rank = 1) {
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.045f;  // about 2 pixels per profile millimetre on the 64x48 relief scene
+  s.world_units_per_mm = 0.045f;  // about 2 pixels per profile millimetre on the 64x48 relief scene
   s.kernel.family = family;
   s.kernel.rank = rank;
   s.samples = 17;
@@ -104,7 +104,7 @@ TEST_F(KernelFamilies, MeasuredMaterialsAndWithoutFollowSurface) {
   FilterCase marble;
   marble.settings = family_settings(SSS_KERNEL_SUM_OF_GAUSSIANS, 2);
   marble.settings.kernel.profile.material = SSS_MATERIAL_MARBLE;  // a fit of two Gaussians to its dipole
-  marble.settings.width = 0.01f;                                   // marble scatters far: fewer pixels per mm
+  marble.settings.world_units_per_mm = 0.01f;                                   // marble scatters far: fewer pixels per mm
   expect_blurred_and_matching(run_case(relief(), marble), "marble, 2 fitted Gaussians", is_gles(), 2);
   TearDown();
   SetUp();
@@ -160,7 +160,7 @@ TEST_F(KernelFamilies, PreintegratedKernelIsExactForAdditivelySeparableIrradianc
   }
   FilterCase c;
   c.settings = family_settings(SSS_KERNEL_PREINTEGRATED);
-  c.settings.width = 0.05f;
+  c.settings.world_units_per_mm = 0.05f;
   c.settings.flags = 0;
   c.depth = DepthKind::linear_r32f;
   const FilterOutcome o = run_case(scene, c);
@@ -168,7 +168,7 @@ TEST_F(KernelFamilies, PreintegratedKernelIsExactForAdditivelySeparableIrradianc
 
   // The 2D matrix convolution in double, on the same taps and pixel step.
   sss::math::FilterSettings fs;
-  fs.width = c.settings.width;
+  fs.world_units_per_mm = c.settings.world_units_per_mm;
   sss::math::FrameGeometry g;
   g.texture_width = w;
   g.texture_height = h;

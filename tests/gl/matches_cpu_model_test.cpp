@@ -104,7 +104,7 @@ TEST_F(MatchesCpuModel, ViewportInsideALargerTexture) {
 TEST_F(MatchesCpuModel, OrthographicCamera) {
   FilterCase c;
   c.settings = visible_settings(17, true);
-  c.settings.width = 0.02f;
+  c.settings.world_units_per_mm = 0.02f;
   expect_blurred_and_matching(run_case(make_relief_scene(64, 48, 5, orthographic_matrix(0.6f, 0.45f, 0.1f, 5.0f)), c));
 }
 

@@ -36,7 +36,7 @@ class Msaa : public GlTest {
     ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.05f;  // several pixels of reach at this size, so the kernel crosses the depth step
+    s.world_units_per_mm = 0.05f;  // several pixels of reach at this size, so the kernel crosses the depth step
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   }
 
@@ -182,11 +182,11 @@ TEST_F(Msaa, AMultisampledHostStencilLimitsTheFilter) {
   const std::vector<float> filtered = apply_to_output(f);
   sss_settings s;
   ASSERT_EQ((s.struct_size = sizeof s, sss_get_settings(sss_, &s)), SSS_OK);
-  const float width = s.width;
-  s.width = 0.0f;  // identity: the output is the resolved colour
+  const float width = s.world_units_per_mm;
+  s.world_units_per_mm = 0.0f;  // identity: the output is the resolved colour
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   const std::vector<float> resolved = apply_to_output(f);
-  s.width = width;
+  s.world_units_per_mm = width;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
 
   const SyntheticScene coarse = downsample_2x2(fine);
@@ -337,7 +337,7 @@ TEST_F(Msaa, TheStencilBuiltFromTheMaskLimitsThePassesToTranslucentPixels) {
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.05f;
+  s.world_units_per_mm = 0.05f;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   uint64_t translucent = 0;

@@ -137,7 +137,7 @@ class StateHarness : public GlTest {
   static sss_settings harness_settings() {
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.05f;
+    s.world_units_per_mm = 0.05f;
     return s;
   }
 

@@ -89,7 +89,7 @@ TEST_F(StateRestore, EveryListedStateIsRestoredAndTheResultIsUnaffected) {
   const SyntheticScene scene = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
   FilterCase c;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.05f;
+  c.settings.world_units_per_mm = 0.05f;
   check_restore(scene, c);
 }
 
@@ -98,7 +98,7 @@ TEST_F(StateRestore, CrossBilateralModeRestoresEveryListedState) {
   const SyntheticScene scene = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
   FilterCase c;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.05f;
+  c.settings.world_units_per_mm = 0.05f;
   c.settings.mode = SSS_MODE_CROSS_BILATERAL;
   check_restore(scene, c);
 }
@@ -162,7 +162,7 @@ TEST_F(StateRestore, AProgramDeletedWhileCurrentLeavesNoErrorBehind) {
   const SyntheticScene scene = make_relief_scene(16, 16, 2, perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f));
   FilterCase c;
   sss_default_settings(&c.settings);
-  c.settings.width = 0.05f;
+  c.settings.world_units_per_mm = 0.05f;
   set_unusual_state();
   glDeleteProgram(program_);  // flagged for deletion; stays current until another is bound
   sss_context* created = create_sss();  // builds programs, so binds others

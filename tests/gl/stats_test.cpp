@@ -47,7 +47,7 @@ class Stats : public FilterCaseTest {
     ASSERT_NE(sss_, nullptr);
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.02f;
+    s.world_units_per_mm = 0.02f;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
     ASSERT_EQ(sss_set_camera(sss_, projection_.data()), SSS_OK);
   }

@@ -297,7 +297,7 @@ RC_GTEST_PROP(HalfFloatProperties, RoundingMatchesAnIntegerReferenceIsIdempotent
 RC_GTEST_PROP(PassConstantProperties, AreNeverNaNAndClampInsideTheViewport, ()) {
   const Camera c = *camera();
   sss::math::FilterSettings s;
-  s.width = *rc::gen::weightedOneOf<float>({{1, rc::gen::just(std::numeric_limits<float>::denorm_min())},
+  s.world_units_per_mm = *rc::gen::weightedOneOf<float>({{1, rc::gen::just(std::numeric_limits<float>::denorm_min())},
                                             {1, rc::gen::just(1e6f)},
                                             {4, rc::gen::map(unit_float(), [](float u) { return u * 10.0f; })}});
   s.samples = *tap_count();
@@ -334,7 +334,7 @@ struct ModelCase {
 
 void show(const ModelCase& m, std::ostream& os) {
   os << m.width << "x" << m.height << (m.linear ? " linear" : " hardware") << " depth, samples " << m.settings.samples
-     << " width " << m.settings.width << (m.flat ? " flat" : "") << "; camera ";
+     << " width " << m.settings.world_units_per_mm << (m.flat ? " flat" : "") << "; camera ";
   show(m.camera, os);
   os << "\ncolour:";
   for (float v : m.color) os << ' ' << v;
@@ -352,7 +352,7 @@ rc::Gen<ModelCase> model_case() {
     m.linear = *rc::gen::arbitrary<bool>();
     m.half_output = *rc::gen::arbitrary<bool>();
     m.flat = *rc::gen::inRange(0, 4) == 0;
-    m.settings.width = *rc::gen::map(unit_float(), [](float u) { return u * u * 2.0f; });
+    m.settings.world_units_per_mm = *rc::gen::map(unit_float(), [](float u) { return u * u * 2.0f; });
     m.settings.strength = *unit_triple();
     m.settings.falloff = *unit_triple();
     m.settings.samples = *tap_count();

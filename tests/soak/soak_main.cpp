@@ -256,7 +256,7 @@ class Soak {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.0005f + 0.05f * unit(rng_);
+    s.world_units_per_mm = 0.0005f + 0.05f * unit(rng_);
     for (int c = 0; c < 3; ++c) {
       s.strength[c] = unit(rng_);
       s.falloff[c] = unit(rng_);

@@ -106,13 +106,13 @@ TEST_F(CameraStress, ExtremeCamerasGiveFiniteFramesWithinRange) {
   category_ = "cameras";
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.02f;
+  s.world_units_per_mm = 0.02f;
   for (const Camera& cam : cameras()) {
     SCOPED_TRACE(cam.name);
     ASSERT_EQ(sss_set_camera(sss_, cam.m.data()), SSS_OK) << sss_last_error(sss_);
     for (DepthFormat format : {DepthFormat::depth32f, DepthFormat::depth24_stencil8, DepthFormat::r32f}) {
       for (float width : {1e-6f, 0.02f, 50.0f}) {
-        s.width = std::min(1e6f, width * static_cast<float>(cam.far_d > 1e3 ? cam.far_d * 1e-3 : 1.0));
+        s.world_units_per_mm = std::min(1e6f, width * static_cast<float>(cam.far_d > 1e3 ? cam.far_d * 1e-3 : 1.0));
         ASSERT_EQ(set_settings(s), SSS_OK);
         StressFrame f = relief_frame(21, 15, 7, cam.m, cam.near_d, cam.far_d, format);
         if (cam.zero_to_one && !is_linear(format)) {
@@ -122,7 +122,7 @@ TEST_F(CameraStress, ExtremeCamerasGiveFiniteFramesWithinRange) {
           }
           f.flags = SSS_FRAME_DEPTH_ZERO_TO_ONE;
         }
-        SCOPED_TRACE(::testing::Message() << depth_format_name(format) << " width " << s.width);
+        SCOPED_TRACE(::testing::Message() << depth_format_name(format) << " width " << s.world_units_per_mm);
         ASSERT_TRUE(run_and_check(f));
       }
     }
@@ -202,7 +202,7 @@ TEST_F(CameraStress, RandomMatricesAreRejectedOrGiveFiniteFrames) {
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   sss_settings s;
   sss_default_settings(&s);
-  s.width = 0.05f;
+  s.world_units_per_mm = 0.05f;
   ASSERT_EQ(set_settings(s), SSS_OK);
   int accepted = 0, frames = 0;
   for (int trial = 0; trial < 4000; ++trial) {

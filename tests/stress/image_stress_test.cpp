@@ -26,7 +26,7 @@ class ImageStress : public StressTest {
     ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.08f;  // a wide kernel: taps reach the borders of small images
+    s.world_units_per_mm = 0.08f;  // a wide kernel: taps reach the borders of small images
     s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
     s.samples = 25;
     ASSERT_EQ(set_settings(s), SSS_OK);
@@ -99,7 +99,7 @@ TEST_F(ImageStress, ColoursNearTheLimitsStayFiniteAndInRange) {
       for (int samples : {3, 25, 65}) {
         sss_settings s;
         sss_default_settings(&s);
-        s.width = 0.08f;
+        s.world_units_per_mm = 0.08f;
         s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
         s.samples = samples;
         ASSERT_EQ(set_settings(s), SSS_OK);

@@ -31,7 +31,7 @@ class NonFiniteStress : public StressTest {
     ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     sss_settings s;
     sss_default_settings(&s);
-    s.width = 0.1f;  // taps reach across the whole image
+    s.world_units_per_mm = 0.1f;  // taps reach across the whole image
     s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
     s.samples = 33;
     ASSERT_EQ(set_settings(s), SSS_OK);

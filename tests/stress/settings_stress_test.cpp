@@ -48,7 +48,7 @@ TEST_F(SettingsStress, ExtremeWidthsStrengthsAndFalloffs) {
         for (int samples : {3, 17, 65}) {
           for (uint32_t flags : {0u, SSS_FOLLOW_SURFACE}) {
             sss_settings s = base_settings();
-            s.width = width;
+            s.world_units_per_mm = width;
             for (int c = 0; c < 3; ++c) {
               s.strength[c] = strength[c];
               s.falloff[c] = falloff[c];
@@ -82,7 +82,7 @@ TEST_F(SettingsStress, EveryTapCountKeepsAFlatImageFlatAndItsKernelSumsToOne) {
   for (int samples = SSS_MIN_SAMPLES; samples <= SSS_MAX_SAMPLES; samples += 2) {
     for (float falloff : falloffs) {
       sss_settings s = base_settings();
-      s.width = 0.3f;
+      s.world_units_per_mm = 0.3f;
       s.samples = samples;
       s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
       s.falloff[0] = falloff;
@@ -133,7 +133,7 @@ TEST_F(SettingsStress, RandomSettingsEveryFrame) {
   };
   for (int frame = 0; frame < 120; ++frame) {
     sss_settings s = base_settings();
-    s.width = std::pow(10.0f, -8.0f + 14.0f * unit(rng)) * (pick(rng) == 0 ? 0.0f : 1.0f);
+    s.world_units_per_mm = std::pow(10.0f, -8.0f + 14.0f * unit(rng)) * (pick(rng) == 0 ? 0.0f : 1.0f);
     for (int c = 0; c < 3; ++c) {
       s.strength[c] = unit_value();
       s.falloff[c] = unit_value();
@@ -149,8 +149,8 @@ TEST_F(SettingsStress, RandomSettingsEveryFrame) {
     f.use_stencil = f.depth_format == DepthFormat::depth24_stencil8 && pick(rng) < 5;
     f.separate_output = pick(rng) < 3;
     Expectations e;
-    e.identity = s.width == 0.0f || (s.strength[0] == 0.0f && s.strength[1] == 0.0f && s.strength[2] == 0.0f);
-    SCOPED_TRACE(::testing::Message() << "frame " << frame << " width " << s.width << " samples " << s.samples);
+    e.identity = s.world_units_per_mm == 0.0f || (s.strength[0] == 0.0f && s.strength[1] == 0.0f && s.strength[2] == 0.0f);
+    SCOPED_TRACE(::testing::Message() << "frame " << frame << " width " << s.world_units_per_mm << " samples " << s.samples);
     ASSERT_TRUE(run_and_check(f, e));
   }
 }
@@ -158,7 +158,7 @@ TEST_F(SettingsStress, RandomSettingsEveryFrame) {
 TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsStay) {
   category_ = "settings-rejected";
   sss_settings good = base_settings();
-  good.width = 0.01f;
+  good.world_units_per_mm = 0.01f;
   good.samples = 21;
   ASSERT_EQ(sss_set_settings(sss_, &good), SSS_OK);
   const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
@@ -171,13 +171,13 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
     check(sss_set_settings(sss_, &s) == SSS_ERROR_INVALID_ARGUMENT, std::string(what) + " accepted");
     sss_settings now;
     now.struct_size = sizeof now;
-    check(sss_get_settings(sss_, &now) == SSS_OK && now.width == good.width && now.samples == good.samples &&
+    check(sss_get_settings(sss_, &now) == SSS_OK && now.world_units_per_mm == good.world_units_per_mm && now.samples == good.samples &&
               now.strength[1] == good.strength[1] && now.falloff[2] == good.falloff[2],
           std::string(what) + ": the previous settings did not stay");
   };
   for (float v : bad_widths) {
     sss_settings s = good;
-    s.width = v;
+    s.world_units_per_mm = v;
     expect_rejected(s, ("width " + std::to_string(v)).c_str());
   }
   for (float v : bad_units) {

@@ -35,7 +35,7 @@ sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
 sss_settings visible_settings(int samples, uint32_t flags, float width) {
   sss_settings s;
   sss_default_settings(&s);
-  s.width = width;
+  s.world_units_per_mm = width;
   s.strength[0] = 0.9f;
   s.strength[1] = 0.8f;
   s.strength[2] = 0.7f;
@@ -59,6 +59,31 @@ void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame
   frame->normal_format = frame->normal_texture != 0 ? GL_RGBA32F : 0;
   frame->texture_width = width;
   frame->texture_height = height;
+}
+
+// The math layer's request for a public kernel description (as the API layer maps it).
+sss::math::KernelRequest request_for(const sss_kernel_desc& d) {
+  sss::math::KernelRequest q;
+  q.family = static_cast<sss::math::KernelFamily>(d.family);
+  q.taps = d.taps;
+  q.rank = d.rank;
+  q.rescale_energy = (d.flags & SSS_KERNEL_SVD_NO_RESCALE) == 0u;
+  q.guide_k = d.guide_k;
+  q.radius_mm = d.radius_mm;
+  for (std::size_t c = 0; c < 3; ++c) {
+    q.artist.near_variance_mm2[c] = d.near_variance_mm2[c];
+    q.artist.far_variance_mm2[c] = d.far_variance_mm2[c];
+    q.artist.near_weight[c] = d.near_weight[c];
+  }
+  q.profile.material = d.profile.material == SSS_MATERIAL_SKIN ? sss::math::kProfileSkin
+                       : d.profile.material == SSS_MATERIAL_TABULATED ? sss::math::kProfileTable
+                                                                     : d.profile.material - 1;
+  q.profile.gaussian_count = d.profile.gaussian_count;
+  for (int32_t i = 0; d.profile.material == SSS_MATERIAL_TABULATED && i < d.profile.table_size; ++i) {
+    q.profile.table_radii_mm.push_back(d.profile.table_radius_mm[i]);
+    q.profile.table_values.push_back({d.profile.table_rgb[i * 3], d.profile.table_rgb[i * 3 + 1], d.profile.table_rgb[i * 3 + 2]});
+  }
+  return q;
 }
 
 sss::math::KernelPlan plan_for(const sss_settings& settings) {
@@ -151,12 +176,15 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
 
   // The CPU model with the same constants.
   sss::math::FilterSettings fs;
-  fs.width = c.settings.width;
+  fs.world_units_per_mm = c.settings.world_units_per_mm;
   fs.strength = {c.settings.strength[0], c.settings.strength[1], c.settings.strength[2]};
   fs.falloff = {c.settings.falloff[0], c.settings.falloff[1], c.settings.falloff[2]};
   fs.samples = c.settings.samples;
   fs.follow_surface = (c.settings.flags & SSS_FOLLOW_SURFACE) != 0;
-  fs.adaptive_taps = (c.settings.flags & SSS_ADAPTIVE_TAPS) != 0;
+  fs.scale = c.settings.scale;
+  fs.separable_scale = c.settings.separable_scale;
+  fs.jitter = c.settings.jitter;
+  fs.kernel = request_for(c.settings.kernel);
   sss::math::FrameGeometry g;
   g.texture_width = w;
   g.texture_height = h;
@@ -164,11 +192,9 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
                                   : std::array<int, 4>{c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]};
   g.depth = c.depth == DepthKind::linear_r32f ? sss::math::DepthEncoding::linear_distance
                                               : sss::math::DepthEncoding::hardware_minus_one_to_one;
-  // The kernel through the public GL-free API (sss_kernel_plan), shaped for the passes by the math layer.
-  sss::math::PassKernel kernel = sss::math::make_pass_kernel(plan_for(c.settings), c.settings.jitter);
-  if (fs.adaptive_taps && c.settings.kernel.family == SSS_KERNEL_SEPARABLE && !kernel.jittered) {
-    kernel.adaptive = sss::math::adaptive_levels(fs.samples, fs.strength, fs.falloff);
-  }
+  // The kernel the math layer builds from these settings (the footprint tables are its closed forms,
+  // which the public tap lists of sss_kernel_plan do not carry).
+  const sss::math::PassKernel kernel = sss::math::build_pass_kernel(fs);
   auto constants = sss::math::compute_pass_constants(fs, scene.projection, g, kernel.reach_mm);
   const bool empty_region = c.use_region && (c.region[2] == 0 || c.region[3] == 0);
   if (c.use_region && !empty_region) {  // what sss_apply_frame does: taps and drawn pixels inside the region

@@ -130,7 +130,7 @@ TEST(CpuCbfFilter, FlatStaysFlatAndTiltedPlaneIsBlurred) {
   const auto projection = sss_test::perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
   sss_test::SyntheticScene s = sss_test::make_flat_scene(32, 32, {0.3f, 0.5f, 0.7f, 1.0f}, 1.0f, projection);
   FilterSettings fs;
-  fs.width = 0.03f;
+  fs.world_units_per_mm = 0.03f;
   FrameGeometry g;
   g.texture_width = g.texture_height = 32;
   g.viewport = {0, 0, 32, 32};

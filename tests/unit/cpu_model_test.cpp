@@ -36,7 +36,7 @@ std::vector<float> filter(const SyntheticScene& scene, sss::math::FilterSettings
 
 sss::math::FilterSettings wide() {
   sss::math::FilterSettings s;
-  s.width = 0.06f;
+  s.world_units_per_mm = 0.06f;
   s.strength = {1.0f, 1.0f, 1.0f};
   s.falloff = {1.0f, 0.5f, 0.3f};
   return s;

@@ -173,7 +173,7 @@ TEST(DefaultSettings, AreThePapersFitInAMetricScene) {
   sss_settings s;
   sss_default_settings(&s);
   EXPECT_EQ(s.struct_size, sizeof s);
-  EXPECT_FLOAT_EQ(s.width, sss_width_for_world_units_per_mm(0.001f));
+  EXPECT_FLOAT_EQ(s.world_units_per_mm, (0.001f));
   EXPECT_FLOAT_EQ(s.strength[0], 0.78f);
   EXPECT_FLOAT_EQ(s.falloff[2], 0.08f);
   EXPECT_EQ(s.samples, SSS_SAMPLES_MEDIUM);
@@ -182,56 +182,4 @@ TEST(DefaultSettings, AreThePapersFitInAMetricScene) {
 
 }  // namespace
 
-// Footprint-adaptive taps (SSS_ADAPTIVE_TAPS): every level is eq. (1) over the full kernel's range,
-// each channel summing to 1, with limits that grow with the tap count; the choice is the first
-// level whose limit the step does not pass.
-TEST(AdaptiveLevels, EachLevelIsEquationOneOverTheFullRange) {
-  const std::array<float, 3> strength = {0.78f, 0.70f, 0.75f}, falloff = {0.57f, 0.13f, 0.08f};
-  for (int samples : {3, 9, 17, 25, 33, 65}) {
-    const auto levels = sss::math::adaptive_levels(samples, strength, falloff);
-    ASSERT_FALSE(levels.empty());
-    EXPECT_TRUE(levels[0].taps.taps.empty()) << "the first level passes the pixel through";
-    const double range = sss::math::separable_kernel_range_mm(samples);
-    EXPECT_FLOAT_EQ(levels[0].max_step, static_cast<float>(sss::math::kPassThroughRadiusPx / range));
-    for (std::size_t l = 1; l < levels.size(); ++l) {
-      const auto& taps = levels[l].taps.taps;
-      const int n = static_cast<int>(taps.size());
-      EXPECT_LT(n, samples);
-      EXPECT_GT(levels[l].max_step, levels[l - 1].max_step);
-      EXPECT_FLOAT_EQ(levels[l].max_step, static_cast<float>(sss::math::kLevelSpacingPx * static_cast<double>((n - 1) / 2) / range));
-      EXPECT_EQ(taps[0].offset_mm, 0.0f);
-      float largest = 0.0f;
-      for (int c = 0; c < 3; ++c) {
-        double sum = 0.0;
-        for (const auto& t : taps) sum += t.weight[static_cast<std::size_t>(c)];
-        EXPECT_NEAR(sum, 1.0, 1e-6) << "samples " << samples << ", level " << l << ", channel " << c;
-      }
-      for (const auto& t : taps) largest = std::max(largest, std::fabs(t.offset_mm));
-      EXPECT_NEAR(largest, range, 1e-6);
-    }
-  }
-  // Up to 17 taps: nothing below the kernel but the pass-through (9 taps at an eighth-pixel spacing
-  // would serve only what it takes); 33: and 17 taps; 65: 17 and 33.
-  EXPECT_EQ(sss::math::adaptive_levels(3, strength, falloff).size(), 1u);
-  EXPECT_EQ(sss::math::adaptive_levels(9, strength, falloff).size(), 1u);
-  EXPECT_EQ(sss::math::adaptive_levels(17, strength, falloff).size(), 1u);
-  EXPECT_EQ(sss::math::adaptive_levels(33, strength, falloff).size(), 2u);
-  EXPECT_EQ(sss::math::adaptive_levels(65, strength, falloff).size(), 3u);
-}
 
-TEST(AdaptiveLevels, TheChoiceIsTheFirstLevelWhoseLimitHoldsTheStep) {
-  const std::array<float, 3> strength = {0.78f, 0.70f, 0.75f}, falloff = {0.57f, 0.13f, 0.08f};
-  const auto levels = sss::math::adaptive_levels(65, strength, falloff);  // pass-through, 17, 33
-  ASSERT_EQ(levels.size(), 3u);
-  sss::math::PassTaps full;
-  full.taps = sss::math::separable_kernel(65, strength, falloff);
-  EXPECT_EQ(sss::math::adaptive_taps(levels, full, 0.0f), nullptr);
-  EXPECT_EQ(sss::math::adaptive_taps(levels, full, levels[0].max_step), nullptr);
-  for (std::size_t l = 1; l < levels.size(); ++l) {
-    const float just_above = std::nextafter(levels[l - 1].max_step, 1e9f);
-    EXPECT_EQ(sss::math::adaptive_taps(levels, full, just_above), &levels[l].taps) << l;
-    EXPECT_EQ(sss::math::adaptive_taps(levels, full, levels[l].max_step), &levels[l].taps) << l;
-  }
-  EXPECT_EQ(sss::math::adaptive_taps(levels, full, std::nextafter(levels.back().max_step, 1e9f)), &full);
-  EXPECT_EQ(sss::math::adaptive_taps({}, full, 0.0f), &full);  // no levels: always the full kernel
-}

@@ -34,7 +34,7 @@ TEST(PassConstants, HugeProjectionScalesNeverGiveNaNOrInfinity) {
   for (float width : {0.0f, std::numeric_limits<float>::denorm_min(), 0.0015f, 1e6f}) {
     for (float scale : {-2.3373e38f, big, -big, 1e30f}) {
       sss::math::FilterSettings s;
-      s.width = width;
+      s.world_units_per_mm = width;
       const auto k = sss::math::compute_pass_constants(s, camera_with_scales(scale, scale), geometry(16384, 4));
       for (float p : k.pixels_per_mm) {
         EXPECT_TRUE(std::isfinite(p)) << "width " << width << " scale " << scale << ": " << p;
@@ -50,7 +50,7 @@ TEST(PassConstants, HugeProjectionScalesNeverGiveNaNOrInfinity) {
 
 TEST(PassConstants, ADenormalWidthGivesAFiniteFollowSurfaceFactor) {
   sss::math::FilterSettings s;
-  s.width = std::numeric_limits<float>::denorm_min();
+  s.world_units_per_mm = std::numeric_limits<float>::denorm_min();
   const auto k = sss::math::compute_pass_constants(s, camera_with_scales(1.0f, 1.0f), geometry(8, 8));
   EXPECT_EQ(k.follow_surface_factor, std::numeric_limits<float>::max());
 }

@@ -78,7 +78,7 @@ TEST(Projection, RejectsSingularAndNonFiniteMatrices) {
 
 TEST(FilterConstants, HorizontalScaleIsAspectCorrect) {
   sss::math::FilterSettings s;
-  s.width = 0.03f;
+  s.world_units_per_mm = 0.03f;
   sss::math::FrameGeometry g;
   g.texture_width = 200;
   g.texture_height = 100;

@@ -8,7 +8,7 @@
  *
  *     sss_create_desc desc = { sizeof desc, my_get_proc_address, NULL };
  *     sss_context *sss; sss_create(&desc, &sss);           // GL context current
- *     sss_settings s; sss_default_settings(&s); s.width = 0.0015f; sss_set_settings(sss, &s);
+ *     sss_settings s; sss_default_settings(&s); s.world_units_per_mm = 0.001f; sss_set_settings(sss, &s);
  *     ...every frame:
  *     sss_set_camera(sss, projection);                     // column-major, as glUniformMatrix4fv
  *     sss_apply(sss, diffuse_rgba16f, depth24_stencil8, NULL);  // blurs diffuse in place
@@ -99,21 +99,14 @@ typedef struct sss_create_desc {
 /* Flags for sss_settings.flags. */
 /** Follow-surface test (paper §3.2): a tap is blended back towards the centre colour in proportion
  *  to its depth difference from the centre, fully once that difference reaches the kernel's reach
- *  (its largest tap offset in profile millimetres, scaled like the taps by width and the pixel's
+ *  (its largest tap offset in profile millimetres, scaled like the taps by the scene scale and the pixel's
  *  alpha). The artist family (SSS_KERNEL_ARTIST) blends by its exact depth correction instead:
  *  1 - exp(-dz²/2τ_max), dz in profile millimetres (supplementary §E). */
 #define SSS_FOLLOW_SURFACE 0x1u
-/** Footprint-adaptive taps: each pixel's kernel is sized by its footprint, the pixels one profile
- *  millimetre spans there (width, projection, depth and alpha decide it). A pixel whose whole kernel
- *  spans less than half a pixel is passed through untouched (no taps: the exact convolution keeps
- *  nearly all such a pixel's light in it); above that, the pixel runs eq. (1) with 17 or 33 taps
- *  over the same range, the fewest whose mean spacing stays within an eighth of a pixel, up to
- *  `samples`; a pixel that needs more runs the full kernel (with the default 17 taps: pass-through
- *  or the full kernel). The error stays the fixed kernel's (docs/benchmarks.md, "Skipping what a
- *  frame does not need", compares the two on the head shots). A distant head pays for few taps or none instead of
- *  `samples`; a close-up at full resolution is unchanged. Applies to eq. (1)
- *  (SSS_KERNEL_SEPARABLE) without jitter; other families and jittered kernels run every tap, and
- *  the cross-bilateral mode is not affected. Default off (the paper's fixed taps). */
+/** Accepted for source compatibility and ignored since 0.2: every kernel without jitter now runs
+ *  footprint-aware taps (see sss_settings.samples), which choose each pixel's taps from its footprint,
+ *  pass a pixel whose kernel fits inside it through and never read more taps than its footprint
+ *  needs; what this flag used to switch on is the default behaviour. */
 #define SSS_ADAPTIVE_TAPS 0x2u
 #define SSS_SETTINGS_ALL_FLAGS 0x3u
 
@@ -165,7 +158,7 @@ typedef struct sss_create_desc {
  *  placed by the inverse CDF of the red channel's profile (cbf_taps of them), green and blue reuse
  *  them with their own weights; a range Gaussian on the depth difference and zero weight for
  *  neighbours that are not translucent (alpha 0 or outside the stencil) keep light from crossing
- *  silhouettes. Uses width (world units per mm, and alpha scaling it) like the separable mode;
+ *  silhouettes. Uses world_units_per_mm and scale (and alpha scaling them) like the separable mode;
  *  ignores strength, falloff, samples and flags: the profile (cbf_profile) sets the unscattered
  *  share and the radii. */
 #define SSS_MODE_CROSS_BILATERAL 1u
@@ -180,22 +173,38 @@ typedef struct sss_create_desc {
 #define SSS_CBF_DEFAULT_R_MAX_MM 4.5f /**< Mikkelsen's r_max for skin */
 #define SSS_CBF_MAX_R_MAX_MM 50.0f
 
-/** Filter settings. Units: `width` is in world units, with the paper's meaning: one millimetre of
- *  the diffusion profile spans (2/3)·width world units (so width = 1.5 · world units per mm; a
- *  scene in metres with physical skin uses width = 0.0015; see sss_width_for_world_units_per_mm).
- *  The per-pixel alpha of the colour texture (0..1) scales the width further, as in the paper. */
+/** Filter settings.
+ *
+ *  Units (changed in 0.2; see docs/migration.md): the scene scale and the look are apart.
+ *  world_units_per_mm says how long one millimetre of the surface is in the host's world units
+ *  (0.001 for a scene in metres, 1 for millimetres, 0.1 for centimetres, 0.0254 for inches... per
+ *  mm: 1/25.4); `scale` multiplies every scattering distance, 1 being the material at its physical
+ *  size. With the defaults a scene in metres gets d'Eon's skin profile at its measured size. The
+ *  per-pixel alpha of the colour texture (0..1) scales the distances further, as in the paper.
+ *  The paper's `width` (one kernel millimetre spans (2/3)·width world units) converts with
+ *  sss_world_units_per_mm_from_legacy_width; to reproduce a 0.1 image exactly, also select
+ *  sss_settings_separable_table1 and set separable_scale to 1. */
 typedef struct sss_settings {
   uint32_t struct_size; /**< sizeof(sss_settings) */
-  float width;          /**< [0, 1e6], finite. 0 leaves the image unchanged. Default 0.0015 */
-  float strength[3];    /**< [0, 1] per channel: share of light that scatters. Default .78 .70 .75 */
-  float falloff[3];     /**< [0, 1] per channel: profile radius scale. Default .57 .13 .08 */
-  int32_t samples;      /**< odd, [3, 65]; taps per pass. Default 17 */
-  uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on), SSS_ADAPTIVE_TAPS (default off) */
+  float world_units_per_mm; /**< [0, 1e6], finite: world units per millimetre of surface; 0 leaves the image
+                                 unchanged. Default 0.001 (metres) */
+  float scale;          /**< [0, 1e3], finite: multiplies the scattering distances; 1 = physical, 0 leaves the
+                             image unchanged. Default 1 */
+  float strength[3];    /**< [0, 1] per channel, eq. (1): share of light that scatters. Default: the calibrated fit
+                             (sss_default_settings; the values and the fit: docs/kernel-fits.md) */
+  float falloff[3];     /**< [0, 1] per channel, eq. (1): profile radius scale. Default: the calibrated fit */
+  float separable_scale; /**< (0, 100], finite, eq. (1): kernel millimetres (the unit of its 2 or 3 mm range and of
+                              falloff) per millimetre of surface. Default: the calibrated fit. The paper's Table 1
+                              with its own derived scale: sss_settings_separable_table1 */
+  int32_t samples;      /**< odd, [3, 65]; the most taps per pass (each pixel reads as many as its footprint
+                             needs, up to this: every pixel out to the kernel's reach where it spans fewer
+                             pixels, else spread quadratically denser at the centre). Default 17 */
+  uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on); SSS_ADAPTIVE_TAPS is accepted and ignored */
   /* Appended in 0.1 for the cross-bilateral mode. */
   uint32_t mode;        /**< SSS_MODE_SEPARABLE (default) or SSS_MODE_CROSS_BILATERAL */
   int32_t cbf_taps;     /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
-  float cbf_r_max_mm;   /**< (0, 50] profile millimetres, finite: radius of the footprint sphere (world units
-                             via width: r_max · (2/3)·width, times alpha). Default 4.5 */
+  float cbf_r_max_mm;   /**< (0, 50] profile millimetres, finite: radius of the footprint sphere (world units:
+                             r_max · world_units_per_mm · scale, times alpha). Default 4.5 */
   uint32_t cbf_profile; /**< SSS_PROFILE_MIKKELSEN_2010 (default), an sss_material in [SSS_MATERIAL_SKIN,
                              SSS_MATERIAL_WHOLEMILK] (see sss_profile_transmittance_terms for how each is
                              expressed; a measured material costs a fit, up to ~0.1 s, when first selected), or
@@ -327,7 +336,7 @@ typedef struct sss_stats {
   uint64_t passes;               /**< full-screen draws over all those frames (blur passes, two per kernel term, and the copies of
                                       stencil-rejected pixels, and for multisampled input the resolve, the stencil
                                       mark and one write per sample; SSS_PATH_FRAGMENT_MASKED adds its stencil mark,
-                                      the compute path counts its two dispatches; 0 for an in-place frame with width
+                                      the compute path counts its two dispatches; 0 for an in-place frame with scale
                                       or strength 0) */
   uint32_t last_frame_passes;    /**< full-screen draws of the last successful frame */
   /* GPU measurements (SSS_CREATE_STATS only). Read back without stalling: they come from the
@@ -391,12 +400,21 @@ SSS_API void sss_destroy(sss_context *ctx);
 /** Fills *s with the defaults documented on sss_settings (struct_size set). NULL is a no-op. */
 SSS_API void sss_default_settings(sss_settings *s);
 
-/** Width for a scene whose world unit is `world_units_per_mm` per millimetre (1.5 × it). */
-SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm);
+/** The legacy conversion: world_units_per_mm for the paper's (and sss 0.1's) `width`, with which one
+ *  millimetre of the profile spanned (2/3)·width world units: returns (2/3)·width. (0.1's
+ *  sss_width_for_world_units_per_mm, 1.5 × world units per mm, is gone: world_units_per_mm is set
+ *  directly now.) */
+SSS_API float sss_world_units_per_mm_from_legacy_width(float width);
+
+/** Sets the eq. (1) kernel of *s to the paper's Table 1 (strength .78 .70 .75, falloff .57 .13 .08)
+ *  with the separable_scale fitted for it against d'Eon's skin (docs/kernel-fits.md), so that Table 1 too is physical skin size at scale 1. Other fields are kept.
+ *  NULL is a no-op. */
+SSS_API void sss_settings_separable_table1(sss_settings *s);
 
 /** Validates and takes the settings; a kernel is rebuilt only when its inputs change. Does not call GL.
  *  @retval SSS_OK
- *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, width, strength, falloff, samples, flags,
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, world_units_per_mm, scale, strength, falloff,
+ *                                     separable_scale, samples, flags,
  *                                     mode, cbf_taps, cbf_r_max_mm, cbf_profile, jitter, path (0..3) or a field of kernel
  *                                     (any but taps, strength and falloff, which are not read) outside
  *                                     its range (every field is checked, whatever the mode and family); a

@@ -231,7 +231,7 @@ sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint3
 // Width 0 or no strength in any channel: the filter is the identity, so nothing is drawn unless a
 // separate output must receive the colour.
 bool is_identity(const sss::math::FilterSettings& s) {
-  if (s.width == 0.0f) return true;
+  if (s.world_units_per_mm == 0.0f || s.scale == 0.0f) return true;
   // Strength applies to eq. (1) alone (the separable family); the others scatter what their profile does.
   return s.kernel.family == sss::math::KernelFamily::separable && s.strength[0] == 0.0f && s.strength[1] == 0.0f &&
          s.strength[2] == 0.0f;
@@ -296,7 +296,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   if (run.path == SSS_PATH_AUTO) run.path_key = path_key(*ctx, run, frame->flags);  // only AUTO reads it
   if (ctx->settings.cross_bilateral) {
     run.cross_bilateral = true;
-    run.identity = ctx->settings.width == 0.0f;  // strength does not apply to this mode
+    run.identity = ctx->settings.world_units_per_mm == 0.0f || ctx->settings.scale == 0.0f;  // strength does not apply here
     run.cbf_kernel = &ctx->cbf_kernel;
     run.cbf_kernel_revision = ctx->cbf_kernel_revision;
     run.cbf = sss::math::compute_cbf_constants(ctx->settings, ctx->projection, geometry);

@@ -14,7 +14,9 @@ using sss::api::fail;
 
 sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   sss::math::FilterSettings f;
-  f.width = s.width;
+  f.world_units_per_mm = s.world_units_per_mm;
+  f.scale = s.scale;
+  f.separable_scale = s.separable_scale;
   f.strength = {s.strength[0], s.strength[1], s.strength[2]};
   f.falloff = {s.falloff[0], s.falloff[1], s.falloff[2]};
   f.samples = s.samples;
@@ -25,19 +27,20 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.cbf_profile = s.cbf_profile;
   f.kernel = sss::api::to_kernel_request(s.kernel);
   f.jitter = s.jitter;
-  f.adaptive_taps = (s.flags & SSS_ADAPTIVE_TAPS) != 0;
   f.path = s.path;
   return f;
 }
 
 void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
-  s->width = f.width;
+  s->world_units_per_mm = f.world_units_per_mm;
+  s->scale = f.scale;
+  s->separable_scale = f.separable_scale;
   for (int c = 0; c < 3; ++c) {
     s->strength[c] = f.strength[static_cast<std::size_t>(c)];
     s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
   }
   s->samples = f.samples;
-  s->flags = (f.follow_surface ? SSS_FOLLOW_SURFACE : 0u) | (f.adaptive_taps ? SSS_ADAPTIVE_TAPS : 0u);
+  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
   s->mode = f.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   s->cbf_taps = f.cbf_taps;
   s->cbf_r_max_mm = f.cbf_r_max_mm;
@@ -102,7 +105,17 @@ SSS_API void sss_default_settings(sss_settings* s) {
   sss_default_kernel_desc(&s->kernel);
 }
 
-SSS_API float sss_width_for_world_units_per_mm(float world_units_per_mm) { return 1.5f * world_units_per_mm; }
+SSS_API float sss_world_units_per_mm_from_legacy_width(float width) { return width * (2.0f / 3.0f); }
+
+SSS_API void sss_settings_separable_table1(sss_settings* s) {
+  if (s == nullptr) return;
+  const float strength[3] = {0.78f, 0.70f, 0.75f}, falloff[3] = {0.57f, 0.13f, 0.08f};
+  for (int c = 0; c < 3; ++c) {
+    s->strength[c] = strength[c];
+    s->falloff[c] = falloff[c];
+  }
+  s->separable_scale = sss::math::kTable1SeparableScale;
+}
 
 SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");

@@ -33,9 +33,17 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->struct_size = %u: expected sizeof(sss_settings) = %u",
                 s->struct_size, static_cast<unsigned>(sizeof(sss_settings)));
   }
-  if (!(s->width >= 0.0f && s->width <= 1e6f)) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->width = %g: must be finite and in [0, 1e6]",
-                static_cast<double>(s->width));
+  if (!(s->world_units_per_mm >= 0.0f && s->world_units_per_mm <= 1e6f)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->world_units_per_mm = %g: must be finite and in [0, 1e6]",
+                static_cast<double>(s->world_units_per_mm));
+  }
+  if (!(s->scale >= 0.0f && s->scale <= 1e3f)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->scale = %g: must be finite and in [0, 1000]",
+                static_cast<double>(s->scale));
+  }
+  if (!(s->separable_scale > 0.0f && s->separable_scale <= 100.0f)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->separable_scale = %g: must be finite and in (0, 100]",
+                static_cast<double>(s->separable_scale));
   }
   sss_result r = check_unit_range(ctx, "settings->strength", s->strength);
   if (r == SSS_OK) r = check_unit_range(ctx, "settings->falloff", s->falloff);

@@ -191,8 +191,7 @@ SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run,
   v.linear_depth = run.constants.linear_depth;
   v.jitter = !taps.jitter_mm.empty();
   v.accumulate = axis == 1 && term > 0;
-  // The levels are eq. (1) of one term: a kernel of several terms never has them.
-  v.adaptive = !run.kernel->adaptive.empty() && run.kernel->terms.size() == 1;
+  v.footprint = run.kernel->footprint;
   return v;
 }
 
@@ -202,7 +201,7 @@ int SeparableFilter::variant_index(const BlurVariant& v) {
               2 +
           (v.accumulate ? 1 : 0)) *
              2 +
-         (v.adaptive ? 1 : 0);
+         (v.footprint ? 1 : 0);
 }
 
 std::string SeparableFilter::variant_defines(const BlurVariant& v) {
@@ -210,10 +209,10 @@ std::string SeparableFilter::variant_defines(const BlurVariant& v) {
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
                 "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_MAX_TAPS %d\n"
-                "#define SSS_ADAPTIVE %d\n#define SSS_MAX_LEVELS %d\n#define SSS_KERNEL_SLOTS %d\n",
+                "#define SSS_FOOTPRINT %d\n#define SSS_CDF_ENTRIES %d\n#define SSS_MAX_HALF_TAPS %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES), v.adaptive ? 1 : 0, math::kMaxAdaptiveLevels,
-                kKernelSlots);
+                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES), v.footprint ? 1 : 0, math::kFootprintEntries,
+                math::kMaxFootprintHalfTaps);
   return defines;
 }
 
@@ -231,9 +230,9 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[112];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d adaptive=%d",
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d footprint=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, v.adaptive ? 1 : 0);
+                v.accumulate ? 1 : 0, v.footprint ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
   find_blur_uniforms(&p);
@@ -265,8 +264,10 @@ void SeparableFilter::find_blur_uniforms(BlurProgram* program) const {
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.clamp = f.GetUniformLocation(p.program, "u_clamp");
-  p.levels = f.GetUniformLocation(p.program, "u_levels");
-  p.level_count = f.GetUniformLocation(p.program, "u_level_count");
+  p.cdf = f.GetUniformLocation(p.program, "u_cdf");
+  p.footprint = f.GetUniformLocation(p.program, "u_footprint");
+  p.spacing = f.GetUniformLocation(p.program, "u_spacing");
+  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
 }
 
@@ -495,27 +496,25 @@ void SeparableFilter::set_blur_uniforms(BlurProgram& p, const FilterRun& run, st
   f.UseProgram(p.program);
   if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
     std::vector<float> packed;
-    packed.reserve(taps.taps.size() * 4);
-    const auto pack = [&packed](const std::vector<math::KernelTap>& list) {
-      for (const math::KernelTap& tap : list) {
+    if (p.cdf >= 0) {
+      // The footprint-aware taps: the pass's cumulative table, its reach and centre delta, the
+      // sparse layout's spacing and the most taps per side.
+      const math::FootprintTable& table = taps.footprint;
+      packed.reserve(table.half_cdf.size() * 4);
+      for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
+      f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+      f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+      const std::vector<float>& spacing = run.kernel->spacing;
+      if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
+      f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
+    } else {
+      packed.reserve(taps.taps.size() * 4);
+      for (const math::KernelTap& tap : taps.taps) {
         packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
       }
-    };
-    pack(taps.taps);
-    if (p.levels >= 0) {
-      // The adaptive levels' taps follow the full kernel's in u_kernel; u_levels says where each
-      // starts, how many it has (0: pass through) and the largest step it serves.
-      std::vector<float> levels;
-      for (const math::AdaptiveLevel& level : run.kernel->adaptive) {
-        levels.insert(levels.end(), {static_cast<float>(packed.size() / 4), static_cast<float>(level.taps.taps.size()),
-                                     level.max_step, 0.0f});
-        pack(level.taps.taps);
-      }
-      f.Uniform4fv(p.levels, static_cast<GLsizei>(levels.size() / 4), levels.data());
-      f.Uniform1i(p.level_count, static_cast<GLint>(levels.size() / 4));
+      f.Uniform4fv(p.kernel, static_cast<GLsizei>(packed.size() / 4), packed.data());
+      f.Uniform1i(p.tap_count, static_cast<GLint>(taps.taps.size()));
     }
-    f.Uniform4fv(p.kernel, static_cast<GLsizei>(packed.size() / 4), packed.data());
-    f.Uniform1i(p.tap_count, static_cast<GLint>(taps.taps.size()));
     if (p.jitter >= 0) f.Uniform1fv(p.jitter, static_cast<GLsizei>(taps.jitter_mm.size()), taps.jitter_mm.data());
     if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
     p.kernel_revision = run.kernel_revision;

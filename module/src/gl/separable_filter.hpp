@@ -69,10 +69,8 @@ struct FilterRun {
   std::uint64_t path_key = 0;
 };
 
-// u_kernel's length in the adaptive variant: the full kernel and every level below it (at most
-// 9 + 17 + 33 taps under 65), 128 vec4 in all: within GL 3.3's 256 and ES 3.0's 224 fragment
-// uniform vectors with the other uniforms.
-constexpr int kKernelSlots = SSS_MAX_SAMPLES + 9 + 17 + 33 + 4;
+// The footprint variant's uniforms: u_cdf (math::kFootprintEntries = 128 vec4) and u_spacing (32
+// floats, a vector each at worst) stay within ES 3.0's 224 fragment uniform vectors with the rest.
 // Pixels a compute work group writes along a pass's axis, and those it caches on each side of
 // them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
 constexpr int kComputeSegment = 128;
@@ -133,13 +131,13 @@ class SeparableFilter {
     Outside outside = Outside::write_centre;
     int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
     bool linear_depth = false, jitter = false, accumulate = false;
-    bool adaptive = false;  // footprint-adaptive taps (math::PassKernel::adaptive)
+    bool footprint = false;  // footprint-aware taps (math::PassKernel::footprint)
   };
   struct BlurProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, accumulated = -1, kernel = -1, tap_count = -1, jitter = -1,
           inv_two_variance = -1, axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1,
-          depth_terms = -1, clamp = -1, levels = -1, level_count = -1;
+          depth_terms = -1, clamp = -1, cdf = -1, footprint = -1, spacing = -1, half_taps = -1;
     GLint rect = -1;  // compute programs only
     bool compute = false;
     // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).

@@ -70,9 +70,9 @@ sss_result SeparableFilter::compute_program(const BlurVariant& v, int image_form
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[128];
-  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d adaptive=%d %s",
+  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d footprint=%d %s",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.adaptive ? 1 : 0, kImageFormatTable[image_format].qualifier);
+                v.footprint ? 1 : 0, kImageFormatTable[image_format].qualifier);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (GLSL 430 core, ") + label + ")");
   find_blur_uniforms(&p);

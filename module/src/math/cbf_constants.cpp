@@ -12,8 +12,8 @@ CbfConstants compute_cbf_constants(const FilterSettings& settings, const Matrix4
   const auto& vp = geometry.viewport;
   k.viewport = {static_cast<float>(vp[0]), static_cast<float>(vp[1]), static_cast<float>(vp[2]),
                 static_cast<float>(vp[3])};
-  // The same convention as the separable passes: one profile millimetre is (2/3)·width world units.
-  k.world_per_mm = static_cast<float>(static_cast<double>(settings.width) * (2.0 / 3.0));
+  // The same scale as the separable passes.
+  k.world_per_mm = static_cast<float>(world_units_per_profile_mm(settings));
   k.orthographic = projection[11] == 0.0f;
   return k;
 }

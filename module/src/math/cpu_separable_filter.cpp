@@ -40,11 +40,18 @@ struct Plane {
   }
 };
 
+// The follow-surface blend of one tap towards the centre colour (GLSL mix()).
+void follow_surface_blend(std::array<float, 3>* tap, const Rgba& centre, float d, bool gaussian_depth,
+                          float inv_two_variance) {
+  float s = gaussian_depth ? 1.0f - std::exp(-d * d * inv_two_variance) : d;
+  if (!(s < 1.0f)) s = 1.0f;  // also catches NaN
+  for (int c = 0; c < 3; ++c) (*tap)[static_cast<std::size_t>(c)] = (*tap)[static_cast<std::size_t>(c)] * (1.0f - s) + centre[static_cast<std::size_t>(c)] * s;
+}
+
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y). Returns false when the pixel is left
 // as it is (not translucent or no usable depth).
-bool filter_pixel(const PassTaps& full, const std::vector<AdaptiveLevel>& levels, float depth_variance_mm2,
-                  const PassConstants& k, const Plane& source, const Plane& depth, int axis, int x, int y,
-                  Rgba* result) {
+bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
+                  const Plane& source, const Plane& depth, int axis, int x, int y, Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
   if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
@@ -54,32 +61,55 @@ bool filter_pixel(const PassTaps& full, const std::vector<AdaptiveLevel>& levels
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
   const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
-  const PassTaps* chosen = adaptive_taps(levels, full, step);
-  if (chosen == nullptr) return false;  // the kernel spans under half a pixel: passed through
-  const PassTaps& pass = *chosen;
-  const std::vector<KernelTap>& kernel = pass.taps;
   const bool gaussian_depth = depth_variance_mm2 > 0.0f;
   const float follow_surface = (gaussian_depth ? k.mm_per_world : k.follow_surface_factor) / strength;
   const float inv_two_variance = gaussian_depth ? 0.5f / depth_variance_mm2 : 0.0f;
+  Rgba sum = {0.0f, 0.0f, 0.0f, centre[3]};
+
+  if (kernel.footprint) {
+    // Whole-pixel taps (footprint_kernel.hpp), read without filtering.
+    const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step);
+    for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * taps.weight[0][c];
+    for (int i = 0; i < taps.count; ++i) {
+      const float p = static_cast<float>(taps.position[static_cast<std::size_t>(i)]);
+      std::array<float, 3> pair = {0.0f, 0.0f, 0.0f};
+      for (int side = 0; side < 2; ++side) {
+        float px = cx, py = cy;
+        (axis == 0 ? px : py) += side == 0 ? p : -p;
+        px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
+        py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
+        const int tx = static_cast<int>(px), ty = static_cast<int>(py);
+        std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
+        if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
+        if (k.follow_surface_factor > 0.0f) {
+          const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.at(tx, ty, 0)));
+          follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
+        }
+        for (std::size_t c = 0; c < 3; ++c) pair[c] += tap[c];
+      }
+      for (std::size_t c = 0; c < 3; ++c) sum[c] += taps.weight[static_cast<std::size_t>(i + 1)][c] * pair[c];
+    }
+    *result = sum;
+    return true;
+  }
+
+  // Fixed taps (jittered kernels): offsets scaled by the step, read bilinearly.
+  const std::vector<KernelTap>& list = pass.taps;
   const float shift = pass.jitter_mm.empty() ? 0.0f : jitter_noise(x, y, axis) - 0.5f;
-  Rgba sum = {centre[0] * kernel[0].weight[0], centre[1] * kernel[0].weight[1], centre[2] * kernel[0].weight[2],
-              centre[3]};
-  for (std::size_t i = 1; i < kernel.size(); ++i) {
+  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * list[0].weight[c];
+  for (std::size_t i = 1; i < list.size(); ++i) {
     float px = cx, py = cy;
-    const float offset = pass.jitter_mm.empty() ? kernel[i].offset_mm : kernel[i].offset_mm + shift * pass.jitter_mm[i];
+    const float offset = pass.jitter_mm.empty() ? list[i].offset_mm : list[i].offset_mm + shift * pass.jitter_mm[i];
     (axis == 0 ? px : py) += offset * step;
     px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
     py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
     std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
     if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
     if (k.follow_surface_factor > 0.0f) {
-      const float tap_distance = linearise_depth(k, depth.bilinear(px, py, 0));
-      const float d = follow_surface * std::fabs(centre_distance - tap_distance);
-      float s = gaussian_depth ? 1.0f - std::exp(-d * d * inv_two_variance) : d;
-      if (!(s < 1.0f)) s = 1.0f;  // also catches NaN
-      for (int c = 0; c < 3; ++c) tap[c] = tap[c] * (1.0f - s) + centre[c] * s;  // GLSL mix()
+      const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.bilinear(px, py, 0)));
+      follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
     }
-    for (int c = 0; c < 3; ++c) sum[c] += kernel[i].weight[c] * tap[c];
+    for (std::size_t c = 0; c < 3; ++c) sum[c] += list[i].weight[c] * tap[c];
   }
   *result = sum;
   return true;
@@ -98,7 +128,7 @@ void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConsta
   PassTerm term;
   term.horizontal.taps = kernel;
   term.vertical.taps = kernel;
-  k.terms.push_back(std::move(term));
+  k.terms.push_back(std::move(term));  // fixed taps, as given
   cpu_pass_kernel_filter(k, constants, image, out);
 }
 
@@ -123,8 +153,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
         const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
         if (inside(constants, x, y) && masked_in) {
           Rgba blurred;
-          if (filter_pixel(term.horizontal, kernel.adaptive, term.depth_variance_mm2, constants, color, depth, 0, x,
-                           y, &blurred)) {
+          if (filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, color, depth, 0, x, y,
+                           &blurred)) {
             value = blurred;
           }
         }
@@ -140,8 +170,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
         const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
         if (!inside(constants, x, y) || !masked_in) continue;
         Rgba blurred;
-        if (!filter_pixel(term.vertical, kernel.adaptive, term.depth_variance_mm2, constants, half_plane, depth, 1,
-                          x, y, &blurred)) {
+        if (!filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, half_plane, depth, 1, x,
+                          y, &blurred)) {
           continue;
         }
         for (int c = 0; c < 3; ++c) {

@@ -8,9 +8,6 @@
 namespace sss::math {
 
 namespace {
-// One profile millimetre spans 2/3 of `width` world units: the reference shader divides its step
-// by 3 for offsets that reach ±3 mm over a texture-space span of 2 (NDC).
-constexpr double kWorldUnitsPerMmPerWidth = 2.0 / 3.0;
 
 // The magnitude of v as a float: beyond float's range FLT_MAX, not Inf (v is never NaN here: the
 // settings and the projection are finite).
@@ -21,13 +18,17 @@ float clamp_to_float(double v) {
 }
 }  // namespace
 
+double world_units_per_profile_mm(const FilterSettings& settings) {
+  return static_cast<double>(settings.world_units_per_mm) * static_cast<double>(settings.scale);
+}
+
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
                                      const FrameGeometry& geometry, double reach_mm) {
   PassConstants k;
   // In double, then clamped to the float range: a huge projection scale times a large viewport
-  // must not overflow to Inf (and Inf times a zero width to NaN); a finite step too large for the
+  // must not overflow to Inf (and Inf times a zero scale to NaN); a finite step too large for the
   // image only puts the taps on its edges (they are clamped to the viewport).
-  const double world_per_mm = static_cast<double>(settings.width) * kWorldUnitsPerMmPerWidth;
+  const double world_per_mm = world_units_per_profile_mm(settings);
   // NDC spans 2 across the viewport, so one NDC unit is half the viewport in pixels. Using each
   // axis' own projection scale and size makes the horizontal pass aspect-correct. A negative scale
   // (a mirrored projection) only flips the tap order of a symmetric kernel: the magnitude is used.
@@ -38,7 +39,7 @@ PassConstants compute_pass_constants(const FilterSettings& settings, const Matri
   // alpha, which scales the reach like the taps). The reference shader's 300·(1/tan(fovy/2))·width
   // has units of 1/length²: it matches this only at the scale of the paper's own scene (about 6 mm
   // of reach there) and lets a background 0.5 m behind a metric-scale head bleed in. (A denormal
-  // width gives a factor beyond float's range: FLT_MAX.)
+  // scale gives a factor beyond float's range: FLT_MAX.)
   const double reach = (reach_mm < 0.0 ? separable_kernel_range_mm(settings.samples) : reach_mm) * world_per_mm;
   k.follow_surface_factor = settings.follow_surface && reach > 0.0 ? clamp_to_float(1.0 / reach) : 0.0f;
   k.mm_per_world = world_per_mm > 0.0 ? clamp_to_float(1.0 / world_per_mm) : std::numeric_limits<float>::max();

@@ -4,15 +4,23 @@
 
 #include <array>
 
+#include "default_kernel_fit.hpp"
 #include "kernel_request.hpp"
 #include "projection.hpp"
 
 namespace sss::math {
 
 struct FilterSettings {
-  float width = 0.0015f;                       // world units; 1 profile mm = (2/3)·width
-  std::array<float, 3> strength = {0.78f, 0.70f, 0.75f};
-  std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
+  // The scene scale and the look, apart: one millimetre of surface is world_units_per_mm world
+  // units (0.001: a scene in metres), and `scale` multiplies every scattering distance (1: the
+  // profile at its physical size).
+  float world_units_per_mm = 0.001f;
+  float scale = 1.0f;
+  // Eq. (1) (the separable family): strength, falloff and the kernel millimetres per millimetre of
+  // surface, calibrated against d'Eon's skin (default_kernel_fit.hpp, docs/kernel-fits.md).
+  std::array<float, 3> strength = kCalibratedStrength;
+  std::array<float, 3> falloff = kCalibratedFalloff;
+  float separable_scale = kCalibratedSeparableScale;
   int samples = 17;
   bool follow_surface = true;
   // The cross-bilateral mode (sss_settings.mode and cbf_*; see spike_gaussian_profile.hpp, cbf_kernel.hpp).
@@ -25,7 +33,6 @@ struct FilterSettings {
   // `samples` taps (kernel.taps, .strength and .falloff are not read).
   KernelRequest kernel;
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
-  bool adaptive_taps = false;  // SSS_ADAPTIVE_TAPS: taps follow each pixel's footprint (pass_kernel.hpp)
   unsigned path = 0;           // SSS_PATH_*: fragment passes, compute dispatches, or the faster one
 };
 
@@ -50,7 +57,7 @@ struct PassConstants {
   float follow_surface_factor = 0.0f;
   // z_ndc = raw_depth · ndc_scale + ndc_bias (hardware depth only).
   float ndc_scale = 2.0f, ndc_bias = -1.0f;
-  // Profile millimetres per world unit at alpha 1 (1 / ((2/3)·width), FLT_MAX for a zero width): the
+  // Profile millimetres per world unit at alpha 1 (1 / (world_units_per_mm · scale), FLT_MAX for 0): the
   // depth correction of supplementary §E measures depth differences in profile millimetres.
   float mm_per_world = 0.0f;
   // Projection elements the depth linearisation uses: m10, m11, m14, m15.
@@ -60,6 +67,9 @@ struct PassConstants {
   std::array<float, 2> clamp_min = {0.0f, 0.0f}, clamp_max = {0.0f, 0.0f};
   bool linear_depth = false;
 };
+
+// World units per profile millimetre: world_units_per_mm · scale.
+double world_units_per_profile_mm(const FilterSettings& settings);
 
 // reach_mm: the kernel's largest |offset| (PassKernel::reach_mm), where the follow-surface ramp
 // reaches a full blend; below 0: eq. (1)'s range for settings.samples.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "separable_kernel.hpp"
+#include "skin_profile.hpp"
 
 namespace sss::math {
 
@@ -42,15 +43,35 @@ float plan_reach_mm(const KernelPlan& plan) {
     for (const auto* taps : {&t.horizontal, &t.vertical}) {
       for (const auto& tap : *taps) reach = std::max(reach, std::fabs(tap.offset_mm));
     }
+    reach = std::max({reach, t.horizontal_table.reach_mm, t.vertical_table.reach_mm});
   }
   return reach;
 }
 
-KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, const std::array<float, 3>& falloff) {
+KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, const std::array<float, 3>& falloff,
+                          double kernel_mm_per_mm) {
   KernelPlan plan;
   SeparableTerm term;
   term.horizontal = separable_kernel(samples, strength, falloff);
+  const double range = separable_kernel_range_mm(samples);  // kernel mm
+  for (KernelTap& tap : term.horizontal) {
+    tap.offset_mm = static_cast<float>(static_cast<double>(tap.offset_mm) / kernel_mm_per_mm);
+  }
   term.vertical = term.horizontal;
+  Rgb3 norm{}, half_total{}, delta{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    norm[c] = separable_base_profile_integral(falloff[c], -range, range);
+    half_total[c] = 0.5 * strength[c];
+    delta[c] = 1.0 - strength[c];
+  }
+  auto half_cdf = [&](double x_mm) {
+    const double x = std::min(x_mm * kernel_mm_per_mm, range);
+    Rgb3 out{};
+    for (std::size_t c = 0; c < 3; ++c) out[c] = strength[c] * separable_base_profile_integral(falloff[c], 0.0, x) / norm[c];
+    return out;
+  };
+  term.horizontal_table = tabulate_footprint_table(half_cdf, half_total, delta, range / kernel_mm_per_mm);
+  term.vertical_table = term.horizontal_table;
   plan.terms.push_back(std::move(term));
   plan.reach_mm = plan_reach_mm(plan);
   return plan;
@@ -75,6 +96,8 @@ KernelPlan gaussian_sum_plan(const GaussianSumProfile& profile, int taps) {
       for (double& x : h[c]) x *= g.weight[c];
     }
     plan.terms.push_back(make_term(grid, h, v));
+    plan.terms.back().horizontal_table = footprint_table_gaussians({{g.variance_mm2, g.weight}});
+    plan.terms.back().vertical_table = footprint_table_gaussians({{g.variance_mm2, {1.0, 1.0, 1.0}}});
   }
   plan.reach_mm = plan_reach_mm(plan);
   return plan;
@@ -218,6 +241,16 @@ KernelPlan artist_plan(const ArtistModel& model, int taps) {
   KernelPlan plan;
   plan.terms.push_back(make_term(grid, w, w));
   plan.terms.back().depth_variance_mm2 = static_cast<float>(tau_max);
+  std::vector<LineGaussian> mixture;
+  for (std::size_t c = 0; c < 3; ++c) {
+    LineGaussian near{model.near_variance_mm2[c], {}}, far{model.far_variance_mm2[c], {}};
+    near.weight[c] = model.near_weight[c];
+    far.weight[c] = 1.0 - model.near_weight[c];
+    mixture.push_back(near);
+    mixture.push_back(far);
+  }
+  plan.terms.back().horizontal_table = footprint_table_gaussians(mixture);
+  plan.terms.back().vertical_table = plan.terms.back().horizontal_table;
   plan.reach_mm = plan_reach_mm(plan);
   return plan;
 }

@@ -14,13 +14,19 @@
 
 namespace sss::math {
 
-// (a) Paper eq. (1): one term, the separable_kernel() taps both ways.
-KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, const std::array<float, 3>& falloff);
+// (a) Paper eq. (1): one term, the separable_kernel() taps both ways, its offsets divided by
+// kernel_mm_per_mm (the kernel's own millimetres per millimetre of the surface: the calibration
+// that makes it physical, see sss_settings.separable_scale). Its footprint table is the kernel's
+// closed form: strength times the base profile over ±R normalised, plus 1 − strength at the centre.
+KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, const std::array<float, 3>& falloff,
+                          double kernel_mm_per_mm = 1.0);
 
 // (c) Sum of Gaussians (d'Eon et al. 2007): one term per Gaussian, 2N passes. Each term's taps are
 // uniform on ±3σ of that Gaussian, its weights the 1D Gaussian integrated over each cell and
 // renormalised (the 0.27% outside ±3σ is folded back); the channel weights go on the horizontal pass.
 // Each channel's weights sum to 1 because the profile's do.
+// Each term's footprint table is its Gaussian in closed form (the channel weights on the horizontal
+// one), so the footprint-aware passes run the exact discrete sum of Gaussians on a plane.
 KernelPlan gaussian_sum_plan(const GaussianSumProfile& profile, int taps);
 
 // Singular value decomposition of each channel's profile matrix (supplementary S.2), descending.
@@ -60,7 +66,7 @@ KernelPlan artist_plan(const ArtistModel& model, int taps);
 // A plan term from per-channel 1D weights on a grid (shared by the builders and the fits).
 SeparableTerm make_term(const TapGrid& grid, const std::array<std::vector<double>, 3>& horizontal,
                         const std::array<std::vector<double>, 3>& vertical);
-// The largest |offset| of any tap in the plan.
+// The largest |offset| of any tap in the plan, or reach of a term's footprint table if larger.
 float plan_reach_mm(const KernelPlan& plan);
 
 }  // namespace sss::math

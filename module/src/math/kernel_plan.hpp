@@ -13,6 +13,7 @@
 #include <array>
 #include <vector>
 
+#include "footprint_kernel.hpp"
 #include "separable_kernel.hpp"
 
 namespace sss::math {
@@ -24,6 +25,10 @@ struct SeparableTerm {
   // difference to the centre in profile millimetres (supplementary §E, the exact depth correction
   // of a Gaussian term). 0: the follow-surface setting applies as for eq. (1).
   float depth_variance_mm2 = 0.0f;
+  // The terms' continuous 1D kernels for the footprint-aware taps (footprint_kernel.hpp), where the
+  // family knows them in closed form (eq. (1), Gaussians); empty: the tap lists above stand for them
+  // (each tap's weight spread over its cell).
+  FootprintTable horizontal_table, vertical_table;
 };
 
 // The most terms a plan has (sum of Gaussians or SVD at rank 6; sss_kernels.h SSS_KERNEL_MAX_TERMS).

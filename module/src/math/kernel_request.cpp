@@ -25,7 +25,7 @@ ProfileMatrix profile_matrix_for(const RadialProfile& profile, int taps, double 
 KernelPlan build_kernel_plan(const KernelRequest& r) {
   switch (r.family) {
     case KernelFamily::separable:
-      return separable_plan(r.taps, r.strength, r.falloff);
+      return separable_plan(r.taps, r.strength, r.falloff, r.separable_scale);
     case KernelFamily::artist:
       return artist_plan(r.artist, r.taps);
     default:

@@ -43,6 +43,7 @@ struct KernelRequest {
                                  // (the profile's extent; guided: guided_radius_mm)
   std::array<float, 3> strength = {0.78f, 0.70f, 0.75f};  // separable (paper Table 1)
   std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
+  double separable_scale = 1.0;  // separable: kernel millimetres per millimetre of surface
   ArtistModel artist{{0.0484, 0.0484, 0.0484}, {1.99, 0.567, 0.567}, {0.5, 0.8, 0.9}};
   ProfileRequest profile;
 };

@@ -74,37 +74,19 @@ PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
     PassTerm t;
     t.horizontal = make_pass_taps(term.horizontal, jitter);
     t.vertical = make_pass_taps(term.vertical, jitter);
+    t.horizontal.footprint =
+        term.horizontal_table.empty() ? footprint_table_from_taps(term.horizontal) : term.horizontal_table;
+    t.vertical.footprint = term.vertical_table.empty() ? footprint_table_from_taps(term.vertical) : term.vertical_table;
     t.depth_variance_mm2 = term.depth_variance_mm2;
     k.jittered = k.jittered || !t.horizontal.jitter_mm.empty() || !t.vertical.jitter_mm.empty();
     k.terms.push_back(std::move(t));
   }
   k.reach_mm = plan_reach_mm(plan);
+  k.footprint = !k.jittered;
+  std::size_t most = 0;
+  for (const SeparableTerm& term : plan.terms) most = std::max({most, term.horizontal.size(), term.vertical.size()});
+  k.spacing = footprint_spacing(std::min(static_cast<int>(most / 2), kMaxFootprintHalfTaps));
   return k;
-}
-
-std::vector<AdaptiveLevel> adaptive_levels(int samples, const std::array<float, 3>& strength,
-                                           const std::array<float, 3>& falloff) {
-  const double range = separable_kernel_range_mm(samples);
-  std::vector<AdaptiveLevel> levels;
-  AdaptiveLevel pass_through;
-  pass_through.max_step = static_cast<float>(kPassThroughRadiusPx / range);
-  levels.push_back(pass_through);
-  for (int n : kAdaptiveTapCounts) {
-    if (n >= samples) break;
-    AdaptiveLevel level;
-    level.max_step = static_cast<float>(kLevelSpacingPx * static_cast<double>((n - 1) / 2) / range);
-    if (level.max_step <= levels.back().max_step) continue;  // would never be chosen
-    level.taps = make_pass_taps(separable_kernel(n, strength, falloff, range), 0.0f);
-    levels.push_back(std::move(level));
-  }
-  return levels;
-}
-
-const PassTaps* adaptive_taps(const std::vector<AdaptiveLevel>& levels, const PassTaps& full, float step) {
-  for (const AdaptiveLevel& level : levels) {
-    if (step <= level.max_step) return level.taps.taps.empty() ? nullptr : &level.taps;
-  }
-  return &full;
 }
 
 PassKernel build_pass_kernel(const FilterSettings& settings) {
@@ -112,22 +94,19 @@ PassKernel build_pass_kernel(const FilterSettings& settings) {
   request.taps = settings.samples;
   request.strength = settings.strength;
   request.falloff = settings.falloff;
-  PassKernel k = make_pass_kernel(build_kernel_plan(request), settings.jitter);
-  if (settings.adaptive_taps && request.family == KernelFamily::separable && !k.jittered) {
-    k.adaptive = adaptive_levels(settings.samples, settings.strength, settings.falloff);
-  }
-  return k;
+  request.separable_scale = settings.separable_scale;
+  return make_pass_kernel(build_kernel_plan(request), settings.jitter);
 }
 
 bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b) {
-  if (a.samples != b.samples || a.jitter != b.jitter || a.kernel.family != b.kernel.family ||
-      a.adaptive_taps != b.adaptive_taps) {
+  if (a.samples != b.samples || a.jitter != b.jitter || a.kernel.family != b.kernel.family) {
     return false;
   }
   const KernelRequest& x = a.kernel;
   const KernelRequest& y = b.kernel;
   switch (x.family) {
-    case KernelFamily::separable: return a.strength == b.strength && a.falloff == b.falloff;
+    case KernelFamily::separable:
+      return a.strength == b.strength && a.falloff == b.falloff && a.separable_scale == b.separable_scale;
     case KernelFamily::artist:
       return x.artist.near_variance_mm2 == y.artist.near_variance_mm2 &&
              x.artist.far_variance_mm2 == y.artist.far_variance_mm2 && x.artist.near_weight == y.artist.near_weight;

@@ -28,8 +28,7 @@ std::vector<double> separable_kernel_offsets(int samples, double range_mm);
 // Preconditions (checked by the API layer): samples odd in [3, 65]; strength, falloff in [0, 1].
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
                                         const std::array<float, 3>& falloff);
-// The same with an explicit half-extent (the footprint-adaptive levels of a kernel keep its range
-// whatever their tap count, so they all stand for the same profile interval).
+// The same with an explicit half-extent in kernel millimetres.
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
                                         const std::array<float, 3>& falloff, double range_mm);
 

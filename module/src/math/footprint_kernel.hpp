@@ -1,0 +1,86 @@
+// Footprint-aware taps: what one pass of the separable filter reads at a pixel and how much each
+// read weighs, from the pixel's footprint (pixels per profile millimetre). Math layer: no GL.
+//
+// A pass's 1D kernel is kept as its cumulative half-integral C_c(x) = ∫_0^x k_c (per channel),
+// tabulated once when the kernel is built. At a pixel whose step is s pixels per millimetre the
+// taps sit on whole pixels (no bilinear read blends a neighbour into a tap) and each weighs the
+// kernel integrated over the pixels it stands for, so:
+//   - where the kernel spans few pixels every pixel out to its reach gets a tap of its own, weighed
+//     by the kernel over exactly that pixel: the exact discrete convolution of a fronto-parallel
+//     plane (and no more taps than the reach needs: a distant surface pays for few or none);
+//   - the part of the kernel narrower than a pixel stays in the centre tap, so a kernel that fits
+//     inside its pixel leaves the pixel as it is;
+//   - where the kernel spans more pixels than there are taps, the taps spread out (quadratically
+//     denser at the centre, never two on one pixel) and each stands for the pixels between the
+//     midpoints to its neighbours.
+// Each channel's weights sum to the kernel's mass (1 for a normalised pass) by construction: the
+// cell integrals telescope. The shaders (separable_blur.frag, separable_blur.comp) compute the same
+// taps in the same float operations; footprint_taps() is their model.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "separable_kernel.hpp"
+
+namespace sss::math {
+
+// Entries of a pass's cumulative table (uniform vec4 u_cdf[] in the shaders). Entry j holds
+// C(reach · (j / (N − 1))²) (denser at the centre, where skin's narrow peak is), the last C(∞).
+// 128 entries put a table's interpolation error below 2e-4 of a channel's mass on the skin kernels
+// (FootprintKernel.TableInterpolatesTheExactCumulative measures it).
+inline constexpr int kFootprintEntries = 128;
+// A table reaches as far as the kernel holds more than this share of a channel's mass beyond it;
+// the rest goes to the outermost tap (the last entry is the whole half mass).
+inline constexpr double kFootprintTail = 1e-4;
+
+struct FootprintTable {
+  float reach_mm = 0.0f;            // where the table ends (0: the whole kernel is the delta)
+  std::array<float, 3> delta{};     // weight of a delta at the centre (eq. (1)'s unscattered share)
+  std::vector<std::array<float, 3>> half_cdf;  // kFootprintEntries values (empty: no table)
+  bool empty() const { return half_cdf.empty(); }
+};
+
+using Rgb3 = std::array<double, 3>;
+
+// The table of a kernel given its half-CDF C(x) for x >= 0 (per channel), C(∞) and a centre delta.
+// reach_mm: where the table ends; <= 0 picks the smallest radius beyond which every channel holds at
+// most kFootprintTail of its half mass (searched up to `search_limit_mm`).
+FootprintTable tabulate_footprint_table(const std::function<Rgb3(double x_mm)>& half_cdf, const Rgb3& half_total,
+                                        const Rgb3& delta, double reach_mm, double search_limit_mm = 0.0);
+
+// The table of a tap list (any order, symmetric about 0): each tap's weight spread evenly over its
+// cell, bounded by the midpoints to its neighbours and by the outermost taps (the cells of
+// make_tap_grid); a centre tap whose cell is empty (a single tap) is a delta.
+FootprintTable footprint_table_from_taps(const std::vector<KernelTap>& taps);
+
+// A mixture of 1D Gaussians per channel: Σ_i weight_i,c · N(0, variance_i) (a variance of 0 is a
+// delta), the kernel of a sum-of-Gaussians term or of the artist model.
+struct LineGaussian {
+  double variance_mm2;
+  Rgb3 weight;
+};
+FootprintTable footprint_table_gaussians(const std::vector<LineGaussian>& mixture);
+
+// C(x) by the table, in float as the shaders interpolate it.
+std::array<float, 3> footprint_half_cdf(const FootprintTable& table, float x_mm);
+
+// The most taps on each side of the centre (the filter's `samples` is 2·this + 1).
+inline constexpr int kMaxFootprintHalfTaps = 32;
+
+// Where the taps of the sparse layout go, as a share of the reach: (i / half)² for i = 1..half
+// (the shaders' u_spacing[]).
+std::vector<float> footprint_spacing(int half_taps);
+
+struct FootprintTaps {
+  int count = 0;  // taps on each side of the centre
+  std::array<int, kMaxFootprintHalfTaps> position{};                // pixels, increasing
+  std::array<std::array<float, 3>, kMaxFootprintHalfTaps + 1> weight{};  // [0] the centre, [i] each of ±position[i-1]
+};
+
+// The taps at a pixel whose step is `step` pixels per profile millimetre, with at most `half_taps`
+// on each side (spacing from footprint_spacing(half_taps)).
+FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<float>& spacing, float step);
+
+}  // namespace sss::math

@@ -1,0 +1,161 @@
+// Footprint-aware taps (module/src/math/footprint_kernel.hpp): energy, the sub-pixel pass-through,
+// the exact discrete sum of Gaussians, and the tables' interpolation error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "../../module/src/math/filter_constants.hpp"
+#include "../../module/src/math/footprint_kernel.hpp"
+#include "../../module/src/math/pass_kernel.hpp"
+#include "../../module/src/math/plane_reference.hpp"
+#include "../../module/src/math/skin_profile.hpp"
+
+namespace {
+
+using sss::math::FootprintTable;
+using sss::math::FootprintTaps;
+
+// Every family's kernel at 17 taps (and the sum of Gaussians at 65).
+std::vector<sss::math::PassKernel> every_family() {
+  std::vector<sss::math::PassKernel> out;
+  sss::math::FilterSettings s;
+  out.push_back(sss::math::build_pass_kernel(s));
+  s.kernel.family = sss::math::KernelFamily::sum_of_gaussians;
+  s.kernel.rank = 6;
+  out.push_back(sss::math::build_pass_kernel(s));
+  s.samples = 65;
+  out.push_back(sss::math::build_pass_kernel(s));
+  s.samples = 17;
+  for (auto family : {sss::math::KernelFamily::svd, sss::math::KernelFamily::preintegrated,
+                      sss::math::KernelFamily::guided, sss::math::KernelFamily::artist}) {
+    s.kernel.family = family;
+    s.kernel.rank = 2;
+    out.push_back(sss::math::build_pass_kernel(s));
+  }
+  return out;
+}
+
+// Steps (pixels per profile mm) from far crowds to extreme close-ups, log-spaced.
+std::vector<float> steps() {
+  std::vector<float> out;
+  for (int i = 0; i <= 40; ++i) out.push_back(0.01f * std::pow(10.0f, static_cast<float>(i) / 10.0f));
+  return out;
+}
+
+std::array<double, 3> mass(const FootprintTable& t) {
+  return {2.0 * t.half_cdf.back()[0] + t.delta[0], 2.0 * t.half_cdf.back()[1] + t.delta[1],
+          2.0 * t.half_cdf.back()[2] + t.delta[2]};
+}
+
+TEST(FootprintKernel, WeightsConserveEachChannelsEnergyAtEveryFootprint) {
+  for (const auto& kernel : every_family()) {
+    ASSERT_TRUE(kernel.footprint);
+    for (const auto& term : kernel.terms) {
+      for (const auto* pass : {&term.horizontal, &term.vertical}) {
+        const std::array<double, 3> expected = mass(pass->footprint);
+        for (float step : steps()) {
+          const FootprintTaps taps = sss::math::footprint_taps(pass->footprint, kernel.spacing, step);
+          for (std::size_t c = 0; c < 3; ++c) {
+            double sum = taps.weight[0][c];
+            for (int i = 1; i <= taps.count; ++i) sum += 2.0 * taps.weight[static_cast<std::size_t>(i)][c];
+            EXPECT_NEAR(sum, expected[c], 1e-6) << "step " << step << " channel " << c;
+          }
+        }
+      }
+    }
+    // A normalised kernel's two passes of all terms together sum to 1 (the first pass of each
+    // sum-of-Gaussians term carries the term's weight).
+    for (std::size_t c = 0; c < 3; ++c) {
+      double total = 0.0;
+      for (const auto& term : kernel.terms) total += mass(term.horizontal.footprint)[c] * mass(term.vertical.footprint)[c];
+      EXPECT_NEAR(total, 1.0, 1e-6) << "channel " << c;
+    }
+  }
+}
+
+TEST(FootprintKernel, TapsSitOnWholeDistinctPixelsWithinTheBudget) {
+  for (const auto& kernel : every_family()) {
+    const int half = static_cast<int>(kernel.spacing.size());
+    for (float step : steps()) {
+      const auto& table = kernel.terms[0].horizontal.footprint;
+      const FootprintTaps taps = sss::math::footprint_taps(table, kernel.spacing, step);
+      ASSERT_LE(taps.count, half);
+      const float reach_px = table.reach_mm * step;
+      if (reach_px <= static_cast<float>(half) + 0.5f) {
+        // Every pixel out to the reach, no more.
+        EXPECT_EQ(taps.count, std::max(0, static_cast<int>(std::ceil(reach_px - 0.5f))));
+        for (int i = 0; i < taps.count; ++i) EXPECT_EQ(taps.position[static_cast<std::size_t>(i)], i + 1);
+      } else {
+        for (int i = 1; i < taps.count; ++i) {
+          EXPECT_GT(taps.position[static_cast<std::size_t>(i)], taps.position[static_cast<std::size_t>(i - 1)]);
+        }
+        EXPECT_NEAR(taps.position[static_cast<std::size_t>(taps.count - 1)], reach_px, 0.5f + 1e-3f * reach_px);
+      }
+    }
+  }
+}
+
+TEST(FootprintKernel, AKernelInsideItsPixelLeavesThePixelAlone) {
+  for (const auto& kernel : every_family()) {
+    for (const auto& term : kernel.terms) {
+      const auto& table = term.vertical.footprint;
+      const float step = 0.49f / table.reach_mm;  // the whole pass within half a pixel of the centre
+      const FootprintTaps taps = sss::math::footprint_taps(table, kernel.spacing, step);
+      EXPECT_EQ(taps.count, 0);
+      for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(taps.weight[0][c], mass(table)[c], 1e-7);
+    }
+  }
+}
+
+TEST(FootprintKernel, TheSumOfGaussiansIsTheExactPixelIntegralWhereEveryPixelHasATap) {
+  sss::math::FilterSettings s;
+  s.kernel.family = sss::math::KernelFamily::sum_of_gaussians;
+  s.kernel.rank = 6;
+  s.samples = 65;
+  const auto kernel = sss::math::build_pass_kernel(s);
+  const auto& gaussians = sss::math::skin_gaussians();
+  ASSERT_EQ(kernel.terms.size(), gaussians.size());
+  double worst = 0.0;
+  for (std::size_t t = 0; t < gaussians.size(); ++t) {
+    const auto& table = kernel.terms[t].vertical.footprint;  // weight 1 in every channel
+    for (float step : steps()) {
+      const FootprintTaps taps = sss::math::footprint_taps(table, kernel.spacing, step);
+      if (table.reach_mm * step > static_cast<float>(kernel.spacing.size()) + 0.5f) continue;  // sparse
+      const int radius = taps.count + 1;
+      const auto exact = sss::math::pixel_integrated_gaussian(gaussians[t].variance_mm2, 1.0 / step, radius);
+      const auto at = [&](int d) { return exact[static_cast<std::size_t>(radius + d)]; };
+      for (int i = 0; i <= taps.count; ++i) {
+        // The outermost tap also takes the tail beyond it (the exact sum of what lies past).
+        double reference = at(i);
+        if (i == taps.count && i > 0) {
+          double below = at(0);
+          for (int j = 1; j < i; ++j) below += 2.0 * at(j);
+          reference = 0.5 * (1.0 - below);
+        }
+        worst = std::max(worst, std::fabs(taps.weight[static_cast<std::size_t>(i)][0] - reference));
+      }
+    }
+  }
+  std::printf("largest weight error of the discrete sum of Gaussians: %.3g\n", worst);
+  // The tables' interpolation (below) plus float rounding.
+  EXPECT_LE(worst, 2e-4);
+}
+
+TEST(FootprintKernel, TableInterpolatesTheExactCumulative) {
+  // Each skin Gaussian's table against erf, and eq. (1)'s against its closed form.
+  double worst = 0.0;
+  for (const auto& g : sss::math::skin_gaussians()) {
+    const FootprintTable t = sss::math::footprint_table_gaussians({{g.variance_mm2, {1.0, 1.0, 1.0}}});
+    for (int i = 0; i <= 1000; ++i) {
+      const double x = t.reach_mm * 1.2 * i / 1000.0;
+      const double exact = 0.5 * std::erf(x / std::sqrt(2.0 * g.variance_mm2));
+      worst = std::max(worst, std::fabs(sss::math::footprint_half_cdf(t, static_cast<float>(x))[0] - exact));
+    }
+  }
+  std::printf("largest table error, skin Gaussians: %.3g of the half mass 0.5\n", worst);
+  EXPECT_LE(worst, 1e-4);  // 2e-4 of the mass: kFootprintEntries' stated bound
+}
+
+}  // namespace
