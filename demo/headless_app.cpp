@@ -132,7 +132,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
       {"heatmap", "error against the exact reference (small frame, scaled up)", &frame, ViewMode::kHeatMap},
       {"touched", "pixels the library changed (orange), translucent but unchanged (blue)", &frame, ViewMode::kTouched},
   };
-  const std::string settings = format_settings(renderer->sss.settings, controls, (scene.world_units_per_mm));
+  const std::string settings = format_settings(renderer->sss.settings, controls, scene.world_units_per_mm);
   bool ok = true;
   Image before, after;
   const std::string prefix = (std::filesystem::path(o.out_dir) / preset_name(preset)).string() + "-";
@@ -279,7 +279,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
   }
   if (ok) {
     const std::string settings =
-        format_settings(renderer.sss.settings, controls, (scene.world_units_per_mm));
+        format_settings(renderer.sss.settings, controls, scene.world_units_per_mm);
     const std::filesystem::path dir(o.out_dir);
     ok = write_text((dir / "README.txt").string(), readme(o, context, scene, settings, reports));
     if (ok && !scene.attribution.empty())

@@ -293,7 +293,10 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glUniform1i(u.transmittance, transmit ? 1 : 0);
   glUniform4fv(u.terms, SSS_PROFILE_MAX_TERMS, terms);
   glUniform1i(u.term_count, term_count);
-  glUniform1f(u.sss_width, transmittance.width);
+  // The include takes the paper's `width` (one profile millimetre = (2/3)·width world units), whose
+  // conversion the library keeps: width = world units per profile mm / (2/3).
+  glUniform1f(u.sss_width,
+              transmittance.world_units_per_profile_mm / sss_world_units_per_mm_from_legacy_width(1.0f));
   glUniform1f(u.translucency, transmittance.translucency);
   for (int i = 0; i < shadows.light_count; ++i) {
     const ShadowMap &map = shadows.maps[static_cast<size_t>(i)];

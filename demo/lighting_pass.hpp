@@ -39,7 +39,9 @@ struct PreintegratedLuts {
 // Transmittance through thin parts (integration/glsl/sss_transmittance.glsl).
 struct TransmittanceInputs {
   bool enabled = false;
-  float width = 0.0f;          // sss_settings.width the blur uses (world units)
+  // World units per millimetre of the profile, as the blur has it: sss_settings.world_units_per_mm
+  // x scale (the transmitted light follows the scale the artist gave the scattering).
+  float world_units_per_profile_mm = 0.0f;
   float translucency = 0.8f;   // 0..1
   std::uint32_t profile = 0;   // SSS_PROFILE_*: the blur's profile, whose terms the include evaluates
 };

@@ -17,7 +17,7 @@ SssControls controls_from_options(const Options &o) {
   SssControls c = default_sss_controls();
   c.enabled = o.sss;
   if (o.samples != 0) c.samples = o.samples;
-  c.width_scale = o.width_scale;
+  c.scale = o.scale;
   c.follow_surface = o.follow_surface;
   c.shading = o.shading;
   c.use_stencil = o.use_stencil;
@@ -26,7 +26,6 @@ SssControls controls_from_options(const Options &o) {
   c.kernel_rank = o.kernel_rank;
   c.material = o.material;
   c.jitter = o.jitter;
-  c.adaptive_taps = o.adaptive_taps;
   c.region = o.region;
   c.path = static_cast<int>(o.path);
   c.translucency = o.translucency;

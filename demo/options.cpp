@@ -98,8 +98,10 @@ void print_usage(const char *program) {
       "  --out DIR           folder for PNGs and screenshots (default ./demo-out)\n"
       "  --preset NAME       close | mid | far | all (headless default: all; window: the first view)\n"
       "  --no-sss            start with the library off (S toggles it in the window)\n"
-      "  --samples N         SSS taps per pass, odd, 3..65 (default: the library's, 17)\n"
-      "  --width-scale F     multiply the physical SSS width (default 1)\n"
+      "  --samples N         the most SSS taps per pass, odd, 3..65 (default: the library's, 17); each pixel\n"
+      "                      reads as many as its footprint needs (all of them with --jitter)\n"
+      "  --scale F           multiply every scattering distance, [0, 1000] (default 1: the physical size; the\n"
+      "                      scenes are in metres); --width-scale F, the old name, is still accepted\n"
       "  --no-follow-surface turn the follow-surface depth test off\n"
       "  --no-stencil        mask by the diffuse alpha alone instead of the stencil\n"
       "  --shading NAME      screen (the library's filter, default) | preintegrated (LUTs in the lighting\n"
@@ -110,7 +112,6 @@ void print_usage(const char *program) {
       "  --material NAME     the profile of those families: skin (default), apple, chicken1, chicken2, cream,\n"
       "                      ketchup, marble, potato, skimmilk, skin1, skin2, wholemilk\n"
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
-      "  --adaptive-taps     footprint-adaptive taps: fewer (or none) where the kernel spans few pixels\n"
       "  --region            tell the library the head's projected bounds (work only there)\n"
       "  --path NAME         how the separable passes run: fragment (default) | masked (behind a stencil\n"
       "                      marked from alpha) | compute (OpenGL 4.3+ compute dispatches, shared-memory rows\n"
@@ -133,7 +134,7 @@ void print_usage(const char *program) {
 
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
-    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
+    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
@@ -146,7 +147,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"preset", required_argument, nullptr, kPreset},
       {"no-sss", no_argument, nullptr, kNoSss},
       {"samples", required_argument, nullptr, kSamples},
-      {"width-scale", required_argument, nullptr, kWidthScale},
+      {"scale", required_argument, nullptr, kScale},
+      {"width-scale", required_argument, nullptr, kWidthScale},  // the old name of --scale
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
       {"adaptive-taps", no_argument, nullptr, kAdaptive},
       {"region", no_argument, nullptr, kRegion},
@@ -208,12 +210,17 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         ok = (parse_int(optarg, &o->samples) && o->samples >= 3 && o->samples <= 65 && o->samples % 2 == 1) ||
              fail("--samples wants an odd number in [3, 65]", optarg);
         break;
+      case kScale:
       case kWidthScale:
-        ok = (parse_float(optarg, &o->width_scale) && o->width_scale >= 0.0f && o->width_scale <= 1000.0f) ||
-             fail("--width-scale wants a number in [0, 1000]", optarg);
+        ok = (parse_float(optarg, &o->scale) && o->scale >= 0.0f && o->scale <= 1000.0f) ||
+             fail(c == kScale ? "--scale wants a number in [0, 1000]" : "--width-scale wants a number in [0, 1000]",
+                  optarg);
         break;
       case kNoFollow: o->follow_surface = false; break;
-      case kAdaptive: o->adaptive_taps = true; break;
+      case kAdaptive:  // the old switch: what it turned on is how every kernel without jitter runs now
+        std::fprintf(stderr, "sss_demo: note: --adaptive-taps is ignored: taps always follow each pixel's "
+                             "footprint now\n");
+        break;
       case kRegion: o->region = true; break;
       case kNoStencil: o->use_stencil = false; break;
       case kShading: {

@@ -29,13 +29,12 @@ struct Options {
   int kernel_rank = 1;           // sum of Gaussians / SVD: terms
   int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
   float jitter = 0.0f;           // sss_settings.jitter
-  bool adaptive_taps = false;    // SSS_ADAPTIVE_TAPS
   unsigned path = 0;             // sss_settings.path: SSS_PATH_FRAGMENT, _COMPUTE or _AUTO
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
-  float width_scale = 1.0f;      // multiplies the physical width
+  float scale = 1.0f;            // sss_settings.scale: multiplies the scattering distances (1 = physical size)
   int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
   float exposure = 1.0f;
 

@@ -32,15 +32,15 @@ void sss_section(WindowState *s) {
   SssControls &c = s->controls;
   ImGui::Checkbox("SSS (S)", &c.enabled);
   ImGui::SameLine();
-  if (ImGui::Button("paper defaults")) {
+  if (ImGui::Button("library defaults")) {
     const bool enabled = c.enabled;
     c = default_sss_controls();
     c.enabled = enabled;
   }
-  const float physical = (s->scene->world_units_per_mm);
-  ImGui::SliderFloat("width x", &c.width_scale, 0.0f, 8.0f, "%.2f");
-  ImGui::TextDisabled("  = %.5f world units (physical skin: %.5f)", static_cast<double>(physical * c.width_scale),
-                      static_cast<double>(physical));
+  const float world_units_per_mm = s->scene->world_units_per_mm;
+  ImGui::SliderFloat("scale (1 = physical)", &c.scale, 0.0f, 8.0f, "%.2f");
+  ImGui::TextDisabled("  1 profile mm = %.5g world units (the scene: %.5g per mm)",
+                      static_cast<double>(world_units_per_mm * c.scale), static_cast<double>(world_units_per_mm));
   ImGui::SliderFloat3("strength", c.strength, 0.0f, 1.0f, "%.2f");
   ImGui::SliderFloat3("falloff", c.falloff, 0.0f, 1.0f, "%.2f");
   if (ImGui::SliderInt("taps", &c.samples, SSS_MIN_SAMPLES, SSS_MAX_SAMPLES)) c.samples |= 1;  // odd only
@@ -48,7 +48,7 @@ void sss_section(WindowState *s) {
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
   // The kernel family and the material its profile comes from (sss_settings.kernel), and jitter.
-  static const char *const kFamilies[] = {"eq. (1) separable (width, strength, falloff)", "sum of Gaussians",
+  static const char *const kFamilies[] = {"eq. (1) separable (strength, falloff)", "sum of Gaussians",
                                           "SVD rank N", "pre-integrated (exact for E1(x) + E2(y))",
                                           "guided rank-1 fit (k = 1.55)", "artist two-Gaussian, exact depth"};
   ImGui::Combo("kernel family", &c.kernel_family, kFamilies, SSS_KERNEL_FAMILY_COUNT);
@@ -64,8 +64,6 @@ void sss_section(WindowState *s) {
     ImGui::TextDisabled("  a measured material is fitted when chosen (up to ~0.3 s)");
   }
   ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
-  ImGui::Checkbox("adaptive taps", &c.adaptive_taps);
-  ImGui::SameLine();
   ImGui::Checkbox("region from the head's bounds", &c.region);
   // Indexed by SSS_PATH_*: fragment 0, compute 1, auto 2, masked 3.
   const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked"};

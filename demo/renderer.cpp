@@ -58,8 +58,10 @@ float pixels_per_mm(const DemoScene &scene, const CameraMatrices &camera, int he
 
 // SSS_FRAME_REGION as a host computes it: the screen rectangle of every vertex's bounds (all
 // translucent geometry is inside them), padded by the kernel's reach in pixels at the nearest
-// corner (eq. (1) reaches 3 mm at most, times width_scale, at alpha 1). False when a corner is behind
-// the camera: then no region is given (the whole viewport is filtered).
+// corner, at alpha 1: eq. (1) reaches 3 kernel mm at most, which is 3 / separable_scale mm of
+// surface, times scale. (The other families reach as far as their profile does, sss_kernel_plan's
+// out_reach_mm; the pad is eq. (1)'s for all.) False when a corner is behind the camera: then no
+// region is given (the whole viewport is filtered).
 bool translucent_region(const DemoScene &scene, const CameraMatrices &camera, const SssControls &controls, int width,
                         int height, std::int32_t region[4]) {
   float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f, nearest = 1e30f;
@@ -76,7 +78,9 @@ bool translucent_region(const DemoScene &scene, const CameraMatrices &camera, co
     y1 = std::max(y1, sy);
     nearest = std::min(nearest, clip.w);
   }
-  const float reach_mm = 3.0f * controls.width_scale;
+  sss_settings defaults{};
+  sss_default_settings(&defaults);  // the demo leaves separable_scale at the library's default
+  const float reach_mm = 3.0f / defaults.separable_scale * controls.scale;
   const float pixels_per_mm_at_nearest =
       0.5f * static_cast<float>(std::max(width, height)) *
       std::max(camera.projection[0][0], camera.projection[1][1]) * scene.world_units_per_mm / nearest;
@@ -134,7 +138,7 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
                                                 result->pixels_per_mm < kAutoPreintegratedPixelsPerMm));
   TransmittanceInputs transmittance;
   transmittance.enabled = controls.translucency;
-  transmittance.width = 1.5f * (r->scene->world_units_per_mm) * controls.width_scale;
+  transmittance.world_units_per_profile_mm = r->scene->world_units_per_mm * controls.scale;  // as the blur
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,

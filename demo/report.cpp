@@ -39,17 +39,19 @@ std::string format_times(const PassTimes &t) {
   return line;
 }
 
-std::string format_settings(const sss_settings &s, const SssControls &c, float physical_width) {
+std::string format_settings(const sss_settings &s, const SssControls &c, float world_units_per_mm) {
   char text[768];
   std::snprintf(text, sizeof text,
-                "SSS %s; width %.6g world units (%.3g x the physical %.6g = sss_width_for_world_units_per_mm(0.001));"
-                " strength %.2f %.2f %.2f; falloff %.2f %.2f %.2f; %d taps per pass; follow-surface %s; mask %s; %s;"
+                "SSS %s; scale %.3g x the physical size (%.6g world units per mm); strength %.2f %.2f %.2f;"
+                " falloff %.2f %.2f %.2f; separable_scale %.3g; %s %d taps per pass%s; follow-surface %s; mask %s; %s;"
                 " shading %s",
-                c.enabled ? "on" : "off", static_cast<double>(s.world_units_per_mm), static_cast<double>(c.width_scale),
-                static_cast<double>(physical_width), static_cast<double>(s.strength[0]),
-                static_cast<double>(s.strength[1]), static_cast<double>(s.strength[2]),
-                static_cast<double>(s.falloff[0]), static_cast<double>(s.falloff[1]),
-                static_cast<double>(s.falloff[2]), s.samples, (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
+                c.enabled ? "on" : "off", static_cast<double>(c.scale), static_cast<double>(world_units_per_mm),
+                static_cast<double>(s.strength[0]), static_cast<double>(s.strength[1]),
+                static_cast<double>(s.strength[2]), static_cast<double>(s.falloff[0]),
+                static_cast<double>(s.falloff[1]), static_cast<double>(s.falloff[2]),
+                static_cast<double>(s.separable_scale), s.jitter > 0.0f ? "all" : "up to", s.samples,
+                s.jitter > 0.0f ? "" : " (as each pixel's footprint needs)",
+                (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
                 c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0",
                 c.msaa_samples > 0 ? "4x MSAA targets handed to the library (resolved there: averaged linear depth)"
                                    : "no MSAA",

@@ -20,8 +20,9 @@ PassTimes median_times(const std::vector<PassTimes> &frames);
 // "shadow 12.3  lighting 4.5  sss 6.7  count 1.2  composite 0.8  total 25.5 ms"
 std::string format_times(const PassTimes &t);
 
-// The library's settings as held after sss_set_settings, with the width in physical terms.
-std::string format_settings(const sss_settings &s, const SssControls &controls, float physical_width);
+// The library's settings as held after sss_set_settings, with the controls' scale and the scene's
+// world units per millimetre (what the demo sets them to).
+std::string format_settings(const sss_settings &s, const SssControls &controls, float world_units_per_mm);
 
 // tEXt chunks for an image of the scene: Title, Software, Description, Copyright (the scene's
 // attribution, when it has one), Source (the GL renderer).

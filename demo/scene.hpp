@@ -1,7 +1,7 @@
 // What the demo draws: a mesh with materials (integration/gltf_mesh), how translucent and shiny each
 // material is, the lights, and the boxes the cameras and the shadow maps are fitted to.
-// World units are metres (glTF's unit), so the physical SSS width is
-// sss_width_for_world_units_per_mm(0.001).
+// World units are metres (glTF's unit): sss_settings.world_units_per_mm is 0.001, and scale 1 gives
+// the scattering its physical size.
 #pragma once
 
 #include "gltf_mesh.hpp"
@@ -29,7 +29,7 @@ struct Light {
 
 // How the lighting pass treats one material of the model (same index as model.materials).
 struct MaterialLook {
-  float sss_strength = 0.0f;        // written to the diffuse alpha (the library's per-pixel width scale); > 0 sets stencil 1
+  float sss_strength = 0.0f;        // the diffuse alpha (scales the scattering per pixel); > 0 sets stencil 1
   float specular_intensity = 0.0f;  // rho_s of the Kelemen/Szirmay-Kalos specular
   float roughness = 0.35f;          // Beckmann m
 };

@@ -26,6 +26,7 @@ SssControls default_sss_controls() {
   sss_settings s{};
   sss_default_settings(&s);
   SssControls c;
+  c.scale = s.scale;
   for (int i = 0; i < 3; ++i) {
     c.strength[i] = s.strength[i];
     c.falloff[i] = s.falloff[i];
@@ -63,13 +64,14 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm) {
   sss_settings s{};
   sss_default_settings(&s);
-  s.world_units_per_mm = (world_units_per_mm) * controls.width_scale;
+  s.world_units_per_mm = world_units_per_mm;
+  s.scale = controls.scale;
   for (int i = 0; i < 3; ++i) {
     s.strength[i] = controls.strength[i];
     s.falloff[i] = controls.falloff[i];
   }
   s.samples = controls.samples;
-  s.flags = (controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u) | (controls.adaptive_taps ? SSS_ADAPTIVE_TAPS : 0u);
+  s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
   s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   s.kernel.family = controls.kernel_family;
   s.kernel.rank = controls.kernel_rank;

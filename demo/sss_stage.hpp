@@ -15,7 +15,7 @@ namespace demo {
 // and translucency here (see panel.cpp for the marked place in the UI).
 struct SssControls {
   bool enabled = true;           // S: the library runs (off: "after" is not produced, the frame shows "before")
-  float width_scale = 1.0f;      // x the physical width sss_width_for_world_units_per_mm(world units per mm)
+  float scale = 1.0f;            // sss_settings.scale: multiplies every scattering distance (1 = physical size)
   float strength[3] = {0.78f, 0.70f, 0.75f};
   float falloff[3] = {0.57f, 0.13f, 0.08f};
   int samples = SSS_SAMPLES_MEDIUM;
@@ -28,9 +28,9 @@ struct SssControls {
   int kernel_rank = 1;
   int material = SSS_MATERIAL_SKIN;
   float jitter = 0.0f;
-  // Skipping work: footprint-adaptive taps (SSS_ADAPTIVE_TAPS), and the head's projected bounds,
-  // padded by the kernel's reach, as the frame's region of translucent pixels (SSS_FRAME_REGION).
-  bool adaptive_taps = false;
+  // Skipping work: the head's projected bounds, padded by the kernel's reach, as the frame's region
+  // of translucent pixels (SSS_FRAME_REGION). (Taps follow each pixel's footprint in the library
+  // without a switch.)
   bool region = false;
   // How the separable passes run (sss_settings.path, SSS_PATH_*): fragment passes, behind a
   // stencil from alpha, compute dispatches, or the fastest of them.
@@ -70,7 +70,8 @@ struct SssStage {
 // sss_create with the given loader (a GL context must be current). Prints the error on failure.
 bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user);
 
-// sss_set_settings from the controls (width = physical width x width_scale). Prints the error on failure.
+// sss_set_settings from the controls, at the scene's world units per millimetre of surface
+// (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm);
 
 // sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,

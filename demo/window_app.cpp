@@ -206,7 +206,7 @@ void save_screenshot(WindowState *s, const FrameTargets &targets, const sss_sett
   const Image window = image_from_gl_rows(window_rows, s->width, s->height);
 
   const std::string settings =
-      format_settings(settings_held, s->controls, (s->scene->world_units_per_mm));
+      format_settings(settings_held, s->controls, s->scene->world_units_per_mm);
   char camera[256];
   std::snprintf(camera, sizeof camera, "camera: target (%.3f, %.3f, %.3f), distance %.3f, yaw %.1f, pitch %.1f, fovy %.0f",
                 static_cast<double>(s->camera.target.x), static_cast<double>(s->camera.target.y),

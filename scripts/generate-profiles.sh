@@ -26,6 +26,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 
+scripts/install-deps.sh test  # gnuplot for the plots, nlohmann-json for the report
 if [[ ! -f build/CMakeCache.txt ]]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_BUILD_DEMO=OFF
 fi

@@ -189,7 +189,15 @@ void check_preset(const std::string &dir, const std::string &attribution, const 
   const size_t pixels = static_cast<size_t>(before.width) * static_cast<size_t>(before.height);
   std::printf("%s: before/after differ in %zu of %zu pixels (mean %.3f levels)\n", preset.c_str(), d.differing, pixels,
               d.mean);
-  check(d.differing > 0, prefix + "after.png equals before.png: the library changed nothing");
+  // The far shot: a pixel there measures more than skin's kernel (millimetres), so the exact result
+  // is the input to within a level and the footprint-aware taps leave those pixels alone. Closer
+  // shots must change.
+  const bool far = preset == "far";
+  if (far) {
+    check(d.mean < 0.05, prefix + "after.png: the far shot changed by more than the exact result allows");
+  } else {
+    check(d.differing > 0, prefix + "after.png equals before.png: the library changed nothing");
+  }
   check(d.differing < pixels / 2, prefix + "after.png differs from before.png almost everywhere (the background too?)");
   // The split: before left of the 2-pixel divider, after right of it.
   const int divider = before.width / 2;
@@ -206,7 +214,7 @@ void check_preset(const std::string &dir, const std::string &attribution, const 
     orange += (q[0] > q[1] + 40 && q[1] > q[2] + 20) ? 1 : 0;
   }
   check(ramp > 0, prefix + "heatmap.png has no coloured pixel");
-  check(orange > 0, prefix + "touched.png has no orange pixel");
+  if (!far) check(orange > 0, prefix + "touched.png has no orange pixel");
   std::printf("%s: heat map %zu coloured pixels, touched map %zu orange pixels\n", preset.c_str(), ramp, orange);
 }
 

@@ -84,8 +84,9 @@ int main(void) {
   tex_image_2d(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, W, H, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth_stencil);
   bind_texture(GL_TEXTURE_2D, 0);
 
-  /* 3. Once: create the context and choose the look (width in world units: this scene's unit is
-   *    about 4 mm, to make the blur visible on 64 pixels). */
+  /* 3. Once: create the context and give it the scene's scale: world units per millimetre of
+   *    surface. This scene takes a millimetre as 0.004 world units, so a pixel at its depth spans
+   *    about 3 mm and the blur shows on 64 pixels; scale stays 1, the physical size. */
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;
   desc.get_proc_address = load_gl;
@@ -94,7 +95,7 @@ int main(void) {
     return 1;
   }
   sss_default_settings(&settings);
-  settings.width = sss_width_for_world_units_per_mm(0.004f);
+  settings.world_units_per_mm = 0.004f;
   if (sss_set_settings(sss, &settings) != SSS_OK) return fprintf(stderr, "%s\n", sss_last_error(sss)), 1;
 
   /* 4. Every frame, after lighting and before adding specular and tone mapping. */

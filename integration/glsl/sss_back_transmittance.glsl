@@ -17,14 +17,15 @@
 // normals in the pass where it lights; the gather needs only the camera, width and r_max, which the
 // host knows; a library input would add three textures, texture units and state to every frame of
 // hosts that do not use it. The footprint formula is the cross-bilateral mode's, with the same
-// world-unit convention (one profile millimetre = (2/3)·width world units).
+// millimetre: one profile millimetre = (2/3)·width world units = world_units_per_mm · scale.
 //
 // Inputs (view space, world units):
 //   pixel         gl_FragCoord.xy of the front pixel
 //   x_o, n_o      the front point and its unit normal
 //   projection    the camera's projection (column-major, as the library's sss_set_camera takes it)
 //   viewport      x, y, width, height in pixels
-//   width         sss_settings.width; r_max_mm: the footprint radius in profile mm (Mikkelsen: 4.5)
+//   width         as for sss_transmittance: 1.5 · sss_settings.world_units_per_mm · sss_settings.scale;
+//                 r_max_mm: the footprint radius in profile mm (Mikkelsen: 4.5)
 
 const int SSS_BACK_TAPS = 16;
 

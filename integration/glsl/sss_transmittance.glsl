@@ -14,7 +14,9 @@
 //
 // Units and inputs:
 //   world units   the host's (metres, centimetres, ...): width, thickness, shrink and the light's
-//                 distance map all use them. width is sss_settings.width (1 profile mm = 2/3 width).
+//                 distance map all use them. width keeps the reference shader's convention (1 profile
+//                 mm = 2/3 width): 1.5 · sss_settings.world_units_per_mm · sss_settings.scale, the
+//                 blur's millimetre (the inverse of sss_world_units_per_mm_from_legacy_width).
 //   shadow map    the light's depth texture as its shadow pass wrote it (sss_thickness), or a map of
 //                 light-space distances in world units (sss_thickness_linear).
 //   light_view    world -> light view (the light looks down -Z) and light_projection: both as the

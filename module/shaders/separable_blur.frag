@@ -152,7 +152,7 @@ void main() {
 #endif
 #if SSS_FOOTPRINT
   // Taps on whole pixels: every pixel out to the reach where the kernel spans at most u_half_taps
-  // on a side, else u_half_taps spread quadratically (never two on one pixel). A tap's weight is the
+  // on a side, else u_half_taps spread denser at the centre (never two on one pixel). A tap's weight is the
   // kernel over the pixels between the midpoints to its neighbours; the last one takes the tail.
   float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(u_half_taps) + 0.5;

@@ -53,19 +53,20 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   configs.push_back({"copy-compute", 1, false});
   for (bool follow : o.follow_surface) {
     for (int taps : o.separable_taps) configs.push_back({"separable", taps, follow});
-    for (int taps : o.gaussian_taps) configs.push_back({"sum-of-gaussians", taps, follow});
+    if (follow) {
+      for (int taps : o.gaussian_taps) configs.push_back({"sum-of-gaussians", taps, true});
+    }
   }
   // What the state save and restore costs: the paper's default kernel once more, with the host
   // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
   configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
   // Skipping what a frame does not need: the default kernel written back in place (a host's
-  // frame), with footprint-adaptive taps, and with those and the host's region of translucent
-  // pixels.
+  // frame), and with the host's region of translucent pixels.
   // The masked fragment path and the compute path (sss_settings.path) the same two ways, and the
   // automatic choice.
-  for (const char* kind : {"separable-in-place", "separable-adaptive", "separable-adaptive-region",
-                           "separable-masked", "separable-masked-adaptive-region", "separable-compute",
-                           "separable-compute-adaptive-region", "separable-auto-adaptive-region"}) {
+  for (const char* kind : {"separable-in-place", "separable-region",
+                           "separable-masked", "separable-masked-region", "separable-compute",
+                           "separable-compute-region", "separable-auto-region"}) {
     configs.push_back({kind, SSS_SAMPLES_MEDIUM, true});
   }
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
@@ -83,20 +84,16 @@ std::vector<MethodConfig> method_configs(const Options& o) {
 
 // The footprint sweep measures accuracy on planes facing the camera, where the depth test, the
 // paths and the region change nothing but time: there it runs each kernel once (follow-surface on)
-// with the sum of Gaussians, the cross-bilateral mode, the kernel families and the adaptive taps
-// (which do change the image: they pass small footprints through).
+// with the sum of Gaussians, the cross-bilateral mode and the kernel families.
 bool runs_on_sweep(const MethodConfig& c, const Options& o) {
   if (c.kind == "separable") {
     return c.follow_surface &&
            (o.sweep_taps.empty() || std::find(o.sweep_taps.begin(), o.sweep_taps.end(), c.taps) != o.sweep_taps.end());
   }
   if (c.kind == "sum-of-gaussians") return c.follow_surface;
-  return c.kind == "separable-adaptive" || c.kind == "cross-bilateral" || c.kind.rfind("kernel-", 0) == 0;
+  return c.kind == "cross-bilateral" || c.kind.rfind("kernel-", 0) == 0;
 }
 
-// The side of the sweep frames' interior in millimetres, at least: the widest content (plane-disk,
-// 6 mm across) with a millimetre on either side, so that the interior holds every edge of the light.
-constexpr double kSweepInteriorMm = 8.0;
 
 // One scene at one size: a canonical scene, or a footprint sweep plane (footprint_mm > 0).
 struct SceneJob {
@@ -112,21 +109,16 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   if (c.kind == "separable-no-restore") {
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
-  if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false, false);
-  if (c.kind == "separable-adaptive") return make_in_place_method(loader, c.taps, true, false);
-  if (c.kind == "separable-adaptive-region") return make_in_place_method(loader, c.taps, true, true);
-  if (c.kind == "separable-masked") {
-    return make_in_place_method(loader, c.taps, false, false, SSS_PATH_FRAGMENT_MASKED);
-  }
-  if (c.kind == "separable-masked-adaptive-region") {
-    return make_in_place_method(loader, c.taps, true, true, SSS_PATH_FRAGMENT_MASKED);
-  }
-  if (c.kind == "separable-compute") return make_in_place_method(loader, c.taps, false, false, SSS_PATH_COMPUTE);
-  if (c.kind == "separable-compute-adaptive-region") {
-    return make_in_place_method(loader, c.taps, true, true, SSS_PATH_COMPUTE);
-  }
-  if (c.kind == "separable-auto-adaptive-region") return make_in_place_method(loader, c.taps, true, true, SSS_PATH_AUTO);
-  if (c.kind == "sum-of-gaussians") return make_sum_of_gaussians_method(c.taps, c.follow_surface);
+  if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false);
+  if (c.kind == "separable-region") return make_in_place_method(loader, c.taps, true);
+  if (c.kind == "separable-masked") return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT_MASKED);
+  if (c.kind == "separable-masked-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_FRAGMENT_MASKED);
+  if (c.kind == "separable-compute") return make_in_place_method(loader, c.taps, false, SSS_PATH_COMPUTE);
+  if (c.kind == "separable-compute-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_COMPUTE);
+  if (c.kind == "separable-auto-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_AUTO);
+  // The 12-pass baseline: d'Eon's six Gaussians, each a horizontal and a vertical pass of its own
+  // footprint-integrated weights (the library's family, exact on a plane where every pixel gets a tap).
+  if (c.kind == "sum-of-gaussians") return make_kernel_family_method(loader, sum_of_gaussians_baseline(), c.taps);
   if (c.kind == "cross-bilateral") return make_cross_bilateral_method(loader, c.taps);
   if (c.kind == "cross-bilateral-no-tilt") return make_cross_bilateral_method(loader, c.taps, false);
   for (const KernelChoice& k : kernel_family_choices()) {
@@ -336,10 +328,7 @@ int run(const Options& options) {
   }
   for (const std::string& name : options.sweep_scenes.empty() ? footprint_scene_names() : options.sweep_scenes) {
     for (double f : options.footprints) {
-      // The interior, at least --sweep-interior pixels and kSweepInteriorMm (the disk whole, with
-      // its edge inside), and the reach on every side (border pixels), plus one for the float camera.
-      const int interior = std::max(options.sweep_interior_px, static_cast<int>(std::ceil(kSweepInteriorMm / f)));
-      const int side = interior + 2 * (static_cast<int>(std::ceil(reach_mm / f)) + 1);
+      const int side = sweep_frame_side(f, options.sweep_interior_px, reach_mm);
       jobs.push_back({name, side, side, f});
     }
   }

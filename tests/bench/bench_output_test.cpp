@@ -92,10 +92,10 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
   // copy-compute: the compute yardstick, on every context with compute shaders (llvmpipe: GL 4.5).
   EXPECT_EQ(methods, (std::set<std::string>{"copy-compute", "separable", "separable-no-restore", "cross-bilateral",
                                             "cross-bilateral-no-tilt", "sum-of-gaussians", "exact-2d",
-                                            "separable-in-place", "separable-adaptive", "separable-adaptive-region",
-                                            "separable-masked", "separable-masked-adaptive-region",
-                                            "separable-compute", "separable-compute-adaptive-region",
-                                            "separable-auto-adaptive-region", "kernel-separable-jitter-33", "kernel-sum-of-gaussians-6",
+                                            "separable-in-place", "separable-region",
+                                            "separable-masked", "separable-masked-region",
+                                            "separable-compute", "separable-compute-region",
+                                            "separable-auto-region", "kernel-separable-jitter-33",
                                             "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
                                             "kernel-preintegrated", "kernel-guided", "kernel-artist", "no-scattering"}));
   EXPECT_EQ(scenes.size(), 13u + 6u);  // the canonical scenes and the footprint sweep's planes
@@ -186,7 +186,7 @@ TEST(BenchQuickOutput, FootprintSweepIsWhole) {
   for (const auto& row : csv.rows) {
     if (row.at("sweep") == "1") ++instances[row.at("method") + "/" + row.at("taps")];
   }
-  EXPECT_GE(instances.size(), 1u + 4u + 1u + 1u + 1u + 8u);  // input, 5/9/17/33 taps, sum of Gaussians, adaptive, cbf, families
+  EXPECT_GE(instances.size(), 1u + 4u + 1u + 1u + 7u);  // input, 5/9/17/33 taps, sum of Gaussians, cbf, families
   for (const auto& [method, n] : instances) EXPECT_EQ(n, 6 * 7) << method;
   for (const auto& [scene, values] : footprints) {
     ASSERT_EQ(values.size(), 7u) << scene;
@@ -229,7 +229,7 @@ TEST(BenchQuickOutput, FootprintSweepIsWhole) {
 TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
   const Csv csv = read_csv(kDir + "/results.csv");
   const std::map<std::string, int> passes = {
-      {"kernel-separable-jitter-33", 2}, {"kernel-sum-of-gaussians-6", 12}, {"kernel-sum-of-gaussians-2", 4},
+      {"kernel-separable-jitter-33", 2}, {"sum-of-gaussians", 12}, {"kernel-sum-of-gaussians-2", 4},
       {"kernel-svd-1", 2},  {"kernel-svd-3", 6}, {"kernel-preintegrated", 2}, {"kernel-guided", 2},
       {"kernel-artist", 2}};
   std::map<std::string, double> separable;  // scene -> eq. (1) error at the families' tap count
@@ -251,13 +251,13 @@ TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
     EXPECT_LT(rmse, 2.0 * separable[row.at("scene")] + 0.01) << row.at("scene") << " " << row.at("method");
     if (row.at("scene") == "edge-0" && row.at("method") == "kernel-preintegrated") preintegrated_edge = rmse;
   }
-  EXPECT_GE(families, 8 * 10);  // every family on every scene with translucent pixels
+  EXPECT_GE(families, 8 * 10);  // every family (and the 12-pass baseline) on every scene with translucent pixels
   ASSERT_GE(preintegrated_edge, 0.0);
   EXPECT_LT(preintegrated_edge, separable["edge-0"]);
 }
 
-// The host's region, padded by the kernel's reach, must not change the result: the adaptive filter
-// with and without it scores the same on every scene (bit-identical images give identical metrics).
+// The host's region, padded by the kernel's reach, must not change the result: the filter with and
+// without it scores the same on every scene (bit-identical images give identical metrics).
 TEST(BenchQuickOutput, APaddedRegionChangesNothing) {
   const Csv csv = read_csv(kDir + "/results.csv");
   std::map<std::string, std::map<std::string, std::string>> rmse;  // scene -> method -> value as written
@@ -267,21 +267,21 @@ TEST(BenchQuickOutput, APaddedRegionChangesNothing) {
   }
   int scenes = 0;
   for (const auto& [scene, methods] : rmse) {
-    if (methods.count("separable-adaptive-region") == 0) continue;
+    if (methods.count("separable-region") == 0) continue;
     ++scenes;
-    EXPECT_EQ(methods.at("separable-adaptive-region"), methods.at("separable-adaptive")) << scene;
+    EXPECT_EQ(methods.at("separable-region"), methods.at("separable-in-place")) << scene;
     // The compute and masked paths give the fragment path's image (within fp16 rounding; the masked
-    // one bit for bit): the same score to three significant digits, fixed taps and adaptive with
-    // the region alike; so does the automatic choice, whichever path it took.
+    // one bit for bit): the same score to three significant digits, with and without the region;
+    // so does the automatic choice, whichever path it took.
     const auto close = [&](const char* a, const char* b) {
       const double x = std::stod(methods.at(a)), y = std::stod(methods.at(b));
       EXPECT_LE(std::fabs(x - y), 1e-3 * std::max(x, 1e-3)) << scene << ": " << a << " vs " << b;
     };
     close("separable-compute", "separable-in-place");
     close("separable-masked", "separable-in-place");
-    close("separable-masked-adaptive-region", "separable-adaptive-region");
-    close("separable-compute-adaptive-region", "separable-adaptive-region");
-    close("separable-auto-adaptive-region", "separable-adaptive-region");
+    close("separable-masked-region", "separable-region");
+    close("separable-compute-region", "separable-region");
+    close("separable-auto-region", "separable-region");
   }
   EXPECT_EQ(scenes, 13);
   std::ifstream doc(kDir + "/benchmarks.md");
@@ -334,12 +334,15 @@ TEST(BenchQuickOutput, MsaaStudy) {
     EXPECT_LT(fringe[s + "/average"], fringe[s + "/single-sample"]) << scene;
   }
   // Where translucent surfaces at two depths share pixels (the depth step), the paper's average of
-  // the samples' linear depths beats every other resolve. On the sphere's silhouette against the
-  // empty background the resolves differ by a few per cent and none wins everywhere (the measured
-  // numbers are in the results document): not asserted.
+  // the samples' linear depths is no worse than any other resolve and better than the first
+  // sample's (with whole-pixel taps the farthest sample's ties it: either depth puts the far side
+  // past the follow-surface reach). On the sphere's silhouette against the empty background the
+  // resolves differ by a few per cent and none wins everywhere (the measured numbers are in the
+  // results document): not asserted.
   for (const char* other : {"sample-0", "min", "max"}) {
-    EXPECT_LT(rmse["depth-step/average"], rmse[std::string("depth-step/") + other]) << other;
+    EXPECT_LE(rmse["depth-step/average"], rmse[std::string("depth-step/") + other]) << other;
   }
+  EXPECT_LT(rmse["depth-step/average"], rmse["depth-step/sample-0"]);
   std::ifstream doc(kDir + "/benchmarks.md");
   const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("## MSAA: depth resolve at silhouettes"), std::string::npos);

@@ -1,5 +1,5 @@
 // The library as a host's frame calls it: written back in place into the host's lit colour, with the
-// options that skip work a frame does not need (footprint-adaptive taps, the region of translucent
+// options that skip work a frame does not need (the region of translucent
 // pixels). Only sss_apply_frame is timed: refilling the colour before each frame and copying the
 // result out for scoring happen outside the clock (Method::before_run / after_run).
 #include <algorithm>
@@ -19,8 +19,8 @@ namespace {
 
 class InPlaceMethod : public Method {
  public:
-  InPlaceMethod(const GlLoader& loader, int taps, bool adaptive, bool region, uint32_t path)
-      : taps_(taps), adaptive_(adaptive), region_(region), path_(path) {
+  InPlaceMethod(const GlLoader& loader, int taps, bool region, uint32_t path)
+      : taps_(taps), region_(region), path_(path) {
     sss_create_desc desc = {};
     desc.struct_size = sizeof desc;
     desc.get_proc_address = loader.get_proc_address;
@@ -39,8 +39,8 @@ class InPlaceMethod : public Method {
                              : path_ == SSS_PATH_AUTO            ? "separable-auto"
                              : path_ == SSS_PATH_FRAGMENT_MASKED ? "separable-masked"
                                                                  : "separable";
-    if (!adaptive_) return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;
-    return base + (region_ ? "-adaptive-region" : "-adaptive");
+    if (region_) return base + "-region";
+    return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;
   }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return true; }
@@ -56,7 +56,7 @@ class InPlaceMethod : public Method {
     sss_default_settings(&s);
     s.world_units_per_mm = (scene.world_units_per_mm);
     s.samples = taps_;
-    s.flags = SSS_FOLLOW_SURFACE | (adaptive_ ? SSS_ADAPTIVE_TAPS : 0u);
+    s.flags = SSS_FOLLOW_SURFACE;
     s.path = path_;
     sss_frame frame = {};
     frame.struct_size = sizeof frame;
@@ -140,7 +140,7 @@ class InPlaceMethod : public Method {
   }
 
   int taps_;
-  bool adaptive_, region_;
+  bool region_;
   uint32_t path_;
   sss_context* ctx_ = nullptr;
   GLuint framebuffers_[2] = {0, 0};
@@ -151,9 +151,9 @@ class InPlaceMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region,
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
                                              uint32_t path) {
-  return std::make_unique<InPlaceMethod>(loader, taps, adaptive, region, path);
+  return std::make_unique<InPlaceMethod>(loader, taps, region, path);
 }
 
 }  // namespace sss_bench

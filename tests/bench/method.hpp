@@ -50,8 +50,10 @@ struct KernelChoice {
   float jitter = 0.0f;
 };
 const std::vector<KernelChoice>& kernel_family_choices();
+// The 12-pass baseline ("sum-of-gaussians"): d'Eon's six Gaussians as the library's family, each
+// Gaussian's footprint-integrated weights in a pass of its own, the accuracy ceiling of the tables.
+const KernelChoice& sum_of_gaussians_baseline();
 std::unique_ptr<Method> make_kernel_family_method(const GlLoader& loader, const KernelChoice& kernel, int taps);
-std::unique_ptr<Method> make_sum_of_gaussians_method(int taps, bool follow_surface);
 // Mikkelsen's cross-bilateral mode (SSS_MODE_CROSS_BILATERAL) with d'Eon's six-Gaussian skin profile,
 // the profile the exact reference uses, so its error is the method's and not a profile mismatch.
 // tilt_correction false: a zero normal texture switches the per-axis cosine correction of the
@@ -63,14 +65,14 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // rows of the output are left as they were).
 // The library written back in place (sss_apply_frame with output_texture 0, into an RGBA16F copy of
 // the irradiance refilled before each timed frame), as a host's frame calls it, 17 taps or `taps`,
-// follow-surface on: "separable-in-place" (fixed taps), "separable-adaptive" (SSS_ADAPTIVE_TAPS) and
-// "separable-adaptive-region" (also SSS_FRAME_REGION: the translucent pixels' bounding rectangle
-// padded by the kernel's reach at the nearest translucent pixel, as a host would project its skin
-// meshes' bounds; the result equals the whole viewport's).
-// path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-adaptive[-region]";
-// SSS_PATH_FRAGMENT_MASKED: "separable-masked[-adaptive-region]"; SSS_PATH_COMPUTE:
-// "separable-compute[-adaptive-region]"; SSS_PATH_AUTO: "separable-auto[...]").
-std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool adaptive, bool region,
+// follow-surface on: "separable-in-place" (the whole viewport) and "separable-region"
+// (SSS_FRAME_REGION: the translucent pixels' bounding rectangle padded by the kernel's reach at the
+// nearest translucent pixel, as a host would project its skin meshes' bounds; the result equals the
+// whole viewport's).
+// path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-region";
+// SSS_PATH_FRAGMENT_MASKED: "separable-masked[-region]"; SSS_PATH_COMPUTE:
+// "separable-compute[-region]"; SSS_PATH_AUTO: "separable-auto[...]").
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
                                              uint32_t path = SSS_PATH_FRAGMENT);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();

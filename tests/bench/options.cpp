@@ -109,7 +109,7 @@ void apply_mode_defaults(Options* o) {
     o->sizes = {{160, 90}};
     o->size_scenes = {{}};
     o->separable_taps = {5, 9, 17, 33, 65};
-    o->gaussian_taps = {7};
+    o->gaussian_taps = {17};
     o->cbf_taps = {13};
     o->family_taps = {9};
     o->warmup = 1;
@@ -127,7 +127,7 @@ void apply_mode_defaults(Options* o) {
     o->sizes = {{640, 360}, {1920, 1080}};
     o->size_scenes = {{}, {"head-close", "head-mid", "head-far", "empty"}};
     o->separable_taps = {5, 9, 11, 17, 25, 33, 65};
-    o->gaussian_taps = {7, 13};
+    o->gaussian_taps = {17, 65};  // 65: the accuracy ceiling of the tables (every pixel a tap further out)
     o->cbf_taps = {13, 25};
     o->family_taps = {9, 17, 33};
     o->warmup = 3;
@@ -137,12 +137,6 @@ void apply_mode_defaults(Options* o) {
 }
 
 }  // namespace
-
-std::vector<double> default_sweep_footprints() {
-  std::vector<double> footprints;
-  for (int k = 0; k <= 6; ++k) footprints.push_back(0.05 * std::pow(40.0, k / 6.0));
-  return footprints;
-}
 
 Options parse_options(int argc, char** argv) {
   Options o;

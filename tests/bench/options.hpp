@@ -1,6 +1,8 @@
 // Command line of sss_bench.
 #pragma once
 
+#include "sweep_geometry.hpp"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,9 +42,6 @@ struct Options {
   std::string command_line;
 };
 
-// The default footprints: seven log-spaced values from 0.05 to 2 mm per pixel (a 4K close-up of a
-// face to a crowd), 0.05 · 40^(k/6).
-std::vector<double> default_sweep_footprints();
 
 // Parses argv (after the mode's defaults); prints usage and exits on --help or bad input.
 Options parse_options(int argc, char** argv);

@@ -180,7 +180,7 @@ TEST_F(FootprintTaps, TheAdaptiveFlagIsAcceptedAndChangesNothing) {
 
 // The banded scene with translucent pixels only inside `inner` (x, y, w, h).
 SyntheticScene island_scene(const sss_settings& s, const std::array<int, 4>& inner) {
-  SyntheticScene scene = banded_scene(s, {2.0f, 2.0f, 2.0f, 2.0f, 2.0f});  // 2 px per profile mm
+  SyntheticScene scene = banded_scene(s, {1.0f, 1.0f, 1.0f, 1.0f, 1.0f});  // 1 px per profile mm
   for (int y = 0; y < kHeight; ++y) {
     for (int x = 0; x < kWidth; ++x) {
       const bool in = x >= inner[0] && x < inner[0] + inner[2] && y >= inner[1] && y < inner[1] + inner[3];
@@ -194,8 +194,9 @@ SyntheticScene island_scene(const sss_settings& s, const std::array<int, 4>& inn
 using Region = FilterCaseTest;
 
 TEST_F(Region, APaddedRegionGivesTheFullFrameResultBitForBit) {
-  // The kernel (33 taps) reaches 3 mm · 2 px/mm = 6 px: a region 8 px larger than the island on
-  // every side holds every tap, so restricting the passes to it changes nothing.
+  // The kernel (17 taps: 2 kernel mm over separable_scale, under 5 mm of surface; the
+  // cross-bilateral mode's r_max 4.5 mm) reaches under 5 px at 1 px/mm: a region 8 px larger than
+  // the island on every side holds every tap, so restricting the passes to it changes nothing.
   const std::array<int, 4> island = {30, 10, 25, 10};
   const std::array<int32_t, 4> padded = {22, 2, 41, 26};
   for (uint32_t mode : {SSS_MODE_SEPARABLE, SSS_MODE_CROSS_BILATERAL}) {
@@ -230,7 +231,7 @@ TEST_F(Region, ATightRegionClampsTheTapsLikeTheViewportEdge) {
   for (bool separate : {false, true}) {
     SCOPED_TRACE(separate ? "separate output" : "in place");
     FilterCase c;
-    c.settings = settings_for(SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, 0.05f);
+    c.settings = settings_for(SSS_FOLLOW_SURFACE, 0.05f);
     c.separate_output = separate;
     c.use_region = true;
     c.region = {island[0], island[1], island[2], island[3]};

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "math/cpu_separable_filter.hpp"
+#include "math/pass_kernel.hpp"
 #include "math/half_float.hpp"
 #include "synthetic_scene.hpp"
 
@@ -21,8 +22,9 @@ std::vector<float> filter(const SyntheticScene& scene, sss::math::FilterSettings
   g.texture_width = scene.width;
   g.texture_height = scene.height;
   g.viewport = {0, 0, scene.width, scene.height};
-  const auto constants = sss::math::compute_pass_constants(s, scene.projection, g);
-  const auto kernel = sss::math::separable_kernel(s.samples, s.strength, s.falloff);
+  // The kernel the settings describe, as the library builds it (footprint-aware taps).
+  const auto kernel = sss::math::build_pass_kernel(s);
+  const auto constants = sss::math::compute_pass_constants(s, scene.projection, g, kernel.reach_mm);
   sss::math::CpuFilterImage image;
   image.width = scene.width;
   image.height = scene.height;
@@ -30,7 +32,7 @@ std::vector<float> filter(const SyntheticScene& scene, sss::math::FilterSettings
   image.depth = scene.window_depth.data();
   image.mask = mask ? scene.stencil.data() : nullptr;
   std::vector<float> out(scene.color.size());
-  sss::math::cpu_separable_filter(kernel, constants, image, out.data());
+  sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
   return out;
 }
 
@@ -88,8 +90,8 @@ TEST(CpuModel, FollowSurfaceStopsLightCrossingADepthStep) {
   const auto without = filter(scene, off);
   const std::size_t edge = (8 * 48 + 23) * 4;  // the last dark pixel
   EXPECT_GT(without[edge], 0.05f);
-  // What remains comes from taps that straddle the step: their bilinear colour holds some of the
-  // far side while their interpolated depth is still within the reach (as in the paper's shader).
+  // Whole-pixel taps read the far side's colour with its own depth, so the ramp stops them; what
+  // may remain is the ramp's partial blend of taps whose depth difference is under the reach.
   EXPECT_LT(with[edge], 0.1f * without[edge]);
   EXPECT_LT(with[edge], 0.01f);
 }

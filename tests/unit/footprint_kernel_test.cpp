@@ -119,7 +119,8 @@ TEST(FootprintKernel, TheSumOfGaussiansIsTheExactPixelIntegralWhereEveryPixelHas
   ASSERT_EQ(kernel.terms.size(), gaussians.size());
   double worst = 0.0;
   for (std::size_t t = 0; t < gaussians.size(); ++t) {
-    const auto& table = kernel.terms[t].vertical.footprint;  // weight 1 in every channel
+    // The horizontal pass: normalised to 1 in every channel (the term's weight is on the vertical).
+    const auto& table = kernel.terms[t].horizontal.footprint;
     for (float step : steps()) {
       const FootprintTaps taps = sss::math::footprint_taps(table, kernel.spacing, step);
       if (table.reach_mm * step > static_cast<float>(kernel.spacing.size()) + 0.5f) continue;  // sparse

@@ -243,7 +243,15 @@ TEST(ArtistPlan, AreaIntegratedTwoGaussiansWithTheLargestVarianceForDepth) {
   ASSERT_EQ(plan.terms.size(), 1u);
   EXPECT_FLOAT_EQ(plan.terms[0].depth_variance_mm2, 1.5f);
   for (double g : plan_gain(plan)) EXPECT_NEAR(g, 1.0, 1e-6);
-  EXPECT_NEAR(plan.reach_mm, 3.0 * std::sqrt(1.5), 1e-5);
+  // The taps reach ±3σ of the far Gaussian; the footprint table (the closed form) reaches where at
+  // most 1e-4 of each channel's half mass lies beyond, further out: the plan's reach is the larger.
+  const float table_reach = plan.terms[0].horizontal_table.reach_mm;
+  EXPECT_GT(table_reach, 3.0 * std::sqrt(1.5));
+  EXPECT_FLOAT_EQ(plan.reach_mm, table_reach);
+  // Red's far Gaussian (weight 0.4, the widest) beyond ±reach: at most 1e-4 of the channel's mass.
+  const double far_tail = 0.4 * std::erfc(table_reach / std::sqrt(2.0 * 1.5));
+  EXPECT_LE(far_tail, 1.0001e-4);
+  EXPECT_GT(far_tail, 0.5e-4);  // and the reach no further than that needs
   // The centre tap holds more of the near Gaussian where its weight is larger (blue).
   const auto& centre = plan.terms[0].horizontal[10];
   EXPECT_EQ(centre.offset_mm, 0.0f);

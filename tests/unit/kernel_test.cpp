@@ -169,13 +169,17 @@ TEST(ResultString, EveryCodeHasItsName) {
   EXPECT_STREQ(sss_result_string(static_cast<sss_result>(SSS_ERROR_INVALID_OPERATION + 1)), "SSS_ERROR_UNKNOWN");
 }
 
-TEST(DefaultSettings, AreThePapersFitInAMetricScene) {
+TEST(DefaultSettings, AreTheCalibratedKernelInAMetricScene) {
+  // The calibrated values themselves are checked against their fit by bench.default_kernel_fit.
   sss_settings s;
   sss_default_settings(&s);
   EXPECT_EQ(s.struct_size, sizeof s);
-  EXPECT_FLOAT_EQ(s.world_units_per_mm, (0.001f));
-  EXPECT_FLOAT_EQ(s.strength[0], 0.78f);
-  EXPECT_FLOAT_EQ(s.falloff[2], 0.08f);
+  EXPECT_FLOAT_EQ(s.world_units_per_mm, 0.001f);
+  EXPECT_FLOAT_EQ(s.scale, 1.0f);
+  EXPECT_EQ(s.strength[0], sss::math::kCalibratedStrength[0]);
+  EXPECT_EQ(s.falloff[2], sss::math::kCalibratedFalloff[2]);
+  EXPECT_EQ(s.separable_scale, sss::math::kCalibratedSeparableScale);
+  EXPECT_EQ(s.kernel.family, SSS_KERNEL_SEPARABLE);
   EXPECT_EQ(s.samples, SSS_SAMPLES_MEDIUM);
   EXPECT_EQ(s.flags, SSS_FOLLOW_SURFACE);
 }

@@ -78,7 +78,7 @@ TEST(Projection, RejectsSingularAndNonFiniteMatrices) {
 
 TEST(FilterConstants, HorizontalScaleIsAspectCorrect) {
   sss::math::FilterSettings s;
-  s.world_units_per_mm = 0.03f;
+  s.world_units_per_mm = 0.02f;
   sss::math::FrameGeometry g;
   g.texture_width = 200;
   g.texture_height = 100;
@@ -86,11 +86,12 @@ TEST(FilterConstants, HorizontalScaleIsAspectCorrect) {
   const auto k = sss::math::compute_pass_constants(s, perspective(40.0f, 2.0f, 0.1f, 10.0f), g);
   // One world unit spans the same number of pixels across and down for square pixels.
   EXPECT_NEAR(k.pixels_per_mm[0], k.pixels_per_mm[1], 1e-4f * k.pixels_per_mm[1]);
-  // The paper's scale: a millimetre is (2/3)·width world units.
+  // One millimetre is world_units_per_mm · scale world units.
   const float f = 1.0f / std::tan(20.0f * 3.14159265f / 180.0f);
   EXPECT_NEAR(k.pixels_per_mm[1], f * 0.5f * 100.0f * 0.02f, 1e-4f);
-  // Follow-surface reach: the kernel's 2 mm range for 17 taps, in world units (0.02 per mm).
-  EXPECT_NEAR(k.follow_surface_factor, 1.0f / (2.0f * 0.02f), 1e-3f);
+  // Follow-surface reach: eq. (1)'s 2 kernel mm for 17 taps, over separable_scale kernel mm per
+  // millimetre, in world units (0.02 per mm).
+  EXPECT_NEAR(k.follow_surface_factor, 1.0f / (2.0f / s.separable_scale * 0.02f), 1e-3f);
 }
 
 TEST(FilterConstants, LinearisationInFloatMatchesDouble) {

@@ -98,11 +98,13 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   }
   label_object(f, labels_, PROGRAM, copy_program_, "sss copy");
 
-  // The variants every host uses (write back, follow-surface, hardware depth) are built now so a
-  // driver that cannot compile them fails in sss_create rather than in the first frame.
+  // The variants every host uses (write back, follow-surface, hardware depth, footprint-aware taps:
+  // the default kernel's) are built now so a driver that cannot compile them fails in sss_create
+  // rather than in the first frame.
   BlurProgram* unused = nullptr;
   BlurVariant common;
   common.follow_surface = 1;
+  common.footprint = true;
   sss_result r = blur_program(common, &unused, message);
   common.outside = Outside::discard;
   if (r == SSS_OK) r = blur_program(common, &unused, message);

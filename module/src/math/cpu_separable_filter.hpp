@@ -1,6 +1,7 @@
-// A CPU model of the GPU's two-pass separable filter: the same taps, the same per-pixel step, the
-// same follow-surface blend, bilinear clamp-to-edge sampling, and the RGBA16F rounding of the
-// intermediate target. Tests compare the GL result against it to tell shader bugs apart from
+// A CPU model of the GPU's two-pass separable filter: the same taps (footprint-aware whole-pixel
+// taps, footprint_kernel.hpp; or a jittered kernel's fixed list read with bilinear clamp-to-edge
+// sampling), the same per-pixel step, the same follow-surface blend, and the RGBA16F rounding of
+// the intermediate target. Tests compare the GL result against it to tell shader bugs apart from
 // approximation error (DESIGN.md §6, reference 2). Math layer: no GL.
 #pragma once
 
@@ -22,9 +23,10 @@ struct CpuFilterImage {
   bool accumulator_is_half = false;  // several terms: the module's sum of the earlier terms is RGBA16F (ES)
 };
 
-// Runs both passes into `out` (RGBA, width·height·4 floats; may not alias color). Pixels that are
-// outside the mask, have alpha <= 0 (after the intermediate's rounding), a non-finite colour or
-// alpha, or an unusable depth keep their input value exactly; pixels outside the viewport too.
+// Runs both passes of a fixed tap list (offsets scaled per pixel, read bilinearly) into `out` (RGBA,
+// width·height·4 floats; may not alias color). Pixels that are outside the mask, have alpha <= 0
+// (after the intermediate's rounding), a non-finite colour or alpha, or an unusable depth keep their
+// input value exactly; pixels outside the viewport too.
 // Alpha above 1 counts as 1. A non-finite tap counts as the centre's colour (it does not spread).
 void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
                           const CpuFilterImage& image, float* out);

@@ -71,8 +71,9 @@ struct PassConstants {
 // World units per profile millimetre: world_units_per_mm · scale.
 double world_units_per_profile_mm(const FilterSettings& settings);
 
-// reach_mm: the kernel's largest |offset| (PassKernel::reach_mm), where the follow-surface ramp
-// reaches a full blend; below 0: eq. (1)'s range for settings.samples.
+// reach_mm: the kernel's reach in profile millimetres (PassKernel::reach_mm), where the
+// follow-surface ramp reaches a full blend; below 0: eq. (1)'s range for settings.samples in
+// surface millimetres (its kernel range over separable_scale).
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
                                      const FrameGeometry& geometry, double reach_mm = -1.0);
 

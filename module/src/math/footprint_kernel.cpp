@@ -132,7 +132,7 @@ std::vector<float> footprint_spacing(int half_taps) {
   std::vector<float> s(idx(half_taps));
   for (int i = 1; i <= half_taps; ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(half_taps);
-    s[idx(i - 1)] = static_cast<float>(t * t);
+    s[idx(i - 1)] = static_cast<float>(t * t * t);
   }
   return s;
 }

@@ -10,8 +10,8 @@
 //     plane (and no more taps than the reach needs: a distant surface pays for few or none);
 //   - the part of the kernel narrower than a pixel stays in the centre tap, so a kernel that fits
 //     inside its pixel leaves the pixel as it is;
-//   - where the kernel spans more pixels than there are taps, the taps spread out (quadratically
-//     denser at the centre, never two on one pixel) and each stands for the pixels between the
+//   - where the kernel spans more pixels than there are taps, the taps spread out (denser at the
+//     centre, never two on one pixel) and each stands for the pixels between the
 //     midpoints to its neighbours.
 // Each channel's weights sum to the kernel's mass (1 for a normalised pass) by construction: the
 // cell integrals telescope. The shaders (separable_blur.frag, separable_blur.comp) compute the same
@@ -69,8 +69,12 @@ std::array<float, 3> footprint_half_cdf(const FootprintTable& table, float x_mm)
 // The most taps on each side of the centre (the filter's `samples` is 2·this + 1).
 inline constexpr int kMaxFootprintHalfTaps = 32;
 
-// Where the taps of the sparse layout go, as a share of the reach: (i / half)² for i = 1..half
-// (the shaders' u_spacing[]).
+// Where the taps of the sparse layout go, as a share of the reach: (i / half)³ for i = 1..half
+// (the shaders' u_spacing[]). Cubic rather than eq. (1)'s quadratic: skin's kernels hold most of
+// their mass within a few tenths of a millimetre and their reach is set by a tail to 1e-4, so at a
+// 4K close-up (0.05 mm per pixel) the quadratic layout left one tap in the peak; on the footprint
+// sweep at 17 taps (the d'Eon marginal kernel) the largest interior miss at 0.05 mm per pixel fell
+// from 0.269 to 0.160 with the cube, and a fourth power gave no more (0.166).
 std::vector<float> footprint_spacing(int half_taps);
 
 struct FootprintTaps {

@@ -22,6 +22,22 @@ ProfileMatrix profile_matrix_for(const RadialProfile& profile, int taps, double 
   return discretise_profile(profile, make_tap_grid(taps, radius, TapSpacing::quadratic));
 }
 
+namespace {
+
+// The grid the matrix families' footprint tables come from (the most taps a pass may have).
+constexpr int kTableGridTaps = 65;
+
+// `plan` takes the footprint tables of `fine`, the same kernel on a finer grid (term by term).
+void use_tables_of(const KernelPlan& fine, KernelPlan* plan) {
+  for (std::size_t t = 0; t < plan->terms.size() && t < fine.terms.size(); ++t) {
+    plan->terms[t].horizontal_table = footprint_table_from_taps(fine.terms[t].horizontal);
+    plan->terms[t].vertical_table = footprint_table_from_taps(fine.terms[t].vertical);
+  }
+  plan->reach_mm = plan_reach_mm(*plan);
+}
+
+}  // namespace
+
 KernelPlan build_kernel_plan(const KernelRequest& r) {
   switch (r.family) {
     case KernelFamily::separable:
@@ -39,10 +55,33 @@ KernelPlan build_kernel_plan(const KernelRequest& r) {
       }
       return gaussian_sum_plan(GaussianSumProfile(fit_gaussian_sum(*profile, r.rank)), r.taps);
     }
-    case KernelFamily::svd:
-      return svd_plan(profile_matrix_for(*profile, r.taps, r.radius_mm), r.rank, r.rescale_energy);
-    case KernelFamily::preintegrated:
-      return preintegrated_plan(profile_matrix_for(*profile, r.taps, r.radius_mm));
+    case KernelFamily::svd: {
+      KernelPlan plan = svd_plan(profile_matrix_for(*profile, r.taps, r.radius_mm), r.rank, r.rescale_energy);
+      // The footprint tables from the same decomposition on the finest grid: the taps' cells are
+      // what the fixed (jittered) passes read; the footprint-aware passes read the kernel itself.
+      if (r.taps < kTableGridTaps) {
+        const KernelPlan fine = svd_plan(profile_matrix_for(*profile, kTableGridTaps, r.radius_mm), r.rank, r.rescale_energy);
+        use_tables_of(fine, &plan);
+      }
+      return plan;
+    }
+    case KernelFamily::preintegrated: {
+      KernelPlan plan = preintegrated_plan(profile_matrix_for(*profile, r.taps, r.radius_mm));
+      if (r.taps < kTableGridTaps) use_tables_of(preintegrated_plan(profile_matrix_for(*profile, kTableGridTaps, r.radius_mm)), &plan);
+      // A sum of Gaussians has its marginal in closed form: Σ w_i N(0, v_i) along each axis (the
+      // 1D marginal of a 2D Gaussian is the 1D Gaussian of the same variance), normalised by ‖R‖₁.
+      if (const auto* terms = profile->gaussian_terms()) {
+        std::vector<LineGaussian> marginal;
+        const Rgb total = profile->integral();
+        for (const GaussianTerm& g : *terms) {
+          marginal.push_back({g.variance_mm2, {g.weight[0] / total[0], g.weight[1] / total[1], g.weight[2] / total[2]}});
+        }
+        plan.terms[0].horizontal_table = footprint_table_gaussians(marginal);
+        plan.terms[0].vertical_table = plan.terms[0].horizontal_table;
+        plan.reach_mm = plan_reach_mm(plan);
+      }
+      return plan;
+    }
     case KernelFamily::guided:
       return guided_plan(*profile, r.taps, r.radius_mm > 0.0 ? r.radius_mm : guided_radius_mm(*profile), r.guide_k);
     default:

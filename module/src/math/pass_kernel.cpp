@@ -66,6 +66,35 @@ PassTaps make_pass_taps(std::vector<KernelTap> taps, float jitter) {
   return out;
 }
 
+// The mass of a pass per channel: what its weights sum to at any footprint.
+std::array<double, 3> table_mass(const FootprintTable& t) {
+  return {2.0 * t.half_cdf.back()[0] + t.delta[0], 2.0 * t.half_cdf.back()[1] + t.delta[1],
+          2.0 * t.half_cdf.back()[2] + t.delta[2]};
+}
+
+// Moves a term's mass from its horizontal pass into its vertical one (the product, the term, is
+// unchanged): the horizontal pass then writes a weighted average of the input, which at a pixel
+// whose kernel fits inside it is the input itself, exactly representable in the RGBA16F
+// intermediate. Left as it was where the horizontal mass is near 0 (an SVD term that sums to
+// about nothing has no average to keep).
+void normalise_horizontal(PassTerm* term) {
+  const std::array<double, 3> mass = table_mass(term->horizontal.footprint);
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (!(std::fabs(mass[c]) > 1e-3) || mass[c] == 1.0) continue;
+    const auto down = static_cast<float>(1.0 / mass[c]), up = static_cast<float>(mass[c]);
+    FootprintTable& h = term->horizontal.footprint;
+    FootprintTable& v = term->vertical.footprint;
+    h.delta[c] *= down;
+    for (auto& e : h.half_cdf) e[c] *= down;
+    // Exactly 1 in float: a pixel passed through keeps its value bit for bit.
+    h.half_cdf.back()[c] = 0.5f * (1.0f - h.delta[c]);
+    v.delta[c] *= up;
+    for (auto& e : v.half_cdf) e[c] *= up;
+    for (KernelTap& tap : term->horizontal.taps) tap.weight[c] *= down;
+    for (KernelTap& tap : term->vertical.taps) tap.weight[c] *= up;
+  }
+}
+
 }  // namespace
 
 PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
@@ -77,6 +106,7 @@ PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
     t.horizontal.footprint =
         term.horizontal_table.empty() ? footprint_table_from_taps(term.horizontal) : term.horizontal_table;
     t.vertical.footprint = term.vertical_table.empty() ? footprint_table_from_taps(term.vertical) : term.vertical_table;
+    normalise_horizontal(&t);
     t.depth_variance_mm2 = term.depth_variance_mm2;
     k.jittered = k.jittered || !t.horizontal.jitter_mm.empty() || !t.vertical.jitter_mm.empty();
     k.terms.push_back(std::move(t));

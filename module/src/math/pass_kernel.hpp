@@ -43,7 +43,7 @@ struct PassKernel {
 };
 
 // Reorders each pass of `plan` centre first (a zero-weight centre tap is added when the plan has
-// no tap at offset 0) and gives the outermost round(jitter · taps) taps of every pass (ties at equal
+// no tap at offset 0), takes each pass's footprint table from the plan (or from its taps) and gives the outermost round(jitter · taps) taps of every pass (ties at equal
 // |offset| both in or both out) a jitter width: the distance between the midpoints to their
 // neighbours (the outer edge mirrors the inner one). jitter in [0, 1].
 PassKernel make_pass_kernel(const KernelPlan& plan, float jitter);
