@@ -1,8 +1,9 @@
 // One pass of the separable filter as a compute shader (OpenGL 4.3+): the same arithmetic as
 // separable_blur.frag, but a work group first reads its row (or column) segment and an apron on
-// both sides into shared memory, once per texel, and the taps then interpolate there instead of
-// each pixel sampling its neighbours from the textures again. Taps that fall outside the cached
-// span (a kernel wider than the apron, for a close-up at a large width) read the textures, as the
+// both sides into shared memory, once per texel, and the taps then read it there (whole pixels for
+// footprint-aware taps, interpolated for a jittered kernel's fixed ones) instead of each pixel
+// sampling its neighbours from the textures again. Taps that fall outside the cached
+// span (a kernel wider than the apron, for a close-up at a large scale) read the textures, as the
 // fragment shader does, so any footprint gives the same image.
 //
 // Compile-time switches, as in separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the

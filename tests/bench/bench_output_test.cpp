@@ -96,7 +96,7 @@ TEST(BenchQuickOutput, CsvHasEveryColumnAndNoNaN) {
                                             "separable-masked", "separable-masked-region",
                                             "separable-compute", "separable-compute-region",
                                             "separable-auto-region", "kernel-separable-jitter-33",
-                                            "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-3",
+                                            "kernel-sum-of-gaussians-2", "kernel-svd-1", "kernel-svd-2", "kernel-svd-3",
                                             "kernel-preintegrated", "kernel-guided", "kernel-artist", "no-scattering"}));
   EXPECT_EQ(scenes.size(), 13u + 6u);  // the canonical scenes and the footprint sweep's planes
 }
@@ -186,7 +186,7 @@ TEST(BenchQuickOutput, FootprintSweepIsWhole) {
   for (const auto& row : csv.rows) {
     if (row.at("sweep") == "1") ++instances[row.at("method") + "/" + row.at("taps")];
   }
-  EXPECT_GE(instances.size(), 1u + 4u + 1u + 1u + 7u);  // input, 5/9/17/33 taps, sum of Gaussians, cbf, families
+  EXPECT_GE(instances.size(), 1u + 4u + 1u + 1u + 8u);  // input, 5/9/17/33 taps, sum of Gaussians, cbf, families
   for (const auto& [method, n] : instances) EXPECT_EQ(n, 6 * 7) << method;
   for (const auto& [scene, values] : footprints) {
     ASSERT_EQ(values.size(), 7u) << scene;
@@ -230,7 +230,7 @@ TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
   const Csv csv = read_csv(kDir + "/results.csv");
   const std::map<std::string, int> passes = {
       {"kernel-separable-jitter-33", 2}, {"sum-of-gaussians", 12}, {"kernel-sum-of-gaussians-2", 4},
-      {"kernel-svd-1", 2},  {"kernel-svd-3", 6}, {"kernel-preintegrated", 2}, {"kernel-guided", 2},
+      {"kernel-svd-1", 2},  {"kernel-svd-2", 4}, {"kernel-svd-3", 6}, {"kernel-preintegrated", 2}, {"kernel-guided", 2},
       {"kernel-artist", 2}};
   std::map<std::string, double> separable;  // scene -> eq. (1) error at the families' tap count
   int families = 0;
@@ -251,7 +251,7 @@ TEST(BenchQuickOutput, KernelFamiliesRunAsPlannedAndScoreSensibly) {
     EXPECT_LT(rmse, 2.0 * separable[row.at("scene")] + 0.01) << row.at("scene") << " " << row.at("method");
     if (row.at("scene") == "edge-0" && row.at("method") == "kernel-preintegrated") preintegrated_edge = rmse;
   }
-  EXPECT_GE(families, 8 * 10);  // every family (and the 12-pass baseline) on every scene with translucent pixels
+  EXPECT_GE(families, 9 * 10);  // every family (and the 12-pass baseline) on every scene with translucent pixels
   ASSERT_GE(preintegrated_edge, 0.0);
   EXPECT_LT(preintegrated_edge, separable["edge-0"]);
 }

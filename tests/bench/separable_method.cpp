@@ -81,6 +81,7 @@ const std::vector<KernelChoice>& kernel_family_choices() {
       {"kernel-separable-jitter-33", SSS_KERNEL_SEPARABLE, 1, 0.33f},
       {"kernel-sum-of-gaussians-2", SSS_KERNEL_SUM_OF_GAUSSIANS, 2, 0.0f},
       {"kernel-svd-1", SSS_KERNEL_SVD, 1, 0.0f},
+      {"kernel-svd-2", SSS_KERNEL_SVD, 2, 0.0f},
       {"kernel-svd-3", SSS_KERNEL_SVD, 3, 0.0f},
       {"kernel-preintegrated", SSS_KERNEL_PREINTEGRATED, 1, 0.0f},
       {"kernel-guided", SSS_KERNEL_GUIDED, 1, 0.0f},

@@ -114,7 +114,7 @@ typedef struct sss_create_desc {
 /** Two full-screen fragment passes (the paper's; every feature, every API). The default. */
 #define SSS_PATH_FRAGMENT 0u
 /** Two compute dispatches (desktop OpenGL 4.3+): each work group reads its row, then column, segment
- *  of 128 pixels and 64 on either side into shared memory once, and the taps interpolate there
+ *  of 128 pixels and 64 on either side into shared memory once, and the taps read it there
  *  instead of sampling the textures again; taps farther out than the cached span sample the
  *  textures, so any kernel width gives the same image as the fragment path. Writes the target
  *  through image unit 0 (saved and restored with the rest of the state list). A frame the compute
@@ -177,13 +177,14 @@ typedef struct sss_create_desc {
  *
  *  Units (changed in 0.2; see docs/migration.md): the scene scale and the look are apart.
  *  world_units_per_mm says how long one millimetre of the surface is in the host's world units
- *  (0.001 for a scene in metres, 1 for millimetres, 0.1 for centimetres, 0.0254 for inches... per
- *  mm: 1/25.4); `scale` multiplies every scattering distance, 1 being the material at its physical
+ *  (0.001 for a scene in metres, 0.1 for centimetres, 1 for millimetres, 1/25.4 for inches);
+ *  `scale` multiplies every scattering distance, 1 being the material at its physical
  *  size. With the defaults a scene in metres gets d'Eon's skin profile at its measured size. The
  *  per-pixel alpha of the colour texture (0..1) scales the distances further, as in the paper.
  *  The paper's `width` (one kernel millimetre spans (2/3)·width world units) converts with
- *  sss_world_units_per_mm_from_legacy_width; to reproduce a 0.1 image exactly, also select
- *  sss_settings_separable_table1 and set separable_scale to 1. */
+ *  sss_world_units_per_mm_from_legacy_width; for 0.1's eq. (1) kernel size, also select
+ *  sss_settings_separable_table1 and set separable_scale to 1 (the taps differ: see
+ *  docs/migration.md). */
 typedef struct sss_settings {
   uint32_t struct_size; /**< sizeof(sss_settings) */
   float world_units_per_mm; /**< [0, 1e6], finite: world units per millimetre of surface; 0 leaves the image

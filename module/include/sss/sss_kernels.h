@@ -114,7 +114,10 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc *profile, float o
 /** Builds the kernel `desc` describes. Writes *out_terms (1..SSS_KERNEL_MAX_TERMS) terms of
  *  2 passes × desc->taps taps: out_taps[((term · 2 + pass) · taps + tap) · 4 + k], pass 0 horizontal,
  *  1 vertical, k = {weight r, weight g, weight b, offset mm}; taps of a pass in increasing offset
- *  (the eq. (1) kernel keeps its own layout: centre first). SVD weights may be negative.
+ *  (the eq. (1) kernel keeps its own layout: centre first; its offsets are its own kernel
+ *  millimetres, which sss_settings.separable_scale converts to the surface's). These are the fixed
+ *  taps a jittered kernel runs; without jitter the passes read each pass's kernel at every pixel's
+ *  footprint instead (docs/kernels.md). SVD weights may be negative.
  *  out_taps must hold max_terms · 2 · taps · 4 floats. Optional (may be NULL): out_depth_variance_mm2
  *  (max_terms floats: > 0 where a term's taps are depth-corrected by exp(-dz²/2v), supp. §E; else 0)
  *  and out_reach_mm (the largest |offset|). The fitted families (GUIDED, SUM_OF_GAUSSIANS on a

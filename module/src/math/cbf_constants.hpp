@@ -14,7 +14,7 @@ struct CbfConstants {
   std::array<float, 4> xy_terms = {1.0f, 1.0f, 0.0f, 0.0f};  // m0, m5, m8, m9
   std::array<float, 2> xy_offset = {0.0f, 0.0f};              // m12, m13
   std::array<float, 4> viewport = {0.0f, 0.0f, 1.0f, 1.0f};   // x, y, w, h in pixels
-  float world_per_mm = 0.0f;  // (2/3)·width: world units per profile millimetre at alpha 1
+  float world_per_mm = 0.0f;  // world_units_per_mm · scale: world units per profile millimetre at alpha 1
   bool orthographic = false;  // view direction is -Z everywhere (m11 == 0)
 };
 

@@ -7,7 +7,7 @@
 //   out_c(p) = identity_c · in_c(p) + Σ_i  Σ_x Σ_y  h_i,c(x) · v_i,c(y) · in_c(p + (x, y))
 //
 // per colour channel c, with tap offsets in profile millimetres (scaled on screen per pixel by the
-// projected width and the pixel's alpha, exactly as for the eq. (1) kernel).
+// projected scene scale and the pixel's alpha, exactly as for the eq. (1) kernel).
 #pragma once
 
 #include <array>

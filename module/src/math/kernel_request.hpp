@@ -2,9 +2,9 @@
 // the C API (sss_kernels.h) and the settings map onto. Math layer: no GL.
 //
 // Units: offsets of plans built from a profile are millimetres of that profile (physical mm for the
-// skin Gaussians, the dipoles and tables in mm). The eq. (1) kernel's offsets are its own profile
-// millimetres; with width = 1.5 · (world units per mm) (DESIGN.md §4, sss_width_for_world_units_per_mm)
-// the two coincide, so one screen scale serves every family.
+// skin Gaussians, the dipoles and tables in mm). The eq. (1) kernel's taps are its own kernel
+// millimetres divided by separable_scale, so every family's plan is in surface millimetres and one
+// screen scale (world_units_per_mm · scale) serves them all.
 #pragma once
 
 #include <array>
