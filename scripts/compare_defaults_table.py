@@ -30,11 +30,17 @@ def sweep(path):
 
 def demo(path):
     text = open(path).read()
-    m = re.search(r"^\s*(\w+)\s+marked.*?interior \((\d+) px\) miss ([0-9.]+) \(worst channel ([0-9.]+); no SSS: 1\); "
+    m = re.search(r"^\s*(\w+)\s+marked.*?interior \((\d+) px\) miss ([0-9.]+|inf) \(worst channel ([0-9.]+|inf); no SSS: 1\); "
                   r"relative RMSE ([0-9.]+) with SSS, ([0-9.]+) without", text, re.M)
     if not m:
         raise SystemExit(f"{path}: no error line")
     return m.group(1), float(m.group(3)), float(m.group(4)), float(m.group(5)), float(m.group(6))
+
+
+def demo_time(path):
+    """The sss pass's median time (ms) in the demo's README.txt."""
+    m = re.search(r"^\s*\w+\s+shadow.*?sss\s+([0-9.]+)", open(path).read(), re.M)
+    return float(m.group(1)) if m else float("nan")
 
 
 def main():
@@ -55,10 +61,16 @@ def main():
           "## The demo's head (960×540, llvmpipe, EGL)", "",
           "| shot | old interior miss | old worst channel | new interior miss | new worst channel | old rel. RMSE | "
           "new rel. RMSE | no filter rel. RMSE |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    times = []
     for o, n in zip(a.old_demo, a.new_demo):
         so, mo, wo, ro, none = demo(o)
         sn, mn, wn, rn, _ = demo(n)
         md.append(f"| {so} | {mo:.3f} | {wo:.3f} | {mn:.3f} | {wn:.3f} | {ro:.4f} | {rn:.4f} | {none:.4f} |")
+        times.append((so, demo_time(o), demo_time(n)))
+    md += ["", "The filter's pass time in the same run (median of the demo's timed frames, glFinish around each "
+           "pass, milliseconds; the two demos ran one after the other on this machine):", "",
+           "| shot | old sss ms | new sss ms |", "|---|---:|---:|"]
+    md += [f"| {shot} | {old_ms:.2f} | {new_ms:.2f} |" for shot, old_ms, new_ms in times]
     md += ["", "Pictures (old | new): the nose shadow at the close-up, "
            "[after](demo/default-old-new-close.png) and [|error| heat map](demo/default-old-new-close-heat.png); "
            "the far shot, [after](demo/default-old-new-far.png) and [heat map](demo/default-old-new-far-heat.png).",

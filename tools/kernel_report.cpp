@@ -66,11 +66,12 @@ void calibrated_default_section(std::ostringstream& md) {
   md << "\n## The calibrated default (footprint sweep)\n\n"
      << "`sss_fit_default` (tests/bench/fit_default_main.cpp, scripts/fit-default-kernel.sh) fits rank-1 kernels to\n"
         "d'Eon's skin at its physical size, on the benchmark's footprint sweep: the six planes facing the camera\n"
-        "(shadow edges at 0, 20 and 45 degrees, a 0.5 mm spot, a 3 mm disk, per-pixel albedo) at the seven footprints\n"
-     << triple(nlohmann::json{j.at("footprints_mm").at(0), j.at("footprints_mm").at(3), j.at("footprints_mm").at(6)}, "%.3g")
-     << " mm per pixel (and the four between), each filtered by the CPU model of the passes (footprint-aware taps,\n"
-        "17 per pass) and scored by the interior `miss` against the exact plane convolution\n"
-        "(tests/bench/calibration.hpp). The objective: " << j.at("objective_definition").get<std::string>() << ".\n"
+        "(shadow edges at 0, 20 and 45 degrees, a 0.5 mm spot, a 3 mm disk, per-pixel albedo) at "
+     << j.at("footprints_mm").size() << " footprints from " << fmt("%.3g", j.at("footprints_mm").front().get<double>())
+     << " to " << fmt("%.3g", j.at("footprints_mm").back().get<double>())
+     << " mm per pixel,\neach filtered by the CPU model of the passes (footprint-aware taps, 17 per pass) and scored by "
+        "the interior\n`miss` against the exact plane convolution (tests/bench/calibration.hpp). The objective: "
+     << j.at("objective_definition").get<std::string>() << ".\n"
         "NLopt Subplex, bounded (eq. (1): separable_scale in [0.1, 2], strength and falloff in [0, 1]; artist model:\n"
         "variances in [0.001, 2] and [0.01, 20] mm², fitted in log space, weights in [0, 1]), started from Table 1 at\n"
         "the eq. (3) scale and from d'Eon's Gaussians split into a narrow and a broad half.\n\n"
@@ -93,11 +94,12 @@ void calibrated_default_section(std::ostringstream& md) {
      << (defaults.kernel.family == KernelFamily::artist          ? "artist model"
          : defaults.kernel.family == KernelFamily::preintegrated ? "pre-integrated (d'Eon's marginal)"
                                                                  : "calibrated eq. (1)")
-     << " row: its kernel family, and eq. (1)'s strength, falloff and separable_scale, are these values\n"
-        "(module/src/math/default_kernel_fit.hpp, generated with the expectation; bench.default_kernel_fit re-scores\n"
-        "them on every test run and fails if the objective moves). Table 1 is `sss_settings_separable_table1`.\n"
-        "'separable_scale' is kernel millimetres per millimetre of skin: the eq. (3) fits above put it at 0.36-1.66\n"
-        "depending on their grid; this one is measured where it matters, on what the filter outputs.\n";
+     << " row: its kernel family, and eq. (1)'s strength, falloff and\nseparable_scale, are these values "
+        "(module/src/math/default_kernel_fit.hpp, generated with the expectation;\nbench.default_kernel_fit "
+        "re-scores the default on every test run and fails if a score moves). Table 1 is\n"
+        "`sss_settings_separable_table1`. 'separable_scale' is kernel millimetres per millimetre of skin: the eq. (3)\n"
+        "fits at the top of this page move it with their grid; this one is measured where it matters, on what the\n"
+        "filter outputs.\n";
 }
 
 }  // namespace
