@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "calibration.hpp"
 #include "gpu_busy.hpp"
 #include "gpu_scene.hpp"
 #include "host_gl.hpp"
@@ -247,17 +248,6 @@ void set_error_metrics(const ErrorMetrics& e, ResultRow* row) {
   row->ssim = e.ssim;
 }
 
-RegionInput region_input_of(const Scene& scene, double reach_mm) {
-  RegionInput in;
-  in.width = scene.width;
-  in.height = scene.height;
-  in.mask = scene.mask.data();
-  in.distance = scene.distance.data();
-  in.projection = scene.projection;
-  in.world_units_per_mm = scene.world_units_per_mm;
-  in.reach_mm = reach_mm;
-  return in;
-}
 
 int count(const std::vector<uint8_t>& mask) {
   return static_cast<int>(std::count_if(mask.begin(), mask.end(), [](uint8_t m) { return m != 0; }));

@@ -15,6 +15,30 @@
 
 namespace sss_bench {
 
+std::vector<double> exact_plane_rgb(const Scene& scene, const float* irradiance_half) {
+  sss::math::PlaneInput plane;
+  plane.width = scene.width;
+  plane.height = scene.height;
+  plane.irradiance = irradiance_half;
+  plane.pixel_x_mm = sss::math::plane_pixel_mm_x(scene.projection, scene.width, scene.distance[0], scene.world_units_per_mm);
+  plane.pixel_y_mm = sss::math::plane_pixel_mm_y(scene.projection, scene.height, scene.distance[0], scene.world_units_per_mm);
+  std::vector<double> rgb(static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height) * 3);
+  sss::math::convolve_fronto_parallel_plane(plane, sss::math::skin_profile_terms(), rgb.data());
+  return rgb;
+}
+
+RegionInput region_input_of(const Scene& scene, double reach_mm) {
+  RegionInput in;
+  in.width = scene.width;
+  in.height = scene.height;
+  in.mask = scene.mask.data();
+  in.distance = scene.distance.data();
+  in.projection = scene.projection;
+  in.world_units_per_mm = scene.world_units_per_mm;
+  in.reach_mm = reach_mm;
+  return in;
+}
+
 std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& footprints, int interior_px) {
   const double reach_mm = profile_reach_mm(sss::math::skin_profile_terms());
   std::vector<CalibrationCase> cases;
@@ -34,24 +58,9 @@ std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& f
       c.world_units_per_mm = scene.world_units_per_mm;
       c.input = RgbImage::from_rgba(c.input_rgba.data(), c.width, c.height);
       // The exact result, as the benchmark's plane reference computes it.
-      sss::math::PlaneInput plane;
-      plane.width = c.width;
-      plane.height = c.height;
-      plane.irradiance = c.input_rgba.data();
-      plane.pixel_x_mm = sss::math::plane_pixel_mm_x(scene.projection, c.width, scene.distance[0], scene.world_units_per_mm);
-      plane.pixel_y_mm = sss::math::plane_pixel_mm_y(scene.projection, c.height, scene.distance[0], scene.world_units_per_mm);
-      std::vector<double> rgb(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height) * 3);
-      sss::math::convolve_fronto_parallel_plane(plane, sss::math::skin_profile_terms(), rgb.data());
+      const std::vector<double> rgb = exact_plane_rgb(scene, c.input_rgba.data());
       c.reference = RgbImage::from_rgb(rgb.data(), c.width, c.height);
-      RegionInput in;
-      in.width = c.width;
-      in.height = c.height;
-      in.mask = scene.mask.data();
-      in.distance = scene.distance.data();
-      in.projection = scene.projection;
-      in.world_units_per_mm = scene.world_units_per_mm;
-      in.reach_mm = reach_mm;
-      c.interior = region_mask(classify_regions(in), Region::interior);
+      c.interior = region_mask(classify_regions(region_input_of(scene, reach_mm)), Region::interior);
       cases.push_back(std::move(c));
     }
   }

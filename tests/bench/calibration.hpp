@@ -11,6 +11,8 @@
 
 #include "math/filter_constants.hpp"
 #include "metrics.hpp"
+#include "regions.hpp"
+#include "scene.hpp"
 
 namespace sss_bench {
 
@@ -25,6 +27,13 @@ struct CalibrationCase {
   RgbImage input, reference;
   std::vector<uint8_t> interior;    // the instrument's interior region
 };
+
+// The exact result on a sweep plane (scene.footprint_mm > 0) for the irradiance the passes read
+// (irradiance_half: RGBA, the scene's irradiance as RGBA16F holds it): RGB per pixel, double.
+std::vector<double> exact_plane_rgb(const Scene& scene, const float* irradiance_half);
+
+// What the regions of regions.hpp need of a scene, with the profile's reach.
+RegionInput region_input_of(const Scene& scene, double reach_mm);
 
 // The interior the calibration's frames hold at least (the benchmark's default --sweep-interior).
 inline constexpr int kCalibrationInteriorPx = 64;

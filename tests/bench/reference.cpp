@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "math/exact_reference.hpp"
-#include "math/plane_reference.hpp"
+#include "calibration.hpp"
 #include "method.hpp"
 
 namespace sss_bench {
@@ -30,14 +30,7 @@ sss::math::ExactInput exact_input(const Scene& scene, const GpuScene& gpu) {
 Reference make_plane_reference(const Scene& scene, const GpuScene& gpu) {
   if (!(scene.footprint_mm > 0.0)) throw std::invalid_argument("make_plane_reference: " + scene.name + " is not a sweep plane");
   const std::size_t n = static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
-  sss::math::PlaneInput plane;
-  plane.width = scene.width;
-  plane.height = scene.height;
-  plane.irradiance = gpu.irradiance_half.data();
-  plane.pixel_x_mm = sss::math::plane_pixel_mm_x(scene.projection, scene.width, scene.distance[0], scene.world_units_per_mm);
-  plane.pixel_y_mm = sss::math::plane_pixel_mm_y(scene.projection, scene.height, scene.distance[0], scene.world_units_per_mm);
-  std::vector<double> rgb(n * 3);
-  sss::math::convolve_fronto_parallel_plane(plane, sss::math::skin_profile_terms(), rgb.data());
+  const std::vector<double> rgb = exact_plane_rgb(scene, gpu.irradiance_half.data());
   Reference r;
   r.rgba = gpu.irradiance_half;
   for (std::size_t i = 0; i < n; ++i) {
