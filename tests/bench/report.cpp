@@ -182,7 +182,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
   }
   if (info.state_calls > 0) {
     out << "\nMeasured alone (tests/bench/state_cost.cpp: batches of " << info.state_calls
-        << " in-place `sss_apply_frame` calls with width 0, which draw nothing, on a 16×16 frame, glFinish after "
+        << " in-place `sss_apply_frame` calls with world_units_per_mm 0, which draw nothing, on a 16×16 frame, glFinish after "
            "each batch, median of "
         << info.state_batches << "): " << fmt(info.state_with_restore_us, "%.1f") << " µs per call with the restore, "
         << fmt(info.state_without_restore_us, "%.1f") << " µs with `SSS_CREATE_NO_STATE_RESTORE`: the save and restore "
