@@ -17,6 +17,7 @@
 #include "math/cpu_separable_filter.hpp"
 #include "math/exact_reference.hpp"
 #include "math/filter_constants.hpp"
+#include "math/pass_kernel.hpp"
 #include "math/projection.hpp"
 #include "math/separable_kernel.hpp"
 
@@ -36,7 +37,7 @@ sss::math::Matrix4 default_camera() {
 void check_cpu_model(sss_fuzz::Bytes& in, int w, int h, const std::vector<float>& color,
                      const std::vector<float>& depth, const std::vector<uint8_t>& mask, const sss::math::Matrix4& m) {
   sss::math::FilterSettings s;
-  s.width = static_cast<float>(in.take<uint16_t>()) * (in.take<uint8_t>() % 2 ? 1e-4f : 1e-1f);
+  s.world_units_per_mm = static_cast<float>(in.take<uint16_t>()) * (in.take<uint8_t>() % 2 ? 1e-4f : 1e-1f);
   for (float& v : s.strength) v = unit_value(in);
   for (float& v : s.falloff) v = unit_value(in);
   s.samples = 3 + 2 * (in.take<uint8_t>() % 32);
@@ -49,8 +50,9 @@ void check_cpu_model(sss_fuzz::Bytes& in, int w, int h, const std::vector<float>
   g.depth = encoding == 0   ? sss::math::DepthEncoding::hardware_minus_one_to_one
             : encoding == 1 ? sss::math::DepthEncoding::hardware_zero_to_one
                             : sss::math::DepthEncoding::linear_distance;
-  const auto constants = sss::math::compute_pass_constants(s, m, g);
-  const auto kernel = sss::math::separable_kernel(s.samples, s.strength, s.falloff);
+  // The kernel as the library builds it (footprint-aware taps).
+  const auto kernel = sss::math::build_pass_kernel(s);
+  const auto constants = sss::math::compute_pass_constants(s, m, g, kernel.reach_mm);
   sss::math::CpuFilterImage image;
   image.width = w;
   image.height = h;
@@ -59,7 +61,7 @@ void check_cpu_model(sss_fuzz::Bytes& in, int w, int h, const std::vector<float>
   image.mask = mask.data();
   image.output_is_half = in.take<uint8_t>() % 2 == 0;
   std::vector<float> out(color.size());
-  sss::math::cpu_separable_filter(kernel, constants, image, out.data());
+  sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
 
   const std::size_t n = mask.size();
   float lo[3], hi[3], magnitude = 0.0f;

@@ -23,7 +23,9 @@ bool unit(float v) { return v >= 0.0f && v <= 1.0f; }
 
 bool settings_valid(const sss_settings& s) {
   if (s.struct_size != sizeof(sss_settings)) return false;
-  if (!(s.width >= 0.0f && s.width <= 1e6f)) return false;
+  if (!(s.world_units_per_mm >= 0.0f && s.world_units_per_mm <= 1e6f)) return false;
+  if (!(s.scale >= 0.0f && s.scale <= 1e3f)) return false;
+  if (!(s.separable_scale > 0.0f && s.separable_scale <= 100.0f)) return false;
   for (int c = 0; c < 3; ++c) {
     if (!unit(s.strength[c]) || !unit(s.falloff[c])) return false;
   }
@@ -58,7 +60,8 @@ bool settings_valid(const sss_settings& s) {
 // What sss_set_settings must leave alone when it refuses (FilterSettings holds vectors: no memcmp).
 bool same_settings(const sss::math::FilterSettings& a, const sss::math::FilterSettings& b) {
   auto bits = [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; };
-  return bits(a.width, b.width) && a.strength == b.strength && a.falloff == b.falloff && a.samples == b.samples &&
+  return bits(a.world_units_per_mm, b.world_units_per_mm) && bits(a.scale, b.scale) &&
+         bits(a.separable_scale, b.separable_scale) && a.strength == b.strength && a.falloff == b.falloff && a.samples == b.samples &&
          a.follow_surface == b.follow_surface && a.cross_bilateral == b.cross_bilateral && a.cbf_taps == b.cbf_taps &&
          bits(a.cbf_r_max_mm, b.cbf_r_max_mm) && a.cbf_profile == b.cbf_profile && a.path == b.path &&
          sss::math::same_pass_kernel_inputs(a, b);
@@ -106,10 +109,13 @@ void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
   sss_settings now;
   now.struct_size = sizeof now;
   SSS_FUZZ_CHECK(sss_get_settings(ctx, &now) == SSS_OK);
-  SSS_FUZZ_CHECK(std::memcmp(&now.width, &s.width, sizeof(float)) == 0);
+  SSS_FUZZ_CHECK(std::memcmp(&now.world_units_per_mm, &s.world_units_per_mm, sizeof(float)) == 0);
+  SSS_FUZZ_CHECK(std::memcmp(&now.scale, &s.scale, sizeof(float)) == 0);
+  SSS_FUZZ_CHECK(std::memcmp(&now.separable_scale, &s.separable_scale, sizeof(float)) == 0);
   SSS_FUZZ_CHECK(std::memcmp(now.strength, s.strength, sizeof s.strength) == 0);
   SSS_FUZZ_CHECK(std::memcmp(now.falloff, s.falloff, sizeof s.falloff) == 0);
-  SSS_FUZZ_CHECK(now.samples == s.samples && now.flags == s.flags);
+  // SSS_ADAPTIVE_TAPS is accepted and ignored: not reported back.
+  SSS_FUZZ_CHECK(now.samples == s.samples && now.flags == (s.flags & ~SSS_ADAPTIVE_TAPS));
   SSS_FUZZ_CHECK(now.mode == s.mode && now.cbf_taps == s.cbf_taps && now.cbf_profile == s.cbf_profile);
   SSS_FUZZ_CHECK(std::memcmp(&now.cbf_r_max_mm, &s.cbf_r_max_mm, sizeof(float)) == 0);
   if (s.mode == SSS_MODE_CROSS_BILATERAL) {

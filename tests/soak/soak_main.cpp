@@ -4,7 +4,7 @@
 //   sss_soak [--backend osmesa|egl] [--frames N] [--max-size S] [--resize-every K]
 //            [--recreate-every M] [--seed X] [--json FILE]
 //
-// Every frame: new random settings (width, strength, falloff, taps, follow-surface), and an apply
+// Every frame: new random settings (scale, strength, falloff, taps, follow-surface), and an apply
 // (in place, into a separate output, through the stencil, or in a sub-viewport, in turn). Every K
 // frames: the host's textures are recreated at a random size up to S x S (RGBA16F or RGBA32F
 // colour; DEPTH24_STENCIL8, DEPTH_COMPONENT32F or R32F depth) and the camera changes. Every M

@@ -106,7 +106,8 @@ typedef struct sss_create_desc {
 /** Accepted for source compatibility and ignored since 0.2: every kernel without jitter now runs
  *  footprint-aware taps (see sss_settings.samples), which choose each pixel's taps from its footprint,
  *  pass a pixel whose kernel fits inside it through and never read more taps than its footprint
- *  needs; what this flag used to switch on is the default behaviour. */
+ *  needs; what this flag used to switch on is the default behaviour. sss_get_settings does not
+ *  report it back. */
 #define SSS_ADAPTIVE_TAPS 0x2u
 #define SSS_SETTINGS_ALL_FLAGS 0x3u
 
