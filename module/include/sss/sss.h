@@ -200,7 +200,7 @@ typedef struct sss_settings {
                               with its own derived scale: sss_settings_separable_table1 */
   int32_t samples;      /**< odd, [3, 65]; the most taps per pass (each pixel reads as many as its footprint
                              needs, up to this: every pixel out to the kernel's reach where it spans fewer
-                             pixels, else spread quadratically denser at the centre). Default 17 */
+                             pixels, else spread cubically denser at the centre). Default 17 */
   uint32_t flags;       /**< SSS_FOLLOW_SURFACE (default on); SSS_ADAPTIVE_TAPS is accepted and ignored */
   /* Appended in 0.1 for the cross-bilateral mode. */
   uint32_t mode;        /**< SSS_MODE_SEPARABLE (default) or SSS_MODE_CROSS_BILATERAL */
