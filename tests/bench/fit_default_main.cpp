@@ -22,6 +22,7 @@
 #include <string>
 
 #include "calibration.hpp"
+#include "math/separable_kernel.hpp"
 #include "math/skin_profile.hpp"
 #include "sweep_geometry.hpp"
 
@@ -37,8 +38,8 @@ sss::math::FilterSettings settings_from(const std::vector<double>& x, Model mode
   switch (model) {
     case Model::table1:
       s.separable_scale = static_cast<float>(x[0]);
-      s.strength = {0.78f, 0.70f, 0.75f};
-      s.falloff = {0.57f, 0.13f, 0.08f};
+      s.strength = sss::math::kTable1Strength;
+      s.falloff = sss::math::kTable1Falloff;
       break;
     case Model::separable:
       s.separable_scale = static_cast<float>(x[0]);
@@ -90,7 +91,9 @@ void start_of(Model model, std::vector<double>* x, std::vector<double>* lower, s
       *upper = {2.0};
       return;
     case Model::separable:
-      *x = {0.36, 0.78, 0.70, 0.75, 0.57, 0.13, 0.08};  // Table 1 at that scale
+      *x = {0.36};  // Table 1 at that scale
+      for (float v : sss::math::kTable1Strength) x->push_back(v);
+      for (float v : sss::math::kTable1Falloff) x->push_back(v);
       *lower = {0.1, 0, 0, 0, 0, 0, 0};
       *upper = {2.0, 1, 1, 1, 1, 1, 1};
       return;

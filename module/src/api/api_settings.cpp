@@ -109,10 +109,9 @@ SSS_API float sss_world_units_per_mm_from_legacy_width(float width) { return wid
 
 SSS_API void sss_settings_separable_table1(sss_settings* s) {
   if (s == nullptr) return;
-  const float strength[3] = {0.78f, 0.70f, 0.75f}, falloff[3] = {0.57f, 0.13f, 0.08f};
-  for (int c = 0; c < 3; ++c) {
-    s->strength[c] = strength[c];
-    s->falloff[c] = falloff[c];
+  for (std::size_t c = 0; c < 3; ++c) {
+    s->strength[c] = sss::math::kTable1Strength[c];
+    s->falloff[c] = sss::math::kTable1Falloff[c];
   }
   s->separable_scale = sss::math::kTable1SeparableScale;
 }

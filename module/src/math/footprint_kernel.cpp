@@ -57,9 +57,7 @@ FootprintTable footprint_table_from_taps(const std::vector<KernelTap>& taps) {
   const bool has_centre = side.front().offset_mm == 0.0f;
   if (side.size() == 1 && has_centre) {
     for (std::size_t c = 0; c < 3; ++c) delta[c] = side.front().weight[c];
-    FootprintTable t = tabulate_footprint_table([](double) { return Rgb3{}; }, total, delta, 0.0);
-    t.reach_mm = 0.0f;
-    return t;
+    return tabulate_footprint_table([](double) { return Rgb3{}; }, total, delta, 0.0);  // reach 0: a delta
   }
   // Knots of the piecewise-linear half-CDF: the cell edges and the mass up to each.
   std::vector<double> knot_mm = {0.0};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "kernel_families.hpp"
+#include "separable_kernel.hpp"
 #include "radial_profile.hpp"
 
 namespace sss::math {
@@ -41,8 +42,8 @@ struct KernelRequest {
   double guide_k = 1.55;         // guided rank-1: the guide's exponent, [0, 4]
   double radius_mm = 0.0;        // SVD, pre-integrated, guided: grid half-width; 0 = the family's default
                                  // (the profile's extent; guided: guided_radius_mm)
-  std::array<float, 3> strength = {0.78f, 0.70f, 0.75f};  // separable (paper Table 1)
-  std::array<float, 3> falloff = {0.57f, 0.13f, 0.08f};
+  std::array<float, 3> strength = kTable1Strength;  // separable
+  std::array<float, 3> falloff = kTable1Falloff;
   double separable_scale = 1.0;  // separable: kernel millimetres per millimetre of surface
   ArtistModel artist{{0.0484, 0.0484, 0.0484}, {1.99, 0.567, 0.567}, {0.5, 0.8, 0.9}};
   ProfileRequest profile;

@@ -6,6 +6,11 @@
 
 namespace sss::math {
 
+// The paper's Table 1: eq. (1)'s strength and falloff as its authors fitted them (in their head
+// model's units; sss_settings_separable_table1 pairs them with their own fitted separable_scale).
+inline constexpr std::array<float, 3> kTable1Strength = {0.78f, 0.70f, 0.75f};
+inline constexpr std::array<float, 3> kTable1Falloff = {0.57f, 0.13f, 0.08f};
+
 struct KernelTap {
   std::array<float, 3> weight;  // r, g, b
   float offset_mm;              // position along the pass direction, profile millimetres
