@@ -6,12 +6,11 @@
 # Variants: each dialect the library negotiates at create time (module/shaders/version_*.glsl:
 # GLSL 330 core, GLSL 420 core, GLSL ES 300; glslangValidator takes the profile from #version) ×
 # SSS_OUTSIDE 0..2 × SSS_FOLLOW_SURFACE 0..2 × SSS_LINEAR_DEPTH 0/1 × SSS_JITTER 0/1 × SSS_ACCUMULATE 0/1
-# for the blur with fixed taps (SSS_FOOTPRINT 0), and SSS_FOOTPRINT 1 with SSS_OUTSIDE ×
-# SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH × SSS_ACCUMULATE (never with jitter),
-# SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur; SSS_LUT_KIND 0/1 for
-# the LUT generator and the host include of pre-integrated skin shading; and, for the desktop
-# dialects only, the MSAA resolve (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders; and the
-# compute path's blur in GLSL 430 (every variant).
+# for the blur, SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS for the cross-bilateral blur (both with
+# module/shaders/nearest_half.glsl before them, as the module puts it); SSS_LUT_KIND 0/1 for the LUT generator and the host include of
+# pre-integrated skin shading; and, for the desktop dialects only, the MSAA resolve
+# (SSS_LINEAR_DEPTH 0/1), mask and write-back shaders; and the compute path's blur in GLSL 430
+# (every variant).
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(failures 0)
 set(count 0)
@@ -32,6 +31,7 @@ endfunction()
 file(READ "${SHADER_DIR}/fullscreen.vert" vertex)
 file(READ "${SHADER_DIR}/copy.frag" copy)
 file(READ "${SHADER_DIR}/separable_blur.frag" blur)
+file(READ "${SHADER_DIR}/nearest_half.glsl" nearest_half)
 file(READ "${SHADER_DIR}/cbf_blur.frag" cbf)
 file(READ "${SHADER_DIR}/msaa_resolve.frag" msaa_resolve)
 file(READ "${SHADER_DIR}/msaa_mask.frag" msaa_mask)
@@ -49,25 +49,15 @@ foreach(dialect 330 420 es300)
     validate(${dialect}_msaa_mask frag "${header}${msaa_mask}")
     validate(${dialect}_msaa_write frag "${header}${msaa_write}")
   endif()
+  # The blur: SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH × SSS_JITTER × SSS_ACCUMULATE.
   foreach(outside 0 1 2)
     foreach(follow 0 1 2)
       foreach(linear 0 1)
         foreach(jitter 0 1)
           foreach(accumulate 0 1)
-            set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_ACCUMULATE ${accumulate}\n#define SSS_MAX_TAPS 65\n#define SSS_FOOTPRINT 0\n#define SSS_CDF_ENTRIES 128\n#define SSS_MAX_HALF_TAPS 32\n")
-            validate("${dialect}_blur_o${outside}_f${follow}_l${linear}_j${jitter}_a${accumulate}" frag "${header}${defines}${blur}")
+            set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_ACCUMULATE ${accumulate}\n#define SSS_CDF_ENTRIES 128\n#define SSS_MAX_HALF_TAPS 32\n")
+            validate("${dialect}_blur_o${outside}_f${follow}_l${linear}_j${jitter}_a${accumulate}" frag "${header}${defines}${nearest_half}${blur}")
           endforeach()
-        endforeach()
-      endforeach()
-    endforeach()
-  endforeach()
-  # Footprint-aware taps (SSS_FOOTPRINT 1): every kernel without jitter, one term or several.
-  foreach(outside 0 1 2)
-    foreach(follow 0 1 2)
-      foreach(linear 0 1)
-        foreach(accumulate 0 1)
-          set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER 0\n#define SSS_ACCUMULATE ${accumulate}\n#define SSS_MAX_TAPS 65\n#define SSS_FOOTPRINT 1\n#define SSS_CDF_ENTRIES 128\n#define SSS_MAX_HALF_TAPS 32\n")
-          validate("${dialect}_blur_footprint_o${outside}_f${follow}_l${linear}_a${accumulate}" frag "${header}${defines}${blur}")
         endforeach()
       endforeach()
     endforeach()
@@ -77,7 +67,7 @@ foreach(dialect 330 420 es300)
     foreach(linear 0 1)
       foreach(normals 0 1)
         set(defines "#define SSS_OUTSIDE ${outside}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_NORMALS ${normals}\n#define SSS_MAX_TAPS 65\n")
-        validate("${dialect}_cbf_o${outside}_l${linear}_n${normals}" frag "${header}${defines}${cbf}")
+        validate("${dialect}_cbf_o${outside}_l${linear}_n${normals}" frag "${header}${defines}${nearest_half}${cbf}")
       endforeach()
     endforeach()
   endforeach()
@@ -93,21 +83,15 @@ foreach(dialect 330 420 es300)
   endif()
 endforeach()
 # The compute path's blur (desktop GLSL 430 only: the module builds it on OpenGL 4.3+), every
-# variant: SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH × SSS_JITTER × SSS_FOOTPRINT × image format
-# (footprint-aware taps never with jitter).
+# variant: SSS_OUTSIDE × SSS_FOLLOW_SURFACE × SSS_LINEAR_DEPTH × SSS_JITTER × image format.
 file(READ "${SHADER_DIR}/separable_blur.comp" blur_compute)
 foreach(outside 0 1 2)
   foreach(follow 0 1 2)
     foreach(linear 0 1)
       foreach(jitter 0 1)
-        foreach(footprint 0 1)
-          if(jitter AND footprint)
-            continue()
-          endif()
-          foreach(format rgba16f rgba32f)
-            set(defines "#version 430 core\n#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_MAX_TAPS 65\n#define SSS_FOOTPRINT ${footprint}\n#define SSS_CDF_ENTRIES 128\n#define SSS_MAX_HALF_TAPS 32\n#define SSS_SEGMENT 128\n#define SSS_APRON 64\n#define SSS_IMAGE_FORMAT ${format}\n")
-            validate("430_blur_compute_o${outside}_f${follow}_l${linear}_j${jitter}_p${footprint}_${format}" comp "${defines}${blur_compute}")
-          endforeach()
+        foreach(format rgba16f rgba32f)
+          set(defines "#version 430 core\n#define SSS_OUTSIDE ${outside}\n#define SSS_FOLLOW_SURFACE ${follow}\n#define SSS_LINEAR_DEPTH ${linear}\n#define SSS_JITTER ${jitter}\n#define SSS_ACCUMULATE 0\n#define SSS_CDF_ENTRIES 128\n#define SSS_MAX_HALF_TAPS 32\n#define SSS_SEGMENT 128\n#define SSS_APRON 64\n#define SSS_IMAGE_FORMAT ${format}\n")
+          validate("430_blur_compute_o${outside}_f${follow}_l${linear}_j${jitter}_${format}" comp "${defines}${nearest_half}${blur_compute}")
         endforeach()
       endforeach()
     endforeach()

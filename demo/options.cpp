@@ -99,7 +99,7 @@ void print_usage(const char *program) {
       "  --preset NAME       close | mid | far | all (headless default: all; window: the first view)\n"
       "  --no-sss            start with the library off (S toggles it in the window)\n"
       "  --samples N         the most SSS taps per pass, odd, 3..65 (default: the library's, 17); each pixel\n"
-      "                      reads as many as its footprint needs (all of them with --jitter)\n"
+      "                      reads as many as its footprint needs\n"
       "  --scale F           multiply every scattering distance, [0, 1000] (default 1: the physical size; the\n"
       "                      scenes are in metres); --width-scale F, the old name, is still accepted\n"
       "  --no-follow-surface turn the follow-surface depth test off\n"

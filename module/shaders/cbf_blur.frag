@@ -7,7 +7,8 @@
 //
 // Compile-time switches (prepended by the module): SSS_OUTSIDE and SSS_LINEAR_DEPTH as in
 // separable_blur.frag; SSS_NORMALS 1: the surface's orientation comes from the host's view-space
-// normal texture instead of the depth of the neighbouring pixels.
+// normal texture instead of the depth of the neighbouring pixels. Before this file the module puts
+// nearest_half.glsl (u_round_to_half: the written colour rounded to half float here).
 
 SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
 SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
@@ -58,7 +59,7 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 #elif SSS_OUTSIDE == 1
   discard;
 #else
-  o_color = texelFetch(u_original, pixel, 0);
+  o_color = sss_nearest_half(texelFetch(u_original, pixel, 0));
 #endif
 }
 
@@ -126,8 +127,8 @@ void main() {
   }
   vec3 result = u_spike_blend.rgb * centre.rgb + (1.0 - u_spike_blend.rgb) * (sum / weight_sum);
 #if SSS_OUTSIDE == 2
-  o_color = vec4(result, texelFetch(u_original, pixel, 0).a);
+  o_color = sss_nearest_half(vec4(result, texelFetch(u_original, pixel, 0).a));
 #else
-  o_color = vec4(result, centre.a);
+  o_color = sss_nearest_half(vec4(result, centre.a));
 #endif
 }

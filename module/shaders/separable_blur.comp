@@ -1,18 +1,18 @@
 // One pass of the separable filter as a compute shader (OpenGL 4.3+): the same arithmetic as
 // separable_blur.frag, but a work group first reads its row (or column) segment and an apron on
-// both sides into shared memory, once per texel, and the taps then read it there (whole pixels for
-// footprint-aware taps, interpolated for a jittered kernel's fixed ones) instead of each pixel
-// sampling its neighbours from the textures again. Taps that fall outside the cached
+// both sides into shared memory, once per texel, and the taps (whole pixels) then read it there
+// instead of each pixel fetching its neighbours from the textures again. Taps that fall outside the cached
 // span (a kernel wider than the apron, for a close-up at a large scale) read the textures, as the
 // fragment shader does, so any footprint gives the same image.
 //
 // Compile-time switches, as in separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the
 // pixel as it is, 2 copy u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH,
-// SSS_FOOTPRINT, SSS_MAX_TAPS, SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS; and
+// SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS; and
 //   SSS_SEGMENT        pixels one work group writes along the pass's axis (its local size)
 //   SSS_APRON          pixels cached on each side of the segment
 //   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f or rgba32f)
-// The target is written with imageStore. Writing back into the host's colour (SSS_OUTSIDE 1), the
+// nearest_half.glsl comes first (u_round_to_half: set for an rgba16f image). The target is written
+// with imageStore. Writing back into the host's colour (SSS_OUTSIDE 1), the
 // pixel's alpha is read from the target itself, so the host's exact alpha stays (the fragment
 // path masks alpha off instead); every other pass reads only textures it does not write.
 
@@ -29,17 +29,12 @@ layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
 #endif
 
-#if SSS_FOOTPRINT
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];
 uniform vec4 u_footprint;
 uniform float u_spacing[SSS_MAX_HALF_TAPS];
 uniform int u_half_taps;
-#else
-uniform vec4 u_kernel[SSS_MAX_TAPS];
-uniform int u_tap_count;
-#endif
 #if SSS_JITTER
-uniform float u_jitter[SSS_MAX_TAPS];
+uniform int u_jitter_from;
 #endif
 #if SSS_FOLLOW_SURFACE == 2
 uniform float u_inv_two_variance;
@@ -53,7 +48,7 @@ uniform vec4 u_depth_terms;
 uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
 
 const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
-// rgb: colour; a: raw depth, as the fragment shader's bilinear depth taps read it. One vec4 per
+// rgb: colour; a: raw depth (the pixel's own, as the fragment shader fetches it). One vec4 per
 // texel: a tap's two texels are two 128-bit shared loads (a vec3 and a float apart were four).
 shared vec4 s_texel[kCached];
 
@@ -79,7 +74,6 @@ float jitter_noise(ivec2 pixel, int axis) {
 }
 #endif
 
-#if SSS_FOOTPRINT
 // As in separable_blur.frag (and sss::math::footprint_half_cdf, footprint_taps).
 vec3 half_cdf(float x_mm) {
   float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
@@ -91,13 +85,20 @@ vec3 half_cdf(float x_mm) {
 float tap_position(int i, float previous, bool dense, float reach_pixels) {
   return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
 }
+
+#if SSS_JITTER
+float jittered_position(float inner, float p, float outer, bool outermost, float noise) {
+  float lo = floor(0.5 * (inner + p)) + 1.0;
+  float hi = outermost ? p + (p - lo) : floor(0.5 * (p + outer));
+  return lo + min(floor(noise * (hi - lo + 1.0)), hi - lo);
+}
 #endif
 
 void write_untouched(ivec2 pixel, vec4 centre) {
 #if SSS_OUTSIDE == 0
   imageStore(u_target, pixel, centre);
 #elif SSS_OUTSIDE == 2
-  imageStore(u_target, pixel, texelFetch(u_original, pixel, 0));
+  imageStore(u_target, pixel, sss_nearest_half(texelFetch(u_original, pixel, 0)));
 #endif
 }
 
@@ -135,19 +136,18 @@ void main() {
     write_untouched(pixel, centre);
     return;
   }
-  vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;
-#if SSS_JITTER
-  float shift = jitter_noise(pixel, axis_index) - 0.5;
-#endif
   const float centre_coord = float(along) + 0.5;
   const float clamp_min = u_clamp[axis_index], clamp_max = u_clamp[2 + axis_index];
-  const vec2 centre_position = vec2(pixel) + 0.5;
-#if SSS_FOOTPRINT
   float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(u_half_taps) + 0.5;
   int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+#if SSS_JITTER
+  int jitter_from = dense ? count + 1 : u_jitter_from;
+  float noise = jitter_noise(pixel, axis_index);
+  float inner = 0.0;
+#endif
   vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
   float p = count > 0 ? tap_position(1, 0.0, dense, reach_pixels) : 0.0;
   vec3 below = count > 0 ? half_cdf(0.5 * p / step_pixels) : total;
@@ -155,10 +155,15 @@ void main() {
   for (int i = 1; i <= count; ++i) {
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
     vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    float read = p;
+#if SSS_JITTER
+    if (i >= jitter_from) read = jittered_position(inner, p, next, i == count, noise);
+    inner = p;
+#endif
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
       // Whole pixels: the cached texel, or the textures' where the tap is past the apron.
-      float position = clamp(centre_coord + (side == 0 ? p : -p), clamp_min, clamp_max);
+      float position = clamp(centre_coord + (side == 0 ? read : -read), clamp_min, clamp_max);
       int along_tap = int(position);
       int index = along_tap - cache_start;
       vec3 tap;
@@ -188,51 +193,11 @@ void main() {
     below = upto;
     p = next;
   }
-#else
-  vec3 sum = centre.rgb * u_kernel[0].rgb;
-  for (int i = 1; i < u_tap_count; ++i) {
-#if SSS_JITTER
-    float offset = u_kernel[i].a + shift * u_jitter[i];
-#else
-    float offset = u_kernel[i].a;
-#endif
-    float position = clamp(centre_coord + offset * step_pixels, clamp_min, clamp_max);
-    // Linear interpolation between the two texels around the position, as GL_LINEAR does along
-    // the axis (across it the position is a texel centre).
-    float texel_coord = position - 0.5;
-    float lower = floor(texel_coord);
-    float f = texel_coord - lower;
-    int index = int(lower) - cache_start;
-    vec3 tap;
-    float tap_depth;
-    if (index >= 0 && index + 1 < kCached) {
-      vec4 texel = mix(s_texel[index], s_texel[index + 1], f);
-      tap = texel.rgb;
-      tap_depth = texel.a;
-    } else {
-      vec2 uv = (vec2(u_axis) * position + vec2(cross_axis) * centre_position) * texel_size;
-      tap = texture(u_source, uv).rgb;
-      tap_depth = texture(u_depth, uv).r;
-    }
-    if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
-#if SSS_FOLLOW_SURFACE
-    float d = follow_surface * abs(centre_distance - view_distance(tap_depth));
-#if SSS_FOLLOW_SURFACE == 2
-    float s = 1.0 - exp(-d * d * u_inv_two_variance);
-#else
-    float s = d;
-#endif
-    if (isnan(s) || !(s < 1.0)) s = 1.0;
-    tap = mix(tap, centre.rgb, s);
-#endif
-    sum += u_kernel[i].rgb * tap;
-  }
-#endif
 #if SSS_OUTSIDE == 2
-  imageStore(u_target, pixel, vec4(sum, texelFetch(u_original, pixel, 0).a));
+  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a)));
 #elif SSS_OUTSIDE == 1
-  imageStore(u_target, pixel, vec4(sum, imageLoad(u_target, pixel).a));
+  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, imageLoad(u_target, pixel).a)));
 #else
-  imageStore(u_target, pixel, vec4(sum, centre.a));
+  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, centre.a)));
 #endif
 }

@@ -12,22 +12,22 @@
 //   SSS_FOLLOW_SURFACE  0 off; 1 the linear ramp to the kernel's reach; 2 the exact depth correction
 //                       of a Gaussian term (supplementary §E): blend by 1 - exp(-dz² / 2v), dz in
 //                       profile millimetres
-//   SSS_JITTER          1: taps with a jitter width move by (noise - 1/2) · width, noise a per-pixel
-//                       integer hash (supplementary Fig. S.6-S.7); 0: fixed taps
+//   SSS_JITTER          1: where the taps are spread out, those from u_jitter_from on read a pixel
+//                       of their cell chosen by per-pixel integer-hash noise (supplementary Fig.
+//                       S.6-S.7); their weights stay the cells'
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
-//   SSS_FOOTPRINT       1: footprint-aware taps (every kernel without jitter): the taps sit on whole
-//                       pixels chosen from this pixel's footprint and each weighs the pass's kernel
-//                       integrated over the pixels it stands for, from its cumulative table u_cdf.
-//                       Must compute exactly what sss::math::footprint_taps does
-//                       (module/src/math/footprint_kernel.cpp). 0: the fixed tap list u_kernel,
-//                       offsets scaled per pixel and read bilinearly (jittered kernels)
+//   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
 // and from the dialect's header (module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
-//   SSS_MANUAL_DEPTH_FILTER  1 on OpenGL ES: depth textures cannot be filtered there (and R32F only
-//                            with an extension), so the depth taps are filtered here from four
-//                            texel fetches, the way GL_LINEAR with clamp-to-edge would
+// and nearest_half.glsl (sss_nearest_half: the written colour rounded to half float where the target
+// is one, u_round_to_half).
+//
+// Every pass runs footprint-aware taps: they sit on whole pixels chosen from this pixel's footprint
+// (no bilinear read blends a neighbour into a tap) and each weighs the pass's kernel integrated over
+// the pixels it stands for, from its cumulative table u_cdf. This must compute exactly what
+// sss::math::footprint_taps does (module/src/math/footprint_kernel.cpp).
 
 SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour, then the intermediate)
 SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
@@ -37,17 +37,12 @@ SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attach
 #if SSS_ACCUMULATE
 SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
 #endif
-#if SSS_FOOTPRINT
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
 uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
 uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
 uniform int u_half_taps;                      // the most taps on either side
-#else
-uniform vec4 u_kernel[SSS_MAX_TAPS];  // rgb weights, a = offset in profile mm; centre first
-uniform int u_tap_count;
-#endif
 #if SSS_JITTER
-uniform float u_jitter[SSS_MAX_TAPS];  // per tap: its cell width in profile mm when jittered, else 0
+uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
 #endif
 #if SSS_FOLLOW_SURFACE == 2
 uniform float u_inv_two_variance;      // 1 / (2v) of the term's depth Gaussian, v in mm²
@@ -70,23 +65,6 @@ float view_distance(float raw_depth) {
 #endif
 }
 
-// The raw depth at `position` (pixels), bilinear with clamp-to-edge.
-float depth_at(vec2 position, vec2 texel_size) {
-#if SSS_MANUAL_DEPTH_FILTER
-  vec2 p = position - 0.5;
-  vec2 base = floor(p);
-  vec2 f = p - base;
-  ivec2 last = textureSize(u_depth, 0) - 1;
-  ivec2 i0 = clamp(ivec2(base), ivec2(0), last);
-  ivec2 i1 = clamp(ivec2(base) + 1, ivec2(0), last);
-  float bottom = texelFetch(u_depth, i0, 0).r * (1.0 - f.x) + texelFetch(u_depth, ivec2(i1.x, i0.y), 0).r * f.x;
-  float top = texelFetch(u_depth, ivec2(i0.x, i1.y), 0).r * (1.0 - f.x) + texelFetch(u_depth, i1, 0).r * f.x;
-  return bottom * (1.0 - f.y) + top * f.y;
-#else
-  return texture(u_depth, position * texel_size).r;
-#endif
-}
-
 #if SSS_JITTER
 // The jitter noise in [0, 1): must equal sss::math::jitter_noise (module/src/math/pass_kernel.cpp)
 // bit for bit, which 32-bit uint arithmetic guarantees.
@@ -101,7 +79,6 @@ float jitter_noise(ivec2 pixel, int axis) {
 }
 #endif
 
-#if SSS_FOOTPRINT
 // The pass's kernel integrated from 0 to x_mm, as sss::math::footprint_half_cdf.
 vec3 half_cdf(float x_mm) {
   float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
@@ -114,6 +91,15 @@ vec3 half_cdf(float x_mm) {
 float tap_position(int i, float previous, bool dense, float reach_pixels) {
   return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
 }
+
+#if SSS_JITTER
+// The pixel a jittered tap reads in its cell (tap at p, inner neighbour at `inner`, outer one at
+// `outer`; the outermost tap's cell is its inner half mirrored), as sss::math::footprint_taps.
+float jittered_position(float inner, float p, float outer, bool outermost, float noise) {
+  float lo = floor(0.5 * (inner + p)) + 1.0;
+  float hi = outermost ? p + (p - lo) : floor(0.5 * (p + outer));
+  return lo + min(floor(noise * (hi - lo + 1.0)), hi - lo);
+}
 #endif
 
 void leave_untouched(ivec2 pixel, vec4 centre) {
@@ -122,7 +108,7 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 #elif SSS_OUTSIDE == 1
   discard;
 #else
-  o_color = texelFetch(u_original, pixel, 0);
+  o_color = sss_nearest_half(texelFetch(u_original, pixel, 0));
 #endif
 }
 
@@ -144,19 +130,19 @@ void main() {
     return;
   }
 
-  vec2 texel_size = 1.0 / vec2(textureSize(u_source, 0));
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
-#if SSS_JITTER
-  float shift = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0) - 0.5;
-#endif
-#if SSS_FOOTPRINT
   // Taps on whole pixels: every pixel out to the reach where the kernel spans at most u_half_taps
   // on a side, else u_half_taps spread denser at the centre (never two on one pixel). A tap's weight is the
   // kernel over the pixels between the midpoints to its neighbours; the last one takes the tail.
   float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(u_half_taps) + 0.5;
   int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+#if SSS_JITTER
+  int jitter_from = dense ? count + 1 : u_jitter_from;
+  float noise = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0);
+  float inner = 0.0;
+#endif
   vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
   float p = count > 0 ? tap_position(1, 0.0, dense, reach_pixels) : 0.0;
   vec3 below = count > 0 ? half_cdf(0.5 * p / step_pixels) : total;
@@ -164,11 +150,18 @@ void main() {
   for (int i = 1; i <= count; ++i) {
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
     vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    float read = p;
+#if SSS_JITTER
+    if (i >= jitter_from) read = jittered_position(inner, p, next, i == count, noise);
+    inner = p;
+#endif
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
-      vec2 position = clamp(gl_FragCoord.xy + u_axis * (side == 0 ? p : -p), u_clamp.xy, u_clamp.zw);
+      vec2 position = clamp(gl_FragCoord.xy + u_axis * (side == 0 ? read : -read), u_clamp.xy, u_clamp.zw);
       ivec2 texel = ivec2(position);
       vec3 tap = texelFetch(u_source, texel, 0).rgb;
+      // A non-finite neighbour must not spread: it counts as the centre's colour (its weight goes
+      // to the centre), like a tap across a depth step.
       if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
 #if SSS_FOLLOW_SURFACE
       float d = follow_surface * abs(centre_distance - view_distance(texelFetch(u_depth, texel, 0).r));
@@ -177,7 +170,7 @@ void main() {
 #else
       float s = d;
 #endif
-      if (isnan(s) || !(s < 1.0)) s = 1.0;
+      if (isnan(s) || !(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
       tap = mix(tap, centre.rgb, s);
 #endif
       pair += tap;
@@ -186,39 +179,12 @@ void main() {
     below = upto;
     p = next;
   }
-#else
-  vec3 sum = centre.rgb * u_kernel[0].rgb;
-  for (int i = 1; i < u_tap_count; ++i) {
-#if SSS_JITTER
-    float offset = u_kernel[i].a + shift * u_jitter[i];
-#else
-    float offset = u_kernel[i].a;
-#endif
-    vec2 position = clamp(gl_FragCoord.xy + u_axis * (offset * step_pixels), u_clamp.xy, u_clamp.zw);
-    vec2 uv = position * texel_size;
-    vec3 tap = texture(u_source, uv).rgb;
-    // A non-finite neighbour must not spread: it counts as the centre's colour (its weight goes to
-    // the centre), like a tap across a depth step.
-    if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
-#if SSS_FOLLOW_SURFACE
-    float d = follow_surface * abs(centre_distance - view_distance(depth_at(position, texel_size)));
-#if SSS_FOLLOW_SURFACE == 2
-    float s = 1.0 - exp(-d * d * u_inv_two_variance);
-#else
-    float s = d;
-#endif
-    if (isnan(s) || !(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
-    tap = mix(tap, centre.rgb, s);
-#endif
-    sum += u_kernel[i].rgb * tap;
-  }
-#endif
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif
 #if SSS_OUTSIDE == 2
-  o_color = vec4(sum, texelFetch(u_original, pixel, 0).a);
+  o_color = sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a));
 #else
-  o_color = vec4(sum, centre.a);
+  o_color = sss_nearest_half(vec4(sum, centre.a));
 #endif
 }

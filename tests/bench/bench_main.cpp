@@ -167,6 +167,7 @@ class Grid {
       const Miss m = miss_share(small, reference_, input_, region_masks_[r].data());
       row->region[r].miss = m.pooled;
       row->region[r].miss_channel = m.channel;
+      row->region[r].share_channel = m.share;
       row->region[r].pixels = static_cast<int>(m.pixels);
     }
     row->relative_rmse_interior = row->region[0].pixels > 0 ? relative_rmse(small, reference_, region_masks_[0].data())

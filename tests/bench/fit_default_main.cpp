@@ -11,6 +11,7 @@
 // expectation that bench.default_kernel_fit checks (tests/bench/default_kernel_fit.json).
 // scripts/fit-default-kernel.sh runs it; a change to the kernels or the instrument that moves the
 // objective needs a refit.
+#include <getopt.h>
 #include <nlopt.h>
 
 #include <chrono>
@@ -181,39 +182,71 @@ nlohmann::json record(const FitResult& fit, const sss::math::FilterSettings& s, 
           {"scores", scores_json(scores)}};
 }
 
+void print_usage(std::FILE* to) {
+  std::fprintf(to,
+               "usage: sss_fit_default [--header PATH] [--expectation PATH] [--max-evaluations N]\n"
+               "       sss_fit_default --score-family F --taps N [--rank R] [--jitter J]\n"
+               "  --header PATH          the constants to write (default module/src/math/default_kernel_fit.hpp)\n"
+               "  --expectation PATH     the fit's record (default tests/bench/default_kernel_fit.json)\n"
+               "  --max-evaluations N    objective evaluations per fit (default 600)\n"
+               "  --score-family F       exploration: score family F (sss_kernel_family 0..5) with its defaults on\n"
+               "                         the calibration cases, print each case and the objective, and stop;\n"
+               "                         --taps (default 17), --rank (default 6 for the sum of Gaussians, else 1)\n"
+               "                         and --jitter (default 0) set the kernel\n");
+}
+
+// Exploration: one family's defaults scored on the calibration cases.
+int score_family(int family, int taps, int rank, float jitter) {
+  sss::math::FilterSettings s;
+  s.kernel.family = static_cast<sss::math::KernelFamily>(family);
+  s.samples = taps;
+  s.kernel.rank = rank > 0 ? rank : (s.kernel.family == sss::math::KernelFamily::sum_of_gaussians ? 6 : 1);
+  s.jitter = jitter;
+  const auto cases = sss_bench::make_calibration_cases(sss_bench::default_sweep_footprints(), sss_bench::kCalibrationInteriorPx);
+  const auto scores = sss_bench::score_settings(s, cases);
+  std::printf("scene          mm/px   miss   red  green   blue\n");
+  for (const auto& c : scores) {
+    std::printf("%-14s %6.3f %6.3f  %6.3f %6.3f %6.3f\n", c.scene.c_str(), c.footprint_mm, c.miss.pooled,
+                c.miss.channel[0], c.miss.channel[1], c.miss.channel[2]);
+  }
+  std::printf("objective %.5f\n", sss_bench::calibration_objective(scores));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string header = "module/src/math/default_kernel_fit.hpp", expectation = "tests/bench/default_kernel_fit.json";
-  int max_evaluations = 600;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--header" && i + 1 < argc) {
-      header = argv[++i];
-    } else if (a == "--expectation" && i + 1 < argc) {
-      expectation = argv[++i];
-    } else if (a == "--max-evaluations" && i + 1 < argc) {
-      max_evaluations = std::stoi(argv[++i]);
-    } else if (a == "--score-family" && i + 2 < argc) {
-      // Exploration: scores one family (sss_kernel_family 0..5) with its defaults at `taps` per pass
-      // on the calibration cases, prints each case and the objective, and stops.
-      sss::math::FilterSettings s;
-      s.kernel.family = static_cast<sss::math::KernelFamily>(std::stoi(argv[++i]));
-      s.samples = std::stoi(argv[++i]);
-      s.kernel.rank = s.kernel.family == sss::math::KernelFamily::sum_of_gaussians ? 6 : 1;
-      const auto cases = sss_bench::make_calibration_cases(sss_bench::default_sweep_footprints(), sss_bench::kCalibrationInteriorPx);
-      const auto scores = sss_bench::score_settings(s, cases);
-      for (const auto& c : scores) {
-        std::printf("%-14s %6.3f %6.3f  %6.3f %6.3f %6.3f\n", c.scene.c_str(), c.footprint_mm, c.miss.pooled,
-                    c.miss.channel[0], c.miss.channel[1], c.miss.channel[2]);
-      }
-      std::printf("objective %.5f\n", sss_bench::calibration_objective(scores));
-      return 0;
-    } else {
-      std::cerr << "usage: sss_fit_default [--header PATH] [--expectation PATH] [--max-evaluations N] [--score-family F TAPS]\n";
-      return 2;
+  int max_evaluations = 600, family = -1, taps = 17, rank = 0;
+  float jitter = 0.0f;
+  enum { kHeader = 1000, kExpectation, kMaxEvaluations, kScoreFamily, kTaps, kRank, kJitter, kHelp };
+  static const option long_options[] = {{"header", required_argument, nullptr, kHeader},
+                                        {"expectation", required_argument, nullptr, kExpectation},
+                                        {"max-evaluations", required_argument, nullptr, kMaxEvaluations},
+                                        {"score-family", required_argument, nullptr, kScoreFamily},
+                                        {"taps", required_argument, nullptr, kTaps},
+                                        {"rank", required_argument, nullptr, kRank},
+                                        {"jitter", required_argument, nullptr, kJitter},
+                                        {"help", no_argument, nullptr, kHelp},
+                                        {nullptr, 0, nullptr, 0}};
+  for (int c; (c = getopt_long(argc, argv, "", long_options, nullptr)) != -1;) {
+    switch (c) {
+      case kHeader: header = optarg; break;
+      case kExpectation: expectation = optarg; break;
+      case kMaxEvaluations: max_evaluations = std::stoi(optarg); break;
+      case kScoreFamily: family = std::stoi(optarg); break;
+      case kTaps: taps = std::stoi(optarg); break;
+      case kRank: rank = std::stoi(optarg); break;
+      case kJitter: jitter = std::stof(optarg); break;
+      case kHelp: print_usage(stdout); return 0;
+      default: print_usage(stderr); return 2;
     }
   }
+  if (optind < argc) {
+    print_usage(stderr);
+    return 2;
+  }
+  if (family >= 0) return score_family(family, taps, rank, jitter);
   const auto started = std::chrono::steady_clock::now();
   const auto cases = sss_bench::make_calibration_cases(sss_bench::default_sweep_footprints(), sss_bench::kCalibrationInteriorPx);
   std::fprintf(stderr, "%zu cases\nfitting eq. (1): separable_scale, strength, falloff\n", cases.size());

@@ -149,11 +149,16 @@ Miss miss_share(const RgbImage& result, const RgbImage& reference, const RgbImag
   if (m.pixels == 0) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m.channel = {nan, nan, nan};
+    m.share = {nan, nan, nan};
     m.pooled = nan;
     return m;
   }
-  for (std::size_t c = 0; c < 3; ++c) m.channel[c] = share(undone[c], needed[c]);
-  m.pooled = share(undone[0] + undone[1] + undone[2], needed[0] + needed[1] + needed[2]);
+  const double needed_pooled = needed[0] + needed[1] + needed[2];
+  for (std::size_t c = 0; c < 3; ++c) {
+    m.channel[c] = share(undone[c], needed[c]);
+    m.share[c] = share(undone[c], needed_pooled);
+  }
+  m.pooled = share(undone[0] + undone[1] + undone[2], needed_pooled);
   return m;
 }
 

@@ -73,6 +73,11 @@ struct ErrorMetrics {
 // The metrics/miss definition above: channel[c] per channel, pooled over the three.
 struct Miss {
   std::array<double, 3> channel{};
+  // ‖result − reference‖ of each channel over the pooled ‖input − reference‖ of all three: the
+  // channel's part of the pooled miss (Σ share² = pooled²). Unlike channel[], it stays well
+  // conditioned where a channel needs almost no change (blue at a coarse footprint), which is what
+  // the regression guard compares there (tests/bench/miss_guard_test.cpp).
+  std::array<double, 3> share{};
   double pooled = 0.0;
   std::size_t pixels = 0;  // selected pixels
   double worst_channel() const;  // the largest of channel[] (NaN when nothing was selected)

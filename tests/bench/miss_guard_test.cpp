@@ -11,6 +11,18 @@
 // a few per cent, a narrower or wider kernel (the note of the issue that added this shows one).
 // Values better than the baseline by more than the margin pass and are listed, so the baseline can
 // be brought down with them.
+//
+// A channel's own miss (miss_<region>_<c>) is ill conditioned where that channel needs almost no
+// change: on the head's mid shot at 160×90 green holds 5.6e-5 of the needed change, and its miss
+// there was 2,600 on one CPU and 2,700 on another under the same llvmpipe (a silhouette's green went
+// from 1 to 4), with nothing changed but the CPU's float rounding. Such a value is guarded through
+// share_<region>_<c> instead (the channel's error over the needed change of all three channels,
+// tests/bench/metrics.hpp), which every run compares: a channel is compared by its own miss only
+// where it holds at least kConditionedShare of the pooled needed change
+// (share / miss, taken from the baseline). A pooled miss above kIllConditionedAbove (the region needs
+// so little change that the result's rounding sets the ratio: the tilted-60 plane's silhouettes at
+// 469) moves by a few per cent with the rounding alone, so it gets kIllConditionedMargin; a tenfold
+// regression still fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +37,11 @@ namespace {
 
 constexpr double kAbsoluteMargin = 0.01;
 constexpr double kRelativeMargin = 0.02;
+// ‖input − exact‖ of a channel over the pooled one, below which its own miss is not compared (its
+// share is): 0.05, so the channel holds under 0.25 % of the needed change's energy.
+constexpr double kConditionedShare = 0.05;
+constexpr double kIllConditionedAbove = 10.0;
+constexpr double kIllConditionedMargin = 0.10;
 
 struct Table {
   std::vector<std::string> columns;              // after the key columns
@@ -68,7 +85,22 @@ TEST(MissBaseline, NoValueIsWorseThanTheCommittedBaseline) {
   ASSERT_FALSE(baseline.rows.empty()) << "no baseline at " << SSS_MISS_BASELINE;
   ASSERT_FALSE(current.rows.empty()) << "the quick benchmark wrote no miss.csv";
   ASSERT_EQ(baseline.columns, current.columns);
-  int compared = 0, better = 0, added = 0;
+  int compared = 0, better = 0, added = 0, conditioned_out = 0;
+  auto column_of = [&](const std::string& name) {
+    for (std::size_t i = 0; i < baseline.columns.size(); ++i) {
+      if (baseline.columns[i] == name) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  // For miss_<region>_<c>: the column of share_<region>_<c>; -1 for any other column.
+  std::vector<int> share_column(baseline.columns.size(), -1);
+  for (std::size_t i = 0; i < baseline.columns.size(); ++i) {
+    const std::string& name = baseline.columns[i];
+    if (name.rfind("miss_", 0) == 0 && name.size() > 2 && name[name.size() - 2] == '_') {
+      share_column[i] = column_of("share_" + name.substr(5));
+      EXPECT_GE(share_column[i], 0) << "no share column for " << name;
+    }
+  }
   for (const auto& [key, expected] : baseline.rows) {
     const auto it = current.rows.find(key);
     if (it == current.rows.end()) {
@@ -84,9 +116,16 @@ TEST(MissBaseline, NoValueIsWorseThanTheCommittedBaseline) {
         EXPECT_EQ(std::isnan(was), std::isnan(now)) << where << ": " << was << " -> " << now;
         continue;
       }
-      ++compared;
       if (std::isinf(was)) continue;  // nothing to change there; any result is as good
-      const double margin = kAbsoluteMargin + kRelativeMargin * was;
+      if (share_column[i] >= 0 && was > 0.0) {
+        const double channel_need = expected[static_cast<std::size_t>(share_column[i])] / was;  // its ‖input − exact‖ / the pooled
+        if (!(channel_need >= kConditionedShare)) {
+          ++conditioned_out;
+          continue;
+        }
+      }
+      ++compared;
+      const double margin = kAbsoluteMargin + (was > kIllConditionedAbove ? kIllConditionedMargin : kRelativeMargin) * was;
       EXPECT_LE(now, was + margin) << where << ": " << now << " against the baseline's " << was << " (margin " << margin << ")";
       if (now < was - margin) {
         if (better++ < 20) std::printf("better than the baseline: %s %.4f (was %.4f)\n", where.c_str(), now, was);
@@ -96,8 +135,9 @@ TEST(MissBaseline, NoValueIsWorseThanTheCommittedBaseline) {
   for (const auto& [key, values] : current.rows) {
     if (baseline.rows.count(key) == 0 && added++ < 20) std::printf("not in the baseline (not guarded): %s\n", key.c_str());
   }
-  std::printf("%d values compared, %d better than the baseline by more than the margin, %d rows not in it\n", compared,
-              better, added);
+  std::printf("%d values compared (%d channel misses left to their share: the channel needs almost no change), %d better "
+              "than the baseline by more than the margin, %d rows not in it\n",
+              compared, conditioned_out, better, added);
   if (better > 0 || added > 0) {
     std::printf("the baseline can be updated: scripts/update-miss-baseline.sh (then commit tests/bench/miss_baseline.csv)\n");
   }

@@ -107,6 +107,9 @@ void write_miss_csv(const std::string& path, const std::vector<ResultRow>& rows)
   for (const char* region : kRegionKeys) {
     out << ",miss_" << region << ",miss_" << region << "_r,miss_" << region << "_g,miss_" << region << "_b";
   }
+  for (const char* region : kRegionKeys) {
+    out << ",share_" << region << "_r,share_" << region << "_g,share_" << region << "_b";
+  }
   out << "\n";
   for (const ResultRow& r : rows) {
     if (r.method == "copy" || r.method == "copy-compute" || r.translucent_pixels == 0) continue;
@@ -115,6 +118,9 @@ void write_miss_csv(const std::string& path, const std::vector<ResultRow>& rows)
     for (const RegionScore& score : r.region) {
       out << ',' << format(score.miss);
       for (double v : score.miss_channel) out << ',' << format(v);
+    }
+    for (const RegionScore& score : r.region) {
+      for (double v : score.share_channel) out << ',' << format(v);
     }
     out << "\n";
   }

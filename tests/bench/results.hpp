@@ -28,6 +28,8 @@ struct RegionScore {
   double miss = std::numeric_limits<double>::quiet_NaN();
   std::array<double, 3> miss_channel{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
                                      std::numeric_limits<double>::quiet_NaN()};
+  std::array<double, 3> share_channel{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                                      std::numeric_limits<double>::quiet_NaN()};  // Miss::share
   int pixels = 0;
 };
 

@@ -84,6 +84,7 @@ const std::vector<KernelChoice>& kernel_family_choices() {
       {"kernel-svd-2", SSS_KERNEL_SVD, 2, 0.0f},
       {"kernel-svd-3", SSS_KERNEL_SVD, 3, 0.0f},
       {"kernel-preintegrated", SSS_KERNEL_PREINTEGRATED, 1, 0.0f},
+      {"kernel-preintegrated-2", SSS_KERNEL_PREINTEGRATED, 2, 0.0f},
       {"kernel-guided", SSS_KERNEL_GUIDED, 1, 0.0f},
       {"kernel-artist", SSS_KERNEL_ARTIST, 1, 0.0f},
   };

@@ -70,6 +70,22 @@ TEST_F(CrossBilateral, MatchesCpuModelHardwareDepth) {
 }
 
 // A measured material: the GL blurs with the Gaussians 4a's fit gives its dipole, as the CPU model does.
+// As MatchesCpuModel.HalfFloatTargetsRoundToNearest: both passes round what they write to half float
+// to nearest, as the CPU model does.
+TEST_F(CrossBilateral, HalfFloatTargetsRoundToNearest) {
+  FilterCase c;
+  c.settings = cbf_settings();
+  c.half_color = true;
+  const FilterOutcome o = run_case(relief(), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  const RoundingAgreement a = rounding_agreement(o);
+  std::printf("%zu changed values, %.4f equal to the CPU model, mean relative difference %.3g\n", a.values,
+              a.equal_share, a.mean_relative_difference);
+  ASSERT_GT(a.values, 1000u);
+  EXPECT_GE(a.equal_share, 0.999);
+  EXPECT_LE(std::fabs(a.mean_relative_difference), 1e-5);
+}
+
 TEST_F(CrossBilateral, MatchesCpuModelMeasuredMaterial) {
   FilterCase c;
   c.settings = cbf_settings(SSS_MATERIAL_KETCHUP, 17);

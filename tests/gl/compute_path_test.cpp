@@ -112,6 +112,25 @@ TEST_F(ComputePath, MatchesTheCpuModelInPlaceAndIntoAnOutput) {
   }
 }
 
+// As MatchesCpuModel.HalfFloatTargetsRoundToNearest, through imageStore into rgba16f images (the
+// intermediate and the host's colour): rounded to nearest in the shader, as the CPU model does.
+TEST_F(ComputePath, HalfFloatImagesRoundToNearest) {
+  if (!has_compute()) GTEST_SKIP() << "no compute shaders on this GL";
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.settings.path = SSS_PATH_COMPUTE;
+  c.half_color = true;
+  const FilterOutcome o = run_case(relief(), c);
+  ASSERT_EQ(o.result, SSS_OK);
+  EXPECT_EQ(last_path(), SSS_PATH_COMPUTE);
+  const RoundingAgreement a = rounding_agreement(o);
+  std::printf("%zu changed values, %.4f equal to the CPU model, mean relative difference %.3g\n", a.values,
+              a.equal_share, a.mean_relative_difference);
+  ASSERT_GT(a.values, 1000u);
+  EXPECT_GE(a.equal_share, 0.999);
+  EXPECT_LE(std::fabs(a.mean_relative_difference), 1e-5);
+}
+
 TEST_F(ComputePath, EveryVariantOfTheShader) {
   struct Variant {
     const char* name;

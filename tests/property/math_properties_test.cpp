@@ -390,8 +390,8 @@ std::vector<float> run_model(const ModelCase& m) {
   g.depth = m.linear               ? sss::math::DepthEncoding::linear_distance
             : m.camera.zero_to_one ? sss::math::DepthEncoding::hardware_zero_to_one
                                    : sss::math::DepthEncoding::hardware_minus_one_to_one;
-  const auto constants = sss::math::compute_pass_constants(m.settings, m.camera.m, g);
-  const auto kernel = sss::math::separable_kernel(m.settings.samples, m.settings.strength, m.settings.falloff);
+  const auto kernel = sss::math::build_pass_kernel(m.settings);  // as the module builds it
+  const auto constants = sss::math::compute_pass_constants(m.settings, m.camera.m, g, kernel.reach_mm);
   sss::math::CpuFilterImage image;
   image.width = m.width;
   image.height = m.height;
@@ -400,7 +400,7 @@ std::vector<float> run_model(const ModelCase& m) {
   image.mask = m.mask.data();
   image.output_is_half = m.half_output;
   std::vector<float> out(m.color.size());
-  sss::math::cpu_separable_filter(kernel, constants, image, out.data());
+  sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
   return out;
 }
 

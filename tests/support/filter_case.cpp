@@ -23,6 +23,23 @@ float largest_relative_difference(const std::vector<float>& gpu, const std::vect
   return worst;
 }
 
+RoundingAgreement rounding_agreement(const FilterOutcome& o) {
+  RoundingAgreement a;
+  std::size_t equal = 0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < o.gpu.size() && i < o.cpu.size() && i < o.input.size(); ++i) {
+    if (o.cpu[i] == o.input[i] || !std::isfinite(o.cpu[i]) || !std::isfinite(o.gpu[i])) continue;
+    ++a.values;
+    if (o.gpu[i] == o.cpu[i]) ++equal;
+    sum += static_cast<double>(o.gpu[i] - o.cpu[i]) / std::max(1.0, std::fabs(static_cast<double>(o.cpu[i])));
+  }
+  if (a.values > 0) {
+    a.equal_share = static_cast<double>(equal) / static_cast<double>(a.values);
+    a.mean_relative_difference = sum / static_cast<double>(a.values);
+  }
+  return a;
+}
+
 sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
   sss_frame f = {};
   f.struct_size = sizeof f;

@@ -43,6 +43,18 @@ sss_settings visible_settings(int samples, uint32_t flags, float width);
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
 
+// How the GL's rounding into half-float targets compares with the CPU model's (round to nearest,
+// ties to even), over the colour values the filter changed (cpu != input, both finite): the share of
+// them where GL and CPU model are equal bit for bit, and the mean of (gpu − cpu) / max(1, |cpu|). A
+// driver's conversion that truncates, left alone, makes about half of them differ by one half-float
+// step and the mean about −2.4e-4 (half a step, always down).
+struct RoundingAgreement {
+  double equal_share = 0.0;
+  double mean_relative_difference = 0.0;
+  std::size_t values = 0;
+};
+RoundingAgreement rounding_agreement(const FilterOutcome& o);
+
 // The kernel the settings select (settings.kernel with samples, strength, falloff), from the public
 // sss_kernel_plan: what the CPU model runs.
 sss::math::KernelPlan plan_for(const sss_settings& settings);

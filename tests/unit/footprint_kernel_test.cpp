@@ -51,7 +51,6 @@ std::array<double, 3> mass(const FootprintTable& t) {
 
 TEST(FootprintKernel, WeightsConserveEachChannelsEnergyAtEveryFootprint) {
   for (const auto& kernel : every_family()) {
-    ASSERT_TRUE(kernel.footprint);
     for (const auto& term : kernel.terms) {
       for (const auto* pass : {&term.horizontal, &term.vertical}) {
         const std::array<double, 3> expected = mass(pass->footprint);

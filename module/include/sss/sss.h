@@ -103,7 +103,7 @@ typedef struct sss_create_desc {
  *  alpha). The artist family (SSS_KERNEL_ARTIST) blends by its exact depth correction instead:
  *  1 - exp(-dz²/2τ_max), dz in profile millimetres (supplementary §E). */
 #define SSS_FOLLOW_SURFACE 0x1u
-/** Accepted for source compatibility and ignored since 0.2: every kernel without jitter now runs
+/** Accepted for source compatibility and ignored since 0.2: every kernel now runs
  *  footprint-aware taps (see sss_settings.samples), which choose each pixel's taps from its footprint,
  *  pass a pixel whose kernel fits inside it through and never read more taps than its footprint
  *  needs; what this flag used to switch on is the default behaviour. sss_get_settings does not
@@ -223,10 +223,12 @@ typedef struct sss_settings {
                                call; sss_get_settings returns pointers to the context's copy, valid until the
                                next sss_set_settings). The fitted families (guided; sum of Gaussians of a
                                measured material) run an optimiser when first selected: up to ~0.3 s */
-  float jitter;           /**< [0, 1], finite: the share of each pass's taps, the outermost, whose position moves
-                               per pixel within the cell it stands for, by deterministic noise (supplementary
-                               Fig. S.6-S.7 use 0.33): turns the banding of few taps into fine noise, with no
-                               temporal filter. Default 0 */
+  float jitter;           /**< [0, 1], finite: the share of each pass's taps, the outermost, that read a pixel of
+                               the cell they stand for chosen per pixel by deterministic noise (supplementary
+                               Fig. S.6-S.7 use 0.33), where a pixel's kernel spans more pixels than `samples`
+                               taps (where it spans fewer, every pixel has a tap and nothing moves): turns the
+                               banding of few taps into fine noise, with no temporal filter; the weights stay
+                               the cells'. Default 0 */
   /* Appended in 0.1 for the choice of how the passes run. */
   uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE, SSS_PATH_AUTO or
                                SSS_PATH_FRAGMENT_MASKED: how the separable mode's two passes run (see SSS_PATH_*).

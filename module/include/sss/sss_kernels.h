@@ -29,7 +29,9 @@ typedef enum sss_kernel_family {
   SSS_KERNEL_SEPARABLE = 0,        /**< paper eq. (1) from strength and falloff: 1 term */
   SSS_KERNEL_SUM_OF_GAUSSIANS = 1, /**< d'Eon et al.: `rank` Gaussians, 1 term each (fitted to non-skin profiles) */
   SSS_KERNEL_SVD = 2,              /**< rank-`rank` SVD of the discretised 2D profile (supp. S.2-S.4) */
-  SSS_KERNEL_PREINTEGRATED = 3,    /**< a_p(x)a_p(y)/‖R‖₁ (supp. S.5-S.6): exact for E1(x) + E2(y): 1 term */
+  SSS_KERNEL_PREINTEGRATED = 3,    /**< a_p(x)a_p(y)/‖R‖₁ (supp. S.5-S.6): exact for E1(x) + E2(y): 1 term; with
+                                        rank N > 1, plus N − 1 SVD terms of the residual, which move no light
+                                        along either axis (still exact there) and bring the 2D shape closer */
   SSS_KERNEL_GUIDED = 4,           /**< guided rank-1 fit with exponent guide_k (supp. S.7-S.9): 1 term */
   SSS_KERNEL_ARTIST = 5            /**< two Gaussians, near/far variance and weight, depth-corrected (supp. §E): 1 term */
 } sss_kernel_family;
@@ -75,14 +77,16 @@ typedef struct sss_kernel_desc {
   uint32_t struct_size;        /**< sizeof(sss_kernel_desc) */
   int32_t family;              /**< sss_kernel_family; default SSS_KERNEL_SEPARABLE */
   int32_t taps;                /**< taps per pass, odd, [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES]; default 17 */
-  int32_t rank;                /**< SUM_OF_GAUSSIANS: Gaussians, SVD: rank; 1..6 (default 1); others ignore it */
+  int32_t rank;                /**< SUM_OF_GAUSSIANS: Gaussians, SVD: rank, PREINTEGRATED: terms (1: the
+                                    supplementary's); 1..6 (default 1); others ignore it */
   uint32_t flags;              /**< SSS_KERNEL_* flags; default 0 */
   float guide_k;               /**< GUIDED: guide exponent, [0, 4]; default 1.55 */
   float radius_mm;             /**< SVD, PREINTEGRATED, GUIDED: grid half-width in mm, 0 (default: the
                                     profile's 1e-4 extent; guided: its 90% radius) or in (0, 1e4] */
   float strength[3];           /**< SEPARABLE: [0, 1] each; default the paper's Table 1 (.78 .70 .75) */
   float falloff[3];            /**< SEPARABLE: [0, 1] each; default (.57 .13 .08) */
-  float near_variance_mm2[3];  /**< ARTIST: (0, 1e4] each */
+  float near_variance_mm2[3];  /**< ARTIST: (0, 1e4] each; default: the model's fit to d'Eon's skin
+                                    (docs/kernel-fits.md), as far_variance_mm2 and near_weight */
   float far_variance_mm2[3];   /**< ARTIST: (0, 1e4] each */
   float near_weight[3];        /**< ARTIST: [0, 1] each */
   sss_profile_desc profile;    /**< SUM_OF_GAUSSIANS, SVD, PREINTEGRATED, GUIDED: the profile */
@@ -115,9 +119,9 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc *profile, float o
  *  2 passes × desc->taps taps: out_taps[((term · 2 + pass) · taps + tap) · 4 + k], pass 0 horizontal,
  *  1 vertical, k = {weight r, weight g, weight b, offset mm}; taps of a pass in increasing offset
  *  (the eq. (1) kernel keeps its own layout: centre first; its offsets are its own kernel
- *  millimetres, which sss_settings.separable_scale converts to the surface's). These are the fixed
- *  taps a jittered kernel runs; without jitter the passes read each pass's kernel at every pixel's
- *  footprint instead (docs/kernels.md). SVD weights may be negative.
+ *  millimetres, which sss_settings.separable_scale converts to the surface's). The passes do not
+ *  read these taps: they read each pass's kernel at every pixel's footprint (docs/kernels.md); the
+ *  taps are the kernel's discrete form for your own use. SVD weights may be negative.
  *  out_taps must hold max_terms · 2 · taps · 4 floats. Optional (may be NULL): out_depth_variance_mm2
  *  (max_terms floats: > 0 where a term's taps are depth-corrected by exp(-dz²/2v), supp. §E; else 0)
  *  and out_reach_mm (the largest |offset|). The fitted families (GUIDED, SUM_OF_GAUSSIANS on a

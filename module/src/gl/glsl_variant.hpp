@@ -14,7 +14,7 @@ enum class GlslVariant : int { glsl330 = 0, glsl420 = 1, essl300 = 2 };
 
 GlslVariant choose_glsl_variant(const Api& api);
 // The text put before every shader: the #version line and the variant's macros
-// (SSS_BINDING(unit), SSS_MANUAL_DEPTH_FILTER).
+// (SSS_BINDING(unit)).
 std::string glsl_header(GlslVariant v);
 // "GLSL 330 core", "GLSL 420 core", "GLSL ES 300".
 const char* glsl_variant_name(GlslVariant v);

@@ -98,13 +98,12 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   }
   label_object(f, labels_, PROGRAM, copy_program_, "sss copy");
 
-  // The variants every host uses (write back, follow-surface, hardware depth, footprint-aware taps:
-  // the default kernel's) are built now so a driver that cannot compile them fails in sss_create
+  // The variants every host uses (write back, follow-surface, hardware depth: the default kernel's)
+  // are built now so a driver that cannot compile them fails in sss_create
   // rather than in the first frame.
   BlurProgram* unused = nullptr;
   BlurVariant common;
   common.follow_surface = 1;
-  common.footprint = true;
   sss_result r = blur_program(common, &unused, message);
   common.outside = Outside::discard;
   if (r == SSS_OK) r = blur_program(common, &unused, message);
@@ -186,35 +185,38 @@ sss_result SeparableFilter::rebuild(std::string* message) {
 SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run, std::size_t term, int axis,
                                                           Outside outside) const {
   const math::PassTerm& t = run.kernel->terms[term];
-  const math::PassTaps& taps = axis == 0 ? t.horizontal : t.vertical;
   BlurVariant v;
   v.outside = outside;
   v.follow_surface = !run.follow_surface ? 0 : (t.depth_variance_mm2 > 0.0f ? 2 : 1);
   v.linear_depth = run.constants.linear_depth;
-  v.jitter = !taps.jitter_mm.empty();
+  v.jitter = run.kernel->jittered();
   v.accumulate = axis == 1 && term > 0;
-  v.footprint = run.kernel->footprint;
   return v;
 }
 
+bool SeparableFilter::writes_half_float(const FilterRun& run, std::size_t term, int axis) const {
+  if (axis == 0) return true;
+  const std::size_t terms = run.cross_bilateral ? 1 : run.kernel->terms.size();
+  if (term + 1 < terms) return variant_ == GlslVariant::essl300;
+  const TextureInfo& target = run.output.name != 0 ? run.output : run.color;
+  return target.internal_format == static_cast<GLint>(RGBA16F);
+}
+
 int SeparableFilter::variant_index(const BlurVariant& v) {
-  return ((((static_cast<int>(v.outside) * 3 + v.follow_surface) * 2 + (v.linear_depth ? 1 : 0)) * 2 +
-           (v.jitter ? 1 : 0)) *
-              2 +
-          (v.accumulate ? 1 : 0)) *
-             2 +
-         (v.footprint ? 1 : 0);
+  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
+  index = index * 2 + (v.linear_depth ? 1 : 0);
+  index = index * 2 + (v.jitter ? 1 : 0);
+  return index * 2 + (v.accumulate ? 1 : 0);
 }
 
 std::string SeparableFilter::variant_defines(const BlurVariant& v) {
   char defines[320];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_MAX_TAPS %d\n"
-                "#define SSS_FOOTPRINT %d\n#define SSS_CDF_ENTRIES %d\n#define SSS_MAX_HALF_TAPS %d\n",
+                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
+                "#define SSS_MAX_HALF_TAPS %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES), v.footprint ? 1 : 0, math::kFootprintEntries,
-                math::kMaxFootprintHalfTaps);
+                v.accumulate ? 1 : 0, math::kFootprintEntries, math::kMaxFootprintHalfTaps);
   return defines;
 }
 
@@ -226,15 +228,17 @@ sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out
   const std::string defines = variant_defines(v);
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::separable_blur_frag, &log);
+  p.program = build_program(f, glsl_header_ + defines + shaders::nearest_half_glsl, shaders::fullscreen_vert,
+                            shaders::separable_blur_frag, &log);
   if (p.program == 0) {
     *message = "separable blur shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  char label[112];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d footprint=%d",
+  char label[128];
+  std::snprintf(label, sizeof label,
+                "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, v.footprint ? 1 : 0);
+                v.accumulate ? 1 : 0);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (") + glsl_variant_name(variant_) + ", " + label + ")");
   find_blur_uniforms(&p);
@@ -256,9 +260,7 @@ void SeparableFilter::find_blur_uniforms(BlurProgram* program) const {
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
   p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
-  p.kernel = f.GetUniformLocation(p.program, "u_kernel");
-  p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
-  p.jitter = f.GetUniformLocation(p.program, "u_jitter");
+  p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
   p.axis = f.GetUniformLocation(p.program, "u_axis");
   p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
@@ -271,6 +273,7 @@ void SeparableFilter::find_blur_uniforms(BlurProgram* program) const {
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
 }
 
 sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
@@ -285,7 +288,8 @@ sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool
                 static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::cbf_blur_frag, &log);
+  p.program = build_program(f, glsl_header_ + defines + shaders::nearest_half_glsl, shaders::fullscreen_vert,
+                            shaders::cbf_blur_frag, &log);
   if (p.program == 0) {
     *message = "cross-bilateral blur shader (" + std::string(defines) + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
@@ -312,6 +316,7 @@ sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool
   p.orthographic = f.GetUniformLocation(p.program, "u_orthographic");
   p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
   p.normals = f.GetUniformLocation(p.program, "u_normals");
   // Sampler units never change: set them once (GLSL 420 has them in the shader already).
   if (!has_explicit_bindings(variant_)) {
@@ -497,27 +502,18 @@ void SeparableFilter::set_blur_uniforms(BlurProgram& p, const FilterRun& run, st
   const math::PassTaps& taps = axis == 0 ? t.horizontal : t.vertical;
   f.UseProgram(p.program);
   if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
+    // The pass's cumulative table, its reach and centre delta, the sparse layout's spacing, the most
+    // taps per side and the first that jitters.
+    const math::FootprintTable& table = taps.footprint;
     std::vector<float> packed;
-    if (p.cdf >= 0) {
-      // The footprint-aware taps: the pass's cumulative table, its reach and centre delta, the
-      // sparse layout's spacing and the most taps per side.
-      const math::FootprintTable& table = taps.footprint;
-      packed.reserve(table.half_cdf.size() * 4);
-      for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
-      f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
-      f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
-      const std::vector<float>& spacing = run.kernel->spacing;
-      if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
-      f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
-    } else {
-      packed.reserve(taps.taps.size() * 4);
-      for (const math::KernelTap& tap : taps.taps) {
-        packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
-      }
-      f.Uniform4fv(p.kernel, static_cast<GLsizei>(packed.size() / 4), packed.data());
-      f.Uniform1i(p.tap_count, static_cast<GLint>(taps.taps.size()));
-    }
-    if (p.jitter >= 0) f.Uniform1fv(p.jitter, static_cast<GLsizei>(taps.jitter_mm.size()), taps.jitter_mm.data());
+    packed.reserve(table.half_cdf.size() * 4);
+    for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
+    f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+    f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+    const std::vector<float>& spacing = run.kernel->spacing;
+    if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
+    f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
+    if (p.jitter_from >= 0) f.Uniform1i(p.jitter_from, run.kernel->jitter_from);
     if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
     p.kernel_revision = run.kernel_revision;
     p.uploaded_term = term;
@@ -534,6 +530,7 @@ void SeparableFilter::set_blur_uniforms(BlurProgram& p, const FilterRun& run, st
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+  f.Uniform1i(p.round_to_half, writes_half_float(run, term, axis) ? 1 : 0);
 }
 
 void SeparableFilter::bind_blur_inputs(GLuint source, GLuint depth) {
@@ -583,6 +580,7 @@ void SeparableFilter::draw_cbf(CbfProgram& p, const FilterRun& run, GLuint sourc
   f.Uniform4f(p.viewport, c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]);
   f.Uniform1f(p.world_per_mm, c.world_per_mm);
   f.Uniform1f(p.orthographic, c.orthographic ? 1.0f : 0.0f);
+  f.Uniform1i(p.round_to_half, writes_half_float(run, 0, axis) ? 1 : 0);
   f.ActiveTexture(TEXTURE0 + kSourceUnit);
   f.BindTexture(TEXTURE_2D, source);
   f.BindSampler(kSourceUnit, sampler_);

@@ -69,7 +69,7 @@ struct FilterRun {
   std::uint64_t path_key = 0;
 };
 
-// The footprint variant's uniforms: u_cdf (math::kFootprintEntries = 128 vec4) and u_spacing (32
+// The blur's uniforms: u_cdf (math::kFootprintEntries = 128 vec4) and u_spacing (32
 // floats, a vector each at worst) stay within ES 3.0's 224 fragment uniform vectors with the rest.
 // Pixels a compute work group writes along a pass's axis, and those it caches on each side of
 // them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
@@ -131,13 +131,12 @@ class SeparableFilter {
     Outside outside = Outside::write_centre;
     int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
     bool linear_depth = false, jitter = false, accumulate = false;
-    bool footprint = false;  // footprint-aware taps (math::PassKernel::footprint)
   };
   struct BlurProgram {
     GLuint program = 0;
-    GLint source = -1, depth = -1, original = -1, accumulated = -1, kernel = -1, tap_count = -1, jitter = -1,
-          inv_two_variance = -1, axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1,
-          depth_terms = -1, clamp = -1, cdf = -1, footprint = -1, spacing = -1, half_taps = -1;
+    GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
+          axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
+          cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
     GLint rect = -1;  // compute programs only
     bool compute = false;
     // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
@@ -145,7 +144,7 @@ class SeparableFilter {
     std::size_t uploaded_term = 0;
     int uploaded_axis = -1;
   };
-  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
+  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2;
   // Compute variants: a fragment variant's index (SSS_ACCUMULATE never set there: one term only) ×
   // the target's image format (kImageFormats).
   static constexpr int kComputeVariantCount = kVariantCount * kImageFormats;
@@ -153,7 +152,8 @@ class SeparableFilter {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
           ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
-          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1;
+          world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1,
+          round_to_half = -1;
     std::uint64_t kernel_revision = 0;
   };
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
@@ -175,6 +175,11 @@ class SeparableFilter {
   // The pass input and the host's depth on their units, with the module's samplers.
   void bind_blur_inputs(GLuint source, GLuint depth);
   sss_result cbf_program(Outside outside, bool linear_depth, bool normals, CbfProgram** out, std::string* message);
+  // Whether the pass of term `term` on `axis` writes a half-float target, so that the shader rounds
+  // what it writes to nearest (module/shaders/nearest_half.glsl, u_round_to_half) whatever rounding
+  // the driver's conversion does: horizontal passes write the RGBA16F intermediate, vertical ones the
+  // sum of terms (RGBA32F; RGBA16F on ES) or, the last, the host's colour or output.
+  bool writes_half_float(const FilterRun& run, std::size_t term, int axis) const;
   sss_result run_cbf(const FilterRun& run, std::string* message);
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
   void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);

@@ -64,15 +64,15 @@ sss_result SeparableFilter::compute_program(const BlurVariant& v, int image_form
   const std::string defines = "#version 430 core\n" + variant_defines(v) + compute_defines;
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_compute_program(f, defines, shaders::separable_blur_comp, &log);
+  p.program = build_compute_program(f, defines + shaders::nearest_half_glsl, shaders::separable_blur_comp, &log);
   if (p.program == 0) {
     *message = "separable blur compute shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[128];
-  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d footprint=%d %s",
+  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d %s",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.footprint ? 1 : 0, kImageFormatTable[image_format].qualifier);
+                kImageFormatTable[image_format].qualifier);
   label_object(f, labels_, PROGRAM, p.program, label);
   note(std::string("built the blur program (GLSL 430 core, ") + label + ")");
   find_blur_uniforms(&p);

@@ -28,16 +28,6 @@ struct Plane {
     y = std::clamp(y, 0, height - 1);
     return data[(static_cast<std::size_t>(y) * width + x) * channels + c];
   }
-  // GL_LINEAR with clamp-to-edge at a position in pixel units (texel centres at +0.5).
-  float bilinear(float px, float py, int c) const {
-    const float x = px - 0.5f, y = py - 0.5f;
-    const float x0 = std::floor(x), y0 = std::floor(y);
-    const float fx = x - x0, fy = y - y0;
-    const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
-    const float bottom = at(ix, iy, c) * (1.0f - fx) + at(ix + 1, iy, c) * fx;
-    const float top = at(ix, iy + 1, c) * (1.0f - fx) + at(ix + 1, iy + 1, c) * fx;
-    return bottom * (1.0f - fy) + top * fy;
-  }
 };
 
 // The follow-surface blend of one tap towards the centre colour (GLSL mix()).
@@ -66,50 +56,29 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   const float inv_two_variance = gaussian_depth ? 0.5f / depth_variance_mm2 : 0.0f;
   Rgba sum = {0.0f, 0.0f, 0.0f, centre[3]};
 
-  if (kernel.footprint) {
-    // Whole-pixel taps (footprint_kernel.hpp), read without filtering.
-    const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step);
-    for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * taps.weight[0][c];
-    for (int i = 0; i < taps.count; ++i) {
-      const float p = static_cast<float>(taps.position[static_cast<std::size_t>(i)]);
-      std::array<float, 3> pair = {0.0f, 0.0f, 0.0f};
-      for (int side = 0; side < 2; ++side) {
-        float px = cx, py = cy;
-        (axis == 0 ? px : py) += side == 0 ? p : -p;
-        px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
-        py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
-        const int tx = static_cast<int>(px), ty = static_cast<int>(py);
-        std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
-        if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
-        if (k.follow_surface_factor > 0.0f) {
-          const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.at(tx, ty, 0)));
-          follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
-        }
-        for (std::size_t c = 0; c < 3; ++c) pair[c] += tap[c];
+  // Whole-pixel taps (footprint_kernel.hpp), read without filtering.
+  const int jitter_from = kernel.jitter_from;
+  const float noise = kernel.jittered() ? jitter_noise(x, y, axis) : 0.0f;
+  const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step, jitter_from, noise);
+  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * taps.weight[0][c];
+  for (int i = 0; i < taps.count; ++i) {
+    const float p = static_cast<float>(taps.position[static_cast<std::size_t>(i)]);
+    std::array<float, 3> pair = {0.0f, 0.0f, 0.0f};
+    for (int side = 0; side < 2; ++side) {
+      float px = cx, py = cy;
+      (axis == 0 ? px : py) += side == 0 ? p : -p;
+      px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
+      py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
+      const int tx = static_cast<int>(px), ty = static_cast<int>(py);
+      std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
+      if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
+      if (k.follow_surface_factor > 0.0f) {
+        const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.at(tx, ty, 0)));
+        follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
       }
-      for (std::size_t c = 0; c < 3; ++c) sum[c] += taps.weight[static_cast<std::size_t>(i + 1)][c] * pair[c];
+      for (std::size_t c = 0; c < 3; ++c) pair[c] += tap[c];
     }
-    *result = sum;
-    return true;
-  }
-
-  // Fixed taps (jittered kernels): offsets scaled by the step, read bilinearly.
-  const std::vector<KernelTap>& list = pass.taps;
-  const float shift = pass.jitter_mm.empty() ? 0.0f : jitter_noise(x, y, axis) - 0.5f;
-  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * list[0].weight[c];
-  for (std::size_t i = 1; i < list.size(); ++i) {
-    float px = cx, py = cy;
-    const float offset = pass.jitter_mm.empty() ? list[i].offset_mm : list[i].offset_mm + shift * pass.jitter_mm[i];
-    (axis == 0 ? px : py) += offset * step;
-    px = std::clamp(px, k.clamp_min[0], k.clamp_max[0]);
-    py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
-    std::array<float, 3> tap = {source.bilinear(px, py, 0), source.bilinear(px, py, 1), source.bilinear(px, py, 2)};
-    if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
-    if (k.follow_surface_factor > 0.0f) {
-      const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.bilinear(px, py, 0)));
-      follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
-    }
-    for (std::size_t c = 0; c < 3; ++c) sum[c] += list[i].weight[c] * tap[c];
+    for (std::size_t c = 0; c < 3; ++c) sum[c] += taps.weight[static_cast<std::size_t>(i + 1)][c] * pair[c];
   }
   *result = sum;
   return true;
@@ -121,16 +90,6 @@ bool inside(const PassConstants& k, int x, int y) {
 }
 
 }  // namespace
-
-void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
-                          const CpuFilterImage& image, float* out) {
-  PassKernel k;
-  PassTerm term;
-  term.horizontal.taps = kernel;
-  term.vertical.taps = kernel;
-  k.terms.push_back(std::move(term));  // fixed taps, as given
-  cpu_pass_kernel_filter(k, constants, image, out);
-}
 
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
                             float* out) {

@@ -1,8 +1,8 @@
 // A CPU model of the GPU's two-pass separable filter: the same taps (footprint-aware whole-pixel
-// taps, footprint_kernel.hpp; or a jittered kernel's fixed list read with bilinear clamp-to-edge
-// sampling), the same per-pixel step, the same follow-surface blend, and the RGBA16F rounding of
-// the intermediate target. Tests compare the GL result against it to tell shader bugs apart from
-// approximation error (DESIGN.md §6, reference 2). Math layer: no GL.
+// taps, footprint_kernel.hpp, jittered ones included), the same per-pixel step, the same
+// follow-surface blend, and the RGBA16F rounding of the intermediate target. Tests compare the GL
+// result against it to tell shader bugs apart from approximation error (DESIGN.md §6, reference 2).
+// Math layer: no GL.
 #pragma once
 
 #include <cstdint>
@@ -10,7 +10,6 @@
 
 #include "filter_constants.hpp"
 #include "pass_kernel.hpp"
-#include "separable_kernel.hpp"
 
 namespace sss::math {
 
@@ -23,18 +22,14 @@ struct CpuFilterImage {
   bool accumulator_is_half = false;  // several terms: the module's sum of the earlier terms is RGBA16F (ES)
 };
 
-// Runs both passes of a fixed tap list (offsets scaled per pixel, read bilinearly) into `out` (RGBA,
-// width·height·4 floats; may not alias color). Pixels that are outside the mask, have alpha <= 0
-// (after the intermediate's rounding), a non-finite colour or alpha, or an unusable depth keep their
-// input value exactly; pixels outside the viewport too.
-// Alpha above 1 counts as 1. A non-finite tap counts as the centre's colour (it does not spread).
-void cpu_separable_filter(const std::vector<KernelTap>& kernel, const PassConstants& constants,
-                          const CpuFilterImage& image, float* out);
-
-// The same for any kernel the passes run (pass_kernel.hpp): per term a horizontal pass into the
-// RGBA16F intermediate and a vertical pass that adds the sum of the earlier terms (kept in RGBA32F,
-// or RGBA16F with accumulator_is_half, as the GL does); jittered taps move by jitter_noise; a term
-// with a depth variance blends taps towards the centre by 1 - exp(-dz²/2v) instead of the ramp.
+// Runs both passes of every term of `kernel` (pass_kernel.hpp) into `out` (RGBA, width·height·4
+// floats; may not alias color). Pixels that are outside the mask, have alpha <= 0 (after the
+// intermediate's rounding), a non-finite colour or alpha, or an unusable depth keep their input value
+// exactly; pixels outside the viewport too. Alpha above 1 counts as 1. A non-finite tap counts as the
+// centre's colour (it does not spread). Per term: a horizontal pass into the RGBA16F intermediate
+// and a vertical pass that adds the sum of the earlier terms (kept in RGBA32F, or RGBA16F with
+// accumulator_is_half, as the GL does); jittered taps move by jitter_noise; a term with a depth
+// variance blends taps towards the centre by 1 - exp(-dz²/2v) instead of the ramp.
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
                             float* out);
 

@@ -135,9 +135,16 @@ std::vector<float> footprint_spacing(int half_taps) {
   return s;
 }
 
-FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<float>& spacing, float step) {
+int first_jittered_tap(float jitter, int half_taps) {
+  const long moved = std::lround(static_cast<double>(jitter) * static_cast<double>(half_taps));
+  return moved > 0 ? half_taps - static_cast<int>(moved) + 1 : kNoJitter;
+}
+
+FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<float>& spacing, float step,
+                             int jitter_from, float noise) {
   FootprintTaps out;
   const int half = static_cast<int>(spacing.size());
+  bool sparse = false;
   // Bounded so that positions stay far inside int range whatever the step (they are clamped to the
   // viewport afterwards anyway).
   const float reach_px = std::min(table.reach_mm * step, 1.0e6f);
@@ -145,6 +152,7 @@ FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<floa
     out.count = std::max(static_cast<int>(std::ceil(reach_px - 0.5f)), 0);
     for (int i = 0; i < out.count; ++i) out.position[idx(i)] = i + 1;
   } else {
+    sparse = true;
     out.count = half;
     int previous = 0;
     for (int i = 0; i < half; ++i) {
@@ -164,6 +172,17 @@ FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<floa
             : total;
     for (std::size_t c = 0; c < 3; ++c) out.weight[idx(i + 1)][c] = upto[c] - below[c];
     below = upto;
+  }
+  if (sparse && jitter_from <= out.count) {
+    // In float, as the shaders: the positions are small integers, so every value here is exact.
+    std::array<int, kMaxFootprintHalfTaps> cell = out.position;
+    for (int i = std::max(jitter_from, 1); i <= out.count; ++i) {
+      const float p = static_cast<float>(cell[idx(i - 1)]);
+      const float inner = i > 1 ? static_cast<float>(cell[idx(i - 2)]) : 0.0f;
+      const float lo = std::floor(0.5f * (inner + p)) + 1.0f;
+      const float hi = i < out.count ? std::floor(0.5f * (p + static_cast<float>(cell[idx(i)]))) : p + (p - lo);
+      out.position[idx(i - 1)] = static_cast<int>(lo + std::min(std::floor(noise * (hi - lo + 1.0f)), hi - lo));
+    }
   }
   return out;
 }

@@ -79,12 +79,29 @@ std::vector<float> footprint_spacing(int half_taps);
 
 struct FootprintTaps {
   int count = 0;  // taps on each side of the centre
-  std::array<int, kMaxFootprintHalfTaps> position{};                // pixels, increasing
+  std::array<int, kMaxFootprintHalfTaps> position{};                // the pixels read, increasing
   std::array<std::array<float, 3>, kMaxFootprintHalfTaps + 1> weight{};  // [0] the centre, [i] each of ±position[i-1]
 };
 
+// No tap jitters (FootprintTaps' jitter_from).
+inline constexpr int kNoJitter = kMaxFootprintHalfTaps + 1;
+
+// The first tap, counting 1, 2, ... out from the centre, that a kernel with `jitter` (sss_settings,
+// [0, 1]: the outermost share of the taps) moves: the outermost round(jitter · half_taps) on
+// each side; kNoJitter for none.
+int first_jittered_tap(float jitter, int half_taps);
+
 // The taps at a pixel whose step is `step` pixels per profile millimetre, with at most `half_taps`
 // on each side (spacing from footprint_spacing(half_taps)).
-FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<float>& spacing, float step);
+//
+// Jitter (supplementary Fig. S.6-S.7: few taps' banding turned into fine noise): where the taps are
+// spread out (the kernel spans more pixels than there are taps), taps jitter_from and beyond read
+// one pixel of the cell they stand for, chosen by `noise` in [0, 1) (jitter_noise of the pixel and
+// pass): the cell's first pixel past the midpoint to the inner neighbour, plus
+// floor(noise · the cell's pixels); the outermost tap's cell is its inner half mirrored. The weights
+// stay the cells' integrals, so energy and the pass-through are as without jitter, and where every
+// pixel out to the reach has its own tap nothing moves.
+FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<float>& spacing, float step,
+                             int jitter_from = kNoJitter, float noise = 0.0f);
 
 }  // namespace sss::math

@@ -200,18 +200,43 @@ std::array<std::vector<double>, 3> preintegrated_taps(const ProfileMatrix& m) {
   return a;
 }
 
-KernelPlan preintegrated_plan(const ProfileMatrix& m) {
+KernelPlan preintegrated_plan(const ProfileMatrix& m, int rank) {
+  const int n = m.n();
   const auto a = preintegrated_taps(m);
   auto h = a;
+  std::array<double, 3> norm{};  // ‖R‖₁ = Σ a_p (the matrix is non-negative)
   for (std::size_t c = 0; c < 3; ++c) {
-    double norm = 0.0;  // ‖R‖₁ = Σ a_p (the matrix is non-negative)
-    for (double x : a[c]) norm += x;
-    if (norm > 0.0) {
-      for (double& x : h[c]) x /= norm;
+    for (double x : a[c]) norm[c] += x;
+    if (norm[c] > 0.0) {
+      for (double& x : h[c]) x /= norm[c];
     }
   }
   KernelPlan plan;
   plan.terms.push_back(make_term(m.grid, h, a));
+  rank = std::clamp(rank, 1, n);
+  if (rank > 1) {
+    // The residual R − h aᵀ and its SVD; term k: √σ_k u_k horizontally, √σ_k v_k vertically.
+    ProfileMatrix residual = m;
+    for (std::size_t c = 0; c < 3; ++c) {
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) residual.cells[c][idx(i * n + j)] -= h[c][idx(i)] * a[c][idx(j)];
+      }
+    }
+    const auto svd = decompose_profile(residual);
+    for (int k = 0; k + 1 < rank; ++k) {
+      std::array<std::vector<double>, 3> hk, vk;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double root = std::sqrt(svd[c].singular_values[idx(k)]);
+        hk[c] = svd[c].u[idx(k)];
+        vk[c] = svd[c].v[idx(k)];
+        for (int i = 0; i < n; ++i) {
+          hk[c][idx(i)] *= root;
+          vk[c][idx(i)] *= root;
+        }
+      }
+      plan.terms.push_back(make_term(m.grid, hk, vk));
+    }
+  }
   plan.reach_mm = plan_reach_mm(plan);
   return plan;
 }

@@ -50,7 +50,12 @@ std::vector<double> low_rank_matrix(const ChannelSvd& svd, int rank, int n);
 
 // (e) Pre-integrated (S.5-S.6): a_p(x) = Σ_y R(x, y), the profile matrix's row sums, both ways,
 // divided once by ‖R‖₁. Exact for additively separable irradiance E1(x) + E2(y).
-KernelPlan preintegrated_plan(const ProfileMatrix& m);
+// rank > 1 adds the first rank − 1 terms of the SVD of the residual R − a_p a_pᵀ / ‖R‖₁ (ours, not
+// the supplementary's). The residual's rows and columns sum to 0, so its singular vectors do too:
+// the added terms move no light along either axis, and the kernel stays exact for additively
+// separable irradiance (a straight shadow edge along an axis) while its 2D shape, where light varies
+// both ways (a spot, a corner), comes closer to the profile's with each term.
+KernelPlan preintegrated_plan(const ProfileMatrix& m, int rank = 1);
 std::array<std::vector<double>, 3> preintegrated_taps(const ProfileMatrix& m);  // a_p per channel
 
 // (g) The artist-friendly model (supplementary §E): per channel a'(x) = w·G(x; τ_near) +

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "default_kernel_fit.hpp"
 #include "kernel_families.hpp"
 #include "separable_kernel.hpp"
 #include "radial_profile.hpp"
@@ -34,6 +35,16 @@ std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& request);
 // Whether two requests describe the same profile (every field make_profile reads).
 bool same_profile_request(const ProfileRequest& a, const ProfileRequest& b);
 
+inline ArtistModel calibrated_artist_model() {
+  ArtistModel m{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    m.near_variance_mm2[c] = kCalibratedNearVarianceMm2[c];
+    m.far_variance_mm2[c] = kCalibratedFarVarianceMm2[c];
+    m.near_weight[c] = kCalibratedNearWeight[c];
+  }
+  return m;
+}
+
 struct KernelRequest {
   KernelFamily family = KernelFamily::separable;
   int taps = 17;                 // per pass, odd
@@ -45,7 +56,10 @@ struct KernelRequest {
   std::array<float, 3> strength = kTable1Strength;  // separable
   std::array<float, 3> falloff = kTable1Falloff;
   double separable_scale = 1.0;  // separable: kernel millimetres per millimetre of surface
-  ArtistModel artist{{0.0484, 0.0484, 0.0484}, {1.99, 0.567, 0.567}, {0.5, 0.8, 0.9}};
+  // The artist model's defaults are its fit to d'Eon's skin (default_kernel_fit.hpp): the hand-set
+  // values it had before (near 0.0484 mm², far 1.99/0.567/0.567 mm², near weight .5/.8/.9) spread
+  // blue 14 times further from the exact result than doing nothing at 2 mm per pixel.
+  ArtistModel artist = calibrated_artist_model();
   ProfileRequest profile;
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 
 #include "kernel_families.hpp"
 #include "separable_kernel.hpp"
@@ -12,57 +11,20 @@ namespace sss::math {
 
 namespace {
 
-// Cell widths of taps sorted by offset: the distance between the midpoints to the neighbours; an
-// end tap's outer half mirrors its inner half (a single tap has no cell: 0).
-std::vector<float> cell_widths(const std::vector<KernelTap>& sorted) {
-  const std::size_t n = sorted.size();
-  std::vector<float> widths(n, 0.0f);
-  if (n < 2) return widths;
-  for (std::size_t i = 0; i < n; ++i) {
-    const float left = i > 0 ? 0.5f * (sorted[i].offset_mm - sorted[i - 1].offset_mm) : -1.0f;
-    const float right = i + 1 < n ? 0.5f * (sorted[i + 1].offset_mm - sorted[i].offset_mm) : -1.0f;
-    widths[i] = (left < 0.0f ? right : left) + (right < 0.0f ? left : right);
-  }
-  return widths;
-}
-
-PassTaps make_pass_taps(std::vector<KernelTap> taps, float jitter) {
+// The plan's taps of one pass, centre first (a zero-weight centre where the plan has none), then in
+// increasing offset: what sss_kernel_plan reports; the passes read the footprint table.
+PassTaps make_pass_taps(std::vector<KernelTap> taps) {
   std::stable_sort(taps.begin(), taps.end(),
                    [](const KernelTap& a, const KernelTap& b) { return a.offset_mm < b.offset_mm; });
-  const std::vector<float> widths = cell_widths(taps);
-  // The outermost round(jitter · n) taps, by |offset| (ties kept together: a symmetric kernel
-  // jitters both sides alike).
-  std::vector<float> jitter_mm(taps.size(), 0.0f);
-  const auto count = static_cast<std::size_t>(std::lround(static_cast<double>(jitter) * static_cast<double>(taps.size())));
-  if (count > 0) {
-    std::vector<std::size_t> order(taps.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return std::fabs(taps[a].offset_mm) > std::fabs(taps[b].offset_mm);
-    });
-    const float threshold = std::fabs(taps[order[std::min(count, order.size()) - 1]].offset_mm);
-    for (std::size_t i = 0; i < taps.size(); ++i) {
-      if (std::fabs(taps[i].offset_mm) >= threshold && taps[i].offset_mm != 0.0f) jitter_mm[i] = widths[i];
-    }
-  }
-  // Centre first: the tap at offset 0, or a zero-weight one.
   PassTaps out;
   auto centre = std::find_if(taps.begin(), taps.end(), [](const KernelTap& t) { return t.offset_mm == 0.0f; });
   if (centre == taps.end()) {
     out.taps.push_back(KernelTap{{0.0f, 0.0f, 0.0f}, 0.0f});
-    out.jitter_mm.push_back(0.0f);
   } else {
-    const auto at = static_cast<std::size_t>(centre - taps.begin());
     out.taps.push_back(*centre);
-    out.jitter_mm.push_back(0.0f);
     taps.erase(centre);
-    jitter_mm.erase(jitter_mm.begin() + static_cast<std::ptrdiff_t>(at));
   }
   out.taps.insert(out.taps.end(), taps.begin(), taps.end());
-  out.jitter_mm.insert(out.jitter_mm.end(), jitter_mm.begin(), jitter_mm.end());
-  if (std::all_of(out.jitter_mm.begin(), out.jitter_mm.end(), [](float w) { return w == 0.0f; })) {
-    out.jitter_mm.clear();
-  }
   return out;
 }
 
@@ -101,21 +63,21 @@ PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
   PassKernel k;
   for (const SeparableTerm& term : plan.terms) {
     PassTerm t;
-    t.horizontal = make_pass_taps(term.horizontal, jitter);
-    t.vertical = make_pass_taps(term.vertical, jitter);
+    t.horizontal = make_pass_taps(term.horizontal);
+    t.vertical = make_pass_taps(term.vertical);
     t.horizontal.footprint =
         term.horizontal_table.empty() ? footprint_table_from_taps(term.horizontal) : term.horizontal_table;
     t.vertical.footprint = term.vertical_table.empty() ? footprint_table_from_taps(term.vertical) : term.vertical_table;
     normalise_horizontal(&t);
     t.depth_variance_mm2 = term.depth_variance_mm2;
-    k.jittered = k.jittered || !t.horizontal.jitter_mm.empty() || !t.vertical.jitter_mm.empty();
     k.terms.push_back(std::move(t));
   }
   k.reach_mm = plan_reach_mm(plan);
-  k.footprint = !k.jittered;
   std::size_t most = 0;
   for (const SeparableTerm& term : plan.terms) most = std::max({most, term.horizontal.size(), term.vertical.size()});
-  k.spacing = footprint_spacing(std::min(static_cast<int>(most / 2), kMaxFootprintHalfTaps));
+  const int half = std::min(static_cast<int>(most / 2), kMaxFootprintHalfTaps);
+  k.spacing = footprint_spacing(half);
+  k.jitter_from = first_jittered_tap(jitter, half);
   return k;
 }
 

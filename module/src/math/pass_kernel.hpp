@@ -1,7 +1,7 @@
 // The kernel in the shape the passes consume (the GPU shader and its CPU model alike): a list of
-// separable terms, each tap list with the centre tap first (the shader weights the pixel's own
-// colour with it without a texture fetch), per-tap jitter widths, and each term's depth rule.
-// Built once from the settings, never per frame. Math layer: no GL.
+// separable terms, each pass's 1D kernel as a footprint table (footprint_kernel.hpp), the sparse tap
+// layout, which taps jitter, and each term's depth rule. Built once from the settings, never per
+// frame. Math layer: no GL.
 #pragma once
 
 #include <array>
@@ -14,11 +14,9 @@
 namespace sss::math {
 
 struct PassTaps {
-  // taps[0] has offset 0 (the centre); the others in increasing offset. Weights may be negative.
+  // The plan's taps: taps[0] has offset 0 (the centre); the others in increasing offset. Weights may
+  // be negative. What sss_kernel_plan reports; the passes read `footprint`.
   std::vector<KernelTap> taps;
-  // Per tap, in profile millimetres: the width of the cell the tap stands for when the tap is
-  // jittered (its position moves by (noise - 1/2) · width), 0 when it is not. Empty: no jitter.
-  std::vector<float> jitter_mm;
   // The pass's 1D kernel for the footprint-aware taps (footprint_kernel.hpp): the family's closed
   // form where it has one, else the taps above spread over their cells.
   FootprintTable footprint;
@@ -34,18 +32,18 @@ struct PassTerm {
 struct PassKernel {
   std::vector<PassTerm> terms;  // 1..SSS_KERNEL_MAX_TERMS
   float reach_mm = 0.0f;        // the largest |offset|: the follow-surface ramp's full blend
-  bool jittered = false;        // some tap has a jitter width
-  // Footprint-aware taps (footprint_kernel.hpp) run every kernel without jitter: each pixel's taps
-  // on whole pixels, weighed by its footprint, at most `spacing.size()` on either side. A jittered
-  // kernel runs its fixed tap lists (offsets scaled per pixel, read bilinearly), the paper's way.
-  bool footprint = false;
+  // Every pass runs footprint-aware taps (footprint_kernel.hpp): each pixel's taps on whole pixels,
+  // weighed by its footprint, at most `spacing.size()` on either side.
   std::vector<float> spacing;   // footprint_spacing(samples / 2)
+  // The first sparse tap that jitters within its cell (footprint_taps); kNoJitter: none.
+  int jitter_from = kNoJitter;
+  bool jittered() const { return jitter_from != kNoJitter; }
 };
 
 // Reorders each pass of `plan` centre first (a zero-weight centre tap is added when the plan has
-// no tap at offset 0), takes each pass's footprint table from the plan (or from its taps) and gives the outermost round(jitter · taps) taps of every pass (ties at equal
-// |offset| both in or both out) a jitter width: the distance between the midpoints to their
-// neighbours (the outer edge mirrors the inner one). jitter in [0, 1].
+// no tap at offset 0), takes each pass's footprint table from the plan (or from its taps), moves
+// each term's mass into its vertical pass and lets the outermost round(jitter · samples / 2) taps
+// on each side jitter (first_jittered_tap). jitter in [0, 1].
 PassKernel make_pass_kernel(const KernelPlan& plan, float jitter);
 
 // The kernel the settings describe: eq. (1) from samples, strength and falloff for the separable
@@ -59,7 +57,7 @@ bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b);
 
 // Deterministic per-pixel noise in [0, 1) for the jittered taps: an integer hash of the pixel and
 // the pass axis (0 horizontal, 1 vertical), exact in GLSL's 32-bit uint arithmetic too
-// (separable_blur.frag computes the same bits).
+// (separable_blur.frag and .comp compute the same bits).
 float jitter_noise(int x, int y, int axis);
 
 }  // namespace sss::math

@@ -1,0 +1,32 @@
+// Rounding to half float in the shader, before a pass writes a half-float target (u_round_to_half:
+// the RGBA16F intermediate, an RGBA16F host colour or output, the RGBA16F sum of terms on ES; a
+// uniform rather than a variant, so that no program is built twice for it).
+// GL leaves the rounding of a float stored into a half-float target to the implementation, and
+// llvmpipe (Mesa 22.3) rounds toward zero: every written value lost half a unit in the last place on
+// average, always downwards. Where a channel needs a change smaller than that (blue and green at 1-2
+// mm per pixel) that bias tripled its miss (the pre-integrated kernel's blue at 2 mm/px: 0.38 on the
+// CPU model, 1.16 on llvmpipe). A value rounded here is a half float already, which every
+// conversion stores exactly, so each driver writes what sss::math::round_to_half
+// (module/src/math/half_float.cpp) gives the CPU model: nearest, ties to even.
+uniform bool u_round_to_half;
+
+float sss_nearest_half(float x) {
+  float a = abs(x);
+  // Infinite, NaN, or past the largest half (65504 and its rounding margin): the conversion's own.
+  if (!(a < 65520.0)) return x;
+  float r;
+  if (a < 6.103515625e-05) {
+    // Below the smallest normal half the steps are 2^-24.
+    r = roundEven(a * 16777216.0) * (1.0 / 16777216.0);
+  } else {
+    // Normal: keep 10 of the 23 fraction bits, rounding the 13 dropped ones to nearest, ties to even.
+    uint bits = floatBitsToUint(a);
+    r = uintBitsToFloat((bits + 0x0FFFu + ((bits >> 13u) & 1u)) & 0xFFFFE000u);
+  }
+  // x's sign bit, so that -0 stays -0 (sign() would lose it).
+  return uintBitsToFloat(floatBitsToUint(r) | (floatBitsToUint(x) & 0x80000000u));
+}
+vec4 sss_nearest_half(vec4 v) {
+  if (!u_round_to_half) return v;
+  return vec4(sss_nearest_half(v.x), sss_nearest_half(v.y), sss_nearest_half(v.z), sss_nearest_half(v.w));
+}
