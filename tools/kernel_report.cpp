@@ -97,7 +97,8 @@ void calibrated_default_section(std::ostringstream& md) {
      << " row: its kernel family, and eq. (1)'s strength, falloff and\nseparable_scale, are these values "
         "(module/src/math/default_kernel_fit.hpp, generated with the expectation;\nbench.default_kernel_fit "
         "re-scores the default on every test run and fails if a score moves). Table 1 is\n"
-        "`sss_settings_separable_table1`. 'separable_scale' is kernel millimetres per millimetre of skin: the eq. (3)\n"
+        "`sss_settings_separable_table1`; the artist model's row is that family's defaults (`sss_kernel_desc`'s\n"
+        "near and far variance and near weight). 'separable_scale' is kernel millimetres per millimetre of skin: the eq. (3)\n"
         "fits at the top of this page move it with their grid; this one is measured where it matters, on what the\n"
         "filter outputs.\n";
 }

@@ -59,7 +59,7 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 #elif SSS_OUTSIDE == 1
   discard;
 #else
-  o_color = sss_nearest_half(texelFetch(u_original, pixel, 0));
+  o_color = texelFetch(u_original, pixel, 0);
 #endif
 }
 

@@ -10,23 +10,17 @@
 // (module/src/math/half_float.cpp) gives the CPU model: nearest, ties to even.
 uniform bool u_round_to_half;
 
-float sss_nearest_half(float x) {
-  float a = abs(x);
-  // Infinite, NaN, or past the largest half (65504 and its rounding margin): the conversion's own.
-  if (!(a < 65520.0)) return x;
-  float r;
-  if (a < 6.103515625e-05) {
-    // Below the smallest normal half the steps are 2^-24.
-    r = roundEven(a * 16777216.0) * (1.0 / 16777216.0);
-  } else {
-    // Normal: keep 10 of the 23 fraction bits, rounding the 13 dropped ones to nearest, ties to even.
-    uint bits = floatBitsToUint(a);
-    r = uintBitsToFloat((bits + 0x0FFFu + ((bits >> 13u) & 1u)) & 0xFFFFE000u);
-  }
-  // x's sign bit, so that -0 stays -0 (sign() would lose it).
-  return uintBitsToFloat(floatBitsToUint(r) | (floatBitsToUint(x) & 0x80000000u));
-}
 vec4 sss_nearest_half(vec4 v) {
   if (!u_round_to_half) return v;
-  return vec4(sss_nearest_half(v.x), sss_nearest_half(v.y), sss_nearest_half(v.z), sss_nearest_half(v.w));
+  // Branch-free on all four components (a GPU, or llvmpipe's SIMD lanes, would run every branch).
+  // Normal halves: keep 10 of the 23 fraction bits, rounding the 13 dropped ones to nearest, ties to
+  // even; the sign bit stays as it is, so -0 stays -0, and a carry into the exponent is the rounding.
+  uvec4 bits = floatBitsToUint(v);
+  vec4 normal = uintBitsToFloat((bits + 0x0FFFu + ((bits >> 13u) & 1u)) & 0xFFFFE000u);
+  // Below the smallest normal half (2^-14) the steps are 2^-24 (roundEven keeps the sign).
+  vec4 subnormal = roundEven(v * 16777216.0) * (1.0 / 16777216.0);
+  vec4 a = abs(v);
+  vec4 rounded = mix(normal, subnormal, lessThan(a, vec4(6.103515625e-05)));
+  // Infinite, NaN, or past the largest half (65504 and its rounding margin): the conversion's own.
+  return mix(v, rounded, lessThan(a, vec4(65520.0)));
 }

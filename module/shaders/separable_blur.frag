@@ -108,7 +108,7 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 #elif SSS_OUTSIDE == 1
   discard;
 #else
-  o_color = sss_nearest_half(texelFetch(u_original, pixel, 0));
+  o_color = texelFetch(u_original, pixel, 0);
 #endif
 }
 
@@ -143,11 +143,21 @@ void main() {
   float noise = jitter_noise(pixel, u_axis.y > 0.5 ? 1 : 0);
   float inner = 0.0;
 #endif
+  // Without taps the whole kernel stays on the centre. With taps the centre keeps the kernel out to
+  // the midpoint to the first tap, set in the loop's first step: a pixel with no tap (most of a
+  // frame: not translucent, or a kernel inside its pixel) then looks nothing up, even where the
+  // hardware runs a whole group of pixels through every branch (llvmpipe does, but skips a loop no
+  // pixel of the group enters).
   vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
-  float p = count > 0 ? tap_position(1, 0.0, dense, reach_pixels) : 0.0;
-  vec3 below = count > 0 ? half_cdf(0.5 * p / step_pixels) : total;
-  vec3 sum = centre.rgb * (2.0 * below + u_footprint.yzw);
+  vec3 sum = centre.rgb * (2.0 * total + u_footprint.yzw);
+  vec3 below = total;
+  float p = 0.0;
   for (int i = 1; i <= count; ++i) {
+    if (i == 1) {
+      p = tap_position(1, 0.0, dense, reach_pixels);
+      below = half_cdf(0.5 * p / step_pixels);
+      sum = centre.rgb * (2.0 * below + u_footprint.yzw);
+    }
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
     vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
     float read = p;
