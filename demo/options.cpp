@@ -108,7 +108,8 @@ void print_usage(const char *program) {
       "                      pass, no SSS pass) | auto (pre-integrated when a mm of skin is < 0.5 pixel)\n"
       "  --cross-bilateral   Mikkelsen's cross-bilateral mode instead of the separable kernel\n"
       "  --kernel NAME[:N]   the separable mode's kernel family: separable (eq. 1, default), sum-of-gaussians:N,\n"
-      "                      svd:N (N terms, 1..6, two passes each), preintegrated, guided, artist\n"
+      "                      svd:N (N terms, 1..6, two passes each), preintegrated[:N] (N - 1 terms of the\n"
+      "                      residual's SVD beside the marginal), guided, artist\n"
       "  --material NAME     the profile of those families: skin (default), apple, chicken1, chicken2, cream,\n"
       "                      ketchup, marble, potato, skimmilk, skin1, skin2, wholemilk\n"
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
@@ -261,7 +262,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       case kHelp: return ParseResult::kHelp;
       case kCrossBilateral: o->cross_bilateral = true; break;
       case kKernel: ok = parse_kernel(optarg, o) || fail("--kernel wants separable, sum-of-gaussians[:N], svd[:N], "
-                                                        "preintegrated, guided or artist (N in 1..6)", optarg);
+                                                        "preintegrated[:N], guided or artist (N in 1..6)", optarg);
         break;
       case kMaterial: {
         o->material = -1;

@@ -52,7 +52,8 @@ void sss_section(WindowState *s) {
                                           "SVD rank N", "pre-integrated (exact for E1(x) + E2(y))",
                                           "guided rank-1 fit (k = 1.55)", "artist two-Gaussian, exact depth"};
   ImGui::Combo("kernel family", &c.kernel_family, kFamilies, SSS_KERNEL_FAMILY_COUNT);
-  if (c.kernel_family == SSS_KERNEL_SUM_OF_GAUSSIANS || c.kernel_family == SSS_KERNEL_SVD) {
+  if (c.kernel_family == SSS_KERNEL_SUM_OF_GAUSSIANS || c.kernel_family == SSS_KERNEL_SVD ||
+      c.kernel_family == SSS_KERNEL_PREINTEGRATED) {
     ImGui::SliderInt("terms (2 passes each)", &c.kernel_rank, 1, SSS_KERNEL_MAX_TERMS);
   }
   if (c.kernel_family != SSS_KERNEL_SEPARABLE && c.kernel_family != SSS_KERNEL_ARTIST) {

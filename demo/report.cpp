@@ -64,7 +64,8 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
                                          "artist two-Gaussian"};
     const bool profiled = s.kernel.family != SSS_KERNEL_SEPARABLE && s.kernel.family != SSS_KERNEL_ARTIST;
     std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", kNames[s.kernel.family % 6],
-                  s.kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || s.kernel.family == SSS_KERNEL_SVD
+                  s.kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || s.kernel.family == SSS_KERNEL_SVD ||
+                          s.kernel.family == SSS_KERNEL_PREINTEGRATED
                       ? (" rank " + std::to_string(s.kernel.rank)).c_str()
                       : "",
                   profiled ? " of " : "", profiled ? sss_material_name(s.kernel.profile.material) : "",

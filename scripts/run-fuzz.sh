@@ -34,23 +34,31 @@ cmake --build "$build" --target sss_fuzzers --parallel "$(nproc)"
 
 mkdir -p "$build/artifacts"
 : >"$build/summary.txt"
-status=0
-for target in validation kernel cpu_model; do
-  corpus="$build/corpus/$target"
+# Each target runs on one core (libFuzzer without -jobs is one process), so as many run side by side
+# as the machine has cores, each for the whole $seconds.
+fuzz_one() {  # target
+  local target=$1 corpus="$build/corpus/$1" log="$build/$1.log" rc=0
   rm -rf "$corpus"
   mkdir -p "$corpus"
   cp tests/fuzz/corpus/"$target"/* "$corpus"/
-  log="$build/$target.log"
-  rc=0
   "$build/tests/fuzz/sss_fuzz_$target" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$build/artifacts/$target-" "$corpus" >"$log" 2>&1 || rc=$?
+  local execs files
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   files=$(find "$corpus" -type f | wc -l)
   echo "fuzz $target: exit $rc, ${execs:-0} executions in $seconds s, corpus $files inputs ($log)"
   echo "$target ${execs:-0} $seconds $files $rc" >>"$build/summary.txt"
   if [[ $rc -ne 0 ]]; then
-    status=1
     grep -E 'invariant violated|ERROR|runtime error|SUMMARY' "$log" | head -5 >&2 || true
   fi
+}
+for target in validation kernel cpu_model; do
+  while [[ $(jobs -rp | wc -l) -ge $(nproc) ]]; do wait -n || true; done
+  fuzz_one "$target" &
 done
+wait
+status=0
+while read -r _ _ _ _ rc; do
+  if [[ $rc -ne 0 ]]; then status=1; fi
+done <"$build/summary.txt"
 exit $status

@@ -60,8 +60,9 @@ sss_result query(sss_context* ctx, const sss_frame& frame, gl::GLuint name, cons
 }
 
 // OpenGL ES: what the formats need beyond ES 3.0 (the intermediate's EXT_color_buffer_half_float
-// or _float is checked at create). RGBA32F colour is sampled bilinearly and rendered to; RGBA32F
-// output is rendered to; depth is never filtered by the GL there (the shader does it).
+// or _float is checked at create). RGBA32F colour is read through the module's GL_LINEAR sampler
+// (a texture that format cannot filter would be incomplete, even for texelFetch) and rendered to;
+// RGBA32F output is rendered to; depth is only fetched, through a GL_NEAREST sampler.
 sss_result check_es_format(sss_context* ctx, const char* role, const gl::TextureInfo& t, bool sampled_linear) {
   if (!ctx->gl.api.es || t.internal_format != static_cast<gl::GLint>(gl::RGBA32F)) return SSS_OK;
   if (!ctx->es_float_render) {

@@ -1,7 +1,7 @@
 // The GLSL dialect the shaders are compiled in, chosen at create time from the context's API:
 // GLSL 3.30 core (OpenGL 3.3..4.1), GLSL 4.20 core (OpenGL 4.2+: sampler units fixed in the
 // shader with layout(binding), so no glUniform1i per sampler) and GLSL ES 3.00 (OpenGL ES 3.x:
-// precision qualifiers, and depth filtered by hand because ES cannot filter depth textures).
+// precision qualifiers; the passes only fetch whole texels, so nothing relies on filtering depth).
 #pragma once
 
 #include <string>

@@ -59,7 +59,7 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
 
   // Samplers: bilinear, clamped, no depth comparison (they override whatever parameters the host
   // set on its own textures, which the module never changes). The depth unit has its own: on ES a
-  // depth texture is incomplete unless sampled GL_NEAREST (the shader filters depth by hand there).
+  // depth texture is incomplete unless sampled GL_NEAREST (the passes only fetch whole texels).
   GLuint samplers[2] = {0, 0};
   f.GenSamplers(2, samplers);
   sampler_ = samplers[0];

@@ -62,8 +62,8 @@ struct PassConstants {
   float mm_per_world = 0.0f;
   // Projection elements the depth linearisation uses: m10, m11, m14, m15.
   std::array<float, 4> depth_terms = {0.0f, 0.0f, 0.0f, 0.0f};
-  // Tap positions (pixel coordinates, texel centres at +0.5) are clamped to this box, so bilinear
-  // taps never read outside the viewport.
+  // Tap positions (pixel coordinates, texel centres at +0.5) are clamped to this box, so taps never
+  // read outside the viewport.
   std::array<float, 2> clamp_min = {0.0f, 0.0f}, clamp_max = {0.0f, 0.0f};
   bool linear_depth = false;
 };
