@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
 
 #include "api/validation.hpp"
 #include "math/cpu_cbf_filter.hpp"
@@ -38,6 +41,18 @@ RoundingAgreement rounding_agreement(const FilterOutcome& o) {
     a.mean_relative_difference = sum / static_cast<double>(a.values);
   }
   return a;
+}
+
+void expect_half_rounding_like_the_cpu_model(const FilterOutcome& o, const char* what, bool bit_exact) {
+  ASSERT_EQ(o.result, SSS_OK) << what;
+  const RoundingAgreement a = rounding_agreement(o);
+  std::printf("%s: %zu changed values, %.4f equal to the CPU model, mean relative difference %.3g\n", what, a.values,
+              a.equal_share, a.mean_relative_difference);
+  ASSERT_GT(a.values, 1000u) << what;
+  if (bit_exact) {
+    EXPECT_GE(a.equal_share, 0.999) << what;
+  }
+  EXPECT_LE(std::fabs(a.mean_relative_difference), 1e-5) << what;
 }
 
 sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {

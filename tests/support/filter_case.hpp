@@ -54,6 +54,10 @@ struct RoundingAgreement {
   std::size_t values = 0;
 };
 RoundingAgreement rounding_agreement(const FilterOutcome& o);
+// Prints `what`'s agreement and checks it: at least 1,000 changed values, no bias (|mean| <= 1e-5,
+// a twentieth of what truncation leaves), and, where every rounding is into half floats on both
+// sides (`bit_exact`), at least 99.9 % of the values equal bit for bit.
+void expect_half_rounding_like_the_cpu_model(const FilterOutcome& o, const char* what, bool bit_exact);
 
 // The kernel the settings select (settings.kernel with samples, strength, falloff), from the public
 // sss_kernel_plan: what the CPU model runs.
