@@ -17,6 +17,8 @@ namespace {
 using sss::math::FootprintTable;
 using sss::math::FootprintTaps;
 
+std::size_t idx(int i) { return static_cast<std::size_t>(i); }
+
 // Every family's kernel at 17 taps (and the sum of Gaussians at 65).
 std::vector<sss::math::PassKernel> every_family() {
   std::vector<sss::math::PassKernel> out;
@@ -94,6 +96,46 @@ TEST(FootprintKernel, TapsSitOnWholeDistinctPixelsWithinTheBudget) {
       }
     }
   }
+}
+
+// Jitter moves a spread-out tap to a pixel of its own cell (between the midpoints to its neighbours;
+// the outermost one's cell mirrored) and changes no weight; where every pixel has its tap, and for
+// taps inside the jittered share's complement, nothing moves.
+TEST(FootprintKernel, JitterReadsAPixelOfTheTapsOwnCellAndKeepsTheWeights) {
+  sss::math::FilterSettings s;
+  const sss::math::PassKernel kernel = sss::math::build_pass_kernel(s);
+  const int half = static_cast<int>(kernel.spacing.size());
+  const int from = sss::math::first_jittered_tap(0.33f, half);
+  ASSERT_EQ(from, half - static_cast<int>(std::lround(0.33 * half)) + 1);
+  EXPECT_EQ(sss::math::first_jittered_tap(0.0f, half), sss::math::kNoJitter);
+  EXPECT_EQ(sss::math::first_jittered_tap(1.0f, half), 1);
+  const auto& table = kernel.terms[0].horizontal.footprint;
+  int moved = 0;
+  for (float step : steps()) {
+    const FootprintTaps plain = sss::math::footprint_taps(table, kernel.spacing, step);
+    const bool sparse = table.reach_mm * step > static_cast<float>(half) + 0.5f;
+    for (int jitter_from : {from, 1}) {
+      for (float noise : {0.0f, 0.3f, 0.5f, 0.999f}) {
+        const FootprintTaps jittered = sss::math::footprint_taps(table, kernel.spacing, step, jitter_from, noise);
+        ASSERT_EQ(jittered.count, plain.count);
+        for (int i = 0; i <= plain.count; ++i) EXPECT_EQ(jittered.weight[idx(i)], plain.weight[idx(i)]);
+        for (int i = 1; i <= plain.count; ++i) {
+          const int p = plain.position[idx(i - 1)], q = jittered.position[idx(i - 1)];
+          if (!sparse || i < jitter_from) {
+            EXPECT_EQ(q, p) << "step " << step << " tap " << i;
+            continue;
+          }
+          const int inner = i > 1 ? plain.position[idx(i - 2)] : 0;
+          const int lo = (inner + p) / 2 + 1;
+          const int hi = i < plain.count ? (p + plain.position[idx(i)]) / 2 : 2 * p - lo;
+          EXPECT_GE(q, lo) << "step " << step << " tap " << i << " noise " << noise;
+          EXPECT_LE(q, hi) << "step " << step << " tap " << i << " noise " << noise;
+          moved += q != p;
+        }
+      }
+    }
+  }
+  EXPECT_GT(moved, 0);  // the noise moves taps somewhere on the sweep, or this proves nothing
 }
 
 TEST(FootprintKernel, AKernelInsideItsPixelLeavesThePixelAlone) {
