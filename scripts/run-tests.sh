@@ -3,8 +3,11 @@
 # warnings as errors, runs every ctest suite (GL tests once on OSMesa and once on EGL surfaceless),
 # builds and runs the consumer projects against static and shared installs (check-consumers.sh),
 # runs a bounded selection under valgrind memcheck (run-valgrind.sh), then builds again with
-# AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again, and runs each libFuzzer
-# target for 20 s (run-fuzz.sh; needs clang). --no-sanitizers skips the last three.
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again (its benchmark run reduced,
+# its report checks and the shader validation left to the release suite: tests/bench/CMakeLists.txt,
+# tests/CMakeLists.txt), and runs each libFuzzer target for 20 s (run-fuzz.sh; needs clang).
+# --no-sanitizers skips the last three. Valgrind's runs and the fuzz targets go side by side, one
+# per core.
 #
 #   scripts/run-tests.sh [--no-sanitizers]
 #
