@@ -144,10 +144,8 @@ void main() {
   float inner = 0.0;
 #endif
   // Without taps the whole kernel stays on the centre. With taps the centre keeps the kernel out to
-  // the midpoint to the first tap, set in the loop's first step: a pixel with no tap (most of a
-  // frame: not translucent, or a kernel inside its pixel) then looks nothing up, even where the
-  // hardware runs a whole group of pixels through every branch (llvmpipe does, but skips a loop no
-  // pixel of the group enters).
+  // the midpoint to the first tap, set in the loop's first step, so a pixel with no tap (a kernel
+  // inside its pixel) looks nothing up.
   vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
   vec3 sum = centre.rgb * (2.0 * total + u_footprint.yzw);
   vec3 below = total;
