@@ -12,7 +12,7 @@ uniform bool u_round_to_half;
 
 vec4 sss_nearest_half(vec4 v) {
   if (!u_round_to_half) return v;
-  // Branch-free on all four components (a GPU, or llvmpipe's SIMD lanes, would run every branch).
+  // Branch-free on all four components at once (no per-channel branch for a SIMD group to diverge on).
   // Normal halves: keep 10 of the 23 fraction bits, rounding the 13 dropped ones to nearest, ties to
   // even; the sign bit stays as it is, so -0 stays -0, and a carry into the exponent is the rounding.
   uvec4 bits = floatBitsToUint(v);
