@@ -99,8 +99,8 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   label_object(f, labels_, PROGRAM, copy_program_, "sss copy");
 
   // The variants every host uses (write back, follow-surface, hardware depth: the default kernel's)
-  // are built now so a driver that cannot compile them fails in sss_create
-  // rather than in the first frame.
+  // are built now, so a driver that cannot compile them fails in sss_create rather than in the first
+  // frame.
   BlurProgram* unused = nullptr;
   BlurVariant common;
   common.follow_surface = 1;
@@ -197,7 +197,7 @@ SeparableFilter::BlurVariant SeparableFilter::blur_variant(const FilterRun& run,
 bool SeparableFilter::writes_half_float(const FilterRun& run, std::size_t term, int axis) const {
   if (axis == 0) return true;
   const std::size_t terms = run.cross_bilateral ? 1 : run.kernel->terms.size();
-  if (term + 1 < terms) return variant_ == GlslVariant::essl300;
+  if (term + 1 < terms) return accumulators_are_half();
   const TextureInfo& target = run.output.name != 0 ? run.output : run.color;
   return target.internal_format == static_cast<GLint>(RGBA16F);
 }
@@ -412,9 +412,7 @@ sss_result SeparableFilter::ensure_intermediate(int width, int height, std::stri
 sss_result SeparableFilter::ensure_accumulators(int width, int height, std::string* message) {
   if (accumulators_[1] != 0 && accumulator_width_ == width && accumulator_height_ == height) return SSS_OK;
   accumulator_width_ = accumulator_height_ = 0;
-  // RGBA32F keeps the sum of up to six terms at float precision; OpenGL ES may not render to it
-  // (GL_EXT_color_buffer_float), while every ES context the module accepts renders RGBA16F.
-  const bool es = gl_->api.es;
+  const bool es = accumulators_are_half();
   for (GLuint& t : accumulators_) {
     const sss_result r = allocate_target(&t, es ? RGBA16F : RGBA32F, es ? HALF_FLOAT : FLOAT, width, height,
                                          es ? "RGBA16F sum of the kernel's terms" : "RGBA32F sum of the kernel's terms",

@@ -180,6 +180,10 @@ class SeparableFilter {
   // the driver's conversion does: horizontal passes write the RGBA16F intermediate, vertical ones the
   // sum of terms (RGBA32F; RGBA16F on ES) or, the last, the host's colour or output.
   bool writes_half_float(const FilterRun& run, std::size_t term, int axis) const;
+  // The sum of the kernel's terms: RGBA32F keeps up to six terms at float precision, but OpenGL ES
+  // may not render to it (GL_EXT_color_buffer_float), while every ES context the module accepts
+  // renders RGBA16F.
+  bool accumulators_are_half() const { return gl_->api.es; }
   sss_result run_cbf(const FilterRun& run, std::string* message);
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
   void draw_cbf(CbfProgram& program, const FilterRun& run, GLuint source, int axis);
