@@ -128,8 +128,8 @@ std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::ui
   return h;
 }
 
-// The textures, as the GL describes them, against the lists in sss.h.
-sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
+// The colour and depth textures, as the GL describes them, against the lists in sss.h.
+sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
   if (r != SSS_OK) return r;
   if (!gl::is_color_format(run->color.internal_format)) {
@@ -147,14 +147,18 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   }
   r = same_size(ctx, "depth_texture", run->depth, run->color);
   if (r == SSS_OK) r = same_samples(ctx, "depth_texture", run->depth, run->color);
-  if (r == SSS_OK) {
-    // Linear depth (R16F/R32F) is a colour format to the GL.
-    const bool linear = gl::is_linear_depth_format(run->depth.internal_format);
-    r = supported_samples(ctx, "depth_texture", run->depth,
-                          linear ? gl::MAX_COLOR_TEXTURE_SAMPLES : gl::MAX_DEPTH_TEXTURE_SAMPLES,
-                          linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
-  }
   if (r != SSS_OK) return r;
+  // Linear depth (R16F/R32F) is a colour format to the GL.
+  const bool linear = gl::is_linear_depth_format(run->depth.internal_format);
+  return supported_samples(ctx, "depth_texture", run->depth,
+                           linear ? gl::MAX_COLOR_TEXTURE_SAMPLES : gl::MAX_DEPTH_TEXTURE_SAMPLES,
+                           linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
+}
+
+// The optional textures: a separate output, the host's stencil, the normals.
+sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run,
+                                   gl::StencilInput* stencil) {
+  sss_result r = SSS_OK;
   if (frame.output_texture != 0) {
     r = query(ctx, frame, frame.output_texture, "output_texture", "output_format", frame.output_format, &run->output);
     if (r != SSS_OK) return r;
@@ -167,8 +171,7 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
                   "multisampled colour)", run->output.name, gl::describe_target(run->output).c_str());
     }
     r = check_es_format(ctx, "output_texture", run->output, false);
-    if (r != SSS_OK) return r;
-    r = same_size(ctx, "output_texture", run->output, run->color);
+    if (r == SSS_OK) r = same_size(ctx, "output_texture", run->output, run->color);
     if (r != SSS_OK) return r;
   }
   if (frame.stencil != nullptr) {
@@ -193,10 +196,13 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
       return wrong_format(ctx, "normal_texture", run->normals, "GL_RGBA16F or GL_RGBA32F");
     }
     r = check_es_format(ctx, "normal_texture", run->normals, false);
-    if (r != SSS_OK) return r;
-    r = same_size(ctx, "normal_texture", run->normals, run->color);
-    if (r != SSS_OK) return r;
+    if (r == SSS_OK) r = same_size(ctx, "normal_texture", run->normals, run->color);
   }
+  return r;
+}
+
+// The viewport (0 width: the whole colour texture) and the host's region inside it.
+sss_result frame_rectangles(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   const int32_t* vp = frame.viewport;
   if (vp[2] == 0) {
     run->viewport = {0, 0, run->color.width, run->color.height};
@@ -221,6 +227,13 @@ sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRu
     run->region = true;
   }
   return SSS_OK;
+}
+
+// The textures, as the GL describes them, against the lists in sss.h, and the frame's rectangles.
+sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
+  sss_result r = query_color_and_depth(ctx, frame, run);
+  if (r == SSS_OK) r = query_optional_textures(ctx, frame, run, stencil);
+  return r == SSS_OK ? frame_rectangles(ctx, frame, run) : r;
 }
 
 sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint32_t frame_flags) {

@@ -57,13 +57,7 @@ sss_result check_version(sss_context* ctx, sss_get_proc_address_fn get_proc_addr
   return SSS_OK;
 }
 
-}  // namespace
-
-extern "C" {
-
-SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
-  if (out == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out is NULL");
-  *out = nullptr;
+sss_result check_create_desc(const sss_create_desc* desc) {
   if (desc == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
   if (desc->struct_size != sizeof(sss_create_desc)) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_create_desc) = %u",
@@ -74,6 +68,62 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", desc->flags,
                 desc->flags & ~SSS_CREATE_ALL_FLAGS);
   }
+  return SSS_OK;
+}
+
+// ES 3.0 cannot render to RGBA16F (the intermediate target) without one of the colour-buffer
+// extensions; float filtering decides which host formats can be sampled bilinearly.
+sss_result check_es_float_targets(sss_context* ctx, const gl::Api& api) {
+  const gl::Functions& f = ctx->gl;
+  ctx->es_float_render = has_extension(f, "GL_EXT_color_buffer_float");
+  if (!ctx->es_float_render && !has_extension(f, "GL_EXT_color_buffer_half_float")) {
+    return fail(nullptr, SSS_ERROR_UNSUPPORTED,
+                "OpenGL ES %d.%d without GL_EXT_color_buffer_float (or GL_EXT_color_buffer_half_float): the "
+                "RGBA16F intermediate target cannot be rendered to",
+                api.major, api.minor);
+  }
+  ctx->es_float_linear = has_extension(f, "GL_OES_texture_float_linear");
+  return SSS_OK;
+}
+
+// What sss_create found: the GL, the dialect, what the guard and the stats can do (INFO and DEBUG).
+void log_created(sss_context* ctx, const gl::Api& api, gl::GlslVariant variant, const std::string& renderer_name,
+                 bool software_renderer) {
+  const gl::Functions& f = ctx->gl;
+  char info[320];
+  std::snprintf(info, sizeof info, "sss %d.%d.%d on OpenGL %s%d.%d, %s: shaders in %s%s", SSS_VERSION_MAJOR,
+                SSS_VERSION_MINOR, SSS_VERSION_PATCH, api.es ? "ES " : "", ctx->gl_major, ctx->gl_minor,
+                renderer_name.empty() ? "(unknown renderer)" : renderer_name.c_str(), gl::glsl_variant_name(variant),
+                f.has_debug ? ", KHR_debug" : "");
+  sss::api::log(ctx, SSS_LOG_INFO, info);
+  std::snprintf(info, sizeof info,
+                "sss_create: texture formats %s; state guard for %s; ES float targets %s, float filtering %s",
+                f.has_texture_query ? "asked of the GL" : "taken from sss_frame (no glGetTexLevelParameteriv)",
+                api.es ? "OpenGL ES (no polygon mode, depth clamp, logic op, clip distances, sRGB enable)"
+                       : "desktop GL",
+                api.es ? (ctx->es_float_render ? "yes" : "RGBA16F only") : "n/a",
+                api.es ? (ctx->es_float_linear ? "yes" : "no") : "n/a");
+  sss::api::log(ctx, SSS_LOG_DEBUG, info);
+  if ((ctx->create_flags & SSS_CREATE_STATS) != 0) {
+    const gl::PassQueries& q = ctx->filter.queries();
+    std::snprintf(info, sizeof info, "sss_create: stats on: pixel counts %s, GPU timer %s",
+                  q.pixels_supported() ? "yes" : "no (OpenGL ES has no sample count)",
+                  q.timing_supported() ? "yes"
+                  : software_renderer  ? "no (a software rasteriser: its GL_TIME_ELAPSED covers one tile)"
+                                       : "no (no timer queries with counter bits)");
+    sss::api::log(ctx, SSS_LOG_INFO, info);
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
+  if (out == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out is NULL");
+  *out = nullptr;
+  sss_result r = check_create_desc(desc);
+  if (r != SSS_OK) return r;
 
   std::unique_ptr<sss_context> ctx(new (std::nothrow) sss_context);
   if (!ctx) return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "allocating the context failed");
@@ -81,7 +131,7 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
   ctx->log_user = desc->log_user;
   ctx->create_flags = desc->flags;
 
-  sss_result r = check_version(ctx.get(), desc->get_proc_address, desc->get_proc_address_user);
+  r = check_version(ctx.get(), desc->get_proc_address, desc->get_proc_address_user);
   if (r != SSS_OK) return r;
   gl::Api api;
   api.es = ctx->gl_es;
@@ -98,15 +148,8 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
                 (debug_core || has_extension(f, "GL_KHR_debug"));
   const bool labels = (desc->flags & SSS_CREATE_NO_DEBUG_LABELS) == 0;
   if (api.es) {
-    // ES 3.0 cannot render to RGBA16F (the intermediate target) without one of these.
-    ctx->es_float_render = has_extension(f, "GL_EXT_color_buffer_float");
-    if (!ctx->es_float_render && !has_extension(f, "GL_EXT_color_buffer_half_float")) {
-      return fail(nullptr, SSS_ERROR_UNSUPPORTED,
-                  "OpenGL ES %d.%d without GL_EXT_color_buffer_float (or GL_EXT_color_buffer_half_float): the "
-                  "RGBA16F intermediate target cannot be rendered to",
-                  api.major, api.minor);
-    }
-    ctx->es_float_linear = has_extension(f, "GL_OES_texture_float_linear");
+    r = check_es_float_targets(ctx.get(), api);
+    if (r != SSS_OK) return r;
   }
   const gl::GlslVariant variant = gl::choose_glsl_variant(api);
   const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
@@ -137,29 +180,7 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
   }
   ctx->kernel = sss::math::build_pass_kernel(ctx->settings);
   sss_default_kernel_desc(&ctx->kernel_desc);
-  char info[320];
-  std::snprintf(info, sizeof info, "sss %d.%d.%d on OpenGL %s%d.%d, %s: shaders in %s%s", SSS_VERSION_MAJOR,
-                SSS_VERSION_MINOR, SSS_VERSION_PATCH, api.es ? "ES " : "", ctx->gl_major, ctx->gl_minor,
-                renderer_name.empty() ? "(unknown renderer)" : renderer_name.c_str(), gl::glsl_variant_name(variant),
-                f.has_debug ? ", KHR_debug" : "");
-  sss::api::log(ctx.get(), SSS_LOG_INFO, info);
-  std::snprintf(info, sizeof info,
-                "sss_create: texture formats %s; state guard for %s; ES float targets %s, float filtering %s",
-                f.has_texture_query ? "asked of the GL" : "taken from sss_frame (no glGetTexLevelParameteriv)",
-                api.es ? "OpenGL ES (no polygon mode, depth clamp, logic op, clip distances, sRGB enable)"
-                       : "desktop GL",
-                api.es ? (ctx->es_float_render ? "yes" : "RGBA16F only") : "n/a",
-                api.es ? (ctx->es_float_linear ? "yes" : "no") : "n/a");
-  sss::api::log(ctx.get(), SSS_LOG_DEBUG, info);
-  if ((desc->flags & SSS_CREATE_STATS) != 0) {
-    const gl::PassQueries& q = ctx->filter.queries();
-    std::snprintf(info, sizeof info, "sss_create: stats on: pixel counts %s, GPU timer %s",
-                  q.pixels_supported() ? "yes" : "no (OpenGL ES has no sample count)",
-                  q.timing_supported() ? "yes"
-                  : software_renderer  ? "no (a software rasteriser: its GL_TIME_ELAPSED covers one tile)"
-                                       : "no (no timer queries with counter bits)");
-    sss::api::log(ctx.get(), SSS_LOG_INFO, info);
-  }
+  log_created(ctx.get(), api, variant, renderer_name, software_renderer);
   *out = ctx.release();
   return SSS_OK;
 }

@@ -101,6 +101,29 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
 
 namespace {
 
+// The LUT generated on the CPU into the bound texture. The host's unpack parameters would reshape
+// the upload: tight rows are set, and the host's put back after.
+void upload(const gl::Functions& f, const sss_lut_desc& desc, gl::GLint format, const std::vector<float>& values) {
+  const gl::GLenum params[4] = {gl::UNPACK_ALIGNMENT, gl::UNPACK_ROW_LENGTH, gl::UNPACK_SKIP_ROWS,
+                                gl::UNPACK_SKIP_PIXELS};
+  gl::GLint saved[4] = {4, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) f.GetIntegerv(params[i], &saved[i]);
+  f.PixelStorei(gl::UNPACK_ALIGNMENT, 4);
+  f.PixelStorei(gl::UNPACK_ROW_LENGTH, 0);
+  f.PixelStorei(gl::UNPACK_SKIP_ROWS, 0);
+  f.PixelStorei(gl::UNPACK_SKIP_PIXELS, 0);
+  if (desc.format == SSS_LUT_FORMAT_RGBA8) {
+    std::vector<unsigned char> bytes(values.size());
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      bytes[i] = static_cast<unsigned char>(std::lround(std::clamp(values[i], 0.0f, 1.0f) * 255.0f));
+    }
+    f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, gl::UNSIGNED_BYTE, bytes.data());
+  } else {
+    f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, gl::FLOAT, values.data());
+  }
+  for (int i = 0; i < 4; ++i) f.PixelStorei(params[i], saved[i]);
+}
+
 // Generates the LUT into a new texture. On failure nothing is left in the GL.
 sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& desc, const std::string& values_key,
                         const std::string& key, gl::GLuint* out) {
@@ -145,25 +168,7 @@ sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& des
   const gl::GLint format = internal_format(desc.format);
   sss_result r = SSS_OK;
   if (on_cpu) {
-    // The host's unpack parameters would reshape the upload: set tight rows, restore after.
-    const gl::GLenum params[4] = {gl::UNPACK_ALIGNMENT, gl::UNPACK_ROW_LENGTH, gl::UNPACK_SKIP_ROWS,
-                                  gl::UNPACK_SKIP_PIXELS};
-    gl::GLint saved[4] = {4, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) f.GetIntegerv(params[i], &saved[i]);
-    f.PixelStorei(gl::UNPACK_ALIGNMENT, 4);
-    f.PixelStorei(gl::UNPACK_ROW_LENGTH, 0);
-    f.PixelStorei(gl::UNPACK_SKIP_ROWS, 0);
-    f.PixelStorei(gl::UNPACK_SKIP_PIXELS, 0);
-    if (desc.format == SSS_LUT_FORMAT_RGBA8) {
-      std::vector<unsigned char> bytes(data->size());
-      for (std::size_t i = 0; i < bytes.size(); ++i) {
-        bytes[i] = static_cast<unsigned char>(std::lround(std::clamp((*data)[i], 0.0f, 1.0f) * 255.0f));
-      }
-      f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, gl::UNSIGNED_BYTE, bytes.data());
-    } else {
-      f.TexImage2D(gl::TEXTURE_2D, 0, format, desc.width, desc.height, 0, gl::RGBA, gl::FLOAT, data->data());
-    }
-    for (int i = 0; i < 4; ++i) f.PixelStorei(params[i], saved[i]);
+    upload(f, desc, format, *data);
   } else {
     // ES 3.0 pairs each sized format with its types: RGBA8 allocates with UNSIGNED_BYTE only.
     const gl::GLenum type = desc.format == SSS_LUT_FORMAT_RGBA8 ? gl::UNSIGNED_BYTE : gl::FLOAT;

@@ -1,0 +1,76 @@
+#include "blur_pass.hpp"
+
+#include <vector>
+
+#include "texture_units.hpp"
+
+namespace sss::gl {
+
+BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) {
+  const math::PassTerm& t = run.kernel->terms[term];
+  BlurVariant v;
+  v.outside = outside;
+  v.follow_surface = !run.follow_surface ? 0 : (t.depth_variance_mm2 > 0.0f ? 2 : 1);
+  v.linear_depth = run.constants.linear_depth;
+  v.jitter = run.kernel->jittered();
+  v.accumulate = axis == 1 && term > 0;
+  return v;
+}
+
+bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis) {
+  if (axis == 0) return true;
+  const std::size_t terms = run.cross_bilateral ? 1 : run.kernel->terms.size();
+  if (term + 1 < terms) return accumulators_are_half(gl);
+  return run.target().internal_format == static_cast<GLint>(RGBA16F);
+}
+
+namespace {
+// The pass's cumulative table, its reach and centre delta, the sparse layout's spacing, the most
+// taps per side, the first that jitters and the depth Gaussian of the term.
+void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& run, const math::PassTerm& t,
+                   const math::PassTaps& taps) {
+  const math::FootprintTable& table = taps.footprint;
+  std::vector<float> packed;
+  packed.reserve(table.half_cdf.size() * 4);
+  for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
+  f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+  f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+  const std::vector<float>& spacing = run.kernel->spacing;
+  if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
+  f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
+  if (p.jitter_from >= 0) f.Uniform1i(p.jitter_from, run.kernel->jitter_from);
+  if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
+}
+}  // namespace
+
+void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, std::size_t term, int axis) {
+  const Functions& f = ctx.gl;
+  const math::PassConstants& k = run.constants;
+  const math::PassTerm& t = run.kernel->terms[term];
+  f.UseProgram(p.program);
+  if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
+    upload_kernel(f, p, run, t, axis == 0 ? t.horizontal : t.vertical);
+    p.kernel_revision = run.kernel_revision;
+    p.uploaded_term = term;
+    p.uploaded_axis = axis;
+  }
+  if (p.compute) {
+    f.Uniform2i(p.axis, axis == 0 ? 1 : 0, axis == 0 ? 0 : 1);
+  } else {
+    f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
+  }
+  f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
+  // The Gaussian depth correction measures depth in profile millimetres; the ramp in reaches.
+  f.Uniform1f(p.follow_surface, p.inv_two_variance >= 0 ? k.mm_per_world : k.follow_surface_factor);
+  f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
+  f.Uniform1i(p.round_to_half, writes_half_float(f, run, term, axis) ? 1 : 0);
+}
+
+void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {
+  bind_texture(ctx, unit::source, source, ctx.objects.sampler);
+  bind_texture(ctx, unit::depth, depth, ctx.objects.depth_sampler);
+}
+
+}  // namespace sss::gl

@@ -1,0 +1,31 @@
+// One pass of the separable blur, shared by the fragment and compute runners: which program
+// variant a term's pass needs, its kernel and per-frame uniforms, its inputs, and whether what it
+// writes is rounded to half float in the shader (module/shaders/nearest_half.glsl).
+#pragma once
+
+#include <cstddef>
+
+#include "filter_run.hpp"
+#include "pass_setup.hpp"
+#include "program_cache.hpp"
+
+namespace sss::gl {
+
+// The variant of term `term`'s pass on `axis` (0 horizontal, 1 vertical) writing `outside`.
+BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside);
+// The sum of the kernel's terms: RGBA32F keeps up to six terms at float precision, but OpenGL ES
+// may not render to it (GL_EXT_color_buffer_float), while every ES context the module accepts
+// renders RGBA16F.
+inline bool accumulators_are_half(const Functions& gl) { return gl.api.es; }
+// Whether the pass of term `term` on `axis` writes a half-float target, so that the shader rounds
+// what it writes to nearest whatever rounding the driver's conversion does: horizontal passes
+// write the RGBA16F intermediate, vertical ones the sum of terms (RGBA32F; RGBA16F on ES) or, the
+// last, the host's colour or output.
+bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis);
+// The kernel uniforms (uploaded only when the kernel, term or axis changed since the program last
+// ran) and the per-frame ones; leaves `program` in use.
+void set_blur_uniforms(PassContext& ctx, BlurProgram& program, const FilterRun& run, std::size_t term, int axis);
+// The pass input and the host's depth on their units, with the module's samplers.
+void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth);
+
+}  // namespace sss::gl

@@ -1,0 +1,68 @@
+// What one frame asks of the GPU passes: the host's textures (already validated and described by
+// the api layer), the kernel and its per-frame constants, and how the passes may run. The api
+// layer fills a FilterRun (module/src/api/api_apply.cpp); SeparableFilter::run hands it to the
+// runner of the path it takes (runners.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "../math/cbf_constants.hpp"
+#include "../math/cbf_kernel.hpp"
+#include "../math/filter_constants.hpp"
+#include "../math/pass_kernel.hpp"
+#include "sss/sss.h"
+#include "texture_query.hpp"
+
+namespace sss::gl {
+
+struct StencilInput {
+  TextureInfo texture;  // the host's depth-stencil texture
+  GLuint ref = 0, mask = 0;
+};
+
+// How the MSAA resolve turns a pixel's sample depths into one view distance (sss.h
+// SSS_MSAA_DEPTH_*): the paper's average of the samples' linear depths, or the alternatives the
+// benchmark compares it with.
+enum class DepthResolve : int { average = 0, sample0 = 1, nearest = 2, farthest = 3 };
+
+struct FilterRun {
+  TextureInfo color;                       // multisampled: the MSAA path (depth has the same samples)
+  TextureInfo depth;
+  TextureInfo output;                      // name 0: write back into color
+  TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
+  const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
+  std::array<int, 4> viewport = {0, 0, 0, 0};
+  // Where the passes draw and their taps stay (constants.clamp_*): the viewport, or the host's
+  // region of translucent pixels (SSS_FRAME_REGION; region true). With a separate output the rest of
+  // the viewport gets the colour copied first.
+  std::array<int, 4> draw_rect = {0, 0, 0, 0};
+  bool region = false;
+  const math::PassKernel* kernel = nullptr;  // one pair of passes per term
+  std::uint64_t kernel_revision = 0;       // changes whenever the kernel does
+  math::PassConstants constants;
+  bool follow_surface = false;
+  bool identity = false;                   // nothing to blur: only copy into a separate output
+  std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
+  // The cross-bilateral mode (Mikkelsen 2010) instead of the separable kernel.
+  bool cross_bilateral = false;
+  const math::CbfKernel* cbf_kernel = nullptr;
+  std::uint64_t cbf_kernel_revision = 0;
+  math::CbfConstants cbf;
+  // MSAA path only: the host depth's encoding for the resolve (`constants` then describe the
+  // resolved linear distance the passes read), and how sample depths combine.
+  math::PassConstants resolve_constants;
+  DepthResolve depth_resolve = DepthResolve::average;
+  bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
+  // sss.h SSS_PATH_*: the compute path is taken (SSS_PATH_COMPUTE), or chosen by timing
+  // (SSS_PATH_AUTO, per path_key: the frame's configuration), when compute_unavailable() is "";
+  // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
+  unsigned path = SSS_PATH_FRAGMENT;
+  std::uint64_t path_key = 0;
+
+  bool writes_back() const { return output.name == 0; }
+  // The texture the last pass writes: the host's colour (in place) or the separate output.
+  const TextureInfo& target() const { return writes_back() ? color : output; }
+};
+
+}  // namespace sss::gl

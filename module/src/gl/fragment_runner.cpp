@@ -1,0 +1,165 @@
+// The separable fragment passes (Jimenez et al. 2012, §3) on single-sample images. One horizontal
+// and one vertical pass per kernel term: the vertical passes of all terms but the last write the
+// running sum into the module's accumulators, the last adds that sum and writes the output. The
+// host's colour is only written by the very last draw, after every horizontal pass has read it,
+// so it is never read and written at once. With a stencil, the pixels it excludes are copied by
+// the horizontal pass (so the vertical taps find defined values there) and left alone or copied by
+// the vertical one.
+#include <array>
+
+#include "blur_pass.hpp"
+#include "debug_label.hpp"
+#include "runners.hpp"
+#include "texture_units.hpp"
+
+namespace sss::gl {
+
+namespace {
+using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;  // [2t]: horizontal, [2t + 1]: vertical
+
+// Programs first: a variant that fails to build must not leave a new target behind.
+sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
+  const std::size_t terms = run.kernel->terms.size();
+  const Outside last_outside = run.writes_back() ? Outside::discard : Outside::copy_original;
+  sss_result r = SSS_OK;
+  for (std::size_t t = 0; t < terms && r == SSS_OK; ++t) {
+    r = ctx.programs.blur(blur_variant(run, t, 0, Outside::write_centre), &(*programs)[2 * t], message);
+    const Outside outside = t + 1 == terms ? last_outside : Outside::write_centre;
+    if (r == SSS_OK) r = ctx.programs.blur(blur_variant(run, t, 1, outside), &(*programs)[2 * t + 1], message);
+  }
+  return r;
+}
+
+// The stencil (copied from the host's unless the caller marked it) and the targets of the passes,
+// with the stencil on every one of them or on none.
+sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t terms, std::string* message) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  if (run.stencil != nullptr && !run.stencil_ready) {
+    const sss_result r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
+    if (r != SSS_OK) return r;
+  }
+  const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;
+  sss_result r = attach_intermediate(ctx, stencil, message);
+  if (r != SSS_OK) return r;
+  if (terms > 1) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[0], 0);
+    f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
+    r = check_framebuffer(f, "sum of the kernel's terms", message);
+    if (r != SSS_OK) return r;
+  }
+  return attach_output(ctx, run, stencil, message);
+}
+
+void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+  set_blur_uniforms(ctx, p, run, term, axis);
+  bind_blur_inputs(ctx, source, run.depth.name);
+  ctx.gl.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+}
+
+// Horizontal: host colour -> intermediate; pixels the stencil excludes are copied.
+void draw_horizontal(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term, std::size_t terms) {
+  DebugGroup group(ctx.gl, ctx.labels, terms > 1 ? "sss horizontal pass (one term)" : "sss horizontal pass");
+  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().intermediate_framebuffer);
+  set_stencil_test(ctx.gl, run.stencil, EQUAL);
+  draw_blur(ctx, p, run, run.color.name, term, 0);
+  if (run.stencil != nullptr) {
+    set_stencil_test(ctx.gl, run.stencil, NOTEQUAL);
+    draw_copy(ctx, run.color.name);
+  }
+}
+
+// Vertical into the running sum (pixels outside the stencil are never read from it).
+void draw_into_sum(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term) {
+  const Targets& t = ctx.targets.names();
+  DebugGroup group(ctx.gl, ctx.labels, "sss vertical pass (one term, into the sum)");
+  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
+  ctx.gl.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[term % 2], 0);
+  set_stencil_test(ctx.gl, run.stencil, EQUAL);
+  draw_blur(ctx, p, run, t.intermediate, term, 1);
+}
+
+// The last vertical pass: intermediate -> output. Writing back, the host colour is attached here,
+// so it is bound to no unit, and alpha is masked off (it keeps the host's exact value).
+void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term,
+                        FrameMeasurement& measure) {
+  const Functions& f = ctx.gl;
+  DebugGroup group(f, ctx.labels, "sss vertical pass");
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
+  bind_original(ctx, run);
+  measure.begin(PassQueries::vertical);
+  if (run.writes_back()) f.ColorMask(1, 1, 1, 0);
+  set_stencil_test(f, run.stencil, EQUAL);
+  // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
+  // exactly the blurred ones; into a separate output every pixel the stencil lets through.
+  measure.begin_pixels();
+  draw_blur(ctx, p, run, ctx.targets.names().intermediate, term, 1);
+  measure.end_pixels();
+  if (run.stencil != nullptr && !run.writes_back()) {
+    set_stencil_test(f, run.stencil, NOTEQUAL);
+    draw_copy(ctx, run.color.name);
+  }
+  measure.end(PassQueries::vertical);
+}
+
+// gpu_time_ms[0] spans everything before the last vertical pass (for one term: the horizontal
+// pass), [1] that pass.
+void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& programs, std::size_t terms) {
+  const Targets& t = ctx.targets.names();
+  FrameMeasurement measure(ctx.queries, run.frame);
+  measure.begin(PassQueries::horizontal);
+  for (std::size_t term = 0; term < terms; ++term) {
+    draw_horizontal(ctx, run, *programs[2 * term], term, terms);
+    if (terms > 1) {  // the earlier terms' sum, read by this term's vertical pass
+      // texelFetch only; GL_NEAREST (the depth sampler on ES) is complete for any format.
+      bind_texture(ctx, unit::accumulated, term > 0 ? t.accumulators[(term - 1) % 2] : 0, ctx.objects.depth_sampler);
+    }
+    if (term + 1 < terms) {
+      draw_into_sum(ctx, run, *programs[2 * term + 1], term);
+      continue;
+    }
+    measure.end(PassQueries::horizontal);
+    draw_last_vertical(ctx, run, *programs[2 * term + 1], term, measure);
+  }
+  measure.end_frame();
+}
+}  // namespace
+
+sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.identity) return run_identity(ctx, run, message);
+  if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
+  const std::size_t terms = run.kernel->terms.size();
+  TermPrograms programs{};
+  sss_result r = build_programs(ctx, run, &programs, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK && terms > 1) {
+    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
+  }
+  if (r != SSS_OK) return r;
+  begin_passes(ctx, run.draw_rect);
+  r = attach_targets(ctx, run, terms, message);
+  if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
+  detach_output(ctx);
+  return r;
+}
+
+sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.writes_back()) return SSS_OK;  // in place: nothing changes
+  const Functions& f = ctx.gl;
+  begin_passes(ctx, run.viewport);
+  f.Disable(STENCIL_TEST);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
+  f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
+  const sss_result r = check_framebuffer(f, "output copy", message);
+  if (r == SSS_OK) {
+    DebugGroup group(f, ctx.labels, "sss copy (identity settings)");
+    draw_copy(ctx, run.color.name);
+  }
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
+  return r;
+}
+
+}  // namespace sss::gl

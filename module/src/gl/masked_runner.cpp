@@ -1,0 +1,57 @@
+// SSS_PATH_FRAGMENT_MASKED and the stencil both it and the MSAA path mark from alpha: the paper's
+// stencil culling, where the stencil is initialised from the strength mask so that both blur
+// passes run only on translucent pixels.
+#include "debug_label.hpp"
+#include "runners.hpp"
+#include "texture_units.hpp"
+
+namespace sss::gl {
+
+bool masked_available(const FilterRun& run) {
+  return !run.color.multisampled() && !run.cross_bilateral && run.stencil == nullptr && !run.identity;
+}
+
+sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message) {
+  const Functions& f = ctx.gl;
+  GLuint program = 0;
+  sss_result r = ctx.programs.stencil_mark(&program, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
+  if (r != SSS_OK) return r;
+  r = attach_intermediate(ctx, ctx.targets.names().stencil_buffer, message, "stencil mark");
+  if (r != SSS_OK) return r;
+  DebugGroup group(f, ctx.labels, "sss stencil from alpha");
+  f.StencilMaskSeparate(FRONT_AND_BACK, 0xFF);
+  const GLint zero = 0;
+  f.ClearBufferiv(STENCIL, 0, &zero);  // glClearBuffer leaves the host's clear values alone
+  f.ColorMask(0, 0, 0, 0);
+  f.Enable(STENCIL_TEST);
+  f.StencilFuncSeparate(FRONT_AND_BACK, ALWAYS, 1, 0xFF);
+  f.StencilOpSeparate(FRONT_AND_BACK, KEEP, KEEP, REPLACE);
+  f.UseProgram(program);
+  bind_texture(ctx, unit::msaa_color, source, ctx.objects.sampler);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+  f.ColorMask(1, 1, 1, 1);
+  f.StencilMaskSeparate(FRONT_AND_BACK, 0);
+  f.Disable(STENCIL_TEST);
+  return SSS_OK;
+}
+
+sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
+  // The stencil marked from alpha, then the host-stencil passes with it: only translucent pixels
+  // are shaded by the blur; the rest are copied (horizontal) or left alone (vertical).
+  sss_result r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
+  begin_passes(ctx, run.draw_rect);
+  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
+  StencilInput own;  // the module's stencil holds 1 where translucent
+  own.ref = 1;
+  own.mask = 0xFF;
+  FilterRun inner = run;
+  inner.stencil = &own;
+  inner.stencil_ready = true;
+  return run_fragment(ctx, inner, message);
+}
+
+}  // namespace sss::gl

@@ -1,0 +1,278 @@
+#include "program_cache.hpp"
+
+#include <cstdio>
+
+#include "../math/footprint_kernel.hpp"
+#include "debug_label.hpp"
+#include "embedded_shaders.hpp"
+#include "program.hpp"
+#include "texture_units.hpp"
+
+namespace sss::gl {
+
+namespace {
+constexpr ImageFormat kImageFormatTable[] = {{RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}};
+static_assert(sizeof kImageFormatTable / sizeof kImageFormatTable[0] == kImageFormats,
+              "one compute variant per image format");
+}  // namespace
+
+const ImageFormat& image_format(int index) { return kImageFormatTable[index]; }
+
+int image_format_index(GLint internal_format) {
+  for (int i = 0; i < kImageFormats; ++i) {
+    if (kImageFormatTable[i].internal_format == static_cast<GLenum>(internal_format)) return i;
+  }
+  return -1;
+}
+
+int blur_variant_index(const BlurVariant& v) {
+  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
+  index = index * 2 + (v.linear_depth ? 1 : 0);
+  index = index * 2 + (v.jitter ? 1 : 0);
+  return index * 2 + (v.accumulate ? 1 : 0);
+}
+
+std::string blur_variant_defines(const BlurVariant& v) {
+  char defines[320];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
+                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
+                "#define SSS_MAX_HALF_TAPS %d\n",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                v.accumulate ? 1 : 0, math::kFootprintEntries, math::kMaxFootprintHalfTaps);
+  return defines;
+}
+
+sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool labels, const Log* log,
+                              std::string* message) {
+  gl_ = gl;
+  variant_ = variant;
+  header_ = glsl_header(variant);
+  labels_ = labels;
+  log_ = log;
+  std::string log_text;
+  copy_ = build_program(*gl_, header_, shaders::fullscreen_vert, shaders::copy_frag, &log_text);
+  if (copy_ == 0) {
+    *message = "copy shader: " + log_text;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  set_unit(copy_, gl_->GetUniformLocation(copy_, "u_source"), unit::source);
+  label_object(*gl_, labels_, PROGRAM, copy_, "sss copy");
+
+  BlurProgram* unused = nullptr;
+  BlurVariant common;
+  common.follow_surface = 1;
+  sss_result r = blur(common, &unused, message);
+  common.outside = Outside::discard;
+  if (r == SSS_OK) r = blur(common, &unused, message);
+  return r;
+}
+
+void ProgramCache::destroy() {
+  if (gl_ == nullptr) return;
+  const Functions& f = *gl_;
+  const auto remove = [&f](GLuint program) {
+    if (program != 0) f.DeleteProgram(program);
+  };
+  for (const BlurProgram& p : blur_) remove(p.program);
+  for (const BlurProgram& p : compute_) remove(p.program);
+  for (const CbfProgram& p : cbf_) remove(p.program);
+  for (const ResolveProgram& p : resolve_) remove(p.program);
+  remove(copy_);
+  remove(stencil_mark_);
+  remove(sample_write_.program);
+  forget();
+}
+
+void ProgramCache::forget() { *this = ProgramCache{}; }
+
+GLuint ProgramCache::link(const std::string& defines, const char* include, const char* fragment,
+                          const std::string& what, std::string* message) {
+  std::string log;
+  const GLuint program = build_program(*gl_, header_ + defines + include, shaders::fullscreen_vert, fragment, &log);
+  if (program == 0) *message = what + ": " + log;
+  return program;
+}
+
+void ProgramCache::set_unit(GLuint program, GLint location, GLuint unit) const {
+  if (has_explicit_bindings(variant_) || location < 0) return;  // GLSL 420: layout(binding) in the shader
+  gl_->UseProgram(program);
+  gl_->Uniform1i(location, static_cast<GLint>(unit));
+}
+
+void ProgramCache::finish(GLuint program, const char* label, const char* built, const char* dialect) {
+  label_object(*gl_, labels_, PROGRAM, program, label);
+  if (built != nullptr && log_ != nullptr && *log_) {
+    (*log_)(SSS_LOG_DEBUG, std::string("built the ") + built + " program (" +
+                               (dialect != nullptr ? dialect : glsl_variant_name(variant_)) + ", " + label + ")");
+  }
+}
+
+sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
+  BlurProgram& p = blur_[static_cast<std::size_t>(blur_variant_index(v))];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  const std::string defines = blur_variant_defines(v);
+  p.program = link(defines, shaders::nearest_half_glsl, shaders::separable_blur_frag,
+                   "separable blur shader (" + defines + ")", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  char label[128];
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                v.accumulate ? 1 : 0);
+  finish(p.program, label, "blur");
+  find_blur_uniforms(&p);
+  set_unit(p.program, p.source, unit::source);
+  set_unit(p.program, p.depth, unit::depth);
+  set_unit(p.program, p.original, unit::original);
+  set_unit(p.program, p.accumulated, unit::accumulated);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, BlurProgram** out,
+                                 std::string* message) {
+  const std::size_t index = static_cast<std::size_t>(blur_variant_index(v) * kImageFormats + image_format_slot);
+  BlurProgram& p = compute_[index];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  // The fragment variant's switches (SSS_ACCUMULATE is always 0 here), then the compute ones.
+  const ImageFormat& format = kImageFormatTable[image_format_slot];
+  char compute_defines[160];
+  std::snprintf(compute_defines, sizeof compute_defines,
+                "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n", kComputeSegment,
+                kComputeApron, format.qualifier);
+  const std::string defines = "#version 430 core\n" + blur_variant_defines(v) + compute_defines;
+  std::string log;
+  p.program = build_compute_program(*gl_, defines + shaders::nearest_half_glsl, shaders::separable_blur_comp, &log);
+  if (p.program == 0) {
+    *message = "separable blur compute shader (" + defines + "): " + log;
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  char label[128];
+  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d %s",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                format.qualifier);
+  finish(p.program, label, "blur", "GLSL 430 core");
+  find_blur_uniforms(&p);
+  p.compute = true;
+  return SSS_OK;
+}
+
+void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
+  const Functions& f = *gl_;
+  BlurProgram& p = *program;
+  p.source = f.GetUniformLocation(p.program, "u_source");
+  p.depth = f.GetUniformLocation(p.program, "u_depth");
+  p.original = f.GetUniformLocation(p.program, "u_original");
+  p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
+  p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
+  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  p.axis = f.GetUniformLocation(p.program, "u_axis");
+  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
+  p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.cdf = f.GetUniformLocation(p.program, "u_cdf");
+  p.footprint = f.GetUniformLocation(p.program, "u_footprint");
+  p.spacing = f.GetUniformLocation(p.program, "u_spacing");
+  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+}
+
+sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
+                                         std::string* message) {
+  const int index = (static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0)) * 2 + (normals ? 1 : 0);
+  CbfProgram& p = cbf_[static_cast<std::size_t>(index)];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  char defines[128];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+  p.program = link(defines, shaders::nearest_half_glsl, shaders::cbf_blur_frag,
+                   "cross-bilateral blur shader (" + std::string(defines) + ")", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  char label[64];
+  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d", static_cast<int>(outside),
+                linear_depth ? 1 : 0, normals ? 1 : 0);
+  finish(p.program, label, "cross-bilateral");
+  find_cbf_uniforms(&p);
+  set_unit(p.program, p.normals, unit::normals);
+  set_unit(p.program, p.source, unit::source);
+  set_unit(p.program, p.depth, unit::depth);
+  set_unit(p.program, p.original, unit::original);
+  return SSS_OK;
+}
+
+void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
+  const Functions& f = *gl_;
+  CbfProgram& p = *program;
+  p.source = f.GetUniformLocation(p.program, "u_source");
+  p.depth = f.GetUniformLocation(p.program, "u_depth");
+  p.original = f.GetUniformLocation(p.program, "u_original");
+  p.kernel = f.GetUniformLocation(p.program, "u_kernel");
+  p.tap_count = f.GetUniformLocation(p.program, "u_tap_count");
+  p.axis = f.GetUniformLocation(p.program, "u_axis");
+  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.xy_terms = f.GetUniformLocation(p.program, "u_xy_terms");
+  p.xy_offset = f.GetUniformLocation(p.program, "u_xy_offset");
+  p.viewport = f.GetUniformLocation(p.program, "u_viewport");
+  p.world_per_mm = f.GetUniformLocation(p.program, "u_world_per_mm");
+  p.orthographic = f.GetUniformLocation(p.program, "u_orthographic");
+  p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
+  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.normals = f.GetUniformLocation(p.program, "u_normals");
+}
+
+sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message) {
+  ResolveProgram& p = resolve_[linear_depth ? 1 : 0];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  const std::string defines = linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
+  p.program = link(defines, "", shaders::msaa_resolve_frag, "MSAA resolve shader (" + defines + ")", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, linear_depth ? "sss msaa resolve linear" : "sss msaa resolve", nullptr);
+  const Functions& f = *gl_;
+  p.samples = f.GetUniformLocation(p.program, "u_samples");
+  p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::stencil_mark(GLuint* out, std::string* message) {
+  if (stencil_mark_ == 0) {
+    stencil_mark_ = link("", "", shaders::msaa_mask_frag, "stencil mask shader", message);
+    if (stencil_mark_ == 0) return SSS_ERROR_SHADER_COMPILE;
+    finish(stencil_mark_, "sss stencil mask from alpha", nullptr);
+    set_unit(stencil_mark_, gl_->GetUniformLocation(stencil_mark_, "u_source"), unit::msaa_color);
+  }
+  *out = stencil_mark_;
+  return SSS_OK;
+}
+
+sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* message) {
+  SampleWriteProgram& p = sample_write_;
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  p.program = link("", "", shaders::msaa_write_frag, "MSAA write-back shader", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, "sss msaa per-sample write", nullptr);
+  const Functions& f = *gl_;
+  p.sample = f.GetUniformLocation(p.program, "u_sample");
+  p.samples = f.GetUniformLocation(p.program, "u_samples");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  return SSS_OK;
+}
+
+}  // namespace sss::gl

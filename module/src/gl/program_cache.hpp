@@ -1,0 +1,128 @@
+// Every GL program the passes use, built on first use (or ahead, by prewarm) and kept until the
+// filter is destroyed: the copy, the separable blur (fragment and compute variants), the
+// cross-bilateral blur and the MSAA resolve, stencil mark and per-sample write. A program's
+// uniform locations are looked up once, when it is linked, and its sampler units set then too
+// (texture_units.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "gl_functions.hpp"
+#include "glsl_variant.hpp"
+
+namespace sss::gl {
+
+using Log = std::function<void(int level, const std::string& message)>;
+
+// What a blur pass writes at a pixel that is not blurred (separable_blur.frag SSS_OUTSIDE).
+enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
+
+// The separable blur's compile-time switches (separable_blur.frag).
+struct BlurVariant {
+  Outside outside = Outside::write_centre;
+  int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
+  bool linear_depth = false, jitter = false, accumulate = false;
+};
+constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2;
+// A variant's index among kBlurVariantCount, and its #defines (fragment and compute programs).
+int blur_variant_index(const BlurVariant& v);
+std::string blur_variant_defines(const BlurVariant& v);
+
+// The compute path's target image formats: every colour and output format sss_apply_frame accepts.
+struct ImageFormat {
+  GLenum internal_format;
+  const char* qualifier;  // the GLSL layout qualifier
+};
+constexpr int kImageFormats = 2;
+// Pixels a compute work group writes along a pass's axis, and those it caches on each side of them
+// (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
+constexpr int kComputeSegment = 128;
+constexpr int kComputeApron = 64;
+const ImageFormat& image_format(int index);
+int image_format_index(GLint internal_format);  // -1: no image format
+
+struct BlurProgram {
+  GLuint program = 0;
+  GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
+        axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
+        cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
+  GLint rect = -1;  // compute programs only
+  bool compute = false;
+  // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
+  std::uint64_t kernel_revision = 0;
+  std::size_t uploaded_term = 0;
+  int uploaded_axis = -1;
+};
+
+struct CbfProgram {
+  GLuint program = 0;
+  GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
+        ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
+        world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1,
+        round_to_half = -1;
+  std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
+};
+
+struct ResolveProgram {
+  GLuint program = 0;
+  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
+};
+
+struct SampleWriteProgram {
+  GLuint program = 0;
+  GLint sample = -1, samples = -1;
+};
+
+class ProgramCache {
+ public:
+  // Builds the copy program and the blur variants every host uses (write back, follow-surface,
+  // hardware depth: the default kernel's), so a driver that cannot compile them fails at create.
+  // `log` (may be empty) gets a DEBUG note per program built; it must outlive the cache.
+  sss_result init(const Functions* gl, GlslVariant variant, bool labels, const Log* log, std::string* message);
+  void destroy();  // deletes the programs (they must exist in the current context), then forget()s
+  void forget();   // drops the names (context lost)
+
+  GLuint copy() const { return copy_; }
+  sss_result blur(const BlurVariant& v, BlurProgram** out, std::string* message);
+  // The compute variant of `v` (SSS_ACCUMULATE unset) writing image format `image_format`.
+  sss_result compute(const BlurVariant& v, int image_format, BlurProgram** out, std::string* message);
+  sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
+                             std::string* message);
+  sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
+  sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
+  sss_result sample_write(SampleWriteProgram** out, std::string* message);
+
+ private:
+  static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
+  static constexpr int kCbfVariantCount = 3 * 2 * 2;
+
+  // A program from the fullscreen vertex shader and `fragment` after the dialect header, `defines`
+  // and `include`; 0 with *message ("<what>: <driver log>") on failure.
+  GLuint link(const std::string& defines, const char* include, const char* fragment, const std::string& what,
+              std::string* message);
+  void find_blur_uniforms(BlurProgram* p) const;
+  void find_cbf_uniforms(CbfProgram* p) const;
+  // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
+  void set_unit(GLuint program, GLint location, GLuint unit) const;
+  // Labels a new program and, where `built` names its kind, notes it (DEBUG) with its dialect
+  // (nullptr: the context's).
+  void finish(GLuint program, const char* label, const char* built, const char* dialect = nullptr);
+
+  const Functions* gl_ = nullptr;
+  GlslVariant variant_ = GlslVariant::glsl330;
+  std::string header_;
+  bool labels_ = false;
+  const Log* log_ = nullptr;
+  GLuint copy_ = 0;
+  std::array<BlurProgram, kBlurVariantCount> blur_{};
+  std::array<BlurProgram, kComputeVariantCount> compute_{};
+  std::array<CbfProgram, kCbfVariantCount> cbf_{};
+  std::array<ResolveProgram, 2> resolve_{};  // index: host depth is linear
+  GLuint stencil_mark_ = 0;
+  SampleWriteProgram sample_write_;
+};
+
+}  // namespace sss::gl

@@ -1,0 +1,39 @@
+// One runner per way of running a frame's passes; SeparableFilter::run picks one. Each takes the
+// run's context (pass_setup.hpp) and a validated FilterRun, draws with the caller's StateGuard
+// around it, and returns SSS_OK or an error with *message set. Every runner leaves no host texture
+// attached to the module's framebuffers.
+#pragma once
+
+#include <string>
+
+#include "filter_run.hpp"
+#include "pass_setup.hpp"
+
+namespace sss::gl {
+
+// The fragment passes on single-sample images (fragment_runner.cpp): one horizontal and one
+// vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
+// when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
+sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+// Nothing to blur: in place nothing changes; a separate output gets the colour copied.
+sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
+// The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
+sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
+
+// SSS_PATH_FRAGMENT_MASKED (masked_runner.cpp): the fragment passes behind a stencil marked from
+// the colour's alpha, so only translucent pixels run the blur.
+bool masked_available(const FilterRun& run);
+sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message);
+// The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
+// above 0 (left on the intermediate framebuffer). Draws over the current viewport.
+sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message);
+
+// SSS_PATH_COMPUTE (compute_runner.cpp, OpenGL 4.3+): "" when `run` can take it, else why not.
+const char* compute_unavailable(const Functions& gl, const FilterRun& run);
+sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* message);
+
+// Multisampled colour and depth (msaa_runner.cpp): resolve, the fragment passes on the resolved
+// images, and, in place, the per-sample write-back.
+sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
+
+}  // namespace sss::gl

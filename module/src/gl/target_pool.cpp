@@ -1,0 +1,267 @@
+#include "target_pool.hpp"
+
+#include <cstdio>
+
+#include "debug_label.hpp"
+
+namespace sss::gl {
+
+namespace {
+// SSS_ERROR_OUT_OF_MEMORY or SSS_ERROR_GL for a GL error after an allocation, with *message.
+sss_result allocation_failed(GLenum error, const char* what, int width, int height, std::string* message) {
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer, "allocating the %dx%d %s failed: %s", width, height, what,
+                error_name(error).c_str());
+  *message = buffer;
+  return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
+}
+
+// (Re)specifies a single-sample texture with one level and no data.
+void specify_2d(const Functions& f, GLuint texture, GLint format, GLenum pixel_format, GLenum type, int width,
+                int height) {
+  f.ActiveTexture(TEXTURE0);
+  f.BindTexture(TEXTURE_2D, texture);
+  f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);  // NULL data must not read from a host buffer
+  f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
+  f.TexImage2D(TEXTURE_2D, 0, format, width, height, 0, pixel_format, type, nullptr);
+}
+}  // namespace
+
+void TargetPool::init(const Functions* gl, bool labels, const Log* log) {
+  gl_ = gl;
+  labels_ = labels;
+  log_ = log;
+  const Functions& f = *gl_;
+  // A framebuffer name becomes an object on first bind; the caller's StateGuard restores bindings.
+  GLuint framebuffers[4] = {0, 0, 0, 0};
+  f.GenFramebuffers(4, framebuffers);
+  t_.intermediate_framebuffer = framebuffers[0];
+  t_.output_framebuffer = framebuffers[1];
+  t_.stencil_source_framebuffer = framebuffers[2];
+  t_.accumulator_framebuffer = framebuffers[3];
+  for (GLuint fb : framebuffers) f.BindFramebuffer(FRAMEBUFFER, fb);
+  // The stencil source is only ever read from, and has no colour.
+  f.BindFramebuffer(READ_FRAMEBUFFER, t_.stencil_source_framebuffer);
+  f.ReadBuffer(NONE);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.stencil_source_framebuffer);
+  const GLenum no_colour = NONE;
+  f.DrawBuffers(1, &no_colour);  // glDrawBuffer is not in ES
+  label_object(f, labels_, FRAMEBUFFER, t_.intermediate_framebuffer, "sss horizontal pass target");
+  label_object(f, labels_, FRAMEBUFFER, t_.output_framebuffer, "sss vertical pass target");
+  label_object(f, labels_, FRAMEBUFFER, t_.stencil_source_framebuffer, "sss host stencil source");
+  label_object(f, labels_, FRAMEBUFFER, t_.accumulator_framebuffer, "sss sum of the kernel's terms");
+}
+
+void TargetPool::destroy() {
+  if (gl_ == nullptr) return;
+  const Functions& f = *gl_;
+  const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
+                                 t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
+                                 t_.msaa_read_framebuffer,    t_.sample_copy_framebuffer,
+                                 t_.sample_write_framebuffer};
+  const GLuint textures[] = {t_.intermediate,   t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
+                             t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy};
+  // Name 0 is silently ignored by both calls.
+  f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
+  f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
+  if (t_.stencil_buffer != 0) f.DeleteRenderbuffers(1, &t_.stencil_buffer);
+  forget();
+}
+
+void TargetPool::forget() { *this = TargetPool{}; }
+
+void TargetPool::note(const std::string& text) const {
+  if (log_ != nullptr && *log_) (*log_)(SSS_LOG_DEBUG, text);
+}
+
+sss_result TargetPool::allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
+                                       const char* what, std::string* message) {
+  const Functions& f = *gl_;
+  if (*texture == 0) f.GenTextures(1, texture);
+  specify_2d(f, *texture, static_cast<GLint>(internal_format), RGBA, type, width, height);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    f.DeleteTextures(1, texture);
+    *texture = 0;
+    return allocation_failed(error, what, width, height, message);
+  }
+  label_object(f, labels_, TEXTURE, *texture, (std::string("sss ") + what).c_str());
+  char note_text[160];
+  std::snprintf(note_text, sizeof note_text, "allocated the %dx%d %s", width, height, what);
+  note(note_text);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_intermediate(int width, int height, std::string* message) {
+  if (t_.intermediate != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
+  intermediate_width_ = intermediate_height_ = 0;
+  const sss_result r =
+      allocate_target(&t_.intermediate, RGBA16F, HALF_FLOAT, width, height, "RGBA16F intermediate target", message);
+  if (r != SSS_OK) return r;
+  intermediate_width_ = width;
+  intermediate_height_ = height;
+  const Functions& f = *gl_;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.intermediate_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.intermediate, 0);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_accumulators(int width, int height, bool half, std::string* message) {
+  if (t_.accumulators[1] != 0 && accumulator_width_ == width && accumulator_height_ == height) return SSS_OK;
+  accumulator_width_ = accumulator_height_ = 0;
+  for (GLuint& t : t_.accumulators) {
+    const sss_result r =
+        allocate_target(&t, half ? RGBA16F : RGBA32F, half ? HALF_FLOAT : FLOAT, width, height,
+                        half ? "RGBA16F sum of the kernel's terms" : "RGBA32F sum of the kernel's terms", message);
+    if (r != SSS_OK) return r;
+  }
+  accumulator_width_ = width;
+  accumulator_height_ = height;
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_stencil_buffer(GLint format, int width, int height, std::string* message) {
+  if (t_.stencil_buffer != 0 && stencil_format_ == format && stencil_width_ == width && stencil_height_ == height) {
+    return SSS_OK;
+  }
+  const Functions& f = *gl_;
+  if (t_.stencil_buffer == 0) f.GenRenderbuffers(1, &t_.stencil_buffer);
+  f.BindRenderbuffer(RENDERBUFFER, t_.stencil_buffer);
+  // The copy is a blit, which needs the host's exact depth-stencil format.
+  f.RenderbufferStorage(RENDERBUFFER, static_cast<GLenum>(format), width, height);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    f.DeleteRenderbuffers(1, &t_.stencil_buffer);
+    t_.stencil_buffer = 0;
+    stencil_format_ = 0;
+    return allocation_failed(error, (format_name(format) + " stencil copy").c_str(), width, height, message);
+  }
+  label_object(f, labels_, RENDERBUFFER, t_.stencil_buffer, "sss stencil copy");
+  stencil_format_ = format;
+  stencil_width_ = width;
+  stencil_height_ = height;
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_masked_source(GLint format, int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  if (t_.masked_framebuffer == 0) {
+    f.GenFramebuffers(1, &t_.masked_framebuffer);
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.masked_framebuffer);
+    label_object(f, labels_, FRAMEBUFFER, t_.masked_framebuffer, "sss masked colour copy target");
+  }
+  if (t_.masked_source != 0 && masked_format_ == format && masked_width_ == width && masked_height_ == height) {
+    return SSS_OK;
+  }
+  if (t_.masked_source == 0) f.GenTextures(1, &t_.masked_source);
+  // The host colour's own format: the copy must hold it exactly (its centre share is not blurred),
+  // and on OpenGL ES that format is the one the create-time and frame checks found renderable and
+  // sampleable (RGBA32F there needs extensions an RGBA16F host may lack).
+  specify_2d(f, t_.masked_source, format, RGBA, FLOAT, width, height);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    f.DeleteTextures(1, &t_.masked_source);
+    t_.masked_source = 0;
+    masked_width_ = masked_height_ = 0;
+    masked_format_ = 0;
+    return allocation_failed(error, (format_name(format) + " masked colour copy").c_str(), width, height, message);
+  }
+  label_object(f, labels_, TEXTURE, t_.masked_source, "sss masked colour copy");
+  masked_format_ = format;
+  masked_width_ = width;
+  masked_height_ = height;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.masked_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.masked_source, 0);
+  return SSS_OK;
+}
+
+void TargetPool::ensure_msaa_framebuffers() {
+  if (t_.resolve_framebuffer != 0) return;
+  const Functions& f = *gl_;
+  GLuint framebuffers[4] = {0, 0, 0, 0};
+  f.GenFramebuffers(4, framebuffers);
+  t_.resolve_framebuffer = framebuffers[0];
+  t_.msaa_read_framebuffer = framebuffers[1];
+  t_.sample_copy_framebuffer = framebuffers[2];
+  t_.sample_write_framebuffer = framebuffers[3];
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
+  const GLenum both[2] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1};
+  f.DrawBuffers(2, both);  // colour and view distance in one pass
+  for (int i = 1; i < 4; ++i) f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffers[i]);
+  label_object(f, labels_, FRAMEBUFFER, t_.resolve_framebuffer, "sss msaa resolve target");
+  label_object(f, labels_, FRAMEBUFFER, t_.msaa_read_framebuffer, "sss msaa host colour source");
+  label_object(f, labels_, FRAMEBUFFER, t_.sample_copy_framebuffer, "sss msaa sample copy");
+  label_object(f, labels_, FRAMEBUFFER, t_.sample_write_framebuffer, "sss msaa per-sample write target");
+}
+
+sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred,
+                                           std::string* message) {
+  const Functions& f = *gl_;
+  const bool same = t_.resolved_color != 0 && msaa_color_format_ == color_format && msaa_width_ == width &&
+                    msaa_height_ == height;
+  if (!same) {
+    if (t_.resolved_color == 0) {
+      GLuint t[3] = {0, 0, 0};
+      f.GenTextures(3, t);
+      t_.resolved_color = t[0];
+      t_.resolved_distance = t[1];
+      t_.blurred = t[2];
+    }
+    has_blurred_ = false;
+    specify_2d(f, t_.resolved_color, color_format, RGBA, FLOAT, width, height);
+    specify_2d(f, t_.resolved_distance, static_cast<GLint>(R32F), RED, FLOAT, width, height);
+    const GLenum error = f.GetError();
+    if (error != NO_ERROR) {
+      msaa_color_format_ = 0;  // reallocated next time
+      return allocation_failed(error, "MSAA resolve targets", width, height, message);
+    }
+    label_object(f, labels_, TEXTURE, t_.resolved_color, "sss msaa resolved colour");
+    label_object(f, labels_, TEXTURE, t_.resolved_distance, "sss msaa resolved view distance");
+    msaa_color_format_ = color_format;
+    msaa_width_ = width;
+    msaa_height_ = height;
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.resolved_color, 0);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.resolved_distance, 0);
+  }
+  if (need_blurred && !has_blurred_) {
+    specify_2d(f, t_.blurred, color_format, RGBA, FLOAT, width, height);
+    const GLenum error = f.GetError();
+    if (error != NO_ERROR) return allocation_failed(error, "MSAA blurred target", width, height, message);
+    label_object(f, labels_, TEXTURE, t_.blurred, "sss msaa blurred (before the per-sample write)");
+    has_blurred_ = true;
+  }
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_sample_copy(const TextureInfo& color, std::string* message) {
+  if (t_.sample_copy != 0 && copy_format_ == color.internal_format && copy_width_ == color.width &&
+      copy_height_ == color.height && copy_samples_ == color.samples && copy_fixed_ == color.fixed_locations) {
+    return SSS_OK;
+  }
+  const Functions& f = *gl_;
+  // Multisample storage cannot be respecified in place on every driver: make a new texture.
+  if (t_.sample_copy != 0) f.DeleteTextures(1, &t_.sample_copy);
+  f.GenTextures(1, &t_.sample_copy);
+  f.ActiveTexture(TEXTURE0);
+  f.BindTexture(TEXTURE_2D_MULTISAMPLE, t_.sample_copy);
+  f.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, color.samples, static_cast<GLenum>(color.internal_format),
+                          color.width, color.height, color.fixed_locations);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    f.DeleteTextures(1, &t_.sample_copy);
+    t_.sample_copy = 0;
+    return allocation_failed(error, "multisampled colour copy", color.width, color.height, message);
+  }
+  label_object(f, labels_, TEXTURE, t_.sample_copy, "sss msaa copy of the host's samples");
+  copy_format_ = color.internal_format;
+  copy_width_ = color.width;
+  copy_height_ = color.height;
+  copy_samples_ = color.samples;
+  copy_fixed_ = color.fixed_locations;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.sample_copy_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, t_.sample_copy, 0);
+  return SSS_OK;
+}
+
+}  // namespace sss::gl

@@ -1,0 +1,78 @@
+// The render targets the module owns, the framebuffers that draw into them or attach the host's
+// textures, and the sizes and formats each was allocated at: a target is (re)allocated only when a
+// frame needs it at another size or format. Every ensure_* call returns SSS_OK, or
+// SSS_ERROR_OUT_OF_MEMORY / SSS_ERROR_GL with *message saying what failed at which size (and the
+// target is then forgotten, so the next frame allocates it again).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "gl_functions.hpp"
+#include "program_cache.hpp"
+#include "texture_query.hpp"
+
+namespace sss::gl {
+
+// The names, read by the runners; only TargetPool creates, allocates and deletes them.
+struct Targets {
+  // Created at init. The horizontal pass draws into `intermediate_framebuffer`, the last vertical
+  // pass into `output_framebuffer` (the host's colour or output attached for the frame only);
+  // `stencil_source_framebuffer` reads the host's depth-stencil for the copy; the vertical passes
+  // of all terms but the last draw into `accumulator_framebuffer`.
+  GLuint intermediate_framebuffer = 0, output_framebuffer = 0, stencil_source_framebuffer = 0,
+         accumulator_framebuffer = 0;
+  GLuint intermediate = 0;             // RGBA16F, the horizontal pass's result
+  std::array<GLuint, 2> accumulators{};  // the sum of the kernel's earlier terms, ping-ponged
+  GLuint stencil_buffer = 0;           // the stencil copy (host's format) or the mask marked from alpha
+  // Cross-bilateral mode with a stencil: the colour with alpha 0 outside it (host's format).
+  GLuint masked_source = 0, masked_framebuffer = 0;
+  // MSAA path: the resolve's colour (host's format) and view distance (R32F), the blurred result
+  // before the per-sample write, and a copy of the host's samples (the write reads it).
+  GLuint resolve_framebuffer = 0, msaa_read_framebuffer = 0, sample_copy_framebuffer = 0,
+         sample_write_framebuffer = 0;
+  GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, sample_copy = 0;
+};
+
+class TargetPool {
+ public:
+  // Makes the four framebuffers every path uses (the rest come on first use).
+  void init(const Functions* gl, bool labels, const Log* log);
+  void destroy();  // deletes every object (they must exist in the current context), then forget()s
+  void forget();   // drops the names (context lost)
+  const Targets& names() const { return t_; }
+
+  sss_result ensure_intermediate(int width, int height, std::string* message);
+  // `half`: RGBA16F (OpenGL ES, where RGBA32F may not be renderable), else RGBA32F.
+  sss_result ensure_accumulators(int width, int height, bool half, std::string* message);
+  sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
+  sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
+  void ensure_msaa_framebuffers();
+  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred, std::string* message);
+  sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
+
+ private:
+  // A colour texture the module owns, (re)allocated at this size and format.
+  sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
+                             const char* what, std::string* message);
+  void note(const std::string& text) const;
+
+  const Functions* gl_ = nullptr;
+  bool labels_ = false;
+  const Log* log_ = nullptr;
+  Targets t_;
+  int intermediate_width_ = 0, intermediate_height_ = 0;
+  int accumulator_width_ = 0, accumulator_height_ = 0;
+  GLint stencil_format_ = 0;
+  int stencil_width_ = 0, stencil_height_ = 0;
+  GLint masked_format_ = 0;
+  int masked_width_ = 0, masked_height_ = 0;
+  GLint msaa_color_format_ = 0;
+  int msaa_width_ = 0, msaa_height_ = 0;
+  bool has_blurred_ = false;
+  GLint copy_format_ = 0;
+  int copy_width_ = 0, copy_height_ = 0, copy_samples_ = 0;
+  GLboolean copy_fixed_ = 1;
+};
+
+}  // namespace sss::gl

@@ -1,0 +1,22 @@
+// The texture units the module's programs read from. They are fixed per program (set once after
+// linking, or by layout(binding) in GLSL 4.20: module/shaders/*), so a frame binds textures and
+// never changes a sampler uniform. Units 0-3 are in the StateGuard's list (sss.h).
+#pragma once
+
+#include "gl_functions.hpp"
+
+namespace sss::gl::unit {
+
+// The blur passes (separable, compute and cross-bilateral) and the copy.
+constexpr GLuint source = 0;       // the pass input: host colour, then the intermediate
+constexpr GLuint depth = 1;        // the host's depth (or the MSAA path's resolved view distance)
+constexpr GLuint original = 2;     // the host's colour, read by a pass writing a separate output
+constexpr GLuint normals = 3;      // the cross-bilateral mode's host normals
+constexpr GLuint accumulated = 3;  // the earlier terms' sum (separable kernels of several terms)
+
+// The MSAA resolve, stencil mark and per-sample write.
+constexpr GLuint msaa_color = 0;  // resolve: the host's samples; write: the copy of them
+constexpr GLuint msaa_depth = 1;  // resolve: the host's depth samples; write: the blurred image
+constexpr GLuint msaa_extra = 2;  // write: the resolved colour
+
+}  // namespace sss::gl::unit
