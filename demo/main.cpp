@@ -1,6 +1,6 @@
 // sss_demo: the Lee Perry-Smith head scan (or any glTF), lit with shadow-mapped lights, through the
 // library's screen-space separable subsurface scattering. A GLFW window with a Dear ImGui panel, or
-// --headless PNGs for each camera preset. See `sss_demo --help` and the README's demo section.
+// --headless PNGs for each camera preset. See `sss_demo --help` and docs/demo.md.
 #include "apps.hpp"
 #include "options.hpp"
 #include "scene.hpp"

@@ -54,6 +54,8 @@ def main():
     a = p.parse_args()
     old, new = sweep(a.old_miss), sweep(a.new_miss)
     md = ["# The old and the new default side by side", "",
+          "What changed for a host that upgrades from 0.1 with default settings, in pictures and `miss`; the "
+          "changes themselves and what to do about them: [migration.md](migration.md).", "",
           f"Written by `scripts/compare-defaults.sh` (old: revision {a.old_revision}, sss 0.1's default: Table 1 at "
           "`width = 1.5 · world units per mm`, fixed taps read bilinearly; new: this checkout's default, physical "
           "units and footprint-aware taps, docs/kernel-fits.md); do not edit by hand. `miss` = ‖result − exact‖ / "

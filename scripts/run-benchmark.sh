@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates docs/benchmarks.md (and its plots and pictures in docs/benchmarks/): the full
+# Regenerates docs/benchmarks.md (and its plots and pictures in docs/benchmarks/, and the README's headline table): the full
 # benchmark sweep on this machine's GL (headless; on Mesa that is llvmpipe). Installs what is
 # missing first. Extra arguments go to sss_bench (e.g. --size 1920x1080 --scenes head-close,head-mid
 # for a shorter run; see `sss_bench --help`).
@@ -17,3 +17,5 @@ build/release/tests/bench/sss_bench_preintegrated --size 320x180 --repetitions 5
   --doc docs/benchmarks/preintegrated.md
 # The gnuplot inputs are intermediate files; the PNGs and tables stay.
 rm -f docs/benchmarks/*.dat docs/benchmarks/*.gp
+# The README's headline table from the new results.
+scripts/update-readme-numbers.sh

@@ -118,6 +118,8 @@ int main(int argc, char** argv) {
   std::ostringstream md;
   const auto skin = GaussianSumProfile::skin(6);
   md << "# Kernel fits and decompositions\n\n"
+     << "The numbers behind each kernel family (fits, decompositions, their errors against the profile), for anyone\n"
+     << "choosing a family or changing one; the families themselves: [kernels.md](kernels.md).\n\n"
      << "Written by `build/tools/sss_kernel_report --out docs/kernel-fits.md` (scripts/generate-profiles.sh runs it);\n"
      << "do not edit by hand. Profile: d'Eon–Luebke six-Gaussian skin (DESIGN.md §5) unless stated.\n\n";
 

@@ -1,5 +1,5 @@
 /*
- * The smallest complete integration of sss, in C99, as integration/README.md walks through it:
+ * The smallest complete integration of sss, in C99, as docs/integration.md walks through it:
  * a host with its own GL context (here EGL without a window), its own loader, a lit diffuse target
  * in RGBA16F with alpha = SSS strength, a depth-stencil texture, and one call per frame.
  * Built in CI against an installed sss (CMake package and pkg-config). Exit status 0 when the
