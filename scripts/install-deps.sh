@@ -6,7 +6,8 @@
 #   build   compiler, CMake/Ninja, OpenGL headers, OSMesa/EGL (llvmpipe), GLM, stb, Eigen, NLopt
 #   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
 #           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots); RapidCheck
-#           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets)
+#           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets),
+#           clang-tidy (the code.shape test)
 #   demo    build + GLFW, tinygltf, Dear ImGui, and Xvfb (the demo's window test)
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
@@ -18,7 +19,7 @@ set -euo pipefail
 readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev libeigen3-dev libnlopt-dev)
 readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
-  nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev)
+  nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev clang-tidy)
 readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
 
 usage() {
