@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "debug_label.hpp"
-#include "embedded_shaders.hpp"
 #include "program.hpp"
 #include "state_guard.hpp"
 
@@ -36,7 +35,6 @@ void set_sampler(const Functions& f, GLuint sampler, GLenum filter) {
 sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool labels, std::string* message) {
   gl_ = gl;
   variant_ = variant;
-  glsl_header_ = glsl_header(variant);
   labels_ = labels;
   const Functions& f = *gl_;
 
@@ -87,7 +85,7 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   label_object(f, labels_, SAMPLER, depth_sampler_, "sss depth clamp");
 
   std::string log;
-  copy_program_ = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::copy_frag, &log);
+  copy_program_ = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "copy.frag"), &log);
   if (copy_program_ == 0) {
     *message = "copy shader: " + log;
     return SSS_ERROR_SHADER_COMPILE;
@@ -163,7 +161,6 @@ void SeparableFilter::forget() {
   const bool measure = measure_, es_timer_extension = es_timer_extension_, software = software_renderer_;
   const Functions* gl = gl_;
   const GlslVariant variant = variant_;
-  std::string header = std::move(glsl_header_);
   const bool labels = labels_;
   *this = SeparableFilter{};
   log_ = std::move(log);
@@ -172,7 +169,6 @@ void SeparableFilter::forget() {
   software_renderer_ = software;
   gl_ = gl;
   variant_ = variant;
-  glsl_header_ = std::move(header);
   labels_ = labels;
 }
 
@@ -202,34 +198,15 @@ bool SeparableFilter::writes_half_float(const FilterRun& run, std::size_t term, 
   return target.internal_format == static_cast<GLint>(RGBA16F);
 }
 
-int SeparableFilter::variant_index(const BlurVariant& v) {
-  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
-  index = index * 2 + (v.linear_depth ? 1 : 0);
-  index = index * 2 + (v.jitter ? 1 : 0);
-  return index * 2 + (v.accumulate ? 1 : 0);
-}
-
-std::string SeparableFilter::variant_defines(const BlurVariant& v) {
-  char defines[320];
-  std::snprintf(defines, sizeof defines,
-                "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
-                "#define SSS_MAX_HALF_TAPS %d\n",
-                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, math::kFootprintEntries, math::kMaxFootprintHalfTaps);
-  return defines;
-}
-
 sss_result SeparableFilter::blur_program(const BlurVariant& v, BlurProgram** out, std::string* message) {
-  BlurProgram& p = blur_programs_[static_cast<std::size_t>(variant_index(v))];
+  BlurProgram& p = blur_programs_[static_cast<std::size_t>(blur_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
 
-  const std::string defines = variant_defines(v);
+  const std::string defines = blur_defines(v);
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_program(f, glsl_header_ + defines + shaders::nearest_half_glsl, shaders::fullscreen_vert,
-                            shaders::separable_blur_frag, &log);
+  p.program = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "separable_blur.frag", defines), &log);
   if (p.program == 0) {
     *message = "separable blur shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
@@ -282,16 +259,12 @@ sss_result SeparableFilter::cbf_program(Outside outside, bool linear_depth, bool
   CbfProgram& p = cbf_programs_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  char defines[128];
-  std::snprintf(defines, sizeof defines,
-                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n#define SSS_MAX_TAPS %d\n",
-                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
+  const std::string defines = cbf_defines(outside, linear_depth, normals);
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_program(f, glsl_header_ + defines + shaders::nearest_half_glsl, shaders::fullscreen_vert,
-                            shaders::cbf_blur_frag, &log);
+  p.program = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "cbf_blur.frag", defines), &log);
   if (p.program == 0) {
-    *message = "cross-bilateral blur shader (" + std::string(defines) + "): " + log;
+    *message = "cross-bilateral blur shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
   char label[64];

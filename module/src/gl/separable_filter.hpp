@@ -20,6 +20,8 @@
 #include "glsl_variant.hpp"
 #include "pass_queries.hpp"
 #include "path_chooser.hpp"
+#include "shader_constants.hpp"
+#include "shader_variants.hpp"
 #include "texture_query.hpp"
 
 namespace sss::gl {
@@ -69,17 +71,10 @@ struct FilterRun {
   std::uint64_t path_key = 0;
 };
 
-// The blur's uniforms: u_cdf (math::kFootprintEntries = 128 vec4) and u_spacing (32
-// floats, a vector each at worst) stay within ES 3.0's 224 fragment uniform vectors with the rest.
-// Pixels a compute work group writes along a pass's axis, and those it caches on each side of
-// them (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
-constexpr int kComputeSegment = 128;
-constexpr int kComputeApron = 64;
-
 class SeparableFilter {
  public:
   // The compute path's target image formats (RGBA16F, RGBA32F: every colour and output format).
-  static constexpr int kImageFormats = 2;
+  static constexpr int kImageFormats = kComputeImageFormatCount;
   // Builds the objects that do not depend on frame size and the most common program variants, so a
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
@@ -125,13 +120,9 @@ class SeparableFilter {
   sss_result rebuild(std::string* message);
 
  private:
-  enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
-  // The separable blur's compile-time switches (separable_blur.frag).
-  struct BlurVariant {
-    Outside outside = Outside::write_centre;
-    int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
-    bool linear_depth = false, jitter = false, accumulate = false;
-  };
+  // The blur's compile-time switches, and their #defines (shader_variants.hpp).
+  using Outside = BlurOutside;
+  using BlurVariant = gl::BlurVariant;
   struct BlurProgram {
     GLuint program = 0;
     GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
@@ -144,7 +135,7 @@ class SeparableFilter {
     std::size_t uploaded_term = 0;
     int uploaded_axis = -1;
   };
-  static constexpr int kVariantCount = 3 * 3 * 2 * 2 * 2;
+  static constexpr int kVariantCount = kBlurVariantCount;
   // Compute variants: a fragment variant's index (SSS_ACCUMULATE never set there: one term only) ×
   // the target's image format (kImageFormats).
   static constexpr int kComputeVariantCount = kVariantCount * kImageFormats;
@@ -159,9 +150,6 @@ class SeparableFilter {
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   sss_result blur_program(const BlurVariant& v, BlurProgram** out, std::string* message);
-  // A variant's index among kVariantCount, and its #defines (both kinds of blur program use them).
-  static int variant_index(const BlurVariant& v);
-  static std::string variant_defines(const BlurVariant& v);
   // The variant of term `term`'s pass on `axis` (0 horizontal, 1 vertical) writing `outside`.
   BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) const;
   sss_result run_identity(const FilterRun& run, std::string* message);
@@ -249,7 +237,6 @@ class SeparableFilter {
   PassQueries queries_;
   int last_draws_ = 0;
   GlslVariant variant_ = GlslVariant::glsl330;
-  std::string glsl_header_;
   bool labels_ = false;
   std::array<BlurProgram, kVariantCount> blur_programs_{};
   std::array<BlurProgram, kComputeVariantCount> compute_programs_{};

@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "debug_label.hpp"
-#include "embedded_shaders.hpp"
 #include "program.hpp"
 #include "separable_filter.hpp"
 #include "state_guard.hpp"
@@ -18,12 +17,7 @@ constexpr GLuint kOriginalUnit = 2;
 
 // The target formats the vertical pass writes through an image unit, with their GLSL qualifiers:
 // the colour and output formats sss_apply_frame accepts (both have image formats).
-struct ImageFormat {
-  GLenum internal_format;
-  const char* qualifier;
-};
-constexpr ImageFormat kImageFormatTable[] = {
-    {RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}};
+constexpr const auto& kImageFormatTable = kComputeImageFormats;
 
 int image_format_index(GLint internal_format) {
   static_assert(sizeof kImageFormatTable / sizeof kImageFormatTable[0] == SeparableFilter::kImageFormats,
@@ -52,19 +46,15 @@ const char* SeparableFilter::compute_unavailable(const FilterRun& run) const {
 
 sss_result SeparableFilter::compute_program(const BlurVariant& v, int image_format, BlurProgram** out,
                                             std::string* message) {
-  BlurProgram& p = compute_programs_[static_cast<std::size_t>(variant_index(v) * kImageFormats + image_format)];
+  BlurProgram& p = compute_programs_[static_cast<std::size_t>(blur_variant_index(v) * kImageFormats + image_format)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
 
   // The fragment variant's switches (SSS_ACCUMULATE is always 0 here), then the compute ones.
-  char compute_defines[160];
-  std::snprintf(compute_defines, sizeof compute_defines,
-                "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n", kComputeSegment,
-                kComputeApron, kImageFormatTable[image_format].qualifier);
-  const std::string defines = "#version 430 core\n" + variant_defines(v) + compute_defines;
+  const std::string defines = compute_blur_defines(v, image_format);
   std::string log;
   const Functions& f = *gl_;
-  p.program = build_compute_program(f, defines + shaders::nearest_half_glsl, shaders::separable_blur_comp, &log);
+  p.program = build_compute_program(f, compute_recipe(defines), &log);
   if (p.program == 0) {
     *message = "separable blur compute shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;

@@ -7,7 +7,6 @@
 #include <cstdio>
 
 #include "debug_label.hpp"
-#include "embedded_shaders.hpp"
 #include "program.hpp"
 #include "separable_filter.hpp"
 #include "state_guard.hpp"
@@ -44,8 +43,8 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
   ResolveProgram& p = msaa_.resolve[linear_depth ? 1 : 0];
   *resolve = &p;
   if (p.program == 0) {
-    const std::string defines = linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
-    p.program = build_program(f, glsl_header_ + defines, shaders::fullscreen_vert, shaders::msaa_resolve_frag, &log);
+    const std::string defines = msaa_resolve_defines(linear_depth);
+    p.program = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "msaa_resolve.frag", defines), &log);
     if (p.program == 0) {
       *message = "MSAA resolve shader (" + defines + "): " + log;
       return SSS_ERROR_SHADER_COMPILE;
@@ -66,7 +65,7 @@ sss_result SeparableFilter::msaa_programs(bool linear_depth, bool need_mask, boo
     if (r != SSS_OK) return r;
   }
   if (need_write && msaa_.write_program == 0) {
-    msaa_.write_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_write_frag, &log);
+    msaa_.write_program = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "msaa_write.frag"), &log);
     if (msaa_.write_program == 0) {
       *message = "MSAA write-back shader: " + log;
       return SSS_ERROR_SHADER_COMPILE;
@@ -180,7 +179,7 @@ sss_result SeparableFilter::ensure_mask_program(std::string* message) {
   if (msaa_.mask_program != 0) return SSS_OK;
   const Functions& f = *gl_;
   std::string log;
-  msaa_.mask_program = build_program(f, glsl_header_, shaders::fullscreen_vert, shaders::msaa_mask_frag, &log);
+  msaa_.mask_program = build_program(f, vertex_recipe(variant_), stage_recipe(variant_, "msaa_mask.frag"), &log);
   if (msaa_.mask_program == 0) {
     *message = "stencil mask shader: " + log;
     return SSS_ERROR_SHADER_COMPILE;
