@@ -3,7 +3,8 @@
 #
 # sss_embed_shaders(<out_cpp> <out_hpp> <namespace> FILES <glsl>...)
 #   writes <out_hpp> declaring `extern const char* const <name>;` for each file (name from the file
-#   name, dots and dashes as underscores) and <out_cpp> defining them as raw string literals.
+#   name, dots and dashes as underscores) and `files[]`, each file's text by its file name (for the
+#   #include directives the module expands), and <out_cpp> defining them as raw string literals.
 
 set(SSS_EMBED_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/SssEmbedShadersScript.cmake")
 

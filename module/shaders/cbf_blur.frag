@@ -5,10 +5,14 @@
 // distance and a range Gaussian on the depth difference; neighbours that are not translucent
 // (alpha 0, which includes pixels outside the host's stencil) get no weight.
 //
-// Compile-time switches (prepended by the module): SSS_OUTSIDE and SSS_LINEAR_DEPTH as in
-// separable_blur.frag; SSS_NORMALS 1: the surface's orientation comes from the host's view-space
-// normal texture instead of the depth of the neighbouring pixels. Before this file the module puts
-// nearest_half.glsl (u_round_to_half: the written colour rounded to half float here).
+// Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp): SSS_OUTSIDE
+// and SSS_LINEAR_DEPTH as in separable_blur.frag; SSS_NORMALS 1: the surface's orientation comes
+// from the host's view-space normal texture instead of the depth of the neighbouring pixels;
+// SSS_MAX_TAPS the size of u_kernel. The pieces it includes: nearest_half.glsl (u_round_to_half:
+// the written colour rounded to half float here) and depth.glsl (view_distance, clip_w).
+
+#include "nearest_half.glsl"
+#include "depth.glsl"
 
 SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
 SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
@@ -22,8 +26,6 @@ SSS_BINDING(3) uniform sampler2D u_normals;   // view-space unit normal in xyz
 #endif
 uniform vec2 u_axis;                  // (1, 0) or (0, 1)
 uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
-uniform vec2 u_ndc_from_depth;        // z_ndc = depth · x + y
-uniform vec4 u_depth_terms;           // projection m10, m11, m14, m15
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
 uniform vec4 u_xy_terms;              // projection m0, m5, m8, m9
 uniform vec2 u_xy_offset;             // projection m12, m13
@@ -34,17 +36,6 @@ uniform vec4 u_spike_blend;           // rgb: b, result = b · centre + (1 - b) 
 uniform vec4 u_inv_two_variance;      // rgb: 1 / (2 σ²) per channel, mm⁻²
 
 out vec4 o_color;
-
-float view_distance(float raw_depth) {
-#if SSS_LINEAR_DEPTH
-  return raw_depth;
-#else
-  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
-  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
-#endif
-}
-
-float clip_w(float distance) { return -u_depth_terms.y * distance + u_depth_terms.w; }
 
 vec3 view_point(vec2 position, float distance) {
   vec2 ndc = (position - u_viewport.xy) / u_viewport.zw * 2.0 - 1.0;

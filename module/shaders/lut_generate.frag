@@ -4,10 +4,11 @@
 // of up to 8 Gaussians (variance in mm², weights r, g, b), 2D-normalised.
 // SSS_LUT_KIND: 0 = diffuse (eq. 1.1, columns N·L, rows curvature 1/mm), 1 = shadow (§1.6, columns
 // the shadow value, rows the penumbra width in world units). Grids are endpoint-inclusive.
+// Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp): SSS_LUT_KIND;
+// SSS_MAX_TERMS, the most Gaussians of a profile (u_terms), and SSS_GL_ORDER, the points of the
+// Gauss–Legendre rule (u_gl, sss::math::kLutQuadratureOrder: the rule comes from the CPU generator).
 
 #define SSS_PI 3.14159265358979323846
-#define SSS_GL_ORDER 10  // = sss::math::kLutQuadratureOrder (the rule comes from the CPU generator)
-#define SSS_MAX_TERMS 8
 
 uniform vec2 u_size;                     // LUT width, height
 uniform vec2 u_row_range;                // first and last row's curvature or penumbra width

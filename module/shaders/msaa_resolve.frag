@@ -4,28 +4,20 @@
 // background lands far behind both); averaging the samples' view distances gives the distance of
 // the pixel's mean surface, which is what the follow-surface test compares.
 //
-// Compile-time switch: SSS_LINEAR_DEPTH 0: hardware depth, linearised per sample; 1: the host's
-// depth already holds view distance.
-// Desktop GL only: composed after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
+// Compile-time switch (the variant's #define, module/src/gl/shader_variants.cpp): SSS_LINEAR_DEPTH
+// 0: hardware depth, linearised per sample (depth.glsl's view_distance); 1: the host's depth
+// already holds view distance.
+// Desktop GL only: assembled after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
+
+#include "depth.glsl"
 
 SSS_BINDING(0) uniform sampler2DMS u_color;
 SSS_BINDING(1) uniform sampler2DMS u_depth;
 uniform int u_samples;           // the textures' sample count (both have the same)
 uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 3 maximum (farthest)
-uniform vec2 u_ndc_from_depth;   // z_ndc = depth · x + y
-uniform vec4 u_depth_terms;      // projection m10, m11, m14, m15
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out float o_distance;
-
-float view_distance(float raw_depth) {
-#if SSS_LINEAR_DEPTH
-  return raw_depth;
-#else
-  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
-  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
-#endif
-}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);

@@ -5,16 +5,23 @@
 // span (a kernel wider than the apron, for a close-up at a large scale) read the textures, as the
 // fragment shader does, so any footprint gives the same image.
 //
-// Compile-time switches, as in separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the
-// pixel as it is, 2 copy u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH,
-// SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS; and
+// Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp), as in
+// separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the pixel as it is, 2 copy
+// u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH, SSS_CDF_ENTRIES,
+// SSS_MAX_HALF_TAPS (SSS_ACCUMULATE is always 0: the path runs single-term kernels); and
 //   SSS_SEGMENT        pixels one work group writes along the pass's axis (its local size)
 //   SSS_APRON          pixels cached on each side of the segment
 //   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f or rgba32f)
-// nearest_half.glsl comes first (u_round_to_half: set for an rgba16f image). The target is written
-// with imageStore. Writing back into the host's colour (SSS_OUTSIDE 1), the
-// pixel's alpha is read from the target itself, so the host's exact alpha stays (the fragment
-// path masks alpha off instead); every other pass reads only textures it does not write.
+// The header is version_430.glsl. The pieces it includes: nearest_half.glsl (u_round_to_half: set
+// for an rgba16f image), depth.glsl, jitter.glsl and footprint_taps.glsl (the taps and their
+// weights, shared with separable_blur.frag). The target is written with imageStore. Writing back
+// into the host's colour (SSS_OUTSIDE 1), the pixel's alpha is read from the target itself, so the
+// host's exact alpha stays (the fragment path masks alpha off instead); every other pass reads only
+// textures it does not write.
+
+#include "nearest_half.glsl"
+#include "depth.glsl"
+#include "jitter.glsl"
 
 layout(local_size_x = SSS_SEGMENT, local_size_y = 1, local_size_z = 1) in;
 
@@ -29,22 +36,10 @@ layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
 #endif
 
-uniform vec4 u_cdf[SSS_CDF_ENTRIES];
-uniform vec4 u_footprint;
-uniform float u_spacing[SSS_MAX_HALF_TAPS];
-uniform int u_half_taps;
-#if SSS_JITTER
-uniform int u_jitter_from;
-#endif
-#if SSS_FOLLOW_SURFACE == 2
-uniform float u_inv_two_variance;
-#endif
 uniform ivec2 u_axis;           // (1, 0) or (0, 1)
 uniform ivec4 u_rect;           // the pixels this pass writes: x, y, width, height
 uniform float u_pixels_per_mm;
 uniform float u_follow_surface;
-uniform vec2 u_ndc_from_depth;
-uniform vec4 u_depth_terms;
 uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
 
 const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
@@ -52,47 +47,25 @@ const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
 // texel: a tap's two texels are two 128-bit shared loads (a vec3 and a float apart were four).
 shared vec4 s_texel[kCached];
 
-float view_distance(float raw_depth) {
-#if SSS_LINEAR_DEPTH
-  return raw_depth;
-#else
-  float zn = raw_depth * u_ndc_from_depth.x + u_ndc_from_depth.y;
-  return (zn * u_depth_terms.w - u_depth_terms.z) / (zn * u_depth_terms.y - u_depth_terms.x);
-#endif
+// footprint_taps.glsl's tap reads: the work group's cache, or the textures past the apron.
+struct TapSite {
+  float centre;                // the pixel's centre along the axis
+  float clamp_min, clamp_max;  // u_clamp along the axis
+  int cache_start;             // the pixel coordinate of s_texel[0]
+  ivec2 row;                   // the texel coordinate across the axis (the other component 0)
+};
+
+vec4 sss_fetch_tap(TapSite site, float offset) {
+  // Whole pixels: the cached texel, or the textures' where the tap is past the apron.
+  float position = clamp(site.centre + offset, site.clamp_min, site.clamp_max);
+  int along_tap = int(position);
+  int index = along_tap - site.cache_start;
+  if (index >= 0 && index < kCached) return s_texel[index];
+  ivec2 texel = u_axis * along_tap + site.row;
+  return vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
 }
 
-#if SSS_JITTER
-// Must equal sss::math::jitter_noise bit for bit (and separable_blur.frag's).
-float jitter_noise(ivec2 pixel, int axis) {
-  uint h = uint(pixel.x) * 0x8da6b343u ^ uint(pixel.y) * 0xd8163841u ^ uint(axis + 1) * 0xcb1ab31fu;
-  h ^= h >> 16u;
-  h *= 0x7feb352du;
-  h ^= h >> 15u;
-  h *= 0x846ca68bu;
-  h ^= h >> 16u;
-  return float(h >> 8u) * (1.0 / 16777216.0);
-}
-#endif
-
-// As in separable_blur.frag (and sss::math::footprint_half_cdf, footprint_taps).
-vec3 half_cdf(float x_mm) {
-  float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
-  int j = min(int(u), SSS_CDF_ENTRIES - 2);
-  float f = u - float(j);
-  return u_cdf[j].rgb * (1.0 - f) + u_cdf[j + 1].rgb * f;
-}
-
-float tap_position(int i, float previous, bool dense, float reach_pixels) {
-  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
-}
-
-#if SSS_JITTER
-float jittered_position(float inner, float p, float outer, bool outermost, float noise) {
-  float lo = floor(0.5 * (inner + p)) + 1.0;
-  float hi = outermost ? p + (p - lo) : floor(0.5 * (p + outer));
-  return lo + min(floor(noise * (hi - lo + 1.0)), hi - lo);
-}
-#endif
+#include "footprint_taps.glsl"
 
 void write_untouched(ivec2 pixel, vec4 centre) {
 #if SSS_OUTSIDE == 0
@@ -131,76 +104,16 @@ void main() {
   }
   float strength = min(centre.a, 1.0);
   float centre_distance = view_distance(s_texel[centre_index].a);
-  float w = -u_depth_terms.y * centre_distance + u_depth_terms.w;
+  float w = clip_w(centre_distance);
   if (isnan(w) || !(w > 0.0) || isinf(w)) {  // isnan(): see separable_blur.frag
     write_untouched(pixel, centre);
     return;
   }
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;
-  const float centre_coord = float(along) + 0.5;
-  const float clamp_min = u_clamp[axis_index], clamp_max = u_clamp[2 + axis_index];
-  float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
-  bool dense = reach_pixels <= float(u_half_taps) + 0.5;
-  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
-#if SSS_JITTER
-  int jitter_from = dense ? count + 1 : u_jitter_from;
-  float noise = jitter_noise(pixel, axis_index);
-  float inner = 0.0;
-#endif
-  // Without taps the whole kernel stays on the centre. With taps the centre keeps the kernel out to
-  // the midpoint to the first tap, set in the loop's first step, so a pixel with no tap (a kernel
-  // inside its pixel) looks nothing up.
-  vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
-  vec3 sum = centre.rgb * (2.0 * total + u_footprint.yzw);
-  vec3 below = total;
-  float p = 0.0;
-  for (int i = 1; i <= count; ++i) {
-    if (i == 1) {
-      p = tap_position(1, 0.0, dense, reach_pixels);
-      below = half_cdf(0.5 * p / step_pixels);
-      sum = centre.rgb * (2.0 * below + u_footprint.yzw);
-    }
-    float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
-    vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
-    float read = p;
-#if SSS_JITTER
-    if (i >= jitter_from) read = jittered_position(inner, p, next, i == count, noise);
-    inner = p;
-#endif
-    vec3 pair = vec3(0.0);
-    for (int side = 0; side < 2; ++side) {
-      // Whole pixels: the cached texel, or the textures' where the tap is past the apron.
-      float position = clamp(centre_coord + (side == 0 ? read : -read), clamp_min, clamp_max);
-      int along_tap = int(position);
-      int index = along_tap - cache_start;
-      vec3 tap;
-      float tap_depth;
-      if (index >= 0 && index < kCached) {
-        tap = s_texel[index].rgb;
-        tap_depth = s_texel[index].a;
-      } else {
-        ivec2 texel = u_axis * along_tap + cross_axis * across;
-        tap = texelFetch(u_source, texel, 0).rgb;
-        tap_depth = texelFetch(u_depth, texel, 0).r;
-      }
-      if (any(isnan(tap)) || any(isinf(tap))) tap = centre.rgb;
-#if SSS_FOLLOW_SURFACE
-      float d = follow_surface * abs(centre_distance - view_distance(tap_depth));
-#if SSS_FOLLOW_SURFACE == 2
-      float s = 1.0 - exp(-d * d * u_inv_two_variance);
-#else
-      float s = d;
-#endif
-      if (isnan(s) || !(s < 1.0)) s = 1.0;
-      tap = mix(tap, centre.rgb, s);
-#endif
-      pair += tap;
-    }
-    sum += (upto - below) * pair;
-    below = upto;
-    p = next;
-  }
+  TapSite site = TapSite(float(along) + 0.5, u_clamp[axis_index], u_clamp[2 + axis_index], cache_start,
+                         cross_axis * across);
+  vec3 sum = footprint_sum(site, centre.rgb, step_pixels, centre_distance, follow_surface, pixel, axis_index);
 #if SSS_OUTSIDE == 2
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a)));
 #elif SSS_OUTSIDE == 1

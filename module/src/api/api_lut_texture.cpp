@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "../gl/debug_label.hpp"
-#include "../gl/glsl_variant.hpp"
 #include "../gl/program.hpp"
+#include "../gl/shader_constants.hpp"
+#include "../gl/shader_variants.hpp"
 #include "../gl/state_guard.hpp"
-#include "embedded_shaders.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
 #include "lut_inputs.hpp"
@@ -40,10 +40,10 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
   const std::vector<math::GaussianTerm>& terms = *profile.gaussian_terms();
   std::string log;
   // The dialect negotiated at create (GLSL 330 / 420 core or ES 300), as for the filter's shaders.
-  const std::string header = gl::glsl_header(ctx->filter.variant()) + "#define SSS_LUT_KIND " +
-                             (which == SSS_LUT_DIFFUSE ? "0" : "1") + "\n";
-  const gl::GLuint program =
-      gl::build_program(f, header, sss::shaders::fullscreen_vert, sss::shaders::lut_generate_frag, &log);
+  const gl::GlslVariant dialect = ctx->filter.variant();
+  const std::string defines = gl::lut_defines(which == SSS_LUT_DIFFUSE ? 0 : 1);
+  const gl::GLuint program = gl::build_program(f, gl::vertex_recipe(dialect),
+                                               gl::stage_recipe(dialect, "lut_generate.frag", defines), &log);
   if (program == 0) return fail(ctx, SSS_ERROR_SHADER_COMPILE, "the LUT generator: " + log);
   gl::label_object(f, labels, gl::PROGRAM, program, "sss LUT generator");
   gl::GLuint framebuffer = 0, vertex_array = 0;
@@ -68,22 +68,22 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
     } else {
       f.Uniform2f(at("u_row_range"), desc.penumbra_min, desc.penumbra_max);
     }
-    std::vector<float> packed(4 * 8, 0.0f);
+    std::vector<float> packed(4 * gl::kLutMaxTerms, 0.0f);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       packed[4 * i] = static_cast<float>(terms[i].variance_mm2);
       for (std::size_t c = 0; c < 3; ++c) packed[4 * i + 1 + c] = static_cast<float>(terms[i].weight[c]);
     }
     f.Uniform1i(at("u_term_count"), static_cast<gl::GLint>(terms.size()));
-    f.Uniform4fv(at("u_terms"), 8, packed.data());
+    f.Uniform4fv(at("u_terms"), gl::kLutMaxTerms, packed.data());
     f.Uniform1f(at("u_support"), static_cast<float>(math::lut_support_mm(profile)));
     // The CPU generator's Gauss–Legendre rule, so both integrate on the same nodes.
     const math::LutQuadratureRule& gl_rule = math::lut_quadrature_rule();
-    std::vector<float> rule(4 * math::kLutQuadratureOrder, 0.0f);
-    for (std::size_t i = 0; i < static_cast<std::size_t>(math::kLutQuadratureOrder); ++i) {
+    std::vector<float> rule(4 * gl::kLutOrder, 0.0f);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(gl::kLutOrder); ++i) {
       rule[4 * i] = static_cast<float>(gl_rule.node[i]);
       rule[4 * i + 1] = static_cast<float>(gl_rule.weight[i]);
     }
-    f.Uniform4fv(at("u_gl"), math::kLutQuadratureOrder, rule.data());
+    f.Uniform4fv(at("u_gl"), gl::kLutOrder, rule.data());
     if (which == SSS_LUT_SHADOW) {
       f.Uniform1f(at("u_world_units_per_mm"), desc.world_units_per_mm);
       f.Uniform1f(at("u_new_penumbra"), desc.new_penumbra);
@@ -135,7 +135,8 @@ sss_result make_texture(sss_context* ctx, int32_t which, const sss_lut_desc& des
   // LUT is generated on the CPU and uploaded, which ES 3.0 allows for every format.
   const bool es_no_float_target = f.api.es && desc.format == SSS_LUT_FORMAT_RGBA32F && !ctx->es_float_render;
   const bool on_cpu = (desc.flags & SSS_LUT_CPU) != 0 || profile.gaussian_terms() == nullptr ||
-                      profile.gaussian_terms()->size() > 8 || es_no_float_target;
+                      profile.gaussian_terms()->size() > static_cast<std::size_t>(gl::kLutMaxTerms) ||
+                      es_no_float_target;
 
   // CPU data first (outside any GL work), so an allocation failure leaves the GL untouched.
   math::LutCache::Data data;

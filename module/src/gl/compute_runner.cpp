@@ -6,6 +6,7 @@
 #include "blur_pass.hpp"
 #include "debug_label.hpp"
 #include "runners.hpp"
+#include "shader_constants.hpp"
 
 namespace sss::gl {
 
@@ -84,7 +85,7 @@ sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* mess
     measure.begin(PassQueries::vertical);
     bind_original(ctx, run);
     f.BindImageTexture(0, target.name, 0, 0, 0, run.writes_back() ? READ_WRITE : WRITE_ONLY,
-                       image_format(target_format).internal_format);
+                       kComputeImageFormats[target_format].internal_format);
     dispatch_blur(ctx, *vertical, run, ctx.targets.names().intermediate, 1);
     measure.end(PassQueries::vertical);
   }

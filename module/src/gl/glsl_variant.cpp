@@ -1,7 +1,5 @@
 #include "glsl_variant.hpp"
 
-#include "embedded_shaders.hpp"
-
 namespace sss::gl {
 
 GlslVariant choose_glsl_variant(const Api& api) {
@@ -9,15 +7,15 @@ GlslVariant choose_glsl_variant(const Api& api) {
   return api.version() >= 42 ? GlslVariant::glsl420 : GlslVariant::glsl330;
 }
 
-// The headers are module/shaders/version_*.glsl, so that the shaders.glslang test validates the
-// very text the module compiles.
-std::string glsl_header(GlslVariant v) {
+// The headers are pieces like any other, so that the shaders.glslang test validates the very text
+// the module compiles.
+const char* glsl_header_name(GlslVariant v) {
   switch (v) {
-    case GlslVariant::glsl420: return shaders::version_420_glsl;
-    case GlslVariant::essl300: return shaders::version_es300_glsl;
+    case GlslVariant::glsl420: return "version_420.glsl";
+    case GlslVariant::essl300: return "version_es300.glsl";
     case GlslVariant::glsl330: break;
   }
-  return shaders::version_330_glsl;
+  return "version_330.glsl";
 }
 
 const char* glsl_variant_name(GlslVariant v) {

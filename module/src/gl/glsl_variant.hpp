@@ -4,8 +4,6 @@
 // precision qualifiers; the passes only fetch whole texels, so nothing relies on filtering depth).
 #pragma once
 
-#include <string>
-
 #include "gl_functions.hpp"
 
 namespace sss::gl {
@@ -13,9 +11,9 @@ namespace sss::gl {
 enum class GlslVariant : int { glsl330 = 0, glsl420 = 1, essl300 = 2 };
 
 GlslVariant choose_glsl_variant(const Api& api);
-// The text put before every shader: the #version line and the variant's macros
-// (SSS_BINDING(unit)).
-std::string glsl_header(GlslVariant v);
+// The header piece that starts every shader (module/shaders/version_*.glsl): the #version line and
+// the dialect's macros (SSS_BINDING(unit)).
+const char* glsl_header_name(GlslVariant v);
 // "GLSL 330 core", "GLSL 420 core", "GLSL ES 300".
 const char* glsl_variant_name(GlslVariant v);
 // Sampler units come from layout(binding) in the shader.

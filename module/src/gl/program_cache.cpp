@@ -2,56 +2,27 @@
 
 #include <cstdio>
 
-#include "../math/footprint_kernel.hpp"
 #include "debug_label.hpp"
-#include "embedded_shaders.hpp"
 #include "program.hpp"
 #include "texture_units.hpp"
 
 namespace sss::gl {
 
-namespace {
-constexpr ImageFormat kImageFormatTable[] = {{RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}};
-static_assert(sizeof kImageFormatTable / sizeof kImageFormatTable[0] == kImageFormats,
-              "one compute variant per image format");
-}  // namespace
-
-const ImageFormat& image_format(int index) { return kImageFormatTable[index]; }
-
 int image_format_index(GLint internal_format) {
   for (int i = 0; i < kImageFormats; ++i) {
-    if (kImageFormatTable[i].internal_format == static_cast<GLenum>(internal_format)) return i;
+    if (kComputeImageFormats[i].internal_format == static_cast<GLenum>(internal_format)) return i;
   }
   return -1;
-}
-
-int blur_variant_index(const BlurVariant& v) {
-  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
-  index = index * 2 + (v.linear_depth ? 1 : 0);
-  index = index * 2 + (v.jitter ? 1 : 0);
-  return index * 2 + (v.accumulate ? 1 : 0);
-}
-
-std::string blur_variant_defines(const BlurVariant& v) {
-  char defines[320];
-  std::snprintf(defines, sizeof defines,
-                "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
-                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
-                "#define SSS_MAX_HALF_TAPS %d\n",
-                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, math::kFootprintEntries, math::kMaxFootprintHalfTaps);
-  return defines;
 }
 
 sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool labels, const Log* log,
                               std::string* message) {
   gl_ = gl;
   variant_ = variant;
-  header_ = glsl_header(variant);
   labels_ = labels;
   log_ = log;
   std::string log_text;
-  copy_ = build_program(*gl_, header_, shaders::fullscreen_vert, shaders::copy_frag, &log_text);
+  copy_ = build_program(*gl_, vertex_recipe(variant_), stage_recipe(variant_, "copy.frag"), &log_text);
   if (copy_ == 0) {
     *message = "copy shader: " + log_text;
     return SSS_ERROR_SHADER_COMPILE;
@@ -86,10 +57,10 @@ void ProgramCache::destroy() {
 
 void ProgramCache::forget() { *this = ProgramCache{}; }
 
-GLuint ProgramCache::link(const std::string& defines, const char* include, const char* fragment,
-                          const std::string& what, std::string* message) {
+GLuint ProgramCache::link(const char* fragment, const std::string& defines, const std::string& what,
+                          std::string* message) {
   std::string log;
-  const GLuint program = build_program(*gl_, header_ + defines + include, shaders::fullscreen_vert, fragment, &log);
+  const GLuint program = build_program(*gl_, vertex_recipe(variant_), stage_recipe(variant_, fragment, defines), &log);
   if (program == 0) *message = what + ": " + log;
   return program;
 }
@@ -112,9 +83,8 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   BlurProgram& p = blur_[static_cast<std::size_t>(blur_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = blur_variant_defines(v);
-  p.program = link(defines, shaders::nearest_half_glsl, shaders::separable_blur_frag,
-                   "separable blur shader (" + defines + ")", message);
+  const std::string defines = blur_defines(v);
+  p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
   std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
@@ -136,14 +106,10 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Bl
   *out = &p;
   if (p.program != 0) return SSS_OK;
   // The fragment variant's switches (SSS_ACCUMULATE is always 0 here), then the compute ones.
-  const ImageFormat& format = kImageFormatTable[image_format_slot];
-  char compute_defines[160];
-  std::snprintf(compute_defines, sizeof compute_defines,
-                "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n", kComputeSegment,
-                kComputeApron, format.qualifier);
-  const std::string defines = "#version 430 core\n" + blur_variant_defines(v) + compute_defines;
+  const ComputeImageFormat& format = kComputeImageFormats[image_format_slot];
+  const std::string defines = compute_blur_defines(v, image_format_slot);
   std::string log;
-  p.program = build_compute_program(*gl_, defines + shaders::nearest_half_glsl, shaders::separable_blur_comp, &log);
+  p.program = build_compute_program(*gl_, compute_recipe(defines), &log);
   if (p.program == 0) {
     *message = "separable blur compute shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
@@ -187,12 +153,8 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
   CbfProgram& p = cbf_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  char defines[128];
-  std::snprintf(defines, sizeof defines,
-                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n#define SSS_MAX_TAPS %d\n",
-                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, static_cast<int>(SSS_MAX_SAMPLES));
-  p.program = link(defines, shaders::nearest_half_glsl, shaders::cbf_blur_frag,
-                   "cross-bilateral blur shader (" + std::string(defines) + ")", message);
+  const std::string defines = cbf_defines(outside, linear_depth, normals);
+  p.program = link("cbf_blur.frag", defines, "cross-bilateral blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[64];
   std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d", static_cast<int>(outside),
@@ -234,8 +196,8 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, s
   ResolveProgram& p = resolve_[linear_depth ? 1 : 0];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
-  p.program = link(defines, "", shaders::msaa_resolve_frag, "MSAA resolve shader (" + defines + ")", message);
+  const std::string defines = msaa_resolve_defines(linear_depth);
+  p.program = link("msaa_resolve.frag", defines, "MSAA resolve shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, linear_depth ? "sss msaa resolve linear" : "sss msaa resolve", nullptr);
   const Functions& f = *gl_;
@@ -250,7 +212,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, s
 
 sss_result ProgramCache::stencil_mark(GLuint* out, std::string* message) {
   if (stencil_mark_ == 0) {
-    stencil_mark_ = link("", "", shaders::msaa_mask_frag, "stencil mask shader", message);
+    stencil_mark_ = link("msaa_mask.frag", "", "stencil mask shader", message);
     if (stencil_mark_ == 0) return SSS_ERROR_SHADER_COMPILE;
     finish(stencil_mark_, "sss stencil mask from alpha", nullptr);
     set_unit(stencil_mark_, gl_->GetUniformLocation(stencil_mark_, "u_source"), unit::msaa_color);
@@ -263,7 +225,7 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   SampleWriteProgram& p = sample_write_;
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("", "", shaders::msaa_write_frag, "MSAA write-back shader", message);
+  p.program = link("msaa_write.frag", "", "MSAA write-back shader", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, "sss msaa per-sample write", nullptr);
   const Functions& f = *gl_;

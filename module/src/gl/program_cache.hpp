@@ -12,37 +12,19 @@
 
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
+#include "shader_variants.hpp"
 
 namespace sss::gl {
 
 using Log = std::function<void(int level, const std::string& message)>;
 
-// What a blur pass writes at a pixel that is not blurred (separable_blur.frag SSS_OUTSIDE).
-enum class Outside : int { write_centre = 0, discard = 1, copy_original = 2 };
-
-// The separable blur's compile-time switches (separable_blur.frag).
-struct BlurVariant {
-  Outside outside = Outside::write_centre;
-  int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
-  bool linear_depth = false, jitter = false, accumulate = false;
-};
-constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2;
-// A variant's index among kBlurVariantCount, and its #defines (fragment and compute programs).
-int blur_variant_index(const BlurVariant& v);
-std::string blur_variant_defines(const BlurVariant& v);
+// What a blur pass writes at a pixel that is not blurred (SSS_OUTSIDE), and the blur's switches:
+// shader_variants.hpp, which the shaders.glslang test builds every variant from too.
+using Outside = BlurOutside;
 
 // The compute path's target image formats: every colour and output format sss_apply_frame accepts.
-struct ImageFormat {
-  GLenum internal_format;
-  const char* qualifier;  // the GLSL layout qualifier
-};
-constexpr int kImageFormats = 2;
-// Pixels a compute work group writes along a pass's axis, and those it caches on each side of them
-// (separable_blur.comp SSS_SEGMENT, SSS_APRON): taps up to the apron away read shared memory.
-constexpr int kComputeSegment = 128;
-constexpr int kComputeApron = 64;
-const ImageFormat& image_format(int index);
-int image_format_index(GLint internal_format);  // -1: no image format
+constexpr int kImageFormats = kComputeImageFormatCount;
+int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1: no image format
 
 struct BlurProgram {
   GLuint program = 0;
@@ -99,10 +81,9 @@ class ProgramCache {
   static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
-  // A program from the fullscreen vertex shader and `fragment` after the dialect header, `defines`
-  // and `include`; 0 with *message ("<what>: <driver log>") on failure.
-  GLuint link(const std::string& defines, const char* include, const char* fragment, const std::string& what,
-              std::string* message);
+  // A program from the full-screen vertex shader and the fragment shader file `fragment` with
+  // `defines`, in the context's dialect; 0 with *message ("<what>: <driver log>") on failure.
+  GLuint link(const char* fragment, const std::string& defines, const std::string& what, std::string* message);
   void find_blur_uniforms(BlurProgram* p) const;
   void find_cbf_uniforms(CbfProgram* p) const;
   // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
@@ -113,7 +94,6 @@ class ProgramCache {
 
   const Functions* gl_ = nullptr;
   GlslVariant variant_ = GlslVariant::glsl330;
-  std::string header_;
   bool labels_ = false;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;

@@ -14,8 +14,9 @@
 //     centre, never two on one pixel) and each stands for the pixels between the
 //     midpoints to its neighbours.
 // Each channel's weights sum to the kernel's mass (1 for a normalised pass) by construction: the
-// cell integrals telescope. The shaders (separable_blur.frag, separable_blur.comp) compute the same
-// taps in the same float operations; footprint_taps() is their model.
+// cell integrals telescope. The shaders (module/shaders/footprint_taps.glsl, which
+// separable_blur.frag and .comp include) compute the same taps in the same float operations;
+// footprint_taps() is their model.
 #pragma once
 
 #include <array>

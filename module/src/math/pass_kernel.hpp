@@ -57,7 +57,8 @@ bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b);
 
 // Deterministic per-pixel noise in [0, 1) for the jittered taps: an integer hash of the pixel and
 // the pass axis (0 horizontal, 1 vertical), exact in GLSL's 32-bit uint arithmetic too
-// (separable_blur.frag and .comp compute the same bits).
+// (module/shaders/jitter.glsl, which separable_blur.frag and .comp include, must compute the same
+// bits: a change here is a change there).
 float jitter_noise(int x, int y, int axis);
 
 }  // namespace sss::math

@@ -1,0 +1,102 @@
+// The footprint-aware taps of a separable blur pass, for separable_blur.frag and .comp: they sit on
+// whole pixels chosen from this pixel's footprint (no bilinear read blends a neighbour into a tap)
+// and each weighs the pass's kernel integrated over the pixels it stands for, from its cumulative
+// table u_cdf. This must compute exactly what sss::math::footprint_taps does
+// (module/src/math/footprint_kernel.cpp).
+//
+// Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_JITTER,
+// SSS_FOLLOW_SURFACE (see separable_blur.frag). Before this piece the shader includes depth.glsl
+// and jitter.glsl, and defines how its taps are read (GLSL has no function pointers):
+//   struct TapSite      what the shader needs to find this pixel's taps
+//   vec4 sss_fetch_tap(TapSite site, float offset)
+//                       the pixel `offset` pixels from the centre along the pass's axis, kept in
+//                       u_clamp: rgb its colour, a its raw depth (read only with SSS_FOLLOW_SURFACE)
+
+uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
+uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
+uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
+uniform int u_half_taps;                      // the most taps on either side
+#if SSS_JITTER
+uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
+#endif
+#if SSS_FOLLOW_SURFACE == 2
+uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
+#endif
+
+// The pass's kernel integrated from 0 to x_mm, as sss::math::footprint_half_cdf.
+vec3 half_cdf(float x_mm) {
+  float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  int j = min(int(u), SSS_CDF_ENTRIES - 2);
+  float f = u - float(j);
+  return u_cdf[j].rgb * (1.0 - f) + u_cdf[j + 1].rgb * f;
+}
+
+// The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
+float tap_position(int i, float previous, bool dense, float reach_pixels) {
+  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
+}
+
+// A tap's colour as it enters the sum: a non-finite neighbour must not spread, so it counts as the
+// centre's colour (its weight goes to the centre), like a tap across a depth step; with
+// follow-surface it is blended back to the centre's as its depth leaves the kernel's reach.
+vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
+  vec3 tap = fetched.rgb;
+  if (any(isnan(tap)) || any(isinf(tap))) tap = centre;
+#if SSS_FOLLOW_SURFACE
+  float d = follow_surface * abs(centre_distance - view_distance(fetched.a));
+#if SSS_FOLLOW_SURFACE == 2
+  float s = 1.0 - exp(-d * d * u_inv_two_variance);
+#else
+  float s = d;
+#endif
+  if (isnan(s) || !(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
+  tap = mix(tap, centre, s);
+#endif
+  return tap;
+}
+
+// The pass's weighted sum at one pixel (centre colour `centre`, taps step_pixels apart per profile
+// mm; `pixel` and `axis` (0 horizontal, 1 vertical) seed the jitter). Taps on whole pixels: every
+// pixel out to the reach where the kernel spans at most u_half_taps on a side, else u_half_taps
+// spread denser at the centre (never two on one pixel). A tap's weight is the kernel over the
+// pixels between the midpoints to its neighbours; the last one takes the tail.
+vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, float follow_surface,
+                   ivec2 pixel, int axis) {
+  float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
+  bool dense = reach_pixels <= float(u_half_taps) + 0.5;
+  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+#if SSS_JITTER
+  int jitter_from = dense ? count + 1 : u_jitter_from;
+  float noise = jitter_noise(pixel, axis);
+  float inner = 0.0;
+#endif
+  // Without taps the whole kernel stays on the centre. With taps the centre keeps the kernel out to
+  // the midpoint to the first tap, set in the loop's first step, so a pixel with no tap (a kernel
+  // inside its pixel) looks nothing up.
+  vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
+  vec3 sum = centre * (2.0 * total + u_footprint.yzw);
+  vec3 below = total;
+  float p = 0.0;
+  for (int i = 1; i <= count; ++i) {
+    if (i == 1) {
+      p = tap_position(1, 0.0, dense, reach_pixels);
+      below = half_cdf(0.5 * p / step_pixels);
+      sum = centre * (2.0 * below + u_footprint.yzw);
+    }
+    float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
+    vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    float read = p;
+#if SSS_JITTER
+    if (i >= jitter_from) read = jittered_position(inner, p, next, i == count, noise);
+    inner = p;
+#endif
+    vec3 pair = vec3(0.0);
+    for (int side = 0; side < 2; ++side) {
+      pair += settled_tap(sss_fetch_tap(site, side == 0 ? read : -read), centre, centre_distance, follow_surface);
+    }
+    sum += (upto - below) * pair;
+    below = upto;
+    p = next;
+  }
+  return sum;
+}

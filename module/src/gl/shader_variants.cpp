@@ -1,0 +1,76 @@
+#include "shader_variants.hpp"
+
+#include <cstdio>
+#include <utility>
+
+#include "shader_constants.hpp"
+
+namespace sss::gl {
+
+int blur_variant_index(const BlurVariant& v) {
+  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
+  index = index * 2 + (v.linear_depth ? 1 : 0);
+  index = index * 2 + (v.jitter ? 1 : 0);
+  return index * 2 + (v.accumulate ? 1 : 0);
+}
+
+BlurVariant blur_variant_at(int index) {
+  BlurVariant v;
+  v.accumulate = index % 2 != 0;
+  index /= 2;
+  v.jitter = index % 2 != 0;
+  index /= 2;
+  v.linear_depth = index % 2 != 0;
+  index /= 2;
+  v.follow_surface = index % 3;
+  v.outside = static_cast<BlurOutside>(index / 3);
+  return v;
+}
+
+std::string blur_defines(const BlurVariant& v) {
+  char defines[320];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
+                "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
+                "#define SSS_MAX_HALF_TAPS %d\n",
+                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
+                v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps);
+  return defines;
+}
+
+std::string compute_blur_defines(const BlurVariant& v, int image_format) {
+  char defines[160];
+  std::snprintf(defines, sizeof defines, "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n",
+                kComputeSegment, kComputeApron, kComputeImageFormats[image_format].qualifier);
+  return blur_defines(v) + defines;
+}
+
+std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
+  char defines[128];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n"
+                "#define SSS_MAX_TAPS %d\n",
+                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, kCbfMaxTaps);
+  return defines;
+}
+
+std::string msaa_resolve_defines(bool linear_depth) {
+  return linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
+}
+
+std::string lut_defines(int kind) {
+  char defines[128];
+  std::snprintf(defines, sizeof defines, "#define SSS_LUT_KIND %d\n#define SSS_MAX_TERMS %d\n#define SSS_GL_ORDER %d\n",
+                kind, kLutMaxTerms, kLutOrder);
+  return defines;
+}
+
+ShaderRecipe stage_recipe(GlslVariant v, const char* file, std::string defines) {
+  return ShaderRecipe{glsl_header_name(v), std::move(defines), file};
+}
+
+ShaderRecipe compute_recipe(std::string defines) {
+  return ShaderRecipe{"version_430.glsl", std::move(defines), "separable_blur.comp"};
+}
+
+}  // namespace sss::gl

@@ -1,0 +1,60 @@
+// Every program variant the module builds, as recipes for the shader assembler: the variants'
+// compile-time switches, their #define lines (with the sizes of shader_constants.hpp) and the
+// parts of each stage. SeparableFilter and the LUT generator build from these, and the
+// shaders.glslang test writes every variant through them (tests/shaders/write_shader_variants.cpp),
+// so the switches and numbers are spelt out here only.
+#pragma once
+
+#include <string>
+
+#include "gl_functions.hpp"
+#include "glsl_variant.hpp"
+#include "shader_source.hpp"
+
+namespace sss::gl {
+
+// What a blur pass writes where it leaves a pixel (SSS_OUTSIDE): its own value (horizontal pass),
+// nothing (discard: vertical pass writing back), or the host's original colour (separate output).
+enum class BlurOutside : int { write_centre = 0, discard = 1, copy_original = 2 };
+
+// The separable blur's compile-time switches (separable_blur.frag; .comp never accumulates).
+struct BlurVariant {
+  BlurOutside outside = BlurOutside::write_centre;
+  int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
+  bool linear_depth = false, jitter = false, accumulate = false;
+};
+inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2;
+// A variant's index in [0, kBlurVariantCount), and the variant at an index.
+int blur_variant_index(const BlurVariant& v);
+BlurVariant blur_variant_at(int index);
+std::string blur_defines(const BlurVariant& v);
+
+// The compute path's target image formats (every colour and output format the path takes).
+struct ComputeImageFormat {
+  GLenum internal_format;
+  const char* qualifier;  // SSS_IMAGE_FORMAT
+};
+inline constexpr ComputeImageFormat kComputeImageFormats[] = {{RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}};
+inline constexpr int kComputeImageFormatCount = 2;
+// The blur variant's switches, then the compute shader's (segment, apron, image format).
+std::string compute_blur_defines(const BlurVariant& v, int image_format);
+
+// The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
+std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
+
+// The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH.
+std::string msaa_resolve_defines(bool linear_depth);
+// The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
+inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
+
+// The LUT generator (lut_generate.frag): SSS_LUT_KIND 0 diffuse, 1 shadow, and its array sizes.
+std::string lut_defines(int kind);
+
+// A stage of a program in dialect `v`: its header piece, `defines` and the stage's file.
+ShaderRecipe stage_recipe(GlslVariant v, const char* file, std::string defines = "");
+// The compute path's blur: GLSL 4.30 (version_430.glsl), `defines` (compute_blur_defines).
+ShaderRecipe compute_recipe(std::string defines);
+// The vertex stage of every program: the full-screen triangle.
+inline ShaderRecipe vertex_recipe(GlslVariant v) { return stage_recipe(v, "fullscreen.vert"); }
+
+}  // namespace sss::gl

@@ -1,0 +1,141 @@
+// sss_shader_variants <folder>: writes every shader stage the module can build, each assembled as
+// the module assembles it (gl::assemble_shader on the recipes of gl/shader_variants.hpp, with the
+// sizes of gl/shader_constants.hpp), for the shaders.glslang test (cmake/SssValidateShaders.cmake)
+// to validate offline with glslangValidator. The variants are enumerated here, and only here; their
+// switches and numbers come from the module.
+//
+// Each stage goes to <dialect>_<program>.<vert|frag|comp> (glslangValidator takes the stage from
+// the extension and the profile from #version), and the names of its parts, one per line in the
+// order of their numbers, to the same name + ".parts".
+// sss_shader_variants --name-log <stage file>: the validator's log (stdin) with its locations named
+// by the module's own gl::name_log_sources, from the stage's .parts.
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gl/shader_variants.hpp"
+
+namespace {
+
+namespace gl = sss::gl;
+
+struct Writer {
+  std::string folder;
+  int written = 0;
+  bool ok = true;
+
+  void write(const std::string& name, const gl::ShaderRecipe& recipe) {
+    gl::AssembledShader shader;
+    std::string error;
+    if (!gl::assemble_shader(recipe, &shader, &error)) {
+      std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+      ok = false;
+      return;
+    }
+    std::ofstream text(folder + '/' + name);
+    text << shader.text;
+    std::ofstream parts(folder + '/' + name + ".parts");
+    for (const std::string& file : shader.files) parts << file << '\n';
+    if (!text || !parts) {
+      std::fprintf(stderr, "%s: cannot write into %s\n", name.c_str(), folder.c_str());
+      ok = false;
+      return;
+    }
+    ++written;
+  }
+};
+
+const char* dialect_prefix(gl::GlslVariant v) {
+  switch (v) {
+    case gl::GlslVariant::glsl420: return "420";
+    case gl::GlslVariant::essl300: return "es300";
+    case gl::GlslVariant::glsl330: break;
+  }
+  return "330";
+}
+
+std::string blur_name(const gl::BlurVariant& v) {
+  char name[64];
+  std::snprintf(name, sizeof name, "o%d_f%d_l%d_j%d", static_cast<int>(v.outside), v.follow_surface,
+                v.linear_depth ? 1 : 0, v.jitter ? 1 : 0);
+  return name;
+}
+
+// The fragment-path programs of one dialect (each with the full-screen vertex stage, written once).
+void write_dialect(Writer* out, gl::GlslVariant dialect) {
+  const std::string d = std::string(dialect_prefix(dialect)) + '_';
+  out->write(d + "fullscreen.vert", gl::vertex_recipe(dialect));
+  out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
+  for (int i = 0; i < gl::kBlurVariantCount; ++i) {
+    const gl::BlurVariant v = gl::blur_variant_at(i);
+    out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + ".frag",
+               gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+  }
+  for (int outside = 0; outside < 3; ++outside) {
+    for (int linear = 0; linear < 2; ++linear) {
+      for (int normals = 0; normals < 2; ++normals) {
+        const std::string defines = gl::cbf_defines(static_cast<gl::BlurOutside>(outside), linear != 0, normals != 0);
+        out->write(d + "cbf_o" + std::to_string(outside) + "_l" + std::to_string(linear) + "_n" +
+                       std::to_string(normals) + ".frag",
+                   gl::stage_recipe(dialect, "cbf_blur.frag", defines));
+      }
+    }
+  }
+  if (gl::has_msaa_shaders(dialect)) {
+    for (int linear = 0; linear < 2; ++linear) {
+      out->write(d + "msaa_resolve_l" + std::to_string(linear) + ".frag",
+                 gl::stage_recipe(dialect, "msaa_resolve.frag", gl::msaa_resolve_defines(linear != 0)));
+    }
+    out->write(d + "msaa_mask.frag", gl::stage_recipe(dialect, "msaa_mask.frag"));
+    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag"));
+  }
+  for (int kind = 0; kind < 2; ++kind) {
+    out->write(d + "lut_generate_k" + std::to_string(kind) + ".frag",
+               gl::stage_recipe(dialect, "lut_generate.frag", gl::lut_defines(kind)));
+  }
+}
+
+// The compute path's blur (GLSL 4.30): every variant but SSS_ACCUMULATE (single-term kernels only)
+// × every target image format.
+void write_compute(Writer* out) {
+  for (int i = 0; i < gl::kBlurVariantCount; ++i) {
+    const gl::BlurVariant v = gl::blur_variant_at(i);
+    if (v.accumulate) continue;
+    for (int format = 0; format < gl::kComputeImageFormatCount; ++format) {
+      out->write("430_blur_compute_" + blur_name(v) + '_' + gl::kComputeImageFormats[format].qualifier + ".comp",
+                 gl::compute_recipe(gl::compute_blur_defines(v, format)));
+    }
+  }
+}
+
+// Prints stdin with the locations named after `stage`'s parts.
+int name_log(const std::string& stage) {
+  std::ifstream parts(stage + ".parts");
+  std::vector<std::string> files;
+  for (std::string line; std::getline(parts, line);) files.push_back(line);
+  std::ostringstream log;
+  log << std::cin.rdbuf();
+  std::cout << gl::name_log_sources(log.str(), files);
+  return files.empty() ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "--name-log") == 0) return name_log(argv[2]);
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s <folder> | --name-log <stage file>\n", argv[0]);
+    return 2;
+  }
+  Writer out{argv[1]};
+  for (gl::GlslVariant dialect : {gl::GlslVariant::glsl330, gl::GlslVariant::glsl420, gl::GlslVariant::essl300}) {
+    write_dialect(&out, dialect);
+  }
+  write_compute(&out);
+  std::printf("%d shader stages written to %s\n", out.written, out.folder.c_str());
+  return out.ok ? 0 : 1;
+}
