@@ -26,6 +26,15 @@ class Variant : public FilterCaseTest {
     loader_override_ = nullptr;
     return ctx;
   }
+  // A camera for sss_ and an 8x8 RGBA16F colour of one value at one depth; returns the colour.
+  std::vector<float> flat_frame(GLuint* color, GLuint* depth) {
+    const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
+    EXPECT_EQ(sss_set_camera(sss_, projection), SSS_OK);
+    std::vector<float> rgba(8 * 8 * 4, 0.5f);
+    *color = make_rgba16f(8, 8, rgba);
+    *depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+    return rgba;
+  }
 };
 
 // GLSL 330 below GL 4.2, 420 from 4.2, ES 300 on OpenGL ES: llvmpipe is GL 4.5 core / ES 3.2.
@@ -73,11 +82,8 @@ TEST_F(Variant, AGivenDescriptionIsCheckedAgainstTheGlWhereItCanBeAsked) {
   LogRecord log;
   sss_ = create_logged(&log, sss_headless_get_proc_address);
   ASSERT_NE(sss_, nullptr);
-  const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
-  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK);
-  const std::vector<float> rgba(8 * 8 * 4, 0.5f);
-  const GLuint color = make_rgba16f(8, 8, rgba);
-  const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+  GLuint color = 0, depth = 0;
+  const std::vector<float> rgba = flat_frame(&color, &depth);
   sss_frame frame = frame_of(color, depth);
   frame.color_format = GL_RGBA32F;  // wrong: it is RGBA16F
   EXPECT_EQ(sss_apply_frame(sss_, &frame), SSS_ERROR_INVALID_ARGUMENT);
@@ -171,11 +177,8 @@ class Gles : public Variant {
 TEST_F(Gles, WithoutTheDescriptionApplyFailsNamingTheFieldAndChangesNothing) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
-  const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
-  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK);
-  const std::vector<float> rgba(8 * 8 * 4, 0.5f);
-  const GLuint color = make_rgba16f(8, 8, rgba);
-  const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+  GLuint color = 0, depth = 0;
+  const std::vector<float> rgba = flat_frame(&color, &depth);
   EXPECT_EQ(sss_apply(sss_, color, depth, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("frame->color_format"), std::string::npos) << sss_last_error(sss_);
   sss_frame frame = frame_of(color, depth);
