@@ -44,6 +44,12 @@ cmake -S . -B build/shared -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_SH
   -DSSS_BUILD_TESTS=OFF -DSSS_BUILD_DEMO=OFF -DSSS_BUILD_INTEGRATION=OFF
 cmake --build build/shared --parallel "$jobs"
 cmake --install build/shared --prefix build/prefix-shared
+# The state guard's test hook is only in the tests' variant of the library (ctest
+# library.has_no_test_hook checks the static libsss): not in the shared one's symbols either.
+if nm -C build/prefix-shared/lib/libsss.so | grep restore_skip_mask; then
+  echo "check-consumers: the shared libsss contains the state guard's test hook" >&2
+  exit 1
+fi
 check_prefix shared build/prefix-shared
 echo "== consumer (subdirectory): add_subdirectory of this checkout"
 cmake -S integration/consumer -B build/consumer-subdirectory -G Ninja -DSSS_SOURCE_DIR="$PWD"

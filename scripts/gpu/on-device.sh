@@ -37,7 +37,7 @@ while [[ $# -gt 0 ]]; do
   shift
   case "$step" in
     tests)
-      for suite in sss_gl_tests sss_gl_stress_tests; do
+      for suite in sss_gl_tests sss_gl_state_tests sss_gl_stress_tests; do
         timeout "$limit" "build-gpu/tests/$suite" --sss-backend=egl-device 2>&1 | tail -n 400 >>"$out/gl-tests.log"
         rc=${PIPESTATUS[0]}
         echo "$suite: exit $rc" | tee -a "$out/gl-tests.log"

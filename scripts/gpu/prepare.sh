@@ -13,14 +13,14 @@ for ignored in /.gl/ /.gpu/; do
 done
 
 cmake -S . -B build-gpu -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build-gpu --parallel "$(nproc)" --target sss_bench sss_headless_info sss_gl_tests sss_gl_stress_tests
+cmake --build build-gpu --parallel "$(nproc)" --target sss_bench sss_headless_info sss_gl_tests sss_gl_state_tests sss_gl_stress_tests
 
 rm -rf .gpu
 mkdir -p .gpu/lib
 cp -r ../shared/assets .gpu/assets
 # Every library the programs load from the system that the GPU machine's image may not have: all
 # but the C and C++ runtimes (there, newer) and GL (the driver's and the .gl packages').
-for program in build-gpu/tests/bench/sss_bench build-gpu/tests/sss_gl_tests build-gpu/tests/sss_gl_stress_tests; do
+for program in build-gpu/tests/bench/sss_bench build-gpu/tests/sss_gl_tests build-gpu/tests/sss_gl_state_tests build-gpu/tests/sss_gl_stress_tests; do
   ldd "$program" | awk '$3 ~ /^\// {print $3}'
 done | sort -u | grep -Ev '/(libc|libm|libstdc\+\+|libgcc_s|libGL|libEGL|libOpenGL|libGLX|libGLdispatch)\.' |
   while read -r lib; do cp -L "$lib" .gpu/lib/; done

@@ -19,6 +19,7 @@
 #include "calibration.hpp"
 #include "gpu_busy.hpp"
 #include "gpu_scene.hpp"
+#include "host_context.hpp"
 #include "host_gl.hpp"
 #include "host_gl_util.hpp"
 #include "math/exact_reference.hpp"
@@ -260,18 +261,8 @@ int run(const Options& options) {
     std::fprintf(stderr, "sss_bench: unknown backend %s\n", options.backend.c_str());
     return 2;
   }
-  sss_headless_desc desc = {backend, 3, 3, 1, 0};
-  sss_headless* headless = nullptr;
-  char error[512] = "";
-  if (sss_headless_create(&desc, &headless, error, sizeof error) != 0) {
-    std::fprintf(stderr, "sss_bench: no GL context: %s\n", error);
-    return 1;
-  }
-  std::string missing;
-  if (!host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
-    std::fprintf(stderr, "sss_bench: missing GL functions: %s\n", missing.c_str());
-    return 1;
-  }
+  sss_headless* headless = sss_test::open_host_context(backend, "sss_bench");
+  if (headless == nullptr) return 1;
   std::filesystem::create_directories(options.out);
   RunInfo info;
   info.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

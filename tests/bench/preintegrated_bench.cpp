@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "gpu_scene.hpp"
+#include "host_context.hpp"
 #include "host_gl.hpp"
 #include "math/preintegrated_lut.hpp"
 #include "method.hpp"
@@ -127,18 +128,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "unknown backend %s\n", args.backend.c_str());
     return 2;
   }
-  sss_headless_desc desc = {backend, 3, 3, 1, 0};
-  sss_headless* headless = nullptr;
-  char error[512] = "";
-  if (sss_headless_create(&desc, &headless, error, sizeof error) != 0) {
-    std::fprintf(stderr, "no GL context: %s\n", error);
-    return 1;
-  }
-  std::string missing;
-  if (!host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
-    std::fprintf(stderr, "missing GL functions: %s\n", missing.c_str());
-    return 1;
-  }
+  sss_headless* headless = sss_test::open_host_context(backend, "sss_bench_preintegrated");
+  if (headless == nullptr) return 1;
   const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   std::printf("sss_bench_preintegrated: GL_RENDERER %s, %u hardware threads\n", renderer.c_str(), cores);

@@ -13,6 +13,7 @@
 #include <limits>
 #include <vector>
 
+#include "colour_range.hpp"
 #include "fuzz_common.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/exact_reference.hpp"
@@ -64,20 +65,7 @@ void check_cpu_model(sss_fuzz::Bytes& in, int w, int h, const std::vector<float>
   sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
 
   const std::size_t n = mask.size();
-  float lo[3], hi[3], magnitude = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    lo[c] = std::numeric_limits<float>::infinity();
-    hi[c] = -lo[c];
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const float* p = &color[i * 4];
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-      magnitude = std::max(magnitude, std::fabs(p[c]));
-    }
-  }
+  const sss_test::ColourRange range = sss_test::finite_colour_range(color.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
     const float* a = &color[i * 4];
     const float* b = &out[i * 4];
@@ -90,8 +78,8 @@ void check_cpu_model(sss_fuzz::Bytes& in, int w, int h, const std::vector<float>
     for (int c = 0; c < 3; ++c) {
       SSS_FUZZ_CHECK(std::isfinite(b[c]));
       if (std::memcmp(&a[c], &b[c], sizeof(float)) == 0) continue;
-      SSS_FUZZ_CHECK(b[c] >= lo[c] - (std::fabs(lo[c]) * (1.0f / 1024.0f) + magnitude * 4e-6f + 6e-8f));
-      SSS_FUZZ_CHECK(b[c] <= hi[c] + (std::fabs(hi[c]) * (1.0f / 1024.0f) + magnitude * 4e-6f + 6e-8f));
+      SSS_FUZZ_CHECK(b[c] >= range.least(c));
+      SSS_FUZZ_CHECK(b[c] <= range.greatest(c));
     }
   }
 }

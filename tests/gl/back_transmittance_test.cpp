@@ -112,13 +112,7 @@ TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit
     const GLuint back_texture = make_rgba32f(kSize, kSize, back);
     const GLuint normal_texture = make_rgba32f(kSize, kSize, normals);
     const GLuint target = make_rgba32f(kSize, kSize, std::vector<float>(kSize * kSize * 4, 0.0f));
-    GLuint fbo = 0, vao = 0;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glViewport(0, 0, kSize, kSize);
+    const DrawTarget draw(target, kSize, kSize);
     glUseProgram(program);
     glUniform4fv(glGetUniformLocation(program, "sss_transmittance_terms"), count, terms.data());
     glUniform1i(glGetUniformLocation(program, "sss_transmittance_term_count"), count);
@@ -134,10 +128,7 @@ TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit
     glUniform1i(glGetUniformLocation(program, "u_back_normal"), 1);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    std::vector<float> out = read_rgba(target, kSize, kSize);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteVertexArrays(1, &vao);
-    return out;
+    return read_rgba(target, kSize, kSize);
   };
 
   const Slab thin{0.04f, {0.0f, 0.0f, -1.0f}};    // 2 mm of profile behind, facing away: opposing planes

@@ -16,38 +16,24 @@ using namespace host_gl;
 namespace sss_test {
 namespace {
 
-struct LogRecord {
-  std::vector<std::pair<int, std::string>> messages;
-  bool has(int level, const std::string& part) const {
-    for (const auto& m : messages) {
-      if (m.first == level && m.second.find(part) != std::string::npos) return true;
-    }
-    return false;
-  }
-  int count(int level) const {
-    int n = 0;
-    for (const auto& m : messages) n += m.first == level ? 1 : 0;
-    return n;
-  }
-};
-
-void record(int level, const char* message, void* user) {
-  static_cast<LogRecord*>(user)->messages.emplace_back(level, message);
-}
-
 class Variant : public FilterCaseTest {
  protected:
   sss_context* create_logged(LogRecord* log, sss_get_proc_address_fn loader = nullptr) {
-    sss_create_desc desc = {};
-    desc.struct_size = sizeof desc;
-    desc.get_proc_address =
-        loader != nullptr ? loader : (is_gles() ? es30_get_proc_address : sss_headless_get_proc_address);
-    desc.get_proc_address_user = headless_;
-    desc.log = record;
-    desc.log_user = log;
-    sss_context* ctx = nullptr;
-    EXPECT_EQ(sss_create(&desc, &ctx), SSS_OK) << sss_last_error(nullptr);
+    log_ = log;
+    loader_override_ = loader;
+    sss_context* ctx = create_sss();
+    log_ = nullptr;
+    loader_override_ = nullptr;
     return ctx;
+  }
+  // A camera for sss_ and an 8x8 RGBA16F colour of one value at one depth; returns the colour.
+  std::vector<float> flat_frame(GLuint* color, GLuint* depth) {
+    const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
+    EXPECT_EQ(sss_set_camera(sss_, projection), SSS_OK);
+    std::vector<float> rgba(8 * 8 * 4, 0.5f);
+    *color = make_rgba16f(8, 8, rgba);
+    *depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+    return rgba;
   }
 };
 
@@ -79,10 +65,7 @@ TEST_F(Variant, FramesLogAllocationsAtDebugAndFailuresAtErrorWithTheLastErrorTex
   sss_ = create_logged(&log);
   ASSERT_NE(sss_, nullptr);
   ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
-  sss_frame frame = {};
-  frame.struct_size = sizeof frame;
-  frame.color_texture = color;
-  frame.depth_texture = depth;
+  sss_frame frame = frame_of(color, depth);
   c.half_color = true;
   describe_frame(c, 24, 16, &frame);
   ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
@@ -99,15 +82,9 @@ TEST_F(Variant, AGivenDescriptionIsCheckedAgainstTheGlWhereItCanBeAsked) {
   LogRecord log;
   sss_ = create_logged(&log, sss_headless_get_proc_address);
   ASSERT_NE(sss_, nullptr);
-  const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
-  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK);
-  const std::vector<float> rgba(8 * 8 * 4, 0.5f);
-  const GLuint color = make_rgba16f(8, 8, rgba);
-  const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
-  sss_frame frame = {};
-  frame.struct_size = sizeof frame;
-  frame.color_texture = color;
-  frame.depth_texture = depth;
+  GLuint color = 0, depth = 0;
+  const std::vector<float> rgba = flat_frame(&color, &depth);
+  sss_frame frame = frame_of(color, depth);
   frame.color_format = GL_RGBA32F;  // wrong: it is RGBA16F
   EXPECT_EQ(sss_apply_frame(sss_, &frame), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("frame->color_format = GL_RGBA32F"), std::string::npos)
@@ -137,10 +114,7 @@ TEST_F(Variant, ARebuildAfterALostContextIsLoggedAtInfo) {
   FilterCase c;
   c.half_color = true;
   const auto frame_on = [&](GLuint color, GLuint depth) {
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color;
-    f.depth_texture = depth;
+    sss_frame f = frame_of(color, depth);
     describe_frame(c, 16, 12, &f);
     return f;
   };
@@ -172,25 +146,11 @@ TEST_F(Variant, ARebuildAfterALostContextIsLoggedAtInfo) {
                                         expected_variant(is_gles())));
 }
 
-// A desktop context that says it is OpenGL 3.3 (llvmpipe gives 4.5 for any request), so that the
-// GLSL 330 variant runs: glGetString(GL_VERSION) is answered by the test.
-using GetStringFn = const GLubyte* (*)(GLenum);
-GetStringFn g_real_get_string = nullptr;
-const GLubyte* get_string_as_33(GLenum name) {
-  if (name == GL_VERSION) return reinterpret_cast<const GLubyte*>("3.3 (Core Profile) as told by the test");
-  return g_real_get_string(name);
-}
-void* gl33_get_proc_address(const char* name, void* user) {
-  if (std::string(name) == "glGetString") {
-    g_real_get_string = reinterpret_cast<GetStringFn>(sss_headless_get_proc_address(name, user));
-    return reinterpret_cast<void*>(&get_string_as_33);
-  }
-  return sss_headless_get_proc_address(name, user);
-}
-
 TEST_F(Variant, Glsl330OnAGl33ContextMatchesTheCpuModel) {
   if (is_gles()) GTEST_SKIP() << "desktop GL only";
-  loader_override_ = gl33_get_proc_address;
+  // A desktop context that says it is OpenGL 3.3 (llvmpipe gives 4.5 for any request), so that the
+  // GLSL 330 variant runs.
+  loader_override_ = loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test", sss_headless_get_proc_address);
   FilterCase c;
   sss_default_settings(&c.settings);
   c.settings.world_units_per_mm = 0.045f;
@@ -217,17 +177,11 @@ class Gles : public Variant {
 TEST_F(Gles, WithoutTheDescriptionApplyFailsNamingTheFieldAndChangesNothing) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
-  const float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02f, -1, 0, 0, -0.202f, 0};
-  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK);
-  const std::vector<float> rgba(8 * 8 * 4, 0.5f);
-  const GLuint color = make_rgba16f(8, 8, rgba);
-  const GLuint depth = make_depth32f(8, 8, std::vector<float>(64, 0.5f));
+  GLuint color = 0, depth = 0;
+  const std::vector<float> rgba = flat_frame(&color, &depth);
   EXPECT_EQ(sss_apply(sss_, color, depth, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("frame->color_format"), std::string::npos) << sss_last_error(sss_);
-  sss_frame frame = {};
-  frame.struct_size = sizeof frame;
-  frame.color_texture = color;
-  frame.depth_texture = depth;
+  sss_frame frame = frame_of(color, depth);
   frame.color_format = GL_RGBA16F;
   frame.texture_width = frame.texture_height = 8;
   EXPECT_EQ(sss_apply_frame(sss_, &frame), SSS_ERROR_INVALID_ARGUMENT);
@@ -253,17 +207,7 @@ TEST_F(Gles, EveryStateOfTheEsListIsRestored) {
   c.depth = DepthKind::depth24_stencil8;
   c.use_stencil = true;
 
-  GLuint program = glCreateProgram();
-  const char* vs = "#version 300 es\nvoid main(){gl_Position=vec4(0.0);}\n";
-  const char* fs = "#version 300 es\nprecision mediump float;out vec4 c;void main(){c=vec4(1.0);}\n";
-  for (auto [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
-    const GLuint sh = glCreateShader(type);
-    glShaderSource(sh, 1, &src, nullptr);
-    glCompileShader(sh);
-    glAttachShader(program, sh);
-    glDeleteShader(sh);
-  }
-  glLinkProgram(program);
+  GLuint program = make_host_program(true);
   glUseProgram(program);
   GLuint vao = 0, fbos[2] = {0, 0}, rb = 0, buffer = 0, samplers[3] = {0, 0, 0};
   glGenVertexArrays(1, &vao);

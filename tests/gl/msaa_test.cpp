@@ -392,10 +392,7 @@ TEST_F(MsaaOnGles, AMultisampledInputIsUnsupported) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, bound);  // the module's probe binds on unit 0: this must survive it
   const Snapshot before = take_snapshot(true);
-  sss_frame f = {};
-  f.struct_size = sizeof f;
-  f.color_texture = color;
-  f.depth_texture = depth;
+  sss_frame f = frame_of(color, depth);
   EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_UNSUPPORTED) << sss_last_error(sss_);
   const std::string message = sss_last_error(sss_);
   EXPECT_NE(message.find("color_texture = " + std::to_string(color) + " is GL_TEXTURE_2D_MULTISAMPLE"),
@@ -473,10 +470,7 @@ TEST_F(MsaaOnGles, OnEs30TheMultisampleTargetIsNeverTouched) {
   const GLuint color = make_rgba16f(kW, kH, rgba);
   const GLuint depth = make_depth32f(kW, kH, std::vector<float>(kW * kH, 0.5f));
   ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  sss_frame f = {};
-  f.struct_size = sizeof f;
-  f.color_texture = multisampled;
-  f.depth_texture = depth;
+  sss_frame f = frame_of(multisampled, depth);
   f.color_format = GL_RGBA16F;
   f.depth_format = GL_DEPTH_COMPONENT32F;
   f.texture_width = kW;

@@ -27,19 +27,7 @@ class StateHarness : public GlTest {
   void SetUp() override {
     GlTest::SetUp();
     if (HasFatalFailure()) return;
-    const char* vs = "#version 330 core\nvoid main(){gl_Position=vec4(0.0);}\n";
-    const char* fs = "#version 330 core\nout vec4 c;void main(){c=vec4(1.0);}\n";
-    for (GLuint& p : programs_) {
-      p = glCreateProgram();
-      for (auto [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
-        const GLuint sh = glCreateShader(type);
-        glShaderSource(sh, 1, &src, nullptr);
-        glCompileShader(sh);
-        glAttachShader(p, sh);
-        glDeleteShader(sh);
-      }
-      glLinkProgram(p);
-    }
+    for (GLuint& p : programs_) p = make_host_program(false);
     glGenVertexArrays(2, vaos_);
     glGenFramebuffers(2, fbos_);
     glGenRenderbuffers(1, &renderbuffer_);

@@ -23,17 +23,7 @@ class StateRestore : public FilterCaseTest {
   GLuint samplers_[4] = {0, 0, 0, 0};
 
   void set_unusual_state() {
-    const char* vs = "#version 330 core\nvoid main(){gl_Position=vec4(0.0);}\n";
-    const char* fs = "#version 330 core\nout vec4 c;void main(){c=vec4(1.0);}\n";
-    program_ = glCreateProgram();
-    for (auto [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
-      const GLuint sh = glCreateShader(type);
-      glShaderSource(sh, 1, &src, nullptr);
-      glCompileShader(sh);
-      glAttachShader(program_, sh);
-      glDeleteShader(sh);
-    }
-    glLinkProgram(program_);
+    program_ = make_host_program(false);
     glUseProgram(program_);
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);

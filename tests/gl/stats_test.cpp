@@ -3,9 +3,11 @@
 // pixel count is unavailable and says so).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
@@ -33,10 +35,7 @@ class Stats : public FilterCaseTest {
     projection_ = scene.projection;
   }
   sss_frame frame() const {
-    sss_frame f = {};
-    f.struct_size = sizeof f;
-    f.color_texture = color_;
-    f.depth_texture = depth_;
+    sss_frame f = frame_of(color_, depth_);
     FilterCase c;
     c.half_color = true;
     describe_frame(c, 48, 32, &f);  // needed on ES 3.0, checked elsewhere
@@ -57,6 +56,35 @@ class Stats : public FilterCaseTest {
     EXPECT_EQ(sss_get_stats(sss_, &st), SSS_OK) << sss_last_error(sss_);
     return st;
   }
+  // Applies `f` and waits for the GL to finish it; keeps the wall-clock time that took (ms), which
+  // holds all of the frame's GPU work: none of it can start before its commands are given.
+  void timed_frame(const sss_frame& f) {
+    const auto start = std::chrono::steady_clock::now();
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    glFinish();
+    wall_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  // The GPU times reported for the measured frame: finite, above zero (a pass that blurs pixels
+  // takes time), and together within the wall-clock time around that frame (its passes run one
+  // after the other inside it). The allowance is the timers' resolution, not a margin for noise:
+  // GL_TIME_ELAPSED counts in ns from a GPU clock of 1 MHz or more (one tick at each end of each of
+  // the two queries, at most 4 us) and steady_clock in ns; 10 us covers both.
+  void expect_gpu_times_within_the_wall_clock(const sss_stats& st) {
+    ASSERT_NE(st.measured & SSS_STATS_GPU_TIME, 0u);
+    ASSERT_GE(st.measured_frame, 1u);
+    ASSERT_LE(st.measured_frame, wall_ms_.size());
+    constexpr double kResolutionMs = 0.01;
+    const double wall = wall_ms_[st.measured_frame - 1];
+    for (double ms : st.gpu_time_ms) {
+      EXPECT_TRUE(std::isfinite(ms));
+      EXPECT_GT(ms, 0.0);
+    }
+    EXPECT_LE(st.gpu_time_ms[0] + st.gpu_time_ms[1], wall + kResolutionMs)
+        << "GPU time of frame " << st.measured_frame << " above the wall-clock time around it";
+    std::printf("frame %llu: GPU time horizontal %.4f ms + vertical %.4f ms, wall clock %.4f ms\n",
+                static_cast<unsigned long long>(st.measured_frame), st.gpu_time_ms[0], st.gpu_time_ms[1], wall);
+  }
+  std::vector<double> wall_ms_;  // of each timed_frame, in order
   GLuint color_ = 0, depth_ = 0;
   sss::math::Matrix4 projection_{};
 };
@@ -101,10 +129,7 @@ TEST_F(Stats, PixelsTouchedOnAKnownMaskAndNonNegativeTimes) {
   start(SSS_CREATE_STATS);
   const sss_frame f = frame();
   // Results are read without stalling, at the next frame once the GPU is done: finish in between.
-  for (int i = 0; i < 3; ++i) {
-    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-    glFinish();
-  }
+  for (int i = 0; i < 3; ++i) timed_frame(f);
   const sss_stats st = stats();
   EXPECT_EQ(st.frames, 3u);
   if (st.measured != 0) {
@@ -120,12 +145,7 @@ TEST_F(Stats, PixelsTouchedOnAKnownMaskAndNonNegativeTimes) {
     EXPECT_EQ(st.pixels_touched, 70u);  // the 10x7 translucent rectangle, nothing else
   }
   if ((st.measured & SSS_STATS_GPU_TIME) != 0) {
-    for (double ms : st.gpu_time_ms) {
-      EXPECT_TRUE(std::isfinite(ms));
-      EXPECT_GE(ms, 0.0);
-    }
-    std::printf("GPU time: horizontal %.4f ms, vertical %.4f ms (frame %llu)\n", st.gpu_time_ms[0], st.gpu_time_ms[1],
-                static_cast<unsigned long long>(st.measured_frame));
+    expect_gpu_times_within_the_wall_clock(st);
   } else {
     EXPECT_EQ(st.gpu_time_ms[0], 0.0);
     EXPECT_EQ(st.gpu_time_ms[1], 0.0);
@@ -143,38 +163,21 @@ TEST_F(Stats, PixelsTouchedOnAKnownMaskAndNonNegativeTimes) {
 
 // A GPU whose timer the module trusts: llvmpipe under another name (its times are a tile's, but
 // they go through the same queries, ring and read-back as a real GPU's).
-using GetStringFn = const GLubyte* (*)(GLenum);
-GetStringFn g_real_get_string = nullptr;
-const GLubyte* get_string_renamed(GLenum name) {
-  if (name == GL_RENDERER) return reinterpret_cast<const GLubyte*>("Test GPU (a hardware renderer, as told by the test)");
-  return g_real_get_string(name);
-}
-void* renamed_get_proc_address(const char* name, void* user) {
-  if (std::string(name) == "glGetString") {
-    g_real_get_string = reinterpret_cast<GetStringFn>(sss_headless_get_proc_address(name, user));
-    return reinterpret_cast<void*>(&get_string_renamed);
-  }
-  return is_gles_backend() ? es30_get_proc_address(name, user) : sss_headless_get_proc_address(name, user);
-}
-
 TEST_F(Stats, GpuTimesWhereTheTimerIsTrustedAreReadWithoutStalling) {
   make_masked_plane();
-  loader_override_ = renamed_get_proc_address;
+  loader_override_ = loader_telling(GL_RENDERER, "Test GPU (a hardware renderer, as told by the test)",
+                                    is_gles_backend() ? es30_get_proc_address : sss_headless_get_proc_address);
   start(SSS_CREATE_STATS);
   const sss_frame f = frame();
-  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(stats().measured_frame, 0u) << "frame 1's results cannot be known before a later frame looks";
-  glFinish();
-  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK);
-  glFinish();
+  timed_frame(f);
+  EXPECT_EQ(stats().measured_frame, 0u) << "frame 1's results are read back by a later frame, not by sss_get_stats";
+  timed_frame(f);
   ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK);
   const sss_stats st = stats();
   ASSERT_NE(st.measured & SSS_STATS_GPU_TIME, 0u) << "desktop GL and ES with GL_EXT_disjoint_timer_query time passes";
   EXPECT_EQ(st.measured_frame, 2u);  // frame 3 looked, and frame 2 was finished
-  for (double ms : st.gpu_time_ms) {
-    EXPECT_TRUE(std::isfinite(ms));
-    EXPECT_GE(ms, 0.0);
-  }
+  // llvmpipe's times (one tile's) are below the frame's, never above it.
+  expect_gpu_times_within_the_wall_clock(st);
   if (!is_gles()) {
     ASSERT_NE(st.measured & SSS_STATS_PIXELS, 0u);
     EXPECT_EQ(st.pixels_touched, 70u);

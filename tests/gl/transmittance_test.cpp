@@ -68,13 +68,7 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     const GLuint map = hardware_depth ? make_depth32f(16, 16, depth_map)
                                       : make_texture(GL_R32F, 16, 16, GL_RED, GL_FLOAT, distance_map.data());
     const GLuint target = make_rgba32f(kWidth, 1, std::vector<float>(kWidth * 4, 0.0f));
-    GLuint fbo = 0, vao = 0;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glViewport(0, 0, kWidth, 1);
+    const DrawTarget draw(target, kWidth, 1);
     glUseProgram(program);
     float terms[SSS_PROFILE_MAX_TERMS * 4];
     int32_t count = 0;
@@ -96,8 +90,6 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     const std::vector<float> out = read_rgba(target, kWidth, 1);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteVertexArrays(1, &vao);
     glDeleteProgram(program);
 
     const auto cpu_terms = sss::math::transmittance_terms(sss::math::spike_gaussian_profile(profile));

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "colour_range.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/exact_reference.hpp"
 #include "math/filter_constants.hpp"
@@ -413,20 +414,7 @@ RC_GTEST_PROP(CpuModelProperties, FiniteStaysFiniteNothingSpreadsAndBlursStayInR
   }();
   const std::vector<float> out = run_model(m);
   const std::size_t n = m.mask.size();
-  float lo[3], hi[3], magnitude = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    lo[c] = std::numeric_limits<float>::infinity();
-    hi[c] = -lo[c];
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const float* p = &m.color[i * 4];
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-      magnitude = std::max(magnitude, std::fabs(p[c]));
-    }
-  }
+  const sss_test::ColourRange range = sss_test::finite_colour_range(m.color.data(), n);
   for (std::size_t i = 0; i < n; ++i) {
     const float* in = &m.color[i * 4];
     const float* o = &out[i * 4];
@@ -438,13 +426,11 @@ RC_GTEST_PROP(CpuModelProperties, FiniteStaysFiniteNothingSpreadsAndBlursStayInR
     }
     for (int c = 0; c < 3; ++c) {
       RC_ASSERT(std::isfinite(o[c]));
-      // Kept (bit for bit), or a blur: within the finite inputs' range, with fp16 rounding of the
-      // intermediate and of a half output (2^-10 each, round to nearest) and the float sum's error.
+      // Kept (bit for bit), or a blur: within the finite inputs' range (fp16 rounding and the float
+      // sum's error allowed: colour_range.hpp).
       if (to_bits(o[c]) == to_bits(in[c])) continue;
-      const float tol_lo = std::fabs(lo[c]) * (1.0f / 1024.0f) + magnitude * 4e-6f + 6e-8f;
-      const float tol_hi = std::fabs(hi[c]) * (1.0f / 1024.0f) + magnitude * 4e-6f + 6e-8f;
-      RC_ASSERT(o[c] >= lo[c] - tol_lo);
-      RC_ASSERT(o[c] <= hi[c] + tol_hi);
+      RC_ASSERT(o[c] >= range.least(c));
+      RC_ASSERT(o[c] <= range.greatest(c));
       if (m.flat) RC_ASSERT(std::fabs(o[c] - in[c]) <= std::fabs(in[c]) * (1.0f / 1024.0f) + 6e-8f);
     }
   }

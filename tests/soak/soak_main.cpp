@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "gl_objects.hpp"
+#include "host_context.hpp"
 #include "host_gl.hpp"
 #include "sss/sss.h"
 #include "sss_headless.h"
@@ -125,21 +126,8 @@ class Soak {
 
  private:
   bool open_context() {
-    sss_headless_desc desc = {};
-    desc.backend = o_.backend;
-    desc.major = 3;
-    desc.minor = 3;
-    desc.core_profile = 1;
-    char error[512] = "";
-    if (sss_headless_create(&desc, &headless_, error, sizeof error) != 0) {
-      std::fprintf(stderr, "sss_soak: no context: %s\n", error);
-      return false;
-    }
-    std::string missing;
-    if (!host_gl::load(sss_headless_get_proc_address, headless_, &missing)) {
-      std::fprintf(stderr, "sss_soak: missing %s\n", missing.c_str());
-      return false;
-    }
+    headless_ = sss_test::open_host_context(o_.backend, "sss_soak");
+    if (headless_ == nullptr) return false;
     objects_without_module_ = objects();
     sss_create_desc cd = {};
     cd.struct_size = sizeof cd;

@@ -23,13 +23,7 @@ class ImageStress : public StressTest {
   void SetUp() override {
     StressTest::SetUp();
     if (HasFatalFailure()) return;
-    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-    sss_settings s;
-    sss_default_settings(&s);
-    s.world_units_per_mm = 0.08f;  // a wide kernel: taps reach the borders of small images
-    s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
-    s.samples = 25;
-    ASSERT_EQ(set_settings(s), SSS_OK);
+    set_wide_kernel(kCamera, 0.08f, 25);  // taps reach the borders of small images
   }
 };
 

@@ -28,13 +28,7 @@ class NonFiniteStress : public StressTest {
   void SetUp() override {
     StressTest::SetUp();
     if (HasFatalFailure()) return;
-    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-    sss_settings s;
-    sss_default_settings(&s);
-    s.world_units_per_mm = 0.1f;  // taps reach across the whole image
-    s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
-    s.samples = 33;
-    ASSERT_EQ(set_settings(s), SSS_OK);
+    set_wide_kernel(kCamera, 0.1f, 33);  // taps reach across the whole image
   }
 
   // A plane facing the camera at 1.5, one colour everywhere.

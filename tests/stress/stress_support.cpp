@@ -7,6 +7,8 @@
 #include <cstring>
 #include <limits>
 
+#include "colour_range.hpp"
+
 using namespace host_gl;
 
 namespace sss_test {
@@ -82,6 +84,16 @@ void StressTest::TearDown() {
   std::printf("[stress] %s: %ld cases, %ld checks, %ld failures\n", category_.c_str(), tally_.cases, tally_.checks,
               tally_.failures);
   GlTest::TearDown();
+}
+
+void StressTest::set_wide_kernel(const sss::math::Matrix4& camera, float world_units_per_mm, int samples) {
+  ASSERT_EQ(sss_set_camera(sss_, camera.data()), SSS_OK);
+  sss_settings s;
+  sss_default_settings(&s);
+  s.world_units_per_mm = world_units_per_mm;
+  s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
+  s.samples = samples;
+  ASSERT_EQ(set_settings(s), SSS_OK);
 }
 
 sss_result StressTest::set_settings(const sss_settings& s) {
@@ -172,11 +184,7 @@ StressOutcome StressTest::run(const StressFrame& f) {
   }
   o.input = read_rgba(color, f.width, f.height);
   sss_stencil stencil = {depth, 1, 0xFF};
-  sss_frame frame = {};
-  frame.struct_size = sizeof frame;
-  frame.color_texture = color;
-  frame.depth_texture = depth;
-  frame.output_texture = output;
+  sss_frame frame = frame_of(color, depth, output);
   frame.stencil = f.use_stencil ? &stencil : nullptr;
   std::memcpy(frame.viewport, f.viewport, sizeof frame.viewport);
   frame.flags = f.flags;
@@ -203,30 +211,15 @@ bool StressTest::check_invariants(const StressFrame& f, const StressOutcome& o, 
   const int vw = whole ? f.width : f.viewport[2], vh = whole ? f.height : f.viewport[3];
 
   // The range of each channel over the pixels a tap can take (finite colour).
-  float lo[3], hi[3];
-  for (int c = 0; c < 3; ++c) {
-    lo[c] = std::numeric_limits<float>::infinity();
-    hi[c] = -std::numeric_limits<float>::infinity();
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const float* in = &o.input[i * 4];
-    if (!std::isfinite(in[0]) || !std::isfinite(in[1]) || !std::isfinite(in[2])) continue;
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], in[c]);
-      hi[c] = std::max(hi[c], in[c]);
-    }
-  }
+  const ColourRange range = finite_colour_range(o.input.data(), n);
+  const std::array<float, 3>& lo = range.lo;
+  const std::array<float, 3>& hi = range.hi;
   // Two fp16 roundings (the intermediate target, then an RGBA16F output) may each lose one ulp
   // (llvmpipe stores toward zero: a sum of 122.99999 becomes 122.9375): 2^-9 of the value. The
   // float sum of up to 65 taps adds ~65·2^-24 of the largest magnitude; 2^-24 covers fp16's
   // smallest denormal.
   constexpr float kUlp = 1.0f / 512.0f, kTiny = 1.0f / 16777216.0f;
-  float magnitude = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    if (std::isfinite(lo[c])) magnitude = std::max(magnitude, std::fabs(lo[c]));
-    if (std::isfinite(hi[c])) magnitude = std::max(magnitude, std::fabs(hi[c]));
-  }
-  const float accumulation = magnitude * 4e-6f;
+  const float accumulation = range.magnitude * 4e-6f;
 
   for (std::size_t i = 0; i < n; ++i) {
     const int x = static_cast<int>(i % f.width), y = static_cast<int>(i / f.width);
@@ -260,11 +253,12 @@ bool StressTest::check_invariants(const StressFrame& f, const StressOutcome& o, 
       if (!check_lazy(std::isfinite(v),
                       [&] { return pixel_name(f, i) + " is not finite: " + rgba(in) + " -> " + rgba(out); }))
         break;
-      const float low = lo[c] - (std::fabs(lo[c]) * kUlp + accumulation + kTiny);
-      const float high = hi[c] + (std::fabs(hi[c]) * kUlp + accumulation + kTiny);
+      const std::size_t k = static_cast<std::size_t>(c);
+      const float low = lo[k] - (std::fabs(lo[k]) * kUlp + accumulation + kTiny);
+      const float high = hi[k] + (std::fabs(hi[k]) * kUlp + accumulation + kTiny);
       check_lazy(v >= low && v <= high, [&] {
         return pixel_name(f, i) + " channel " + std::to_string(c) + " = " + std::to_string(v) +
-               " outside the input's range [" + std::to_string(lo[c]) + ", " + std::to_string(hi[c]) + "]";
+               " outside the input's range [" + std::to_string(lo[k]) + ", " + std::to_string(hi[k]) + "]";
       });
       if (e.flat) {
         check_lazy(std::fabs(v - in[c]) <= std::fabs(in[c]) * kUlp + kTiny,

@@ -95,6 +95,9 @@ class StressTest : public GlTest {
   }
 
   sss_result set_settings(const sss_settings& s);
+  // For a fixture's SetUp: `camera`, and the default settings at `world_units_per_mm` with every
+  // strength 1 and `samples` taps (a wide kernel whose taps reach the image's borders).
+  void set_wide_kernel(const sss::math::Matrix4& camera, float world_units_per_mm, int samples);
 
   std::string category_ = "uncategorised";
   Tally tally_;

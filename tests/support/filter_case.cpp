@@ -55,15 +55,6 @@ void expect_half_rounding_like_the_cpu_model(const FilterOutcome& o, const char*
   EXPECT_LE(std::fabs(a.mean_relative_difference), 1e-5) << what;
 }
 
-sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
-  sss_frame f = {};
-  f.struct_size = sizeof f;
-  f.color_texture = color;
-  f.depth_texture = depth;
-  f.output_texture = output;
-  return f;
-}
-
 sss_settings visible_settings(int samples, uint32_t flags, float width) {
   sss_settings s;
   sss_default_settings(&s);
@@ -189,11 +180,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   EXPECT_EQ(sss_set_settings(sss_, &c.settings), SSS_OK) << sss_last_error(sss_);
   EXPECT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK) << sss_last_error(sss_);
   sss_stencil stencil = {depth, 1, 0xFF};
-  sss_frame frame = {};
-  frame.struct_size = sizeof frame;
-  frame.color_texture = color;
-  frame.depth_texture = depth;
-  frame.output_texture = output;
+  sss_frame frame = frame_of(color, depth, output);
   frame.stencil = c.use_stencil ? &stencil : nullptr;
   frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];

@@ -33,9 +33,6 @@ struct FilterOutcome {
   sss_result result = SSS_OK;
 };
 
-// A frame of these textures (output 0: write back), every other field zero.
-sss_frame frame_of(GLuint color, GLuint depth, GLuint output = 0);
-
 // Settings whose blur shows clearly on the synthetic scenes: strength .9/.8/.7, falloff 1/.6/.4.
 sss_settings visible_settings(int samples, uint32_t flags, float width);
 

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "host_gl_util.hpp"
+
 using namespace host_gl;
 
 namespace sss_test {
@@ -78,11 +80,91 @@ void GlTest::TearDown() {
   headless_ = nullptr;
 }
 
+DrawTarget::DrawTarget(GLuint target, int width, int height) {
+  glGenFramebuffers(1, &framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+  glGenVertexArrays(1, &vertex_array_);
+  glBindVertexArray(vertex_array_);
+  glViewport(0, 0, width, height);
+}
+
+DrawTarget::~DrawTarget() {
+  glDeleteFramebuffers(1, &framebuffer_);
+  glDeleteVertexArrays(1, &vertex_array_);
+}
+
+GLuint make_host_program(bool es) {
+  const char* vs = es ? "#version 300 es\nvoid main(){gl_Position=vec4(0.0);}\n"
+                      : "#version 330 core\nvoid main(){gl_Position=vec4(0.0);}\n";
+  const char* fs = es ? "#version 300 es\nprecision mediump float;out vec4 c;void main(){c=vec4(1.0);}\n"
+                      : "#version 330 core\nout vec4 c;void main(){c=vec4(1.0);}\n";
+  const GLuint program = host_gl::build_program("host program", vs, fs);
+  EXPECT_NE(program, 0u);
+  return program;
+}
+
+sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
+  sss_frame f = {};
+  f.struct_size = sizeof f;
+  f.color_texture = color;
+  f.depth_texture = depth;
+  f.output_texture = output;
+  return f;
+}
+
 void* es30_get_proc_address(const char* name, void* user) {
   // llvmpipe gives OpenGL ES 3.2 for a 3.0 request; hiding the one ES 3.1 function the module
   // would use (the texture level query) makes it run exactly its ES 3.0 path.
   if (std::strcmp(name, "glGetTexLevelParameteriv") == 0) return nullptr;
   return sss_headless_get_proc_address(name, user);
+}
+
+int LogRecord::count(int level, const std::string& part) const {
+  int n = 0;
+  for (const auto& m : messages) n += m.first == level && m.second.find(part) != std::string::npos ? 1 : 0;
+  return n;
+}
+
+void record_log(int level, const char* message, void* user) {
+  static_cast<LogRecord*>(user)->messages.emplace_back(level, message);
+}
+
+sss_settings expect_settings_refused(sss_context* ctx, const sss_settings& bad, const std::string& field) {
+  EXPECT_EQ(sss_set_settings(ctx, &bad), SSS_ERROR_INVALID_ARGUMENT) << field;
+  EXPECT_NE(std::string(sss_last_error(ctx)).find(field), std::string::npos) << sss_last_error(ctx);
+  sss_settings now = {};
+  now.struct_size = sizeof now;
+  EXPECT_EQ(sss_get_settings(ctx, &now), SSS_OK);
+  return now;
+}
+
+namespace {
+using GetStringFn = const GLubyte* (*)(GLenum);
+struct Told {
+  GLenum name = 0;
+  const char* value = nullptr;
+  sss_get_proc_address_fn base = nullptr;
+  GetStringFn real_get_string = nullptr;
+} g_told;
+
+const GLubyte* get_string_told(GLenum name) {
+  if (name == g_told.name) return reinterpret_cast<const GLubyte*>(g_told.value);
+  return g_told.real_get_string(name);
+}
+
+void* told_get_proc_address(const char* name, void* user) {
+  if (std::strcmp(name, "glGetString") == 0) {
+    g_told.real_get_string = reinterpret_cast<GetStringFn>(g_told.base(name, user));
+    return reinterpret_cast<void*>(&get_string_told);
+  }
+  return g_told.base(name, user);
+}
+}  // namespace
+
+sss_get_proc_address_fn loader_telling(GLenum name, const char* value, sss_get_proc_address_fn base) {
+  g_told = {name, value, base, nullptr};
+  return told_get_proc_address;
 }
 
 sss_context* GlTest::create_sss(uint32_t flags) {
@@ -93,6 +175,10 @@ sss_context* GlTest::create_sss(uint32_t flags) {
                                                        : sss_headless_get_proc_address;
   desc.get_proc_address_user = headless_;
   desc.flags = flags;
+  if (log_ != nullptr) {
+    desc.log = record_log;
+    desc.log_user = log_;
+  }
   sss_context* ctx = nullptr;
   const sss_result r = sss_create(&desc, &ctx);
   EXPECT_EQ(r, SSS_OK) << sss_last_error(nullptr);

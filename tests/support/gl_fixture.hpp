@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "host_gl.hpp"
@@ -14,6 +15,15 @@
 #include "sss_headless.h"
 
 namespace sss_test {
+
+// The messages a context logged (sss_create_desc.log), in order, with their levels.
+struct LogRecord {
+  std::vector<std::pair<int, std::string>> messages;
+  bool has(int level, const std::string& part) const { return count(level, part) > 0; }
+  int count(int level, const std::string& part = "") const;  // messages of `level` containing `part`
+};
+// An sss_log_fn that appends to the LogRecord `user`.
+void record_log(int level, const char* message, void* user);
 
 class GlTest : public ::testing::Test {
  protected:
@@ -37,15 +47,46 @@ class GlTest : public ::testing::Test {
 
   // When set, create_sss loads GL through it instead (user: the sss_headless).
   sss_get_proc_address_fn loader_override_ = nullptr;
+  // When set, create_sss's contexts log into it (else they log nothing).
+  LogRecord* log_ = nullptr;
   sss_headless* headless_ = nullptr;
   sss_context* sss_ = nullptr;
   std::vector<GLuint> textures_;
   std::string backend_name_;
 };
 
+// A full-screen draw into `target`: a framebuffer with it as colour attachment 0 and an empty
+// vertex array, both bound, and the viewport over width x height. Both deleted on destruction.
+class DrawTarget {
+ public:
+  DrawTarget(GLuint target, int width, int height);
+  ~DrawTarget();
+  DrawTarget(const DrawTarget&) = delete;
+  DrawTarget& operator=(const DrawTarget&) = delete;
+
+ private:
+  GLuint framebuffer_ = 0, vertex_array_ = 0;
+};
+
+// A program that links and draws nothing of note (a point at the origin, white): what a host leaves
+// bound, for the tests of the state the module restores. GLSL ES 3.00 when `es`, else 330 core.
+GLuint make_host_program(bool es);
+
+// A frame of these textures (output 0: write back), every other field zero.
+sss_frame frame_of(GLuint color, GLuint depth, GLuint output = 0);
+
 // sss_headless_get_proc_address without glGetTexLevelParameteriv (ES 3.1+): an ES 3.2 context then
 // looks like ES 3.0 to the module. `user` is the sss_headless.
 void* es30_get_proc_address(const char* name, void* user);
+
+// Checks that sss_set_settings refuses `bad` (SSS_ERROR_INVALID_ARGUMENT, the message naming
+// `field`), and returns the settings `ctx` holds afterwards, for the caller to find them unchanged.
+sss_settings expect_settings_refused(sss_context* ctx, const sss_settings& bad, const std::string& field);
+
+// A loader whose glGetString answers `name` (GL_VERSION, GL_RENDERER...) with `value` and everything
+// else as `base` loads it (user: the sss_headless): the module then sees another GL version or
+// renderer. One such loader at a time (it keeps its answer in globals).
+sss_get_proc_address_fn loader_telling(GLenum name, const char* value, sss_get_proc_address_fn base);
 
 // The backend the tests run on (default OSMesa).
 sss_headless_backend test_backend();

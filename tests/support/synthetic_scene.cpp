@@ -36,15 +36,23 @@ void compute_window_depth(SyntheticScene* scene) {
   }
 }
 
-SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection) {
+namespace {
+// A width x height scene of `projection`: colour, distance and stencil all zero (window depth empty).
+SyntheticScene sized_scene(int width, int height, const sss::math::Matrix4& projection) {
   SyntheticScene s;
   s.width = width;
   s.height = height;
   s.projection = projection;
-  const std::size_t n = static_cast<std::size_t>(width) * height;
-  s.color.resize(n * 4);
-  s.distance.resize(n);
-  s.stencil.resize(n);
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  s.color.assign(n * 4, 0.0f);
+  s.distance.assign(n, 0.0f);
+  s.stencil.assign(n, 0);
+  return s;
+}
+}  // namespace
+
+SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection) {
+  SyntheticScene s = sized_scene(width, height, projection);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> noise(0.0f, 0.4f);
   for (int y = 0; y < height; ++y) {
@@ -74,12 +82,8 @@ SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss
 
 SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba, float distance,
                                const sss::math::Matrix4& projection) {
-  SyntheticScene s;
-  s.width = width;
-  s.height = height;
-  s.projection = projection;
+  SyntheticScene s = sized_scene(width, height, projection);
   const std::size_t n = static_cast<std::size_t>(width) * height;
-  s.color.resize(n * 4);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < 4; ++c) s.color[i * 4 + c] = rgba[c];
   }
@@ -94,14 +98,7 @@ SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba,
 namespace sss_test {
 
 SyntheticScene downsample_2x2(const SyntheticScene& fine) {
-  SyntheticScene s;
-  s.width = fine.width / 2;
-  s.height = fine.height / 2;
-  s.projection = fine.projection;
-  const std::size_t n = static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height);
-  s.color.assign(n * 4, 0.0f);
-  s.distance.assign(n, 0.0f);
-  s.stencil.assign(n, 0);
+  SyntheticScene s = sized_scene(fine.width / 2, fine.height / 2, fine.projection);
   for (int y = 0; y < s.height; ++y) {
     for (int x = 0; x < s.width; ++x) {
       const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
@@ -125,15 +122,8 @@ SyntheticScene downsample_2x2(const SyntheticScene& fine) {
 }
 
 SyntheticScene upsample_2x2(const SyntheticScene& coarse) {
-  SyntheticScene s;
-  s.width = coarse.width * 2;
-  s.height = coarse.height * 2;
-  s.projection = coarse.projection;
-  const std::size_t n = static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height);
-  s.color.resize(n * 4);
-  s.distance.resize(n);
-  s.window_depth.resize(n);
-  s.stencil.resize(n);
+  SyntheticScene s = sized_scene(coarse.width * 2, coarse.height * 2, coarse.projection);
+  s.window_depth.resize(s.distance.size());
   for (int y = 0; y < s.height; ++y) {
     for (int x = 0; x < s.width; ++x) {
       const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);

@@ -66,14 +66,27 @@ void StateGuard::restore_stencil_face(GLenum face_enum, const StencilFace& face)
   gl_.StencilMaskSeparate(face_enum, static_cast<GLuint>(face.write_mask));
 }
 
+#ifdef SSS_STATE_GUARD_TEST_HOOK
 std::atomic<uint32_t>& restore_skip_mask_for_tests() {
   static std::atomic<uint32_t> mask{0};
   return mask;
 }
+#endif
+
+namespace {
+// The restore groups to leave out: none, but in the tests' build when the hook asks.
+uint32_t restore_skip_mask() {
+#ifdef SSS_STATE_GUARD_TEST_HOOK
+  return restore_skip_mask_for_tests().load(std::memory_order_relaxed);
+#else
+  return 0;
+#endif
+}
+}  // namespace
 
 StateGuard::~StateGuard() {
   if (!enabled_) return;
-  const uint32_t skip = restore_skip_mask_for_tests().load(std::memory_order_relaxed);
+  const uint32_t skip = restore_skip_mask();
   const auto restore = [skip](uint32_t group) { return (skip & group) == 0; };
   if (restore(restore_group::stencil)) {
     restore_stencil_face(FRONT, front_);

@@ -10,9 +10,10 @@
 
 namespace sss::gl {
 
-// Groups of restores in ~StateGuard. A test hook (restore_skip_mask_for_tests) can skip any of
+// Groups of restores in ~StateGuard. In the tests' build of the library (sss_state_guard_hook,
+// compiled with SSS_STATE_GUARD_TEST_HOOK) a hook, restore_skip_mask_for_tests, can skip any of
 // them, so the state harness can show that it notices each single missing restore
-// (tests/gl/state_fuzz_test.cpp). Not part of the public API; the mask is 0 outside that test.
+// (tests/gl/state_fuzz_test.cpp). The shipped library has no hook: every group is restored.
 namespace restore_group {
 enum : uint32_t {
   stencil = 1u << 0,          // both faces: func, ref, masks, ops
@@ -36,7 +37,9 @@ enum : uint32_t {
   all = (1u << 18) - 1u
 };
 }  // namespace restore_group
-std::atomic<uint32_t>& restore_skip_mask_for_tests();
+#ifdef SSS_STATE_GUARD_TEST_HOOK
+std::atomic<uint32_t>& restore_skip_mask_for_tests();  // 0: restore everything
+#endif
 
 // Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
 constexpr int kUnitCount = 4;

@@ -5,27 +5,17 @@
 #include <cmath>
 #include <vector>
 
+#include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
 
 namespace sss::math {
 
 namespace {
 
-using Rgba = std::array<float, 4>;
+using cpu_passes::Plane;
+using cpu_passes::Rgba;
 
-struct Plane {
-  int width, height, channels;
-  const float* data;
-  float at(int x, int y, int c) const {
-    x = std::clamp(x, 0, width - 1);
-    y = std::clamp(y, 0, height - 1);
-    return data[(static_cast<std::size_t>(y) * width + x) * channels + c];
-  }
-};
-
-bool finite4(const Rgba& v) {
-  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]);
-}
+bool finite4(const Rgba& v) { return cpu_passes::all_finite(v.data(), 4); }
 
 struct ViewPoint {
   float x, y, z;
@@ -75,7 +65,7 @@ struct Pass {
   }
 
   bool pixel(int x, int y, Rgba* result) const {
-    const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
+    const Rgba centre = source.rgba(x, y);
     if (!(centre[3] > 0.0f) || !finite4(centre)) return false;
     const float strength = std::min(centre[3], 1.0f);
     const float d0 = linearise_depth(k, depth.at(x, y, 0));
@@ -113,7 +103,7 @@ struct Pass {
       py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
       const int tx = static_cast<int>(std::floor(px)), ty = static_cast<int>(std::floor(py));
       if (mask != nullptr && mask[static_cast<std::size_t>(ty) * source.width + tx] == 0) continue;
-      const Rgba tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2), source.at(tx, ty, 3)};
+      const Rgba tap = source.rgba(tx, ty);
       if (!(tap[3] > 0.0f) || !finite4(tap)) continue;
       const float dz = (linearise_depth(k, depth.at(tx, ty, 0)) - d0) * mm_per_world;
       if (!std::isfinite(dz)) continue;
@@ -133,11 +123,6 @@ struct Pass {
   }
 };
 
-bool inside(const PassConstants& k, int x, int y) {
-  const float px = static_cast<float>(x) + 0.5f, py = static_cast<float>(y) + 0.5f;
-  return px >= k.clamp_min[0] && px <= k.clamp_max[0] && py >= k.clamp_min[1] && py <= k.clamp_max[1];
-}
-
 }  // namespace
 
 void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, const CbfConstants& cbf,
@@ -151,33 +136,21 @@ void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, con
   // the vertical pass gives them no weight either.
   std::vector<float> intermediate(count * 4);
   const Pass horizontal{kernel, constants, cbf, color, depth, image.mask, 0, normals};
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      Rgba value = {image.color[i * 4], image.color[i * 4 + 1], image.color[i * 4 + 2], image.color[i * 4 + 3]};
-      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-      if (!masked_in) value[3] = 0.0f;
-      if (inside(constants, x, y) && masked_in) {
-        Rgba blurred;
-        if (horizontal.pixel(x, y, &blurred)) value = blurred;
-      }
-      for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[c]);
-    }
-  }
+  cpu_passes::horizontal_into_half(
+      image, constants, true, [&](int x, int y, Rgba* blurred) { return horizontal.pixel(x, y, blurred); },
+      intermediate.data());
 
   const Plane half_plane{w, h, 4, intermediate.data()};
   const Pass vertical{kernel, constants, cbf, half_plane, depth, image.mask, 1, normals};
   std::copy(image.color, image.color + count * 4, out);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-      if (!inside(constants, x, y) || !masked_in) continue;
-      Rgba blurred;
-      if (!vertical.pixel(x, y, &blurred)) continue;
-      for (int c = 0; c < 3; ++c) out[i * 4 + c] = image.output_is_half ? round_to_half(blurred[c]) : blurred[c];
-    }
-  }
+  cpu_passes::vertical(
+      image, constants, [&](int x, int y, Rgba* blurred) { return vertical.pixel(x, y, blurred); },
+      [&](std::size_t i, const Rgba& blurred) {
+        for (int c = 0; c < 3; ++c) {
+          const float v = blurred[static_cast<std::size_t>(c)];
+          out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
+        }
+      });
 }
 
 }  // namespace sss::math

@@ -4,31 +4,16 @@
 #include <array>
 #include <cmath>
 
+#include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
 
 namespace sss::math {
 
 namespace {
 
-using Rgba = std::array<float, 4>;
-
-bool all_finite(const float* v, int n) {
-  for (int i = 0; i < n; ++i) {
-    if (!std::isfinite(v[i])) return false;
-  }
-  return true;
-}
-
-struct Plane {
-  int width, height, channels;
-  const float* data;
-
-  float at(int x, int y, int c) const {
-    x = std::clamp(x, 0, width - 1);
-    y = std::clamp(y, 0, height - 1);
-    return data[(static_cast<std::size_t>(y) * width + x) * channels + c];
-  }
-};
+using cpu_passes::all_finite;
+using cpu_passes::Plane;
+using cpu_passes::Rgba;
 
 // The follow-surface blend of one tap towards the centre colour (GLSL mix()).
 void follow_surface_blend(std::array<float, 3>* tap, const Rgba& centre, float d, bool gaussian_depth,
@@ -43,7 +28,7 @@ void follow_surface_blend(std::array<float, 3>* tap, const Rgba& centre, float d
 bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
                   const Plane& source, const Plane& depth, int axis, int x, int y, Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
-  const Rgba centre = {source.at(x, y, 0), source.at(x, y, 1), source.at(x, y, 2), source.at(x, y, 3)};
+  const Rgba centre = source.rgba(x, y);
   if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
   const float strength = std::min(centre[3], 1.0f);
   const float centre_distance = linearise_depth(k, depth.at(x, y, 0));
@@ -84,11 +69,6 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   return true;
 }
 
-bool inside(const PassConstants& k, int x, int y) {
-  const float px = static_cast<float>(x) + 0.5f, py = static_cast<float>(y) + 0.5f;
-  return px >= k.clamp_min[0] && px <= k.clamp_max[0] && py >= k.clamp_min[1] && py <= k.clamp_max[1];
-}
-
 }  // namespace
 
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
@@ -105,44 +85,32 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
     const PassTerm& term = kernel.terms[t];
     const bool last = t + 1 == terms;
     // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        Rgba value = {image.color[i * 4], image.color[i * 4 + 1], image.color[i * 4 + 2], image.color[i * 4 + 3]};
-        const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-        if (inside(constants, x, y) && masked_in) {
-          Rgba blurred;
-          if (filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, color, depth, 0, x, y,
-                           &blurred)) {
-            value = blurred;
-          }
-        }
-        for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[c]);
-      }
-    }
+    cpu_passes::horizontal_into_half(
+        image, constants, false,
+        [&](int x, int y, Rgba* blurred) {
+          return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, color, depth, 0, x, y,
+                              blurred);
+        },
+        intermediate.data());
     // Vertical pass from the intermediate, plus the earlier terms: into the module's sum target,
     // or (the last term) into the output, where alpha keeps its input value.
     const Plane half_plane{w, h, 4, intermediate.data()};
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        const bool masked_in = image.mask == nullptr || image.mask[i] != 0;
-        if (!inside(constants, x, y) || !masked_in) continue;
-        Rgba blurred;
-        if (!filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, half_plane, depth, 1, x,
-                          y, &blurred)) {
-          continue;
-        }
-        for (int c = 0; c < 3; ++c) {
-          const float v = blurred[static_cast<std::size_t>(c)] + accumulated[i * 3 + c];
-          if (last) {
-            out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
-          } else {
-            accumulated[i * 3 + c] = image.accumulator_is_half ? round_to_half(v) : v;
+    cpu_passes::vertical(
+        image, constants,
+        [&](int x, int y, Rgba* blurred) {
+          return filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, half_plane, depth, 1, x, y,
+                              blurred);
+        },
+        [&](std::size_t i, const Rgba& blurred) {
+          for (int c = 0; c < 3; ++c) {
+            const float v = blurred[static_cast<std::size_t>(c)] + accumulated[i * 3 + c];
+            if (last) {
+              out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
+            } else {
+              accumulated[i * 3 + c] = image.accumulator_is_half ? round_to_half(v) : v;
+            }
           }
-        }
-      }
-    }
+        });
   }
 }
 

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "host_context.hpp"
 #include "host_gl.hpp"
 #include "scenes.hpp"
 #include "sss_headless.h"
@@ -133,22 +134,8 @@ int main(int argc, char** argv) {
   bool any_head = false;
   for (const std::string& n : names) any_head = any_head || sss_bench::scene_needs_gl(n);
   if (any_head) {
-    sss_headless_desc desc = {};
-    desc.backend = backend;
-    desc.major = 3;
-    desc.minor = 3;
-    desc.core_profile = 1;
-    char error[512] = "";
-    if (sss_headless_create(&desc, &headless, error, sizeof error) != 0) {
-      std::fprintf(stderr, "sss_scene_dump: no GL context: %s\n", error);
-      return 1;
-    }
-    std::string missing;
-    if (!host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
-      std::fprintf(stderr, "sss_scene_dump: GL functions missing: %s\n", missing.c_str());
-      sss_headless_destroy(headless);
-      return 1;
-    }
+    headless = sss_test::open_host_context(backend, "sss_scene_dump");
+    if (headless == nullptr) return 1;
     std::printf("GL_RENDERER: %s\n", sss_headless_renderer(headless));
   }
 

@@ -334,17 +334,7 @@ TEST_F(SceneTest, HeadSceneRestoresGlStateAndDeletesItsObjects) {
   glBindVertexArray(vertex_array);
   glGenBuffers(1, &buffer);
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  const char* vs = "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n";
-  const char* fs = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
-  const GLuint program = glCreateProgram();
-  for (const auto& [kind, source] : {std::make_pair(GL_VERTEX_SHADER, vs), std::make_pair(GL_FRAGMENT_SHADER, fs)}) {
-    const GLuint shader = glCreateShader(kind);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    glAttachShader(program, shader);
-    glDeleteShader(shader);
-  }
-  glLinkProgram(program);
+  const GLuint program = make_host_program(false);
   glUseProgram(program);
   glViewport(3, 5, 17, 11);
   glEnable(GL_BLEND);
