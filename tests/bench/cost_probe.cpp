@@ -1,0 +1,149 @@
+// sss_cost_probe: the work of one in-place frame of the library on a benchmark scene, for counting
+// under callgrind. On Mesa's llvmpipe a frame's wall-clock time moves by tens of per cent from run
+// to run on a shared machine, while the instructions it executes (the JIT-compiled shaders
+// included) are the same each time: scripts/cost-probe.sh runs this under
+// `valgrind --tool=callgrind --instr-atstart=no` with the rasteriser in the calling thread
+// (LP_NUM_THREADS=0), and only the timed frame is counted (CALLGRIND_START/STOP_INSTRUMENTATION
+// around it). Builds against any release of the library with the same bench scenes, so two
+// builds compare on the same frame.
+//
+//   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] [--path fragment|masked]
+//
+// Prints the scene's translucent pixels and "frame done" (the counts come from callgrind).
+#include <valgrind/callgrind.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "gpu_scene.hpp"
+#include "host_gl.hpp"
+#include "scenes/scenes.hpp"
+#include "sss/sss.h"
+#include "sss_headless.h"
+
+using namespace host_gl;
+
+namespace {
+
+struct Options {
+  sss_headless_backend backend = SSS_HEADLESS_EGL_SURFACELESS;
+  std::string scene = "head-close";
+  int width = 1920, height = 1080;
+  int taps = 17;
+  unsigned path = SSS_PATH_FRAGMENT;
+};
+
+bool parse(int argc, char** argv, Options* o) {
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--backend") {
+      o->backend = value == "osmesa" ? SSS_HEADLESS_OSMESA : SSS_HEADLESS_EGL_SURFACELESS;
+    } else if (key == "--scene") {
+      o->scene = value;
+    } else if (key == "--size") {
+      if (std::sscanf(value.c_str(), "%dx%d", &o->width, &o->height) != 2) return false;
+    } else if (key == "--taps") {
+      o->taps = std::atoi(value.c_str());
+    } else if (key == "--path") {
+      o->path = value == "masked" ? SSS_PATH_FRAGMENT_MASKED : SSS_PATH_FRAGMENT;
+    } else {
+      return false;
+    }
+  }
+  return (argc % 2) == 1;
+}
+
+// The scene's irradiance into the frame's colour texture, texel for texel.
+void refill(GLuint from, GLuint to, int width, int height) {
+  GLuint framebuffers[2] = {0, 0};
+  glGenFramebuffers(2, framebuffers);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[0]);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers[1]);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
+  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(2, framebuffers);
+  glFinish();
+}
+
+// The library's defaults at the scene's physical scale: releases before 0.2 took the paper's
+// `width` (one profile millimetre spans (2/3)·width world units), later ones world units per mm.
+void physical_settings(const sss_bench::GpuScene& scene, const Options& o, sss_settings* s) {
+  sss_default_settings(s);
+#if SSS_VERSION_MAJOR == 0 && SSS_VERSION_MINOR < 2
+  s->width = sss_width_for_world_units_per_mm(scene.world_units_per_mm);
+#else
+  s->world_units_per_mm = scene.world_units_per_mm;
+#endif
+  s->samples = o.taps;
+  s->path = o.path;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (!parse(argc, argv, &o)) {
+    std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
+                         "[--path fragment|masked]\n");
+    return 2;
+  }
+  sss_headless_desc hd = {};
+  hd.backend = o.backend;
+  hd.major = 3;
+  hd.minor = 3;
+  hd.core_profile = 1;
+  sss_headless* headless = nullptr;
+  char error[512] = "";
+  std::string missing;
+  if (sss_headless_create(&hd, &headless, error, sizeof error) != 0 ||
+      !host_gl::load(sss_headless_get_proc_address, headless, &missing)) {
+    std::fprintf(stderr, "sss_cost_probe: no GL context: %s%s\n", error, missing.c_str());
+    return 1;
+  }
+  sss_bench::GpuScene scene = sss_bench::upload_scene(sss_bench::make_scene(o.scene, o.width, o.height));
+  GLuint color = 0;
+  glGenTextures(1, &color);
+  glBindTexture(GL_TEXTURE_2D, color);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, o.width, o.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+
+  sss_create_desc desc = {};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = sss_headless_get_proc_address;
+  desc.get_proc_address_user = headless;
+  sss_context* ctx = nullptr;
+  sss_settings s;
+  physical_settings(scene, o, &s);
+  sss_frame frame = {};
+  frame.struct_size = sizeof frame;
+  frame.color_texture = color;
+  frame.depth_texture = scene.depth;
+  if (sss_create(&desc, &ctx) != SSS_OK || sss_set_settings(ctx, &s) != SSS_OK ||
+      sss_set_camera(ctx, scene.projection.data()) != SSS_OK) {
+    std::fprintf(stderr, "sss_cost_probe: %s\n", sss_last_error(ctx));
+    return 1;
+  }
+  // One frame first: programs built, targets allocated, as in a steady frame.
+  for (int frame_index = 0; frame_index < 2; ++frame_index) {
+    refill(scene.irradiance, color, o.width, o.height);
+    if (frame_index == 1) CALLGRIND_START_INSTRUMENTATION;
+    const sss_result r = sss_apply_frame(ctx, &frame);
+    glFinish();
+    if (frame_index == 1) CALLGRIND_STOP_INSTRUMENTATION;
+    if (r != SSS_OK) {
+      std::fprintf(stderr, "sss_cost_probe: %s\n", sss_last_error(ctx));
+      return 1;
+    }
+  }
+  std::printf("%s %dx%d, %d taps, path %u: frame done\n", o.scene.c_str(), o.width, o.height, o.taps, o.path);
+  sss_destroy(ctx);
+  glDeleteTextures(1, &color);
+  sss_bench::destroy_scene(&scene);
+  sss_headless_destroy(headless);
+  return 0;
+}
