@@ -1,5 +1,8 @@
 // Saves, on construction, every GL state the module may change (the list in sss.h) and restores it
 // on destruction. Disabled (a no-op) when the host opted out with SSS_CREATE_NO_STATE_RESTORE.
+// Each saved value is a query (a round trip that stalls a threaded driver), so a caller that knows
+// a part of the list cannot change during the call leaves it out of the Scope: what is not changed
+// needs no restore.
 #pragma once
 
 #include <array>
@@ -44,9 +47,20 @@ std::atomic<uint32_t>& restore_skip_mask_for_tests();  // 0: restore everything
 // Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
 constexpr int kUnitCount = 4;
 
+// The parts of the list a call may change; everything else is saved always. The default is all.
+struct GuardScope {
+  bool image_unit = true;    // image unit 0: only the compute path binds it
+  bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
+                             // masked path's or the MSAA path's)
+  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3 and GL_SAMPLE_MASK_VALUE:
+                             // the MSAA path, and the texture query's probe of a texture's target
+  bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
+};
+
 class StateGuard {
  public:
-  StateGuard(const Functions& gl, bool enabled);
+  using Scope = GuardScope;
+  StateGuard(const Functions& gl, bool enabled, const Scope& scope = Scope{});
   ~StateGuard();
   StateGuard(const StateGuard&) = delete;
   StateGuard& operator=(const StateGuard&) = delete;
@@ -66,9 +80,13 @@ class StateGuard {
   void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
   void restore_stencil_face(GLenum face_enum, const StencilFace& face) const;
+  int units() const { return scope_.unit3 ? kUnitCount : kUnitCount - 1; }
+  // GL_SAMPLE_MASK_VALUE: set by the desktop MSAA path only (never on ES).
+  bool sets_sample_mask_value() const { return scope_.multisample && gl_.has_msaa_path(); }
 
   const Functions& gl_;
   bool enabled_;
+  Scope scope_;
   GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint active_texture_ = 0, unpack_buffer_ = 0;
   std::array<GLint, kUnitCount> textures_{}, samplers_{};
