@@ -36,7 +36,7 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizont
   if (r == SSS_OK && run.stencil != nullptr) {
     ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.masked_framebuffer);
     ctx.gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
-    r = check_framebuffer(ctx.gl, "masked colour copy", message);
+    r = check_framebuffer(ctx, "masked colour copy", message);
   }
   return r == SSS_OK ? attach_output(ctx, run, stencil, message) : r;
 }

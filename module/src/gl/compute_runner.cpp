@@ -36,7 +36,7 @@ sss_result copy_outside_region_first(PassContext& ctx, const FilterRun& run, std
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
-  const sss_result r = check_framebuffer(f, "output copy", message);
+  const sss_result r = check_framebuffer(ctx, "output copy", message);
   if (r == SSS_OK) copy_outside_region(ctx, run);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
   return r;

@@ -59,6 +59,10 @@ struct FilterRun {
   // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
   unsigned path = SSS_PATH_FRAGMENT;
   std::uint64_t path_key = 0;
+  // Check each framebuffer's completeness. The api layer clears it for a steady frame (the same
+  // textures, description and settings as the last successful one: api/steady_frame.hpp), whose
+  // framebuffers that frame checked; SeparableFilter::run checks again when the path differs.
+  bool verify = true;
 
   bool writes_back() const { return output.name == 0; }
   // The texture the last pass writes: the host's colour (in place) or the separate output.

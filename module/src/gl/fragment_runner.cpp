@@ -46,7 +46,7 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
     f.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[0], 0);
     f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
-    r = check_framebuffer(f, "sum of the kernel's terms", message);
+    r = check_framebuffer(ctx, "sum of the kernel's terms", message);
     if (r != SSS_OK) return r;
   }
   return attach_output(ctx, run, stencil, message);
@@ -153,7 +153,7 @@ sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* mes
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
-  const sss_result r = check_framebuffer(f, "output copy", message);
+  const sss_result r = check_framebuffer(ctx, "output copy", message);
   if (r == SSS_OK) {
     DebugGroup group(f, ctx.labels, "sss copy (identity settings)");
     draw_copy(ctx, run.color.name);

@@ -81,12 +81,19 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, measure_ ? &queries_ : nullptr};
+  ctx.check_framebuffers = run.verify;
   if (run.color.multisampled()) {
     const sss_result r = run_msaa(ctx, run, message);
     last_draws_ = ctx.draws;
     return r;
   }
   const PathChooser::Choice choice = choose_path(run);
+  const unsigned path = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
+                        : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
+                                                             : SSS_PATH_FRAGMENT;
+  // A steady frame's framebuffers are the last run's only if it took the same path (SSS_PATH_AUTO
+  // tries each in turn).
+  ctx.check_framebuffers = run.verify || path != last_path_;
   chooser_.begin(choice);
   sss_result r = SSS_OK;
   switch (choice.path) {
@@ -96,11 +103,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   }
   chooser_.end();
   last_draws_ = ctx.draws;
-  if (r == SSS_OK) {
-    last_path_ = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
-                 : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
-                                                      : SSS_PATH_FRAGMENT;
-  }
+  if (r == SSS_OK) last_path_ = path;
   return r;
 }
 
