@@ -92,6 +92,8 @@ int main(void) {
   stats.struct_size = sizeof stats;
   CHECK(sss_get_stats(NULL, &stats) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
+  CHECK(sss_gl_context_changed(NULL) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK((SSS_CREATE_ALL_FLAGS & SSS_CREATE_DEBUG_CHECKS) != 0);
   CHECK(SSS_GLSL_330_CORE != SSS_GLSL_300_ES && (SSS_CREATE_ALL_FLAGS & SSS_CREATE_STATS) != 0);
   memset(&frame, 0, sizeof frame);
   frame.struct_size = sizeof frame;

@@ -18,8 +18,11 @@
  *
  * GL state: every entry point that calls GL restores, before it returns, each state in the list
  * below that it changed (unless SSS_CREATE_NO_STATE_RESTORE is given), and leaves no GL error
- * behind. GL errors the host left pending on entry are cleared and reported through the log
- * callback (GL has no way to re-raise them).
+ * behind. A call that reads the GL error flag first clears the errors the host left pending and
+ * reports them through the log callback (GL has no way to re-raise them): sss_create, the other
+ * entry points that call GL, and every sss_apply_frame that is not steady (see "GL queries" on
+ * sss_frame); a steady frame reads no error flag and leaves the host's pending errors to the host,
+ * unless SSS_CREATE_DEBUG_CHECKS is given.
  *
  *   Saved and restored (SSS_STATE_LIST):
  *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
@@ -85,7 +88,14 @@ typedef struct sss_context sss_context;
 /** Measure the passes on the GPU for sss_get_stats (pixels touched, GPU time per pass). Without it
  *  no query object exists and no query runs; sss_get_stats then gives the counters only. */
 #define SSS_CREATE_STATS 0x4u
-#define SSS_CREATE_ALL_FLAGS 0x7u
+/** Check everything on every frame, steady ones included (see "GL queries" on sss_frame): that a
+ *  context is current and holds the module's objects, the textures' targets, formats and sizes
+ *  against the GL, every framebuffer's completeness, and the GL error flag: the host's pending errors
+ *  are cleared and logged at SSS_LOG_WARNING on entry, and an error the passes raised fails the call
+ *  with SSS_ERROR_GL. Off by default: a steady frame then makes no GL query at all (each is a round
+ *  trip that stalls a threaded driver). For development builds and bug reports. */
+#define SSS_CREATE_DEBUG_CHECKS 0x8u
+#define SSS_CREATE_ALL_FLAGS 0xFu
 
 typedef struct sss_create_desc {
   uint32_t struct_size;                     /**< sizeof(sss_create_desc) */
@@ -294,8 +304,24 @@ typedef struct sss_frame {
    * The module asks the GL for each texture's internal format and size (glGetTexLevelParameteriv);
    * OpenGL ES 3.0 has no such query, so there the frame must say what the host allocated: every
    * format of a texture the frame names, and the size. Where the GL can be asked, a value that is
-   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ).
-   * Formats are the GL internal-format values the textures were allocated with; 0 = not given. */
+   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ)
+   * whenever the module asks (not in a steady frame, below).
+   * Formats are the GL internal-format values the textures were allocated with; 0 = not given.
+   *
+   * GL queries. A frame is steady when it describes every texture it names (each format and the
+   * size) and has the same texture names, description, flags and msaa_depth_resolve as the last
+   * frame that succeeded, with settings that pick the same kernel, path, mode and follow-surface
+   * test, and draws (or, with identity settings or an empty region, does not) as that frame did.
+   * A steady frame makes no GL query at all with SSS_CREATE_NO_STATE_RESTORE (no glGet*, glIs*,
+   * glGetError or glCheckFramebufferStatus: each is a round trip that stalls a threaded driver
+   * such as Mesa's glthread or NVIDIA's threaded optimisation), and with state restore only reads
+   * the part of the state list its path can change (docs/integration.md, "Threaded drivers"). It
+   * trusts what the last successful frame checked: that a GL context is current and is the same
+   * one (after a loss, a re-creation or a switch, call sss_gl_context_changed first), that the
+   * textures are what the description says (a texture re-created under the same name and
+   * description but with another target or sample count also needs sss_gl_context_changed), that
+   * the framebuffers on them are complete; and it reads no GL error flag. Every other frame checks
+   * all of it, and with SSS_CREATE_DEBUG_CHECKS every frame does. */
   uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
   uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
                                   0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
@@ -472,7 +498,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       (or another one is current). Nothing is drawn or changed; the objects
  *                                       are forgotten (not deleted: their names may be the host's now) and the
  *                                       next call rebuilds them in the context current then, so a host that
- *                                       recreates its context after a loss just carries on
+ *                                       recreates its context after a loss just carries on. A steady frame
+ *                                       does not look (see sss_frame): call sss_gl_context_changed first
  *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, neither GL_TEXTURE_2D nor
  *                                       GL_TEXTURE_2D_MULTISAMPLE (or a multisampled output or normal texture), a
  *                                       texture without storage, a format outside the lists on sss_frame, sizes that
@@ -480,14 +507,26 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       stencil that differ in target or sample count
  *  @retval SSS_ERROR_UNSUPPORTED        a sample count above 32 or above the context's GL_MAX_COLOR_TEXTURE_SAMPLES /
  *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
- *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
+ *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures (checked
+ *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS)
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
- *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
+ *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message; read
+ *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS)
  *  @retval SSS_ERROR_SHADER_COMPILE    a shader variant first needed by this frame did not compile (retried by
  *                                       the next call that needs it)
  *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
  *  starts afresh (nothing the failed call did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
+
+/** Tells the module that the GL context current for its next call may not be the one of its last
+ *  call: the host re-created it after a loss, or made another one current. The next sss_apply_frame
+ *  then checks, even when the frame is steady (see "GL queries" on sss_frame), that a context is
+ *  current and holds the module's objects (SSS_ERROR_NO_CONTEXT and a rebuild when it does not, as
+ *  documented there). Only a steady frame needs this: every other frame checks by itself. Does not
+ *  call GL.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx is NULL */
+SSS_API sss_result sss_gl_context_changed(sss_context *ctx);
 
 /** Counters and the latest GPU measurements of the context (see sss_stats). Does not call GL. A
  *  measurement is skipped for a frame when the host has a query of the same target active around

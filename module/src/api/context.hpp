@@ -15,6 +15,7 @@
 #include "../math/pass_kernel.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
+#include "steady_frame.hpp"
 
 struct sss_context {
   sss::gl::Functions gl;
@@ -26,6 +27,11 @@ struct sss_context {
   bool gl_es = false;
   // OpenGL ES extensions the formats need (see api_apply.cpp): RGBA32F renderable, RGBA32F filterable.
   bool es_float_render = false, es_float_linear = false;
+  // Limits, read once by sss_create (they cannot change): no frame asks for them again.
+  int max_texture_size = 0;
+  int max_color_texture_samples = 0, max_depth_texture_samples = 0;  // 0 where there are no multisample textures
+  // The last successful frame, which a steady frame trusts (steady_frame.hpp).
+  sss::api::SteadyFrame steady;
 
   sss::math::FilterSettings settings;
   sss::math::PassKernel kernel;        // what the separable mode's passes run (settings.kernel, jitter)
