@@ -1,7 +1,7 @@
 // No hitch (issue 22, item 3): after sss_prepare for a size and formats, the first sss_apply_frame
 // with the prepared settings compiles no shader, links no program and creates or allocates no GL
-// object, counted through the loader (creation_counter.hpp: glCreateShader, glCompileShader,
-// glLinkProgram, glGen*, glTexImage*, glTexStorage*, glRenderbufferStorage*, ...). Every case is
+// object, counted through the loader (counting_loader.hpp's creations: glGen*, glCreate*,
+// glCompileShader, glLinkProgram, glTexImage*, glTexStorage*, glRenderbufferStorage*). Every case is
 // run twice, each time in a fresh context: unprepared, where the first frame must create
 // something (else the count would prove nothing), and prepared, where it must create nothing. A
 // frame at another size does allocate; a bad description fails with its message and builds
@@ -9,11 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "creation_counter.hpp"
+#include "counting_loader.hpp"
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
 #include "multisample_textures.hpp"
@@ -24,6 +25,22 @@ namespace sss_test {
 namespace {
 
 constexpr int kW = 32, kH = 24;
+
+// The creations the counting loader saw since the last reset_call_counts(), by GL function name.
+using CreationCounts = std::map<std::string, long>;
+CreationCounts creations() { return call_counts().creations; }
+long total_creations() { return call_counts().total_creations(); }
+long count_of(const std::string& function) {
+  const CreationCounts c = creations();
+  const auto it = c.find(function);
+  return it == c.end() ? 0 : it->second;
+}
+std::string describe(const CreationCounts& counts) {
+  GlCallCounts all;
+  all.creations = counts;
+  return all.describe_creations();
+}
+void reset_creations() { reset_call_counts(); }
 
 struct Case {
   const char* name;
@@ -57,8 +74,7 @@ class Prewarm : public GlTest {
  protected:
   void SetUp() override {
     GlTest::SetUp();
-    set_counting_base(is_gles() ? es30_get_proc_address : sss_headless_get_proc_address);
-    loader_override_ = counting_get_proc_address;
+    loader_override_ = counting_loader(is_gles() ? es30_get_proc_address : sss_headless_get_proc_address);
     scene_ = make_relief_scene(kW * 2, kH * 2, 5, perspective_matrix(40.0f, 4.0f / 3.0f, 0.1f, 10.0f));
   }
 
