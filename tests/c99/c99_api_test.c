@@ -101,6 +101,19 @@ int main(void) {
   frame.texture_width = 64;
   frame.texture_height = 48;
   CHECK(sss_apply_frame(NULL, &frame) == SSS_ERROR_INVALID_ARGUMENT);
+  {
+    /* sss_prepare's description (no hitch on the first frame) is plain C99 too. */
+    sss_prepare_desc prepare;
+    memset(&prepare, 0, sizeof prepare);
+    prepare.struct_size = sizeof prepare;
+    prepare.width = 64;
+    prepare.height = 48;
+    prepare.color_format = 0x881A; /* GL_RGBA16F */
+    prepare.depth_format = 0x88F0; /* GL_DEPTH24_STENCIL8 */
+    prepare.flags = SSS_PREPARE_NORMALS;
+    CHECK(sss_prepare(NULL, &prepare) == SSS_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
+  }
 
   /* The kernel-family API (sss_kernels.h, through sss.h). */
   sss_default_kernel_desc(&kd);

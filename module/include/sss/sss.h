@@ -232,7 +232,8 @@ typedef struct sss_settings {
                                the family. A tabulated profile's table is copied (the pointers need not outlive the
                                call; sss_get_settings returns pointers to the context's copy, valid until the
                                next sss_set_settings). The fitted families (guided; sum of Gaussians of a
-                               measured material) run an optimiser when first selected: up to ~0.3 s */
+                               measured material) run an optimiser when first selected (see sss_set_settings):
+                               tens of ms at 17 taps, up to ~0.7 s for the guided family at 65 */
   float jitter;           /**< [0, 1], finite: the share of each pass's taps, the outermost, that read a pixel of
                                the cell they stand for chosen per pixel by deterministic noise (supplementary
                                Fig. S.6-S.7 use 0.33), where a pixel's kernel spans more pixels than `samples`
@@ -442,6 +443,12 @@ SSS_API float sss_world_units_per_mm_from_legacy_width(float width);
 SSS_API void sss_settings_separable_table1(sss_settings *s);
 
 /** Validates and takes the settings; a kernel is rebuilt only when its inputs change. Does not call GL.
+ *  The fitted kernels (the guided family; a sum of Gaussians, a cross-bilateral profile or a table
+ *  of a measured material) run an optimiser here and in no other call of this header: from a
+ *  millisecond to ~0.7 s (the guided family at 65 taps; logged at SSS_LOG_DEBUG with the time), so
+ *  set them at load time. The
+ *  last four kernels that cost a fit are kept: settings that go back to one take it without fitting.
+ *  Then sss_prepare gets the programs and targets of the new settings ready before the next frame.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, world_units_per_mm, scale, strength, falloff,
  *                                     separable_scale, samples, flags,
@@ -535,6 +542,66 @@ SSS_API sss_result sss_gl_context_changed(sss_context *ctx);
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or stats NULL, or stats->struct_size is not sizeof(sss_stats) */
 SSS_API sss_result sss_get_stats(const sss_context *ctx, sss_stats *stats);
+
+/* SSS_PREPARE_* flags for sss_prepare_desc.flags. */
+/** The frames will give sss_frame.normal_texture (the cross-bilateral mode's normals variant). */
+#define SSS_PREPARE_NORMALS 0x1u
+/** The frames will set SSS_FRAME_REGION (accepted for completeness: a region needs no program or
+ *  target of its own, so this changes nothing prepared today). */
+#define SSS_PREPARE_REGION 0x2u
+/** Multisampled colour made with fixedsamplelocations GL_FALSE (the MSAA path's copy of the samples
+ *  is made like the host's texture); read only when samples > 1. */
+#define SSS_PREPARE_UNFIXED_SAMPLE_LOCATIONS 0x4u
+#define SSS_PREPARE_ALL_FLAGS 0x7u
+
+/** The frames sss_prepare gets ready for: what sss_apply_frame would learn from the textures.
+ *  Formats are the GL internal-format values, as in sss_frame's description fields. */
+typedef struct sss_prepare_desc {
+  uint32_t struct_size;    /**< sizeof(sss_prepare_desc) */
+  int32_t width, height;   /**< the colour texture's size, each in [1, GL_MAX_TEXTURE_SIZE] */
+  uint32_t color_format;   /**< 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F (required) */
+  uint32_t output_format;  /**< 0: written back in place (output_texture 0); else the separate output's format,
+                                0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
+  uint32_t depth_format;   /**< required, one of sss_frame.depth_format's list: hardware depth (0x81A5, 0x81A6,
+                                0x81A7, 0x8CAC, 0x88F0, 0x8CAD) or linear view distance (0x822D GL_R16F,
+                                0x822E GL_R32F) */
+  int32_t samples;         /**< 0 or 1: single-sample textures; [2, 32]: multisampled colour and depth (desktop GL,
+                                at most GL_MAX_COLOR_TEXTURE_SAMPLES) with exactly the count the GL gave them
+                                (GL_TEXTURE_SAMPLES: a driver may round a count up) */
+  uint32_t stencil_format; /**< 0: no host stencil (sss_frame.stencil NULL); else the host's depth-stencil
+                                format, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8 */
+  uint32_t flags;          /**< SSS_PREPARE_* */
+} sss_prepare_desc;
+
+/** Gets the context ready for frames like `desc` with the current settings, so that the first
+ *  sss_apply_frame of such a frame compiles no shader and allocates no GL object ("no hitch").
+ *  Builds every program variant those frames can need with the settings as they are now (each path
+ *  sss_settings.path lets a frame take: the plain fragment passes, the masked ones, the compute
+ *  dispatches where the GL has them (4.3+ desktop), all three for SSS_PATH_AUTO; the
+ *  cross-bilateral variants in that mode; the MSAA resolve, stencil mark and per-sample write for
+ *  samples > 1; the variants of every kernel term), and allocates the render targets for that
+ *  size (the intermediate, the sum of several kernel terms, the stencil copy or mask, the masked
+ *  colour copy, the MSAA targets). Call it at load time after sss_set_settings, again after each
+ *  sss_set_settings that changes the mode, the path, the kernel or follow-surface, and after a
+ *  resize (a frame of another size or format reallocates then, as without this call). Calling it
+ *  again with nothing changed does nothing. Kernel fits never run here or in any per-frame call:
+ *  sss_set_settings runs them (see there). Needs the GL context current that the module was created
+ *  in; saves and restores the GL state like sss_apply_frame. Needs no camera.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or desc NULL, bad struct_size, width or height outside [1,
+ *                                     GL_MAX_TEXTURE_SIZE], color_format, output_format, depth_format or
+ *                                     stencil_format outside its list, samples negative or above 32, unknown
+ *                                     flags; nothing is built or allocated
+ *  @retval SSS_ERROR_UNSUPPORTED      samples > 1 on OpenGL ES (the MSAA path is desktop GL only) or above
+ *                                     GL_MAX_COLOR_TEXTURE_SAMPLES / GL_MAX_DEPTH_TEXTURE_SAMPLES; OpenGL ES: an
+ *                                     RGBA32F colour or output format without the extension it needs (as
+ *                                     sss_apply_frame); nothing is built or allocated
+ *  @retval SSS_ERROR_NO_CONTEXT       as sss_apply_frame
+ *  @retval SSS_ERROR_SHADER_COMPILE   a variant did not compile (driver log in the message)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    a target could not be allocated
+ *  @retval SSS_ERROR_GL               the GL raised an error (named in the message)
+ *  After a failure what was built stays built and the frames still work: each builds what it lacks. */
+SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
 
 /* ---- GL-free kernel API (math layer): usable without any GL context. ----
  * The pre-integrated skin LUTs (sss_lut_*) are declared in <sss/sss_lut.h>, which includes this header. */

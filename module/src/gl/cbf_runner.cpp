@@ -11,24 +11,32 @@
 
 namespace sss::gl {
 
-namespace {
-sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
-                   std::string* message) {
+sss_result cross_bilateral_resources(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal,
+                                     CbfProgram** vertical, std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
   const bool normals = run.normals.name != 0;
-  const int width = run.color.width, height = run.color.height;
   sss_result r = ctx.programs.cross_bilateral(Outside::write_centre, linear_depth, normals, horizontal, message);
   if (r == SSS_OK) {
     const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
     r = ctx.programs.cross_bilateral(outside, linear_depth, normals, vertical, message);
   }
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(width, height, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
   if (r == SSS_OK && run.stencil != nullptr) {
-    r = ctx.targets.ensure_masked_source(run.color.internal_format, width, height, message);
+    r = ctx.targets.ensure_masked_source(run.color.internal_format, run.color.width, run.color.height, message);
   }
+  return r;
+}
+
+namespace {
+sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                   std::string* message) {
+  const int width = run.color.width, height = run.color.height;
+  sss_result r = cross_bilateral_resources(ctx, run, horizontal, vertical, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  if (run.stencil != nullptr) r = copy_stencil(ctx, *run.stencil, width, height, message);
+  // The MSAA path marked or copied the stencil already (stencil_ready): copying "its" stencil
+  // again would allocate a stencil copy of format 0 and fail.
+  if (run.stencil != nullptr && !run.stencil_ready) r = copy_stencil(ctx, *run.stencil, width, height, message);
   if (r != SSS_OK) return r;
   const Targets& t = ctx.targets.names();
   const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;

@@ -15,8 +15,6 @@
 namespace sss::gl {
 
 namespace {
-using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;  // [2t]: horizontal, [2t + 1]: vertical
-
 // Programs first: a variant that fails to build must not leave a new target behind.
 sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
   const std::size_t terms = run.kernel->terms.size();
@@ -127,16 +125,21 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
 }
 }  // namespace
 
+sss_result fragment_resources(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
+  sss_result r = build_programs(ctx, run, programs, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK && run.kernel->terms.size() > 1) {
+    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
+  }
+  return r;
+}
+
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
   const std::size_t terms = run.kernel->terms.size();
   TermPrograms programs{};
-  sss_result r = build_programs(ctx, run, &programs, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r == SSS_OK && terms > 1) {
-    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
-  }
+  sss_result r = fragment_resources(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   r = attach_targets(ctx, run, terms, message);

@@ -11,11 +11,16 @@ bool masked_available(const FilterRun& run) {
   return !run.color.multisampled() && !run.cross_bilateral && run.stencil == nullptr && !run.identity;
 }
 
+sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message) {
+  const sss_result r = ctx.programs.stencil_mark(program, message);
+  if (r != SSS_OK) return r;
+  return ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
+}
+
 sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message) {
   const Functions& f = ctx.gl;
   GLuint program = 0;
-  sss_result r = ctx.programs.stencil_mark(&program, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
+  sss_result r = stencil_mark_resources(ctx, width, height, &program, message);
   if (r != SSS_OK) return r;
   r = attach_intermediate(ctx, ctx.targets.names().stencil_buffer, message, "stencil mark");
   if (r != SSS_OK) return r;

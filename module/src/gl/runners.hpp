@@ -4,6 +4,7 @@
 // attached to the module's framebuffers.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "filter_run.hpp"
@@ -11,14 +12,24 @@
 
 namespace sss::gl {
 
+// The blur programs of a run's passes: [2t] term t's horizontal pass, [2t + 1] its vertical one.
+using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;
+
 // The fragment passes on single-sample images (fragment_runner.cpp): one horizontal and one
 // vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
 // when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_fragment builds and allocates before it draws (the blur variants of every term, the
+// intermediate, the sum of several terms); also what sss_prepare makes ahead (prewarm.cpp), so
+// the two cannot drift apart. The other *_resources functions below are the same for their path.
+sss_result fragment_resources(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.
 sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
 // The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
+// Its two programs, the intermediate and, with a stencil, the masked colour copy.
+sss_result cross_bilateral_resources(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal,
+                                     CbfProgram** vertical, std::string* message);
 
 // SSS_PATH_FRAGMENT_MASKED (masked_runner.cpp): the fragment passes behind a stencil marked from
 // the colour's alpha, so only translucent pixels run the blur.
@@ -27,6 +38,8 @@ sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* messa
 // The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
 // above 0 (left on the intermediate framebuffer). Draws over the current viewport.
 sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message);
+// The mark's program and the module's DEPTH24_STENCIL8 stencil buffer at this size.
+sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message);
 
 // SSS_PATH_COMPUTE (compute_runner.cpp, OpenGL 4.3+): "" when `run` can take it, else why not.
 const char* compute_unavailable(const Functions& gl, const FilterRun& run);

@@ -23,6 +23,9 @@
 
 namespace sss::gl {
 
+// A texture name that stands for "given" in the FilterRun of SeparableFilter::prewarm.
+inline constexpr GLuint kPrewarmPlaceholder = 0xFFFFFFFFu;
+
 class SeparableFilter {
  public:
   // Builds the objects that do not depend on frame size and the most common program variants, so a
@@ -46,6 +49,13 @@ class SeparableFilter {
   // forget()s them.
   void destroy();
   sss_result run(const FilterRun& run, std::string* message);
+  // Builds every program and allocates every target a frame like `run` can need, on each path
+  // run.path lets it take (prewarm.cpp), so that run() on such a frame builds and allocates
+  // nothing (sss_prepare). `run` describes the frame's textures by format, size and sample count;
+  // their names are 0 or, where FilterRun tells a texture's presence by its name (a separate
+  // output, the normals), kPrewarmPlaceholder: nothing is bound or drawn. run.identity is ignored
+  // (the blur is prepared all the same).
+  sss_result prewarm(const FilterRun& run, std::string* message);
   // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
   unsigned last_run_path() const { return last_path_; }
 
