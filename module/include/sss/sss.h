@@ -35,7 +35,8 @@
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
  *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
- *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7
+ *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE (the passes switch it on: a host that
+ *     disabled it would have the MSAA write-back's sample mask ignored and every sample overwritten)
  *   - GL_COLOR_WRITEMASK (draw buffer 0), GL_POLYGON_MODE
  *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
  *   - KHR_debug groups are pushed and popped in pairs.
@@ -43,8 +44,8 @@
  *     is left active; a target the host has a query active on is not used (GL_CURRENT_QUERY of
  *     GL_TIME_ELAPSED and GL_SAMPLES_PASSED stays the host's).
  *   On OpenGL ES the list is what exists there: the same, without GL_FRAMEBUFFER_SRGB,
- *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7 and GL_POLYGON_MODE (none of them exist
- *   in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
+ *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE and GL_POLYGON_MODE (none
+ *   of them exist in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
  *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
  *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear

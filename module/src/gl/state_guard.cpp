@@ -165,6 +165,11 @@ void set_pass_state(const Functions& gl) {
     gl.Disable(COLOR_LOGIC_OP);
     for (GLenum i = 0; i < 8; ++i) gl.Disable(CLIP_DISTANCE0 + i);
     gl.PolygonMode(FRONT_AND_BACK, FILL);
+    // With GL_MULTISAMPLE off the sample mask is ignored and a draw into a multisampled target
+    // writes every sample: the MSAA write-back (one draw per sample under glSampleMaski) would
+    // overwrite the opaque samples. No effect on single-sample targets. ES has no such switch
+    // (multisample rasterisation is always on there).
+    gl.Enable(MULTISAMPLE);
   }
   gl.ColorMask(1, 1, 1, 1);
 }

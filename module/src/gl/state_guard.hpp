@@ -20,7 +20,7 @@ enum : uint32_t {
   color_mask = 1u << 1,
   polygon_mode = 1u << 2,     // desktop
   clip_distances = 1u << 3,   // desktop
-  desktop_enables = 1u << 4,  // FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP
+  desktop_enables = 1u << 4,  // FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP, MULTISAMPLE
   sample_mask_enable = 1u << 5,
   enables = 1u << 6,          // kCapabilities
   viewport = 1u << 7,
@@ -60,8 +60,10 @@ class StateGuard {
   static constexpr std::array<GLenum, 9> kCapabilities = {
       SCISSOR_TEST,       DEPTH_TEST,        STENCIL_TEST,    BLEND, CULL_FACE,
       RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, POLYGON_OFFSET_FILL};
-  // Desktop GL only.
-  static constexpr std::array<GLenum, 3> kDesktopCapabilities = {FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP};
+  // Desktop GL only. GL_MULTISAMPLE is the one the passes switch on (the MSAA write-back's sample
+  // mask works only with multisample rasterisation on); the others they switch off.
+  static constexpr std::array<GLenum, 4> kDesktopCapabilities = {FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP,
+                                                                 MULTISAMPLE};
 
   void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
@@ -90,7 +92,8 @@ class StateGuard {
 };
 
 // Sets the fixed-function state the passes need (after a StateGuard saved it): everything that
-// could drop or alter a full-screen triangle's fragments is switched off.
+// could drop or alter a full-screen triangle's fragments is switched off, and (desktop GL)
+// multisample rasterisation on, for the sample mask of the MSAA write-back.
 void set_pass_state(const Functions& gl);
 
 }  // namespace sss::gl
