@@ -48,8 +48,11 @@
  *   of them exist in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
  *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
  *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
+ *   - Host texture parameters: GL_DEPTH_STENCIL_TEXTURE_MODE of the frame's depth texture, switched
+ *     to GL_DEPTH_COMPONENT for the passes when the host left it on GL_STENCIL_INDEX and always put
+ *     back, even with SSS_CREATE_NO_STATE_RESTORE (see sss_frame.depth_stencil_mode).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
- *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, texture
+ *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, other texture
  *   parameters of host textures (the module samples through its own sampler objects).
  *   The host must not call sss_apply with transform feedback active or conditional rendering on.
  */
@@ -252,7 +255,19 @@ typedef struct sss_stencil {
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
 /** sss_frame.region holds the host's bounding rectangle of the translucent pixels: see there. */
 #define SSS_FRAME_REGION 0x2u
-#define SSS_FRAME_ALL_FLAGS 0x3u
+/** The host's promise that the texture the passes write (color_texture written back, or
+ *  output_texture) is complete: its GL_TEXTURE_MIN_FILTER is GL_NEAREST or GL_LINEAR, or it has every
+ *  mip level its filter and GL_TEXTURE_MAX_LEVEL ask for. The compute path (SSS_PATH_COMPUTE, and
+ *  SSS_PATH_AUTO's candidate) writes that texture through an image unit, and image stores to an
+ *  incomplete texture are undefined (a silent no-op on some drivers). A new texture's default
+ *  filter, GL_NEAREST_MIPMAP_LINEAR, makes a texture with level 0 alone incomplete. Without the flag
+ *  the module asks the GL (GL_TEXTURE_MIN_FILTER, _BASE_LEVEL, _MAX_LEVEL, _IMMUTABLE_FORMAT) when the
+ *  frame does not describe its textures, and takes the default when it does; a texture that may be
+ *  incomplete (a mipmap filter, more than one level allowed, mutable storage) sends the frame down
+ *  the fragment path: sss_stats.last_frame_path says SSS_PATH_FRAGMENT and the log (INFO) says why.
+ *  A wrong promise gives undefined results, never an error. */
+#define SSS_FRAME_TARGET_COMPLETE 0x4u
+#define SSS_FRAME_ALL_FLAGS 0x7u
 
 /* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
  * depth. Each sample's depth is first converted to linear view distance with the camera. */
@@ -296,7 +311,11 @@ typedef struct sss_frame {
    * OpenGL ES 3.0 has no such query, so there the frame must say what the host allocated: every
    * format of a texture the frame names, and the size. Where the GL can be asked, a value that is
    * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ).
-   * Formats are the GL internal-format values the textures were allocated with; 0 = not given. */
+   * Formats are the GL internal-format values the textures were allocated with; 0 = not given.
+   * A frame that gives the size and the format of every texture it names is described: the module
+   * then asks the GL nothing about the host texture parameters its passes depend on either
+   * (depth_stencil_mode, SSS_FRAME_TARGET_COMPLETE) and takes what the frame does not state at the
+   * GL's default for a new texture. */
   uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
   uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
                                   0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
@@ -322,6 +341,20 @@ typedef struct sss_frame {
                                   and in place nothing is drawn at all (a separate output gets the colour
                                   copied). With a separate output, the viewport outside the region gets the
                                   colour copied (one more draw): writing back costs less */
+  /* Appended in 0.2 for the host texture parameters the passes depend on. */
+  uint32_t depth_stencil_mode; /**< 0, 0x1902 GL_DEPTH_COMPONENT or 0x1901 GL_STENCIL_INDEX: the
+                                  GL_DEPTH_STENCIL_TEXTURE_MODE of depth_texture (read only when it is
+                                  GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8). A host that samples its
+                                  depth-stencil texture's stencil (GL 4.3+, ES 3.1+) leaves it on
+                                  GL_STENCIL_INDEX, and depth fetches then return stencil indices: the
+                                  module switches it to GL_DEPTH_COMPONENT for its passes and puts
+                                  GL_STENCIL_INDEX back before it returns, on failure too and whatever
+                                  SSS_CREATE_NO_STATE_RESTORE says (host texture state). 0: not given; the
+                                  module asks the GL (glGetTexParameteriv) when the frame does not describe
+                                  its textures, and takes GL_DEPTH_COMPONENT (the default) when it does or
+                                  the GL has no such parameter. A given value is taken as it is (not checked
+                                  against the GL). Another value: SSS_ERROR_INVALID_ARGUMENT, and so is
+                                  GL_STENCIL_INDEX on a GL before 4.3 (ES 3.1) */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
@@ -460,7 +493,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       with SSS_FRAME_REGION a region field negative or the region reaching
  *                                       outside the viewport,
- *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
+ *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, depth_stencil_mode outside its
+ *                                       list (or GL_STENCIL_INDEX on a GL without that mode), or output_texture equal to
  *                                       color_texture; a texture description field outside its list, a size
  *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
  *                                       GL's answer; on OpenGL ES 3.0 a description missing

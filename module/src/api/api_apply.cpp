@@ -3,10 +3,12 @@
 #include <cstdio>
 
 #include "../gl/debug_label.hpp"
+#include "../gl/host_texture_state.hpp"
 #include "../gl/state_guard.hpp"
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "host_texture_params.hpp"
 #include "validation.hpp"
 
 namespace {
@@ -251,6 +253,25 @@ bool is_identity(const sss::math::FilterSettings& s) {
          s.strength[2] == 0.0f;
 }
 
+// The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
+// the error check, on failure too), then the GL errors.
+sss_result run_passes(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
+  const gl::Functions& f = ctx->gl;
+  gl::GLenum depth_mode = gl::DEPTH_COMPONENT;
+  sss_result r = sss::api::host_texture_params(ctx, frame, run, &depth_mode);
+  if (r != SSS_OK) return r;
+  std::string message;
+  {
+    const gl::DepthSamplingOverride depth_sampling(f, run->depth, depth_mode);
+    r = ctx->filter.run(*run, &message);
+  }
+  if (r != SSS_OK) {
+    sss::api::drain_host_errors(nullptr, f);
+    return fail(ctx, r, message);
+  }
+  return sss::api::check_gl_errors(ctx, f, "the separable passes");
+}
+
 }  // namespace
 
 extern "C" {
@@ -327,13 +348,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
     }
   }
 
-  std::string message;
-  r = ctx->filter.run(run, &message);
-  if (r != SSS_OK) {
-    sss::api::drain_host_errors(nullptr, f);
-    return fail(ctx, r, message);
-  }
-  r = sss::api::check_gl_errors(ctx, f, "the separable passes");
+  r = run_passes(ctx, *frame, &run);
   if (r == SSS_OK) {
     ++ctx->frames;
     ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());

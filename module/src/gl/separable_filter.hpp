@@ -66,6 +66,8 @@ class SeparableFilter {
   // The path a frame takes: the one asked for, the one SSS_PATH_AUTO's timing chose, or the plain
   // fragment passes where the one asked for cannot run this frame.
   PathChooser::Choice choose_path(const FilterRun& run);
+  // Logs (INFO) why SSS_PATH_COMPUTE gives way to the fragment path, when the reason changes.
+  void note_compute_refusal(const char* reason);
 
   const Functions* gl_ = nullptr;
   Log log_;
@@ -79,6 +81,7 @@ class SeparableFilter {
   PathChooser chooser_;
   int last_draws_ = 0;
   unsigned last_path_ = SSS_PATH_FRAGMENT;
+  const char* compute_refusal_ = "";  // compute_unavailable()'s last answer for SSS_PATH_COMPUTE
 };
 
 }  // namespace sss::gl
