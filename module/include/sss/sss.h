@@ -517,11 +517,16 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
- *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
+ *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message): found
+ *                                       after the draws began, so the target (colour written back, or the output)
+ *                                       may be partly written and its content is undefined until a frame succeeds
+ *                                       (the message says so); GL state and the depth texture's mode are restored
  *  @retval SSS_ERROR_SHADER_COMPILE    a shader variant first needed by this frame did not compile (retried by
  *                                       the next call that needs it)
- *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
- *  starts afresh (nothing the failed call did has to be undone by the host). */
+ *  Every check, shader build and allocation that can fail runs before the first draw into a host texture, so
+ *  on any failure but SSS_ERROR_GL raised by the passes the host's textures are unchanged. On any failure the
+ *  GL state is restored and no GL error is left pending; the next call starts afresh (nothing the failed call
+ *  did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
 
 /** Counters and the latest GPU measurements of the context (see sss_stats). Does not call GL. A

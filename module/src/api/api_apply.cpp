@@ -1,5 +1,7 @@
 // sss_apply and sss_apply_frame: validate everything (arguments first, then the textures as the GL
-// describes them) before the first draw, so that a failure leaves the host's textures untouched.
+// describes them) before the first draw, so that a failure leaves the host's textures untouched;
+// the runners build and allocate everything before their first draw too. The one failure found
+// after the draws began is a GL error they raised: its message says the target may be partly written.
 #include <cstdio>
 
 #include "../gl/debug_label.hpp"
@@ -254,7 +256,9 @@ bool is_identity(const sss::math::FilterSettings& s) {
 }
 
 // The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
-// the error check, on failure too), then the GL errors.
+// the error check, on failure too), then the GL errors. Every check, program build and allocation
+// came before the first draw; an error the GL raised while drawing is found only now, when the
+// target may hold part of the result, and the message says so.
 sss_result run_passes(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   const gl::Functions& f = ctx->gl;
   gl::GLenum depth_mode = gl::DEPTH_COMPONENT;
@@ -269,7 +273,12 @@ sss_result run_passes(sss_context* ctx, const sss_frame& frame, gl::FilterRun* r
     sss::api::drain_host_errors(nullptr, f);
     return fail(ctx, r, message);
   }
-  return sss::api::check_gl_errors(ctx, f, "the separable passes");
+  char passes[200];
+  std::snprintf(passes, sizeof passes,
+                "the separable passes (they had begun drawing: %s = %u may be partly written, its content is "
+                "undefined until a frame succeeds; the GL state is restored)",
+                run->writes_back() ? "color_texture" : "output_texture", run->target().name);
+  return sss::api::check_gl_errors(ctx, f, passes);
 }
 
 }  // namespace

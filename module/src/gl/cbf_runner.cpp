@@ -12,8 +12,9 @@
 namespace sss::gl {
 
 namespace {
-sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
-                   std::string* message) {
+// The programs and targets: everything that can fail but the framebuffer checks.
+sss_result build(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                 std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
   const bool normals = run.normals.name != 0;
   const int width = run.color.width, height = run.color.height;
@@ -26,6 +27,13 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizont
   if (r == SSS_OK && run.stencil != nullptr) {
     r = ctx.targets.ensure_masked_source(run.color.internal_format, width, height, message);
   }
+  return r;
+}
+
+sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                   std::string* message) {
+  const int width = run.color.width, height = run.color.height;
+  sss_result r = build(ctx, run, horizontal, vertical, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   if (run.stencil != nullptr) r = copy_stencil(ctx, *run.stencil, width, height, message);
@@ -132,6 +140,12 @@ void draw_passes(PassContext& ctx, const FilterRun& run, CbfProgram& horizontal,
   measure.end_frame();
 }
 }  // namespace
+
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
+  CbfProgram* horizontal = nullptr;
+  CbfProgram* vertical = nullptr;
+  return build(ctx, run, &horizontal, &vertical, message);
+}
 
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
   CbfProgram* horizontal = nullptr;

@@ -125,18 +125,32 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
   }
   measure.end_frame();
 }
+
+// The programs and targets of the separable passes: everything that can fail but the framebuffer
+// checks, all before the first draw.
+sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
+  sss_result r = build_programs(ctx, run, programs, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK && run.kernel->terms.size() > 1) {
+    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
+  }
+  return r;
+}
 }  // namespace
+
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.identity) return SSS_OK;
+  if (run.cross_bilateral) return prepare_cross_bilateral(ctx, run, message);
+  TermPrograms programs{};
+  return prepare_separable(ctx, run, &programs, message);
+}
 
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
   const std::size_t terms = run.kernel->terms.size();
   TermPrograms programs{};
-  sss_result r = build_programs(ctx, run, &programs, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r == SSS_OK && terms > 1) {
-    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
-  }
+  sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   r = attach_targets(ctx, run, terms, message);

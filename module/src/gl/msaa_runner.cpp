@@ -28,7 +28,11 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** reso
   r = ctx.targets.ensure_msaa_targets(run.color.internal_format, run.color.width, run.color.height,
                                       !run.identity && write_back, message);
   if (r == SSS_OK && write_back && !run.identity) r = ctx.targets.ensure_sample_copy(run.color, message);
-  return r;
+  if (r != SSS_OK || run.identity) return r;
+  // The single-sample passes' stencil copy and targets too: nothing is allocated after the first draw.
+  const GLint stencil_format = run.stencil != nullptr ? run.stencil->texture.internal_format
+                                                      : static_cast<GLint>(DEPTH24_STENCIL8);
+  return ctx.targets.ensure_stencil_buffer(stencil_format, run.color.width, run.color.height, message);
 }
 
 sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram& p, std::string* message) {
@@ -140,25 +144,26 @@ sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message
   if (run.identity && run.writes_back()) return SSS_OK;  // in place: nothing changes
   ResolveProgram* resolve_program = nullptr;
   sss_result r = prepare(ctx, run, &resolve_program, message);
-  if (r == SSS_OK) r = resolve(ctx, run, *resolve_program, message);
   if (r != SSS_OK) return r;
+  // The single-sample passes on the resolved images, behind the host's stencil (resolved by the
+  // blit) or the module's, marked from alpha.
   FilterRun inner = resolved_run(run, ctx.targets.names());
-  if (run.identity) return run_fragment(ctx, inner, message);  // copies the resolved colour into the output
-
-  // The stencil: the host's (resolved by the blit) or the module's, marked from alpha.
-  r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r != SSS_OK) return r;
   StencilInput own;
   own.ref = 1;
   own.mask = 1;
+  if (!run.identity && run.stencil == nullptr) inner.stencil = &own;
+  inner.stencil_ready = true;
+  r = prepare_fragment(ctx, inner, message);  // identity: nothing to prepare
+  if (r == SSS_OK) r = resolve(ctx, run, *resolve_program, message);
+  if (r != SSS_OK) return r;
+  if (run.identity) return run_fragment(ctx, inner, message);  // copies the resolved colour into the output
+
   if (run.stencil != nullptr) {
     r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
   } else {
     r = mark_stencil_from_alpha(ctx, ctx.targets.names().resolved_color, run.color.width, run.color.height, message);
-    inner.stencil = &own;
   }
   if (r != SSS_OK) return r;
-  inner.stencil_ready = true;
   r = run_fragment(ctx, inner, message);
   if (r != SSS_OK || !run.writes_back()) return r;
   return write_samples(ctx, run, message);

@@ -15,6 +15,11 @@ namespace sss::gl {
 // vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
 // when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_fragment (and the cross-bilateral runner) build and allocate before they draw: the
+// runners that draw before they call run_fragment (masked, MSAA) call it first, so that no program
+// build or allocation fails after the first draw (sss.h: only a GL error the draws raised does).
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.
 sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
 // The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
