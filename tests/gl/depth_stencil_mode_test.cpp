@@ -12,6 +12,7 @@
 #include "fault_loader.hpp"
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
+#include "multisample_textures.hpp"
 
 using namespace host_gl;
 
@@ -126,6 +127,35 @@ TEST_F(DepthStencilMode, OnlyAnUndescribedFrameAsksTheGl) {
   EXPECT_EQ(faults().texture_parameter_queries, 0);
   apply(0, false);
   EXPECT_EQ(faults().texture_parameter_queries, 1);
+}
+
+// The MSAA path's resolve fetches every sample of a multisampled depth-stencil texture: the same.
+TEST_F(DepthStencilMode, AMultisampledDepthStencilTextureToo) {
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  if (is_gles() || max_samples < 4) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
+  start(0);
+  ASSERT_FALSE(HasFatalFailure());
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 6, kCamera);
+  const GLuint color = make_multisample_texture(GL_RGBA32F, kW, kH, 4, fine.color);
+  const GLuint depth = make_multisample_depth_stencil(kW, kH, 4, fine.window_depth, fine.stencil);
+  textures_.insert(textures_.end(), {color, depth});
+  const auto filtered = [&] {
+    const GLuint output = make_rgba32f(kW, kH, std::vector<float>(kW * kH * 4, -1.0f));
+    const sss_frame f = frame_of(color, depth, output);
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    return read_rgba(output, kW, kH);
+  };
+  const std::vector<float> expected = filtered();
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, depth);
+  glTexParameteri(GL_TEXTURE_2D_MULTISAMPLE, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+  EXPECT_EQ(filtered(), expected);
+  GLint m = 0;
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, depth);
+  glGetTexParameteriv(GL_TEXTURE_2D_MULTISAMPLE, GL_DEPTH_STENCIL_TEXTURE_MODE, &m);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  EXPECT_EQ(m, GL_STENCIL_INDEX);
 }
 
 TEST_F(DepthStencilMode, AValueOutsideTheListIsRefused) {

@@ -24,15 +24,15 @@ GLenum query_depth_stencil_mode(const Functions& gl, const TextureInfo& texture)
 
 bool query_image_complete(const Functions& gl, const TextureInfo& texture) {
   bind_on_unit_0(gl, texture);
-  GLint filter = 0;
+  GLint filter = 0, base = 0;
   gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MIN_FILTER, &filter);
-  if (!is_mipmap_filter(filter)) return true;
-  GLint base = 0, max_level = 1000, immutable = 0;
   gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_BASE_LEVEL, &base);
+  if (base != 0) return false;  // the compute path binds level 0: below the base level, stores are invalid
+  if (!is_mipmap_filter(filter)) return true;
+  GLint max_level = 1000, immutable = 0;
   gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MAX_LEVEL, &max_level);
   gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_IMMUTABLE_FORMAT, &immutable);
-  // The compute path binds level 0: below a base level above 0 its stores are invalid anyway.
-  return base == 0 && (max_level == 0 || immutable != 0);
+  return max_level == 0 || immutable != 0;
 }
 
 DepthSamplingOverride::DepthSamplingOverride(const Functions& gl, const TextureInfo& depth, GLenum host_mode)
@@ -46,7 +46,6 @@ DepthSamplingOverride::DepthSamplingOverride(const Functions& gl, const TextureI
 
 void DepthSamplingOverride::restore() {
   if (name_ == 0) return;
-  // A texture the host deleted meanwhile (it cannot during a call) has nothing to restore.
   gl_.ActiveTexture(TEXTURE0);
   gl_.BindTexture(target_, name_);
   gl_.TexParameteri(target_, DEPTH_STENCIL_TEXTURE_MODE, static_cast<GLint>(STENCIL_INDEX));

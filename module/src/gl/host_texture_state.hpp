@@ -17,8 +17,8 @@ bool has_depth_stencil_mode(const Functions& gl);
 // The texture's GL_DEPTH_STENCIL_TEXTURE_MODE (GL_DEPTH_COMPONENT or GL_STENCIL_INDEX).
 GLenum query_depth_stencil_mode(const Functions& gl, const TextureInfo& texture);
 
-// Whether level 0 of the single-sample `texture` is sure to be complete for image stores: a
-// minification filter without mipmaps, or one level only (base and maximum level 0), or immutable
+// Whether image stores to level 0 of the single-sample `texture` are sure to be defined: base level
+// 0, and a minification filter without mipmaps, or one level only (maximum level 0), or immutable
 // storage (every level it has is specified). A mutable texture with a mipmap filter and more levels
 // allowed may lack them: not asked further (that would take a query per level).
 bool query_image_complete(const Functions& gl, const TextureInfo& texture);
