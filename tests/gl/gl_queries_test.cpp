@@ -100,6 +100,7 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
     uint32_t path = SSS_PATH_FRAGMENT, mode = SSS_MODE_SEPARABLE;
     GLuint output = 0;
     bool region = false, stencil = false, two_terms = false;
+    bool stencil_sampling = false;  // the depth-stencil texture on GL_STENCIL_INDEX, stated in the frame
   };
   std::vector<Case> cases = {
       {"in place"},
@@ -109,10 +110,22 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
       {"kernel of two terms (SVD rank 2)", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, 0, false, false, true},
       {"masked fragment path", SSS_PATH_FRAGMENT_MASKED},
       {"cross-bilateral mode", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL},
+      // A described frame's target counts as incomplete unless SSS_FRAME_TARGET_COMPLETE says
+      // otherwise: without the flag this would silently count the fragment path.
       {"compute path (where the context has it)", SSS_PATH_COMPUTE},
+      // The module switches the texture to depth sampling and back: no query either.
+      {"host stencil on stencil sampling (GL 4.3+, ES 3.1+)", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, 0, false, true,
+       false, true},
   };
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  const int version = major * 10 + minor;
+  const bool has_compute = !is_gles() && version >= 43;
+  const bool has_stencil_sampling = version >= (is_gles() ? 31 : 43);
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
+    if (c.stencil_sampling && !has_stencil_sampling) continue;
     sss_settings s = settings_;
     s.path = c.path;
     s.mode = c.mode;
@@ -130,11 +143,32 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
       f.region[2] = 20;
       f.region[3] = 18;
     }
+    if (c.path == SSS_PATH_COMPUTE) f.flags |= SSS_FRAME_TARGET_COMPLETE;
+    if (c.stencil_sampling) {
+      f.depth_stencil_mode = GL_STENCIL_INDEX;
+      glBindTexture(GL_TEXTURE_2D, depth_stencil);
+      glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
     FilterCase description;
     description.half_color = true;
     description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;
     describe_frame(description, kWidth, kHeight, &f);
     const GlCallCounts n = steady_counts(f);
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    if (c.path == SSS_PATH_COMPUTE) {
+      EXPECT_EQ(stats.last_frame_path, has_compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+    }
+    if (c.stencil_sampling) {
+      GLint mode = 0;
+      glBindTexture(GL_TEXTURE_2D, depth_stencil);
+      glGetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+      glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      EXPECT_EQ(mode, GL_STENCIL_INDEX) << "the host's sampling mode is put back";
+    }
     std::printf("[ counts   ] %-40s queries per steady frame: %s\n", c.name, per_frame(n.queries, kSteadyFrames).c_str());
     EXPECT_EQ(n.total_queries(), 0) << "queries in " << kSteadyFrames << " steady frames: " << n.describe_queries();
     EXPECT_EQ(n.total_creations(), 0) << "creations in " << kSteadyFrames << " steady frames: " << n.describe_creations();
@@ -144,8 +178,9 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
 // What the state guard reads in a steady in-place frame of the plain fragment path with one kernel
 // term and no stencil, on this context: the list in sss.h less what that frame cannot change (image
 // unit 0: only the compute path; stencil func, ref, masks and ops: only a stencil mask; the
-// multisample bindings and GL_SAMPLE_MASK_VALUE: only the MSAA path; texture unit 3: only normals and
-// kernels of several terms), with the host's program 0 (a current one adds its glIsProgram).
+// multisample bindings, GL_SAMPLE_MASK_VALUE and GL_MULTISAMPLE: only the MSAA path, whose
+// write-back alone draws into a multisampled target; texture unit 3: only normals and kernels of
+// several terms), with the host's program 0 (a current one adds its glIsProgram).
 std::map<std::string, long> expected_guard_reads(bool es, int es_minor) {
   long integers = 7;   // program, vertex array, draw and read framebuffer, renderbuffer, unpack buffer, active texture
   integers += 3 * 2;   // units 0-2: GL_TEXTURE_BINDING_2D and GL_SAMPLER_BINDING

@@ -38,7 +38,8 @@
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
  *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
- *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7
+ *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE (the MSAA write-back switches it on: a
+ *     host that disabled it would have the write-back's sample mask ignored and every sample overwritten)
  *   - GL_COLOR_WRITEMASK (draw buffer 0), GL_POLYGON_MODE
  *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
  *   - KHR_debug groups are pushed and popped in pairs.
@@ -46,12 +47,15 @@
  *     is left active; a target the host has a query active on is not used (GL_CURRENT_QUERY of
  *     GL_TIME_ELAPSED and GL_SAMPLES_PASSED stays the host's).
  *   On OpenGL ES the list is what exists there: the same, without GL_FRAMEBUFFER_SRGB,
- *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7 and GL_POLYGON_MODE (none of them exist
- *   in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
+ *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE and GL_POLYGON_MODE (none
+ *   of them exist in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
  *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
  *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
+ *   - Host texture parameters: GL_DEPTH_STENCIL_TEXTURE_MODE of the frame's depth texture, switched
+ *     to GL_DEPTH_COMPONENT for the passes when the host left it on GL_STENCIL_INDEX and always put
+ *     back, even with SSS_CREATE_NO_STATE_RESTORE (see sss_frame.depth_stencil_mode).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
- *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, texture
+ *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, other texture
  *   parameters of host textures (the module samples through its own sampler objects).
  *   The host must not call sss_apply with transform feedback active or conditional rendering on.
  */
@@ -262,7 +266,19 @@ typedef struct sss_stencil {
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
 /** sss_frame.region holds the host's bounding rectangle of the translucent pixels: see there. */
 #define SSS_FRAME_REGION 0x2u
-#define SSS_FRAME_ALL_FLAGS 0x3u
+/** The host's promise that the texture the passes write (color_texture written back, or
+ *  output_texture) is complete: its GL_TEXTURE_MIN_FILTER is GL_NEAREST or GL_LINEAR, or it has every
+ *  mip level its filter and GL_TEXTURE_MAX_LEVEL ask for. The compute path (SSS_PATH_COMPUTE, and
+ *  SSS_PATH_AUTO's candidate) writes that texture through an image unit, and image stores to an
+ *  incomplete texture are undefined (a silent no-op on some drivers). A new texture's default
+ *  filter, GL_NEAREST_MIPMAP_LINEAR, makes a texture with level 0 alone incomplete. Without the flag
+ *  the module asks the GL (GL_TEXTURE_MIN_FILTER, _BASE_LEVEL, _MAX_LEVEL, _IMMUTABLE_FORMAT) when the
+ *  frame does not describe its textures, and takes the default when it does; a texture that may be
+ *  incomplete (a mipmap filter, more than one level allowed, mutable storage) sends the frame down
+ *  the fragment path: sss_stats.last_frame_path says SSS_PATH_FRAGMENT and the log (INFO) says why.
+ *  A wrong promise gives undefined results, never an error. */
+#define SSS_FRAME_TARGET_COMPLETE 0x4u
+#define SSS_FRAME_ALL_FLAGS 0x7u
 
 /* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
  * depth. Each sample's depth is first converted to linear view distance with the camera. */
@@ -308,11 +324,15 @@ typedef struct sss_frame {
    * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ)
    * whenever the module asks (not in a steady frame, below).
    * Formats are the GL internal-format values the textures were allocated with; 0 = not given.
+   * A frame that gives the size and the format of every texture it names is described: the module
+   * then asks the GL nothing about the host texture parameters its passes depend on either
+   * (depth_stencil_mode, SSS_FRAME_TARGET_COMPLETE) and takes what the frame does not state at the
+   * GL's default for a new texture.
    *
-   * GL queries. A frame is steady when it describes every texture it names (each format and the
-   * size) and has the same texture names, description, flags and msaa_depth_resolve as the last
-   * frame that succeeded, with settings that pick the same kernel, path, mode and follow-surface
-   * test, and draws (or, with identity settings or an empty region, does not) as that frame did.
+   * GL queries. A frame is steady when it is described and has the same texture names, description,
+   * flags and msaa_depth_resolve as the last frame that succeeded, with settings that pick the same
+   * kernel, path, mode and follow-surface test, and draws (or, with identity settings or an empty
+   * region, does not) as that frame did.
    * A steady frame makes no GL query at all with SSS_CREATE_NO_STATE_RESTORE (no glGet*, glIs*,
    * glGetError or glCheckFramebufferStatus: each is a round trip that stalls a threaded driver
    * such as Mesa's glthread or NVIDIA's threaded optimisation), and with state restore only reads
@@ -348,6 +368,20 @@ typedef struct sss_frame {
                                   and in place nothing is drawn at all (a separate output gets the colour
                                   copied). With a separate output, the viewport outside the region gets the
                                   colour copied (one more draw): writing back costs less */
+  /* Appended after 0.2 (docs/migration.md) for the host texture parameters the passes depend on. */
+  uint32_t depth_stencil_mode; /**< 0, 0x1902 GL_DEPTH_COMPONENT or 0x1901 GL_STENCIL_INDEX: the
+                                  GL_DEPTH_STENCIL_TEXTURE_MODE of depth_texture (read only when it is
+                                  GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8). A host that samples its
+                                  depth-stencil texture's stencil (GL 4.3+, ES 3.1+) leaves it on
+                                  GL_STENCIL_INDEX, and depth fetches then return stencil indices: the
+                                  module switches it to GL_DEPTH_COMPONENT for its passes and puts
+                                  GL_STENCIL_INDEX back before it returns, on failure too and whatever
+                                  SSS_CREATE_NO_STATE_RESTORE says (host texture state). 0: not given; the
+                                  module asks the GL (glGetTexParameteriv) when the frame does not describe
+                                  its textures, and takes GL_DEPTH_COMPONENT (the default) when it does or
+                                  the GL has no such parameter. A given value is taken as it is (not checked
+                                  against the GL). Another value: SSS_ERROR_INVALID_ARGUMENT, and so is
+                                  GL_STENCIL_INDEX on a GL before 4.3 (ES 3.1) */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
@@ -492,7 +526,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       with SSS_FRAME_REGION a region field negative or the region reaching
  *                                       outside the viewport,
- *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
+ *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, depth_stencil_mode outside its
+ *                                       list (or GL_STENCIL_INDEX on a GL without that mode), or output_texture equal to
  *                                       color_texture; a texture description field outside its list, a size
  *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
  *                                       GL's answer; on OpenGL ES 3.0 a description missing
@@ -518,11 +553,16 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS)
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
  *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message; read
- *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS)
+ *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS): found
+ *                                       after the draws began, so the target (colour written back, or the output)
+ *                                       may be partly written and its content is undefined until a frame succeeds
+ *                                       (the message says so); GL state and the depth texture's mode are restored
  *  @retval SSS_ERROR_SHADER_COMPILE    a shader variant first needed by this frame did not compile (retried by
  *                                       the next call that needs it)
- *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
- *  starts afresh (nothing the failed call did has to be undone by the host). */
+ *  Every check, shader build and allocation that can fail runs before the first draw into a host texture, so
+ *  on any failure but SSS_ERROR_GL raised by the passes the host's textures are unchanged. On any failure the
+ *  GL state is restored and no GL error is left pending; the next call starts afresh (nothing the failed call
+ *  did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
 
 /** Tells the module that the GL context current for its next call may not be the one of its last

@@ -1,12 +1,17 @@
 // sss_apply and sss_apply_frame: validate everything (arguments first, then the textures as the GL
-// describes them) before the first draw, so that a failure leaves the host's textures untouched.
+// describes them, or for a steady frame as the last successful frame found them: steady_frame.hpp)
+// before the first draw, so that a failure leaves the host's textures untouched;
+// the runners build and allocate everything before their first draw too. The one failure found
+// after the draws began is a GL error they raised: its message says the target may be partly written.
 #include <cstdio>
 
 #include "../gl/debug_label.hpp"
+#include "../gl/host_texture_state.hpp"
 #include "../gl/state_guard.hpp"
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "host_texture_params.hpp"
 #include "validation.hpp"
 
 namespace {
@@ -297,6 +302,34 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
   }
 }
 
+// The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
+// the error check, on failure too), then the GL errors, except in a steady frame (steady_frame.hpp:
+// reading the error flag is a round trip, and the frame it repeats found none). Every check,
+// program build and allocation came before the first draw; an error the GL raised while drawing is
+// found only now, when the target may hold part of the result, and the message says so.
+sss_result run_passes(sss_context* ctx, const sss_frame& frame, bool steady, gl::FilterRun* run) {
+  const gl::Functions& f = ctx->gl;
+  gl::GLenum depth_mode = gl::DEPTH_COMPONENT;
+  sss_result r = sss::api::host_texture_params(ctx, frame, run, &depth_mode);
+  if (r != SSS_OK) return r;
+  std::string message;
+  {
+    const gl::DepthSamplingOverride depth_sampling(f, run->depth, depth_mode);
+    r = ctx->filter.run(*run, &message);
+  }
+  if (r != SSS_OK) {
+    sss::api::drain_host_errors(nullptr, f);
+    return fail(ctx, r, message);
+  }
+  if (steady) return SSS_OK;
+  char passes[200];
+  std::snprintf(passes, sizeof passes,
+                "the separable passes (they had begun drawing: %s = %u may be partly written, its content is "
+                "undefined until a frame succeeds; the GL state is restored)",
+                run->writes_back() ? "color_texture" : "output_texture", run->target().name);
+  return sss::api::check_gl_errors(ctx, f, passes);
+}
+
 }  // namespace
 
 extern "C" {
@@ -349,13 +382,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   }
   run.verify = !steady;
 
-  std::string message;
-  r = ctx->filter.run(run, &message);
-  if (r != SSS_OK) {
-    sss::api::drain_host_errors(nullptr, f);
-    return fail(ctx, r, message);
-  }
-  if (!steady) r = sss::api::check_gl_errors(ctx, f, "the separable passes");
+  r = run_passes(ctx, *frame, steady, &run);
   if (r == SSS_OK) {
     ++ctx->frames;
     ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());

@@ -1,6 +1,7 @@
 #include "steady_frame.hpp"
 
 #include "context.hpp"
+#include "validation.hpp"
 
 namespace sss::api {
 
@@ -17,16 +18,6 @@ std::array<std::uint32_t, 5> formats_of(const sss_frame& frame) {
           frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u};
 }
 
-// Every texture the frame names has its format given, and the size is given.
-bool described(const std::array<std::uint32_t, 5>& names, const std::array<std::uint32_t, 5>& formats,
-               const sss_frame& frame) {
-  if (frame.texture_width == 0) return false;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] != 0 && formats[i] == 0) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool is_steady(const sss_context& ctx, const sss_frame& frame) {
@@ -34,7 +25,7 @@ bool is_steady(const sss_context& ctx, const sss_frame& frame) {
   if (!s.valid) return false;
   const std::array<std::uint32_t, 5> names = names_of(frame);
   const std::array<std::uint32_t, 5> formats = formats_of(frame);
-  return described(names, formats, frame) && names == s.names && formats == s.formats &&
+  return frame_described(frame) && names == s.names && formats == s.formats &&
          frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
          frame.msaa_depth_resolve == s.msaa_depth_resolve && ctx.kernel_revision == s.kernel_revision &&
          ctx.cbf_kernel_revision == s.cbf_kernel_revision && ctx.settings.path == s.path &&
@@ -59,7 +50,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   SteadyFrame& s = ctx->steady;
   const std::array<std::uint32_t, 5> names = names_of(frame);
   const std::array<std::uint32_t, 5> formats = formats_of(frame);
-  s.valid = described(names, formats, frame);  // an undescribed frame is asked again every time
+  s.valid = frame_described(frame);  // an undescribed frame is asked again every time
   s.names = names;
   s.formats = formats;
   s.width = frame.texture_width;

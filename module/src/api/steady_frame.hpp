@@ -1,4 +1,5 @@
-// A steady frame: one whose textures the frame describes (every format and the size given) and
+// A steady frame: one whose textures the frame describes (every format and the size given:
+// frame_described, validation.hpp, the definition the host texture parameters use too) and
 // whose textures, description and settings are those of the last frame that succeeded. Such a
 // frame trusts what that frame asked the GL and checked: the textures' targets, formats, sizes and
 // sample counts, that a GL context is current and holds the module's objects, that the host left

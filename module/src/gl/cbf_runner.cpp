@@ -11,8 +11,10 @@
 
 namespace sss::gl {
 
-sss_result cross_bilateral_resources(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal,
-                                     CbfProgram** vertical, std::string* message) {
+namespace {
+// The programs and targets: everything that can fail but the framebuffer checks.
+sss_result build(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                 std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
   const bool normals = run.normals.name != 0;
   sss_result r = ctx.programs.cross_bilateral(Outside::write_centre, linear_depth, normals, horizontal, message);
@@ -27,11 +29,10 @@ sss_result cross_bilateral_resources(PassContext& ctx, const FilterRun& run, Cbf
   return r;
 }
 
-namespace {
 sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
                    std::string* message) {
   const int width = run.color.width, height = run.color.height;
-  sss_result r = cross_bilateral_resources(ctx, run, horizontal, vertical, message);
+  sss_result r = build(ctx, run, horizontal, vertical, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   // The MSAA path marked or copied the stencil already (stencil_ready): copying "its" stencil
@@ -140,6 +141,12 @@ void draw_passes(PassContext& ctx, const FilterRun& run, CbfProgram& horizontal,
   measure.end_frame();
 }
 }  // namespace
+
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
+  CbfProgram* horizontal = nullptr;
+  CbfProgram* vertical = nullptr;
+  return build(ctx, run, &horizontal, &vertical, message);
+}
 
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
   CbfProgram* horizontal = nullptr;

@@ -52,6 +52,11 @@ const char* compute_unavailable(const Functions& gl, const FilterRun& run) {
   if (image_format_index(run.target().internal_format) < 0) {
     return "the target's format has no image format (RGBA16F or RGBA32F)";
   }
+  if (!run.target_complete) {
+    return "the target texture may be incomplete (a mipmap GL_TEXTURE_MIN_FILTER, the default, with more levels "
+           "allowed than it may have), and image stores to an incomplete texture are undefined: give it a "
+           "GL_NEAREST or GL_LINEAR min filter, or set SSS_FRAME_TARGET_COMPLETE";
+  }
   return "";
 }
 

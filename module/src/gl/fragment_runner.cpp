@@ -15,6 +15,8 @@
 namespace sss::gl {
 
 namespace {
+using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;  // [2t]: horizontal, [2t + 1]: vertical
+
 // Programs first: a variant that fails to build must not leave a new target behind.
 sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
   const std::size_t terms = run.kernel->terms.size();
@@ -123,9 +125,10 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
   }
   measure.end_frame();
 }
-}  // namespace
 
-sss_result fragment_resources(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
+// The programs and targets of the separable passes: everything that can fail but the framebuffer
+// checks, all before the first draw.
+sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
   sss_result r = build_programs(ctx, run, programs, message);
   if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
   if (r == SSS_OK && run.kernel->terms.size() > 1) {
@@ -133,13 +136,21 @@ sss_result fragment_resources(PassContext& ctx, const FilterRun& run, TermProgra
   }
   return r;
 }
+}  // namespace
+
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.identity) return SSS_OK;
+  if (run.cross_bilateral) return prepare_cross_bilateral(ctx, run, message);
+  TermPrograms programs{};
+  return prepare_separable(ctx, run, &programs, message);
+}
 
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
   const std::size_t terms = run.kernel->terms.size();
   TermPrograms programs{};
-  sss_result r = fragment_resources(ctx, run, &programs, message);
+  sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   r = attach_targets(ctx, run, terms, message);

@@ -45,17 +45,18 @@ sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, i
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
   // The stencil marked from alpha, then the host-stencil passes with it: only translucent pixels
   // are shaded by the blur; the rest are copied (horizontal) or left alone (vertical).
-  sss_result r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r != SSS_OK) return r;
-  begin_passes(ctx, run.draw_rect);
-  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
-  if (r != SSS_OK) return r;
   StencilInput own;  // the module's stencil holds 1 where translucent
   own.ref = 1;
   own.mask = 0xFF;
   FilterRun inner = run;
   inner.stencil = &own;
   inner.stencil_ready = true;
+  // Every program and target of the passes first: nothing is built or allocated after the mark's draw.
+  sss_result r = prepare_fragment(ctx, inner, message);
+  if (r != SSS_OK) return r;
+  begin_passes(ctx, run.draw_rect);
+  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
   return run_fragment(ctx, inner, message);
 }
 

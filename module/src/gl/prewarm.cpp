@@ -1,10 +1,10 @@
 // sss_prepare's GPU side: the programs and targets a frame will need, built and allocated before
 // it, so that its run() compiles and allocates nothing (a compile or allocation in the middle of a
-// game is a visible hitch). Each path asks its runner's own *_resources function (runners.hpp),
-// the very calls the runner makes before drawing; only what a runner does between its draws (the
-// MSAA path's resolve-then-passes, the compute path's two programs) is spelt out here, next to the
-// runner it follows. The prewarm test (tests/gl/prewarm_test.cpp) counts the GL creations of the
-// first frame after it: any drift shows there.
+// game is a visible hitch). Each path asks its runner's own prepare_* function (runners.hpp), the
+// very calls the runner makes before its first draw; only what a runner makes as it draws (the
+// stencil mark's program and buffer, the host stencil's copy, the compute path's two programs) is
+// spelt out here, next to the runner it follows. The prewarm test (tests/gl/prewarm_test.cpp)
+// counts the GL creations of the first frame after it: any drift shows there.
 #include "blur_pass.hpp"
 #include "runners.hpp"
 #include "separable_filter.hpp"
@@ -22,15 +22,7 @@ sss_result host_stencil_resources(PassContext& ctx, const FilterRun& run, std::s
 
 // run_fragment: the separable passes of every term, or the cross-bilateral mode's two passes.
 sss_result prewarm_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
-  sss_result r = SSS_OK;
-  if (run.cross_bilateral) {
-    CbfProgram* horizontal = nullptr;
-    CbfProgram* vertical = nullptr;
-    r = cross_bilateral_resources(ctx, run, &horizontal, &vertical, message);
-  } else {
-    TermPrograms programs{};
-    r = fragment_resources(ctx, run, &programs, message);
-  }
+  const sss_result r = prepare_fragment(ctx, run, message);
   return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
 }
 
@@ -59,59 +51,23 @@ sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* 
   return r == SSS_OK ? ctx.targets.ensure_intermediate(run.color.width, run.color.height, message) : r;
 }
 
-// run_msaa (msaa_runner.cpp): its prepare() (the resolve, mark and per-sample write programs, the
-// resolve targets and the copy of the samples), then the fragment passes on the resolved images
-// (colour in the host's format, linear distance in R32F, written back through the module's
-// "blurred" target) behind the host's stencil or the one marked from the resolved alpha.
-sss_result prewarm_msaa(PassContext& ctx, const FilterRun& run, std::string* message) {
-  const bool write_back = run.writes_back();
-  ResolveProgram* resolve = nullptr;
-  sss_result r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, &resolve, message);
-  SampleWriteProgram* sample_write = nullptr;
-  if (r == SSS_OK && write_back) r = ctx.programs.sample_write(&sample_write, message);
-  if (r != SSS_OK) return r;
-  ctx.targets.ensure_msaa_framebuffers();
-  const int width = run.color.width, height = run.color.height;
-  r = ctx.targets.ensure_msaa_targets(run.color.internal_format, width, height, write_back, message);
-  if (r == SSS_OK && write_back) r = ctx.targets.ensure_sample_copy(run.color, message);
-  if (r != SSS_OK) return r;
-
-  FilterRun inner = run;
-  inner.color = TextureInfo{};
-  inner.color.internal_format = run.color.internal_format;
-  inner.color.width = width;
-  inner.color.height = height;
-  inner.depth = inner.color;
-  inner.depth.internal_format = static_cast<GLint>(R32F);
-  if (write_back) {
-    inner.output = inner.color;
-    inner.output.name = kPrewarmPlaceholder;
-  }
-  StencilInput own;
-  if (run.stencil == nullptr) {
-    GLuint mark = 0;
-    r = stencil_mark_resources(ctx, width, height, &mark, message);
-    inner.stencil = &own;
-  } else {
-    r = host_stencil_resources(ctx, run, message);
-  }
-  inner.stencil_ready = true;
-  return r == SSS_OK ? prewarm_fragment(ctx, inner, message) : r;
-}
-
 }  // namespace
 
 sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, nullptr};
   FilterRun run = described;
   run.identity = false;  // what identity settings skip is prepared too: a superset costs only time here
-  if (run.color.multisampled()) return prewarm_msaa(ctx, run, message);
+  if (run.color.multisampled()) return prepare_msaa(ctx, run, message);
   // The paths choose_path may take for such a frame: the one asked for where it can run, else the
-  // plain fragment passes; SSS_PATH_AUTO any of them (and the timing's queries).
+  // plain fragment passes; SSS_PATH_AUTO any of them (and the timing's queries). Whether the target
+  // is complete, which the compute path needs, is each frame's to say (SSS_FRAME_TARGET_COMPLETE, or
+  // the GL's answer for an undescribed frame): the compute path is prepared where it could run, and
+  // the fragment passes an incomplete target takes instead with it.
+  run.target_complete = true;
   const bool compute = (run.path == SSS_PATH_COMPUTE || run.path == SSS_PATH_AUTO) &&
                        *compute_unavailable(*gl_, run) == '\0';
   const bool masked = (run.path == SSS_PATH_FRAGMENT_MASKED || run.path == SSS_PATH_AUTO) && masked_available(run);
-  const bool fragment = run.path == SSS_PATH_AUTO || (!compute && !masked);
+  const bool fragment = run.path != SSS_PATH_FRAGMENT_MASKED || !masked;
   sss_result r = SSS_OK;
   if (fragment) r = prewarm_fragment(ctx, run, message);
   if (r == SSS_OK && masked) r = prewarm_masked(ctx, run, message);

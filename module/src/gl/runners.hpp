@@ -4,7 +4,6 @@
 // attached to the module's framebuffers.
 #pragma once
 
-#include <array>
 #include <string>
 
 #include "filter_run.hpp"
@@ -12,24 +11,20 @@
 
 namespace sss::gl {
 
-// The blur programs of a run's passes: [2t] term t's horizontal pass, [2t + 1] its vertical one.
-using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;
-
 // The fragment passes on single-sample images (fragment_runner.cpp): one horizontal and one
 // vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
 // when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
-// What run_fragment builds and allocates before it draws (the blur variants of every term, the
-// intermediate, the sum of several terms); also what sss_prepare makes ahead (prewarm.cpp), so
-// the two cannot drift apart. The other *_resources functions below are the same for their path.
-sss_result fragment_resources(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message);
+// What run_fragment (and the cross-bilateral runner) build and allocate before they draw: the
+// runners that draw before they call run_fragment (masked, MSAA) call it first, so that no program
+// build or allocation fails after the first draw (sss.h: only a GL error the draws raised does);
+// sss_prepare makes the same ahead (prewarm.cpp), so the two cannot drift apart.
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.
 sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
 // The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
-// Its two programs, the intermediate and, with a stencil, the masked colour copy.
-sss_result cross_bilateral_resources(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal,
-                                     CbfProgram** vertical, std::string* message);
 
 // SSS_PATH_FRAGMENT_MASKED (masked_runner.cpp): the fragment passes behind a stencil marked from
 // the colour's alpha, so only translucent pixels run the blur.
@@ -48,5 +43,9 @@ sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* mess
 // Multisampled colour and depth (msaa_runner.cpp): resolve, the fragment passes on the resolved
 // images, and, in place, the per-sample write-back.
 sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_msaa builds and allocates before its first draw (the resolve): its own programs and
+// targets, the stencil buffer, and prepare_fragment's for the passes on the resolved images; also
+// what sss_prepare makes ahead for a multisampled frame (prewarm.cpp).
+sss_result prepare_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
 
 }  // namespace sss::gl

@@ -59,7 +59,12 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
   const auto compute_ok = [&] { return !run.identity && *compute_unavailable(*gl_, run) == '\0'; };
   PathChooser::Choice choice;
   switch (run.path) {
-    case SSS_PATH_COMPUTE: choice.path = compute_ok() ? PathChooser::compute : PathChooser::fragment; break;
+    case SSS_PATH_COMPUTE: {
+      const char* refusal = run.identity ? "" : compute_unavailable(*gl_, run);
+      choice.path = !run.identity && *refusal == '\0' ? PathChooser::compute : PathChooser::fragment;
+      note_compute_refusal(refusal);
+      break;
+    }
     case SSS_PATH_FRAGMENT_MASKED:
       choice.path = masked_available(run) ? PathChooser::masked : PathChooser::fragment;
       break;
@@ -77,6 +82,16 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
     default: break;
   }
   return choice;
+}
+
+void SeparableFilter::note_compute_refusal(const char* reason) {
+  // The reasons are string literals: a new one is a different pointer. Logged when it changes, not
+  // every frame.
+  if (reason == compute_refusal_) return;
+  compute_refusal_ = reason;
+  if (*reason != '\0' && log_) {
+    log_(SSS_LOG_INFO, std::string("SSS_PATH_COMPUTE: the frame takes the fragment path: ") + reason);
+  }
 }
 
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {

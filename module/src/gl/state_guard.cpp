@@ -25,7 +25,10 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
-  if (sets_sample_mask_value()) gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);
+  if (msaa_write_back_in_scope()) {
+    gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);
+    multisample_ = gl_.IsEnabled(MULTISAMPLE);
+  }
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
   if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
   if (gl_.desktop()) {
@@ -107,6 +110,9 @@ StateGuard::~StateGuard() {
     for (std::size_t i = 0; i < kDesktopCapabilities.size() && restore(restore_group::desktop_enables); ++i) {
       desktop_capabilities_[i] ? gl_.Enable(kDesktopCapabilities[i]) : gl_.Disable(kDesktopCapabilities[i]);
     }
+    if (msaa_write_back_in_scope() && restore(restore_group::desktop_enables)) {
+      multisample_ ? gl_.Enable(MULTISAMPLE) : gl_.Disable(MULTISAMPLE);
+    }
   }
   if (gl_.has_sample_mask() && restore(restore_group::sample_mask_enable)) {
     sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
@@ -115,7 +121,7 @@ StateGuard::~StateGuard() {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
   if (restore(restore_group::viewport)) gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  if (sets_sample_mask_value() && restore(restore_group::sample_mask_value)) {
+  if (msaa_write_back_in_scope() && restore(restore_group::sample_mask_value)) {
     gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
   }
   for (int unit = 0; unit < units() && restore(restore_group::texture_units); ++unit) {
