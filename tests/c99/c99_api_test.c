@@ -92,6 +92,8 @@ int main(void) {
   stats.struct_size = sizeof stats;
   CHECK(sss_get_stats(NULL, &stats) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
+  CHECK(sss_gl_context_changed(NULL) == SSS_ERROR_INVALID_ARGUMENT);
+  CHECK((SSS_CREATE_ALL_FLAGS & SSS_CREATE_DEBUG_CHECKS) != 0);
   CHECK(SSS_GLSL_330_CORE != SSS_GLSL_300_ES && (SSS_CREATE_ALL_FLAGS & SSS_CREATE_STATS) != 0);
   memset(&frame, 0, sizeof frame);
   frame.struct_size = sizeof frame;
@@ -99,6 +101,19 @@ int main(void) {
   frame.texture_width = 64;
   frame.texture_height = 48;
   CHECK(sss_apply_frame(NULL, &frame) == SSS_ERROR_INVALID_ARGUMENT);
+  {
+    /* sss_prepare's description (no hitch on the first frame) is plain C99 too. */
+    sss_prepare_desc prepare;
+    memset(&prepare, 0, sizeof prepare);
+    prepare.struct_size = sizeof prepare;
+    prepare.width = 64;
+    prepare.height = 48;
+    prepare.color_format = 0x881A; /* GL_RGBA16F */
+    prepare.depth_format = 0x88F0; /* GL_DEPTH24_STENCIL8 */
+    prepare.flags = SSS_PREPARE_NORMALS;
+    CHECK(sss_prepare(NULL, &prepare) == SSS_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
+  }
 
   /* The kernel-family API (sss_kernels.h, through sss.h). */
   sss_default_kernel_desc(&kd);

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "fault_loader.hpp"
 #include "filter_case.hpp"
 #include "host_gl_util.hpp"
 
@@ -319,6 +320,87 @@ TEST_F(ComputePath, StatsCountNoPixelsForAComputeFrame) {
     sss_destroy(sss_);
     sss_ = nullptr;
   }
+}
+
+// The compute path writes its target through image unit 0, and image stores to an incomplete
+// texture are undefined (a silent no-op on some drivers). A host texture left on the default
+// minification filter (GL_NEAREST_MIPMAP_LINEAR) with level 0 alone is incomplete: such a frame
+// takes the fragment path, says so in the log and in last_frame_path, and gives the fragment path's
+// image; the host's promise (SSS_FRAME_TARGET_COMPLETE) or the GL's answer that the filter needs no
+// mipmaps lets the compute path run. Mesa's llvmpipe stores into such a texture all the same (it
+// checks the bound level alone), so there what gives the trap away is the path, not the pixels.
+TEST_F(ComputePath, AnIncompleteTargetTakesTheFragmentPath) {
+  if (!has_compute()) GTEST_SKIP() << "no compute shaders on this GL";
+  reset_faults();
+  loader_override_ = fault_get_proc_address;  // counts glGetTexParameteriv
+  LogRecord log;
+  log_ = &log;
+  const SyntheticScene scene = relief();
+  const int w = scene.width, h = scene.height;
+  const GLuint depth = make_depth32f(w, h, scene.window_depth);
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+  const auto use_path = [&](uint32_t path) {
+    sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    s.path = path;
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  };
+  // A colour (or output) texture, complete (GL_NEAREST) or on the default filter with one level.
+  const auto texture = [&](const std::vector<float>& rgba, bool complete) {
+    const GLuint t = make_rgba32f(w, h, rgba);
+    glBindTexture(GL_TEXTURE_2D, t);
+    if (!complete) glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+  };
+  const std::vector<float> blank(static_cast<std::size_t>(w * h * 4), -1.0f);
+  for (const bool separate : {false, true}) {
+    SCOPED_TRACE(separate ? "into a separate output" : "in place");
+    // Returns the image, with the path and the queries the frame took.
+    const auto run = [&](bool complete, uint32_t flags, bool describe, uint32_t* path, int* queries) {
+      const GLuint color = texture(scene.color, complete || separate);
+      const GLuint output = separate ? texture(blank, complete) : 0u;
+      sss_frame f = frame_of(color, depth, output);
+      f.flags = flags;
+      if (describe) {
+        f.color_format = GL_RGBA32F;
+        f.output_format = separate ? GL_RGBA32F : 0u;
+        f.depth_format = GL_DEPTH_COMPONENT32F;
+        f.texture_width = w;
+        f.texture_height = h;
+      }
+      reset_faults();
+      EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      *queries = faults().texture_parameter_queries;
+      *path = last_path();
+      return read_rgba(separate ? output : color, w, h);
+    };
+    uint32_t path = 0;
+    int queries = 0;
+    use_path(SSS_PATH_FRAGMENT);
+    const std::vector<float> fragment = run(true, 0, false, &path, &queries);
+    use_path(SSS_PATH_COMPUTE);
+    // The trap: the default filter, one level.
+    EXPECT_EQ(run(false, 0, false, &path, &queries), fragment);
+    EXPECT_EQ(path, SSS_PATH_FRAGMENT) << "image stores into an incomplete texture";
+    EXPECT_TRUE(log.has(SSS_LOG_INFO, "may be incomplete")) << "the log does not say why";
+    // Complete by its filter: asked, and the compute path runs (bit for bit on llvmpipe).
+    const std::vector<float> asked = run(true, 0, false, &path, &queries);
+    EXPECT_EQ(path, SSS_PATH_COMPUTE);
+    EXPECT_GT(queries, 0);
+    EXPECT_LE(largest_relative_difference(asked, fragment), llvmpipe() ? 0.0f : kTolerance);
+    // The host's promise in a described frame: no question, the compute path.
+    run(true, SSS_FRAME_TARGET_COMPLETE, true, &path, &queries);
+    EXPECT_EQ(path, SSS_PATH_COMPUTE);
+    EXPECT_EQ(queries, 0);
+    // A described frame without the promise: the default filter is assumed, nothing asked.
+    run(true, 0, true, &path, &queries);
+    EXPECT_EQ(path, SSS_PATH_FRAGMENT);
+    EXPECT_EQ(queries, 0);
+  }
+  reset_faults();
 }
 
 TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {

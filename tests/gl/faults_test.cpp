@@ -13,6 +13,7 @@
 #include "filter_case.hpp"
 #include "gl_objects.hpp"
 #include "gl_state_snapshot.hpp"
+#include "multisample_textures.hpp"
 
 using namespace host_gl;
 
@@ -226,6 +227,76 @@ TEST_F(Faults, OutOfMemoryOnTheStencilCopyAndRecovery) {
   EXPECT_EQ(objects(), with_intermediate);
   const std::vector<float> got = read_rgba(t.color, 16, 16);
   EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));
+}
+
+// A GL error the draws raise (here GL_OUT_OF_MEMORY after the horizontal pass, then after the
+// vertical one, which writes the host's colour) is found only after the draws began: the call fails
+// with SSS_ERROR_GL and must not claim the colour untouched. The message says it may be partly
+// written; the GL state is restored and no error is left; the next frame recovers.
+TEST_F(Faults, AGlErrorFromTheDrawsSaysTheTargetMayBePartlyWritten) {
+  ASSERT_EQ(create_faulty(&sss_), SSS_OK);
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(20, 16, Depth::hardware);
+  for (int skip : {0, 1}) {
+    SCOPED_TRACE(skip == 0 ? "after the horizontal pass" : "after the vertical pass");
+    reset_faults();
+    faults().skip_draws = skip;
+    faults().draw_error = GL_OUT_OF_MEMORY;
+    const Snapshot state = take_snapshot();
+    EXPECT_EQ(apply(sss_, t, false), SSS_ERROR_GL);
+    const std::string message = sss_last_error(sss_);
+    EXPECT_NE(message.find("GL_OUT_OF_MEMORY"), std::string::npos) << message;
+    EXPECT_NE(message.find("color_texture = " + std::to_string(t.color) + " may be partly written"), std::string::npos)
+        << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+  }
+  reset_faults();
+  EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+}
+
+// Every allocation comes before the first draw: an out-of-memory on the MSAA path (the intermediate
+// target of the single-sample passes, which it used to allocate after its resolve draw) fails with
+// no draw made, the host's samples and state as they were.
+TEST_F(Faults, TheMsaaPathAllocatesEverythingBeforeItsFirstDraw) {
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  if (is_gles() || max_samples < 4) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
+  const int w = 24, h = 20;
+  const SyntheticScene fine = make_relief_scene(2 * w, 2 * h, 3, kCamera);
+  const GLuint color = make_multisample_texture(GL_RGBA32F, w, h, 4, fine.color);  // RGBA32F: its targets are too
+  const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, w, h, 4, fine.window_depth);
+  textures_.insert(textures_.end(), {color, depth});
+  for (const bool in_place : {true, false}) {
+    SCOPED_TRACE(in_place ? "written back" : "into an output");
+    sss_destroy(sss_);  // a fresh context: no target allocated yet
+    ASSERT_EQ(create_faulty(&sss_), SSS_OK);
+    const sss_settings s = wide_settings();
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    const GLuint output = in_place ? 0u : make_rgba32f(w, h, std::vector<float>(w * h * 4, -1.0f));
+    const auto samples_before = read_samples(color, w, h, 4);
+    const std::vector<float> output_before = in_place ? std::vector<float>() : read_rgba(output, w, h);
+    const Snapshot state = take_snapshot();
+    reset_faults();
+    faults().huge_intermediate_targets = 1;
+    const sss_frame f = frame_of(color, depth, output);
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_OUT_OF_MEMORY) << sss_last_error(sss_);
+    EXPECT_EQ(faults().draws, 0) << "drawn before the allocation that failed";
+    const std::string message = sss_last_error(sss_);
+    EXPECT_NE(message.find("intermediate"), std::string::npos) << message;
+    EXPECT_EQ(message.find("partly written"), std::string::npos) << message;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+    EXPECT_EQ(read_samples(color, w, h, 4), samples_before);
+    if (!in_place) {
+      EXPECT_EQ(read_rgba(output, w, h), output_before);
+    }
+    reset_faults();
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  }
 }
 
 // The host's own objects in a new context, made so that their names cover the ones the module had

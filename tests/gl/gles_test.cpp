@@ -139,6 +139,9 @@ TEST_F(Variant, ARebuildAfterALostContextIsLoggedAtInfo) {
   ASSERT_EQ(sss_headless_make_current(headless_), 0);
   ASSERT_TRUE(host_gl::load(sss_headless_get_proc_address, headless_, nullptr));
   f = frame_on(make_rgba16f(16, 12, scene.color), make_depth32f(16, 12, scene.window_depth));
+  // The new textures have the old ones' names and description: a steady frame, which would trust
+  // the context (sss.h, "GL queries" on sss_frame), unless the host says it changed.
+  ASSERT_EQ(sss_gl_context_changed(sss_), SSS_OK);
   EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_NO_CONTEXT);
   EXPECT_FALSE(log.has(SSS_LOG_INFO, "rebuilt"));
   EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);

@@ -305,6 +305,58 @@ TEST_F(Msaa, StateIsRestoredAndNoErrorIsLeftInBothOutputModes) {
   }
 }
 
+// A host that switched multisample rasterisation off (glDisable(GL_MULTISAMPLE), say for its own
+// single-sample passes): the GL then ignores the sample mask, so each draw of the per-sample
+// write-back (one per sample under glSampleMaski) would write every sample of its pixels, the
+// opaque ones included. The module switches it on for its passes and back off before it returns:
+// the samples come out as for a host that left it on, and GL_MULTISAMPLE stays off.
+TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
+  SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 14, kCamera);
+  // Sample 1 of every third column opaque: pixels whose samples are translucent and opaque, the
+  // ones a write-back that ignored the sample mask would spoil (see downsample_2x2 for the layout).
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; x += 3) fine.color[(static_cast<std::size_t>(2 * y) * 2 * kW + 2 * x + 1) * 4 + 3] = 0.0f;
+  }
+  std::vector<std::vector<float>> before, after[2];
+  for (int disabled = 0; disabled < 2; ++disabled) {
+    SCOPED_TRACE(disabled ? "GL_MULTISAMPLE disabled by the host" : "GL_MULTISAMPLE enabled");
+    const GLuint color = ms(GL_RGBA32F, fine.color);
+    const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+    before = read_samples(color, kW, kH, 4);
+    disabled ? glDisable(GL_MULTISAMPLE) : glEnable(GL_MULTISAMPLE);
+    const Snapshot state = take_snapshot();
+    const sss_frame f = frame(color, depth);
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(describe_differences(state, take_snapshot()), "");
+    EXPECT_EQ(glIsEnabled(GL_MULTISAMPLE), disabled ? GL_FALSE : GL_TRUE);
+    glEnable(GL_MULTISAMPLE);  // the read-back below draws
+    after[disabled] = read_samples(color, kW, kH, 4);
+  }
+  // With it disabled: the opaque samples and every alpha keep their exact value...
+  int opaque_changed = 0, alpha_changed = 0, opaque = 0, mixed = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    bool translucent = false;
+    for (std::size_t s = 0; s < 4; ++s) translucent = translucent || before[s][p * 4 + 3] > 0.0f;
+    for (std::size_t s = 0; s < 4; ++s) {
+      const float* b = &before[s][p * 4];
+      const float* a = &after[1][s][p * 4];
+      alpha_changed += std::memcmp(&a[3], &b[3], sizeof(float)) != 0;
+      if (b[3] > 0.0f) continue;
+      ++opaque;
+      mixed += translucent;
+      opaque_changed += std::memcmp(a, b, 4 * sizeof(float)) != 0;
+    }
+  }
+  // Opaque samples in pixels the write-back draws (a translucent sample beside them) are the ones
+  // a write without the sample mask overwrites.
+  EXPECT_GT(mixed, 20) << "the scene must have opaque samples beside translucent ones";
+  EXPECT_EQ(opaque_changed, 0) << "of " << opaque << " opaque samples, " << mixed << " beside translucent ones";
+  EXPECT_EQ(alpha_changed, 0);
+  // ...and every sample equals the one written back with it enabled.
+  for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(after[1][s], after[0][s]) << "sample " << s;
+}
+
 // sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
 // alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
 // stencil-rejected pixels, vertical blur + copy, since they write a separate target), and written

@@ -9,6 +9,7 @@
 
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
+#include "multisample_textures.hpp"
 #include "sss/sss_lut.h"
 
 using namespace host_gl;
@@ -109,6 +110,68 @@ void StateRestore::check_restore(const SyntheticScene& scene, FilterCase c) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   ASSERT_EQ(messy.result, SSS_OK);
   EXPECT_EQ(0, std::memcmp(messy.gpu.data(), clean.gpu.data(), clean.gpu.size() * sizeof(float)));
+}
+
+// A steady frame (described, as the last one: sss.h, "GL queries" on sss_frame) saves only the part
+// of the list its path can change: every path's steady frames still restore everything.
+TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
+  const SyntheticScene scene = make_relief_scene(16, 12, 2, perspective_matrix(40.0f, 16.0f / 12.0f, 0.1f, 10.0f));
+  const GLuint color = make_rgba16f(16, 12, scene.color);
+  const GLuint depth = make_depth32f(16, 12, scene.window_depth);
+  const GLuint output = make_rgba32f(16, 12, scene.color);
+  std::vector<uint32_t> packed(scene.window_depth.size());
+  for (std::size_t i = 0; i < packed.size(); ++i) packed[i] = (1u << 31) | (scene.stencil[i] ? 1u : 0u);
+  const GLuint depth_stencil = make_texture(GL_DEPTH24_STENCIL8, 16, 12, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                                            packed.data());
+  const SyntheticScene fine = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 16.0f / 12.0f, 0.1f, 10.0f));
+  const GLuint msaa_color = make_multisample_texture(GL_RGBA16F, 16, 12, 4, fine.color);
+  const GLuint msaa_depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, 16, 12, 4, fine.window_depth);
+  ASSERT_NE(msaa_color, 0u);
+  ASSERT_NE(msaa_depth, 0u);
+  sss_stencil stencil = {depth_stencil, 1, 0xFF};
+  struct Case {
+    const char* name;
+    uint32_t path = SSS_PATH_FRAGMENT, mode = SSS_MODE_SEPARABLE;
+    bool stencil = false, output = false, two_terms = false, msaa = false;
+  };
+  const Case cases[] = {{"in place"},
+                        {"host stencil, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true},
+                        {"masked path", SSS_PATH_FRAGMENT_MASKED},
+                        {"compute path", SSS_PATH_COMPUTE},
+                        {"automatic path", SSS_PATH_AUTO},
+                        {"cross-bilateral with a stencil", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, true},
+                        {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, true},
+                        {"MSAA", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, true}};
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+  set_unusual_state();
+  const Snapshot before = take_snapshot();
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    sss_settings s;
+    sss_default_settings(&s);
+    s.world_units_per_mm = 0.05f;
+    s.path = c.path;
+    s.mode = c.mode;
+    if (c.two_terms) {
+      s.kernel.family = SSS_KERNEL_SVD;
+      s.kernel.rank = 2;
+    }
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+    sss_frame f = frame_of(c.msaa ? msaa_color : color, c.msaa ? msaa_depth : c.stencil ? depth_stencil : depth,
+                           c.output ? output : 0);
+    f.stencil = c.stencil ? &stencil : nullptr;
+    FilterCase description;
+    description.half_color = true;
+    description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;
+    describe_frame(description, 16, 12, &f);
+    for (int frame = 0; frame < 3; ++frame) {  // the first is not steady, the others are
+      ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+      EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "frame " << frame;
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    }
+  }
 }
 
 TEST_F(StateRestore, CreateAndDestroyLeaveTheStateAsTheyFoundIt) {

@@ -21,6 +21,9 @@ PFNGLRENDERBUFFERSTORAGEPROC real_renderbuffer_storage = nullptr;
 PFNGLGETERRORPROC real_get_error = nullptr;
 PFNGLGETINTEGERVPROC real_get_integerv = nullptr;
 PFNGLGETTEXLEVELPARAMETERIVPROC real_get_tex_level_parameteriv = nullptr;
+PFNGLDRAWARRAYSPROC real_draw_arrays = nullptr;
+PFNGLDISPATCHCOMPUTEPROC real_dispatch_compute = nullptr;
+PFNGLGETTEXPARAMETERIVPROC real_get_tex_parameteriv = nullptr;
 
 const char* const kBrokenSource = "#version 330 core\nthis line is a fault injected by the test;\n";
 
@@ -77,6 +80,28 @@ void APIENTRY get_tex_level_parameteriv(GLenum target, GLint level, GLenum pname
   }
 }
 
+void APIENTRY draw_arrays(GLenum mode, GLint first, GLsizei count) {
+  real_draw_arrays(mode, first, count);
+  ++g_faults.draws;
+  if (g_faults.draw_error == 0) return;
+  if (g_faults.skip_draws > 0) {
+    --g_faults.skip_draws;
+    return;
+  }
+  g_pending_error = static_cast<GLenum>(g_faults.draw_error);
+  g_faults.draw_error = 0;
+}
+
+void APIENTRY dispatch_compute(GLuint x, GLuint y, GLuint z) {
+  real_dispatch_compute(x, y, z);
+  ++g_faults.draws;
+}
+
+void APIENTRY get_tex_parameteriv(GLenum target, GLenum pname, GLint* params) {
+  ++g_faults.texture_parameter_queries;
+  real_get_tex_parameteriv(target, pname, params);
+}
+
 GLenum APIENTRY get_error() {
   if (g_pending_error != GL_NO_ERROR) {
     const GLenum error = g_pending_error;
@@ -116,11 +141,17 @@ void* fault_get_proc_address(const char* name, void* user) {
   load(&real_get_error, "glGetError", user);
   load(&real_get_integerv, "glGetIntegerv", user);
   load(&real_get_tex_level_parameteriv, "glGetTexLevelParameteriv", user);
+  load(&real_draw_arrays, "glDrawArrays", user);
+  load(&real_dispatch_compute, "glDispatchCompute", user);
+  load(&real_get_tex_parameteriv, "glGetTexParameteriv", user);
   if (std::strcmp(name, "glShaderSource") == 0) return as_address(&shader_source);
   if (std::strcmp(name, "glTexImage2D") == 0) return as_address(&tex_image_2d);
   if (std::strcmp(name, "glRenderbufferStorage") == 0) return as_address(&renderbuffer_storage);
   if (std::strcmp(name, "glGetError") == 0) return as_address(&get_error);
   if (std::strcmp(name, "glGetTexLevelParameteriv") == 0) return as_address(&get_tex_level_parameteriv);
+  if (std::strcmp(name, "glDrawArrays") == 0) return as_address(&draw_arrays);
+  if (std::strcmp(name, "glDispatchCompute") == 0) return as_address(&dispatch_compute);
+  if (std::strcmp(name, "glGetTexParameteriv") == 0) return as_address(&get_tex_parameteriv);
   return sss_headless_get_proc_address(name, user);
 }
 

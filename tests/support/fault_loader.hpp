@@ -34,7 +34,14 @@ struct Faults {
   unsigned fake_samples_texture = 0;
   int fake_samples = 0;
 
-  // What fired.
+  // glDrawArrays: let this many through, then raise `draw_error` (a GL error code, e.g.
+  // GL_OUT_OF_MEMORY = 0x0505; 0: none) after the next one has drawn: a driver that fails mid-frame.
+  int skip_draws = 0;
+  unsigned draw_error = 0;
+
+  // What fired, and what the module called.
+  int draws = 0;                        // glDrawArrays and glDispatchCompute calls
+  int texture_parameter_queries = 0;    // glGetTexParameteriv calls
   int shader_sources_broken = 0;
   int out_of_memory_from_driver = 0;
   int out_of_memory_injected = 0;

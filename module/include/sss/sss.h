@@ -18,8 +18,11 @@
  *
  * GL state: every entry point that calls GL restores, before it returns, each state in the list
  * below that it changed (unless SSS_CREATE_NO_STATE_RESTORE is given), and leaves no GL error
- * behind. GL errors the host left pending on entry are cleared and reported through the log
- * callback (GL has no way to re-raise them).
+ * behind. A call that reads the GL error flag first clears the errors the host left pending and
+ * reports them through the log callback (GL has no way to re-raise them): sss_create, the other
+ * entry points that call GL, and every sss_apply_frame that is not steady (see "GL queries" on
+ * sss_frame); a steady frame reads no error flag and leaves the host's pending errors to the host,
+ * unless SSS_CREATE_DEBUG_CHECKS is given.
  *
  *   Saved and restored (SSS_STATE_LIST):
  *   - GL_CURRENT_PROGRAM, GL_VERTEX_ARRAY_BINDING
@@ -35,7 +38,8 @@
  *   - enables: GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE,
  *     GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE,
  *     GL_SAMPLE_COVERAGE, GL_SAMPLE_MASK, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP,
- *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7
+ *     GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE (the MSAA write-back switches it on: a
+ *     host that disabled it would have the write-back's sample mask ignored and every sample overwritten)
  *   - GL_COLOR_WRITEMASK (draw buffer 0), GL_POLYGON_MODE
  *   - front and back: stencil func, ref, value mask, fail, depth-fail and pass ops, write mask
  *   - KHR_debug groups are pushed and popped in pairs.
@@ -43,12 +47,15 @@
  *     is left active; a target the host has a query active on is not used (GL_CURRENT_QUERY of
  *     GL_TIME_ELAPSED and GL_SAMPLES_PASSED stays the host's).
  *   On OpenGL ES the list is what exists there: the same, without GL_FRAMEBUFFER_SRGB,
- *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7 and GL_POLYGON_MODE (none of them exist
- *   in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
+ *   GL_DEPTH_CLAMP, GL_COLOR_LOGIC_OP, GL_CLIP_DISTANCE0..7, GL_MULTISAMPLE and GL_POLYGON_MODE (none
+ *   of them exist in ES; the module's float targets are never sRGB-converted), without GL_SAMPLE_MASK_VALUE
  *   (only the desktop MSAA path sets it), and without GL_SAMPLE_MASK and
  *   GL_TEXTURE_BINDING_2D_MULTISAMPLE before ES 3.1 (ES 3.0 has neither).
+ *   - Host texture parameters: GL_DEPTH_STENCIL_TEXTURE_MODE of the frame's depth texture, switched
+ *     to GL_DEPTH_COMPONENT for the passes when the host left it on GL_STENCIL_INDEX and always put
+ *     back, even with SSS_CREATE_NO_STATE_RESTORE (see sss_frame.depth_stencil_mode).
  *   Not touched: blend functions and equations, depth function and mask, scissor box, clear
- *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, texture
+ *   values, pixel pack parameters and the other unpack ones, buffer bindings other than the unpack buffer, other texture
  *   parameters of host textures (the module samples through its own sampler objects).
  *   The host must not call sss_apply with transform feedback active or conditional rendering on.
  */
@@ -85,7 +92,14 @@ typedef struct sss_context sss_context;
 /** Measure the passes on the GPU for sss_get_stats (pixels touched, GPU time per pass). Without it
  *  no query object exists and no query runs; sss_get_stats then gives the counters only. */
 #define SSS_CREATE_STATS 0x4u
-#define SSS_CREATE_ALL_FLAGS 0x7u
+/** Check everything on every frame, steady ones included (see "GL queries" on sss_frame): that a
+ *  context is current and holds the module's objects, the textures' targets, formats and sizes
+ *  against the GL, every framebuffer's completeness, and the GL error flag: the host's pending errors
+ *  are cleared and logged at SSS_LOG_WARNING on entry, and an error the passes raised fails the call
+ *  with SSS_ERROR_GL. Off by default: a steady frame then makes no GL query at all (each is a round
+ *  trip that stalls a threaded driver). For development builds and bug reports. */
+#define SSS_CREATE_DEBUG_CHECKS 0x8u
+#define SSS_CREATE_ALL_FLAGS 0xFu
 
 typedef struct sss_create_desc {
   uint32_t struct_size;                     /**< sizeof(sss_create_desc) */
@@ -222,7 +236,8 @@ typedef struct sss_settings {
                                the family. A tabulated profile's table is copied (the pointers need not outlive the
                                call; sss_get_settings returns pointers to the context's copy, valid until the
                                next sss_set_settings). The fitted families (guided; sum of Gaussians of a
-                               measured material) run an optimiser when first selected: up to ~0.3 s */
+                               measured material) run an optimiser when first selected (see sss_set_settings):
+                               tens of ms at 17 taps, up to ~0.7 s for the guided family at 65 */
   float jitter;           /**< [0, 1], finite: the share of each pass's taps, the outermost, that read a pixel of
                                the cell they stand for chosen per pixel by deterministic noise (supplementary
                                Fig. S.6-S.7 use 0.33), where a pixel's kernel spans more pixels than `samples`
@@ -251,7 +266,19 @@ typedef struct sss_stencil {
 #define SSS_FRAME_DEPTH_ZERO_TO_ONE 0x1u
 /** sss_frame.region holds the host's bounding rectangle of the translucent pixels: see there. */
 #define SSS_FRAME_REGION 0x2u
-#define SSS_FRAME_ALL_FLAGS 0x3u
+/** The host's promise that the texture the passes write (color_texture written back, or
+ *  output_texture) is complete: its GL_TEXTURE_MIN_FILTER is GL_NEAREST or GL_LINEAR, or it has every
+ *  mip level its filter and GL_TEXTURE_MAX_LEVEL ask for. The compute path (SSS_PATH_COMPUTE, and
+ *  SSS_PATH_AUTO's candidate) writes that texture through an image unit, and image stores to an
+ *  incomplete texture are undefined (a silent no-op on some drivers). A new texture's default
+ *  filter, GL_NEAREST_MIPMAP_LINEAR, makes a texture with level 0 alone incomplete. Without the flag
+ *  the module asks the GL (GL_TEXTURE_MIN_FILTER, _BASE_LEVEL, _MAX_LEVEL, _IMMUTABLE_FORMAT) when the
+ *  frame does not describe its textures, and takes the default when it does; a texture that may be
+ *  incomplete (a mipmap filter, more than one level allowed, mutable storage) sends the frame down
+ *  the fragment path: sss_stats.last_frame_path says SSS_PATH_FRAGMENT and the log (INFO) says why.
+ *  A wrong promise gives undefined results, never an error. */
+#define SSS_FRAME_TARGET_COMPLETE 0x4u
+#define SSS_FRAME_ALL_FLAGS 0x7u
 
 /* Values of sss_frame.msaa_depth_resolve: how the MSAA path turns a pixel's sample depths into one
  * depth. Each sample's depth is first converted to linear view distance with the camera. */
@@ -294,8 +321,28 @@ typedef struct sss_frame {
    * The module asks the GL for each texture's internal format and size (glGetTexLevelParameteriv);
    * OpenGL ES 3.0 has no such query, so there the frame must say what the host allocated: every
    * format of a texture the frame names, and the size. Where the GL can be asked, a value that is
-   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ).
-   * Formats are the GL internal-format values the textures were allocated with; 0 = not given. */
+   * given (not 0) is checked against the GL's answer (SSS_ERROR_INVALID_ARGUMENT when they differ)
+   * whenever the module asks (not in a steady frame, below).
+   * Formats are the GL internal-format values the textures were allocated with; 0 = not given.
+   * A frame that gives the size and the format of every texture it names is described: the module
+   * then asks the GL nothing about the host texture parameters its passes depend on either
+   * (depth_stencil_mode, SSS_FRAME_TARGET_COMPLETE) and takes what the frame does not state at the
+   * GL's default for a new texture.
+   *
+   * GL queries. A frame is steady when it is described and has the same texture names, description,
+   * flags and msaa_depth_resolve as the last frame that succeeded, with settings that pick the same
+   * kernel, path, mode and follow-surface test, and draws (or, with identity settings or an empty
+   * region, does not) as that frame did.
+   * A steady frame makes no GL query at all with SSS_CREATE_NO_STATE_RESTORE (no glGet*, glIs*,
+   * glGetError or glCheckFramebufferStatus: each is a round trip that stalls a threaded driver
+   * such as Mesa's glthread or NVIDIA's threaded optimisation), and with state restore only reads
+   * the part of the state list its path can change (docs/integration.md, "Threaded drivers"). It
+   * trusts what the last successful frame checked: that a GL context is current and is the same
+   * one (after a loss, a re-creation or a switch, call sss_gl_context_changed first), that the
+   * textures are what the description says (a texture re-created under the same name and
+   * description but with another target or sample count also needs sss_gl_context_changed), that
+   * the framebuffers on them are complete; and it reads no GL error flag. Every other frame checks
+   * all of it, and with SSS_CREATE_DEBUG_CHECKS every frame does. */
   uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
   uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
                                   0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
@@ -321,6 +368,20 @@ typedef struct sss_frame {
                                   and in place nothing is drawn at all (a separate output gets the colour
                                   copied). With a separate output, the viewport outside the region gets the
                                   colour copied (one more draw): writing back costs less */
+  /* Appended after 0.2 (docs/migration.md) for the host texture parameters the passes depend on. */
+  uint32_t depth_stencil_mode; /**< 0, 0x1902 GL_DEPTH_COMPONENT or 0x1901 GL_STENCIL_INDEX: the
+                                  GL_DEPTH_STENCIL_TEXTURE_MODE of depth_texture (read only when it is
+                                  GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8). A host that samples its
+                                  depth-stencil texture's stencil (GL 4.3+, ES 3.1+) leaves it on
+                                  GL_STENCIL_INDEX, and depth fetches then return stencil indices: the
+                                  module switches it to GL_DEPTH_COMPONENT for its passes and puts
+                                  GL_STENCIL_INDEX back before it returns, on failure too and whatever
+                                  SSS_CREATE_NO_STATE_RESTORE says (host texture state). 0: not given; the
+                                  module asks the GL (glGetTexParameteriv) when the frame does not describe
+                                  its textures, and takes GL_DEPTH_COMPONENT (the default) when it does or
+                                  the GL has no such parameter. A given value is taken as it is (not checked
+                                  against the GL). Another value: SSS_ERROR_INVALID_ARGUMENT, and so is
+                                  GL_STENCIL_INDEX on a GL before 4.3 (ES 3.1) */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
@@ -416,6 +477,12 @@ SSS_API float sss_world_units_per_mm_from_legacy_width(float width);
 SSS_API void sss_settings_separable_table1(sss_settings *s);
 
 /** Validates and takes the settings; a kernel is rebuilt only when its inputs change. Does not call GL.
+ *  The fitted kernels (the guided family; a sum of Gaussians, a cross-bilateral profile or a table
+ *  of a measured material) run an optimiser here and in no other call of this header: from a
+ *  millisecond to ~0.7 s (the guided family at 65 taps; logged at SSS_LOG_DEBUG with the time), so
+ *  set them at load time. The
+ *  last four kernels that cost a fit are kept: settings that go back to one take it without fitting.
+ *  Then sss_prepare gets the programs and targets of the new settings ready before the next frame.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or s NULL, struct_size, world_units_per_mm, scale, strength, falloff,
  *                                     separable_scale, samples, flags,
@@ -459,7 +526,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       with SSS_FRAME_REGION a region field negative or the region reaching
  *                                       outside the viewport,
- *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, or output_texture equal to
+ *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, depth_stencil_mode outside its
+ *                                       list (or GL_STENCIL_INDEX on a GL without that mode), or output_texture equal to
  *                                       color_texture; a texture description field outside its list, a size
  *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
  *                                       GL's answer; on OpenGL ES 3.0 a description missing
@@ -472,7 +540,8 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       (or another one is current). Nothing is drawn or changed; the objects
  *                                       are forgotten (not deleted: their names may be the host's now) and the
  *                                       next call rebuilds them in the context current then, so a host that
- *                                       recreates its context after a loss just carries on
+ *                                       recreates its context after a loss just carries on. A steady frame
+ *                                       does not look (see sss_frame): call sss_gl_context_changed first
  *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, neither GL_TEXTURE_2D nor
  *                                       GL_TEXTURE_2D_MULTISAMPLE (or a multisampled output or normal texture), a
  *                                       texture without storage, a format outside the lists on sss_frame, sizes that
@@ -480,14 +549,31 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       stencil that differ in target or sample count
  *  @retval SSS_ERROR_UNSUPPORTED        a sample count above 32 or above the context's GL_MAX_COLOR_TEXTURE_SAMPLES /
  *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
- *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures
+ *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures (checked
+ *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS)
  *  @retval SSS_ERROR_OUT_OF_MEMORY      the intermediate target could not be allocated
- *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message)
+ *  @retval SSS_ERROR_GL                 the GL raised an error during the passes (named in the message; read
+ *                                       when a frame is not steady, or with SSS_CREATE_DEBUG_CHECKS): found
+ *                                       after the draws began, so the target (colour written back, or the output)
+ *                                       may be partly written and its content is undefined until a frame succeeds
+ *                                       (the message says so); GL state and the depth texture's mode are restored
  *  @retval SSS_ERROR_SHADER_COMPILE    a shader variant first needed by this frame did not compile (retried by
  *                                       the next call that needs it)
- *  On any failure the host's textures and GL state are unchanged and no GL error is left pending; the next call
- *  starts afresh (nothing the failed call did has to be undone by the host). */
+ *  Every check, shader build and allocation that can fail runs before the first draw into a host texture, so
+ *  on any failure but SSS_ERROR_GL raised by the passes the host's textures are unchanged. On any failure the
+ *  GL state is restored and no GL error is left pending; the next call starts afresh (nothing the failed call
+ *  did has to be undone by the host). */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
+
+/** Tells the module that the GL context current for its next call may not be the one of its last
+ *  call: the host re-created it after a loss, or made another one current. The next sss_apply_frame
+ *  then checks, even when the frame is steady (see "GL queries" on sss_frame), that a context is
+ *  current and holds the module's objects (SSS_ERROR_NO_CONTEXT and a rebuild when it does not, as
+ *  documented there). Only a steady frame needs this: every other frame checks by itself. Does not
+ *  call GL.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx is NULL */
+SSS_API sss_result sss_gl_context_changed(sss_context *ctx);
 
 /** Counters and the latest GPU measurements of the context (see sss_stats). Does not call GL. A
  *  measurement is skipped for a frame when the host has a query of the same target active around
@@ -496,6 +582,66 @@ SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or stats NULL, or stats->struct_size is not sizeof(sss_stats) */
 SSS_API sss_result sss_get_stats(const sss_context *ctx, sss_stats *stats);
+
+/* SSS_PREPARE_* flags for sss_prepare_desc.flags. */
+/** The frames will give sss_frame.normal_texture (the cross-bilateral mode's normals variant). */
+#define SSS_PREPARE_NORMALS 0x1u
+/** The frames will set SSS_FRAME_REGION (accepted for completeness: a region needs no program or
+ *  target of its own, so this changes nothing prepared today). */
+#define SSS_PREPARE_REGION 0x2u
+/** Multisampled colour made with fixedsamplelocations GL_FALSE (the MSAA path's copy of the samples
+ *  is made like the host's texture); read only when samples > 1. */
+#define SSS_PREPARE_UNFIXED_SAMPLE_LOCATIONS 0x4u
+#define SSS_PREPARE_ALL_FLAGS 0x7u
+
+/** The frames sss_prepare gets ready for: what sss_apply_frame would learn from the textures.
+ *  Formats are the GL internal-format values, as in sss_frame's description fields. */
+typedef struct sss_prepare_desc {
+  uint32_t struct_size;    /**< sizeof(sss_prepare_desc) */
+  int32_t width, height;   /**< the colour texture's size, each in [1, GL_MAX_TEXTURE_SIZE] */
+  uint32_t color_format;   /**< 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F (required) */
+  uint32_t output_format;  /**< 0: written back in place (output_texture 0); else the separate output's format,
+                                0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
+  uint32_t depth_format;   /**< required, one of sss_frame.depth_format's list: hardware depth (0x81A5, 0x81A6,
+                                0x81A7, 0x8CAC, 0x88F0, 0x8CAD) or linear view distance (0x822D GL_R16F,
+                                0x822E GL_R32F) */
+  int32_t samples;         /**< 0 or 1: single-sample textures; [2, 32]: multisampled colour and depth (desktop GL,
+                                at most GL_MAX_COLOR_TEXTURE_SAMPLES) with exactly the count the GL gave them
+                                (GL_TEXTURE_SAMPLES: a driver may round a count up) */
+  uint32_t stencil_format; /**< 0: no host stencil (sss_frame.stencil NULL); else the host's depth-stencil
+                                format, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8 */
+  uint32_t flags;          /**< SSS_PREPARE_* */
+} sss_prepare_desc;
+
+/** Gets the context ready for frames like `desc` with the current settings, so that the first
+ *  sss_apply_frame of such a frame compiles no shader and allocates no GL object ("no hitch").
+ *  Builds every program variant those frames can need with the settings as they are now (each path
+ *  sss_settings.path lets a frame take: the plain fragment passes, the masked ones, the compute
+ *  dispatches where the GL has them (4.3+ desktop), all three for SSS_PATH_AUTO; the
+ *  cross-bilateral variants in that mode; the MSAA resolve, stencil mark and per-sample write for
+ *  samples > 1; the variants of every kernel term), and allocates the render targets for that
+ *  size (the intermediate, the sum of several kernel terms, the stencil copy or mask, the masked
+ *  colour copy, the MSAA targets). Call it at load time after sss_set_settings, again after each
+ *  sss_set_settings that changes the mode, the path, the kernel or follow-surface, and after a
+ *  resize (a frame of another size or format reallocates then, as without this call). Calling it
+ *  again with nothing changed does nothing. Kernel fits never run here or in any per-frame call:
+ *  sss_set_settings runs them (see there). Needs the GL context current that the module was created
+ *  in; saves and restores the GL state like sss_apply_frame. Needs no camera.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or desc NULL, bad struct_size, width or height outside [1,
+ *                                     GL_MAX_TEXTURE_SIZE], color_format, output_format, depth_format or
+ *                                     stencil_format outside its list, samples negative or above 32, unknown
+ *                                     flags; nothing is built or allocated
+ *  @retval SSS_ERROR_UNSUPPORTED      samples > 1 on OpenGL ES (the MSAA path is desktop GL only) or above
+ *                                     GL_MAX_COLOR_TEXTURE_SAMPLES / GL_MAX_DEPTH_TEXTURE_SAMPLES; OpenGL ES: an
+ *                                     RGBA32F colour or output format without the extension it needs (as
+ *                                     sss_apply_frame); nothing is built or allocated
+ *  @retval SSS_ERROR_NO_CONTEXT       as sss_apply_frame
+ *  @retval SSS_ERROR_SHADER_COMPILE   a variant did not compile (driver log in the message)
+ *  @retval SSS_ERROR_OUT_OF_MEMORY    a target could not be allocated
+ *  @retval SSS_ERROR_GL               the GL raised an error (named in the message)
+ *  After a failure what was built stays built and the frames still work: each builds what it lacks. */
+SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
 
 /* ---- GL-free kernel API (math layer): usable without any GL context. ----
  * The pre-integrated skin LUTs (sss_lut_*) are declared in <sss/sss_lut.h>, which includes this header. */

@@ -1,12 +1,17 @@
 // sss_apply and sss_apply_frame: validate everything (arguments first, then the textures as the GL
-// describes them) before the first draw, so that a failure leaves the host's textures untouched.
+// describes them, or for a steady frame as the last successful frame found them: steady_frame.hpp)
+// before the first draw, so that a failure leaves the host's textures untouched;
+// the runners build and allocate everything before their first draw too. The one failure found
+// after the draws began is a GL error they raised: its message says the target may be partly written.
 #include <cstdio>
 
 #include "../gl/debug_label.hpp"
+#include "../gl/host_texture_state.hpp"
 #include "../gl/state_guard.hpp"
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "host_texture_params.hpp"
 #include "validation.hpp"
 
 namespace {
@@ -36,8 +41,7 @@ sss_result query(sss_context* ctx, const sss_frame& frame, gl::GLuint name, cons
                   "texture's format and size (no glGetTexLevelParameteriv), so the frame must give them for %s = %u",
                   format_field, described, frame.texture_width, frame.texture_height, role, name);
     }
-    gl::GLint max_size = 0;
-    ctx->gl.GetIntegerv(gl::MAX_TEXTURE_SIZE, &max_size);
+    const int max_size = ctx->max_texture_size;
     if (frame.texture_width > max_size || frame.texture_height > max_size) {
       return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->texture_width, texture_height = %dx%d: above GL_MAX_TEXTURE_SIZE = %d",
                   frame.texture_width, frame.texture_height, max_size);
@@ -98,11 +102,9 @@ sss_result same_samples(sss_context* ctx, const char* role, const gl::TextureInf
 
 // A multisampled texture's count against the module's limit (one 32-bit sample mask word) and the
 // context's limits.
-sss_result supported_samples(sss_context* ctx, const char* role, const gl::TextureInfo& t, gl::GLenum limit,
+sss_result supported_samples(sss_context* ctx, const char* role, const gl::TextureInfo& t, int max_samples,
                              const char* limit_name) {
   if (!t.multisampled()) return SSS_OK;
-  gl::GLint max_samples = 0;
-  ctx->gl.GetIntegerv(limit, &max_samples);
   if (t.samples <= 32 && t.samples <= max_samples) return SSS_OK;
   return fail(ctx, SSS_ERROR_UNSUPPORTED, "%s = %u has %d samples: this context supports at most %d (%s), the "
               "module at most 32", role, t.name, t.samples, max_samples, limit_name);
@@ -137,7 +139,7 @@ sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::F
   }
   r = check_es_format(ctx, "color_texture", run->color, true);
   if (r != SSS_OK) return r;
-  r = supported_samples(ctx, "color_texture", run->color, gl::MAX_COLOR_TEXTURE_SAMPLES,
+  r = supported_samples(ctx, "color_texture", run->color, ctx->max_color_texture_samples,
                         "GL_MAX_COLOR_TEXTURE_SAMPLES");
   if (r != SSS_OK) return r;
   r = query(ctx, frame, frame.depth_texture, "depth_texture", "depth_format", frame.depth_format, &run->depth);
@@ -151,7 +153,7 @@ sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::F
   // Linear depth (R16F/R32F) is a colour format to the GL.
   const bool linear = gl::is_linear_depth_format(run->depth.internal_format);
   return supported_samples(ctx, "depth_texture", run->depth,
-                           linear ? gl::MAX_COLOR_TEXTURE_SAMPLES : gl::MAX_DEPTH_TEXTURE_SAMPLES,
+                           linear ? ctx->max_color_texture_samples : ctx->max_depth_texture_samples,
                            linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
 }
 
@@ -229,10 +231,17 @@ sss_result frame_rectangles(sss_context* ctx, const sss_frame& frame, gl::Filter
   return SSS_OK;
 }
 
-// The textures, as the GL describes them, against the lists in sss.h, and the frame's rectangles.
-sss_result query_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
-  sss_result r = query_color_and_depth(ctx, frame, run);
-  if (r == SSS_OK) r = query_optional_textures(ctx, frame, run, stencil);
+// The textures, as the GL describes them, against the lists in sss.h (a steady frame takes them
+// from the last frame instead: steady_frame.hpp), and the frame's rectangles.
+sss_result describe_textures(sss_context* ctx, const sss_frame& frame, bool steady, gl::FilterRun* run,
+                             gl::StencilInput* stencil) {
+  sss_result r = SSS_OK;
+  if (steady) {
+    sss::api::steady_textures(*ctx, frame, run, stencil);
+  } else {
+    r = query_color_and_depth(ctx, frame, run);
+    if (r == SSS_OK) r = query_optional_textures(ctx, frame, run, stencil);
+  }
   return r == SSS_OK ? frame_rectangles(ctx, frame, run) : r;
 }
 
@@ -249,6 +258,76 @@ bool is_identity(const sss::math::FilterSettings& s) {
   // Strength applies to eq. (1) alone (the separable family); the others scatter what their profile does.
   return s.kernel.family == sss::math::KernelFamily::separable && s.strength[0] == 0.0f && s.strength[1] == 0.0f &&
          s.strength[2] == 0.0f;
+}
+
+// Everything of the run but the textures and rectangles: the constants from the settings, the
+// camera and the frame's geometry; the kernel; the path.
+void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run) {
+  sss::math::FrameGeometry geometry;
+  geometry.texture_width = run->color.width;
+  geometry.texture_height = run->color.height;
+  geometry.viewport = run->viewport;
+  geometry.depth = depth_encoding(run->depth, frame.flags);
+  if (run->color.multisampled()) {
+    // The resolve reads the host's encoding; the passes read the resolved linear distance.
+    run->resolve_constants =
+        sss::math::compute_pass_constants(ctx.settings, ctx.projection, geometry, ctx.kernel.reach_mm);
+    geometry.depth = sss::math::DepthEncoding::linear_distance;
+    run->depth_resolve = static_cast<gl::DepthResolve>(frame.msaa_depth_resolve);
+  }
+  run->constants = sss::math::compute_pass_constants(ctx.settings, ctx.projection, geometry, ctx.kernel.reach_mm);
+  run->kernel = &ctx.kernel;
+  run->kernel_revision = ctx.kernel_revision;
+  run->follow_surface = ctx.settings.follow_surface;
+  run->identity = is_identity(ctx.settings);
+  run->frame = ctx.frames + 1;
+  run->path = ctx.settings.path;
+  if (run->path == SSS_PATH_AUTO) run->path_key = path_key(ctx, *run, frame.flags);  // only AUTO reads it
+  if (ctx.settings.cross_bilateral) {
+    run->cross_bilateral = true;
+    run->identity = ctx.settings.world_units_per_mm == 0.0f || ctx.settings.scale == 0.0f;  // strength does not apply here
+    run->cbf_kernel = &ctx.cbf_kernel;
+    run->cbf_kernel_revision = ctx.cbf_kernel_revision;
+    run->cbf = sss::math::compute_cbf_constants(ctx.settings, ctx.projection, geometry);
+  }
+  if (run->region) {
+    // The host's promise: nothing translucent outside draw_rect. An empty one means nothing is;
+    // otherwise the passes draw there alone and their taps stay inside it, like at the viewport's
+    // edge (the projection is still the viewport's: only the clamp and the drawn rectangle change).
+    if (run->draw_rect[2] == 0 || run->draw_rect[3] == 0) {
+      run->identity = true;
+    } else {
+      sss::math::clamp_to_rect(&run->constants, run->draw_rect);
+    }
+  }
+}
+
+// The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
+// the error check, on failure too), then the GL errors, except in a steady frame (steady_frame.hpp:
+// reading the error flag is a round trip, and the frame it repeats found none). Every check,
+// program build and allocation came before the first draw; an error the GL raised while drawing is
+// found only now, when the target may hold part of the result, and the message says so.
+sss_result run_passes(sss_context* ctx, const sss_frame& frame, bool steady, gl::FilterRun* run) {
+  const gl::Functions& f = ctx->gl;
+  gl::GLenum depth_mode = gl::DEPTH_COMPONENT;
+  sss_result r = sss::api::host_texture_params(ctx, frame, run, &depth_mode);
+  if (r != SSS_OK) return r;
+  std::string message;
+  {
+    const gl::DepthSamplingOverride depth_sampling(f, run->depth, depth_mode);
+    r = ctx->filter.run(*run, &message);
+  }
+  if (r != SSS_OK) {
+    sss::api::drain_host_errors(nullptr, f);
+    return fail(ctx, r, message);
+  }
+  if (steady) return SSS_OK;
+  char passes[200];
+  std::snprintf(passes, sizeof passes,
+                "the separable passes (they had begun drawing: %s = %u may be partly written, its content is "
+                "undefined until a frame succeeds; the GL state is restored)",
+                run->writes_back() ? "color_texture" : "output_texture", run->target().name);
+  return sss::api::check_gl_errors(ctx, f, passes);
 }
 
 }  // namespace
@@ -271,74 +350,45 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
   if (r != SSS_OK) return r;
   if (!ctx->has_camera) return fail(ctx, SSS_ERROR_INVALID_OPERATION, "no camera: call sss_set_camera before applying");
   const gl::Functions& f = ctx->gl;
-  r = sss::api::require_current_context(ctx, f);
-  if (r != SSS_OK) return r;
-
-  sss::api::drain_host_errors(ctx, f);
-  gl::StateGuard guard(f, (ctx->create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0);
+  // A steady frame trusts the last successful one and asks the GL nothing (steady_frame.hpp);
+  // every other frame checks the context, the host's errors and the textures first.
+  bool steady = (ctx->create_flags & SSS_CREATE_DEBUG_CHECKS) == 0 && sss::api::is_steady(*ctx, *frame);
+  ctx->steady.valid = false;  // until this frame succeeds
+  if (!steady) {
+    r = sss::api::require_current_context(ctx, f);
+    if (r != SSS_OK) return r;
+    sss::api::drain_host_errors(ctx, f);
+  }
+  gl::StateGuard guard(f, (ctx->create_flags & SSS_CREATE_NO_STATE_RESTORE) == 0,
+                       sss::api::guard_scope(*ctx, *frame, steady));
   gl::DebugGroup group(f, (ctx->create_flags & SSS_CREATE_NO_DEBUG_LABELS) == 0, "sss_apply");
-
-  r = sss::api::require_module_objects(ctx);
-  if (r != SSS_OK) return r;
+  if (!steady) {
+    r = sss::api::require_module_objects(ctx);
+    if (r != SSS_OK) return r;
+  }
 
   gl::FilterRun run;
   gl::StencilInput stencil;
-  r = query_textures(ctx, *frame, &run, &stencil);
+  r = describe_textures(ctx, *frame, steady, &run, &stencil);
   if (r != SSS_OK) {
-    sss::api::drain_host_errors(nullptr, f);  // a failed query may have raised one
+    if (!steady) sss::api::drain_host_errors(nullptr, f);  // a failed query may have raised one
     return r;
   }
-  sss::math::FrameGeometry geometry;
-  geometry.texture_width = run.color.width;
-  geometry.texture_height = run.color.height;
-  geometry.viewport = run.viewport;
-  geometry.depth = depth_encoding(run.depth, frame->flags);
-  if (run.color.multisampled()) {
-    // The resolve reads the host's encoding; the passes read the resolved linear distance.
-    run.resolve_constants =
-        sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry, ctx->kernel.reach_mm);
-    geometry.depth = sss::math::DepthEncoding::linear_distance;
-    run.depth_resolve = static_cast<gl::DepthResolve>(frame->msaa_depth_resolve);
+  fill_run(*ctx, *frame, &run);
+  if (steady && run.identity != ctx->steady.identity) {
+    // Drawing after drawing nothing may allocate the targets, whose check reads the error flag.
+    steady = false;
+    sss::api::drain_host_errors(ctx, f);
   }
-  run.constants = sss::math::compute_pass_constants(ctx->settings, ctx->projection, geometry, ctx->kernel.reach_mm);
-  run.kernel = &ctx->kernel;
-  run.kernel_revision = ctx->kernel_revision;
-  run.follow_surface = ctx->settings.follow_surface;
-  run.identity = is_identity(ctx->settings);
-  run.frame = ctx->frames + 1;
-  run.path = ctx->settings.path;
-  if (run.path == SSS_PATH_AUTO) run.path_key = path_key(*ctx, run, frame->flags);  // only AUTO reads it
-  if (ctx->settings.cross_bilateral) {
-    run.cross_bilateral = true;
-    run.identity = ctx->settings.world_units_per_mm == 0.0f || ctx->settings.scale == 0.0f;  // strength does not apply here
-    run.cbf_kernel = &ctx->cbf_kernel;
-    run.cbf_kernel_revision = ctx->cbf_kernel_revision;
-    run.cbf = sss::math::compute_cbf_constants(ctx->settings, ctx->projection, geometry);
-  }
+  run.verify = !steady;
 
-  if (run.region) {
-    // The host's promise: nothing translucent outside draw_rect. An empty one means nothing is;
-    // otherwise the passes draw there alone and their taps stay inside it, like at the viewport's
-    // edge (the projection is still the viewport's: only the clamp and the drawn rectangle change).
-    if (run.draw_rect[2] == 0 || run.draw_rect[3] == 0) {
-      run.identity = true;
-    } else {
-      sss::math::clamp_to_rect(&run.constants, run.draw_rect);
-    }
-  }
-
-  std::string message;
-  r = ctx->filter.run(run, &message);
-  if (r != SSS_OK) {
-    sss::api::drain_host_errors(nullptr, f);
-    return fail(ctx, r, message);
-  }
-  r = sss::api::check_gl_errors(ctx, f, "the separable passes");
+  r = run_passes(ctx, *frame, steady, &run);
   if (r == SSS_OK) {
     ++ctx->frames;
     ctx->last_frame_passes = static_cast<std::uint32_t>(ctx->filter.last_draws());
     ctx->last_frame_path = ctx->filter.last_run_path();
     ctx->passes += ctx->last_frame_passes;
+    sss::api::remember_steady(ctx, *frame, run);
   }
   return r;
 }

@@ -151,6 +151,12 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     r = check_es_float_targets(ctx.get(), api);
     if (r != SSS_OK) return r;
   }
+  // Limits cannot change: read once here, never by a frame.
+  f.GetIntegerv(gl::MAX_TEXTURE_SIZE, &ctx->max_texture_size);
+  if (f.has_multisample_textures()) {  // invalid enums on ES 3.0
+    f.GetIntegerv(gl::MAX_COLOR_TEXTURE_SAMPLES, &ctx->max_color_texture_samples);
+    f.GetIntegerv(gl::MAX_DEPTH_TEXTURE_SAMPLES, &ctx->max_depth_texture_samples);
+  }
   const gl::GlslVariant variant = gl::choose_glsl_variant(api);
   const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
   const std::string renderer_name = renderer != nullptr ? renderer : "";

@@ -1,5 +1,7 @@
 // Settings, camera and the GL-free kernel API: validation and bookkeeping, no GL calls.
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <new>
@@ -92,6 +94,76 @@ sss_result write_transmittance_terms(Make make, const char* what, float* out_ter
   return SSS_OK;
 }
 
+// How long building a kernel took, for the DEBUG note (the fits are what sss_prepare cannot hide).
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The cross-bilateral kernel, built lazily (only in that mode) and compared with what it was built
+// from, not with the previous settings: the cbf fields may change while the separable mode is
+// selected. A measured material's or a table's profile is fitted (kept in ctx->recent_kernels).
+sss_result update_cbf_kernel(sss_context* ctx, const sss::math::FilterSettings& next, const sss_settings& s) {
+  if (!next.cross_bilateral) return SSS_OK;
+  sss::math::CbfKernelInputs inputs;
+  inputs.profile = next.cbf_profile;
+  if (next.cbf_profile == SSS_PROFILE_KERNEL) inputs.request = sss::api::to_request(s.kernel.profile);
+  inputs.taps = next.cbf_taps;
+  inputs.r_max_mm = next.cbf_r_max_mm;
+  if (sss::math::same_cbf_kernel_inputs(inputs, ctx->cbf_kernel_inputs)) return SSS_OK;
+  if (const sss::math::CbfKernel* kept = ctx->recent_kernels.find(inputs)) {
+    ctx->cbf_kernel = *kept;
+    sss::api::log(ctx, SSS_LOG_DEBUG, "sss_set_settings: the cross-bilateral kernel was kept from earlier settings");
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      ctx->cbf_kernel = sss::math::cbf_kernel(sss::math::cbf_profile(inputs.profile, inputs.request), inputs.taps,
+                                              inputs.r_max_mm);
+      ctx->recent_kernels.keep(inputs, ctx->cbf_kernel);
+    } catch (const std::bad_alloc&) {
+      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
+                  next.cbf_profile);
+    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
+    }
+    char note[160];
+    std::snprintf(note, sizeof note, "sss_set_settings: built the cross-bilateral kernel (profile 0x%x) in %.1f ms",
+                  next.cbf_profile, milliseconds_since(start));
+    sss::api::log(ctx, SSS_LOG_DEBUG, note);
+  }
+  ctx->cbf_kernel_inputs = inputs;
+  ++ctx->cbf_kernel_revision;
+  return SSS_OK;
+}
+
+// The separable mode's kernel, rebuilt only when what it is built from changes, and taken from
+// ctx->recent_kernels when it was built lately (a fitted family runs an optimiser).
+sss_result update_pass_kernel(sss_context* ctx, const sss::math::FilterSettings& next, const sss_settings& s) {
+  if (sss::math::same_pass_kernel_inputs(next, ctx->settings)) return SSS_OK;
+  if (const sss::math::PassKernel* kept = ctx->recent_kernels.find(next)) {
+    ctx->kernel = *kept;
+    sss::api::log(ctx, SSS_LOG_DEBUG, "sss_set_settings: the kernel was kept from earlier settings");
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const sss_result r = check_profile_energy(ctx, next.kernel);
+      if (r != SSS_OK) return r;
+      ctx->kernel = sss::math::build_pass_kernel(next);
+      ctx->recent_kernels.keep(next, ctx->kernel);
+    } catch (const std::bad_alloc&) {
+      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
+                  s.kernel.family);
+    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", s.kernel.family, e.what());
+    }
+    char note[160];
+    std::snprintf(note, sizeof note, "sss_set_settings: built the kernel (family %d, %d taps) in %.1f ms",
+                  s.kernel.family, next.samples, milliseconds_since(start));
+    sss::api::log(ctx, SSS_LOG_DEBUG, note);
+  }
+  ++ctx->kernel_revision;
+  return SSS_OK;
+}
+
 }  // namespace
 
 extern "C" {
@@ -118,48 +190,13 @@ SSS_API void sss_settings_separable_table1(sss_settings* s) {
 
 SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* s) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  const sss_result r = sss::api::check_settings(ctx, s);
+  sss_result r = sss::api::check_settings(ctx, s);
   if (r != SSS_OK) return r;
   const sss::math::FilterSettings next = to_filter_settings(*s);
-  // Built lazily (only in the cross-bilateral mode) and compared with what it was built for, not with
-  // the previous settings: the cbf fields may change while the separable mode is selected. Built
-  // first: a measured material runs a fit, and if that fails the old settings stay.
-  const sss::math::CbfKernel& built = ctx->cbf_kernel;
-  const bool kernel_profile = next.cbf_profile == SSS_PROFILE_KERNEL;
-  const sss::math::ProfileRequest cbf_request =
-      kernel_profile ? sss::api::to_request(s->kernel.profile) : sss::math::ProfileRequest{};
-  if (next.cross_bilateral &&
-      (built.taps.size() != static_cast<std::size_t>(next.cbf_taps) || built.r_max_mm != next.cbf_r_max_mm ||
-       ctx->cbf_kernel_profile != next.cbf_profile ||
-       (kernel_profile && !sss::math::same_profile_request(ctx->cbf_kernel_request, cbf_request)))) {
-    try {
-      ctx->cbf_kernel =
-          sss::math::cbf_kernel(sss::math::cbf_profile(next.cbf_profile, cbf_request), next.cbf_taps, next.cbf_r_max_mm);
-    } catch (const std::bad_alloc&) {
-      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
-                  next.cbf_profile);
-    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
-      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
-    }
-    ctx->cbf_kernel_profile = next.cbf_profile;
-    ctx->cbf_kernel_request = cbf_request;
-    ++ctx->cbf_kernel_revision;
-  }
-  // The separable mode's kernel, rebuilt only when what it is built from changes (a fitted family
-  // runs an optimiser); built before anything is replaced, so a failure keeps the old settings.
-  if (!sss::math::same_pass_kernel_inputs(next, ctx->settings)) {
-    try {
-      sss_result r2 = check_profile_energy(ctx, next.kernel);
-      if (r2 != SSS_OK) return r2;
-      ctx->kernel = sss::math::build_pass_kernel(next);
-    } catch (const std::bad_alloc&) {
-      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
-                  s->kernel.family);
-    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
-      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", s->kernel.family, e.what());
-    }
-    ++ctx->kernel_revision;
-  }
+  // Both kernels before anything is replaced: a fit that fails keeps the old settings.
+  r = update_cbf_kernel(ctx, next, *s);
+  if (r == SSS_OK) r = update_pass_kernel(ctx, next, *s);
+  if (r != SSS_OK) return r;
   ctx->settings = next;
   // What sss_get_settings gives back: the desc as given, its table pointing at the context's copy.
   ctx->kernel_desc = s->kernel;

@@ -13,8 +13,10 @@
 #include "../math/projection.hpp"
 #include "../math/cbf_kernel.hpp"
 #include "../math/pass_kernel.hpp"
+#include "../math/recent_kernels.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
+#include "steady_frame.hpp"
 
 struct sss_context {
   sss::gl::Functions gl;
@@ -26,6 +28,11 @@ struct sss_context {
   bool gl_es = false;
   // OpenGL ES extensions the formats need (see api_apply.cpp): RGBA32F renderable, RGBA32F filterable.
   bool es_float_render = false, es_float_linear = false;
+  // Limits, read once by sss_create (they cannot change): no frame asks for them again.
+  int max_texture_size = 0;
+  int max_color_texture_samples = 0, max_depth_texture_samples = 0;  // 0 where there are no multisample textures
+  // The last successful frame, which a steady frame trusts (steady_frame.hpp).
+  sss::api::SteadyFrame steady;
 
   sss::math::FilterSettings settings;
   sss::math::PassKernel kernel;        // what the separable mode's passes run (settings.kernel, jitter)
@@ -33,10 +40,10 @@ struct sss_context {
   sss_kernel_desc kernel_desc{};       // settings.kernel as given, for sss_get_settings; its table pointers
   std::vector<float> table_radius_mm;  // point at these copies
   std::vector<float> table_rgb;
-  sss::math::CbfKernel cbf_kernel;  // built for cbf_kernel_profile and its own taps / r_max
-  unsigned cbf_kernel_profile = 0;
-  sss::math::ProfileRequest cbf_kernel_request;  // with SSS_PROFILE_KERNEL: the kernel.profile it was built from
+  sss::math::CbfKernel cbf_kernel;            // built from cbf_kernel_inputs (taps 0: not built yet)
+  sss::math::CbfKernelInputs cbf_kernel_inputs;
   std::uint64_t cbf_kernel_revision = 1;
+  sss::math::RecentKernels recent_kernels;     // the costly kernels built lately (sss_set_settings)
 
   sss::math::Matrix4 projection{};
   bool has_camera = false;

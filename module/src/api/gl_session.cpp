@@ -32,6 +32,7 @@ sss_result check_gl_errors(sss_context* ctx, const sss::gl::Functions& gl, const
 sss_result require_module_objects(sss_context* ctx) {
   const sss::gl::Functions& gl = ctx->gl;
   if (ctx->filter.needs_rebuild()) {
+    ctx->steady.valid = false;  // new objects: the next frame checks them
     std::string message;
     sss_result r = ctx->filter.rebuild(&message);
     if (r == SSS_OK) {
@@ -50,6 +51,7 @@ sss_result require_module_objects(sss_context* ctx) {
   }
   if (ctx->filter.objects_present()) return SSS_OK;
   ctx->filter.forget();
+  ctx->steady.valid = false;  // no frame may trust the forgotten names
   ctx->lut_textures.clear();  // gone with their context too (names only: nothing is deleted)
   return fail(ctx, SSS_ERROR_NO_CONTEXT,
               "the module's GL objects are not in the current GL context (the context the module was created in "

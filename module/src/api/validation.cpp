@@ -125,6 +125,13 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
   return check_frame_description(ctx, *frame);
 }
 
+bool frame_described(const sss_frame& frame) {
+  return frame.texture_width != 0 && frame.color_format != 0 && frame.depth_format != 0 &&
+         (frame.output_texture == 0 || frame.output_format != 0) &&
+         (frame.stencil == nullptr || frame.stencil_format != 0) &&
+         (frame.normal_texture == 0 || frame.normal_format != 0);
+}
+
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
   const bool no_size = frame.texture_width == 0 && frame.texture_height == 0;
   if (!no_size && (frame.texture_width <= 0 || frame.texture_height <= 0)) {
@@ -154,6 +161,12 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
   }
   if (frame.stencil_format != 0 && !gl::is_depth_stencil_format(format(frame.stencil_format))) {
     return bad("stencil_format", frame.stencil_format, "GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");
+  }
+  if (frame.depth_stencil_mode != 0 && frame.depth_stencil_mode != gl::DEPTH_COMPONENT &&
+      frame.depth_stencil_mode != gl::STENCIL_INDEX) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->depth_stencil_mode = 0x%04X: expected 0, GL_DEPTH_COMPONENT (0x1902) or GL_STENCIL_INDEX (0x1901)",
+                frame.depth_stencil_mode);
   }
   return SSS_OK;
 }

@@ -16,6 +16,10 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s);
 sss_result check_frame(sss_context* ctx, const sss_frame* frame);
 // The optional texture description of sss_frame (formats in their lists, sizes both 0 or both > 0).
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame);
+// The frame describes its textures (sss.h, sss_frame): the size, and the format of every texture
+// it names, as OpenGL ES 3.0 requires. The one definition of "described": a described frame can be
+// steady (steady_frame.hpp) and is never asked about host texture parameters (host_texture_params.hpp).
+bool frame_described(const sss_frame& frame);
 
 // sss_profile_desc and sss_kernel_desc (kernel_desc.cpp). `name` is how the fields are reached in
 // messages: check_profile's the struct itself ("profile"), check_kernel_desc's a prefix ("desc->",

@@ -12,23 +12,32 @@
 namespace sss::gl {
 
 namespace {
-sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
-                   std::string* message) {
+// The programs and targets: everything that can fail but the framebuffer checks.
+sss_result build(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                 std::string* message) {
   const bool linear_depth = run.constants.linear_depth;
   const bool normals = run.normals.name != 0;
-  const int width = run.color.width, height = run.color.height;
   sss_result r = ctx.programs.cross_bilateral(Outside::write_centre, linear_depth, normals, horizontal, message);
   if (r == SSS_OK) {
     const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
     r = ctx.programs.cross_bilateral(outside, linear_depth, normals, vertical, message);
   }
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(width, height, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
   if (r == SSS_OK && run.stencil != nullptr) {
-    r = ctx.targets.ensure_masked_source(run.color.internal_format, width, height, message);
+    r = ctx.targets.ensure_masked_source(run.color.internal_format, run.color.width, run.color.height, message);
   }
+  return r;
+}
+
+sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
+                   std::string* message) {
+  const int width = run.color.width, height = run.color.height;
+  sss_result r = build(ctx, run, horizontal, vertical, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  if (run.stencil != nullptr) r = copy_stencil(ctx, *run.stencil, width, height, message);
+  // The MSAA path marked or copied the stencil already (stencil_ready): copying "its" stencil
+  // again would allocate a stencil copy of format 0 and fail.
+  if (run.stencil != nullptr && !run.stencil_ready) r = copy_stencil(ctx, *run.stencil, width, height, message);
   if (r != SSS_OK) return r;
   const Targets& t = ctx.targets.names();
   const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;
@@ -36,7 +45,7 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizont
   if (r == SSS_OK && run.stencil != nullptr) {
     ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.masked_framebuffer);
     ctx.gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
-    r = check_framebuffer(ctx.gl, "masked colour copy", message);
+    r = check_framebuffer(ctx, "masked colour copy", message);
   }
   return r == SSS_OK ? attach_output(ctx, run, stencil, message) : r;
 }
@@ -132,6 +141,12 @@ void draw_passes(PassContext& ctx, const FilterRun& run, CbfProgram& horizontal,
   measure.end_frame();
 }
 }  // namespace
+
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
+  CbfProgram* horizontal = nullptr;
+  CbfProgram* vertical = nullptr;
+  return build(ctx, run, &horizontal, &vertical, message);
+}
 
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message) {
   CbfProgram* horizontal = nullptr;

@@ -36,7 +36,7 @@ sss_result copy_outside_region_first(PassContext& ctx, const FilterRun& run, std
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
-  const sss_result r = check_framebuffer(f, "output copy", message);
+  const sss_result r = check_framebuffer(ctx, "output copy", message);
   if (r == SSS_OK) copy_outside_region(ctx, run);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 0, 0);
   return r;
@@ -51,6 +51,11 @@ const char* compute_unavailable(const Functions& gl, const FilterRun& run) {
   if (run.kernel == nullptr || run.kernel->terms.size() != 1) return "the kernel has several terms";
   if (image_format_index(run.target().internal_format) < 0) {
     return "the target's format has no image format (RGBA16F or RGBA32F)";
+  }
+  if (!run.target_complete) {
+    return "the target texture may be incomplete (a mipmap GL_TEXTURE_MIN_FILTER, the default, with more levels "
+           "allowed than it may have), and image stores to an incomplete texture are undefined: give it a "
+           "GL_NEAREST or GL_LINEAR min filter, or set SSS_FRAME_TARGET_COMPLETE";
   }
   return "";
 }

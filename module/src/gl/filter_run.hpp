@@ -59,6 +59,15 @@ struct FilterRun {
   // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
   unsigned path = SSS_PATH_FRAGMENT;
   std::uint64_t path_key = 0;
+  // Check each framebuffer's completeness. The api layer clears it for a steady frame (the same
+  // textures, description and settings as the last successful one: api/steady_frame.hpp), whose
+  // framebuffers that frame checked; SeparableFilter::run checks again when the path differs.
+  bool verify = true;
+  // The target (host colour in place, or the output) is complete, so the compute path's image
+  // stores to it are defined: the host promised it (SSS_FRAME_TARGET_COMPLETE) or the GL said so
+  // (gl/host_texture_state.hpp). False, the compute path is not taken: image stores to an incomplete
+  // texture are undefined, a silent no-op on some drivers.
+  bool target_complete = false;
 
   bool writes_back() const { return output.name == 0; }
   // The texture the last pass writes: the host's colour (in place) or the separate output.

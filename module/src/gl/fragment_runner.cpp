@@ -46,7 +46,7 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
     f.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[0], 0);
     f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
-    r = check_framebuffer(f, "sum of the kernel's terms", message);
+    r = check_framebuffer(ctx, "sum of the kernel's terms", message);
     if (r != SSS_OK) return r;
   }
   return attach_output(ctx, run, stencil, message);
@@ -125,18 +125,32 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
   }
   measure.end_frame();
 }
+
+// The programs and targets of the separable passes: everything that can fail but the framebuffer
+// checks, all before the first draw.
+sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
+  sss_result r = build_programs(ctx, run, programs, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK && run.kernel->terms.size() > 1) {
+    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
+  }
+  return r;
+}
 }  // namespace
+
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.identity) return SSS_OK;
+  if (run.cross_bilateral) return prepare_cross_bilateral(ctx, run, message);
+  TermPrograms programs{};
+  return prepare_separable(ctx, run, &programs, message);
+}
 
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
   const std::size_t terms = run.kernel->terms.size();
   TermPrograms programs{};
-  sss_result r = build_programs(ctx, run, &programs, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r == SSS_OK && terms > 1) {
-    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
-  }
+  sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   r = attach_targets(ctx, run, terms, message);
@@ -153,7 +167,7 @@ sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* mes
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().output_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.output.name, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
-  const sss_result r = check_framebuffer(f, "output copy", message);
+  const sss_result r = check_framebuffer(ctx, "output copy", message);
   if (r == SSS_OK) {
     DebugGroup group(f, ctx.labels, "sss copy (identity settings)");
     draw_copy(ctx, run.color.name);

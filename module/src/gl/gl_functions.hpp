@@ -46,6 +46,7 @@ using GLubyte = unsigned char;
   X(void, TexImage2D, (GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, \
                        GLint border, GLenum format, GLenum type, const void* pixels))                  \
   X(void, TexParameteri, (GLenum target, GLenum pname, GLint param))                                   \
+  X(void, GetTexParameteriv, (GLenum target, GLenum pname, GLint * params))                            \
   X(void, GenSamplers, (GLsizei count, GLuint * samplers))                                             \
   X(void, DeleteSamplers, (GLsizei count, const GLuint* samplers))                                     \
   X(void, BindSampler, (GLuint unit, GLuint sampler))                                                  \
@@ -282,6 +283,12 @@ enum : GLenum {
   SAMPLE_ALPHA_TO_COVERAGE = 0x809E,
   SAMPLE_COVERAGE = 0x80A0,
   SAMPLE_MASK = 0x8E51,
+  MULTISAMPLE = 0x809D,
+  DEPTH_STENCIL_TEXTURE_MODE = 0x90EA,
+  DEPTH_COMPONENT = 0x1902,
+  STENCIL_INDEX = 0x1901,
+  TEXTURE_BASE_LEVEL = 0x813C,
+  TEXTURE_IMMUTABLE_FORMAT = 0x912F,
   POLYGON_OFFSET_FILL = 0x8037,
   DEPTH_CLAMP = 0x864F,
   COLOR_LOGIC_OP = 0x0BF2,

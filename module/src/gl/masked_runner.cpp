@@ -11,11 +11,16 @@ bool masked_available(const FilterRun& run) {
   return !run.color.multisampled() && !run.cross_bilateral && run.stencil == nullptr && !run.identity;
 }
 
+sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message) {
+  const sss_result r = ctx.programs.stencil_mark(program, message);
+  if (r != SSS_OK) return r;
+  return ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
+}
+
 sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message) {
   const Functions& f = ctx.gl;
   GLuint program = 0;
-  sss_result r = ctx.programs.stencil_mark(&program, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
+  sss_result r = stencil_mark_resources(ctx, width, height, &program, message);
   if (r != SSS_OK) return r;
   r = attach_intermediate(ctx, ctx.targets.names().stencil_buffer, message, "stencil mark");
   if (r != SSS_OK) return r;
@@ -40,17 +45,18 @@ sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, i
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
   // The stencil marked from alpha, then the host-stencil passes with it: only translucent pixels
   // are shaded by the blur; the rest are copied (horizontal) or left alone (vertical).
-  sss_result r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
-  if (r != SSS_OK) return r;
-  begin_passes(ctx, run.draw_rect);
-  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
-  if (r != SSS_OK) return r;
   StencilInput own;  // the module's stencil holds 1 where translucent
   own.ref = 1;
   own.mask = 0xFF;
   FilterRun inner = run;
   inner.stencil = &own;
   inner.stencil_ready = true;
+  // Every program and target of the passes first: nothing is built or allocated after the mark's draw.
+  sss_result r = prepare_fragment(ctx, inner, message);
+  if (r != SSS_OK) return r;
+  begin_passes(ctx, run.draw_rect);
+  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
+  if (r != SSS_OK) return r;
   return run_fragment(ctx, inner, message);
 }
 

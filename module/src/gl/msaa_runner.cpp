@@ -28,14 +28,18 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** reso
   r = ctx.targets.ensure_msaa_targets(run.color.internal_format, run.color.width, run.color.height,
                                       !run.identity && write_back, message);
   if (r == SSS_OK && write_back && !run.identity) r = ctx.targets.ensure_sample_copy(run.color, message);
-  return r;
+  if (r != SSS_OK || run.identity) return r;
+  // The single-sample passes' stencil copy and targets too: nothing is allocated after the first draw.
+  const GLint stencil_format = run.stencil != nullptr ? run.stencil->texture.internal_format
+                                                      : static_cast<GLint>(DEPTH24_STENCIL8);
+  return ctx.targets.ensure_stencil_buffer(stencil_format, run.color.width, run.color.height, message);
 }
 
 sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram& p, std::string* message) {
   const Functions& f = ctx.gl;
   begin_passes(ctx, run.viewport);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().resolve_framebuffer);
-  const sss_result r = check_framebuffer(f, "MSAA resolve", message);
+  const sss_result r = check_framebuffer(ctx, "MSAA resolve", message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss msaa resolve");
   const math::PassConstants& k = run.resolve_constants;
@@ -71,6 +75,16 @@ FilterRun resolved_run(const FilterRun& run, const Targets& t) {
   return inner;
 }
 
+// The run of the single-sample passes: on the resolved images, behind the host's stencil (resolved
+// by the blit) or `own`, the module's, marked from the resolved alpha; either is in the module's
+// stencil buffer before they run.
+FilterRun passes_run(const FilterRun& run, const Targets& t, const StencilInput* own) {
+  FilterRun inner = resolved_run(run, t);
+  if (!run.identity && run.stencil == nullptr) inner.stencil = own;
+  inner.stencil_ready = true;
+  return inner;
+}
+
 // Copies the host's samples: the write pass reads them while the host texture is its target.
 sss_result copy_samples(PassContext& ctx, const FilterRun& run, std::string* message) {
   const Functions& f = ctx.gl;
@@ -81,11 +95,11 @@ sss_result copy_samples(PassContext& ctx, const FilterRun& run, std::string* mes
   f.FramebufferTexture2D(READ_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, run.color.name, 0);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.sample_copy_framebuffer);
   sss_result r = SSS_OK;
-  if (f.CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
+  if (ctx.check_framebuffers && f.CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
     *message = "the host's multisampled colour texture cannot be read as a framebuffer attachment";
     r = SSS_ERROR_FRAMEBUFFER;
   } else {
-    r = check_framebuffer(f, "MSAA sample copy", message);
+    r = check_framebuffer(ctx, "MSAA sample copy", message);
   }
   if (r == SSS_OK) {
     DebugGroup group(f, ctx.labels, "sss msaa copy of the host's samples");
@@ -102,6 +116,11 @@ void draw_sample_writes(PassContext& ctx, const FilterRun& run, const SampleWrit
   const Targets& t = ctx.targets.names();
   DebugGroup group(f, ctx.labels, "sss msaa per-sample write");
   set_pass_state(f);
+  // With GL_MULTISAMPLE off (a host may switch it off for its own passes) the GL ignores the sample
+  // mask, and each draw would write every sample of its pixels, the opaque ones included. It acts
+  // on multisampled targets alone, so this is the one draw that needs it (and the state guard
+  // saves it with the MSAA path's other state). ES has no such switch: it is always on there.
+  f.Enable(MULTISAMPLE);
   f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value in every sample
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
   f.UseProgram(p.program);
@@ -129,36 +148,41 @@ sss_result write_samples(PassContext& ctx, const FilterRun& run, std::string* me
   if (r != SSS_OK) return r;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().sample_write_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, run.color.name, 0);
-  r = check_framebuffer(f, "MSAA per-sample write", message);
+  r = check_framebuffer(ctx, "MSAA per-sample write", message);
   if (r == SSS_OK) draw_sample_writes(ctx, run, *program);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, 0, 0);
   return r;
 }
 }  // namespace
 
+sss_result prepare_msaa(PassContext& ctx, const FilterRun& run, std::string* message) {
+  ResolveProgram* resolve_program = nullptr;
+  const sss_result r = prepare(ctx, run, &resolve_program, message);
+  if (r != SSS_OK) return r;
+  const StencilInput own;  // only whether there is one decides what is built
+  return prepare_fragment(ctx, passes_run(run, ctx.targets.names(), &own), message);  // identity: nothing
+}
+
 sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message) {
   if (run.identity && run.writes_back()) return SSS_OK;  // in place: nothing changes
-  ResolveProgram* resolve_program = nullptr;
-  sss_result r = prepare(ctx, run, &resolve_program, message);
+  // Everything built and allocated before the resolve, the first draw.
+  sss_result r = prepare_msaa(ctx, run, message);
+  ResolveProgram* resolve_program = nullptr;  // built by prepare_msaa: only looked up here
+  if (r == SSS_OK) r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, &resolve_program, message);
   if (r == SSS_OK) r = resolve(ctx, run, *resolve_program, message);
-  if (r != SSS_OK) return r;
-  FilterRun inner = resolved_run(run, ctx.targets.names());
-  if (run.identity) return run_fragment(ctx, inner, message);  // copies the resolved colour into the output
-
-  // The stencil: the host's (resolved by the blit) or the module's, marked from alpha.
-  r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
   if (r != SSS_OK) return r;
   StencilInput own;
   own.ref = 1;
   own.mask = 1;
+  const FilterRun inner = passes_run(run, ctx.targets.names(), &own);
+  if (run.identity) return run_fragment(ctx, inner, message);  // copies the resolved colour into the output
+
   if (run.stencil != nullptr) {
     r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
   } else {
     r = mark_stencil_from_alpha(ctx, ctx.targets.names().resolved_color, run.color.width, run.color.height, message);
-    inner.stencil = &own;
   }
   if (r != SSS_OK) return r;
-  inner.stencil_ready = true;
   r = run_fragment(ctx, inner, message);
   if (r != SSS_OK || !run.writes_back()) return r;
   return write_samples(ctx, run, message);

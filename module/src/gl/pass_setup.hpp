@@ -38,6 +38,9 @@ struct PassContext {
   bool labels;
   PassQueries* queries;  // nullptr: this run is not measured
   int draws = 0;         // full-screen draws and dispatches so far
+  // glCheckFramebufferStatus on each framebuffer the run attaches (SeparableFilter::run decides:
+  // off only where an earlier successful run checked the same attachments).
+  bool check_framebuffers = true;
 };
 
 // The measurement of one frame's passes (sss_get_stats): every call is a no-op when the run is not
@@ -69,6 +72,8 @@ class FrameMeasurement {
 // The fixed-function state of the passes (set_pass_state), the vertex array and the viewport.
 void begin_passes(PassContext& ctx, const std::array<int, 4>& rect);
 sss_result check_framebuffer(const Functions& gl, const char* which, std::string* message);
+// The same, or SSS_OK without asking where the run does not check (ctx.check_framebuffers).
+sss_result check_framebuffer(const PassContext& ctx, const char* which, std::string* message);
 // The host's depth-stencil into the module's stencil buffer, which is left on the intermediate
 // framebuffer.
 sss_result copy_stencil(PassContext& ctx, const StencilInput& stencil, int width, int height, std::string* message);

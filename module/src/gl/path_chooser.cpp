@@ -42,6 +42,13 @@ void PathChooser::forget() {
   trials_started_ = 0;
 }
 
+void PathChooser::prewarm() {
+  if (!timer_) return;
+  for (Pending& p : pending_) {
+    if (p.query == 0) gl_->GenQueries(1, &p.query);
+  }
+}
+
 void PathChooser::reset(std::uint64_t key) {
   key_ = key;
   has_key_ = true;

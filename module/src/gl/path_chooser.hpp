@@ -29,6 +29,9 @@ class PathChooser {
   void init(const Functions* gl, bool trustworthy_timer);
   void destroy();  // deletes the query objects (they must exist in the current context)
   void forget();   // drops the names (context lost)
+  // Makes the query objects the trials will use now rather than during the first frames
+  // (sss_prepare); nothing where nothing is timed.
+  void prewarm();
 
   struct Choice {
     int path = fragment;

@@ -15,6 +15,12 @@ namespace sss::gl {
 // vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
 // when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_fragment (and the cross-bilateral runner) build and allocate before they draw: the
+// runners that draw before they call run_fragment (masked, MSAA) call it first, so that no program
+// build or allocation fails after the first draw (sss.h: only a GL error the draws raised does);
+// sss_prepare makes the same ahead (prewarm.cpp), so the two cannot drift apart.
+sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.
 sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
 // The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
@@ -27,6 +33,8 @@ sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* messa
 // The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
 // above 0 (left on the intermediate framebuffer). Draws over the current viewport.
 sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message);
+// The mark's program and the module's DEPTH24_STENCIL8 stencil buffer at this size.
+sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message);
 
 // SSS_PATH_COMPUTE (compute_runner.cpp, OpenGL 4.3+): "" when `run` can take it, else why not.
 const char* compute_unavailable(const Functions& gl, const FilterRun& run);
@@ -35,5 +43,9 @@ sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* mess
 // Multisampled colour and depth (msaa_runner.cpp): resolve, the fragment passes on the resolved
 // images, and, in place, the per-sample write-back.
 sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_msaa builds and allocates before its first draw (the resolve): its own programs and
+// targets, the stencil buffer, and prepare_fragment's for the passes on the resolved images; also
+// what sss_prepare makes ahead for a multisampled frame (prewarm.cpp).
+sss_result prepare_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
 
 }  // namespace sss::gl

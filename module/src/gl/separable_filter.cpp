@@ -59,7 +59,12 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
   const auto compute_ok = [&] { return !run.identity && *compute_unavailable(*gl_, run) == '\0'; };
   PathChooser::Choice choice;
   switch (run.path) {
-    case SSS_PATH_COMPUTE: choice.path = compute_ok() ? PathChooser::compute : PathChooser::fragment; break;
+    case SSS_PATH_COMPUTE: {
+      const char* refusal = run.identity ? "" : compute_unavailable(*gl_, run);
+      choice.path = !run.identity && *refusal == '\0' ? PathChooser::compute : PathChooser::fragment;
+      note_compute_refusal(refusal);
+      break;
+    }
     case SSS_PATH_FRAGMENT_MASKED:
       choice.path = masked_available(run) ? PathChooser::masked : PathChooser::fragment;
       break;
@@ -79,14 +84,31 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
   return choice;
 }
 
+void SeparableFilter::note_compute_refusal(const char* reason) {
+  // The reasons are string literals: a new one is a different pointer. Logged when it changes, not
+  // every frame.
+  if (reason == compute_refusal_) return;
+  compute_refusal_ = reason;
+  if (*reason != '\0' && log_) {
+    log_(SSS_LOG_INFO, std::string("SSS_PATH_COMPUTE: the frame takes the fragment path: ") + reason);
+  }
+}
+
 sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, measure_ ? &queries_ : nullptr};
+  ctx.check_framebuffers = run.verify;
   if (run.color.multisampled()) {
     const sss_result r = run_msaa(ctx, run, message);
     last_draws_ = ctx.draws;
     return r;
   }
   const PathChooser::Choice choice = choose_path(run);
+  const unsigned path = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
+                        : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
+                                                             : SSS_PATH_FRAGMENT;
+  // A steady frame's framebuffers are the last run's only if it took the same path (SSS_PATH_AUTO
+  // tries each in turn).
+  ctx.check_framebuffers = run.verify || path != last_path_;
   chooser_.begin(choice);
   sss_result r = SSS_OK;
   switch (choice.path) {
@@ -96,11 +118,7 @@ sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
   }
   chooser_.end();
   last_draws_ = ctx.draws;
-  if (r == SSS_OK) {
-    last_path_ = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
-                 : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
-                                                      : SSS_PATH_FRAGMENT;
-  }
+  if (r == SSS_OK) last_path_ = path;
   return r;
 }
 

@@ -23,6 +23,9 @@
 
 namespace sss::gl {
 
+// A texture name that stands for "given" in the FilterRun of SeparableFilter::prewarm.
+inline constexpr GLuint kPrewarmPlaceholder = 0xFFFFFFFFu;
+
 class SeparableFilter {
  public:
   // Builds the objects that do not depend on frame size and the most common program variants, so a
@@ -46,6 +49,14 @@ class SeparableFilter {
   // forget()s them.
   void destroy();
   sss_result run(const FilterRun& run, std::string* message);
+  // Builds every program and allocates every target a frame like `run` can need, on each path
+  // run.path lets it take (prewarm.cpp), so that run() on such a frame builds and allocates
+  // nothing (sss_prepare). `run` describes the frame's textures by format, size and sample count;
+  // their names are 0 or, where FilterRun tells a texture's presence by its name (a separate
+  // output, the normals), kPrewarmPlaceholder: nothing is bound or drawn. run.identity and
+  // run.target_complete are ignored (the blur is prepared all the same, and with the compute path
+  // the fragment passes an incomplete target would take).
+  sss_result prewarm(const FilterRun& run, std::string* message);
   // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
   unsigned last_run_path() const { return last_path_; }
 
@@ -66,6 +77,8 @@ class SeparableFilter {
   // The path a frame takes: the one asked for, the one SSS_PATH_AUTO's timing chose, or the plain
   // fragment passes where the one asked for cannot run this frame.
   PathChooser::Choice choose_path(const FilterRun& run);
+  // Logs (INFO) why SSS_PATH_COMPUTE gives way to the fragment path, when the reason changes.
+  void note_compute_refusal(const char* reason);
 
   const Functions* gl_ = nullptr;
   Log log_;
@@ -79,6 +92,7 @@ class SeparableFilter {
   PathChooser chooser_;
   int last_draws_ = 0;
   unsigned last_path_ = SSS_PATH_FRAGMENT;
+  const char* compute_refusal_ = "";  // compute_unavailable()'s last answer for SSS_PATH_COMPUTE
 };
 
 }  // namespace sss::gl

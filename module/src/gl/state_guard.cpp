@@ -2,8 +2,12 @@
 
 namespace sss::gl {
 
-StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(enabled) {
+StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
+    : gl_(gl), enabled_(enabled), scope_(scope) {
   if (!enabled_) return;
+  // What the context lacks is never changed either.
+  scope_.image_unit = scope_.image_unit && gl_.has_compute;
+  scope_.multisample = scope_.multisample && gl_.has_multisample_textures();  // an invalid enum on ES 3.0
   gl_.GetIntegerv(CURRENT_PROGRAM, &program_);
   gl_.GetIntegerv(VERTEX_ARRAY_BINDING, &vertex_array_);
   gl_.GetIntegerv(DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
@@ -11,17 +15,20 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
   gl_.GetIntegerv(RENDERBUFFER_BINDING, &renderbuffer_);
   gl_.GetIntegerv(PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
   gl_.GetIntegerv(ACTIVE_TEXTURE, &active_texture_);
-  for (int unit = 0; unit < kUnitCount; ++unit) {
+  for (int unit = 0; unit < units(); ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
-    if (gl_.has_multisample_textures()) {  // an invalid enum on ES 3.0
+    if (scope_.multisample) {
       gl_.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &multisample_textures_[static_cast<std::size_t>(unit)]);
     }
     gl_.GetIntegerv(SAMPLER_BINDING, &samplers_[static_cast<std::size_t>(unit)]);
   }
   gl_.ActiveTexture(static_cast<GLenum>(active_texture_));
   gl_.GetIntegerv(VIEWPORT, viewport_.data());
-  if (gl_.has_msaa_path()) gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);  // never set on ES
+  if (msaa_write_back_in_scope()) {
+    gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);
+    multisample_ = gl_.IsEnabled(MULTISAMPLE);
+  }
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
   if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
   if (gl_.desktop()) {
@@ -34,7 +41,7 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
     gl_.GetIntegerv(POLYGON_MODE, polygon_mode_.data());
   }
   gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
-  if (gl_.has_compute) {
+  if (scope_.image_unit) {
     gl_.GetIntegeri_v(IMAGE_BINDING_NAME, 0, &image_unit_.name);
     gl_.GetIntegeri_v(IMAGE_BINDING_LEVEL, 0, &image_unit_.level);
     gl_.GetBooleani_v(IMAGE_BINDING_LAYERED, 0, &image_unit_.layered);
@@ -42,6 +49,7 @@ StateGuard::StateGuard(const Functions& gl, bool enabled) : gl_(gl), enabled_(en
     gl_.GetIntegeri_v(IMAGE_BINDING_ACCESS, 0, &image_unit_.access);
     gl_.GetIntegeri_v(IMAGE_BINDING_FORMAT, 0, &image_unit_.format);
   }
+  if (!scope_.stencil) return;
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
   save_stencil_face(STENCIL_BACK_FUNC, STENCIL_BACK_REF, STENCIL_BACK_VALUE_MASK, STENCIL_BACK_FAIL,
@@ -88,7 +96,7 @@ StateGuard::~StateGuard() {
   if (!enabled_) return;
   const uint32_t skip = restore_skip_mask();
   const auto restore = [skip](uint32_t group) { return (skip & group) == 0; };
-  if (restore(restore_group::stencil)) {
+  if (scope_.stencil && restore(restore_group::stencil)) {
     restore_stencil_face(FRONT, front_);
     restore_stencil_face(BACK, back_);
   }
@@ -102,6 +110,9 @@ StateGuard::~StateGuard() {
     for (std::size_t i = 0; i < kDesktopCapabilities.size() && restore(restore_group::desktop_enables); ++i) {
       desktop_capabilities_[i] ? gl_.Enable(kDesktopCapabilities[i]) : gl_.Disable(kDesktopCapabilities[i]);
     }
+    if (msaa_write_back_in_scope() && restore(restore_group::desktop_enables)) {
+      multisample_ ? gl_.Enable(MULTISAMPLE) : gl_.Disable(MULTISAMPLE);
+    }
   }
   if (gl_.has_sample_mask() && restore(restore_group::sample_mask_enable)) {
     sample_mask_ ? gl_.Enable(SAMPLE_MASK) : gl_.Disable(SAMPLE_MASK);
@@ -110,13 +121,13 @@ StateGuard::~StateGuard() {
     capabilities_[i] ? gl_.Enable(kCapabilities[i]) : gl_.Disable(kCapabilities[i]);
   }
   if (restore(restore_group::viewport)) gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  if (gl_.has_msaa_path() && restore(restore_group::sample_mask_value)) {
+  if (msaa_write_back_in_scope() && restore(restore_group::sample_mask_value)) {
     gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
   }
-  for (int unit = 0; unit < kUnitCount && restore(restore_group::texture_units); ++unit) {
+  for (int unit = 0; unit < units() && restore(restore_group::texture_units); ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
-    if (gl_.has_multisample_textures()) {
+    if (scope_.multisample) {
       gl_.BindTexture(TEXTURE_2D_MULTISAMPLE,
                       static_cast<GLuint>(multisample_textures_[static_cast<std::size_t>(unit)]));
     }
@@ -131,7 +142,7 @@ StateGuard::~StateGuard() {
   if (restore(restore_group::draw_framebuffer)) {
     gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
   }
-  if (gl_.has_compute && restore(restore_group::image_unit)) {
+  if (scope_.image_unit && restore(restore_group::image_unit)) {
     // A texture the host deleted meanwhile left the unit by itself (glDeleteTextures unbinds it),
     // so a name that is no texture any more restores as 0.
     const GLuint name = static_cast<GLuint>(image_unit_.name);

@@ -1,5 +1,8 @@
 // Saves, on construction, every GL state the module may change (the list in sss.h) and restores it
 // on destruction. Disabled (a no-op) when the host opted out with SSS_CREATE_NO_STATE_RESTORE.
+// Each saved value is a query (a round trip that stalls a threaded driver), so a caller that knows
+// a part of the list cannot change during the call leaves it out of the Scope: what is not changed
+// needs no restore.
 #pragma once
 
 #include <array>
@@ -20,7 +23,7 @@ enum : uint32_t {
   color_mask = 1u << 1,
   polygon_mode = 1u << 2,     // desktop
   clip_distances = 1u << 3,   // desktop
-  desktop_enables = 1u << 4,  // FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP
+  desktop_enables = 1u << 4,  // FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP; MULTISAMPLE (in the multisample scope)
   sample_mask_enable = 1u << 5,
   enables = 1u << 6,          // kCapabilities
   viewport = 1u << 7,
@@ -44,9 +47,21 @@ std::atomic<uint32_t>& restore_skip_mask_for_tests();  // 0: restore everything
 // Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
 constexpr int kUnitCount = 4;
 
+// The parts of the list a call may change; everything else is saved always. The default is all.
+struct GuardScope {
+  bool image_unit = true;    // image unit 0: only the compute path binds it
+  bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
+                             // masked path's or the MSAA path's)
+  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE and
+                             // GL_MULTISAMPLE: the MSAA path, and the texture query's probe of a
+                             // texture's target
+  bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
+};
+
 class StateGuard {
  public:
-  StateGuard(const Functions& gl, bool enabled);
+  using Scope = GuardScope;
+  StateGuard(const Functions& gl, bool enabled, const Scope& scope = Scope{});
   ~StateGuard();
   StateGuard(const StateGuard&) = delete;
   StateGuard& operator=(const StateGuard&) = delete;
@@ -60,20 +75,25 @@ class StateGuard {
   static constexpr std::array<GLenum, 9> kCapabilities = {
       SCISSOR_TEST,       DEPTH_TEST,        STENCIL_TEST,    BLEND, CULL_FACE,
       RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, POLYGON_OFFSET_FILL};
-  // Desktop GL only.
+  // Desktop GL only; the passes switch them off.
   static constexpr std::array<GLenum, 3> kDesktopCapabilities = {FRAMEBUFFER_SRGB, DEPTH_CLAMP, COLOR_LOGIC_OP};
 
   void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
   void restore_stencil_face(GLenum face_enum, const StencilFace& face) const;
+  int units() const { return scope_.unit3 ? kUnitCount : kUnitCount - 1; }
+  // GL_SAMPLE_MASK_VALUE and GL_MULTISAMPLE: set by the desktop MSAA write-back only (never on ES).
+  bool msaa_write_back_in_scope() const { return scope_.multisample && gl_.has_msaa_path(); }
 
   const Functions& gl_;
   bool enabled_;
+  Scope scope_;
   GLint program_ = 0, vertex_array_ = 0, draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint active_texture_ = 0, unpack_buffer_ = 0;
   std::array<GLint, kUnitCount> textures_{}, samplers_{};
   std::array<GLint, kUnitCount> multisample_textures_{};  // GL 3.2+ / ES 3.1+ only
   GLint sample_mask_value_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the desktop MSAA write-back sets it)
+  GLboolean multisample_ = 1;     // the GL_MULTISAMPLE enable (the desktop MSAA write-back switches it on)
   std::array<GLint, 4> viewport_{};
   std::array<GLboolean, kCapabilities.size()> capabilities_{};
   std::array<GLboolean, kDesktopCapabilities.size()> desktop_capabilities_{};
@@ -90,7 +110,8 @@ class StateGuard {
 };
 
 // Sets the fixed-function state the passes need (after a StateGuard saved it): everything that
-// could drop or alter a full-screen triangle's fragments is switched off.
+// could drop or alter a full-screen triangle's fragments is switched off. (GL_MULTISAMPLE, which
+// acts on multisampled targets alone, is the MSAA write-back's to switch on.)
 void set_pass_state(const Functions& gl);
 
 }  // namespace sss::gl

@@ -1,0 +1,94 @@
+#include "steady_frame.hpp"
+
+#include "context.hpp"
+#include "validation.hpp"
+
+namespace sss::api {
+
+namespace {
+
+// Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals.
+std::array<std::uint32_t, 5> names_of(const sss_frame& frame) {
+  return {frame.color_texture, frame.depth_texture, frame.output_texture,
+          frame.stencil != nullptr ? frame.stencil->depth_stencil_texture : 0u, frame.normal_texture};
+}
+
+std::array<std::uint32_t, 5> formats_of(const sss_frame& frame) {
+  return {frame.color_format, frame.depth_format, frame.output_texture != 0 ? frame.output_format : 0u,
+          frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u};
+}
+
+}  // namespace
+
+bool is_steady(const sss_context& ctx, const sss_frame& frame) {
+  const SteadyFrame& s = ctx.steady;
+  if (!s.valid) return false;
+  const std::array<std::uint32_t, 5> names = names_of(frame);
+  const std::array<std::uint32_t, 5> formats = formats_of(frame);
+  return frame_described(frame) && names == s.names && formats == s.formats &&
+         frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
+         frame.msaa_depth_resolve == s.msaa_depth_resolve && ctx.kernel_revision == s.kernel_revision &&
+         ctx.cbf_kernel_revision == s.cbf_kernel_revision && ctx.settings.path == s.path &&
+         ctx.settings.cross_bilateral == s.cross_bilateral && ctx.settings.follow_surface == s.follow_surface;
+}
+
+void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
+  const SteadyFrame& s = ctx.steady;
+  run->color = s.color;
+  run->depth = s.depth;
+  run->output = s.output;
+  run->normals = s.normals;
+  if (frame.stencil != nullptr) {
+    stencil->texture = s.stencil;
+    stencil->ref = frame.stencil->ref;
+    stencil->mask = frame.stencil->mask;
+    run->stencil = stencil;
+  }
+}
+
+void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterRun& run) {
+  SteadyFrame& s = ctx->steady;
+  const std::array<std::uint32_t, 5> names = names_of(frame);
+  const std::array<std::uint32_t, 5> formats = formats_of(frame);
+  s.valid = frame_described(frame);  // an undescribed frame is asked again every time
+  s.names = names;
+  s.formats = formats;
+  s.width = frame.texture_width;
+  s.height = frame.texture_height;
+  s.frame_flags = frame.flags;
+  s.msaa_depth_resolve = frame.msaa_depth_resolve;
+  s.kernel_revision = ctx->kernel_revision;
+  s.cbf_kernel_revision = ctx->cbf_kernel_revision;
+  s.path = ctx->settings.path;
+  s.cross_bilateral = ctx->settings.cross_bilateral;
+  s.follow_surface = ctx->settings.follow_surface;
+  s.identity = run.identity;
+  s.color = run.color;
+  s.depth = run.depth;
+  s.output = run.output;
+  s.normals = run.normals;
+  s.stencil = run.stencil != nullptr ? run.stencil->texture : gl::TextureInfo{};
+}
+
+gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame, bool steady) {
+  const unsigned path = ctx.settings.path;
+  const bool msaa = !steady || ctx.steady.color.multisampled();
+  gl::StateGuard::Scope scope;
+  scope.image_unit = path == SSS_PATH_COMPUTE || path == SSS_PATH_AUTO;
+  scope.multisample = msaa;
+  scope.stencil = frame.stencil != nullptr || path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || msaa;
+  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1;
+  return scope;
+}
+
+}  // namespace sss::api
+
+extern "C" {
+
+SSS_API sss_result sss_gl_context_changed(sss_context* ctx) {
+  if (ctx == nullptr) return sss::api::fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  ctx->steady.valid = false;  // the next frame checks the context, and its objects in it
+  return SSS_OK;
+}
+
+}  // extern "C"

@@ -1,0 +1,79 @@
+// sss_prepare's GPU side: the programs and targets a frame will need, built and allocated before
+// it, so that its run() compiles and allocates nothing (a compile or allocation in the middle of a
+// game is a visible hitch). Each path asks its runner's own prepare_* function (runners.hpp), the
+// very calls the runner makes before its first draw; only what a runner makes as it draws (the
+// stencil mark's program and buffer, the host stencil's copy, the compute path's two programs) is
+// spelt out here, next to the runner it follows. The prewarm test (tests/gl/prewarm_test.cpp)
+// counts the GL creations of the first frame after it: any drift shows there.
+#include "blur_pass.hpp"
+#include "runners.hpp"
+#include "separable_filter.hpp"
+
+namespace sss::gl {
+
+namespace {
+
+// The host's stencil copied into the module's buffer (pass_setup.cpp copy_stencil allocates it).
+sss_result host_stencil_resources(PassContext& ctx, const FilterRun& run, std::string* message) {
+  if (run.stencil == nullptr || run.stencil_ready) return SSS_OK;
+  return ctx.targets.ensure_stencil_buffer(run.stencil->texture.internal_format, run.color.width, run.color.height,
+                                           message);
+}
+
+// run_fragment: the separable passes of every term, or the cross-bilateral mode's two passes.
+sss_result prewarm_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  const sss_result r = prepare_fragment(ctx, run, message);
+  return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
+}
+
+// run_masked: the stencil marked from alpha, then the fragment passes behind it.
+sss_result prewarm_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
+  GLuint mark = 0;
+  const sss_result r = stencil_mark_resources(ctx, run.color.width, run.color.height, &mark, message);
+  if (r != SSS_OK) return r;
+  StencilInput own;
+  FilterRun inner = run;
+  inner.stencil = &own;
+  inner.stencil_ready = true;
+  return prewarm_fragment(ctx, inner, message);
+}
+
+// run_compute (compute_runner.cpp): its two dispatches' programs (the vertical one writes the
+// target's image format) and the intermediate.
+sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* message) {
+  BlurProgram* unused = nullptr;
+  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre), 0, &unused, message);
+  if (r == SSS_OK) {
+    const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
+    const int format = image_format_index(run.target().internal_format);
+    r = ctx.programs.compute(blur_variant(run, 0, 1, outside), format, &unused, message);
+  }
+  return r == SSS_OK ? ctx.targets.ensure_intermediate(run.color.width, run.color.height, message) : r;
+}
+
+}  // namespace
+
+sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* message) {
+  PassContext ctx{*gl_, programs_, targets_, objects_, labels_, nullptr};
+  FilterRun run = described;
+  run.identity = false;  // what identity settings skip is prepared too: a superset costs only time here
+  if (run.color.multisampled()) return prepare_msaa(ctx, run, message);
+  // The paths choose_path may take for such a frame: the one asked for where it can run, else the
+  // plain fragment passes; SSS_PATH_AUTO any of them (and the timing's queries). Whether the target
+  // is complete, which the compute path needs, is each frame's to say (SSS_FRAME_TARGET_COMPLETE, or
+  // the GL's answer for an undescribed frame): the compute path is prepared where it could run, and
+  // the fragment passes an incomplete target takes instead with it.
+  run.target_complete = true;
+  const bool compute = (run.path == SSS_PATH_COMPUTE || run.path == SSS_PATH_AUTO) &&
+                       *compute_unavailable(*gl_, run) == '\0';
+  const bool masked = (run.path == SSS_PATH_FRAGMENT_MASKED || run.path == SSS_PATH_AUTO) && masked_available(run);
+  const bool fragment = run.path != SSS_PATH_FRAGMENT_MASKED || !masked;
+  sss_result r = SSS_OK;
+  if (fragment) r = prewarm_fragment(ctx, run, message);
+  if (r == SSS_OK && masked) r = prewarm_masked(ctx, run, message);
+  if (r == SSS_OK && compute) r = prewarm_compute(ctx, run, message);
+  if (r == SSS_OK && run.path == SSS_PATH_AUTO) chooser_.prewarm();
+  return r;
+}
+
+}  // namespace sss::gl
