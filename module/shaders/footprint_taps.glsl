@@ -71,18 +71,19 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
   float inner = 0.0;
 #endif
   // Without taps the whole kernel stays on the centre. With taps the centre keeps the kernel out to
-  // the midpoint to the first tap, set in the loop's first step, so a pixel with no tap (a kernel
-  // inside its pixel) looks nothing up.
+  // the midpoint to the first tap, so only a pixel with taps (a kernel wider than its pixel) looks
+  // that up: in a block of its own before the loop, not in the loop's first step, because a SIMD
+  // rasteriser that runs every step's body for all its lanes (llvmpipe) would pay for it each step.
   vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
   vec3 sum = centre * (2.0 * total + u_footprint.yzw);
   vec3 below = total;
   float p = 0.0;
+  if (count > 0) {
+    p = tap_position(1, 0.0, dense, reach_pixels);
+    below = half_cdf(0.5 * p / step_pixels);
+    sum = centre * (2.0 * below + u_footprint.yzw);
+  }
   for (int i = 1; i <= count; ++i) {
-    if (i == 1) {
-      p = tap_position(1, 0.0, dense, reach_pixels);
-      below = half_cdf(0.5 * p / step_pixels);
-      sum = centre * (2.0 * below + u_footprint.yzw);
-    }
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
     vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
     float read = p;
