@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# A Markdown table of the instructions one in-place frame executes (scripts/cost-probe.sh, callgrind
+# on llvmpipe) for each scene and path, for this build's probe and, optionally, a baseline build's:
+# the repeatable counterpart of the benchmark's llvmpipe times.
+#
+#   scripts/cost-table.sh [--size WxH] [--baseline PROBE --baseline-name NAME] > FILE.md
+#
+# PROBE: another checkout's build/release/tests/bench/sss_cost_probe (tests/bench/cost_probe.cpp
+# builds against sss 0.1 too: copy it and its CMake lines there). Default size 640x360 (about 15 s
+# a count; 1920x1080 about 2.5 min).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+size=640x360
+baseline=""
+baseline_name=baseline
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --size) size=$2; shift 2 ;;
+    --baseline) baseline=$2; shift 2 ;;
+    --baseline-name) baseline_name=$2; shift 2 ;;
+    *) echo "cost-table.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+probe=build/release/tests/bench/sss_cost_probe
+count() {  # probe, scene, path
+  scripts/cost-probe.sh "$1" -- --scene "$2" --size "$size" --path "$3" | awk '{print $NF}'
+}
+
+rev=$(git rev-parse --short HEAD)
+echo "# Instructions per frame on llvmpipe ($size, in place, 17 taps, default settings)"
+echo
+echo "Counted by callgrind over one steady \`sss_apply_frame\` + \`glFinish\` (\`scripts/cost-probe.sh\`:"
+echo "the JIT-compiled shaders and the rasteriser included, in one thread); written by"
+echo "\`scripts/cost-table.sh\` at $rev on $(date -u '+%Y-%m-%d %H:%M UTC'). Counts repeat to about 1e-7;"
+echo "they measure work, not time (no cache or memory effects)."
+echo
+if [[ -n $baseline ]]; then
+  echo "| scene | path | $baseline_name | this build ($rev) | ratio |"
+  echo "|---|---|---:|---:|---:|"
+else
+  echo "| scene | path | this build ($rev) |"
+  echo "|---|---|---:|"
+fi
+for path in fragment masked; do
+  for scene in head-close head-mid head-far empty; do
+    now=$(count "$probe" "$scene" "$path")
+    if [[ -n $baseline ]]; then
+      before=$(count "$baseline" "$scene" "$path")
+      ratio=$(awk -v a="$now" -v b="$before" 'BEGIN { printf "%.3f", a / b }')
+      echo "| $scene | $path | $before | $now | $ratio |"
+    else
+      echo "| $scene | $path | $now |"
+    fi
+  done
+done
