@@ -126,13 +126,7 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     if (c.stencil_sampling && !has_stencil_sampling) continue;
-    sss_settings s = settings_;
-    s.path = c.path;
-    s.mode = c.mode;
-    if (c.two_terms) {
-      s.kernel.family = SSS_KERNEL_SVD;
-      s.kernel.rank = 2;
-    }
+    const sss_settings s = path_case_settings(settings_, c.path, c.mode, c.two_terms);
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
     sss_frame f = frame_of(color_, c.stencil ? depth_stencil : depth_, c.output);
     f.stencil = c.stencil ? &stencil : nullptr;

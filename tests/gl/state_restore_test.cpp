@@ -152,12 +152,7 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     sss_settings s;
     sss_default_settings(&s);
     s.world_units_per_mm = 0.05f;
-    s.path = c.path;
-    s.mode = c.mode;
-    if (c.two_terms) {
-      s.kernel.family = SSS_KERNEL_SVD;
-      s.kernel.rank = 2;
-    }
+    s = path_case_settings(s, c.path, c.mode, c.two_terms);
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
     sss_frame f = frame_of(c.msaa ? msaa_color : color, c.msaa ? msaa_depth : c.stencil ? depth_stencil : depth,
                            c.output ? output : 0);

@@ -70,6 +70,16 @@ sss_settings visible_settings(int samples, uint32_t flags, float width) {
   return s;
 }
 
+sss_settings path_case_settings(sss_settings base, uint32_t path, uint32_t mode, bool two_terms) {
+  base.path = path;
+  base.mode = mode;
+  if (two_terms) {
+    base.kernel.family = SSS_KERNEL_SVD;
+    base.kernel.rank = 2;
+  }
+  return base;
+}
+
 void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame) {
   frame->color_format = c.half_color ? GL_RGBA16F : GL_RGBA32F;
   switch (c.depth) {

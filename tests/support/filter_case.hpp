@@ -36,6 +36,10 @@ struct FilterOutcome {
 // Settings whose blur shows clearly on the synthetic scenes: strength .9/.8/.7, falloff 1/.6/.4.
 sss_settings visible_settings(int samples, uint32_t flags, float width);
 
+// `base` run on `path` in `mode`, its kernel made a rank-2 SVD (two terms) when `two_terms`: the
+// settings of a per-path case in the suites that walk every way a frame can run.
+sss_settings path_case_settings(sss_settings base, uint32_t path, uint32_t mode, bool two_terms);
+
 // Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|) (equal values,
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);
