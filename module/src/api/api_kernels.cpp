@@ -6,6 +6,7 @@
 #include <new>
 
 #include "../math/kernel_request.hpp"
+#include "../math/kernel_fits.hpp"
 #include "context.hpp"
 #include "sss/sss_kernels.h"
 #include "validation.hpp"
@@ -125,6 +126,8 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* desc, int32_t max_term
     plan = sss::math::build_kernel_plan(q);
   } catch (const std::bad_alloc&) {
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "sss_kernel_plan: out of memory");
+  } catch (const sss::math::OptimiserUnavailable& e) {
+    return fail(nullptr, SSS_ERROR_UNSUPPORTED, "sss_kernel_plan: %s", e.what());
   } catch (const std::exception& e) {  // the checks above should leave nothing for the math layer to refuse
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "sss_kernel_plan: %s", e.what());
   }

@@ -7,6 +7,7 @@
 #include <new>
 #include <vector>
 
+#include "../math/kernel_fits.hpp"
 #include "context.hpp"
 #include "validation.hpp"
 
@@ -80,6 +81,8 @@ sss_result write_transmittance_terms(Make make, const char* what, float* out_ter
     terms = sss::math::transmittance_terms(make());
   } catch (const std::bad_alloc&) {
     return fail(nullptr, SSS_ERROR_OUT_OF_MEMORY, "transmittance terms of %s: out of memory", what);
+  } catch (const sss::math::OptimiserUnavailable& e) {
+    return fail(nullptr, SSS_ERROR_UNSUPPORTED, "transmittance terms of %s: %s", what, e.what());
   } catch (const std::exception& e) {  // the checks before should leave nothing for the math layer to refuse
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "transmittance terms of %s: %s", what, e.what());
   }
@@ -122,6 +125,8 @@ sss_result update_cbf_kernel(sss_context* ctx, const sss::math::FilterSettings& 
     } catch (const std::bad_alloc&) {
       return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->cbf_profile = %u: out of memory building its kernel",
                   next.cbf_profile);
+    } catch (const sss::math::OptimiserUnavailable& e) {
+      return fail(ctx, SSS_ERROR_UNSUPPORTED, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
     } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
       return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_profile = %u: %s", next.cbf_profile, e.what());
     }
@@ -152,6 +157,8 @@ sss_result update_pass_kernel(sss_context* ctx, const sss::math::FilterSettings&
     } catch (const std::bad_alloc&) {
       return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
                   s.kernel.family);
+    } catch (const sss::math::OptimiserUnavailable& e) {
+      return fail(ctx, SSS_ERROR_UNSUPPORTED, "settings->kernel (family %d): %s", s.kernel.family, e.what());
     } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
       return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", s.kernel.family, e.what());
     }

@@ -1,6 +1,8 @@
 #include "kernel_fits.hpp"
 
+#ifndef SSS_NO_NLOPT
 #include <nlopt.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +28,7 @@ struct GuidedProblem {
   int evaluations = 0;
 };
 
-double guided_objective(unsigned n, const double* a, double* grad, void* data) {
+[[maybe_unused]] double guided_objective(unsigned n, const double* a, double* grad, void* data) {
   auto* p = static_cast<GuidedProblem*>(data);
   ++p->evaluations;
   double f = 0.0;
@@ -43,7 +45,7 @@ double guided_objective(unsigned n, const double* a, double* grad, void* data) {
   return f;
 }
 
-double guided_constraint(unsigned n, const double* a, double* grad, void* data) {
+[[maybe_unused]] double guided_constraint(unsigned n, const double* a, double* grad, void* data) {
   const auto* p = static_cast<const GuidedProblem*>(data);
   double s = 0.0;
   for (unsigned i = 0; i < n; ++i) s += a[i];
@@ -120,6 +122,9 @@ GuidedFit guided_fit(const RadialProfile& profile, int taps, double radius_mm, d
       for (double x : a) sum += x;
       for (double& x : a) x *= std::sqrt(problem.target) / sum;  // start on the constraint
 
+#ifdef SSS_NO_NLOPT
+      throw OptimiserUnavailable("the guided rank-1 fit");
+#else
       nlopt_opt opt = nlopt_create(NLOPT_LD_SLSQP, static_cast<unsigned>(n));
       nlopt_set_min_objective(opt, guided_objective, &problem);
       nlopt_add_equality_constraint(opt, guided_constraint, &problem, 1e-12);
@@ -130,6 +135,7 @@ GuidedFit guided_fit(const RadialProfile& profile, int taps, double radius_mm, d
       double f = 0.0;
       nlopt_optimize(opt, a.data(), &f);  // a stays the best point found whatever the stop reason
       nlopt_destroy(opt);
+#endif
       fit.evaluations += problem.evaluations;
       previous[c] = std::move(a);
     }
@@ -164,7 +170,7 @@ struct GaussianFitProblem {
 // x = [log v_0..N-1, w_r(0..N-1), w_g(...), w_b(...)]. Residuals on the encircled energy: what a
 // blurred image sees, and it keeps the dipole's long tail in the fit (a fit of the density puts
 // too little energy out there).
-double gaussian_fit_objective(unsigned n, const double* x, double* grad, void* data) {
+[[maybe_unused]] double gaussian_fit_objective(unsigned n, const double* x, double* grad, void* data) {
   auto* p = static_cast<GaussianFitProblem*>(data);
   ++p->evaluations;
   const int count = p->count;
@@ -197,7 +203,7 @@ double gaussian_fit_objective(unsigned n, const double* x, double* grad, void* d
 struct ChannelSum {
   int count, channel;
 };
-double weights_sum_constraint(unsigned n, const double* x, double* grad, void* data) {
+[[maybe_unused]] double weights_sum_constraint(unsigned n, const double* x, double* grad, void* data) {
   const auto* cs = static_cast<const ChannelSum*>(data);
   if (grad) std::fill(grad, grad + n, 0.0);
   double s = 0.0;
@@ -247,6 +253,9 @@ std::vector<GaussianTerm> fit_gaussian_sum(const RadialProfile& profile, int cou
       hi[idx(count * (1 + c) + i)] = 1.0;
     }
   }
+#ifdef SSS_NO_NLOPT
+  throw OptimiserUnavailable("the sum-of-Gaussians fit");
+#else
   nlopt_opt opt = nlopt_create(NLOPT_LD_SLSQP, n);
   nlopt_set_min_objective(opt, gaussian_fit_objective, &p);
   std::array<ChannelSum, 3> sums = {{{count, 0}, {count, 1}, {count, 2}}};
@@ -258,6 +267,7 @@ std::vector<GaussianTerm> fit_gaussian_sum(const RadialProfile& profile, int cou
   double f = 0.0;
   nlopt_optimize(opt, x.data(), &f);
   nlopt_destroy(opt);
+#endif
 
   std::vector<GaussianTerm> terms(idx(count));
   for (int i = 0; i < count; ++i) {
@@ -325,15 +335,19 @@ SeparableFit fit_separable(const RadialProfile& target, int taps, double radius_
   std::vector<double> x = {1.0, 0.48, 0.41, 0.28, 1.0, 0.37, 0.3};
   const std::vector<double> lo = {0.05, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const std::vector<double> hi = {20.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  double f = 0.0;
+#ifdef SSS_NO_NLOPT
+  throw OptimiserUnavailable("the eq. (2-3) separable fit");
+#else
   nlopt_opt opt = nlopt_create(NLOPT_LN_BOBYQA, 7);
   nlopt_set_min_objective(opt, separable_objective, &p);
   nlopt_set_lower_bounds(opt, lo.data());
   nlopt_set_upper_bounds(opt, hi.data());
   nlopt_set_xtol_rel(opt, 1e-7);
   nlopt_set_maxeval(opt, 20000);
-  double f = 0.0;
   nlopt_optimize(opt, x.data(), &f);
   nlopt_destroy(opt);
+#endif
   return SeparableFit{x[0], {x[1], x[2], x[3]}, {x[4], x[5], x[6]}, f, p.evaluations};
 }
 

@@ -1,0 +1,108 @@
+// The web demo's WebAssembly side: a WebGL2 context on the page's canvas, the App, and the C
+// functions the page's script calls (web/page/sss_page.js, through Module.ccall). Emscripten only.
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "web_app.hpp"
+
+namespace {
+
+std::unique_ptr<web::App> g_app;
+web::Knobs g_knobs;
+std::string g_text;  // what the last string-returning call returned (valid until the next)
+
+// sss_create_desc.get_proc_address: Emscripten's own table of the WebGL2 entry points.
+void* webgl_get_proc_address(const char* name, void*) { return emscripten_webgl_get_proc_address(name); }
+
+}  // namespace
+
+extern "C" {
+
+// Creates the WebGL2 context on #canvas (width x height), loads the head (preloaded at
+// /assets/head.glb) and the library. 0 on success; else web_message() says why.
+EMSCRIPTEN_KEEPALIVE int web_init(int width, int height) {
+  EmscriptenWebGLContextAttributes attributes;
+  emscripten_webgl_init_context_attributes(&attributes);
+  attributes.majorVersion = 2;
+  attributes.minorVersion = 0;
+  attributes.antialias = EM_FALSE;
+  attributes.depth = EM_FALSE;
+  attributes.preserveDrawingBuffer = EM_TRUE;  // screenshots read the canvas after the frame
+  emscripten_set_canvas_element_size("#canvas", width, height);
+  const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context("#canvas", &attributes);
+  g_app = std::make_unique<web::App>();
+  if (context <= 0) {
+    g_text = "WebGL2 is not available in this browser (emscripten_webgl_create_context: " + std::to_string(context) + ")";
+    return 1;
+  }
+  emscripten_webgl_make_context_current(context);
+  if (!g_app->init(webgl_get_proc_address, nullptr, "/assets/head.glb", width, height)) return 1;
+  g_knobs = g_app->default_knobs();
+  return 0;
+}
+
+// The last error (the library's sss_last_error after a refused setting) or "".
+EMSCRIPTEN_KEEPALIVE const char* web_message() {
+  if (g_app && !g_app->message().empty()) return g_app->message().c_str();
+  return g_text.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* web_gl_renderer() { return g_app ? g_app->renderer().c_str() : ""; }
+
+// The library's defaults: index 0..2 strength, 3..5 falloff, 6 scale, 7 samples.
+EMSCRIPTEN_KEEPALIVE double web_default(int index) {
+  const web::Knobs k = g_app->default_knobs();
+  if (index < 3) return k.strength[index];
+  if (index < 6) return k.falloff[index - 3];
+  return index == 6 ? k.scale : k.samples;
+}
+
+// The page's controls, passed as they are (NaN and out-of-range values included: the library
+// judges them). Returns the sss_result of sss_set_settings.
+EMSCRIPTEN_KEEPALIVE int web_set_knobs(int enabled, float scale, float strength_multiplier, float falloff_multiplier,
+                                       int samples, int follow_surface) {
+  const web::Knobs defaults = g_app->default_knobs();
+  web::Knobs k = defaults;
+  k.enabled = enabled != 0;
+  k.scale = scale;
+  for (int c = 0; c < 3; ++c) {
+    k.strength[c] = defaults.strength[c] * strength_multiplier;
+    k.falloff[c] = defaults.falloff[c] * falloff_multiplier;
+  }
+  k.samples = samples;
+  k.follow_surface = follow_surface != 0;
+  const sss_result r = g_app->set_knobs(k);
+  if (r == SSS_OK) g_knobs = k;
+  return r;
+}
+
+// One frame onto the canvas; returns the sss_result of sss_apply_frame.
+EMSCRIPTEN_KEEPALIVE int web_render(float split) {
+  const sss_result r = g_app->render(split);
+  g_app->scene().blit_to(0);
+  return r;
+}
+
+// Median ms of `frames` frames, each waited for (web::App::time_frames).
+EMSCRIPTEN_KEEPALIVE double web_time_frames(int frames, float split) {
+  const double ms = g_app->time_frames(frames, split);
+  g_app->scene().blit_to(0);
+  return ms;
+}
+
+// The last frame's image, RGBA8 top row first, into out (width * height * 4 bytes).
+EMSCRIPTEN_KEEPALIVE void web_read_pixels(uint8_t* out) {
+  const std::vector<uint8_t> pixels = g_app->pixels_top_first();
+  std::memcpy(out, pixels.data(), pixels.size());
+}
+
+EMSCRIPTEN_KEEPALIVE const char* web_result_string(int r) { return sss_result_string(static_cast<sss_result>(r)); }
+
+}  // extern "C"
+
+int main() { return 0; }  // the page calls web_init once the runtime is ready
