@@ -58,6 +58,7 @@ Knobs App::default_knobs() const {
 
 sss_result App::set_knobs(const Knobs& knobs) {
   sss_settings s;
+  s.struct_size = sizeof s;
   sss_result r = sss_get_settings(sss_, &s);
   if (r == SSS_OK) {
     s.scale = knobs.scale;
