@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project needs, only those that are missing.
 #
-#   scripts/install-deps.sh [--check] [build|test|demo|all ...]
+#   scripts/install-deps.sh [--check] [build|test|demo|web|all ...]
 #
 #   build   compiler, CMake/Ninja, OpenGL headers, OSMesa/EGL (llvmpipe), GLM, stb, Eigen, NLopt
 #   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
 #           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots); RapidCheck
 #           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets),
-#           clang-tidy (the code.shape test)
+#           clang-tidy (the code.shape test), Emscripten and Chromium (the web.browser test)
 #   demo    build + GLFW, tinygltf, Dear ImGui, and Xvfb (the demo's window test)
+#   web     build + Emscripten, Chromium, tinygltf, nlohmann-json (scripts/run-web-demo.sh)
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
 #
@@ -19,8 +20,11 @@ set -euo pipefail
 readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev libeigen3-dev libnlopt-dev)
 readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
-  nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev clang-tidy)
+  nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev clang-tidy emscripten
+  chromium)
 readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
+# The web demo: emcc compiles tinygltf, nlohmann-json, stb_image and glm from their Debian headers.
+readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev)
 
 usage() {
   sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
@@ -30,7 +34,7 @@ check_only=0
 sets=()
 for arg in "$@"; do
   case "$arg" in
-    build | test | demo | all) sets+=("$arg") ;;
+    build | test | demo | web | all) sets+=("$arg") ;;
     --check) check_only=1 ;;
     -h | --help)
       usage
@@ -51,7 +55,8 @@ for s in "${sets[@]}"; do
     build) wanted+=("${BUILD_PKGS[@]}") ;;
     test) wanted+=("${BUILD_PKGS[@]}" "${TEST_PKGS[@]}") ;;
     demo) wanted+=("${BUILD_PKGS[@]}" "${DEMO_PKGS[@]}") ;;
-    all) wanted+=("${BUILD_PKGS[@]}" "${TEST_PKGS[@]}" "${DEMO_PKGS[@]}") ;;
+    web) wanted+=("${BUILD_PKGS[@]}" "${WEB_PKGS[@]}") ;;
+    all) wanted+=("${BUILD_PKGS[@]}" "${TEST_PKGS[@]}" "${DEMO_PKGS[@]}" "${WEB_PKGS[@]}") ;;
   esac
 done
 
