@@ -41,6 +41,8 @@ class App {
   sss_result set_knobs(const Knobs& knobs);
   // One frame (split: texture x in [0, 1] left of which the unscattered diffuse shows).
   sss_result render(float split);
+  // One frame through another context of the library (the browser test's probes of what WebGL2 lacks).
+  sss_result render_with(sss_context* sss, float split) { return scene_->render(sss, split); }
   // Median milliseconds of `frames` frames, each finished by a one-pixel read (a full round trip).
   double time_frames(int frames, float split);
   std::vector<uint8_t> pixels_top_first() const;

@@ -2,6 +2,7 @@
 // functions the page's script calls (web/page/sss_page.js, through Module.ccall). Emscripten only.
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
+#include <GLES3/gl3.h>
 
 #include <cmath>
 #include <cstring>
@@ -14,10 +15,30 @@ namespace {
 
 std::unique_ptr<web::App> g_app;
 web::Knobs g_knobs;
-std::string g_text;  // what the last string-returning call returned (valid until the next)
+std::string g_text;   // why web_init failed
+std::string g_probe;  // the library's message from the last web_try_without
 
 // sss_create_desc.get_proc_address: Emscripten's own table of the WebGL2 entry points.
 void* webgl_get_proc_address(const char* name, void*) { return emscripten_webgl_get_proc_address(name); }
+
+// For the browser test of what WebGL2 may lack: a loader whose glGetStringi(GL_EXTENSIONS) hides
+// the extensions in g_hidden (each with and without Emscripten's "GL_" prefix), as a browser
+// without them would. A plain function (the GL calls it through a pointer), hence the global.
+std::string g_hidden;  // ",NAME,NAME,"
+
+const GLubyte* hiding_get_stringi(GLenum name, GLuint index) {
+  const GLubyte* value = glGetStringi(name, index);
+  if (name != GL_EXTENSIONS || value == nullptr) return value;
+  std::string ext = reinterpret_cast<const char*>(value);
+  if (ext.compare(0, 3, "GL_") == 0) ext = ext.substr(3);
+  static const GLubyte kHidden[] = "GL_hidden_by_the_test";
+  return g_hidden.find("," + ext + ",") != std::string::npos ? kHidden : value;
+}
+
+void* hiding_get_proc_address(const char* name, void*) {
+  if (std::strcmp(name, "glGetStringi") == 0) return reinterpret_cast<void*>(&hiding_get_stringi);
+  return emscripten_webgl_get_proc_address(name);
+}
 
 }  // namespace
 
@@ -100,6 +121,54 @@ EMSCRIPTEN_KEEPALIVE void web_read_pixels(uint8_t* out) {
   const std::vector<uint8_t> pixels = g_app->pixels_top_first();
   std::memcpy(out, pixels.data(), pixels.size());
 }
+
+// sss_create with the extensions in `names` (comma-separated, no "GL_" prefix) hidden; when that
+// succeeds, one frame with the default settings through that context (read with web_read_pixels),
+// then the context is destroyed. Returns the sss_result of sss_create or of the frame; the
+// library's message in web_probe_message().
+EMSCRIPTEN_KEEPALIVE int web_try_without(const char* names) {
+  g_hidden = std::string(",") + names + ",";
+  sss_create_desc desc{};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = hiding_get_proc_address;
+  sss_context* sss = nullptr;
+  sss_result r = sss_create(&desc, &sss);
+  g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
+  if (r == SSS_OK) {
+    sss_settings s;
+    sss_default_settings(&s);
+    s.world_units_per_mm = 0.001f;
+    r = sss_set_settings(sss, &s);
+    if (r == SSS_OK) r = g_app->render_with(sss, 0.0f);
+    if (r != SSS_OK) g_probe = sss_last_error(sss);
+    sss_destroy(sss);
+  }
+  g_hidden.clear();
+  return r;
+}
+
+// The guided kernel family runs NLopt's optimiser, which the WebAssembly build lacks
+// (SSS_NO_NLOPT): sss_set_settings must refuse it with SSS_ERROR_UNSUPPORTED. Tried on a context of
+// its own; returns the sss_result, the message in web_probe_message().
+EMSCRIPTEN_KEEPALIVE int web_try_fitted_kernel() {
+  sss_create_desc desc{};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = webgl_get_proc_address;
+  sss_context* sss = nullptr;
+  sss_result r = sss_create(&desc, &sss);
+  g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
+  if (r == SSS_OK) {
+    sss_settings s;
+    sss_default_settings(&s);
+    s.kernel.family = SSS_KERNEL_GUIDED;
+    r = sss_set_settings(sss, &s);
+    g_probe = r == SSS_OK ? "" : sss_last_error(sss);
+    sss_destroy(sss);
+  }
+  return r;
+}
+
+EMSCRIPTEN_KEEPALIVE const char* web_probe_message() { return g_probe.c_str(); }
 
 EMSCRIPTEN_KEEPALIVE const char* web_result_string(int r) { return sss_result_string(static_cast<sss_result>(r)); }
 

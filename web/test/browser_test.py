@@ -111,6 +111,30 @@ def check_bad_input(browser, valid_knobs, valid_frame, results):
           "valid knobs again: accepted, the message cleared")
 
 
+def check_missing_extensions(browser, valid_frame, results):
+    """What WebGL2 may lack, hidden from the library by a loader (web_try_without)."""
+    def probe(names):
+        r = browser.evaluate("Module.ccall('web_try_without', 'number', ['string'], [%s])" % json.dumps(names))
+        return r, browser.evaluate("Module.ccall('web_probe_message', 'string', [], [])")
+    r, message = probe("EXT_color_buffer_float,EXT_color_buffer_half_float")
+    results["without_color_buffer_float"] = message
+    check(r != 0 and message.startswith("SSS_ERROR_UNSUPPORTED") and "GL_EXT_color_buffer_float" in message,
+          "without EXT_color_buffer_float: sss_create refuses, naming it: %r" % message)
+    r, message = probe("OES_texture_float_linear")
+    frame = images.rgba_to_rgb(base64.b64decode(browser.evaluate("sssDemo.pixels()")))
+    diffs = images.pixel_differences(frame, valid_frame)
+    results["without_float_linear_max_difference"] = max(diffs)
+    check(r == 0, "without OES_texture_float_linear: the library runs (%r)" % message)
+    check(max(diffs) <= 1, "without OES_texture_float_linear: the frame within 1 level of the usual one (%d)" % max(diffs))
+    r, message = probe("EXT_disjoint_timer_query_webgl2,EXT_disjoint_timer_query")
+    check(r == 0, "without timer queries: the library runs (%r)" % message)
+    r = browser.evaluate("Module.ccall('web_try_fitted_kernel', 'number', [], [])")
+    message = browser.evaluate("Module.ccall('web_probe_message', 'string', [], [])")
+    results["fitted_kernel"] = message
+    check(r != 0 and message.startswith("SSS_ERROR_UNSUPPORTED") and "NLopt" in message,
+          "the guided kernel (an NLopt fit) is refused in WebAssembly: %r" % message)
+
+
 def run_native(frame_bin, work):
     on, off = os.path.join(work, "native-on.ppm"), os.path.join(work, "native-off.ppm")
     out = subprocess.run([frame_bin, "--size", "%dx%d" % (WIDTH, HEIGHT), "--out", on, "--off-out", off,
@@ -142,6 +166,7 @@ def run(args, out_dir, results):
         compare("on", web_on, native_on, out_dir, results)
         compare("off", web_off, native_off, out_dir, results)
         check_bad_input(browser, defaults, web_on, results)
+        check_missing_extensions(browser, web_on, results)
         if args.screenshot:
             browser.evaluate("document.getElementById('split-on').checked = true; sssDemo.update(); true")
             with open(args.screenshot, "wb") as f:
