@@ -157,6 +157,7 @@ def run(args, out_dir, results):
         print("     " + results["page_renderer"])
         defaults = browser.evaluate("sssDemo.knobs()")
         _, web_off = page_frame(browser, dict(defaults, enabled=False))
+        results["web_frame_ms_without_sss"] = round(browser.evaluate("sssDemo.render(0, %d)" % TIMED_FRAMES), 2)
         result, web_on = page_frame(browser, defaults)
         check(result == 0, "the default settings are accepted")
         for name, rgb in (("web-on", web_on), ("web-off", web_off), ("native-on", native_on), ("native-off", native_off)):
@@ -170,7 +171,7 @@ def run(args, out_dir, results):
         if args.screenshot:
             browser.evaluate("document.getElementById('split-on').checked = true; sssDemo.update(); true")
             with open(args.screenshot, "wb") as f:
-                f.write(browser.screenshot_png())
+                f.write(browser.screenshot_png(1160, 660))
     finally:
         browser.close()
         server.close()

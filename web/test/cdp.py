@@ -37,7 +37,7 @@ class _QuietHandler(http.server.SimpleHTTPRequestHandler):
 class Chromium:
     """One headless Chromium with one page; evaluate() runs JavaScript in it."""
 
-    def __init__(self, binary, width=1100, height=760):
+    def __init__(self, binary, width=1200, height=700):
         self.profile = tempfile.TemporaryDirectory(prefix="sss-web-chromium-")
         to_browser_r, self._to_browser = os.pipe()
         self._from_browser, from_browser_w = os.pipe()
@@ -103,8 +103,10 @@ class Chromium:
             time.sleep(0.25)
         raise TimeoutError("the page never satisfied: " + expression)
 
-    def screenshot_png(self):
+    def screenshot_png(self, width, height):
         import base64
+        self.send("Emulation.setDeviceMetricsOverride", {"width": width, "height": height, "deviceScaleFactor": 1,
+                                                         "mobile": False})
         return base64.b64decode(self.send("Page.captureScreenshot", {"format": "png"})["data"])
 
     def close(self):
