@@ -27,14 +27,16 @@ var sssDemo = {
       enabled: $('enabled').checked, scale: parseFloat($('scale').value),
       strength: parseFloat($('strength').value), falloff: parseFloat($('falloff').value),
       samples: parseInt($('samples').value, 10), follow: $('follow').checked,
-      split: $('split-on').checked ? parseFloat($('split').value) : 0.0
+      split: $('split-on').checked ? parseFloat($('split').value) : 0.0,
+      material: $('material').selectedIndex
     };
   },
   // sss_set_settings with the knobs; the library's message on the page when it refuses.
   apply: function (k) {
     var r = Module.ccall('web_set_knobs', 'number',
-        ['number', 'number', 'number', 'number', 'number', 'number'],
-        [k.enabled ? 1 : 0, k.scale, k.strength, k.falloff, isNaN(k.samples) ? -1 : k.samples, k.follow ? 1 : 0]);
+        ['number', 'number', 'number', 'number', 'number', 'number', 'number'],
+        [k.enabled ? 1 : 0, k.scale, k.strength, k.falloff, isNaN(k.samples) ? -1 : k.samples, k.follow ? 1 : 0,
+         k.material || 0]);
     $('error').textContent = r === 0 ? '' : Module.ccall('web_message', 'string', [], []);
     return r;
   },
@@ -86,8 +88,13 @@ var Module = {
     }
     $('strength').max = (1 / maxStrength).toFixed(2);
     $('falloff').max = (1 / maxFalloff).toFixed(2);
+    for (var m = 0; m < Module.ccall('web_material_count', 'number', [], []); ++m) {
+      var option = document.createElement('option');
+      option.textContent = Module.ccall('web_material_label', 'string', ['number'], [m]);
+      $('material').appendChild(option);
+    }
     $('scale-range').addEventListener('input', function () { $('scale').value = $('scale-range').value; sssDemo.update(); });
-    ['enabled', 'scale', 'strength', 'falloff', 'samples', 'follow', 'split-on', 'split'].forEach(function (id) {
+    ['enabled', 'scale', 'strength', 'falloff', 'samples', 'follow', 'split-on', 'split', 'material'].forEach(function (id) {
       $(id).addEventListener(id === 'scale' || id === 'samples' ? 'change' : 'input', sssDemo.update);
     });
     $('controls').disabled = false;

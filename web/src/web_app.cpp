@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <string>
 
 #include "gltf_mesh.hpp"
+#include "web_materials.hpp"
 
 namespace web {
 
@@ -57,6 +59,10 @@ Knobs App::default_knobs() const {
 }
 
 sss_result App::set_knobs(const Knobs& knobs) {
+  if (knobs.material < 0 || knobs.material >= kMaterialCount) {
+    message_ = "material " + std::to_string(knobs.material) + ": the page knows " + std::to_string(kMaterialCount);
+    return SSS_ERROR_INVALID_ARGUMENT;
+  }
   sss_settings s;
   s.struct_size = sizeof s;
   sss_result r = sss_get_settings(sss_, &s);
@@ -65,6 +71,7 @@ sss_result App::set_knobs(const Knobs& knobs) {
     std::copy(knobs.strength, knobs.strength + 3, s.strength);
     std::copy(knobs.falloff, knobs.falloff + 3, s.falloff);
     s.samples = knobs.samples;
+    apply_material(knobs.material, &s);
     s.flags = knobs.follow_surface ? (s.flags | SSS_FOLLOW_SURFACE) : (s.flags & ~static_cast<uint32_t>(SSS_FOLLOW_SURFACE));
     r = sss_set_settings(sss_, &s);
   }

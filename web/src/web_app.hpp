@@ -22,6 +22,7 @@ struct Knobs {
   float falloff[3] = {0, 0, 0};
   int samples = 17;
   bool follow_surface = true;
+  int material = 0;  // index into web::kMaterials (web_materials.hpp)
 };
 
 class App {

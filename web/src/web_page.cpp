@@ -10,6 +10,7 @@
 #include <string>
 
 #include "web_app.hpp"
+#include "web_materials.hpp"
 
 namespace {
 
@@ -86,7 +87,7 @@ EMSCRIPTEN_KEEPALIVE double web_default(int index) {
 // The page's controls, passed as they are (NaN and out-of-range values included: the library
 // judges them). Returns the sss_result of sss_set_settings.
 EMSCRIPTEN_KEEPALIVE int web_set_knobs(int enabled, float scale, float strength_multiplier, float falloff_multiplier,
-                                       int samples, int follow_surface) {
+                                       int samples, int follow_surface, int material) {
   const web::Knobs defaults = g_app->default_knobs();
   web::Knobs k = defaults;
   k.enabled = enabled != 0;
@@ -97,9 +98,16 @@ EMSCRIPTEN_KEEPALIVE int web_set_knobs(int enabled, float scale, float strength_
   }
   k.samples = samples;
   k.follow_surface = follow_surface != 0;
+  k.material = material;
   const sss_result r = g_app->set_knobs(k);
   if (r == SSS_OK) g_knobs = k;
   return r;
+}
+
+// The material control's entries (web_materials.hpp).
+EMSCRIPTEN_KEEPALIVE int web_material_count() { return web::kMaterialCount; }
+EMSCRIPTEN_KEEPALIVE const char* web_material_label(int index) {
+  return index >= 0 && index < web::kMaterialCount ? web::kMaterials[index].label : "";
 }
 
 // One frame onto the canvas; returns the sss_result of sss_apply_frame.

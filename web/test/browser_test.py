@@ -111,6 +111,22 @@ def check_bad_input(browser, valid_knobs, valid_frame, results):
           "valid knobs again: accepted, the message cleared")
 
 
+def check_material(browser, defaults, web_off, web_on, results):
+    """The material control: a measured profile (marble, pre-integrated kernel) scatters differently."""
+    labels = browser.evaluate("Array.from(document.getElementById('material').options).map(o => o.text)")
+    marble = labels.index("marble")
+    result, frame = page_frame(browser, dict(defaults, material=marble))
+    check(result == 0, "material marble: accepted (%s)" % browser.evaluate("document.getElementById('error').textContent"))
+    background = web_off[0:3]
+    n = WIDTH * HEIGHT
+    changed = [frame[i * 3:i * 3 + 3] != web_on[i * 3:i * 3 + 3] for i in range(n)]
+    on_background = sum(1 for i in range(n) if changed[i] and web_off[i * 3:i * 3 + 3] == background)
+    results["marble_changed_share"] = round(sum(changed) / n, 4)
+    check(sum(changed) > 0.1 * n and on_background == 0,
+          "material marble: %d pixels differ from skin, none of them background" % sum(changed))
+    page_frame(browser, defaults)
+
+
 def check_missing_extensions(browser, valid_frame, results):
     """What WebGL2 may lack, hidden from the library by a loader (web_try_without)."""
     def probe(names):
@@ -167,6 +183,7 @@ def run(args, out_dir, results):
         compare("on", web_on, native_on, out_dir, results)
         compare("off", web_off, native_off, out_dir, results)
         check_bad_input(browser, defaults, web_on, results)
+        check_material(browser, defaults, web_off, web_on, results)
         check_missing_extensions(browser, web_on, results)
         if args.screenshot:
             browser.evaluate("document.getElementById('split-on').checked = true; sssDemo.update(); true")
