@@ -159,7 +159,19 @@ def run_native(frame_bin, work):
     return info, images.read_ppm(on)[2], images.read_ppm(off)[2]
 
 
+def page_sizes(page_dir):
+    """What the page loads: bytes as served and gzip -9 (what a server that compresses sends)."""
+    import gzip
+    sizes = {}
+    for name in sorted(os.listdir(page_dir)):
+        with open(os.path.join(page_dir, name), "rb") as f:
+            data = f.read()
+        sizes[name] = {"bytes": len(data), "gzip": len(gzip.compress(data, 9))}
+    return sizes
+
+
 def run(args, out_dir, results):
+    results["page_files"] = page_sizes(args.page)
     native_info, native_on, native_off = run_native(args.frame_bin, out_dir)
     results["native"] = native_info
     server = cdp.StaticServer(args.page)

@@ -28,12 +28,19 @@ def rgba_to_rgb(rgba):
     return bytes(out)
 
 
-def write_png(path, width, height, rgb):
+HEAD_ATTRIBUTION = ('"Infinite, 3D Head Scan" by Lee Perry-Smith is licensed under a Creative Commons Attribution 3.0 '
+                    'Unported License. Based on a work at www.triplegangers.com. Permissions beyond the scope of this '
+                    'license may be available at http://www.ir-ltd.net/')
+
+
+def write_png(path, width, height, rgb, copyright=HEAD_ATTRIBUTION):
+    """An 8-bit RGB PNG; the head scan's attribution in its Copyright text chunk (as the demo's)."""
     def chunk(kind, body):
         return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
     rows = b"".join(b"\0" + rgb[y * width * 3:(y + 1) * width * 3] for y in range(height))
     with open(path, "wb") as f:
         f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+                chunk(b"tEXt", b"Copyright\0" + copyright.encode("latin-1")) +
                 chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
 
 
