@@ -142,6 +142,30 @@ bool Scene::init(const gltf_mesh::Model& model, int width, int height, std::stri
   std::memcpy(light_irradiance_, irradiance, sizeof irradiance);
   view_ = close_up(model, width, height, key);
 
+  const gltf_mesh::Material& material = model.materials.at(0);
+  if (material.base_color_image < 0 || material.normal_image < 0) {
+    *error = "the model's first material needs a base colour and a normal texture";
+    return false;
+  }
+  upload_mesh(model);
+  albedo_ = material_texture(model.images.at(static_cast<size_t>(material.base_color_image)), true);
+  normal_map_ = material_texture(model.images.at(static_cast<size_t>(material.normal_image)), false);
+  shadow_program_ = link(kShadowVertex, kShadowFragment, error);
+  lit_program_ = link(kLitVertex, kLitFragment, error);
+  composite_program_ = link(kFullscreenVertex, kCompositeFragment, error);
+  if (shadow_program_ == 0 || lit_program_ == 0 || composite_program_ == 0) return false;
+  if (!build_targets()) {
+    *error = "the RGBA16F + DEPTH24_STENCIL8 lighting target is incomplete (no EXT_color_buffer_float?)";
+    return false;
+  }
+  if (glGetError() != GL_NO_ERROR) {
+    *error = "a GL error while building the scene";
+    return false;
+  }
+  return true;
+}
+
+void Scene::upload_mesh(const gltf_mesh::Model& model) {
   glGenVertexArrays(1, &vao_);
   glGenVertexArrays(1, &empty_vao_);
   glBindVertexArray(vao_);
@@ -150,7 +174,7 @@ bool Scene::init(const gltf_mesh::Model& model, int width, int height, std::stri
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(model.vertices.size() * sizeof(float)), model.vertices.data(),
                GL_STATIC_DRAW);
   const GLsizei stride = gltf_mesh::Model::kFloatsPerVertex * sizeof(float);
-  const GLint sizes[4] = {3, 3, 2, 4};
+  const GLint sizes[4] = {3, 3, 2, 4};  // position, normal, texcoord, tangent
   size_t offset = 0;
   for (GLuint a = 0; a < 4; ++a) {
     glEnableVertexAttribArray(a);
@@ -163,20 +187,10 @@ bool Scene::init(const gltf_mesh::Model& model, int width, int height, std::stri
                model.indices.data(), GL_STATIC_DRAW);
   index_count_ = static_cast<GLsizei>(model.indices.size());
   glBindVertexArray(0);
+}
 
-  const gltf_mesh::Material& material = model.materials.at(0);
-  if (material.base_color_image < 0 || material.normal_image < 0) {
-    *error = "the model's first material needs a base colour and a normal texture";
-    return false;
-  }
-  albedo_ = material_texture(model.images.at(static_cast<size_t>(material.base_color_image)), true);
-  normal_map_ = material_texture(model.images.at(static_cast<size_t>(material.normal_image)), false);
-
-  shadow_program_ = link(kShadowVertex, kShadowFragment, error);
-  lit_program_ = link(kLitVertex, kLitFragment, error);
-  composite_program_ = link(kFullscreenVertex, kCompositeFragment, error);
-  if (shadow_program_ == 0 || lit_program_ == 0 || composite_program_ == 0) return false;
-
+// The shadow map, the lit pass's targets (what the library reads and writes) and the RGBA8 image.
+bool Scene::build_targets() {
   shadow_map_ = texture_2d(GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
                            nullptr, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
@@ -184,29 +198,25 @@ bool Scene::init(const gltf_mesh::Model& model, int width, int height, std::stri
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_map_, 0);
 
-  diffuse_ = texture_2d(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
-  specular_ = texture_2d(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
-  scattered_ = texture_2d(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
-  depth_ = texture_2d(GL_DEPTH24_STENCIL8, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr, GL_NEAREST);
+  diffuse_ = texture_2d(GL_RGBA16F, width_, height_, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
+  specular_ = texture_2d(GL_RGBA16F, width_, height_, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
+  scattered_ = texture_2d(GL_RGBA16F, width_, height_, GL_RGBA, GL_HALF_FLOAT, nullptr, GL_NEAREST);
+  depth_ = texture_2d(GL_DEPTH24_STENCIL8, width_, height_, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr, GL_NEAREST);
   glGenFramebuffers(1, &lit_fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, lit_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, diffuse_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, specular_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
   glDrawBuffers(2, kDrawBuffers);
-  const GLenum lit_status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  const bool lit_complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 
-  image_ = texture_2d(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, nullptr, GL_NEAREST);
+  image_ = texture_2d(GL_RGBA8, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, nullptr, GL_NEAREST);
   glGenFramebuffers(1, &image_fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, image_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, image_, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
-  if (lit_status != GL_FRAMEBUFFER_COMPLETE) {
-    *error = "the RGBA16F + DEPTH24_STENCIL8 lighting target is incomplete (no EXT_color_buffer_float?)";
-    return false;
-  }
-  return glGetError() == GL_NO_ERROR || (*error = "a GL error while building the scene", false);
+  return lit_complete;
 }
 
 void Scene::draw_shadow() const {

@@ -54,6 +54,8 @@ class Scene {
   void blit_to(GLuint framebuffer) const;
 
  private:
+  void upload_mesh(const gltf_mesh::Model& model);
+  bool build_targets();
   void draw_shadow() const;
   void draw_lit() const;
   void composite(bool scattered, float split) const;
