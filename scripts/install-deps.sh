@@ -27,7 +27,7 @@ readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
 readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev)
 
 usage() {
-  sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 check_only=0
