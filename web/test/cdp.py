@@ -42,10 +42,12 @@ class Chromium:
         to_browser_r, self._to_browser = os.pipe()
         self._from_browser, from_browser_w = os.pipe()
         # The child reads commands on fd 3 and writes replies on fd 4: a shell puts the pipes there
-        # and execs Chromium (subprocess would close fds 3 and 4 if a preexec_fn made them).
+        # and execs Chromium (subprocess would close fds 3 and 4 if a preexec_fn made them). No
+        # sandbox: CI runs as root, where Chromium's refuses to start; no /dev/shm: containers keep it small.
         args = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                 "--remote-debugging-pipe", "--no-first-run", "--no-default-browser-check",
-                "--no-sandbox", "--disable-extensions", "--user-data-dir=" + self.profile.name,
+                "--no-sandbox", "--disable-dev-shm-usage", "--disable-extensions",
+                "--user-data-dir=" + self.profile.name,
                 "--window-size=%d,%d" % (width, height), "about:blank"]
         shell = 'exec "$0" "$@" 3<&%d 4>&%d' % (to_browser_r, from_browser_w)
         self.log = open(os.path.join(self.profile.name, "chromium.log"), "w")
