@@ -1,6 +1,6 @@
 #include "options.hpp"
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 #include <sss_headless.h>
 
 #include <getopt.h>
@@ -266,8 +266,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kMaterial: {
         o->material = -1;
-        for (int m = SSS_MATERIAL_SKIN; m <= SSS_MATERIAL_WHOLEMILK; ++m) {
-          if (std::strcmp(optarg, sss_material_name(m)) == 0) o->material = m;
+        for (int m = SSS_PROFILE_SKIN_DEON; m <= SSS_PROFILE_WHOLEMILK; ++m) {
+          if (std::strcmp(optarg, sss_profile_name(m)) == 0) o->material = m;
         }
         ok = o->material >= 0 || fail("--material wants skin, apple, chicken1, chicken2, cream, ketchup, marble, "
                                       "potato, skimmilk, skin1, skin2 or wholemilk", optarg);

@@ -27,7 +27,7 @@ struct Options {
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
   int kernel_family = 0;         // sss_kernel_family (SSS_KERNEL_SEPARABLE: eq. (1))
   int kernel_rank = 1;           // sum of Gaussians / SVD: terms
-  int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
+  int material = 0;              // sss_material the kernel's profile comes from (SSS_PROFILE_SKIN_DEON)
   float jitter = 0.0f;           // sss_settings.jitter
   unsigned path = 0;             // sss_settings.path: SSS_PATH_FRAGMENT, _COMPUTE or _AUTO
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
