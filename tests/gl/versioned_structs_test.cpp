@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gl_fixture.hpp"
+#include "math/fitters.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sss_test {
@@ -284,6 +285,42 @@ TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   const std::string message = sss_last_error(sss_);
   EXPECT_NE(message.find("frame->struct_size = 100"), std::string::npos) << message;
   EXPECT_NE(message.find("sss_frame"), std::string::npos) << message;
+}
+
+// The runtime builds no fitted kernel by itself (it links neither NLopt nor Eigen): without the tools'
+// fitters registered, settings that need one are refused by name and the old settings stay; after
+// sss_tools_init they are taken. (This binary registers them before main through sss_math: the test
+// takes them away for its span and puts them back.)
+TEST_F(VersionedStructs, FittedKernelsNeedTheToolsRegistered) {
+  struct Reregister {  // whatever happens below, the next tests find the fitters registered
+    ~Reregister() { sss::math::set_fitters(&sss::math::tool_fitters()); }
+  } reregister;
+  sss::math::set_fitters(nullptr);
+  sss_kernel_desc guided;
+  sss_default_kernel_desc(&guided);  // registers the fitters (every sss_tools.h function does) ...
+  sss::math::set_fitters(nullptr);    // ... which this test takes away again
+  guided.family = SSS_KERNEL_GUIDED;
+  sss_settings s;
+  sss_default_settings(&s);
+  s.taps = 9;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  s.kernel = &guided;
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_UNSUPPORTED);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("settings->kernel->family = 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("sss_tools_init"), std::string::npos) << message;
+  EXPECT_EQ(current().kernel, nullptr);  // the old settings stay
+  sss_settings cbf;
+  sss_default_settings(&cbf);
+  cbf.mode = SSS_MODE_CROSS_BILATERAL;
+  cbf.cbf_profile = SSS_PROFILE_APPLE;  // a measured material: its Gaussians are fitted
+  EXPECT_EQ(sss_set_settings(sss_, &cbf), SSS_ERROR_UNSUPPORTED);
+  cbf.cbf_profile = SSS_PROFILE_SKIN_DEON;  // closed form: the runtime builds it alone
+  EXPECT_EQ(sss_set_settings(sss_, &cbf), SSS_OK) << sss_last_error(sss_);
+  sss_tools_init();
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  ASSERT_NE(current().kernel, nullptr);
+  EXPECT_EQ(current().kernel->family, SSS_KERNEL_GUIDED);
 }
 
 }  // namespace
