@@ -20,7 +20,7 @@ struct Options {
   std::vector<Preset> presets = {Preset::kClose, Preset::kMid, Preset::kFar};  // window: the first one
 
   bool sss = true;
-  int samples = 0;               // SSS taps per pass; 0: the library's default
+  int taps = 0;                  // SSS taps per pass (--taps); 0: the library's default
   bool use_stencil = true;
   int msaa = 0;                  // 0, or 4: render into 4x multisampled targets and hand those to the library
   bool follow_surface = true;

@@ -34,20 +34,23 @@ extern "C" {
  * materials). SSS_PROFILE_TABULATED has no place here (a table needs the arrays of sss_profile_desc),
  * nor SSS_PROFILE_MIKKELSEN_2010 (its spike is no radial profile) or SSS_PROFILE_KERNEL. */
 
-/* Shadow filters for sss_lut_desc.shadow_filter: the filter the host's shadow map uses. */
-#define SSS_LUT_SHADOW_BOX 0      /**< box PCF: the penumbra is a linear ramp (the default) */
-#define SSS_LUT_SHADOW_GAUSSIAN 1 /**< Gaussian-weighted PCF, its penumbra spanning ±2σ */
+/** Shadow filters for sss_lut_desc.shadow_filter: the filter the host's shadow map uses. */
+typedef enum sss_lut_shadow_filter {
+  SSS_LUT_SHADOW_BOX = 0,     /**< box PCF: the penumbra is a linear ramp (the default) */
+  SSS_LUT_SHADOW_GAUSSIAN = 1 /**< Gaussian-weighted PCF, its penumbra spanning ±2σ */
+} sss_lut_shadow_filter;
 
-/* Texture formats for sss_lut_desc.format (sss_lut_create_texture). */
-#define SSS_LUT_FORMAT_RGBA16F 0 /**< half floats (the default): 2^-11 relative error */
-#define SSS_LUT_FORMAT_RGBA32F 1 /**< floats, exactly the fill functions' values */
-#define SSS_LUT_FORMAT_RGBA8 2   /**< unsigned normalised bytes, linear (no sRGB): value = byte/255;
-                                      |error| <= 1/510 with SSS_LUT_CPU (rounded to nearest on the host),
-                                      <= 1/255 from the GPU generator (the driver's float-to-unorm rounding) */
+/** Texture formats for sss_lut_desc.format (sss_lut_create_texture). */
+typedef enum sss_lut_format {
+  SSS_LUT_FORMAT_RGBA16F = 0, /**< half floats (the default): 2^-11 relative error */
+  SSS_LUT_FORMAT_RGBA32F = 1, /**< floats, exactly the fill functions' values */
+  SSS_LUT_FORMAT_RGBA8 = 2    /**< unsigned normalised bytes, linear (no sRGB): value = byte/255;
+                                   |error| <= 1/510 with SSS_LUT_CPU (rounded to nearest on the host),
+                                   <= 1/255 from the GPU generator (the driver's float-to-unorm rounding) */
+} sss_lut_format;
 
-/* Which LUT sss_lut_create_texture makes. */
-#define SSS_LUT_DIFFUSE 0
-#define SSS_LUT_SHADOW 1
+/** Which LUT sss_lut_create_texture makes. */
+typedef enum sss_lut_kind { SSS_LUT_DIFFUSE = 0, SSS_LUT_SHADOW = 1 } sss_lut_kind;
 
 /* Flags for sss_lut_desc.flags. */
 /** sss_lut_create_texture: generate on the CPU and upload, instead of the fragment-shader generator. */
@@ -71,8 +74,8 @@ typedef struct sss_lut_desc {
   float world_units_per_mm;  /**< shadow: the scene's scale, finite, (0, 1e6]. Default 0.001 (metres) */
   float new_penumbra;        /**< shadow: width of the sharp penumbra as a fraction of the filter's, (0, 1].
                                   Default 0.25 */
-  int32_t shadow_filter;     /**< SSS_LUT_SHADOW_*. Default SSS_LUT_SHADOW_BOX */
-  int32_t format;            /**< SSS_LUT_FORMAT_* (textures only; the fill functions write floats). Default RGBA16F */
+  int32_t shadow_filter;     /**< sss_lut_shadow_filter. Default SSS_LUT_SHADOW_BOX */
+  int32_t format;            /**< sss_lut_format (textures only; the fill functions write floats). Default RGBA16F */
   int32_t threads;           /**< CPU generation: [0, 256] std::threads, 0 = as many as the hardware has. Default 0 */
   uint32_t flags;            /**< SSS_LUT_* flags. Default 0 */
 } sss_lut_desc;
