@@ -30,7 +30,7 @@ check_prefix() {  # name, prefix
     $(pkg-config --cflags sss-tools) $(pkg-config --libs "${static_flag[@]}" sss-tools)
   LD_LIBRARY_PATH="$PWD/$prefix/lib" "build/consumer-$name/pc_tools"
   # The runtime library needs no NLopt: neither sss.pc nor, shared, libsss.so names it.
-  if pkg-config --libs --static sss | grep -q nlopt; then
+  if pkg-config --libs --static sss | grep nlopt >/dev/null; then
     echo "check-consumers: sss.pc (the runtime) asks for NLopt" >&2
     exit 1
   fi
@@ -61,11 +61,11 @@ if nm -C build/prefix-shared/lib/libsss.so | grep restore_skip_mask; then
   exit 1
 fi
 # The shared runtime needs no NLopt; the shared tools library does.
-if readelf -d build/prefix-shared/lib/libsss.so | grep -q nlopt; then
+if readelf -d build/prefix-shared/lib/libsss.so | grep nlopt >/dev/null; then
   echo "check-consumers: the shared libsss (the runtime) needs NLopt" >&2
   exit 1
 fi
-readelf -d build/prefix-shared/lib/libsss_tools.so | grep -q nlopt
+readelf -d build/prefix-shared/lib/libsss_tools.so | grep nlopt >/dev/null  # the check sees NEEDED entries
 check_prefix shared build/prefix-shared
 echo "== consumer (subdirectory): add_subdirectory of this checkout"
 cmake -S integration/consumer -B build/consumer-subdirectory -G Ninja -DSSS_SOURCE_DIR="$PWD"
