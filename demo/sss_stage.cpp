@@ -31,7 +31,7 @@ SssControls default_sss_controls() {
     c.strength[i] = s.strength[i];
     c.falloff[i] = s.falloff[i];
   }
-  c.samples = s.samples;
+  c.taps = s.taps;
   c.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
   return c;
 }
@@ -41,7 +41,7 @@ std::uint32_t blur_profile(const SssControls &controls) {
     // The families built from a profile blur with the chosen material's; eq. (1) and the artist
     // model have their own shapes, closest to skin.
     const bool profiled = controls.kernel_family != SSS_KERNEL_SEPARABLE && controls.kernel_family != SSS_KERNEL_ARTIST;
-    return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_MATERIAL_SKIN);
+    return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_PROFILE_SKIN_DEON);
   }
   sss_settings s{};
   sss_default_settings(&s);
@@ -70,16 +70,21 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
     s.strength[i] = controls.strength[i];
     s.falloff[i] = controls.falloff[i];
   }
-  s.samples = controls.samples;
+  s.taps = controls.taps;
   s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
   s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
-  s.kernel.family = controls.kernel_family;
-  s.kernel.rank = controls.kernel_rank;
-  s.kernel.profile.material = controls.material;
+  sss_kernel_desc kernel;
+  sss_default_kernel_desc(&kernel);
+  kernel.family = controls.kernel_family;
+  kernel.rank = controls.kernel_rank;
+  kernel.profile.profile = controls.material;
+  s.kernel = controls.kernel_family == SSS_KERNEL_SEPARABLE ? nullptr : &kernel;
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
   if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
+  stage->kernel = kernel;
   stage->settings = s;
+  if (s.kernel != nullptr) stage->settings.kernel = &stage->kernel;
   return true;
 }
 

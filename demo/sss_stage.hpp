@@ -3,7 +3,7 @@
 // into a separate output texture ("after"), with the stencil the lighting pass wrote.
 #pragma once
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 
 #include <glm/mat4x4.hpp>
 
@@ -18,7 +18,7 @@ struct SssControls {
   float scale = 1.0f;            // sss_settings.scale: multiplies every scattering distance (1 = physical size)
   float strength[3] = {0.78f, 0.70f, 0.75f};
   float falloff[3] = {0.57f, 0.13f, 0.08f};
-  int samples = SSS_SAMPLES_MEDIUM;
+  int taps = SSS_TAPS_MEDIUM;     // sss_settings.taps
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL (Mikkelsen 2010) instead of the separable kernel
@@ -26,7 +26,7 @@ struct SssControls {
   // pre-integrated, guided rank-1, artist; the profile's material; the share of jittered taps.
   int kernel_family = SSS_KERNEL_SEPARABLE;
   int kernel_rank = 1;
-  int material = SSS_MATERIAL_SKIN;
+  int material = SSS_PROFILE_SKIN_DEON;
   float jitter = 0.0f;
   // Skipping work: the head's projected bounds, padded by the kernel's reach, as the frame's region
   // of translucent pixels (SSS_FRAME_REGION). (Taps follow each pixel's footprint in the library
@@ -65,6 +65,7 @@ SssControls default_sss_controls();
 struct SssStage {
   sss_context *context = nullptr;
   sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
+  sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
 };
 
 // sss_create with the given loader (a GL context must be current). Prints the error on failure.

@@ -47,7 +47,7 @@ TEST_F(MatchesCpuModel, HardwareDepthWriteBack) {
 }
 
 TEST_F(MatchesCpuModel, EveryPresetAndExtremeTapCount) {
-  for (int samples : {3, SSS_SAMPLES_LOW, SSS_SAMPLES_MEDIUM, SSS_SAMPLES_HIGH, 33, SSS_MAX_SAMPLES}) {
+  for (int samples : {3, SSS_TAPS_LOW, SSS_TAPS_MEDIUM, SSS_TAPS_HIGH, 33, SSS_MAX_TAPS}) {
     SCOPED_TRACE(samples);
     FilterCase c;
     c.settings = visible_settings(samples, true);

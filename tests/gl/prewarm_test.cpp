@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/kernel_of.hpp"
 #include "counting_loader.hpp"
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
@@ -64,9 +65,9 @@ sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
 // Three terms: sum of three Gaussians fitted to a measured material.
 sss_settings several_terms(uint32_t path) {
   sss_settings s = settings_with(path);
-  s.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  s.kernel.rank = 3;
-  s.kernel.profile.material = SSS_MATERIAL_MARBLE;
+  sss_test::kernel_of(s).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  sss_test::kernel_of(s).rank = 3;
+  sss_test::kernel_of(s).profile.profile = SSS_PROFILE_MARBLE;
   return s;
 }
 
@@ -357,7 +358,7 @@ TEST_F(Prewarm, FitsRunInSetSettingsOnlyAndAreKept) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   sss_settings guided = settings_with(SSS_PATH_FRAGMENT);
-  guided.kernel.family = SSS_KERNEL_GUIDED;
+  sss_test::kernel_of(guided).family = SSS_KERNEL_GUIDED;
   const sss_settings marble = several_terms(SSS_PATH_FRAGMENT);
   const sss_settings plain = settings_with(SSS_PATH_FRAGMENT);
   using Clock = std::chrono::steady_clock;
@@ -380,14 +381,14 @@ TEST_F(Prewarm, FitsRunInSetSettingsOnlyAndAreKept) {
   }
   // The largest fit the settings allow: the guided family at 65 taps.
   sss_settings widest = guided;
-  widest.samples = 65;
+  widest.taps = 65;
   std::printf("sss_set_settings: guided rank-1 fit at 65 taps %.1f ms\n", timed(widest));
   // The cross-bilateral mode's measured-material profile is fitted once as well.
   sss_settings cbf = settings_with(SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL);
-  cbf.cbf_profile = SSS_MATERIAL_KETCHUP;
+  cbf.cbf_profile = SSS_PROFILE_KETCHUP;
   const double cbf_fit = timed(cbf);
   sss_settings apple = cbf;
-  apple.cbf_profile = SSS_MATERIAL_APPLE;
+  apple.cbf_profile = SSS_PROFILE_APPLE;
   timed(apple);
   const double cbf_again = timed(cbf);
   EXPECT_EQ(log.count(SSS_LOG_DEBUG, "the cross-bilateral kernel was kept"), 1);

@@ -13,6 +13,7 @@
 #include "gl_session.hpp"
 #include "host_texture_params.hpp"
 #include "validation.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -344,9 +345,13 @@ SSS_API sss_result sss_apply(sss_context* ctx, uint32_t color_texture, uint32_t 
   return sss_apply_frame(ctx, &frame);
 }
 
-SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
+SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  sss_result r = sss::api::check_frame(ctx, frame);
+  sss_frame current;  // an earlier release's frame read into today's layout (versioned_structs.cpp)
+  sss_result r = sss::api::frame_from_caller(ctx, given, &current);
+  if (r != SSS_OK) return r;
+  const sss_frame* frame = &current;
+  r = sss::api::check_frame(ctx, frame);
   if (r != SSS_OK) return r;
   if (!ctx->has_camera) return fail(ctx, SSS_ERROR_INVALID_OPERATION, "no camera: call sss_set_camera before applying");
   const gl::Functions& f = ctx->gl;
@@ -397,10 +402,10 @@ SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
   auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
   if (stats == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats is NULL");
-  if (stats->struct_size != sizeof(sss_stats)) {
-    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats->struct_size = %u: expected sizeof(sss_stats) = %u",
-                stats->struct_size, static_cast<unsigned>(sizeof(sss_stats)));
-  }
+  // Every release so far has the same sss_stats (0.1's 72 bytes on x86-64).
+  const sss_result size = sss::api::check_struct_size(mutable_ctx, "stats->struct_size", "sss_stats", stats->struct_size,
+                                                      {{"0.1, 0.2, 0.3", static_cast<uint32_t>(sizeof(sss_stats))}});
+  if (size != SSS_OK) return size;
   sss_stats s = {};
   s.struct_size = sizeof s;
   switch (ctx->filter.variant()) {

@@ -7,6 +7,7 @@
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -25,10 +26,10 @@ sss_result bad_format(sss_context* ctx, const char* field, std::uint32_t value, 
 sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc) {
   if (desc == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
   const sss_prepare_desc& d = *desc;
-  if (d.struct_size != sizeof(sss_prepare_desc)) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_prepare_desc) = %u",
-                d.struct_size, static_cast<unsigned>(sizeof(sss_prepare_desc)));
-  }
+  // New in 0.3 (main between 0.2 and 0.3 had the same layout).
+  const sss_result size = sss::api::check_struct_size(ctx, "desc->struct_size", "sss_prepare_desc", d.struct_size,
+                                                      {{"0.3", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
+  if (size != SSS_OK) return size;
   if (d.width < 1 || d.height < 1) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->width = %d, height = %d: both must be >= 1", d.width,
                 d.height);

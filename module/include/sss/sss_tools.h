@@ -1,7 +1,15 @@
 /*
- * sss kernels: the GL-free math API for the kernel families of the separable SSS paper and its
- * supplementary, and the radial profiles they are built from (C99, no GL). Included by sss.h;
- * may also be included on its own.
+ * sss tools: the research toolbox beside the runtime (C99, no GL): the kernel families of the
+ * separable SSS paper and its supplementary, the radial profiles they are built from, their fits,
+ * the transmittance terms, and the legacy conversions. Library: sss::tools (CMake) / sss-tools
+ * (pkg-config), which links NLopt and Eigen; the runtime library sss::sss links neither. Includes
+ * <sss/sss.h> (which never includes this header).
+ *
+ * The fitted kernels (SVD, pre-integrated, guided, a sum of Gaussians fitted to a profile) and the
+ * Gaussians fitted to a measured material are built by this library. sss_tools_init registers them
+ * with the runtime, so that sss_settings.kernel and sss_settings.cbf_profile can name them; every
+ * function of this header calls it, so a host that fills its kernel with sss_default_kernel_desc
+ * need not. Without it sss_set_settings refuses them with SSS_ERROR_UNSUPPORTED.
  *
  * Every kernel is a "plan": a sum of separable terms, each one horizontal and one vertical pass of
  * `taps` taps {weight r, weight g, weight b, offset in profile millimetres}:
@@ -15,10 +23,10 @@
  * readable with sss_last_error(NULL) on the calling thread. Outputs are written only on SSS_OK.
  * Thread-safe: no shared state.
  */
-#ifndef SSS_SSS_KERNELS_H
-#define SSS_SSS_KERNELS_H
+#ifndef SSS_SSS_TOOLS_H
+#define SSS_SSS_TOOLS_H
 
-#include "sss_common.h"
+#include "sss.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -39,31 +47,14 @@ typedef enum sss_kernel_family {
 /** The most terms any plan has (sum of Gaussians or SVD at rank 6). */
 #define SSS_KERNEL_MAX_TERMS 6
 
-/** Profile sources (sss_profile_desc.material). The measured materials are those of the
- *  supplementary's §G (from Jensen et al. 2001), as dipole profiles. */
-typedef enum sss_material {
-  SSS_MATERIAL_SKIN = 0, /**< d'Eon–Luebke six-Gaussian skin (the first gaussian_count terms) */
-  SSS_MATERIAL_APPLE = 1,
-  SSS_MATERIAL_CHICKEN1 = 2,
-  SSS_MATERIAL_CHICKEN2 = 3,
-  SSS_MATERIAL_CREAM = 4,
-  SSS_MATERIAL_KETCHUP = 5,
-  SSS_MATERIAL_MARBLE = 6,
-  SSS_MATERIAL_POTATO = 7,
-  SSS_MATERIAL_SKIMMILK = 8,
-  SSS_MATERIAL_SKIN1 = 9,
-  SSS_MATERIAL_SKIN2 = 10,
-  SSS_MATERIAL_WHOLEMILK = 11,
-  SSS_MATERIAL_TABULATED = 12 /**< the caller's table (table_* fields) */
-} sss_material;
-#define SSS_MATERIAL_COUNT 13
 #define SSS_PROFILE_MAX_TABLE 4096
 
 typedef struct sss_profile_desc {
   uint32_t struct_size;         /**< sizeof(sss_profile_desc) */
-  int32_t material;             /**< sss_material, default SSS_MATERIAL_SKIN */
-  int32_t gaussian_count;       /**< SSS_MATERIAL_SKIN: the first 1..6 Gaussians, renormalised; default 6 */
-  int32_t table_size;           /**< SSS_MATERIAL_TABULATED: entries, 1..SSS_PROFILE_MAX_TABLE */
+  int32_t profile;              /**< sss_profile (sss.h): SSS_PROFILE_SKIN_DEON (default), a measured material
+                                     SSS_PROFILE_APPLE..SSS_PROFILE_WHOLEMILK, or SSS_PROFILE_TABULATED */
+  int32_t gaussian_count;       /**< SSS_PROFILE_SKIN_DEON: the first 1..6 Gaussians, renormalised; default 6 */
+  int32_t table_size;           /**< SSS_PROFILE_TABULATED: entries, 1..SSS_PROFILE_MAX_TABLE */
   const float *table_radius_mm; /**< table_size radii, finite, >= 0, strictly increasing */
   const float *table_rgb;       /**< 3 × table_size values R_c(r) in mm⁻², finite, >= 0; linear between
                                      radii, constant inside the first, 0 beyond the last */
@@ -76,7 +67,7 @@ typedef struct sss_profile_desc {
 typedef struct sss_kernel_desc {
   uint32_t struct_size;        /**< sizeof(sss_kernel_desc) */
   int32_t family;              /**< sss_kernel_family; default SSS_KERNEL_SEPARABLE */
-  int32_t taps;                /**< taps per pass, odd, [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES]; default 17 */
+  int32_t taps;                /**< taps per pass, odd, [SSS_MIN_TAPS, SSS_MAX_TAPS]; default 17 */
   int32_t rank;                /**< SUM_OF_GAUSSIANS: Gaussians, SVD: rank, PREINTEGRATED: terms (1: the
                                     supplementary's); 1..6 (default 1); others ignore it */
   uint32_t flags;              /**< SSS_KERNEL_* flags; default 0 */
@@ -98,14 +89,14 @@ SSS_API void sss_default_profile_desc(sss_profile_desc *p);
 /** Fills *d with the defaults above (eq. (1) kernel, Table 1 parameters, 17 taps). NULL is ignored. */
 SSS_API void sss_default_kernel_desc(sss_kernel_desc *d);
 
-/** The material's short name ("apple", "skin" for SSS_MATERIAL_SKIN, "tabulated"), or NULL when
- *  material is outside [0, SSS_MATERIAL_COUNT). */
-SSS_API const char *sss_material_name(int32_t material);
+/** The profile's short name ("apple"; "skin" for SSS_PROFILE_SKIN_DEON, "tabulated", "mikkelsen-2010",
+ *  "kernel"), or NULL when profile is outside [0, SSS_PROFILE_COUNT). */
+SSS_API const char *sss_profile_name(int32_t profile);
 
 /** R_c(r) of the profile at `count` radii into out_rgb (3 floats per radius, mm⁻²).
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT profile, radius_mm or out_rgb NULL; count outside [1, 1e8]; a radius
- *                                     negative or not finite; or the profile invalid (struct_size, material,
+ *                                     negative or not finite; or the profile invalid (struct_size, profile,
  *                                     gaussian_count, table_size, a table pointer NULL, a table value out of range) */
 SSS_API sss_result sss_profile_evaluate(const sss_profile_desc *profile, int32_t count, const float *radius_mm,
                                         float *out_rgb);
@@ -134,18 +125,6 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc *profile, float o
 SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_terms, float *out_taps,
                                    float *out_depth_variance_mm2, int32_t *out_terms, float *out_reach_mm);
 
-/** Mikkelsen 2010, Table 1 (spike 15/18/20 %, one broad Gaussian per channel of variance
- *  2.3/1.4/1.1 mm²): the cross-bilateral mode's default profile (sss_settings.cbf_profile). Not an
- *  sss_material (its spike is a true delta, which R_c(r) cannot hold), so it is a value of its own,
- *  outside [0, SSS_MATERIAL_COUNT). */
-#define SSS_PROFILE_MIKKELSEN_2010 0x100u
-/** For sss_settings.cbf_profile: the profile of sss_settings.kernel.profile, whatever it is (d'Eon's
- *  skin with 1..6 Gaussians, a measured material or your tabulated table), so the cross-bilateral
- *  mode takes every profile the kernel families take. A sum of Gaussians is used as it is; any other
- *  profile is fitted with SSS_PROFILE_FIT_GAUSSIANS Gaussians when sss_set_settings selects it (an
- *  NLopt fit, up to ~0.1 s); no spike in either case. Its transmittance terms:
- *  sss_profile_desc_transmittance_terms with the same sss_profile_desc. */
-#define SSS_PROFILE_KERNEL 0x101u
 /** Gaussians fitted to a measured material's dipole for the cross-bilateral mode and the
  *  transmittance terms (sss_kernel_plan's SSS_KERNEL_SUM_OF_GAUSSIANS fit with rank 4). */
 #define SSS_PROFILE_FIT_GAUSSIANS 4
@@ -156,15 +135,15 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_term
  *  (integration/glsl/sss_transmittance.glsl): out_terms receives up to `capacity` quadruples
  *  {variance in mm², weight r, weight g, weight b} of the same Gaussians the cross-bilateral mode
  *  blurs with; *count the number written. The include evaluates Σ w · exp(-s² / v) at the scaled
- *  thickness s. `profile`, as sss_settings.cbf_profile:
+ *  thickness s. `profile`, an sss_profile as sss_settings.cbf_profile takes it:
  *  - SSS_PROFILE_MIKKELSEN_2010: its three broad Gaussians (the spike has no width and transmits nothing);
- *  - SSS_MATERIAL_SKIN: d'Eon–Luebke's six Gaussians (the 0.0064 mm² one is the blur's spike);
- *  - SSS_MATERIAL_APPLE .. SSS_MATERIAL_WHOLEMILK: SSS_PROFILE_FIT_GAUSSIANS Gaussians fitted to the
- *    material's dipole (an NLopt fit: milliseconds to ~0.1 s; no spike). SSS_MATERIAL_TABULATED is
- *    not accepted (a table needs an sss_profile_desc).
+ *  - SSS_PROFILE_SKIN_DEON: d'Eon–Luebke's six Gaussians (the 0.0064 mm² one is the blur's spike);
+ *  - SSS_PROFILE_APPLE .. SSS_PROFILE_WHOLEMILK: SSS_PROFILE_FIT_GAUSSIANS Gaussians fitted to the
+ *    material's dipole (an NLopt fit: milliseconds to ~0.1 s; no spike). SSS_PROFILE_TABULATED and
+ *    SSS_PROFILE_KERNEL are not accepted (they need an sss_profile_desc).
  *  @retval SSS_OK
- *  @retval SSS_ERROR_INVALID_ARGUMENT profile neither SSS_PROFILE_MIKKELSEN_2010 nor in [SSS_MATERIAL_SKIN,
- *                                     SSS_MATERIAL_WHOLEMILK], out_terms or count NULL, or capacity smaller
+ *  @retval SSS_ERROR_INVALID_ARGUMENT profile neither SSS_PROFILE_MIKKELSEN_2010 nor in [SSS_PROFILE_SKIN_DEON,
+ *                                     SSS_PROFILE_WHOLEMILK], out_terms or count NULL, or capacity smaller
  *                                     than the profile's term count (SSS_PROFILE_MAX_TERMS always suffices;
  *                                     *count then tells the size needed)
  *  @retval SSS_ERROR_OUT_OF_MEMORY    the fit of a measured material could not allocate */
@@ -173,7 +152,7 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_
 
 /** The transmittance terms of any sss_profile_desc, written like sss_profile_transmittance_terms:
  *  the Gaussians the cross-bilateral mode blurs with when sss_settings.cbf_profile is
- *  SSS_PROFILE_KERNEL and sss_settings.kernel.profile is *profile (a sum of Gaussians as it is, any
+ *  SSS_PROFILE_KERNEL and sss_settings.kernel->profile is *profile (a sum of Gaussians as it is, any
  *  other profile fitted with SSS_PROFILE_FIT_GAUSSIANS Gaussians).
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT profile, out_terms or count NULL, a field of *profile outside its range
@@ -183,12 +162,34 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float *out_
 SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc *profile, float *out_terms,
                                                         int32_t capacity, int32_t *count);
 
+/** Fills `taps` taps of the separable kernel of the paper's eq. (1) into out_rgba as
+ *  {weight r, weight g, weight b, offset in profile millimetres}: the centre tap first, then the
+ *  others from the most negative offset to the most positive. Offsets span [-R, R] with R = 2 mm for
+ *  taps <= 20 and 3 mm above, quadratically denser at the centre; each weight is the profile
+ *  integrated exactly over the tap's interval, normalised per channel, then strength applied
+ *  (centre: 1 - s + s·w0; others: s·w). Each channel sums to 1.
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT taps even or outside [3, 65], a NULL pointer, strength or falloff
+ *                                     outside [0, 1] or not finite */
+SSS_API sss_result sss_kernel_separable(int32_t taps, const float strength[3], const float falloff[3],
+                                        float *out_rgba);
+
+/** The legacy conversion: sss_settings.world_units_per_mm for the paper's (and sss 0.1's) `width`,
+ *  with which one millimetre of the profile spanned (2/3)·width world units: returns (2/3)·width.
+ *  sss_set_settings applies it itself to a 0.1-sized sss_settings. */
+SSS_API float sss_world_units_per_mm_from_legacy_width(float width);
+
+/** Sets the eq. (1) kernel of *s to the paper's Table 1 (strength .78 .70 .75, falloff .57 .13 .08)
+ *  with the separable_scale fitted for it against d'Eon's skin (docs/kernel-fits.md), so that Table 1
+ *  too is physical skin size at scale 1. Other fields are kept. NULL is a no-op. */
+SSS_API void sss_settings_separable_table1(sss_settings *s);
+
+/** Registers this library's fitters with the runtime (see the top of this header). Idempotent and
+ *  thread-safe; every other function of this header calls it. */
+SSS_API void sss_tools_init(void);
+
 #ifdef __cplusplus
 }
 #endif
 
-/* The rest of the API (sss_last_error, sss_settings, which embeds sss_kernel_desc): included last so
- * that either header may be included first. */
-#include "sss.h"
-
-#endif /* SSS_SSS_KERNELS_H */
+#endif /* SSS_SSS_TOOLS_H */
