@@ -309,7 +309,10 @@ typedef struct sss_stencil {
 typedef struct sss_frame {
   uint32_t struct_size;      /**< sizeof(sss_frame) */
   uint32_t color_texture;    /**< GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA16F or GL_RGBA32F: linear
-                                  diffuse irradiance, alpha = strength 0..1 */
+                                  diffuse irradiance, alpha = strength 0..1 (or GL_R11F_G11F_B10F with
+                                  strength_texture, below). The module's intermediate matches it: RGBA32F for
+                                  RGBA32F colour (irradiance above half float's 65504, or finer than its 11
+                                  bits, survives the passes unrounded), else RGBA16F */
   uint32_t depth_texture;    /**< same target, size and sample count as colour: hardware depth (DEPTH_COMPONENT16/24/32/32F,
                                   DEPTH24_STENCIL8, DEPTH32F_STENCIL8) or linear view distance (R16F, R32F) */
   uint32_t output_texture;   /**< 0: write back into color_texture; else GL_TEXTURE_2D (single-sample) RGBA16F/RGBA32F
@@ -343,7 +346,8 @@ typedef struct sss_frame {
    * description but with another target or sample count also needs sss_gl_context_changed), that
    * the framebuffers on them are complete; and it reads no GL error flag. Every other frame checks
    * all of it, and with SSS_CREATE_DEBUG_CHECKS every frame does. */
-  uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
+  uint32_t color_format;     /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F (0x8C3A GL_R11F_G11F_B10F with
+                                  strength_texture) */
   uint32_t depth_format;     /**< 0, 0x81A5 GL_DEPTH_COMPONENT16, 0x81A6 _24, 0x81A7 _32, 0x8CAC _32F,
                                   0x88F0 GL_DEPTH24_STENCIL8, 0x8CAD GL_DEPTH32F_STENCIL8, 0x822D GL_R16F, 0x822E GL_R32F */
   uint32_t output_format;    /**< 0, 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F; ignored when output_texture is 0 */
@@ -382,6 +386,23 @@ typedef struct sss_frame {
                                   the GL has no such parameter. A given value is taken as it is (not checked
                                   against the GL). Another value: SSS_ERROR_INVALID_ARGUMENT, and so is
                                   GL_STENCIL_INDEX on a GL before 4.3 (ES 3.1) */
+  /* Appended after 0.2 (docs/migration.md) for a strength kept apart from the colour. */
+  uint32_t strength_texture; /**< 0: the colour's alpha is the strength (as before). Else GL_TEXTURE_2D
+                                  (single-sample), R8, R16F or R32F, the colour's size: its red channel is the
+                                  per-pixel strength the colour's alpha gives without it (0..1: 0 leaves the
+                                  pixel alone, and it scales the distances), and the colour's alpha is not read.
+                                  For the common deferred layout of a GL_R11F_G11F_B10F colour (0x8C3A, accepted
+                                  only with a strength texture: it has no alpha), or an RGBA colour whose alpha
+                                  holds something else. The module draws the colour's rgb and this strength into
+                                  its own copy (RGBA16F, RGBA32F for RGBA32F colour; one more draw) and runs every
+                                  path on it; the result's rgb goes into the colour (written back: no alpha is
+                                  written, GL_R11F_G11F_B10F has none) or the output (whose alpha gets the
+                                  strength). Not with a multisampled colour (SSS_ERROR_UNSUPPORTED: resolve it, or
+                                  put the strength in alpha), nor written back into an RGBA colour (its alpha would
+                                  become the strength: SSS_ERROR_INVALID_ARGUMENT; give an output_texture) */
+  uint32_t strength_format;  /**< 0, 0x8229 GL_R8, 0x822D GL_R16F or 0x822E GL_R32F: strength_texture's format,
+                                  like the formats above (part of the description: a frame with a strength
+                                  texture is described only with it); ignored when strength_texture is 0 */
 } sss_frame;
 
 /* GLSL dialects, negotiated by sss_create (sss_stats.glsl_variant). */
@@ -515,7 +536,8 @@ SSS_API sss_result sss_set_camera(sss_context *ctx, const float projection[16]);
 SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t depth_texture,
                              const sss_stencil *stencil);
 
-/** Runs the two passes: horizontal from the colour texture into the module's RGBA16F target,
+/** Runs the two passes: horizontal from the colour texture into the module's intermediate (RGBA16F, or
+ *  RGBA32F for RGBA32F colour),
  *  vertical into the output (or back into the colour texture); multisampled inputs get a resolve
  *  pass first and, written back, a per-sample write last (see sss_frame). Pixels outside the stencil or with
  *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
@@ -527,13 +549,15 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *                                       with SSS_FRAME_REGION a region field negative or the region reaching
  *                                       outside the viewport,
  *                                       msaa_depth_resolve above SSS_MSAA_DEPTH_MAX, depth_stencil_mode outside its
- *                                       list (or GL_STENCIL_INDEX on a GL without that mode), or output_texture equal to
- *                                       color_texture; a texture description field outside its list, a size
+ *                                       list (or GL_STENCIL_INDEX on a GL without that mode), output_texture or
+ *                                       strength_texture equal to color_texture, or a strength_texture written back
+ *                                       into an RGBA colour (output_texture 0); a texture description field outside its list, a size
  *                                       given alone, above GL_MAX_TEXTURE_SIZE, or one that differs from the
  *                                       GL's answer; on OpenGL ES 3.0 a description missing
- *  @retval SSS_ERROR_UNSUPPORTED        OpenGL ES: an RGBA32F colour or output texture without the extension it
- *                                       needs (named in the message; see sss_create), or a multisampled input
- *                                       (ES 3.1+; the MSAA path is desktop GL only, see sss_frame)
+ *  @retval SSS_ERROR_UNSUPPORTED        OpenGL ES: an RGBA32F colour or output texture, or an R11F_G11F_B10F
+ *                                       colour, without the extension it needs (named in the message; see
+ *                                       sss_create), or a multisampled input (ES 3.1+; the MSAA path is desktop GL
+ *                                       only, see sss_frame); a strength_texture with multisampled colour
  *  @retval SSS_ERROR_INVALID_OPERATION  no camera set yet
  *  @retval SSS_ERROR_NO_CONTEXT         no GL context current; or the current one does not hold the module's GL
  *                                       objects: the context the module was created in was lost or destroyed
@@ -545,8 +569,10 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  @retval SSS_ERROR_INVALID_TEXTURE    a name that is 0 or not a texture, neither GL_TEXTURE_2D nor
  *                                       GL_TEXTURE_2D_MULTISAMPLE (or a multisampled output or normal texture), a
  *                                       texture without storage, a format outside the lists on sss_frame, sizes that
- *                                       differ (normal_texture included, whatever the mode), or colour, depth and
- *                                       stencil that differ in target or sample count
+ *                                       differ (normal_texture and strength_texture included, whatever the mode),
+ *                                       colour, depth and stencil that differ in target or sample count, a
+ *                                       multisampled strength_texture, or an R11F_G11F_B10F colour without a
+ *                                       strength_texture
  *  @retval SSS_ERROR_UNSUPPORTED        a sample count above 32 or above the context's GL_MAX_COLOR_TEXTURE_SAMPLES /
  *                                       GL_MAX_DEPTH_TEXTURE_SAMPLES
  *  @retval SSS_ERROR_FRAMEBUFFER        the driver rejected a framebuffer built on the given textures (checked
@@ -599,7 +625,8 @@ SSS_API sss_result sss_get_stats(const sss_context *ctx, sss_stats *stats);
 typedef struct sss_prepare_desc {
   uint32_t struct_size;    /**< sizeof(sss_prepare_desc) */
   int32_t width, height;   /**< the colour texture's size, each in [1, GL_MAX_TEXTURE_SIZE] */
-  uint32_t color_format;   /**< 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F (required) */
+  uint32_t color_format;   /**< 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F (required); 0x8C3A GL_R11F_G11F_B10F with
+                                strength_format */
   uint32_t output_format;  /**< 0: written back in place (output_texture 0); else the separate output's format,
                                 0x881A GL_RGBA16F or 0x8814 GL_RGBA32F */
   uint32_t depth_format;   /**< required, one of sss_frame.depth_format's list: hardware depth (0x81A5, 0x81A6,
@@ -611,6 +638,11 @@ typedef struct sss_prepare_desc {
   uint32_t stencil_format; /**< 0: no host stencil (sss_frame.stencil NULL); else the host's depth-stencil
                                 format, 0x88F0 GL_DEPTH24_STENCIL8 or 0x8CAD GL_DEPTH32F_STENCIL8 */
   uint32_t flags;          /**< SSS_PREPARE_* */
+  /* Appended after 0.2 with sss_frame.strength_texture. */
+  uint32_t strength_format; /**< 0: the frames have no strength texture; else its format, 0x8229 GL_R8, 0x822D
+                                 GL_R16F or 0x822E GL_R32F (then color_format may also be 0x8C3A
+                                 GL_R11F_G11F_B10F; samples must be 0 or 1, and output_format given for an
+                                 RGBA colour, as sss_apply_frame requires) */
 } sss_prepare_desc;
 
 /** Gets the context ready for frames like `desc` with the current settings, so that the first

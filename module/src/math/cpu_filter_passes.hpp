@@ -43,11 +43,12 @@ inline bool inside(const PassConstants& k, int x, int y) {
 
 inline bool masked_in(const CpuFilterImage& image, std::size_t i) { return image.mask == nullptr || image.mask[i] != 0; }
 
-// The horizontal pass into the RGBA16F intermediate (`intermediate`: width·height·4 floats): each
+// The horizontal pass into the intermediate (`intermediate`: width·height·4 floats, rounded to half
+// float unless image.intermediate_is_half is false): each
 // pixel inside the rectangle and the mask blurred by `pixel(x, y, &rgba)` where it returns true,
 // the rest copied (with alpha 0 where the mask leaves them out and `clear_masked_alpha`).
 template <typename Pixel>
-void horizontal_into_half(const CpuFilterImage& image, const PassConstants& k, bool clear_masked_alpha,
+void horizontal_into_intermediate(const CpuFilterImage& image, const PassConstants& k, bool clear_masked_alpha,
                           const Pixel& pixel, float* intermediate) {
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
@@ -59,7 +60,10 @@ void horizontal_into_half(const CpuFilterImage& image, const PassConstants& k, b
         Rgba blurred;
         if (pixel(x, y, &blurred)) value = blurred;
       }
-      for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[static_cast<std::size_t>(c)]);
+      for (int c = 0; c < 4; ++c) {
+        const float v = value[static_cast<std::size_t>(c)];
+        intermediate[i * 4 + c] = image.intermediate_is_half ? round_to_half(v) : v;
+      }
     }
   }
 }

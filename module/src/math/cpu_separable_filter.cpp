@@ -84,8 +84,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   for (std::size_t t = 0; t < terms; ++t) {
     const PassTerm& term = kernel.terms[t];
     const bool last = t + 1 == terms;
-    // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
-    cpu_passes::horizontal_into_half(
+    // Horizontal pass into the intermediate: translucent pixels blurred, the rest copied.
+    cpu_passes::horizontal_into_intermediate(
         image, constants, false,
         [&](int x, int y, Rgba* blurred) {
           return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, color, depth, 0, x, y,
