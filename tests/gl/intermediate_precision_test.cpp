@@ -17,6 +17,7 @@
 #include <string>
 
 #include "filter_case.hpp"
+#include "host_gl_util.hpp"
 
 namespace sss_test {
 namespace {
@@ -57,6 +58,20 @@ constexpr PathCase kPaths[] = {
 
 class IntermediatePrecision : public FilterCaseTest {
  protected:
+  // The compute path runs where the GL has it (the test's textures are complete: GL_NEAREST).
+  void expect_path_taken(uint32_t path) {
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    const bool compute = !is_gles() && host_gl::has_compute_shaders();
+    if (path == SSS_PATH_COMPUTE) {
+      EXPECT_EQ(stats.last_frame_path, compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+    }
+    if (path == SSS_PATH_FRAGMENT_MASKED) {
+      EXPECT_EQ(stats.last_frame_path, SSS_PATH_FRAGMENT_MASKED);
+    }
+  }
+
   // Every path on `scene` (RGBA32F colour, written back and into a separate RGBA32F output) against
   // the CPU model in float; the largest difference over all of them.
   float largest_difference_on_every_path(const SyntheticScene& scene, float* largest_output) {
@@ -69,6 +84,7 @@ class IntermediatePrecision : public FilterCaseTest {
         c.separate_output = separate;
         const FilterOutcome o = run_case(scene, c);
         EXPECT_EQ(o.result, SSS_OK);
+        expect_path_taken(p.path);
         const float d = largest_relative_difference(o.gpu, o.cpu);
         std::printf("%s%s: GPU vs CPU model in float: largest relative difference %.3g\n", p.name,
                     separate ? ", separate output" : ", in place", static_cast<double>(d));

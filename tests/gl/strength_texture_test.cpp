@@ -23,6 +23,7 @@
 #include <string>
 
 #include "filter_case.hpp"
+#include "host_gl_util.hpp"
 #include "math/half_float.hpp"
 #include "multisample_textures.hpp"
 
@@ -133,7 +134,16 @@ void StrengthTexture::compare_on(const PathCase& p, bool separate) {
   a.color_format = GL_R11F_G11F_B10F;
   a.strength_texture = make_strength();
   a.strength_format = GL_R8;
+  a.flags = SSS_FRAME_TARGET_COMPLETE;  // described: the compute path needs the promise (GL_NEAREST here)
   ASSERT_EQ(apply(a), SSS_OK) << sss_last_error(sss_);
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+  const bool compute = !is_gles() && host_gl::has_compute_shaders();
+  if (p.path == SSS_PATH_COMPUTE) {
+    EXPECT_EQ(stats.last_frame_path, compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+  }
+  std::printf("%s: the path that ran: %u\n", p.name, stats.last_frame_path);
   const std::vector<float> result_a = read_rgba(separate ? out_a : r11f, kW, kH);
   // The RGBA16F colour with that strength as alpha.
   fresh(s);
@@ -141,6 +151,7 @@ void StrengthTexture::compare_on(const PathCase& p, bool separate) {
   const GLuint out_b = separate ? make_rgba16f(kW, kH, std::vector<float>(in_.rgba.size(), -7.0f)) : 0;
   sss_frame b = frame_of(rgba, depth, out_b);
   b.color_format = GL_RGBA16F;
+  b.flags = SSS_FRAME_TARGET_COMPLETE;
   ASSERT_EQ(apply(b), SSS_OK) << sss_last_error(sss_);
   const std::vector<float> result_b = read_rgba(separate ? out_b : rgba, kW, kH);
 
