@@ -396,8 +396,9 @@ typedef struct sss_frame {
                                   holds something else. The module draws the colour's rgb and this strength into
                                   its own copy (RGBA16F, RGBA32F for RGBA32F colour; one more draw) and runs every
                                   path on it; the result's rgb goes into the colour (written back: no alpha is
-                                  written, GL_R11F_G11F_B10F has none) or the output (whose alpha gets the
-                                  strength). Not with a multisampled colour (SSS_ERROR_UNSUPPORTED: resolve it, or
+                                  written, GL_R11F_G11F_B10F has none; the passes write it as a separate output,
+                                  so sss_stats.pixels_touched counts the viewport) or the output (whose alpha gets
+                                  the strength). Not with a multisampled colour (SSS_ERROR_UNSUPPORTED: resolve it, or
                                   put the strength in alpha), nor written back into an RGBA colour (its alpha would
                                   become the strength: SSS_ERROR_INVALID_ARGUMENT; give an output_texture) */
   uint32_t strength_format;  /**< 0, 0x8229 GL_R8, 0x822D GL_R16F or 0x822E GL_R32F: strength_texture's format,
@@ -541,9 +542,10 @@ SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t 
  *  vertical into the output (or back into the colour texture); multisampled inputs get a resolve
  *  pass first and, written back, a per-sample write last (see sss_frame). Pixels outside the stencil or with
  *  alpha 0 keep their exact input value. Needs the GL context current that the module was created in.
- *  Non-finite input never spreads: a pixel whose colour or alpha is NaN or infinite keeps its value,
- *  and a neighbour that is counts as the centre's colour (its weight goes to the centre). Alpha
- *  above 1 counts as 1.
+ *  Non-finite input never spreads: a pixel whose colour or alpha is NaN or infinite (or beyond
+ *  +-2^125, 4.25e37, where the passes' float arithmetic could overflow in an RGBA32F intermediate)
+ *  keeps its value, and a neighbour that is counts as the centre's colour (its weight goes to the
+ *  centre). Alpha above 1 counts as 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT   ctx or frame NULL, bad struct_size, flags, viewport, stencil ref/mask,
  *                                       with SSS_FRAME_REGION a region field negative or the region reaching
@@ -661,12 +663,14 @@ typedef struct sss_prepare_desc {
  *  in; saves and restores the GL state like sss_apply_frame. Needs no camera.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT ctx or desc NULL, bad struct_size, width or height outside [1,
- *                                     GL_MAX_TEXTURE_SIZE], color_format, output_format, depth_format or
- *                                     stencil_format outside its list, samples negative or above 32, unknown
- *                                     flags; nothing is built or allocated
- *  @retval SSS_ERROR_UNSUPPORTED      samples > 1 on OpenGL ES (the MSAA path is desktop GL only) or above
- *                                     GL_MAX_COLOR_TEXTURE_SAMPLES / GL_MAX_DEPTH_TEXTURE_SAMPLES; OpenGL ES: an
- *                                     RGBA32F colour or output format without the extension it needs (as
+ *                                     GL_MAX_TEXTURE_SIZE], color_format, output_format, depth_format,
+ *                                     stencil_format or strength_format outside its list, samples negative or
+ *                                     above 32, unknown flags, strength_format with an RGBA colour and
+ *                                     output_format 0; nothing is built or allocated
+ *  @retval SSS_ERROR_UNSUPPORTED      samples > 1 with strength_format, or on OpenGL ES (the MSAA path is desktop
+ *                                     GL only), or above GL_MAX_COLOR_TEXTURE_SAMPLES / GL_MAX_DEPTH_TEXTURE_SAMPLES;
+ *                                     OpenGL ES: an RGBA32F or R11F_G11F_B10F colour, or an RGBA32F output
+ *                                     format, without the extension it needs (as
  *                                     sss_apply_frame); nothing is built or allocated
  *  @retval SSS_ERROR_NO_CONTEXT       as sss_apply_frame
  *  @retval SSS_ERROR_SHADER_COMPILE   a variant did not compile (driver log in the message)

@@ -15,7 +15,7 @@ namespace {
 using cpu_passes::Plane;
 using cpu_passes::Rgba;
 
-bool finite4(const Rgba& v) { return cpu_passes::all_finite(v.data(), 4); }
+bool finite4(const Rgba& v) { return cpu_passes::in_colour_range(v.data(), 4); }
 
 struct ViewPoint {
   float x, y, z;

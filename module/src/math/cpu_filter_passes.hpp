@@ -28,9 +28,14 @@ struct Plane {
   Rgba rgba(int x, int y) const { return {at(x, y, 0), at(x, y, 1), at(x, y, 2), at(x, y, 3)}; }
 };
 
-inline bool all_finite(const float* v, int n) {
+// The colours the passes blur: finite and within +-2^125, the shaders' bound
+// (module/shaders/colour_range.glsl: past it the float arithmetic could overflow). A colour outside
+// keeps its value, and as a tap counts as the centre's colour.
+constexpr float kColourLimit = 0x1p125f;
+
+inline bool in_colour_range(const float* v, int n) {
   for (int i = 0; i < n; ++i) {
-    if (!std::isfinite(v[i])) return false;
+    if (!std::isfinite(v[i]) || std::fabs(v[i]) > kColourLimit) return false;
   }
   return true;
 }

@@ -27,9 +27,9 @@ struct CpuFilterImage {
 
 // Runs both passes of every term of `kernel` (pass_kernel.hpp) into `out` (RGBA, width·height·4
 // floats; may not alias color). Pixels that are outside the mask, have alpha <= 0 (after the
-// intermediate's rounding), a non-finite colour or alpha, or an unusable depth keep their input value
-// exactly; pixels outside the viewport too. Alpha above 1 counts as 1. A non-finite tap counts as the
-// centre's colour (it does not spread). Per term: a horizontal pass into the intermediate (RGBA16F
+// intermediate's rounding), a non-finite colour or alpha (or one past +-2^125: kColourLimit), or an
+// unusable depth keep their input value exactly; pixels outside the viewport too. Alpha above 1 counts
+// as 1. Such a tap counts as the centre's colour (it does not spread). Per term: a horizontal pass into the intermediate (RGBA16F
 // unless intermediate_is_half is false)
 // and a vertical pass that adds the sum of the earlier terms (kept in RGBA32F, or RGBA16F with
 // accumulator_is_half, as the GL does); jittered taps move by jitter_noise; a term with a depth
