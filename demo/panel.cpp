@@ -70,6 +70,7 @@ void sss_section(WindowState *s) {
   const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked"};
   ImGui::Combo("path", &c.path, paths, 4);
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
+  ImGui::Checkbox("debug checks (SSS_CREATE_DEBUG_CHECKS: re-creates the context)", &c.debug_checks);
   if (c.cross_bilateral) {
     ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"
                         "  follow surface apply to the separable mode only");

@@ -47,6 +47,9 @@ struct SssControls {
   int shading = 0;               // kShadingScreenSpace, kShadingPreintegrated, kShadingAutomatic
   int decision_height = 0;       // automatic: the image height the choice is made for (0: the target's);
                                  // the heat map's small frame passes the shown frame's, to choose alike
+  // SSS_CREATE_DEBUG_CHECKS: every frame checks the GL (errors, framebuffers, textures). A create
+  // flag: toggling it re-creates the library's context (render_frame).
+  bool debug_checks = false;
 };
 
 constexpr int kShadingScreenSpace = 0;
@@ -66,10 +69,32 @@ struct SssStage {
   sss_context *context = nullptr;
   sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
   sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
+  sss_get_proc_address_fn get_proc_address = nullptr;  // as created, for a re-creation
+  void *user = nullptr;
+  bool debug_checks = false;  // created with SSS_CREATE_DEBUG_CHECKS
+  // What sss_prepare last got ready (prepared false: nothing yet): the frames' description and the
+  // settings it was called with.
+  bool prepared = false;
+  sss_prepare_desc prepared_desc{};
+  sss_settings prepared_settings{};
 };
 
-// sss_create with the given loader (a GL context must be current). Prints the error on failure.
-bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user);
+// The frames sss_prepare gets ready for: the demo's targets (RGBA16F diffuse, DEPTH24_STENCIL8,
+// into the RGBA16F "after"; multisampled with `samples` > 0).
+struct SssFrameShape {
+  int width = 0, height = 0, samples = 0;
+  bool stencil = false, region = false;
+};
+
+// sss_create with the given loader (a GL context must be current), with SSS_CREATE_DEBUG_CHECKS
+// when `debug_checks`. Prints the error on failure.
+bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user,
+                      bool debug_checks = false);
+
+// sss_prepare for frames of `shape` when they or the settings changed since the last call (a
+// resize, new settings), so the next frame compiles and allocates nothing: no hitch. Returns false
+// after printing the error.
+bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 
 // sss_set_settings from the controls, at the scene's world units per millimetre of surface
 // (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.

@@ -35,6 +35,7 @@
 #include "sss/sss_tools.h"
 #include "sss_headless.h"
 #include "state_cost.hpp"
+#include "hitch_cost.hpp"
 #include "timing.hpp"
 
 using namespace host_gl;
@@ -297,6 +298,7 @@ int run(const Options& options) {
     std::printf("sss_bench: one sss_apply_frame drawing nothing: %.1f us with the state restore, %.1f us without\n",
                 cost.with_restore_us, cost.without_restore_us);
   }
+  record_hitch_cost(loader, 320, 180, &info);
   const std::vector<std::string> default_scenes = options.scenes.empty() ? canonical_scene_names() : options.scenes;
   auto scenes_at = [&](std::size_t size_index) {
     const bool own = size_index < options.size_scenes.size() && !options.size_scenes[size_index].empty();

@@ -8,7 +8,9 @@
 // nothing. Kernel fits run in sss_set_settings only, and a kernel built lately is kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <cstdio>
 #include <string>
@@ -53,6 +55,7 @@ struct Case {
   bool normals = false;
   bool region = false;
   int samples = 0;       // > 1: multisampled colour and depth (desktop GL)
+  GLenum strength_format = 0;  // a strength texture (sss_frame.strength_texture) of this format
 };
 
 sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
@@ -94,6 +97,7 @@ class Prewarm : public GlTest {
     d.samples = c.samples;
     d.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
     d.flags = (c.normals ? SSS_PREPARE_NORMALS : 0u) | (c.region ? SSS_PREPARE_REGION : 0u);
+    d.strength_format = c.strength_format;
     return d;
   }
   // A fresh context with c's settings and camera (sss_ replaced).
@@ -144,6 +148,13 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
       f.depth_texture = make_multisample_depth_stencil(w, h, c.samples, scene_.window_depth, scene_.stencil);
       textures_.push_back(f.depth_texture);
     }
+  } else if (c.color_format == GL_R11F_G11F_B10F) {  // no alpha: RGB data (ES takes no other)
+    std::vector<float> rgb;
+    for (std::size_t i = 0; i < color.size(); ++i) {
+      if (i % 4 != 3) rgb.push_back(color[i]);
+    }
+    f.color_texture = make_texture(c.color_format, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    f.depth_texture = make_depth32f(w, h, depth);
   } else {
     f.color_texture = make_texture(c.color_format, w, h, GL_RGBA, GL_FLOAT, color.data());
     if (c.stencil) {
@@ -164,6 +175,17 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
   if (c.output_format != 0) {
     f.output_texture = make_texture(c.output_format, w, h, GL_RGBA, GL_FLOAT, color.data());
   }
+  if (c.strength_format != 0) {
+    std::vector<float> strength(depth.size());
+    std::vector<uint8_t> bytes(depth.size());  // R8 (ES takes no float data for it)
+    for (std::size_t i = 0; i < strength.size(); ++i) {
+      strength[i] = color[i * 4 + 3];
+      bytes[i] = static_cast<uint8_t>(std::lround(std::clamp(strength[i], 0.0f, 1.0f) * 255.0f));
+    }
+    f.strength_texture = c.strength_format == GL_R8
+                             ? make_texture(GL_R8, w, h, GL_RED, GL_UNSIGNED_BYTE, bytes.data())
+                             : make_texture(c.strength_format, w, h, GL_RED, GL_FLOAT, strength.data());
+  }
   if (c.normals) {
     std::vector<float> normals(static_cast<std::size_t>(w) * h * 4, 0.0f);
     for (std::size_t i = 2; i < normals.size(); i += 4) normals[i] = 1.0f;
@@ -182,6 +204,7 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
     f.output_format = c.output_format;
     f.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
     f.normal_format = c.normals ? GL_RGBA16F : 0;
+    f.strength_format = c.strength_format;
     f.texture_width = w;
     f.texture_height = h;
   }
@@ -263,6 +286,27 @@ TEST_F(Prewarm, TheFirstMultisampledFrameCreatesNothing) {
   c = Case{"MSAA behind the host's stencil, three terms", several_terms(SSS_PATH_FRAGMENT)};
   c.samples = 4;
   c.stencil = true;
+  expect_no_hitch(c);
+}
+
+// An RGBA32F colour's intermediate is RGBA32F (its precision kept): sss_prepare allocates that one.
+// A strength texture's frames draw the colour with it into the module's copy first: its program
+// and target are prepared too.
+TEST_F(Prewarm, TheFirstFrameOfAnRgba32fColourOrAStrengthTextureCreatesNothing) {
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_COMPUTE}) {
+    if (!is_gles()) {  // RGBA32F colour needs extensions on ES
+      expect_no_hitch(Case{"RGBA32F colour, in place", settings_with(path), GL_RGBA32F});
+    }
+    Case c{"R11F_G11F_B10F colour with an R8 strength, in place", settings_with(path), GL_R11F_G11F_B10F};
+    c.strength_format = GL_R8;
+    expect_no_hitch(c);
+    c = Case{"RGBA16F colour with an R16F strength, separate output", settings_with(path), GL_RGBA16F, GL_RGBA16F};
+    c.strength_format = GL_R16F;
+    expect_no_hitch(c);
+  }
+  Case c{"cross-bilateral, R11F_G11F_B10F colour with an R32F strength",
+         settings_with(SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL), GL_R11F_G11F_B10F};
+  c.strength_format = GL_R32F;
   expect_no_hitch(c);
 }
 

@@ -243,7 +243,10 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.depth = stored_depth.data();
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.output_is_half = c.half_color && !c.separate_output;
-  image.accumulator_is_half = is_gles();  // the module sums terms in RGBA16F there
+  // The module's intermediate is as precise as the colour (RGBA32F colour: RGBA32F), and on ES it
+  // sums terms in RGBA16F unless the colour is RGBA32F.
+  image.intermediate_is_half = c.half_color;
+  image.accumulator_is_half = is_gles() && c.half_color;
   outcome.cpu.resize(outcome.input.size());
   if (empty_region) {
     outcome.cpu = outcome.input;  // nothing translucent: the image (or its copy) as it was

@@ -44,20 +44,19 @@
  *   void engine_sss_shutdown(sss_context *sss) { sss_destroy(sss); } // same GL context current
  * sss-h-example: end
  *
- * Threads: a context lives on its GL context's thread; contexts share nothing. Errors: an sss_result
- * and sss_last_error naming the bad argument. struct_size: this release's sizeof or a 0.1/0.2 size
- * (missing fields take defaults; old sss_settings are converted); others fail naming struct and size.
+ * Threads: a context lives on its GL context's thread; contexts share nothing. Errors: an sss_result and
+ * sss_last_error naming the bad argument. struct_size: this release's sizeof or a 0.1/0.2 size (missing
+ * fields take defaults; old sss_settings are converted); others fail naming the struct and size.
  *
- * GL state (SSS_STATE_LIST; docs/integration.md details it): a call that draws restores what it
- * changed (unless SSS_CREATE_NO_STATE_RESTORE) and leaves no GL error: program, vertex array, draw
- * and read framebuffers, renderbuffer, active texture; on units 0-3 the 2D and 2D-multisample
- * texture and sampler; the unpack buffer and unpack alignment/row length/skips; image unit 0;
- * viewport; sample mask word 0; the enables SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE,
- * FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, SAMPLE_MASK,
- * POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7, MULTISAMPLE; colour mask
- * (buffer 0); polygon mode; front/back stencil state; the depth texture's DEPTH_STENCIL_TEXTURE_MODE.
- * On ES what exists there. Untouched: blend/depth functions, scissor box, clear values, pack state,
- * other bindings and texture parameters. No transform feedback or conditional render may be active.
+ * GL state (SSS_STATE_LIST; docs/integration.md details it): a call that draws restores what it changed
+ * (unless SSS_CREATE_NO_STATE_RESTORE) and leaves no GL error: program, vertex array, draw and read
+ * framebuffers, renderbuffer, active texture; on units 0-3 the 2D and 2D-multisample texture and sampler;
+ * the unpack buffer and alignment/row length/skips; image unit 0; viewport; sample mask word 0; the enables
+ * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
+ * SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7,
+ * MULTISAMPLE; colour mask (buffer 0); polygon mode; front/back stencil state; the depth texture's
+ * DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there. Untouched: blend/depth functions, scissor box, clear
+ * values, pack state, other bindings and texture parameters. No transform feedback or conditional render.
  */
 #ifndef SSS_SSS_H
 #define SSS_SSS_H
@@ -69,8 +68,7 @@ extern "C" {
 #endif
 
 typedef struct sss_context sss_context;
-/** GL loader: the address of `name` or NULL (wrap eglGetProcAddress, glfwGetProcAddress, ...). */
-typedef void *(*sss_get_proc_address_fn)(const char *name, void *user);
+typedef void *(*sss_get_proc_address_fn)(const char *name, void *user); /**< GL loader: eglGetProcAddress... */
 typedef enum sss_log_level { SSS_LOG_ERROR, SSS_LOG_WARNING, SSS_LOG_INFO, SSS_LOG_DEBUG } sss_log_level;
 typedef void (*sss_log_fn)(int level, const char *message, void *user); /**< level: an sss_log_level */
 
@@ -152,13 +150,14 @@ typedef enum sss_msaa_depth { SSS_MSAA_DEPTH_AVERAGE, SSS_MSAA_DEPTH_SAMPLE0, SS
  *  context loss or texture re-creation call sss_gl_context_changed). MSAA inputs: desktop GL. */
 typedef struct sss_frame {
   uint32_t struct_size;       /**< sizeof(sss_frame) */
-  uint32_t color_texture;     /**< 2D or 2D-multisample RGBA16F/RGBA32F: linear diffuse, alpha = strength */
+  uint32_t color_texture;     /**< 2D or 2D-multisample RGBA16F/RGBA32F (32F stays float): diffuse, alpha = strength */
   uint32_t depth_texture;     /**< same size/target: hardware depth or linear view distance (R16F/R32F) */
   uint32_t output_texture;    /**< 0: in place; else a single-sample RGBA16F/RGBA32F of the same size */
   const sss_stencil *stencil; /**< NULL: translucent where alpha > 0 */
   int32_t viewport[4];        /**< x, y, w, h in texels; all 0 = whole texture */
   uint32_t flags;             /**< sss_frame_flag bits */
-  uint32_t color_format;      /**< 0, 0x881A RGBA16F, 0x8814 RGBA32F (required on ES 3.0, as all these) */
+  uint32_t color_format;      /**< 0, 0x881A RGBA16F, 0x8814 RGBA32F, 0x8C3A R11F_G11F_B10F (only with a
+                                   strength_texture); required on ES 3.0, as all these formats */
   uint32_t depth_format;      /**< 0, 0x81A5/0x81A6/0x81A7/0x8CAC DEPTH16/24/32/32F, 0x88F0, 0x8CAD, 0x822D, 0x822E */
   uint32_t output_format;     /**< 0, 0x881A, 0x8814 */
   uint32_t stencil_format;    /**< 0, 0x88F0, 0x8CAD */
@@ -168,11 +167,12 @@ typedef struct sss_frame {
   uint32_t msaa_depth_resolve; /**< sss_msaa_depth. Default average */
   int32_t region[4];          /**< with SSS_FRAME_REGION: x, y, w, h inside the viewport */
   uint32_t depth_stencil_mode; /**< 0, 0x1902 GL_DEPTH_COMPONENT or 0x1901 GL_STENCIL_INDEX (the host's) */
+  uint32_t strength_texture;  /**< 0: alpha is strength; else 2D R8/R16F/R32F: red = strength, alpha unused */
+  uint32_t strength_format;   /**< 0, 0x8229 R8, 0x822D R16F, 0x822E R32F */
 } sss_frame;
 
-#define SSS_PREPARE_NORMALS 0x1u                  /**< sss_prepare_desc.flags: frames give normal_texture */
-#define SSS_PREPARE_REGION 0x2u
-#define SSS_PREPARE_UNFIXED_SAMPLE_LOCATIONS 0x4u /**< multisampled colour without fixed locations */
+typedef enum sss_prepare_flag { /* frames give normal_texture; SSS_FRAME_REGION; MSAA without fixed locations */
+  SSS_PREPARE_NORMALS = 0x1, SSS_PREPARE_REGION = 0x2, SSS_PREPARE_UNFIXED_SAMPLE_LOCATIONS = 0x4 } sss_prepare_flag;
 #define SSS_PREPARE_ALL_FLAGS 0x7u
 /** The frames sss_prepare gets ready for (formats as in sss_frame). */
 typedef struct sss_prepare_desc {
@@ -180,20 +180,19 @@ typedef struct sss_prepare_desc {
   int32_t width, height; /**< [1, GL_MAX_TEXTURE_SIZE] */
   uint32_t color_format, output_format, depth_format; /**< colour and depth required; output 0 = in place */
   int32_t samples;         /**< MSAA sample count: 0 or 1 single-sample, [2, 32] multisampled */
-  uint32_t stencil_format; /**< 0: no host stencil */
-  uint32_t flags;          /**< SSS_PREPARE_* */
+  uint32_t stencil_format, flags; /**< 0: no host stencil; sss_prepare_flag bits */
+  uint32_t strength_format; /**< 0: no strength texture; else as sss_frame (then samples 0 or 1) */
 } sss_prepare_desc;
 
 typedef enum sss_glsl { SSS_GLSL_330_CORE = 0, SSS_GLSL_420_CORE = 1, SSS_GLSL_300_ES = 2 } sss_glsl;
-#define SSS_STATS_PIXELS 0x1u   /**< sss_stats.measured: pixels_touched is valid; */
-#define SSS_STATS_GPU_TIME 0x2u /**< gpu_time_ms is valid */
+typedef enum sss_stats_flag { SSS_STATS_PIXELS = 0x1, SSS_STATS_GPU_TIME = 0x2 } sss_stats_flag; /**< valid fields */
 /** Counters, and with SSS_CREATE_STATS GPU measurements read back without stalling (a frame or more old). */
 typedef struct sss_stats {
   uint32_t struct_size;       /**< set by the caller */
   uint32_t glsl_variant;      /**< sss_glsl */
   uint64_t frames, passes;    /**< successful frames; draws and dispatches over them */
   uint32_t last_frame_passes; /**< draws of the last frame */
-  uint32_t measured;          /**< SSS_STATS_* bits */
+  uint32_t measured;          /**< sss_stats_flag bits */
   uint64_t measured_frame;    /**< the frame the measurements come from (1 = first); 0 none */
   uint64_t pixels_touched;    /**< pixels the vertical pass wrote (desktop GL) */
   double gpu_time_ms[2];      /**< horizontal, vertical pass */
@@ -227,7 +226,8 @@ SSS_API sss_result sss_set_camera(sss_context *ctx, const float projection[16]);
  *  @return OK; INVALID_ARGUMENT; UNSUPPORTED; NO_CONTEXT; SHADER_COMPILE; OUT_OF_MEMORY; GL */
 SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
 
-/** Runs the filter on *frame. Pixels with alpha 0 or outside the stencil keep their value.
+/** Runs the filter on *frame. Pixels with alpha 0, outside the stencil, non-finite or beyond 2^125 keep
+ *  their value (and give their weight to the centre).
  *  @return OK; INVALID_ARGUMENT (a field outside its list); INVALID_TEXTURE (name, target, format
  *  or size); UNSUPPORTED (a format or sample count this GL lacks); INVALID_OPERATION (no camera);
  *  NO_CONTEXT (context lost: objects rebuilt on the next call); FRAMEBUFFER; OUT_OF_MEMORY;

@@ -98,6 +98,11 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->output_texture = %u is the colour texture: pass 0 to write back in place",
                 frame->output_texture);
   }
+  if (frame->strength_texture != 0 && frame->strength_texture == frame->color_texture) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->strength_texture = %u is the colour texture: pass 0 to read the strength from its alpha",
+                frame->strength_texture);
+  }
   if (frame->stencil != nullptr && (frame->stencil->ref > 255u || frame->stencil->mask > 255u)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "stencil ref = %u, mask = %u: both must be in [0, 255]",
                 frame->stencil->ref, frame->stencil->mask);
@@ -109,7 +114,8 @@ bool frame_described(const sss_frame& frame) {
   return frame.texture_width != 0 && frame.color_format != 0 && frame.depth_format != 0 &&
          (frame.output_texture == 0 || frame.output_format != 0) &&
          (frame.stencil == nullptr || frame.stencil_format != 0) &&
-         (frame.normal_texture == 0 || frame.normal_format != 0);
+         (frame.normal_texture == 0 || frame.normal_format != 0) &&
+         (frame.strength_texture == 0 || frame.strength_format != 0);
 }
 
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
@@ -125,8 +131,13 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->%s = 0x%04X (%s): expected 0 or %s", field, value,
                 gl::format_name(static_cast<gl::GLint>(value)).c_str(), expected);
   };
-  if (frame.color_format != 0 && !gl::is_color_format(format(frame.color_format))) {
-    return bad("color_format", frame.color_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  if (frame.color_format != 0 && !gl::is_color_format(format(frame.color_format)) &&
+      !gl::is_alpha_free_color_format(format(frame.color_format))) {
+    return bad("color_format", frame.color_format,
+               "GL_RGBA16F (0x881A), GL_RGBA32F (0x8814) or, with strength_texture, GL_R11F_G11F_B10F (0x8C3A)");
+  }
+  if (frame.strength_format != 0 && !gl::is_strength_format(format(frame.strength_format))) {
+    return bad("strength_format", frame.strength_format, "GL_R8 (0x8229), GL_R16F (0x822D) or GL_R32F (0x822E)");
   }
   if (frame.depth_format != 0 && !gl::is_hardware_depth_format(format(frame.depth_format)) &&
       !gl::is_linear_depth_format(format(frame.depth_format))) {
