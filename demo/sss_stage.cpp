@@ -60,7 +60,7 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
   desc.get_proc_address_user = user;
   desc.log = log_message;
   desc.log_user = nullptr;
-  desc.flags = debug_checks ? SSS_CREATE_DEBUG_CHECKS : 0u;
+  desc.flags = debug_checks ? static_cast<std::uint32_t>(SSS_CREATE_DEBUG_CHECKS) : 0u;
   if (!report(sss_create(&desc, &stage->context), "sss_create", nullptr)) return false;
   stage->settings.struct_size = sizeof stage->settings;
   return report(sss_get_settings(stage->context, &stage->settings), "sss_get_settings", stage->context);
@@ -104,15 +104,18 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   d.depth_format = 0x88F0;   // GL_DEPTH24_STENCIL8
   d.samples = shape.samples;
   d.stencil_format = shape.stencil ? 0x88F0u : 0u;
-  d.flags = shape.region ? SSS_PREPARE_REGION : 0u;
-  // Settings compare byte for byte: the demo's hold no pointers (no tabulated profile).
+  d.flags = shape.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u;
+  // Settings compare byte for byte, and the kernel they point at (always stage->kernel, so the pointer
+  // alone would not show a new family) too: the demo's kernels hold no pointers (no tabulated profile).
   const bool same = stage->prepared && std::memcmp(&d, &stage->prepared_desc, sizeof d) == 0 &&
-                    std::memcmp(&stage->settings, &stage->prepared_settings, sizeof stage->settings) == 0;
+                    std::memcmp(&stage->settings, &stage->prepared_settings, sizeof stage->settings) == 0 &&
+                    std::memcmp(&stage->kernel, &stage->prepared_kernel, sizeof stage->kernel) == 0;
   if (same) return true;
   if (!report(sss_prepare(stage->context, &d), "sss_prepare", stage->context)) return false;
   stage->prepared = true;
   stage->prepared_desc = d;
   stage->prepared_settings = stage->settings;
+  stage->prepared_kernel = stage->kernel;
   return true;
 }
 

@@ -77,6 +77,7 @@ struct SssStage {
   bool prepared = false;
   sss_prepare_desc prepared_desc{};
   sss_settings prepared_settings{};
+  sss_kernel_desc prepared_kernel{};
 };
 
 // The frames sss_prepare gets ready for: the demo's targets (RGBA16F diffuse, DEPTH24_STENCIL8,

@@ -96,7 +96,8 @@ class Prewarm : public GlTest {
     d.depth_format = c.stencil ? GL_DEPTH24_STENCIL8 : c.depth_format;
     d.samples = c.samples;
     d.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
-    d.flags = (c.normals ? SSS_PREPARE_NORMALS : 0u) | (c.region ? SSS_PREPARE_REGION : 0u);
+    d.flags = (c.normals ? static_cast<std::uint32_t>(SSS_PREPARE_NORMALS) : 0u) |
+              (c.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u);
     d.strength_format = c.strength_format;
     return d;
   }

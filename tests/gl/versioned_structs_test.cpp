@@ -57,7 +57,7 @@ static_assert(sizeof(Settings01) == 184, "0.1's sss_settings");
 static_assert(sizeof(Settings02) == 192, "0.2's sss_settings");
 static_assert(sizeof(sss_kernel_desc) == 120, "sss_kernel_desc kept 0.1's layout");
 static_assert(sizeof(sss_create_desc) == 48 && sizeof(sss_stats) == 72, "kept 0.1's layout");
-static_assert(sizeof(sss_frame) == 104, "0.1's and 0.2's 96 bytes and depth_stencil_mode");
+static_assert(sizeof(sss_frame) == 112, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format");
 #endif
 
 const sss::math::Matrix4 kCamera = perspective_matrix(45.0f, 1.0f, 0.1f, 10.0f);
@@ -262,6 +262,13 @@ TEST_F(VersionedStructs, SizesNoReleaseDefinedAreRefusedByName) {
 TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   if (is_gles()) GTEST_SKIP() << "OpenGL ES 3.0 needs described frames; the sizes are the same there";
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  // A world unit of a millimetre, so that the kernel spans pixels of this small frame (at the default
+  // metres it stays inside each pixel and, with the RGBA32F intermediate of an RGBA32F colour, the
+  // frame comes back exactly unchanged, which would not show that the frame ran).
+  sss_settings settings;
+  sss_default_settings(&settings);
+  settings.world_units_per_mm = 1.0f;
+  ASSERT_EQ(sss_set_settings(sss_, &settings), SSS_OK) << sss_last_error(sss_);
   const SyntheticScene scene = make_relief_scene(8, 8, 1, kCamera);
   const GLuint depth = make_depth32f(8, 8, scene.window_depth);
   std::vector<float> results[2];
