@@ -78,7 +78,7 @@ void physical_settings(const sss_bench::GpuScene& scene, const Options& o, sss_s
 #else
   s->world_units_per_mm = scene.world_units_per_mm;
 #endif
-  s->samples = o.taps;
+  s->taps = o.taps;
   s->path = o.path;
 }
 

@@ -26,7 +26,7 @@ var sssDemo = {
     return {
       enabled: $('enabled').checked, scale: parseFloat($('scale').value),
       strength: parseFloat($('strength').value), falloff: parseFloat($('falloff').value),
-      samples: parseInt($('samples').value, 10), follow: $('follow').checked,
+      taps: parseInt($('taps').value, 10), follow: $('follow').checked,
       split: $('split-on').checked ? parseFloat($('split').value) : 0.0,
       material: $('material').selectedIndex
     };
@@ -35,7 +35,7 @@ var sssDemo = {
   apply: function (k) {
     var r = Module.ccall('web_set_knobs', 'number',
         ['number', 'number', 'number', 'number', 'number', 'number', 'number'],
-        [k.enabled ? 1 : 0, k.scale, k.strength, k.falloff, isNaN(k.samples) ? -1 : k.samples, k.follow ? 1 : 0,
+        [k.enabled ? 1 : 0, k.scale, k.strength, k.falloff, isNaN(k.taps) ? -1 : k.taps, k.follow ? 1 : 0,
          k.material || 0]);
     $('error').textContent = r === 0 ? '' : Module.ccall('web_message', 'string', [], []);
     return r;
@@ -94,8 +94,8 @@ var Module = {
       $('material').appendChild(option);
     }
     $('scale-range').addEventListener('input', function () { $('scale').value = $('scale-range').value; sssDemo.update(); });
-    ['enabled', 'scale', 'strength', 'falloff', 'samples', 'follow', 'split-on', 'split', 'material'].forEach(function (id) {
-      $(id).addEventListener(id === 'scale' || id === 'samples' ? 'change' : 'input', sssDemo.update);
+    ['enabled', 'scale', 'strength', 'falloff', 'taps', 'follow', 'split-on', 'split', 'material'].forEach(function (id) {
+      $(id).addEventListener(id === 'scale' || id === 'taps' ? 'change' : 'input', sssDemo.update);
     });
     $('controls').disabled = false;
     sssDemo.update();

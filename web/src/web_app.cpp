@@ -53,7 +53,7 @@ Knobs App::default_knobs() const {
   k.scale = s.scale;
   std::copy(s.strength, s.strength + 3, k.strength);
   std::copy(s.falloff, s.falloff + 3, k.falloff);
-  k.samples = s.samples;
+  k.taps = s.taps;
   k.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
   return k;
 }
@@ -70,8 +70,9 @@ sss_result App::set_knobs(const Knobs& knobs) {
     s.scale = knobs.scale;
     std::copy(knobs.strength, knobs.strength + 3, s.strength);
     std::copy(knobs.falloff, knobs.falloff + 3, s.falloff);
-    s.samples = knobs.samples;
-    apply_material(knobs.material, &s);
+    s.taps = knobs.taps;
+    sss_kernel_desc kernel;
+    apply_material(knobs.material, &kernel, &s);
     s.flags = knobs.follow_surface ? (s.flags | SSS_FOLLOW_SURFACE) : (s.flags & ~static_cast<uint32_t>(SSS_FOLLOW_SURFACE));
     r = sss_set_settings(sss_, &s);
   }

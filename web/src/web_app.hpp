@@ -1,6 +1,7 @@
 // The web demo's state, shared by the page (web/src/web_page.cpp, Emscripten) and its native twin
 // (web/src/web_frame.cpp, OpenGL ES 3.0 through EGL): the head, the library's context and the
-// knobs. Uses only the runtime API of <sss/sss.h>.
+// knobs. Uses the runtime API of <sss/sss.h>, and the tools' sss_kernel_desc for the material
+// control (web_materials.hpp).
 #pragma once
 
 #include <memory>
@@ -20,7 +21,7 @@ struct Knobs {
   float scale = 1.0f;
   float strength[3] = {0, 0, 0};
   float falloff[3] = {0, 0, 0};
-  int samples = 17;
+  int taps = 17;
   bool follow_surface = true;
   int material = 0;  // index into web::kMaterials (web_materials.hpp)
 };

@@ -76,18 +76,18 @@ EMSCRIPTEN_KEEPALIVE const char* web_message() {
 
 EMSCRIPTEN_KEEPALIVE const char* web_gl_renderer() { return g_app ? g_app->renderer().c_str() : ""; }
 
-// The library's defaults: index 0..2 strength, 3..5 falloff, 6 scale, 7 samples.
+// The library's defaults: index 0..2 strength, 3..5 falloff, 6 scale, 7 taps.
 EMSCRIPTEN_KEEPALIVE double web_default(int index) {
   const web::Knobs k = g_app->default_knobs();
   if (index < 3) return k.strength[index];
   if (index < 6) return k.falloff[index - 3];
-  return index == 6 ? k.scale : k.samples;
+  return index == 6 ? k.scale : k.taps;
 }
 
 // The page's controls, passed as they are (NaN and out-of-range values included: the library
 // judges them). Returns the sss_result of sss_set_settings.
 EMSCRIPTEN_KEEPALIVE int web_set_knobs(int enabled, float scale, float strength_multiplier, float falloff_multiplier,
-                                       int samples, int follow_surface, int material) {
+                                       int taps, int follow_surface, int material) {
   const web::Knobs defaults = g_app->default_knobs();
   web::Knobs k = defaults;
   k.enabled = enabled != 0;
@@ -96,7 +96,7 @@ EMSCRIPTEN_KEEPALIVE int web_set_knobs(int enabled, float scale, float strength_
     k.strength[c] = defaults.strength[c] * strength_multiplier;
     k.falloff[c] = defaults.falloff[c] * falloff_multiplier;
   }
-  k.samples = samples;
+  k.taps = taps;
   k.follow_surface = follow_surface != 0;
   k.material = material;
   const sss_result r = g_app->set_knobs(k);
@@ -155,9 +155,10 @@ EMSCRIPTEN_KEEPALIVE int web_try_without(const char* names) {
   return r;
 }
 
-// The guided kernel family runs NLopt's optimiser, which the WebAssembly build lacks
-// (SSS_NO_NLOPT): sss_set_settings must refuse it with SSS_ERROR_UNSUPPORTED. Tried on a context of
-// its own; returns the sss_result, the message in web_probe_message().
+// The guided kernel family runs NLopt's optimiser, which the WebAssembly build of the tools lacks
+// (SSS_NO_NLOPT): sss_set_settings must refuse it with SSS_ERROR_UNSUPPORTED naming NLopt (with the
+// tools registered, so the refusal is the optimiser's, not a missing sss_tools_init). Tried on a
+// context of its own; returns the sss_result, the message in web_probe_message().
 EMSCRIPTEN_KEEPALIVE int web_try_fitted_kernel() {
   sss_create_desc desc{};
   desc.struct_size = sizeof desc;
@@ -166,9 +167,12 @@ EMSCRIPTEN_KEEPALIVE int web_try_fitted_kernel() {
   sss_result r = sss_create(&desc, &sss);
   g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
   if (r == SSS_OK) {
+    sss_kernel_desc kernel;
+    sss_default_kernel_desc(&kernel);  // registers the tools' kernels
+    kernel.family = SSS_KERNEL_GUIDED;
     sss_settings s;
     sss_default_settings(&s);
-    s.kernel.family = SSS_KERNEL_GUIDED;
+    s.kernel = &kernel;
     r = sss_set_settings(sss, &s);
     g_probe = r == SSS_OK ? "" : sss_last_error(sss);
     sss_destroy(sss);

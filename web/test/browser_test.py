@@ -96,7 +96,7 @@ def check_scene(off, on, results):
 
 def check_bad_input(browser, valid_knobs, valid_frame, results):
     for name, change, words in (("scale NaN", {"scale": float("nan")}, ["scale", "nan"]),
-                                ("1001 taps", {"samples": 1001}, ["samples", "1001"])):
+                                ("1001 taps", {"taps": 1001}, ["taps", "1001"])):
         knobs = dict(valid_knobs, **change)
         # json.dumps writes NaN, which JavaScript reads as NaN: the page passes what a control holds.
         result, frame = page_frame(browser, knobs)

@@ -23,7 +23,7 @@ def table(r):
              "",
              "| file | what | bytes | gzip -9 |",
              "|---|---|---:|---:|"]
-    what = {"sss_web.wasm": "the library, the renderer, tinygltf + stb_image", "sss_web.js": "Emscripten's runtime and WebGL2 bindings",
+    what = {"sss_web.wasm": "the runtime and tools libraries (no NLopt), the renderer, tinygltf + stb_image", "sss_web.js": "Emscripten's runtime and WebGL2 bindings",
             "sss_web.data": "the head scan (head.glb)", "index.html": "the page", "sss_page.js": "the page's script"}
     for name in ("sss_web.wasm", "sss_web.js", "sss_web.data", "index.html", "sss_page.js"):
         if name in files:

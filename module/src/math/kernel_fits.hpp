@@ -4,22 +4,16 @@
 #pragma once
 
 #include <array>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
+#include "fitters.hpp"
 #include "kernel_plan.hpp"
 #include "profile_grid.hpp"
 #include "radial_profile.hpp"
 
 namespace sss::math {
 
-// Thrown by the fits below in a build without NLopt (SSS_NO_NLOPT: the WebAssembly build, web/,
-// since Debian's NLopt has no WebAssembly library); the API reports it as SSS_ERROR_UNSUPPORTED.
-struct OptimiserUnavailable : std::runtime_error {
-  explicit OptimiserUnavailable(const std::string& fit)
-      : std::runtime_error(fit + " needs NLopt's optimiser, which this build (SSS_NO_NLOPT, WebAssembly) lacks") {}
-};
+// A build without NLopt (SSS_NO_NLOPT) throws OptimiserUnavailable (fitters.hpp) from the fits below.
 
 // ---- Guided rank-1 (S.7-S.9).
 inline constexpr double kGuideB = 50.0;          // suppression along the axes, on [-1, 1]²
