@@ -39,6 +39,9 @@ class SeparableMethod : public Method {
     s.world_units_per_mm = (scene.world_units_per_mm);
     s.samples = taps_;
     s.flags = follow_ ? SSS_FOLLOW_SURFACE : 0u;
+    // The filter's own passes, on the plain fragment path: what these rows have always timed. The
+    // default path (SSS_PATH_AUTO) is timed by the in-place rows ("separable-auto", ...).
+    s.path = SSS_PATH_FRAGMENT;
     if (!kernel_.name.empty()) {
       s.kernel.family = kernel_.family;
       s.kernel.rank = kernel_.rank;
