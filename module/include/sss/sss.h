@@ -150,7 +150,9 @@ typedef struct sss_create_desc {
  *  region already leaves out what is not translucent) or the mask cannot be used. The choice is
  *  logged at SSS_LOG_INFO. While it times a frame, SSS_CREATE_STATS has no GPU time for that frame
  *  (GL_TIME_ELAPSED queries cannot nest), and a frame with the host's own GL_TIME_ELAPSED query
- *  active is not timed. */
+ *  active is not timed. The default: with state restore it also saves what the masked and compute
+ *  paths change (the stencil state, image unit 0), and the masked path's stencil is a renderbuffer
+ *  the size of the frame; SSS_PATH_FRAGMENT avoids both where the plain passes are what you want. */
 #define SSS_PATH_AUTO 2u
 /** The fragment passes behind a stencil mask the module marks from the colour's alpha (one
  *  full-screen draw that writes only stencil: alpha > 0 and a finite colour), the paper's stencil
@@ -245,9 +247,9 @@ typedef struct sss_settings {
                                banding of few taps into fine noise, with no temporal filter; the weights stay
                                the cells'. Default 0 */
   /* Appended in 0.1 for the choice of how the passes run. */
-  uint32_t path;          /**< SSS_PATH_FRAGMENT (default), SSS_PATH_COMPUTE, SSS_PATH_AUTO or
-                               SSS_PATH_FRAGMENT_MASKED: how the separable mode's two passes run (see SSS_PATH_*).
-                               Every path gives the same image within fp16 rounding */
+  uint32_t path;          /**< SSS_PATH_AUTO (default since 0.2; 0.1: SSS_PATH_FRAGMENT), SSS_PATH_FRAGMENT,
+                               SSS_PATH_COMPUTE or SSS_PATH_FRAGMENT_MASKED: how the separable mode's two passes
+                               run (see SSS_PATH_*). Every path gives the same image within fp16 rounding */
 } sss_settings;
 
 /** The host's stencil marks translucent pixels: translucent where (stencil & mask) == (ref & mask).
