@@ -3,7 +3,7 @@
 #include "embedded_shaders.hpp"
 #include "host_gl_util.hpp"
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -16,7 +16,7 @@ namespace demo {
 SssControls controls_from_options(const Options &o) {
   SssControls c = default_sss_controls();
   c.enabled = o.sss;
-  if (o.samples != 0) c.samples = o.samples;
+  if (o.taps != 0) c.taps = o.taps;
   c.scale = o.scale;
   c.follow_surface = o.follow_surface;
   c.shading = o.shading;

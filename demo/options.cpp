@@ -1,6 +1,6 @@
 #include "options.hpp"
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 #include <sss_headless.h>
 
 #include <getopt.h>
@@ -98,7 +98,7 @@ void print_usage(const char *program) {
       "  --out DIR           folder for PNGs and screenshots (default ./demo-out)\n"
       "  --preset NAME       close | mid | far | all (headless default: all; window: the first view)\n"
       "  --no-sss            start with the library off (S toggles it in the window)\n"
-      "  --samples N         the most SSS taps per pass, odd, 3..65 (default: the library's, 17); each pixel\n"
+      "  --taps N            the most SSS taps per pass, odd, 3..65 (default: the library's, 17); each pixel\n"
       "                      reads as many as its footprint needs\n"
       "  --scale F           multiply every scattering distance, [0, 1000] (default 1: the physical size; the\n"
       "                      scenes are in metres); --width-scale F, the old name, is still accepted\n"
@@ -135,7 +135,7 @@ void print_usage(const char *program) {
 
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
-    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kSamples, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
+    kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
@@ -147,7 +147,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"out", required_argument, nullptr, kOut},
       {"preset", required_argument, nullptr, kPreset},
       {"no-sss", no_argument, nullptr, kNoSss},
-      {"samples", required_argument, nullptr, kSamples},
+      {"taps", required_argument, nullptr, kTaps},
       {"scale", required_argument, nullptr, kScale},
       {"width-scale", required_argument, nullptr, kWidthScale},  // the old name of --scale
       {"no-follow-surface", no_argument, nullptr, kNoFollow},
@@ -207,9 +207,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       }
       case kNoSss: o->sss = false; break;
-      case kSamples:
-        ok = (parse_int(optarg, &o->samples) && o->samples >= 3 && o->samples <= 65 && o->samples % 2 == 1) ||
-             fail("--samples wants an odd number in [3, 65]", optarg);
+      case kTaps:
+        ok = (parse_int(optarg, &o->taps) && o->taps >= 3 && o->taps <= 65 && o->taps % 2 == 1) ||
+             fail("--taps wants an odd number in [3, 65]", optarg);
         break;
       case kScale:
       case kWidthScale:
@@ -266,8 +266,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kMaterial: {
         o->material = -1;
-        for (int m = SSS_MATERIAL_SKIN; m <= SSS_MATERIAL_WHOLEMILK; ++m) {
-          if (std::strcmp(optarg, sss_material_name(m)) == 0) o->material = m;
+        for (int m = SSS_PROFILE_SKIN_DEON; m <= SSS_PROFILE_WHOLEMILK; ++m) {
+          if (std::strcmp(optarg, sss_profile_name(m)) == 0) o->material = m;
         }
         ok = o->material >= 0 || fail("--material wants skin, apple, chicken1, chicken2, cream, ketchup, marble, "
                                       "potato, skimmilk, skin1, skin2 or wholemilk", optarg);

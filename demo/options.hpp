@@ -20,14 +20,14 @@ struct Options {
   std::vector<Preset> presets = {Preset::kClose, Preset::kMid, Preset::kFar};  // window: the first one
 
   bool sss = true;
-  int samples = 0;               // SSS taps per pass; 0: the library's default
+  int taps = 0;                  // SSS taps per pass (--taps); 0: the library's default
   bool use_stencil = true;
   int msaa = 0;                  // 0, or 4: render into 4x multisampled targets and hand those to the library
   bool follow_surface = true;
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL
   int kernel_family = 0;         // sss_kernel_family (SSS_KERNEL_SEPARABLE: eq. (1))
   int kernel_rank = 1;           // sum of Gaussians / SVD: terms
-  int material = 0;              // sss_material the kernel's profile comes from (SSS_MATERIAL_SKIN)
+  int material = 0;              // sss_material the kernel's profile comes from (SSS_PROFILE_SKIN_DEON)
   float jitter = 0.0f;           // sss_settings.jitter
   unsigned path = 2;             // sss_settings.path: SSS_PATH_AUTO (the library's default), _FRAGMENT, _COMPUTE, _FRAGMENT_MASKED
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds

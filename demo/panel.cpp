@@ -3,7 +3,7 @@
 #include "report.hpp"
 #include "window_state.hpp"
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 
 #include <imgui.h>
 
@@ -43,7 +43,7 @@ void sss_section(WindowState *s) {
                       static_cast<double>(world_units_per_mm * c.scale), static_cast<double>(world_units_per_mm));
   ImGui::SliderFloat3("strength", c.strength, 0.0f, 1.0f, "%.2f");
   ImGui::SliderFloat3("falloff", c.falloff, 0.0f, 1.0f, "%.2f");
-  if (ImGui::SliderInt("taps", &c.samples, SSS_MIN_SAMPLES, SSS_MAX_SAMPLES)) c.samples |= 1;  // odd only
+  if (ImGui::SliderInt("taps", &c.taps, SSS_MIN_TAPS, SSS_MAX_TAPS)) c.taps |= 1;  // odd only
   ImGui::Checkbox("follow surface", &c.follow_surface);
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
@@ -58,10 +58,10 @@ void sss_section(WindowState *s) {
   }
   if (c.kernel_family != SSS_KERNEL_SEPARABLE && c.kernel_family != SSS_KERNEL_ARTIST) {
     auto material_name = [](void *, int i, const char **out) {
-      *out = sss_material_name(i);
+      *out = sss_profile_name(i);
       return *out != nullptr;
     };
-    ImGui::Combo("material", &c.material, material_name, nullptr, SSS_MATERIAL_WHOLEMILK + 1);
+    ImGui::Combo("material", &c.material, material_name, nullptr, SSS_PROFILE_WHOLEMILK + 1);
     ImGui::TextDisabled("  a measured material is fitted when chosen (up to ~0.3 s)");
   }
   ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
@@ -70,6 +70,7 @@ void sss_section(WindowState *s) {
   const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked"};
   ImGui::Combo("path", &c.path, paths, 4);
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
+  ImGui::Checkbox("debug checks (SSS_CREATE_DEBUG_CHECKS: re-creates the context)", &c.debug_checks);
   if (c.cross_bilateral) {
     ImGui::TextDisabled("  13 taps, r_max 4.5 mm, Table 1 profile; strength, falloff, taps and\n"
                         "  follow surface apply to the separable mode only");

@@ -34,6 +34,17 @@ bool create_luts(Renderer *r) {
   return true;
 }
 
+// SSS_CREATE_DEBUG_CHECKS is a create flag: a new library context with or without it, and the
+// LUTs again (they belonged to the old context). The next set_sss_controls gives it the settings.
+bool recreate_sss(Renderer *r, bool debug_checks) {
+  const SssStage old = r->sss;
+  destroy_sss_stage(&r->sss);
+  if (!create_sss_stage(&r->sss, old.get_proc_address, old.user, debug_checks) || !create_luts(r)) return false;
+  std::printf("sss_demo: the library's context re-created %s SSS_CREATE_DEBUG_CHECKS\n",
+              debug_checks ? "with" : "without");
+  return true;
+}
+
 // targets.diffuse into targets.after (same size and format) through two temporary framebuffers.
 void copy_diffuse_to_after(const FrameTargets &targets) {
   GLuint framebuffers[2] = {0, 0};
@@ -159,11 +170,20 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     if (!check_gl("the pre-integrated frame's comparison pass")) return false;
   }
 
+  if (controls.debug_checks != r->sss.debug_checks && !recreate_sss(r, controls.debug_checks)) return false;
   if (controls.enabled && !result->preintegrated) {
     std::int32_t region[4] = {0, 0, 0, 0};
     const bool has_region = controls.region && translucent_region(*r->scene, camera, controls, targets->width,
                                                                   targets->height, region);
-    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) ||
+    SssFrameShape shape;
+    shape.width = targets->width;
+    shape.height = targets->height;
+    shape.samples = targets->samples;
+    shape.stencil = controls.use_stencil;
+    shape.region = has_region;
+    // After new settings or a resize, sss_prepare builds and allocates what the frame will need,
+    // so the frame itself does not (no hitch; a no-op when nothing changed).
+    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) || !prepare_sss(&r->sss, shape) ||
         !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
                    targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
                    has_region ? region : nullptr)) {

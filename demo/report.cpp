@@ -49,7 +49,7 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
                 static_cast<double>(s.strength[0]), static_cast<double>(s.strength[1]),
                 static_cast<double>(s.strength[2]), static_cast<double>(s.falloff[0]),
                 static_cast<double>(s.falloff[1]), static_cast<double>(s.falloff[2]),
-                static_cast<double>(s.separable_scale), s.jitter > 0.0f ? "all" : "up to", s.samples,
+                static_cast<double>(s.separable_scale), s.jitter > 0.0f ? "all" : "up to", s.taps,
                 s.jitter > 0.0f ? "" : " (as each pixel's footprint needs)",
                 (s.flags & SSS_FOLLOW_SURFACE) != 0 ? "on" : "off",
                 c.use_stencil ? "stencil == 1 and alpha > 0" : "alpha > 0",
@@ -59,16 +59,19 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
                 : c.shading == kShadingAutomatic   ? "automatic (pre-integrated below 0.5 px per mm)"
                                                    : "screen-space filter");
   std::string result = text;
-  if (s.mode == SSS_MODE_SEPARABLE && (s.kernel.family != SSS_KERNEL_SEPARABLE || s.jitter > 0.0f)) {
+  sss_kernel_desc kernel;
+  sss_default_kernel_desc(&kernel);
+  if (s.kernel != nullptr) kernel = *s.kernel;
+  if (s.mode == SSS_MODE_SEPARABLE && (kernel.family != SSS_KERNEL_SEPARABLE || s.jitter > 0.0f)) {
     static const char *const kNames[] = {"eq. (1)", "sum of Gaussians", "SVD", "pre-integrated", "guided rank-1",
                                          "artist two-Gaussian"};
-    const bool profiled = s.kernel.family != SSS_KERNEL_SEPARABLE && s.kernel.family != SSS_KERNEL_ARTIST;
-    std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", kNames[s.kernel.family % 6],
-                  s.kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || s.kernel.family == SSS_KERNEL_SVD ||
-                          s.kernel.family == SSS_KERNEL_PREINTEGRATED
-                      ? (" rank " + std::to_string(s.kernel.rank)).c_str()
+    const bool profiled = kernel.family != SSS_KERNEL_SEPARABLE && kernel.family != SSS_KERNEL_ARTIST;
+    std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", kNames[kernel.family % 6],
+                  kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || kernel.family == SSS_KERNEL_SVD ||
+                          kernel.family == SSS_KERNEL_PREINTEGRATED
+                      ? (" rank " + std::to_string(kernel.rank)).c_str()
                       : "",
-                  profiled ? " of " : "", profiled ? sss_material_name(s.kernel.profile.material) : "",
+                  profiled ? " of " : "", profiled ? sss_profile_name(kernel.profile.profile) : "",
                   static_cast<double>(s.jitter));
     result += text;
   }

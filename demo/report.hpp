@@ -7,7 +7,7 @@
 #include "scene.hpp"
 #include "sss_stage.hpp"
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 
 #include <string>
 #include <vector>

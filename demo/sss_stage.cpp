@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstdio>
+#include <cstring>
 
 namespace demo {
 
@@ -31,7 +32,7 @@ SssControls default_sss_controls() {
     c.strength[i] = s.strength[i];
     c.falloff[i] = s.falloff[i];
   }
-  c.samples = s.samples;
+  c.taps = s.taps;
   c.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
   return c;
 }
@@ -41,21 +42,25 @@ std::uint32_t blur_profile(const SssControls &controls) {
     // The families built from a profile blur with the chosen material's; eq. (1) and the artist
     // model have their own shapes, closest to skin.
     const bool profiled = controls.kernel_family != SSS_KERNEL_SEPARABLE && controls.kernel_family != SSS_KERNEL_ARTIST;
-    return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_MATERIAL_SKIN);
+    return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_PROFILE_SKIN_DEON);
   }
   sss_settings s{};
   sss_default_settings(&s);
   return s.cbf_profile;
 }
 
-bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user) {
+bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user, bool debug_checks) {
+  *stage = SssStage{};
+  stage->get_proc_address = get_proc_address;
+  stage->user = user;
+  stage->debug_checks = debug_checks;
   sss_create_desc desc{};
   desc.struct_size = sizeof desc;
   desc.get_proc_address = get_proc_address;
   desc.get_proc_address_user = user;
   desc.log = log_message;
   desc.log_user = nullptr;
-  desc.flags = 0;
+  desc.flags = debug_checks ? static_cast<std::uint32_t>(SSS_CREATE_DEBUG_CHECKS) : 0u;
   if (!report(sss_create(&desc, &stage->context), "sss_create", nullptr)) return false;
   stage->settings.struct_size = sizeof stage->settings;
   return report(sss_get_settings(stage->context, &stage->settings), "sss_get_settings", stage->context);
@@ -70,16 +75,47 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
     s.strength[i] = controls.strength[i];
     s.falloff[i] = controls.falloff[i];
   }
-  s.samples = controls.samples;
+  s.taps = controls.taps;
   s.flags = controls.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
   s.mode = controls.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
-  s.kernel.family = controls.kernel_family;
-  s.kernel.rank = controls.kernel_rank;
-  s.kernel.profile.material = controls.material;
+  sss_kernel_desc kernel;
+  sss_default_kernel_desc(&kernel);
+  kernel.family = controls.kernel_family;
+  kernel.rank = controls.kernel_rank;
+  kernel.profile.profile = controls.material;
+  s.kernel = controls.kernel_family == SSS_KERNEL_SEPARABLE ? nullptr : &kernel;
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
+  if (std::memcmp(&s, &stage->settings, sizeof s) == 0) return true;  // unchanged: nothing to validate or rebuild
   if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
+  stage->kernel = kernel;
   stage->settings = s;
+  if (s.kernel != nullptr) stage->settings.kernel = &stage->kernel;
+  return true;
+}
+
+bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
+  sss_prepare_desc d{};
+  d.struct_size = sizeof d;
+  d.width = shape.width;
+  d.height = shape.height;
+  d.color_format = 0x881A;   // GL_RGBA16F: the diffuse target
+  d.output_format = 0x881A;  // GL_RGBA16F: "after"
+  d.depth_format = 0x88F0;   // GL_DEPTH24_STENCIL8
+  d.samples = shape.samples;
+  d.stencil_format = shape.stencil ? 0x88F0u : 0u;
+  d.flags = shape.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u;
+  // Settings compare byte for byte, and the kernel they point at (always stage->kernel, so the pointer
+  // alone would not show a new family) too: the demo's kernels hold no pointers (no tabulated profile).
+  const bool same = stage->prepared && std::memcmp(&d, &stage->prepared_desc, sizeof d) == 0 &&
+                    std::memcmp(&stage->settings, &stage->prepared_settings, sizeof stage->settings) == 0 &&
+                    std::memcmp(&stage->kernel, &stage->prepared_kernel, sizeof stage->kernel) == 0;
+  if (same) return true;
+  if (!report(sss_prepare(stage->context, &d), "sss_prepare", stage->context)) return false;
+  stage->prepared = true;
+  stage->prepared_desc = d;
+  stage->prepared_settings = stage->settings;
+  stage->prepared_kernel = stage->kernel;
   return true;
 }
 

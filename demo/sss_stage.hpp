@@ -3,7 +3,7 @@
 // into a separate output texture ("after"), with the stencil the lighting pass wrote.
 #pragma once
 
-#include <sss/sss.h>
+#include <sss/sss_tools.h>
 
 #include <glm/mat4x4.hpp>
 
@@ -18,7 +18,7 @@ struct SssControls {
   float scale = 1.0f;            // sss_settings.scale: multiplies every scattering distance (1 = physical size)
   float strength[3] = {0.78f, 0.70f, 0.75f};
   float falloff[3] = {0.57f, 0.13f, 0.08f};
-  int samples = SSS_SAMPLES_MEDIUM;
+  int taps = SSS_TAPS_MEDIUM;     // sss_settings.taps
   bool follow_surface = true;
   bool use_stencil = true;       // false: the mask is alpha > 0 alone
   bool cross_bilateral = false;  // SSS_MODE_CROSS_BILATERAL (Mikkelsen 2010) instead of the separable kernel
@@ -26,7 +26,7 @@ struct SssControls {
   // pre-integrated, guided rank-1, artist; the profile's material; the share of jittered taps.
   int kernel_family = SSS_KERNEL_SEPARABLE;
   int kernel_rank = 1;
-  int material = SSS_MATERIAL_SKIN;
+  int material = SSS_PROFILE_SKIN_DEON;
   float jitter = 0.0f;
   // Skipping work: the head's projected bounds, padded by the kernel's reach, as the frame's region
   // of translucent pixels (SSS_FRAME_REGION). (Taps follow each pixel's footprint in the library
@@ -47,6 +47,9 @@ struct SssControls {
   int shading = 0;               // kShadingScreenSpace, kShadingPreintegrated, kShadingAutomatic
   int decision_height = 0;       // automatic: the image height the choice is made for (0: the target's);
                                  // the heat map's small frame passes the shown frame's, to choose alike
+  // SSS_CREATE_DEBUG_CHECKS: every frame checks the GL (errors, framebuffers, textures). A create
+  // flag: toggling it re-creates the library's context (render_frame).
+  bool debug_checks = false;
 };
 
 constexpr int kShadingScreenSpace = 0;
@@ -65,10 +68,34 @@ SssControls default_sss_controls();
 struct SssStage {
   sss_context *context = nullptr;
   sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
+  sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
+  sss_get_proc_address_fn get_proc_address = nullptr;  // as created, for a re-creation
+  void *user = nullptr;
+  bool debug_checks = false;  // created with SSS_CREATE_DEBUG_CHECKS
+  // What sss_prepare last got ready (prepared false: nothing yet): the frames' description and the
+  // settings it was called with.
+  bool prepared = false;
+  sss_prepare_desc prepared_desc{};
+  sss_settings prepared_settings{};
+  sss_kernel_desc prepared_kernel{};
 };
 
-// sss_create with the given loader (a GL context must be current). Prints the error on failure.
-bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user);
+// The frames sss_prepare gets ready for: the demo's targets (RGBA16F diffuse, DEPTH24_STENCIL8,
+// into the RGBA16F "after"; multisampled with `samples` > 0).
+struct SssFrameShape {
+  int width = 0, height = 0, samples = 0;
+  bool stencil = false, region = false;
+};
+
+// sss_create with the given loader (a GL context must be current), with SSS_CREATE_DEBUG_CHECKS
+// when `debug_checks`. Prints the error on failure.
+bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address, void *user,
+                      bool debug_checks = false);
+
+// sss_prepare for frames of `shape` when they or the settings changed since the last call (a
+// resize, new settings), so the next frame compiles and allocates nothing: no hitch. Returns false
+// after printing the error.
+bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 
 // sss_set_settings from the controls, at the scene's world units per millimetre of surface
 // (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.

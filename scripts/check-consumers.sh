@@ -24,6 +24,16 @@ check_prefix() {  # name, prefix
   cc -std=c99 -Wall -Werror integration/consumer/minimal_integration.c -o "build/consumer-$name/pc_minimal" \
     $(pkg-config --cflags sss egl) $(pkg-config --libs "${static_flag[@]}" sss egl) -lm
   LD_LIBRARY_PATH="$PWD/$prefix/lib" "build/consumer-$name/pc_minimal"
+  # The tools through sss-tools.pc (C++: the kernel API and a fitted kernel).
+  # shellcheck disable=SC2046
+  c++ -std=c++17 -Wall -Werror integration/consumer/minimal_integration.cpp -o "build/consumer-$name/pc_tools" \
+    $(pkg-config --cflags sss-tools) $(pkg-config --libs "${static_flag[@]}" sss-tools)
+  LD_LIBRARY_PATH="$PWD/$prefix/lib" "build/consumer-$name/pc_tools"
+  # The runtime library needs no NLopt: neither sss.pc nor, shared, libsss.so names it.
+  if pkg-config --libs --static sss | grep nlopt >/dev/null; then
+    echo "check-consumers: sss.pc (the runtime) asks for NLopt" >&2
+    exit 1
+  fi
 
   # The defines the CMake target gives its users must be the ones sss.pc gives.
   local cmake_defs pc_defs
@@ -50,6 +60,12 @@ if nm -C build/prefix-shared/lib/libsss.so | grep restore_skip_mask; then
   echo "check-consumers: the shared libsss contains the state guard's test hook" >&2
   exit 1
 fi
+# The shared runtime needs no NLopt; the shared tools library does.
+if readelf -d build/prefix-shared/lib/libsss.so | grep nlopt >/dev/null; then
+  echo "check-consumers: the shared libsss (the runtime) needs NLopt" >&2
+  exit 1
+fi
+readelf -d build/prefix-shared/lib/libsss_tools.so | grep nlopt >/dev/null  # the check sees NEEDED entries
 check_prefix shared build/prefix-shared
 echo "== consumer (subdirectory): add_subdirectory of this checkout"
 cmake -S integration/consumer -B build/consumer-subdirectory -G Ninja -DSSS_SOURCE_DIR="$PWD"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Rewrites the README's headline table (between "<!-- headline: begin" and "<!-- headline: end -->")
 # from the committed benchmark results: docs/benchmarks/results.csv and results.json, and
-# docs/benchmarks-h100/ when present (tools/docs/sss_docs.cpp makes the table). The ctest
+# docs/benchmarks-gpu/ when present (tools/docs/sss_docs.cpp makes the table). The ctest
 # docs.readme_headline_numbers fails until this has run after the results change;
 # scripts/run-benchmark.sh runs it at its end. Builds sss_docs in build/release (configuring it if
 # needed); installs what is missing first.

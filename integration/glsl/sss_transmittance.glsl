@@ -27,7 +27,7 @@
 // added to the diffuse irradiance the sss filter blurs.
 
 #ifndef SSS_TRANSMITTANCE_MAX_TERMS
-#define SSS_TRANSMITTANCE_MAX_TERMS 8  // = SSS_PROFILE_MAX_TERMS in sss_kernels.h
+#define SSS_TRANSMITTANCE_MAX_TERMS 8  // = SSS_PROFILE_MAX_TERMS in sss_tools.h
 #endif
 
 uniform vec4 sss_transmittance_terms[SSS_TRANSMITTANCE_MAX_TERMS];  // variance mm², weight r, g, b

@@ -12,6 +12,7 @@
 // the written colour rounded to half float here) and depth.glsl (view_distance, clip_w).
 
 #include "nearest_half.glsl"
+#include "colour_range.glsl"
 #include "depth.glsl"
 
 SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
@@ -59,7 +60,7 @@ float depth_at(ivec2 texel) { return view_distance(texelFetch(u_depth, texel, 0)
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 centre = texelFetch(u_source, pixel, 0);
-  if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
+  if (!(centre.a > 0.0) || !sss_in_range(centre)) {
     leave_untouched(pixel, centre);
     return;
   }
@@ -105,7 +106,7 @@ void main() {
     // Nearest texel: neighbouring pixels can be far apart on the surface, so no filtering.
     ivec2 texel = ivec2(floor(position));
     vec4 tap = texelFetch(u_source, texel, 0);
-    if (!(tap.a > 0.0) || any(isnan(tap)) || any(isinf(tap))) continue;
+    if (!(tap.a > 0.0) || !sss_in_range(tap)) continue;
     float dz = (depth_at(texel) - d0) * mm_per_world;
     if (isnan(dz) || isinf(dz)) continue;
     // Spatial Gaussian on the screen-parallel distance times range Gaussian on the depth

@@ -36,12 +36,13 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
   return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
 }
 
-// A tap's colour as it enters the sum: a non-finite neighbour must not spread, so it counts as the
+// A tap's colour as it enters the sum: a non-finite neighbour (or one past colour_range.glsl's bound)
+// must not spread, so it counts as the
 // centre's colour (its weight goes to the centre), like a tap across a depth step; with
 // follow-surface it is blended back to the centre's as its depth leaves the kernel's reach.
 vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
   vec3 tap = fetched.rgb;
-  if (any(isnan(tap)) || any(isinf(tap))) tap = centre;
+  if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #if SSS_FOLLOW_SURFACE
   float d = follow_surface * abs(centre_distance - view_distance(fetched.a));
 #if SSS_FOLLOW_SURFACE == 2

@@ -20,6 +20,7 @@
 // textures it does not write.
 
 #include "nearest_half.glsl"
+#include "colour_range.glsl"
 #include "depth.glsl"
 #include "jitter.glsl"
 
@@ -98,7 +99,7 @@ void main() {
   const ivec2 pixel = u_axis * along + cross_axis * across;
   const int centre_index = along - cache_start;
   vec4 centre = vec4(s_texel[centre_index].rgb, texelFetch(u_source, pixel, 0).a);
-  if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
+  if (!(centre.a > 0.0) || !sss_in_range(centre)) {
     write_untouched(pixel, centre);
     return;
   }

@@ -27,6 +27,7 @@
 // (the taps and their weights: footprint_sum, shared with separable_blur.comp).
 
 #include "nearest_half.glsl"
+#include "colour_range.glsl"
 #include "depth.glsl"
 #include "jitter.glsl"
 
@@ -75,8 +76,9 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 centre = texelFetch(u_source, pixel, 0);
-  // Not translucent, or a non-finite colour or strength: the pixel keeps its own value.
-  if (!(centre.a > 0.0) || any(isnan(centre)) || any(isinf(centre))) {
+  // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
+  // pixel keeps its own value.
+  if (!(centre.a > 0.0) || !sss_in_range(centre)) {
     leave_untouched(pixel, centre);
     return;
   }

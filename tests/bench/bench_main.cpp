@@ -32,9 +32,10 @@
 #include "report.hpp"
 #include "results.hpp"
 #include "scenes/scenes.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 #include "sss_headless.h"
 #include "state_cost.hpp"
+#include "hitch_cost.hpp"
 #include "timing.hpp"
 
 using namespace host_gl;
@@ -61,7 +62,7 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   }
   // What the state save and restore costs: the paper's default kernel once more, with the host
   // managing GL state itself (SSS_CREATE_NO_STATE_RESTORE).
-  configs.push_back({"separable-no-restore", SSS_SAMPLES_MEDIUM, true});
+  configs.push_back({"separable-no-restore", SSS_TAPS_MEDIUM, true});
   // Skipping what a frame does not need: the default kernel written back in place (a host's
   // frame), and with the host's region of translucent pixels.
   // The masked fragment path and the compute path (sss_settings.path) the same two ways, and the
@@ -69,7 +70,7 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   for (const char* kind : {"separable-in-place", "separable-region",
                            "separable-masked", "separable-masked-region", "separable-compute",
                            "separable-compute-region", "separable-auto-region"}) {
-    configs.push_back({kind, SSS_SAMPLES_MEDIUM, true});
+    configs.push_back({kind, SSS_TAPS_MEDIUM, true});
   }
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
   // non-translucent neighbours), so no follow-surface variants.
@@ -297,6 +298,7 @@ int run(const Options& options) {
     std::printf("sss_bench: one sss_apply_frame drawing nothing: %.1f us with the state restore, %.1f us without\n",
                 cost.with_restore_us, cost.without_restore_us);
   }
+  record_hitch_cost(loader, 320, 180, &info);
   const std::vector<std::string> default_scenes = options.scenes.empty() ? canonical_scene_names() : options.scenes;
   auto scenes_at = [&](std::size_t size_index) {
     const bool own = size_index < options.size_scenes.size() && !options.size_scenes[size_index].empty();

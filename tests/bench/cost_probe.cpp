@@ -98,7 +98,11 @@ void physical_settings(const sss_bench::GpuScene& scene, const Options& o, sss_s
 #else
   s->world_units_per_mm = scene.world_units_per_mm;
 #endif
-  s->samples = o.taps;
+#if SSS_VERSION_MAJOR == 0 && SSS_VERSION_MINOR < 3
+  s->samples = o.taps;  // renamed `taps` in 0.3
+#else
+  s->taps = o.taps;
+#endif
   if (!o.default_path) s->path = o.path;
 }
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "method.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 using namespace host_gl;
 
@@ -38,7 +38,7 @@ class CrossBilateralMethod : public Method {
     s.world_units_per_mm = (scene.world_units_per_mm);
     s.mode = SSS_MODE_CROSS_BILATERAL;
     s.cbf_taps = taps_;
-    s.cbf_profile = SSS_MATERIAL_SKIN;
+    s.cbf_profile = SSS_PROFILE_SKIN_DEON;
     s.cbf_r_max_mm = 8.0f;  // d'Eon's radius of significant contributions for skin (Mikkelsen §5)
     sss_frame frame = {};
     frame.struct_size = sizeof frame;

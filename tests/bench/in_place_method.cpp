@@ -55,7 +55,7 @@ class InPlaceMethod : public Method {
     sss_settings s;
     sss_default_settings(&s);
     s.world_units_per_mm = (scene.world_units_per_mm);
-    s.samples = taps_;
+    s.taps = taps_;
     s.flags = SSS_FOLLOW_SURFACE;
     s.path = path_;
     sss_frame frame = {};

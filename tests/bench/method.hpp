@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gpu_scene.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 namespace sss_bench {
 

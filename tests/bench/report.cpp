@@ -191,6 +191,16 @@ void write_results_document(const std::string& path, const std::string& out_dir,
         << "cost " << fmt(info.state_with_restore_us - info.state_without_restore_us, "%.1f") << " µs of CPU time per "
         << "call on this driver.\n";
   }
+  if (info.hitch_repeats > 0) {
+    out << "\nNo hitch (tests/bench/hitch_cost.cpp, " << info.hitch_width << "×" << info.hitch_height
+        << ", wall clock, medians of " << info.hitch_repeats << " fresh contexts): the first frame after a settings "
+        << "change from " << info.hitch_change << " takes " << fmt(info.first_frame_unprepared_ms, "%.2f")
+        << " ms without `sss_prepare` and " << fmt(info.first_frame_prepared_ms, "%.2f") << " ms after it ("
+        << fmt(info.prepare_ms, "%.2f") << " ms, at a moment the host chooses); a steady frame takes "
+        << fmt(info.steady_frame_ms, "%.2f") << " ms. No stall: a steady described frame makes "
+        << fmt(info.steady_queries_restore, "%.1f") << " GL queries with the state restore and "
+        << fmt(info.steady_queries_no_restore, "%.1f") << " with `SSS_CREATE_NO_STATE_RESTORE` (counting loader).\n";
+  }
 
   // Against the paper.
   const ResultRow* s17_close = find(rows, "head-close", width, height, "separable", 17, true);

@@ -132,6 +132,18 @@ void write_json(const std::string& path, const RunInfo& info, const std::vector<
               {"clock", info.clock},       {"date", info.date},         {"mode", info.mode},
               {"command_line", info.command_line}, {"reference", info.reference},
               {"warmup", info.warmup},     {"repetitions", info.repetitions}};
+  if (info.hitch_repeats > 0) {
+    j["run"]["first_frame"] = {{"width", info.hitch_width},
+                               {"height", info.hitch_height},
+                               {"repeats", info.hitch_repeats},
+                               {"change", info.hitch_change},
+                               {"unprepared_ms", info.first_frame_unprepared_ms},
+                               {"prepare_ms", info.prepare_ms},
+                               {"prepared_ms", info.first_frame_prepared_ms},
+                               {"steady_ms", info.steady_frame_ms},
+                               {"steady_queries_per_frame", info.steady_queries_restore},
+                               {"steady_queries_per_frame_no_restore", info.steady_queries_no_restore}};
+  }
   j["results"] = nlohmann::json::array();
   for (const ResultRow& r : rows) {
     j["results"].push_back({{"scene", r.scene},
@@ -168,11 +180,31 @@ void write_json(const std::string& path, const RunInfo& info, const std::vector<
   open_for_writing(path) << j.dump(2) << "\n";
 }
 
+namespace {
+// The first frame after a settings change and the queries of a steady frame (hitch_cost.hpp).
+void write_first_frame_table(std::ostream& out, const RunInfo& info) {
+  if (info.hitch_repeats == 0) return;
+  out << "No hitch, no stall (tests/bench/hitch_cost.cpp): " << info.hitch_width << "×" << info.hitch_height
+      << ", in place, a settings change from " << info.hitch_change << "; wall clock with glFinish around each call, "
+      << "medians of " << info.hitch_repeats << " fresh contexts.\n\n"
+      << "| measure | value |\n|---|---:|\n"
+      << "| first frame after the change, no `sss_prepare` | " << format(info.first_frame_unprepared_ms, "%.2f")
+      << " ms |\n| `sss_prepare` after the change | " << format(info.prepare_ms, "%.2f")
+      << " ms |\n| first frame after the change, prepared | " << format(info.first_frame_prepared_ms, "%.2f")
+      << " ms |\n| a steady frame of those settings | " << format(info.steady_frame_ms, "%.2f")
+      << " ms |\n| GL queries per steady described frame, state restore | "
+      << format(info.steady_queries_restore, "%.1f")
+      << " |\n| GL queries per steady described frame, `SSS_CREATE_NO_STATE_RESTORE` | "
+      << format(info.steady_queries_no_restore, "%.1f") << " |\n\n";
+}
+}  // namespace
+
 void write_markdown_table(const std::string& path, const RunInfo& info, const std::vector<ResultRow>& rows) {
   std::ofstream out = open_for_writing(path);
   out << "Renderer: `" << info.renderer << "` (" << info.version << ", " << info.backend << "), timing: " << info.clock
       << ", " << info.warmup << " warm-up + " << info.repetitions << " timed frames, medians; reference: "
       << info.reference << ".\n\n";
+  write_first_frame_table(out, info);
   out << "| scene | size | mm/px | method | passes | time ms | × copy | miss interior | R | G | B | miss silhouette | "
          "miss border | rel. RMSE interior | rel. RMSE | max abs | p99 abs | SSIM |\n";
   out << "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -16,6 +16,12 @@ struct RunInfo {
   // The GL state save and restore per sss_apply_frame call (state_cost.hpp); 0: not measured.
   double state_with_restore_us = 0.0, state_without_restore_us = 0.0;
   int state_calls = 0, state_batches = 0;
+  // No hitch, no stall (hitch_cost.hpp): the first frame after a settings change with and without
+  // sss_prepare, and GL queries per steady described frame; hitch_repeats 0: not measured.
+  int hitch_width = 0, hitch_height = 0, hitch_repeats = 0;
+  double first_frame_unprepared_ms = 0.0, first_frame_prepared_ms = 0.0, prepare_ms = 0.0, steady_frame_ms = 0.0;
+  double steady_queries_restore = 0.0, steady_queries_no_restore = 0.0;
+  std::string hitch_change;
   // The GPU spin before each timed frame (gpu_busy.hpp), as calibrated; 0: none.
   double gpu_preload_ms = 0.0;
   // The profile's reach (regions.hpp: profile_reach_mm), which the regions are measured with.

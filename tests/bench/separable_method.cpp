@@ -3,8 +3,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../support/kernel_of.hpp"
 #include "method.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 namespace sss_bench {
 
@@ -37,14 +38,14 @@ class SeparableMethod : public Method {
     sss_settings s;
     sss_default_settings(&s);
     s.world_units_per_mm = (scene.world_units_per_mm);
-    s.samples = taps_;
+    s.taps = taps_;
     s.flags = follow_ ? SSS_FOLLOW_SURFACE : 0u;
     // The filter's own passes, on the plain fragment path: what these rows have always timed. The
     // default path (SSS_PATH_AUTO) is timed by the in-place rows ("separable-auto", ...).
     s.path = SSS_PATH_FRAGMENT;
     if (!kernel_.name.empty()) {
-      s.kernel.family = kernel_.family;
-      s.kernel.rank = kernel_.rank;
+      sss_test::kernel_of(s).family = kernel_.family;
+      sss_test::kernel_of(s).rank = kernel_.rank;
       s.jitter = kernel_.jitter;
     }
     sss_frame frame = {};

@@ -72,25 +72,7 @@ StateCost measure_state_cost(const GlLoader& loader) {
   GLint viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_VIEWPORT, viewport);
   const auto cleanup = [&] {
-    // The context without restores leaves the module's pass state behind, as that flag promises:
-    // put back the defaults the rest of the benchmark's own passes rely on.
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    glUseProgram(0);
-    glBindVertexArray(0);
-    for (GLuint unit = 0; unit < 4; ++unit) {
-      glActiveTexture(GL_TEXTURE0 + unit);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      glBindSampler(unit, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    glDisable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, 0, 0xFFFFFFFFu);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glStencilMask(0xFFFFFFFFu);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    reset_pass_state(viewport);
     const GLuint textures[2] = {color, depth};
     glDeleteTextures(2, textures);
   };
@@ -103,6 +85,26 @@ StateCost measure_state_cost(const GlLoader& loader) {
   }
   cleanup();
   return cost;
+}
+
+void reset_pass_state(const GLint viewport[4]) {
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glUseProgram(0);
+  glBindVertexArray(0);
+  for (GLuint unit = 0; unit < 4; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindSampler(unit, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  glDisable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xFFFFFFFFu);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0xFFFFFFFFu);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace sss_bench

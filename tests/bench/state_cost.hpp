@@ -17,4 +17,8 @@ struct StateCost {
 // batch) for a context that restores state and one that does not.
 StateCost measure_state_cost(const GlLoader& loader);
 
+// What a context created with SSS_CREATE_NO_STATE_RESTORE leaves behind, as that flag promises, put
+// back to the defaults the rest of the benchmark's own passes rely on (and `viewport`).
+void reset_pass_state(const int viewport[4]);
+
 }  // namespace sss_bench

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sss/sss_lut.h" /* includes sss.h */
+#include "sss/sss_tools.h"
 
 static int failures = 0;
 #define CHECK(cond)                                                     \
@@ -17,7 +18,7 @@ static int failures = 0;
 
 int main(void) {
   sss_settings settings;
-  float taps[SSS_MAX_SAMPLES * 4];
+  float taps[SSS_MAX_TAPS * 4];
   float sum[3] = {0.0f, 0.0f, 0.0f};
   int i;
   sss_context *ctx = NULL;
@@ -28,16 +29,16 @@ int main(void) {
   sss_frame frame;
   sss_kernel_desc kd;
   sss_profile_desc pd;
-  float plan[SSS_KERNEL_MAX_TERMS * 2 * SSS_MAX_SAMPLES * 4];
+  float plan[SSS_KERNEL_MAX_TERMS * 2 * SSS_MAX_TAPS * 4];
   float depth_variance[SSS_KERNEL_MAX_TERMS];
   float radius = 1.0f, rgb[3], reach = 0.0f;
   int32_t terms = 0;
 
   sss_default_settings(&settings);
   CHECK(settings.struct_size == sizeof settings);
-  CHECK(settings.samples == SSS_SAMPLES_MEDIUM);
-  CHECK(sss_kernel_separable(settings.samples, settings.strength, settings.falloff, taps) == SSS_OK);
-  for (i = 0; i < settings.samples; ++i) {
+  CHECK(settings.taps == SSS_TAPS_MEDIUM);
+  CHECK(sss_kernel_separable(settings.taps, settings.strength, settings.falloff, taps) == SSS_OK);
+  for (i = 0; i < settings.taps; ++i) {
     sum[0] += taps[i * 4 + 0];
     sum[1] += taps[i * 4 + 1];
     sum[2] += taps[i * 4 + 2];
@@ -45,22 +46,23 @@ int main(void) {
   CHECK(fabs(sum[0] - 1.0) < 1e-5 && fabs(sum[1] - 1.0) < 1e-5 && fabs(sum[2] - 1.0) < 1e-5);
   CHECK(taps[3] == 0.0f); /* centre first */
   CHECK(sss_kernel_separable(4, settings.strength, settings.falloff, taps) == SSS_ERROR_INVALID_ARGUMENT);
-  CHECK(strstr(sss_last_error(NULL), "samples = 4") != NULL);
+  CHECK(strstr(sss_last_error(NULL), "taps = 4") != NULL);
   CHECK(strcmp(sss_result_string(SSS_ERROR_GL), "SSS_ERROR_GL") == 0);
-  CHECK(settings.mode == SSS_MODE_SEPARABLE && settings.cbf_taps == SSS_CBF_DEFAULT_TAPS);
+  CHECK(settings.mode == SSS_MODE_SEPARABLE && settings.cbf_taps == 13);
   {
     float transmittance[SSS_PROFILE_MAX_TERMS * 4];
     int32_t count = 0;
-    CHECK(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
+    CHECK(sss_profile_transmittance_terms(SSS_PROFILE_SKIN_DEON, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
     CHECK(count == 6 && transmittance[0] > 0.0f);
     CHECK(settings.cbf_profile == SSS_PROFILE_MIKKELSEN_2010);
-    /* The same from a profile desc: settings.kernel.profile is d'Eon's six Gaussians by default. */
-    CHECK(sss_profile_desc_transmittance_terms(&settings.kernel.profile, transmittance, SSS_PROFILE_MAX_TERMS,
-                                               &count) == SSS_OK);
+    /* The same from a profile desc: the default one is d'Eon's six Gaussians. */
+    CHECK(settings.kernel == NULL);
+    sss_default_profile_desc(&pd);
+    CHECK(sss_profile_desc_transmittance_terms(&pd, transmittance, SSS_PROFILE_MAX_TERMS, &count) == SSS_OK);
     CHECK(count == 6);
     CHECK(sss_profile_desc_transmittance_terms(NULL, transmittance, SSS_PROFILE_MAX_TERMS, &count) ==
           SSS_ERROR_INVALID_ARGUMENT);
-    CHECK((settings.flags & SSS_ADAPTIVE_TAPS) == 0u);
+    CHECK(settings.flags == SSS_FOLLOW_SURFACE);
   }
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;
@@ -77,9 +79,9 @@ int main(void) {
   CHECK(fabs(lut_rgba[12] - 1.0) < 1e-6);            /* N.L = 1 on a flat row: lit */
   CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK);
   CHECK(lut_rgba[0] == 0.0f && lut_rgba[12] == 1.0f);
-  lut.profile = SSS_MATERIAL_MARBLE; /* the materials of sss_kernels.h */
+  lut.profile = SSS_PROFILE_MARBLE; /* one sss_profile space */
   CHECK(sss_lut_diffuse_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_OK && fabs(lut_rgba[12] - 1.0) < 1e-6);
-  lut.profile = SSS_MATERIAL_TABULATED;
+  lut.profile = SSS_PROFILE_TABULATED;
   CHECK(sss_lut_diffuse_fill(&lut, lut_rgba, 4 * 4 * 2) == SSS_ERROR_INVALID_ARGUMENT);
   lut.profile = SSS_PROFILE_SKIN_DEON;
   CHECK(sss_lut_shadow_fill(&lut, lut_rgba, 31) == SSS_ERROR_INVALID_ARGUMENT);
@@ -115,11 +117,11 @@ int main(void) {
     CHECK(strstr(sss_last_error(NULL), "ctx is NULL") != NULL);
   }
 
-  /* The kernel-family API (sss_kernels.h, through sss.h). */
+  /* The kernel-family API (sss_tools.h). */
   sss_default_kernel_desc(&kd);
   kd.family = SSS_KERNEL_SVD;
   kd.rank = 3;
-  kd.profile.material = SSS_MATERIAL_MARBLE;
+  kd.profile.profile = SSS_PROFILE_MARBLE;
   CHECK(sss_kernel_plan(&kd, SSS_KERNEL_MAX_TERMS, plan, depth_variance, &terms, &reach) == SSS_OK);
   CHECK(terms == 3 && reach > 0.0f && depth_variance[0] == 0.0f);
   kd.family = SSS_KERNEL_ARTIST;
@@ -129,10 +131,10 @@ int main(void) {
   CHECK(sss_kernel_plan(&kd, SSS_KERNEL_MAX_TERMS, plan, NULL, &terms, NULL) == SSS_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(sss_last_error(NULL), "desc->family = 42") != NULL);
   sss_default_profile_desc(&pd);
-  pd.material = SSS_MATERIAL_APPLE;
+  pd.profile = SSS_PROFILE_APPLE;
   CHECK(sss_profile_evaluate(&pd, 1, &radius, rgb) == SSS_OK && rgb[0] > 0.0f);
   CHECK(sss_profile_integral(&pd, rgb) == SSS_OK && rgb[0] > 0.0f && rgb[0] < 1.0f);
-  CHECK(strcmp(sss_material_name(SSS_MATERIAL_APPLE), "apple") == 0);
+  CHECK(strcmp(sss_profile_name(SSS_PROFILE_APPLE), "apple") == 0);
   printf("%d passed, %d failed\n", failures == 0 ? 1 : 0, failures == 0 ? 0 : 1);
   return failures == 0 ? 0 : 1;
 }

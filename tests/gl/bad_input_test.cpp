@@ -131,9 +131,9 @@ TEST_F(BadInput, SettingsOutOfRangeKeepThePreviousSettings) {
     const char* fragment;
   };
   const Case cases[] = {
-      {[](sss_settings* s) { s->samples = 16; }, "samples = 16"},
-      {[](sss_settings* s) { s->samples = 1; }, "samples = 1"},
-      {[](sss_settings* s) { s->samples = 67; }, "samples = 67"},
+      {[](sss_settings* s) { s->taps = 16; }, "settings->taps = 16"},
+      {[](sss_settings* s) { s->taps = 1; }, "settings->taps = 1"},
+      {[](sss_settings* s) { s->taps = 67; }, "settings->taps = 67"},
       {[](sss_settings* s) { s->world_units_per_mm = NAN; }, "settings->world_units_per_mm = nan"},
       {[](sss_settings* s) { s->world_units_per_mm = -1.0f; }, "settings->world_units_per_mm = -1"},
       {[](sss_settings* s) { s->world_units_per_mm = INFINITY; }, "settings->world_units_per_mm = inf"},
@@ -147,7 +147,7 @@ TEST_F(BadInput, SettingsOutOfRangeKeepThePreviousSettings) {
     c.mutate(&s);
     const sss_settings now = expect_settings_refused(sss_, s, c.fragment);
     EXPECT_EQ(now.world_units_per_mm, good.world_units_per_mm);
-    EXPECT_EQ(now.samples, good.samples);
+    EXPECT_EQ(now.taps, good.taps);
   }
 }
 

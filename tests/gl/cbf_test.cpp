@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <string>
 
+#include "../support/kernel_of.hpp"
 #include "filter_case.hpp"
 
 using namespace host_gl;
@@ -30,7 +31,7 @@ constexpr float kTolerance = 3e-3f;
 constexpr std::size_t kEdgeTaps = 8;
 constexpr float kOneTap = 0.05f;
 
-sss_settings cbf_settings(uint32_t profile = SSS_PROFILE_MIKKELSEN_2010, int taps = SSS_CBF_DEFAULT_TAPS) {
+sss_settings cbf_settings(uint32_t profile = SSS_PROFILE_MIKKELSEN_2010, int taps = 13) {  // 13: the documented default (sss.h)
   sss_settings s;
   sss_default_settings(&s);
   s.mode = SSS_MODE_CROSS_BILATERAL;
@@ -81,7 +82,7 @@ TEST_F(CrossBilateral, HalfFloatTargetsRoundToNearest) {
 
 TEST_F(CrossBilateral, MatchesCpuModelMeasuredMaterial) {
   FilterCase c;
-  c.settings = cbf_settings(SSS_MATERIAL_KETCHUP, 17);
+  c.settings = cbf_settings(SSS_PROFILE_KETCHUP, 17);
   c.settings.cbf_r_max_mm = 6.0f;
   expect_blurred_and_matching(run_case(relief(), c));
 }
@@ -96,7 +97,7 @@ TEST_F(CrossBilateral, MatchesCpuModelWithTheKernelsProfile) {
     radii.push_back(static_cast<float>(r));
     sss_profile_desc skin;
     skin.struct_size = sizeof skin;
-    skin.material = SSS_MATERIAL_SKIN;
+    skin.profile = SSS_PROFILE_SKIN_DEON;
     skin.gaussian_count = 6;
     skin.table_size = 0;
     skin.table_radius_mm = nullptr;
@@ -110,14 +111,14 @@ TEST_F(CrossBilateral, MatchesCpuModelWithTheKernelsProfile) {
     SCOPED_TRACE(variant == 0 ? "tabulated" : "skin, 3 Gaussians");
     FilterCase c;
     c.settings = cbf_settings(SSS_PROFILE_KERNEL);
-    sss_profile_desc& p = c.settings.kernel.profile;
+    sss_profile_desc& p = sss_test::kernel_of(c.settings).profile;
     if (variant == 0) {
-      p.material = SSS_MATERIAL_TABULATED;
+      p.profile = SSS_PROFILE_TABULATED;
       p.table_size = static_cast<int32_t>(radii.size());
       p.table_radius_mm = radii.data();
       p.table_rgb = rgb.data();
     } else {
-      p.material = SSS_MATERIAL_SKIN;
+      p.profile = SSS_PROFILE_SKIN_DEON;
       p.gaussian_count = 3;
     }
     expect_blurred_and_matching(run_case(relief(), c));
@@ -139,7 +140,7 @@ TEST_F(CrossBilateral, MatchesCpuModelWithTheKernelsProfile) {
 
 TEST_F(CrossBilateral, MatchesCpuModelSkinProfileManyTapsLinearDepth) {
   FilterCase c;
-  c.settings = cbf_settings(SSS_MATERIAL_SKIN, 25);
+  c.settings = cbf_settings(SSS_PROFILE_SKIN_DEON, 25);
   c.settings.cbf_r_max_mm = 8.0f;
   c.depth = DepthKind::linear_r32f;
   expect_blurred_and_matching(run_case(relief(), c));
@@ -320,17 +321,17 @@ TEST_F(CrossBilateral, SettingsRoundTrip) {
   sss_settings defaults;
   sss_default_settings(&defaults);
   EXPECT_EQ(defaults.mode, SSS_MODE_SEPARABLE);  // today's behaviour stays the default
-  EXPECT_EQ(defaults.cbf_taps, SSS_CBF_DEFAULT_TAPS);
-  EXPECT_EQ(defaults.cbf_r_max_mm, SSS_CBF_DEFAULT_R_MAX_MM);
+  EXPECT_EQ(defaults.cbf_taps, 13);  // Mikkelsen's N, as sss.h documents
+  EXPECT_EQ(defaults.cbf_r_max_mm, 4.5f);  // his r_max for skin
   EXPECT_EQ(defaults.cbf_profile, SSS_PROFILE_MIKKELSEN_2010);
-  const sss_settings s = cbf_settings(SSS_MATERIAL_SKIN, 15);
+  const sss_settings s = cbf_settings(SSS_PROFILE_SKIN_DEON, 15);
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
   EXPECT_EQ(back.mode, s.mode);
   EXPECT_EQ(back.cbf_taps, 15);
-  EXPECT_EQ(back.cbf_profile, SSS_MATERIAL_SKIN);
+  EXPECT_EQ(back.cbf_profile, SSS_PROFILE_SKIN_DEON);
   EXPECT_EQ(back.cbf_r_max_mm, s.cbf_r_max_mm);
 }
 
@@ -342,12 +343,12 @@ TEST_F(CrossBilateral, KernelFollowsFieldsChangedInTheOtherMode) {
   sss_settings separable = c.settings;
   separable.mode = SSS_MODE_SEPARABLE;
   separable.cbf_taps = 21;
-  separable.cbf_profile = SSS_MATERIAL_SKIN;
+  separable.cbf_profile = SSS_PROFILE_SKIN_DEON;
   // The 21-tap skin kernel set directly (run_case creates the context), then the same context taken
   // through 13 taps, the separable mode with the fields changed there, and back.
   FilterCase direct = c;
   direct.settings.cbf_taps = 21;
-  direct.settings.cbf_profile = SSS_MATERIAL_SKIN;
+  direct.settings.cbf_profile = SSS_PROFILE_SKIN_DEON;
   const FilterOutcome expected = run_case(relief(), direct);
   ASSERT_EQ(expected.result, SSS_OK);
   sss_settings back = separable;
@@ -386,7 +387,7 @@ TEST_F(CrossBilateral, BadSettingsAreRejectedAndKeepTheOldOnes) {
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = 0.0f; }},
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = NAN; }},
       {"settings->cbf_r_max_mm", [](sss_settings* s) { s->cbf_r_max_mm = 51.0f; }},
-      {"settings->cbf_profile", [](sss_settings* s) { s->cbf_profile = SSS_MATERIAL_TABULATED; }},
+      {"settings->cbf_profile", [](sss_settings* s) { s->cbf_profile = SSS_PROFILE_TABULATED; }},
   };
   for (const Bad& b : cases) {
     sss_settings s = good;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/kernel_of.hpp"
 #include "fault_loader.hpp"
 #include "filter_case.hpp"
 #include "host_gl_util.hpp"
@@ -45,8 +46,8 @@ FilterCase stencil_case() {
 FilterCase two_term_case() {
   FilterCase c;
   c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-  c.settings.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  c.settings.kernel.rank = 2;
+  sss_test::kernel_of(c.settings).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  sss_test::kernel_of(c.settings).rank = 2;
   return c;
 }
 
@@ -75,14 +76,14 @@ class ComputePath : public FilterCaseTest {
     std::vector<float> results[2];
     for (int second = 0; second < 2; ++second) {
       SCOPED_TRACE(second ? "the path under test" : "the plain fragment path");
-      c.settings.path = second ? path : SSS_PATH_FRAGMENT;
+      c.settings.path = second ? path : uint32_t{SSS_PATH_FRAGMENT};
       const FilterOutcome o = run_case(scene, c);
       ASSERT_EQ(o.result, SSS_OK);
       const float difference = largest_relative_difference(o.gpu, o.cpu);
       RecordProperty(second ? "path_vs_cpu" : "fragment_vs_cpu", std::to_string(difference));
       EXPECT_LE(difference, kTolerance);
       EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);  // the case blurs something
-      EXPECT_EQ(last_path(), second ? expected : SSS_PATH_FRAGMENT);
+      EXPECT_EQ(last_path(), second ? expected : uint32_t{SSS_PATH_FRAGMENT});
       results[second] = o.gpu;
       TearDown();
       SetUp();
@@ -148,7 +149,6 @@ TEST_F(ComputePath, EveryVariantOfTheShader) {
       {"no follow-surface", 0u, DepthKind::depth32f, 0.0f, SSS_KERNEL_SEPARABLE},
       {"linear depth", SSS_FOLLOW_SURFACE, DepthKind::linear_r32f, 0.0f, SSS_KERNEL_SEPARABLE},
       {"jitter", SSS_FOLLOW_SURFACE, DepthKind::depth32f, 0.33f, SSS_KERNEL_SEPARABLE},
-      {"adaptive taps", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, DepthKind::depth32f, 0.0f, SSS_KERNEL_SEPARABLE},
       // One Gaussian term with the exact depth correction (SSS_FOLLOW_SURFACE 2 in the shader).
       {"artist kernel", SSS_FOLLOW_SURFACE, DepthKind::depth32f, 0.0f, SSS_KERNEL_ARTIST},
   };
@@ -157,7 +157,7 @@ TEST_F(ComputePath, EveryVariantOfTheShader) {
     FilterCase c;
     c.settings = visible_settings(17, v.flags, 0.045f);
     c.settings.jitter = v.jitter;
-    c.settings.kernel.family = v.family;
+    sss_test::kernel_of(c.settings).family = v.family;
     c.depth = v.depth;
     expect_paths_agree(relief(), c, true);
   }
@@ -177,7 +177,7 @@ TEST_F(ComputePath, AKernelWiderThanTheCachedSpanReadsTheTextures) {
 
 TEST_F(ComputePath, RegionAndViewport) {
   FilterCase c;
-  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, 0.045f);
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
   c.use_region = true;
   c.region = {9, 7, 40, 30};
   for (bool separate : {false, true}) {
@@ -442,10 +442,9 @@ TEST_F(MaskedPath, GivesThePlainFragmentResultBitForBit) {
     c.separate_output = separate;
     expect_bit_identical(relief(), c, SSS_PATH_FRAGMENT_MASKED);
     FilterCase r = c;
-    r.settings.flags |= SSS_ADAPTIVE_TAPS;
     r.use_region = true;
     r.region = {9, 7, 40, 30};
-    SCOPED_TRACE("adaptive taps and a region");
+    SCOPED_TRACE("a region");
     expect_bit_identical(relief(), r, SSS_PATH_FRAGMENT_MASKED);
   }
   SCOPED_TRACE("two terms");

@@ -266,7 +266,9 @@ TEST_F(Faults, TheMsaaPathAllocatesEverythingBeforeItsFirstDraw) {
   if (is_gles() || max_samples < 4) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
   const int w = 24, h = 20;
   const SyntheticScene fine = make_relief_scene(2 * w, 2 * h, 3, kCamera);
-  const GLuint color = make_multisample_texture(GL_RGBA32F, w, h, 4, fine.color);  // RGBA32F: its targets are too
+  // RGBA32F: its intermediate is too, after the MSAA targets of the colour's format (the resolved
+  // colour and, written back, the blurred image), which the fault lets through.
+  const GLuint color = make_multisample_texture(GL_RGBA32F, w, h, 4, fine.color);
   const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, w, h, 4, fine.window_depth);
   textures_.insert(textures_.end(), {color, depth});
   for (const bool in_place : {true, false}) {
@@ -282,6 +284,8 @@ TEST_F(Faults, TheMsaaPathAllocatesEverythingBeforeItsFirstDraw) {
     const Snapshot state = take_snapshot();
     reset_faults();
     faults().huge_intermediate_targets = 1;
+    faults().huge_target_format = GL_RGBA32F;
+    faults().huge_target_skip = in_place ? 2 : 1;
     const sss_frame f = frame_of(color, depth, output);
     EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_OUT_OF_MEMORY) << sss_last_error(sss_);
     EXPECT_EQ(faults().draws, 0) << "drawn before the allocation that failed";

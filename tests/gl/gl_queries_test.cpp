@@ -172,6 +172,38 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
   }
 }
 
+// An R11F_G11F_B10F colour with its strength in an R8 texture (sss_frame.strength_texture): the
+// colour and strength are drawn into the module's copy every frame, with no query either.
+TEST_F(GlQueries, ASteadyFrameWithAStrengthTextureMakesNone) {
+  start(SSS_CREATE_NO_STATE_RESTORE);
+  if (HasFatalFailure()) return;
+  std::vector<float> rgb;
+  std::vector<uint8_t> strength;
+  for (std::size_t i = 0; i < scene_.color.size(); ++i) {
+    if (i % 4 != 3) rgb.push_back(scene_.color[i]);
+    if (i % 4 == 3) strength.push_back(static_cast<uint8_t>(std::lround(scene_.color[i] * 255.0f)));
+  }
+  const GLuint color = make_texture(GL_R11F_G11F_B10F, kWidth, kHeight, GL_RGB, GL_FLOAT, rgb.data());
+  const GLuint mask = make_texture(GL_R8, kWidth, kHeight, GL_RED, GL_UNSIGNED_BYTE, strength.data());
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_COMPUTE}) {
+    SCOPED_TRACE(path);
+    const sss_settings s = path_case_settings(settings_, path, SSS_MODE_SEPARABLE, false);
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+    sss_frame f = frame_of(color, depth_);
+    FilterCase description;
+    describe_frame(description, kWidth, kHeight, &f);
+    f.color_format = GL_R11F_G11F_B10F;
+    f.strength_texture = mask;
+    f.strength_format = GL_R8;
+    f.flags = SSS_FRAME_TARGET_COMPLETE;
+    const GlCallCounts n = steady_counts(f);
+    std::printf("[ counts   ] strength texture, path %u: queries per steady frame: %s\n", path,
+                per_frame(n.queries, kSteadyFrames).c_str());
+    EXPECT_EQ(n.total_queries(), 0) << "queries in " << kSteadyFrames << " steady frames: " << n.describe_queries();
+    EXPECT_EQ(n.total_creations(), 0) << "creations in " << kSteadyFrames << " steady frames: " << n.describe_creations();
+  }
+}
+
 // What the state guard reads in a steady in-place frame of the plain fragment path with one kernel
 // term and no stencil, on this context: the list in sss.h less what that frame cannot change (image
 // unit 0: only the compute path; stencil func, ref, masks and ops: only a stencil mask; the

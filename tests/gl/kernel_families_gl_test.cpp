@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/kernel_of.hpp"
 #include "filter_case.hpp"
 #include "math/kernel_request.hpp"
 #include "math/plane_reference.hpp"
@@ -33,9 +34,9 @@ sss_settings family_settings(int32_t family, int32_t rank = 1) {
   sss_settings s;
   sss_default_settings(&s);
   s.world_units_per_mm = 0.045f;  // about 2 pixels per profile millimetre on the 64x48 relief scene
-  s.kernel.family = family;
-  s.kernel.rank = rank;
-  s.samples = 17;
+  sss_test::kernel_of(s).family = family;
+  sss_test::kernel_of(s).rank = rank;
+  s.taps = 17;
   return s;
 }
 
@@ -106,7 +107,7 @@ TEST_F(KernelFamilies, SeveralTermsWithStencilSeparateOutputHalfColourAndLinearD
 TEST_F(KernelFamilies, MeasuredMaterialsAndWithoutFollowSurface) {
   FilterCase marble;
   marble.settings = family_settings(SSS_KERNEL_SUM_OF_GAUSSIANS, 2);
-  marble.settings.kernel.profile.material = SSS_MATERIAL_MARBLE;  // a fit of two Gaussians to its dipole
+  sss_test::kernel_of(marble.settings).profile.profile = SSS_PROFILE_MARBLE;  // a fit of two Gaussians to its dipole
   marble.settings.world_units_per_mm = 0.01f;                                   // marble scatters far: fewer pixels per mm
   expect_blurred_and_matching(run_case(relief(), marble), "marble, 2 fitted Gaussians", is_gles(), 2);
   TearDown();
@@ -120,7 +121,7 @@ TEST_F(KernelFamilies, MeasuredMaterialsAndWithoutFollowSurface) {
 TEST_F(KernelFamilies, JitteredTapsMatchTheCpuModelBitForBitNoise) {
   FilterCase eq1;
   eq1.settings = family_settings(SSS_KERNEL_SEPARABLE);
-  eq1.settings.samples = 9;
+  eq1.settings.taps = 9;
   eq1.settings.jitter = 0.33f;
   const FilterOutcome jittered = run_case(relief(), eq1);
   expect_blurred_and_matching(jittered, "eq. (1), 9 taps, 33% jittered");
@@ -164,7 +165,7 @@ TEST_F(KernelFamilies, PreintegratedKernelIsExactForAdditivelySeparableIrradianc
   }
   FilterCase c;
   c.settings = family_settings(SSS_KERNEL_PREINTEGRATED);
-  c.settings.samples = 65;
+  c.settings.taps = 65;
   // About 49 pixels per world unit per mm here: the widest skin Gaussian's reach (4σ of 7.41 mm²,
   // 11 mm) spans about 21 pixels, so every pixel of it gets a tap (the dense layout, at most 32).
   c.settings.world_units_per_mm = 0.04f;
@@ -258,19 +259,19 @@ TEST_F(KernelFamilies, BadKernelSettingsAreNamedAndTheOldOnesStay) {
   const Bad cases[] = {
       {"settings->jitter", [](sss_settings* s) { s->jitter = std::nanf(""); }},
       {"settings->jitter", [](sss_settings* s) { s->jitter = 1.5f; }},
-      {"settings->kernel.family", [](sss_settings* s) { s->kernel.family = SSS_KERNEL_FAMILY_COUNT; }},
-      {"settings->kernel.rank", [](sss_settings* s) { s->kernel.rank = 7; }},
-      {"settings->kernel.guide_k", [](sss_settings* s) {
-         s->kernel.family = SSS_KERNEL_GUIDED;
-         s->kernel.guide_k = 4.5f;
+      {"settings->kernel->family", [](sss_settings* s) { sss_test::kernel_of(*s).family = SSS_KERNEL_FAMILY_COUNT; }},
+      {"settings->kernel->rank", [](sss_settings* s) { sss_test::kernel_of(*s).rank = 7; }},
+      {"settings->kernel->guide_k", [](sss_settings* s) {
+         sss_test::kernel_of(*s).family = SSS_KERNEL_GUIDED;
+         sss_test::kernel_of(*s).guide_k = 4.5f;
        }},
-      {"settings->kernel.near_variance_mm2", [](sss_settings* s) { s->kernel.near_variance_mm2[1] = -1.0f; }},
-      {"settings->kernel.struct_size", [](sss_settings* s) { s->kernel.struct_size = 3; }},
-      {"settings->kernel.profile", [](sss_settings* s) { s->kernel.profile.material = 99; }},
-      {"settings->kernel.profile", [](sss_settings* s) {
-         s->kernel.profile.material = SSS_MATERIAL_TABULATED;
-         s->kernel.profile.table_size = 2;
-         s->kernel.profile.table_radius_mm = nullptr;
+      {"settings->kernel->near_variance_mm2", [](sss_settings* s) { sss_test::kernel_of(*s).near_variance_mm2[1] = -1.0f; }},
+      {"settings->kernel->struct_size", [](sss_settings* s) { sss_test::kernel_of(*s).struct_size = 3; }},
+      {"settings->kernel->profile", [](sss_settings* s) { sss_test::kernel_of(*s).profile.profile = 99; }},
+      {"settings->kernel->profile", [](sss_settings* s) {
+         sss_test::kernel_of(*s).profile.profile = SSS_PROFILE_TABULATED;
+         sss_test::kernel_of(*s).profile.table_size = 2;
+         sss_test::kernel_of(*s).profile.table_radius_mm = nullptr;
        }},
   };
   for (const Bad& b : cases) {
@@ -281,18 +282,18 @@ TEST_F(KernelFamilies, BadKernelSettingsAreNamedAndTheOldOnesStay) {
     sss_settings now;
     now.struct_size = sizeof now;
     ASSERT_EQ(sss_get_settings(ctx, &now), SSS_OK);
-    EXPECT_EQ(now.kernel.family, SSS_KERNEL_SVD) << b.field;
-    EXPECT_EQ(now.kernel.rank, 2) << b.field;
+    EXPECT_EQ(sss_test::kernel_of(now).family, SSS_KERNEL_SVD) << b.field;
+    EXPECT_EQ(sss_test::kernel_of(now).rank, 2) << b.field;
     EXPECT_EQ(now.jitter, 0.0f) << b.field;
   }
   // A profile with no energy in a channel has no kernel.
   const float radii[2] = {0.0f, 1.0f};
   const float zero_green[6] = {1.0f, 0.0f, 1.0f, 0.5f, 0.0f, 0.5f};
   sss_settings empty = good;
-  empty.kernel.profile.material = SSS_MATERIAL_TABULATED;
-  empty.kernel.profile.table_size = 2;
-  empty.kernel.profile.table_radius_mm = radii;
-  empty.kernel.profile.table_rgb = zero_green;
+  sss_test::kernel_of(empty).profile.profile = SSS_PROFILE_TABULATED;
+  sss_test::kernel_of(empty).profile.table_size = 2;
+  sss_test::kernel_of(empty).profile.table_radius_mm = radii;
+  sss_test::kernel_of(empty).profile.table_rgb = zero_green;
   EXPECT_EQ(sss_set_settings(ctx, &empty), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(ctx)).find("channel 1"), std::string::npos) << sss_last_error(ctx);
   sss_destroy(ctx);
@@ -304,19 +305,19 @@ TEST_F(KernelFamilies, ATabulatedProfileIsCopiedAndGivenBack) {
   std::vector<float> radii = {0.0f, 0.5f, 1.0f, 2.0f};
   std::vector<float> rgb = {2.0f, 1.5f, 1.0f, 1.0f, 0.8f, 0.5f, 0.3f, 0.2f, 0.1f, 0.0f, 0.0f, 0.0f};
   sss_settings s = family_settings(SSS_KERNEL_PREINTEGRATED);
-  s.kernel.profile.material = SSS_MATERIAL_TABULATED;
-  s.kernel.profile.table_size = 4;
-  s.kernel.profile.table_radius_mm = radii.data();
-  s.kernel.profile.table_rgb = rgb.data();
+  sss_test::kernel_of(s).profile.profile = SSS_PROFILE_TABULATED;
+  sss_test::kernel_of(s).profile.table_size = 4;
+  sss_test::kernel_of(s).profile.table_radius_mm = radii.data();
+  sss_test::kernel_of(s).profile.table_rgb = rgb.data();
   ASSERT_EQ(sss_set_settings(ctx, &s), SSS_OK) << sss_last_error(ctx);
   std::fill(radii.begin(), radii.end(), -1.0f);  // the caller's arrays may go away
   std::fill(rgb.begin(), rgb.end(), -1.0f);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(ctx, &back), SSS_OK);
-  ASSERT_EQ(back.kernel.profile.table_size, 4);
-  EXPECT_EQ(back.kernel.profile.table_radius_mm[3], 2.0f);
-  EXPECT_EQ(back.kernel.profile.table_rgb[4], 0.8f);
+  ASSERT_EQ(sss_test::kernel_of(back).profile.table_size, 4);
+  EXPECT_EQ(sss_test::kernel_of(back).profile.table_radius_mm[3], 2.0f);
+  EXPECT_EQ(sss_test::kernel_of(back).profile.table_rgb[4], 0.8f);
   EXPECT_EQ(sss_set_settings(ctx, &back), SSS_OK) << "what sss_get_settings gives back is valid input";
   sss_destroy(ctx);
 }

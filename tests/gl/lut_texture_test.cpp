@@ -115,14 +115,14 @@ TEST_F(LutTexture, MeasuredMaterialsAreGeneratedOnTheCpu) {
   desc.width = 16;
   desc.height = 8;
   desc.format = SSS_LUT_FORMAT_RGBA32F;
-  for (int32_t material : {SSS_MATERIAL_MARBLE, SSS_MATERIAL_KETCHUP}) {
+  for (int32_t material : {SSS_PROFILE_MARBLE, SSS_PROFILE_KETCHUP}) {
     desc.profile = material;
-    EXPECT_EQ(max_difference(SSS_LUT_DIFFUSE, desc), 0.0) << sss_material_name(material);
-    EXPECT_EQ(max_difference(SSS_LUT_SHADOW, desc), 0.0) << sss_material_name(material);
+    EXPECT_EQ(max_difference(SSS_LUT_DIFFUSE, desc), 0.0) << sss_profile_name(material);
+    EXPECT_EQ(max_difference(SSS_LUT_SHADOW, desc), 0.0) << sss_profile_name(material);
   }
   EXPECT_EQ(sss_lut_generation_count(sss_), 4u);
   uint32_t marble = 0, skin = 0;
-  desc.profile = SSS_MATERIAL_MARBLE;
+  desc.profile = SSS_PROFILE_MARBLE;
   ASSERT_EQ(sss_lut_create_texture(sss_, SSS_LUT_DIFFUSE, &desc, &marble), SSS_OK);
   EXPECT_EQ(sss_lut_generation_count(sss_), 4u);  // cached
   desc.profile = SSS_PROFILE_SKIN_DEON;

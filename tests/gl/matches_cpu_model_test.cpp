@@ -47,7 +47,7 @@ TEST_F(MatchesCpuModel, HardwareDepthWriteBack) {
 }
 
 TEST_F(MatchesCpuModel, EveryPresetAndExtremeTapCount) {
-  for (int samples : {3, SSS_SAMPLES_LOW, SSS_SAMPLES_MEDIUM, SSS_SAMPLES_HIGH, 33, SSS_MAX_SAMPLES}) {
+  for (int samples : {3, SSS_TAPS_LOW, SSS_TAPS_MEDIUM, SSS_TAPS_HIGH, 33, SSS_MAX_TAPS}) {
     SCOPED_TRACE(samples);
     FilterCase c;
     c.settings = visible_settings(samples, true);
@@ -73,15 +73,16 @@ TEST_F(MatchesCpuModel, HalfFloatColour) {
 // Half-float targets: the shaders round what they write to nearest (module/shaders/nearest_half.glsl)
 // as the CPU model does, whatever the driver's conversion does (llvmpipe truncates). Into an RGBA16F
 // colour both roundings are the CPU model's, so nearly every value matches bit for bit (a value whose
-// float sums differ by an ulp across a rounding boundary is the exception: none of 8,988 on llvmpipe); into an
-// RGBA32F output only the intermediate is half float, and the two sides agree to float ulps with no
-// bias. Truncation left alone shows as ~50 % equal and a mean of about −2.4e-4.
+// float sums differ by an ulp across a rounding boundary is the exception: none of 8,988 on llvmpipe); from
+// an RGBA16F colour into an RGBA32F output only the intermediate is half float (an RGBA32F colour's is
+// RGBA32F), and the two sides agree to float ulps with no bias. Truncation left alone shows as ~50 %
+// equal and a mean of about −2.4e-4.
 TEST_F(MatchesCpuModel, HalfFloatTargetsRoundToNearest) {
   for (bool separate : {false, true}) {
     SCOPED_TRACE(separate ? "RGBA32F output" : "RGBA16F colour in place");
     FilterCase c;
     c.settings = visible_settings(17, true);
-    c.half_color = !separate;
+    c.half_color = true;
     c.separate_output = separate;
     expect_half_rounding_like_the_cpu_model(run_case(relief(), c), separate ? "RGBA32F output" : "RGBA16F in place",
                                             !separate);

@@ -8,12 +8,15 @@
 // nothing. Kernel fits run in sss_set_settings only, and a kernel built lately is kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "../support/kernel_of.hpp"
 #include "counting_loader.hpp"
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
@@ -52,6 +55,7 @@ struct Case {
   bool normals = false;
   bool region = false;
   int samples = 0;       // > 1: multisampled colour and depth (desktop GL)
+  GLenum strength_format = 0;  // a strength texture (sss_frame.strength_texture) of this format
 };
 
 sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
@@ -64,9 +68,9 @@ sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
 // Three terms: sum of three Gaussians fitted to a measured material.
 sss_settings several_terms(uint32_t path) {
   sss_settings s = settings_with(path);
-  s.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  s.kernel.rank = 3;
-  s.kernel.profile.material = SSS_MATERIAL_MARBLE;
+  sss_test::kernel_of(s).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+  sss_test::kernel_of(s).rank = 3;
+  sss_test::kernel_of(s).profile.profile = SSS_PROFILE_MARBLE;
   return s;
 }
 
@@ -92,7 +96,9 @@ class Prewarm : public GlTest {
     d.depth_format = c.stencil ? GL_DEPTH24_STENCIL8 : c.depth_format;
     d.samples = c.samples;
     d.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
-    d.flags = (c.normals ? SSS_PREPARE_NORMALS : 0u) | (c.region ? SSS_PREPARE_REGION : 0u);
+    d.flags = (c.normals ? static_cast<std::uint32_t>(SSS_PREPARE_NORMALS) : 0u) |
+              (c.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u);
+    d.strength_format = c.strength_format;
     return d;
   }
   // A fresh context with c's settings and camera (sss_ replaced).
@@ -143,6 +149,13 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
       f.depth_texture = make_multisample_depth_stencil(w, h, c.samples, scene_.window_depth, scene_.stencil);
       textures_.push_back(f.depth_texture);
     }
+  } else if (c.color_format == GL_R11F_G11F_B10F) {  // no alpha: RGB data (ES takes no other)
+    std::vector<float> rgb;
+    for (std::size_t i = 0; i < color.size(); ++i) {
+      if (i % 4 != 3) rgb.push_back(color[i]);
+    }
+    f.color_texture = make_texture(c.color_format, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    f.depth_texture = make_depth32f(w, h, depth);
   } else {
     f.color_texture = make_texture(c.color_format, w, h, GL_RGBA, GL_FLOAT, color.data());
     if (c.stencil) {
@@ -163,6 +176,17 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
   if (c.output_format != 0) {
     f.output_texture = make_texture(c.output_format, w, h, GL_RGBA, GL_FLOAT, color.data());
   }
+  if (c.strength_format != 0) {
+    std::vector<float> strength(depth.size());
+    std::vector<uint8_t> bytes(depth.size());  // R8 (ES takes no float data for it)
+    for (std::size_t i = 0; i < strength.size(); ++i) {
+      strength[i] = color[i * 4 + 3];
+      bytes[i] = static_cast<uint8_t>(std::lround(std::clamp(strength[i], 0.0f, 1.0f) * 255.0f));
+    }
+    f.strength_texture = c.strength_format == GL_R8
+                             ? make_texture(GL_R8, w, h, GL_RED, GL_UNSIGNED_BYTE, bytes.data())
+                             : make_texture(c.strength_format, w, h, GL_RED, GL_FLOAT, strength.data());
+  }
   if (c.normals) {
     std::vector<float> normals(static_cast<std::size_t>(w) * h * 4, 0.0f);
     for (std::size_t i = 2; i < normals.size(); i += 4) normals[i] = 1.0f;
@@ -181,6 +205,7 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
     f.output_format = c.output_format;
     f.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
     f.normal_format = c.normals ? GL_RGBA16F : 0;
+    f.strength_format = c.strength_format;
     f.texture_width = w;
     f.texture_height = h;
   }
@@ -262,6 +287,27 @@ TEST_F(Prewarm, TheFirstMultisampledFrameCreatesNothing) {
   c = Case{"MSAA behind the host's stencil, three terms", several_terms(SSS_PATH_FRAGMENT)};
   c.samples = 4;
   c.stencil = true;
+  expect_no_hitch(c);
+}
+
+// An RGBA32F colour's intermediate is RGBA32F (its precision kept): sss_prepare allocates that one.
+// A strength texture's frames draw the colour with it into the module's copy first: its program
+// and target are prepared too.
+TEST_F(Prewarm, TheFirstFrameOfAnRgba32fColourOrAStrengthTextureCreatesNothing) {
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_COMPUTE}) {
+    if (!is_gles()) {  // RGBA32F colour needs extensions on ES
+      expect_no_hitch(Case{"RGBA32F colour, in place", settings_with(path), GL_RGBA32F});
+    }
+    Case c{"R11F_G11F_B10F colour with an R8 strength, in place", settings_with(path), GL_R11F_G11F_B10F};
+    c.strength_format = GL_R8;
+    expect_no_hitch(c);
+    c = Case{"RGBA16F colour with an R16F strength, separate output", settings_with(path), GL_RGBA16F, GL_RGBA16F};
+    c.strength_format = GL_R16F;
+    expect_no_hitch(c);
+  }
+  Case c{"cross-bilateral, R11F_G11F_B10F colour with an R32F strength",
+         settings_with(SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL), GL_R11F_G11F_B10F};
+  c.strength_format = GL_R32F;
   expect_no_hitch(c);
 }
 
@@ -357,7 +403,7 @@ TEST_F(Prewarm, FitsRunInSetSettingsOnlyAndAreKept) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   sss_settings guided = settings_with(SSS_PATH_FRAGMENT);
-  guided.kernel.family = SSS_KERNEL_GUIDED;
+  sss_test::kernel_of(guided).family = SSS_KERNEL_GUIDED;
   const sss_settings marble = several_terms(SSS_PATH_FRAGMENT);
   const sss_settings plain = settings_with(SSS_PATH_FRAGMENT);
   using Clock = std::chrono::steady_clock;
@@ -380,14 +426,14 @@ TEST_F(Prewarm, FitsRunInSetSettingsOnlyAndAreKept) {
   }
   // The largest fit the settings allow: the guided family at 65 taps.
   sss_settings widest = guided;
-  widest.samples = 65;
+  widest.taps = 65;
   std::printf("sss_set_settings: guided rank-1 fit at 65 taps %.1f ms\n", timed(widest));
   // The cross-bilateral mode's measured-material profile is fitted once as well.
   sss_settings cbf = settings_with(SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL);
-  cbf.cbf_profile = SSS_MATERIAL_KETCHUP;
+  cbf.cbf_profile = SSS_PROFILE_KETCHUP;
   const double cbf_fit = timed(cbf);
   sss_settings apple = cbf;
-  apple.cbf_profile = SSS_MATERIAL_APPLE;
+  apple.cbf_profile = SSS_PROFILE_APPLE;
   timed(apple);
   const double cbf_again = timed(cbf);
   EXPECT_EQ(log.count(SSS_LOG_DEBUG, "the cross-bilateral kernel was kept"), 1);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <random>
 
+#include "../support/kernel_of.hpp"
 #include "filter_case.hpp"
 #include "host_gl_util.hpp"
 #include "gl/state_guard.hpp"
@@ -159,12 +160,11 @@ class StateHarness : public GlTest {
            f.viewport[3] = 15;
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
          }},
-        // Skipping work: adaptive taps, a region inside the viewport into a separate output (the
+        // Skipping work: a region inside the viewport into a separate output (the
         // viewport copied first, then the passes over the region), and an empty region in place.
-        {"sss_apply_frame (adaptive taps, region, separate output; then an empty region)",
+        {"sss_apply_frame (region, separate output; then an empty region)",
          [this] {
            sss_settings s = harness_settings();
-           s.flags |= SSS_ADAPTIVE_TAPS;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            sss_frame f = with_region(frame_of(color_, depth_, output_), {4, 5, 12, 9});
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
@@ -221,13 +221,13 @@ class StateHarness : public GlTest {
         {"sss_apply (3 Gaussians, jitter; then the artist model), stencil",
          [this] {
            sss_settings s = harness_settings();
-           s.kernel.family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-           s.kernel.rank = 3;
+           sss_test::kernel_of(s).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
+           sss_test::kernel_of(s).rank = 3;
            s.jitter = 0.5f;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            const sss_stencil stencil = {depth_, 1, 0xFF};
            EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
-           s.kernel.family = SSS_KERNEL_ARTIST;
+           sss_test::kernel_of(s).family = SSS_KERNEL_ARTIST;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply(sss_, color_, depth_, &stencil), SSS_OK) << sss_last_error(sss_);
            s = harness_settings();

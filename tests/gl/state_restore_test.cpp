@@ -128,11 +128,20 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
   const GLuint msaa_depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, 16, 12, 4, fine.window_depth);
   ASSERT_NE(msaa_color, 0u);
   ASSERT_NE(msaa_depth, 0u);
+  // An R11F_G11F_B10F colour with its strength in an R8 texture (sss_frame.strength_texture).
+  std::vector<float> rgb;
+  std::vector<uint8_t> strength;
+  for (std::size_t i = 0; i < scene.color.size(); ++i) {
+    if (i % 4 != 3) rgb.push_back(scene.color[i]);
+    if (i % 4 == 3) strength.push_back(static_cast<uint8_t>(scene.color[i] * 255.0f));
+  }
+  const GLuint r11f = make_texture(GL_R11F_G11F_B10F, 16, 12, GL_RGB, GL_FLOAT, rgb.data());
+  const GLuint mask = make_texture(GL_R8, 16, 12, GL_RED, GL_UNSIGNED_BYTE, strength.data());
   sss_stencil stencil = {depth_stencil, 1, 0xFF};
   struct Case {
     const char* name;
     uint32_t path = SSS_PATH_FRAGMENT, mode = SSS_MODE_SEPARABLE;
-    bool stencil = false, output = false, two_terms = false, msaa = false;
+    bool stencil = false, output = false, two_terms = false, msaa = false, strength = false;
   };
   const Case cases[] = {{"in place"},
                         {"host stencil, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true},
@@ -141,7 +150,12 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
                         {"automatic path", SSS_PATH_AUTO},
                         {"cross-bilateral with a stencil", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, true},
                         {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, true},
-                        {"MSAA", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, true}};
+                        {"MSAA", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, true},
+                        {"strength texture", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, false, true},
+                        {"strength texture, masked path", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false, false,
+                         false, false, true},
+                        {"strength texture, compute path", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false, false, false,
+                         false, true}};
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
@@ -161,6 +175,13 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     description.half_color = true;
     description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;
     describe_frame(description, 16, 12, &f);
+    if (c.strength) {
+      f.color_texture = r11f;
+      f.color_format = GL_R11F_G11F_B10F;
+      f.strength_texture = mask;
+      f.strength_format = GL_R8;
+      f.flags = SSS_FRAME_TARGET_COMPLETE;  // the compute path writes the colour (GL_NEAREST: complete)
+    }
     for (int frame = 0; frame < 3; ++frame) {  // the first is not steady, the others are
       ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
       EXPECT_EQ(describe_differences(before, take_snapshot()), "") << "frame " << frame;

@@ -74,11 +74,11 @@ TEST_F(SteadyFrame, AllocatesNothing) {
   const Case cases[] = {
       {"separable, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u},
       {"separable, separate output", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, output},
-      {"adaptive taps and a region, separate output", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS, SSS_MODE_SEPARABLE,
+      {"a region, separate output", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE,
        SSS_FRAME_REGION, output},
       {"cross-bilateral, in place", 0u, SSS_MODE_CROSS_BILATERAL, 0u, 0u},
       {"compute path, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_COMPUTE},
-      {"compute path, adaptive taps and a region, separate output", SSS_FOLLOW_SURFACE | SSS_ADAPTIVE_TAPS,
+      {"compute path, a region, separate output", SSS_FOLLOW_SURFACE,
        SSS_MODE_SEPARABLE, SSS_FRAME_REGION, output, SSS_PATH_COMPUTE},
       {"automatic path, in place (after its decision)", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_AUTO},
       {"masked fragment path, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_FRAGMENT_MASKED},
@@ -108,7 +108,7 @@ TEST_F(SteadyFrame, AllocatesNothing) {
   sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
   const long rebuilds = allocations_per_steady_frames(
       [&] {
-        s.samples = s.samples == 17 ? 19 : 17;
+        s.taps = s.taps == 17 ? 19 : 17;
         EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
       },
       4);

@@ -50,7 +50,7 @@ void main() {
 using Transmittance = GlTest;
 
 TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
-  for (uint32_t profile : {static_cast<uint32_t>(SSS_MATERIAL_SKIN), SSS_PROFILE_MIKKELSEN_2010}) {
+  for (uint32_t profile : {uint32_t{SSS_PROFILE_SKIN_DEON}, uint32_t{SSS_PROFILE_MIKKELSEN_2010}}) {
    for (bool hardware_depth : {true, false}) {
     SCOPED_TRACE(profile);
     SCOPED_TRACE(hardware_depth);
@@ -112,7 +112,7 @@ TEST_F(Transmittance, SlabLitFromBehindMatchesTheProfileAtItsThickness) {
     std::printf("transmittance, profile %u: largest |GPU - CPU| %.3g\n", profile, worst);
     EXPECT_LE(worst, 1e-6);
     // Thin parts glow, thick ones do not: red through 0.01 world units of skin, none through 0.1.
-    if (profile == SSS_MATERIAL_SKIN) {
+    if (profile == SSS_PROFILE_SKIN_DEON) {
       EXPECT_GT(out[5 * 4], 0.01f);
       EXPECT_LT(out[50 * 4], 1e-4f);
     }

@@ -22,7 +22,7 @@
 #include "math/half_float.hpp"
 #include "math/projection.hpp"
 #include "math/separable_kernel.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 namespace {
 
@@ -53,8 +53,8 @@ rc::Gen<float> unit_float() {
 }
 
 rc::Gen<int> tap_count() {
-  return rc::gen::map(rc::gen::inRange(0, (SSS_MAX_SAMPLES - SSS_MIN_SAMPLES) / 2 + 1),
-                      [](int k) { return SSS_MIN_SAMPLES + 2 * k; });
+  return rc::gen::map(rc::gen::inRange(0, (SSS_MAX_TAPS - SSS_MIN_TAPS) / 2 + 1),
+                      [](int k) { return SSS_MIN_TAPS + 2 * k; });
 }
 
 rc::Gen<std::array<float, 3>> unit_triple() {
@@ -195,8 +195,8 @@ RC_GTEST_PROP(KernelProperties, ThePublicKernelApiAcceptsExactlyTheDocumentedRan
                       *unit_float()};
   const float f[3] = {*unit_float(), *unit_float(),
                       *rc::gen::weightedOneOf<float>({{4, unit_float()}, {1, any_float()}})};
-  std::vector<float> out(SSS_MAX_SAMPLES * 4 + 4, -9.0f);
-  const bool valid = n >= SSS_MIN_SAMPLES && n <= SSS_MAX_SAMPLES && n % 2 != 0 && s[0] >= 0.0f && s[0] <= 1.0f &&
+  std::vector<float> out(SSS_MAX_TAPS * 4 + 4, -9.0f);
+  const bool valid = n >= SSS_MIN_TAPS && n <= SSS_MAX_TAPS && n % 2 != 0 && s[0] >= 0.0f && s[0] <= 1.0f &&
                      f[2] >= 0.0f && f[2] <= 1.0f;
   const sss_result r = sss_kernel_separable(n, s, f, out.data());
   RC_ASSERT(r == (valid ? SSS_OK : SSS_ERROR_INVALID_ARGUMENT));

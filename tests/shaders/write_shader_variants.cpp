@@ -70,6 +70,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   const std::string d = std::string(dialect_prefix(dialect)) + '_';
   out->write(d + "fullscreen.vert", gl::vertex_recipe(dialect));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
+  out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
     out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + ".frag",

@@ -249,7 +249,7 @@ class Soak {
       s.strength[c] = unit(rng_);
       s.falloff[c] = unit(rng_);
     }
-    s.samples = 3 + 2 * static_cast<int>(rng_() % 32);
+    s.taps = 3 + 2 * static_cast<int>(rng_() % 32);
     s.flags = rng_() % 4 ? SSS_FOLLOW_SURFACE : 0u;
     if (sss_set_settings(sss_, &s) != SSS_OK) fail(std::string("sss_set_settings: ") + sss_last_error(sss_));
   }

@@ -95,7 +95,7 @@ TEST_F(ImageStress, ColoursNearTheLimitsStayFiniteAndInRange) {
         sss_default_settings(&s);
         s.world_units_per_mm = 0.08f;
         s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
-        s.samples = samples;
+        s.taps = samples;
         ASSERT_EQ(set_settings(s), SSS_OK);
         SCOPED_TRACE(::testing::Message() << "flat " << rgba[0] << " " << rgba[1] << " " << rgba[2]
                                           << (half ? " RGBA16F" : " RGBA32F") << " samples " << samples);

@@ -53,7 +53,7 @@ TEST_F(SettingsStress, ExtremeWidthsStrengthsAndFalloffs) {
               s.strength[c] = strength[c];
               s.falloff[c] = falloff[c];
             }
-            s.samples = samples;
+            s.taps = samples;
             s.flags = flags;
             ASSERT_EQ(set_settings(s), SSS_OK);
             Expectations e;
@@ -79,11 +79,11 @@ TEST_F(SettingsStress, EveryTapCountKeepsAFlatImageFlatAndItsKernelSumsToOne) {
     flat.color[i + 2] = 123.0f;
   }
   const float falloffs[] = {0.0f, 0.001f, 0.3f, 1.0f};
-  for (int samples = SSS_MIN_SAMPLES; samples <= SSS_MAX_SAMPLES; samples += 2) {
+  for (int samples = SSS_MIN_TAPS; samples <= SSS_MAX_TAPS; samples += 2) {
     for (float falloff : falloffs) {
       sss_settings s = base_settings();
       s.world_units_per_mm = 0.3f;
-      s.samples = samples;
+      s.taps = samples;
       s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
       s.falloff[0] = falloff;
       s.falloff[1] = 1.0f - falloff;
@@ -138,7 +138,7 @@ TEST_F(SettingsStress, RandomSettingsEveryFrame) {
       s.strength[c] = unit_value();
       s.falloff[c] = unit_value();
     }
-    s.samples = 3 + 2 * std::uniform_int_distribution<int>(0, 31)(rng);
+    s.taps = 3 + 2 * std::uniform_int_distribution<int>(0, 31)(rng);
     s.flags = pick(rng) < 7 ? SSS_FOLLOW_SURFACE : 0u;
     ASSERT_EQ(set_settings(s), SSS_OK);
     const int w = 1 + pick(rng) * 3, h = 1 + pick(rng) * 2;
@@ -150,7 +150,7 @@ TEST_F(SettingsStress, RandomSettingsEveryFrame) {
     f.separate_output = pick(rng) < 3;
     Expectations e;
     e.identity = s.world_units_per_mm == 0.0f || (s.strength[0] == 0.0f && s.strength[1] == 0.0f && s.strength[2] == 0.0f);
-    SCOPED_TRACE(::testing::Message() << "frame " << frame << " width " << s.world_units_per_mm << " samples " << s.samples);
+    SCOPED_TRACE(::testing::Message() << "frame " << frame << " width " << s.world_units_per_mm << " samples " << s.taps);
     ASSERT_TRUE(run_and_check(f, e));
   }
 }
@@ -159,7 +159,7 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
   category_ = "settings-rejected";
   sss_settings good = base_settings();
   good.world_units_per_mm = 0.01f;
-  good.samples = 21;
+  good.taps = 21;
   ASSERT_EQ(sss_set_settings(sss_, &good), SSS_OK);
   const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
   const float bad_widths[] = {
@@ -171,7 +171,7 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
     check(sss_set_settings(sss_, &s) == SSS_ERROR_INVALID_ARGUMENT, std::string(what) + " accepted");
     sss_settings now;
     now.struct_size = sizeof now;
-    check(sss_get_settings(sss_, &now) == SSS_OK && now.world_units_per_mm == good.world_units_per_mm && now.samples == good.samples &&
+    check(sss_get_settings(sss_, &now) == SSS_OK && now.world_units_per_mm == good.world_units_per_mm && now.taps == good.taps &&
               now.strength[1] == good.strength[1] && now.falloff[2] == good.falloff[2],
           std::string(what) + ": the previous settings did not stay");
   };
@@ -192,8 +192,8 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
   }
   for (int samples = -70; samples <= 70; ++samples) {
     sss_settings s = good;
-    s.samples = samples;
-    const bool valid = samples >= SSS_MIN_SAMPLES && samples <= SSS_MAX_SAMPLES && samples % 2 != 0;
+    s.taps = samples;
+    const bool valid = samples >= SSS_MIN_TAPS && samples <= SSS_MAX_TAPS && samples % 2 != 0;
     if (valid) {
       ++tally_.cases;
       check(sss_set_settings(sss_, &s) == SSS_OK, "samples " + std::to_string(samples) + " rejected");
@@ -204,7 +204,7 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
   }
   for (int32_t samples : {INT_MIN, INT_MIN + 1, INT_MAX, INT_MAX - 1, 1 << 30}) {
     sss_settings s = good;
-    s.samples = samples;
+    s.taps = samples;
     expect_rejected(s, "samples extreme");
   }
   for (uint32_t bit = 1; bit != 0; bit <<= 1) {
@@ -220,7 +220,7 @@ TEST_F(SettingsStress, ValuesBeyondTheRangesAreRejectedAndThePreviousSettingsSta
     expect_rejected(s, "struct_size");
   }
   // The GL-free kernel API validates the same way and writes nothing when it fails.
-  std::vector<float> taps(SSS_MAX_SAMPLES * 4, 42.0f);
+  std::vector<float> taps(SSS_MAX_TAPS * 4, 42.0f);
   const float ok[3] = {0.5f, 0.5f, 0.5f};
   for (float v : bad_units) {
     for (int c = 0; c < 3; ++c) {

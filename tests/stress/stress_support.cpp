@@ -92,7 +92,7 @@ void StressTest::set_wide_kernel(const sss::math::Matrix4& camera, float world_u
   sss_default_settings(&s);
   s.world_units_per_mm = world_units_per_mm;
   s.strength[0] = s.strength[1] = s.strength[2] = 1.0f;
-  s.samples = samples;
+  s.taps = samples;
   ASSERT_EQ(set_settings(s), SSS_OK);
 }
 

@@ -41,7 +41,11 @@ void APIENTRY shader_source(GLuint shader, GLsizei count, const GLchar* const* s
 
 void APIENTRY tex_image_2d(GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
                            GLint border, GLenum format, GLenum type, const void* pixels) {
-  if (g_faults.huge_intermediate_targets > 0 && internal_format == GL_RGBA16F && pixels == nullptr) {
+  const bool matches = g_faults.huge_intermediate_targets > 0 &&
+                       internal_format == static_cast<GLint>(g_faults.huge_target_format) && pixels == nullptr;
+  if (matches && g_faults.huge_target_skip > 0) {
+    --g_faults.huge_target_skip;
+  } else if (matches) {
     --g_faults.huge_intermediate_targets;
     GLint max_size = 0;
     real_get_integerv(GL_MAX_TEXTURE_SIZE, &max_size);

@@ -19,11 +19,14 @@ struct Faults {
   // with text that does not compile (the driver's own compile error, with its log).
   int skip_shader_sources = 0;
   int break_shader_sources = 0;
-  // glTexImage2D of an RGBA16F image without data (the module's intermediate target): ask the
-  // driver for GL_MAX_TEXTURE_SIZE squared instead, a real GL_OUT_OF_MEMORY on llvmpipe (it refuses
-  // images over 1 GiB without allocating). Where the driver takes it, the image is specified again
-  // at the size asked for and GL_OUT_OF_MEMORY is injected instead.
+  // glTexImage2D of a `huge_target_format` image without data (RGBA16F: the module's intermediate
+  // target for every colour but RGBA32F): ask the driver for GL_MAX_TEXTURE_SIZE squared instead, a
+  // real GL_OUT_OF_MEMORY on llvmpipe (it refuses images over 1 GiB without allocating). Where the
+  // driver takes it, the image is specified again at the size asked for and GL_OUT_OF_MEMORY is
+  // injected instead. The first `huge_target_skip` such images are allocated as asked.
   int huge_intermediate_targets = 0;
+  unsigned huge_target_format = 0x881A;  // GL_RGBA16F
+  int huge_target_skip = 0;
   // glRenderbufferStorage: the call goes through, then GL_OUT_OF_MEMORY is injected (the stencil copy).
   int fail_renderbuffer_storage = 0;
 

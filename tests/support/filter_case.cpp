@@ -1,5 +1,7 @@
 #include "filter_case.hpp"
 
+#include "kernel_of.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -65,7 +67,7 @@ sss_settings visible_settings(int samples, uint32_t flags, float width) {
   s.falloff[0] = 1.0f;
   s.falloff[1] = 0.6f;
   s.falloff[2] = 0.4f;
-  s.samples = samples;
+  s.taps = samples;
   s.flags = flags;
   return s;
 }
@@ -74,8 +76,8 @@ sss_settings path_case_settings(sss_settings base, uint32_t path, uint32_t mode,
   base.path = path;
   base.mode = mode;
   if (two_terms) {
-    base.kernel.family = SSS_KERNEL_SVD;
-    base.kernel.rank = 2;
+    sss_test::kernel_of(base).family = SSS_KERNEL_SVD;
+    sss_test::kernel_of(base).rank = 2;
   }
   return base;
 }
@@ -108,11 +110,11 @@ sss::math::KernelRequest request_for(const sss_kernel_desc& d) {
     q.artist.far_variance_mm2[c] = d.far_variance_mm2[c];
     q.artist.near_weight[c] = d.near_weight[c];
   }
-  q.profile.material = d.profile.material == SSS_MATERIAL_SKIN ? sss::math::kProfileSkin
-                       : d.profile.material == SSS_MATERIAL_TABULATED ? sss::math::kProfileTable
-                                                                     : d.profile.material - 1;
+  q.profile.material = d.profile.profile == SSS_PROFILE_SKIN_DEON ? sss::math::kProfileSkin
+                       : d.profile.profile == SSS_PROFILE_TABULATED ? sss::math::kProfileTable
+                                                                     : d.profile.profile - 1;
   q.profile.gaussian_count = d.profile.gaussian_count;
-  for (int32_t i = 0; d.profile.material == SSS_MATERIAL_TABULATED && i < d.profile.table_size; ++i) {
+  for (int32_t i = 0; d.profile.profile == SSS_PROFILE_TABULATED && i < d.profile.table_size; ++i) {
     q.profile.table_radii_mm.push_back(d.profile.table_radius_mm[i]);
     q.profile.table_values.push_back({d.profile.table_rgb[i * 3], d.profile.table_rgb[i * 3 + 1], d.profile.table_rgb[i * 3 + 2]});
   }
@@ -120,8 +122,10 @@ sss::math::KernelRequest request_for(const sss_kernel_desc& d) {
 }
 
 sss::math::KernelPlan plan_for(const sss_settings& settings) {
-  sss_kernel_desc desc = settings.kernel;
-  desc.taps = settings.samples;
+  sss_kernel_desc desc;
+  sss_default_kernel_desc(&desc);
+  if (settings.kernel != nullptr) desc = *settings.kernel;
+  desc.taps = settings.taps;
   for (int c = 0; c < 3; ++c) {
     desc.strength[c] = settings.strength[c];
     desc.falloff[c] = settings.falloff[c];
@@ -208,12 +212,15 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   fs.world_units_per_mm = c.settings.world_units_per_mm;
   fs.strength = {c.settings.strength[0], c.settings.strength[1], c.settings.strength[2]};
   fs.falloff = {c.settings.falloff[0], c.settings.falloff[1], c.settings.falloff[2]};
-  fs.samples = c.settings.samples;
+  fs.samples = c.settings.taps;
   fs.follow_surface = (c.settings.flags & SSS_FOLLOW_SURFACE) != 0;
   fs.scale = c.settings.scale;
   fs.separable_scale = c.settings.separable_scale;
   fs.jitter = c.settings.jitter;
-  fs.kernel = request_for(c.settings.kernel);
+  sss_kernel_desc kernel_desc;
+  sss_default_kernel_desc(&kernel_desc);
+  if (c.settings.kernel != nullptr) kernel_desc = *c.settings.kernel;
+  fs.kernel = request_for(kernel_desc);
   sss::math::FrameGeometry g;
   g.texture_width = w;
   g.texture_height = h;
@@ -236,13 +243,19 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.depth = stored_depth.data();
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.output_is_half = c.half_color && !c.separate_output;
-  image.accumulator_is_half = is_gles();  // the module sums terms in RGBA16F there
+  // The module's intermediate is as precise as the colour (RGBA32F colour: RGBA32F), and on ES it
+  // sums terms in RGBA16F unless the colour is RGBA32F.
+  image.intermediate_is_half = c.half_color;
+  image.accumulator_is_half = is_gles() && c.half_color;
   outcome.cpu.resize(outcome.input.size());
   if (empty_region) {
     outcome.cpu = outcome.input;  // nothing translucent: the image (or its copy) as it was
   } else if (c.settings.mode == SSS_MODE_CROSS_BILATERAL) {
-    // The profile as sss_set_settings builds it (SSS_PROFILE_KERNEL: from settings.kernel.profile).
-    const sss::math::ProfileRequest kernel_profile = sss::api::to_request(c.settings.kernel.profile);
+    // The profile as sss_set_settings builds it (SSS_PROFILE_KERNEL: from settings.kernel->profile).
+    sss_profile_desc profile;
+    sss_default_profile_desc(&profile);
+    if (c.settings.kernel != nullptr) profile = c.settings.kernel->profile;
+    const sss::math::ProfileRequest kernel_profile = sss::api::to_request(profile);
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::cbf_profile(c.settings.cbf_profile, kernel_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "host_gl.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 #include "sss_headless.h"
 
 namespace sss_test {

@@ -9,7 +9,7 @@
 #include "math/cbf_kernel.hpp"
 #include "math/cpu_cbf_filter.hpp"
 #include "math/spike_gaussian_profile.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 #include "synthetic_scene.hpp"
 
 namespace {
@@ -103,7 +103,7 @@ TEST(CbfConstants, FootprintCosine) {
 TEST(Transmittance, TermsComeFromTheProfile) {
   float terms[4 * SSS_PROFILE_MAX_TERMS];
   int32_t count = 0;
-  ASSERT_EQ(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);
+  ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_SKIN_DEON, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);
   ASSERT_EQ(count, 6);  // the spike has a width (0.0064 mm²): it transmits too
   const auto& g = skin_gaussians();
   for (int i = 0; i < 6; ++i) {
@@ -112,9 +112,9 @@ TEST(Transmittance, TermsComeFromTheProfile) {
   }
   ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_MIKKELSEN_2010, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);
   EXPECT_EQ(count, 3);  // a true delta transmits nothing
-  EXPECT_EQ(sss_profile_transmittance_terms(SSS_MATERIAL_SKIN, terms, 5, &count), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_SKIN_DEON, terms, 5, &count), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(count, 6);
-  EXPECT_EQ(sss_profile_transmittance_terms(SSS_MATERIAL_TABULATED, terms, 8, &count), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_TABULATED, terms, 8, &count), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_profile_transmittance_terms(0, nullptr, 8, &count), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_profile_transmittance_terms(0, terms, 8, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   // At zero thickness the skin profile transmits all of each channel (weights sum to 1).
@@ -166,9 +166,9 @@ TEST(CpuCbfFilter, FlatStaysFlatAndTiltedPlaneIsBlurred) {
 // dipole: every id of sss_material but TABULATED is a profile, with each channel summing to 1.
 TEST(SpikeGaussianProfile, MeasuredMaterialsAreFittedGaussianSums) {
   EXPECT_TRUE(is_spike_gaussian_profile_id(SSS_PROFILE_MIKKELSEN_2010));
-  EXPECT_TRUE(is_spike_gaussian_profile_id(SSS_MATERIAL_WHOLEMILK));
-  EXPECT_FALSE(is_spike_gaussian_profile_id(SSS_MATERIAL_TABULATED));
-  const SpikeGaussianProfile p = spike_gaussian_profile(SSS_MATERIAL_MARBLE);
+  EXPECT_TRUE(is_spike_gaussian_profile_id(SSS_PROFILE_WHOLEMILK));
+  EXPECT_FALSE(is_spike_gaussian_profile_id(SSS_PROFILE_TABULATED));
+  const SpikeGaussianProfile p = spike_gaussian_profile(SSS_PROFILE_MARBLE);
   EXPECT_EQ(p.name, "marble");
   ASSERT_EQ(p.terms.size(), static_cast<std::size_t>(SSS_PROFILE_FIT_GAUSSIANS));
   for (int c = 0; c < 3; ++c) {
@@ -182,7 +182,7 @@ TEST(SpikeGaussianProfile, MeasuredMaterialsAreFittedGaussianSums) {
   EXPECT_EQ(k.taps.size(), 13u);
   float terms[4 * SSS_PROFILE_MAX_TERMS];
   int32_t count = 0;
-  ASSERT_EQ(sss_profile_transmittance_terms(SSS_MATERIAL_MARBLE, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);
+  ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_MARBLE, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);
   EXPECT_EQ(count, SSS_PROFILE_FIT_GAUSSIANS);  // no spike: every fitted term transmits
   for (int i = 0; i < count; ++i) EXPECT_GT(terms[i * 4], 0.0f);
 }

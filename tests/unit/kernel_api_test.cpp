@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "math/kernel_request.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 namespace {
 
@@ -36,13 +36,13 @@ TEST(KernelApi, DefaultsAreValidAndBuildTheTable1Kernel) {
 
 TEST(KernelApi, EveryFamilyAndMaterialBuildsAnEnergyConservingPlan) {
   for (int32_t family = 0; family < SSS_KERNEL_FAMILY_COUNT; ++family) {
-    for (int32_t material : {SSS_MATERIAL_SKIN, SSS_MATERIAL_MARBLE, SSS_MATERIAL_KETCHUP}) {
+    for (int32_t material : {SSS_PROFILE_SKIN_DEON, SSS_PROFILE_MARBLE, SSS_PROFILE_KETCHUP}) {
       sss_kernel_desc d;
       sss_default_kernel_desc(&d);
       d.family = family;
       d.taps = 13;
       d.rank = 2;
-      d.profile.material = material;
+      d.profile.profile = material;
       std::vector<float> taps(SSS_KERNEL_MAX_TERMS * 2 * 13 * 4);
       int32_t terms = 0;
       ASSERT_EQ(sss_kernel_plan(&d, SSS_KERNEL_MAX_TERMS, taps.data(), nullptr, &terms, nullptr), SSS_OK) << last();
@@ -65,7 +65,7 @@ TEST(KernelApi, EveryFamilyAndMaterialBuildsAnEnergyConservingPlan) {
 TEST(KernelApi, ProfileEvaluateMatchesTheMathLayer) {
   sss_profile_desc p;
   sss_default_profile_desc(&p);
-  p.material = SSS_MATERIAL_SKIN1;
+  p.profile = SSS_PROFILE_SKIN1;
   const float r[3] = {0.0f, 0.5f, 4.0f};
   float out[9] = {};
   ASSERT_EQ(sss_profile_evaluate(&p, 3, r, out), SSS_OK);
@@ -77,10 +77,10 @@ TEST(KernelApi, ProfileEvaluateMatchesTheMathLayer) {
   float total[3] = {};
   ASSERT_EQ(sss_profile_integral(&p, total), SSS_OK);
   EXPECT_FLOAT_EQ(total[0], static_cast<float>(dipole.integral()[0]));
-  EXPECT_STREQ(sss_material_name(SSS_MATERIAL_SKIN1), "skin1");
-  EXPECT_STREQ(sss_material_name(SSS_MATERIAL_WHOLEMILK), "wholemilk");
-  EXPECT_EQ(sss_material_name(SSS_MATERIAL_COUNT), nullptr);
-  EXPECT_EQ(sss_material_name(-1), nullptr);
+  EXPECT_STREQ(sss_profile_name(SSS_PROFILE_SKIN1), "skin1");
+  EXPECT_STREQ(sss_profile_name(SSS_PROFILE_WHOLEMILK), "wholemilk");
+  EXPECT_EQ(sss_profile_name(SSS_PROFILE_COUNT), nullptr);
+  EXPECT_EQ(sss_profile_name(-1), nullptr);
 }
 
 TEST(KernelApi, TabulatedProfileRoundTrips) {
@@ -88,7 +88,7 @@ TEST(KernelApi, TabulatedProfileRoundTrips) {
   const float rgb[9] = {1, 2, 3, 0.5f, 1, 1.5f, 0, 0, 0};
   sss_profile_desc p;
   sss_default_profile_desc(&p);
-  p.material = SSS_MATERIAL_TABULATED;
+  p.profile = SSS_PROFILE_TABULATED;
   p.table_size = 3;
   p.table_radius_mm = radii;
   p.table_rgb = rgb;
@@ -132,17 +132,17 @@ TEST(KernelApi, BadArgumentsAreNamedAndWriteNothing) {
       {"desc->near_variance_mm2[0] = 0", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_ARTIST, d.near_variance_mm2[0] = 0; }},
       {"desc->far_variance_mm2[1] = -1", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_ARTIST, d.far_variance_mm2[1] = -1; }},
       {"desc->near_weight[2] = 1.5", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_ARTIST, d.near_weight[2] = 1.5f; }},
-      {"desc->profile->material = 13", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.material = 13; }},
+      {"desc->profile->profile = 13", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.profile = 13; }},
       {"desc->profile->struct_size", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.struct_size = 0; }},
       {"desc->profile->gaussian_count = 7", [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.gaussian_count = 7; }},
       {"desc->profile->table_size = 0",
-       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.material = SSS_MATERIAL_TABULATED; }},
+       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.profile = SSS_PROFILE_TABULATED; }},
       {"desc->profile->table_radius_mm is NULL",
-       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.material = SSS_MATERIAL_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = rgb; }},
+       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.profile = SSS_PROFILE_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = rgb; }},
       {"desc->profile->table_radius_mm[1] = 1",
-       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.material = SSS_MATERIAL_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = rgb, d.profile.table_radius_mm = bad_radii; }},
+       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.profile = SSS_PROFILE_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = rgb, d.profile.table_radius_mm = bad_radii; }},
       {"integrates to 0",
-       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.material = SSS_MATERIAL_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = zero_rgb, d.profile.table_radius_mm = radii; }},
+       [](sss_kernel_desc& d) { d.family = SSS_KERNEL_SVD, d.profile.profile = SSS_PROFILE_TABULATED, d.profile.table_size = 2, d.profile.table_rgb = zero_rgb, d.profile.table_radius_mm = radii; }},
   };
   for (const BadCase& c : cases) {
     sss_kernel_desc d;
@@ -198,9 +198,9 @@ TEST(KernelApi, ProfileBadArguments) {
   EXPECT_EQ(sss_profile_evaluate(&p, 1, r, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sss_profile_integral(&p, nullptr), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(last().find("out_rgb is NULL"), std::string::npos);
-  p.material = -1;
+  p.profile = -1;
   EXPECT_EQ(sss_profile_integral(&p, out), SSS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(last().find("profile->material = -1"), std::string::npos);
+  EXPECT_NE(last().find("profile->profile = -1"), std::string::npos);
   sss_default_profile_desc(nullptr);  // ignored, no crash
   sss_default_kernel_desc(nullptr);
 }

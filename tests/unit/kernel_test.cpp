@@ -11,7 +11,7 @@
 #include "math/pass_kernel.hpp"
 #include "math/separable_kernel.hpp"
 #include "math/skin_profile.hpp"
-#include "sss/sss.h"
+#include "sss/sss_tools.h"
 
 namespace {
 
@@ -47,7 +47,7 @@ TEST(SkinProfile, EachChannelOfTheSixGaussiansSumsToOne) {
 TEST(SeparableKernel, EveryTapCountSumsToOnePerChannel) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  for (int n = SSS_MIN_SAMPLES; n <= SSS_MAX_SAMPLES; n += 2) {
+  for (int n = SSS_MIN_TAPS; n <= SSS_MAX_TAPS; n += 2) {
     for (int trial = 0; trial < 5; ++trial) {
       const std::array<float, 3> strength = {unit(rng), unit(rng), unit(rng)};
       const std::array<float, 3> falloff = {unit(rng), unit(rng), unit(rng)};
@@ -147,7 +147,7 @@ TEST(KernelApi, RejectsBadArgumentsWithAMessageNamingThem) {
     float bad;
     const char* expected;
   };
-  for (const Case& c : {Case{16, 0.5f, "samples = 16"}, Case{1, 0.5f, "samples = 1"}, Case{67, 0.5f, "samples = 67"},
+  for (const Case& c : {Case{16, 0.5f, "taps = 16"}, Case{1, 0.5f, "taps = 1"}, Case{67, 0.5f, "taps = 67"},
                         Case{17, -0.1f, "strength[1] = -0.1"}, Case{17, NAN, "strength[1] = nan"},
                         Case{17, 1.5f, "strength[1] = 1.5"}}) {
     const float strength[3] = {0.5f, c.bad, 0.5f};
@@ -179,8 +179,8 @@ TEST(DefaultSettings, AreTheCalibratedKernelInAMetricScene) {
   EXPECT_EQ(s.strength[0], sss::math::kCalibratedStrength[0]);
   EXPECT_EQ(s.falloff[2], sss::math::kCalibratedFalloff[2]);
   EXPECT_EQ(s.separable_scale, sss::math::kCalibratedSeparableScale);
-  EXPECT_EQ(s.kernel.family, SSS_KERNEL_SEPARABLE);
-  EXPECT_EQ(s.samples, SSS_SAMPLES_MEDIUM);
+  EXPECT_EQ(s.kernel, nullptr);  // eq. (1) from the settings' own strength and falloff
+  EXPECT_EQ(s.taps, SSS_TAPS_MEDIUM);
   EXPECT_EQ(s.flags, SSS_FOLLOW_SURFACE);
 }
 

@@ -15,6 +15,7 @@
 #include "math/materials.hpp"
 #include "math/preintegrated_lut.hpp"
 #include "sss/sss_lut.h"
+#include "sss/sss_tools.h"
 
 namespace {
 
@@ -317,18 +318,18 @@ TEST(LutCApi, EveryMaterialGivesItsOwnLut) {
   desc.height = 3; // curvature 0, 0.5, 1 per mm
   desc.threads = 2;
   std::vector<std::vector<float>> luts;
-  for (int32_t m = SSS_MATERIAL_SKIN; m <= SSS_MATERIAL_WHOLEMILK; ++m) {
+  for (int32_t m = SSS_PROFILE_SKIN_DEON; m <= SSS_PROFILE_WHOLEMILK; ++m) {
     desc.profile = m;
     std::vector<float> out(4u * 9 * 3, -1.0f);
     ASSERT_EQ(sss_lut_diffuse_fill(&desc, out.data(), out.size()), SSS_OK) << sss_last_error(nullptr);
-    for (float v : out) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << sss_material_name(m) << ": " << v;
+    for (float v : out) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << sss_profile_name(m) << ": " << v;
     for (int x = 0; x < 9; ++x) {
       const double ndotl = -1.0 + 0.25 * x;
-      EXPECT_NEAR(out[static_cast<std::size_t>(4 * x)], std::max(0.0, ndotl), 1e-6) << sss_material_name(m);
+      EXPECT_NEAR(out[static_cast<std::size_t>(4 * x)], std::max(0.0, ndotl), 1e-6) << sss_profile_name(m);
     }
     std::vector<float> shadow(out.size(), -1.0f);
-    ASSERT_EQ(sss_lut_shadow_fill(&desc, shadow.data(), shadow.size()), SSS_OK) << sss_material_name(m);
-    for (float v : shadow) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << sss_material_name(m) << ": " << v;
+    ASSERT_EQ(sss_lut_shadow_fill(&desc, shadow.data(), shadow.size()), SSS_OK) << sss_profile_name(m);
+    for (float v : shadow) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << sss_profile_name(m) << ": " << v;
     luts.push_back(out);
   }
   for (std::size_t a = 0; a < luts.size(); ++a) {
@@ -337,7 +338,7 @@ TEST(LutCApi, EveryMaterialGivesItsOwnLut) {
   // Row 2 (curvature 1/mm), column 4 (N·L = 0), red: light wraps past the terminator further for skim
   // milk (mean free path ~ mm) than for marble.
   const std::size_t terminator = 4u * (2 * 9 + 4);
-  EXPECT_GT(luts[SSS_MATERIAL_SKIMMILK][terminator], luts[SSS_MATERIAL_MARBLE][terminator]);
+  EXPECT_GT(luts[SSS_PROFILE_SKIMMILK][terminator], luts[SSS_PROFILE_MARBLE][terminator]);
 }
 
 TEST(LutCApi, RejectsBadInputWithNamedMessage) {
@@ -368,7 +369,7 @@ TEST(LutCApi, RejectsBadInputWithNamedMessage) {
   d.curvature_min = 2.0f;
   expect_rejected(d, 64, "curvature_min = 2 is not below", false);
   d = desc;
-  d.profile = SSS_PROFILE_COUNT;  // SSS_MATERIAL_TABULATED: no table in sss_lut_desc
+  d.profile = SSS_PROFILE_TABULATED;  // no table in sss_lut_desc
   expect_rejected(d, 64, "desc->profile = 12", false);
   d = desc;
   d.profile = -1;

@@ -10,7 +10,7 @@
 //                                      the lines between "<!-- headline: begin" and "<!-- headline: end -->"
 //                                      in README equal the table made from the committed benchmark
 //                                      results (ROOT/docs/benchmarks/results.csv and .json, and
-//                                      ROOT/docs/benchmarks-h100/ when present); --write rewrites them
+//                                      ROOT/docs/benchmarks-gpu/ when present); --write rewrites them
 //                                      (scripts/update-readme-numbers.sh)
 //
 // Exit status 0 when everything holds (or was written), 1 when something does not (each problem on
@@ -447,7 +447,7 @@ std::string headline(const fs::path& root) {
       << (renderer.find("llvmpipe") != std::string::npos ? "; Mesa's CPU rasteriser: read its times as ratios" : "")
       << ") on " << json_string(json, "date") << "; how: [docs/benchmarks.md](docs/benchmarks.md).";
   // The same shot on a GPU, where a run is committed (scripts/gpu/).
-  const fs::path gpu = root / "docs/benchmarks-h100";
+  const fs::path gpu = root / "docs/benchmarks-gpu";
   if (fs::exists(gpu / "results.csv") && fs::exists(gpu / "results.json")) {
     const Csv g = read_csv(gpu / "results.csv");
     const std::string gjson = read_text(gpu / "results.json");
@@ -463,7 +463,7 @@ std::string headline(const fs::path& root) {
         out << ", " << sig3(number(field(*k, gc.time_ms)))
             << " ms on the compute path (the one `SSS_PATH_AUTO`, the default, times fastest there)";
       }
-      out << " ([docs/benchmarks-h100.md](docs/benchmarks-h100.md)"
+      out << " ([docs/benchmarks-gpu.md](docs/benchmarks-gpu.md)"
           << (gc.miss < 0 ? "; an earlier build, before `miss` was measured" : "") << ").";
     }
   }

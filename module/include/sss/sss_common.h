@@ -1,6 +1,6 @@
 /*
  * sss: what every public header shares (C99): export macro, version, status codes, tap-count limits.
- * Included by sss.h and sss_kernels.h; not meant to be included alone.
+ * Included by sss.h (and through it by sss_tools.h and sss_lut.h); not meant to be included alone.
  */
 #ifndef SSS_SSS_COMMON_H
 #define SSS_SSS_COMMON_H
@@ -25,7 +25,7 @@ extern "C" {
 #endif
 
 #define SSS_VERSION_MAJOR 0
-#define SSS_VERSION_MINOR 2
+#define SSS_VERSION_MINOR 3
 #define SSS_VERSION_PATCH 0
 
 /** Status codes. Every failing call also leaves a message naming the bad argument and its value,
@@ -45,12 +45,13 @@ typedef enum sss_result {
   SSS_ERROR_INVALID_OPERATION     /**< call order: e.g. sss_apply before sss_set_camera */
 } sss_result;
 
-/* Tap-count presets (any odd count in [SSS_MIN_SAMPLES, SSS_MAX_SAMPLES] is accepted). */
-#define SSS_SAMPLES_LOW 11
-#define SSS_SAMPLES_MEDIUM 17 /**< the paper's default */
-#define SSS_SAMPLES_HIGH 25
-#define SSS_MIN_SAMPLES 3
-#define SSS_MAX_SAMPLES 65
+/* Taps per pass (sss_settings.taps, sss_kernel_desc.taps): any odd count in [SSS_MIN_TAPS,
+ * SSS_MAX_TAPS]; presets. */
+#define SSS_TAPS_LOW 11
+#define SSS_TAPS_MEDIUM 17 /**< the paper's default */
+#define SSS_TAPS_HIGH 25
+#define SSS_MIN_TAPS 3
+#define SSS_MAX_TAPS 65
 
 #ifdef __cplusplus
 }

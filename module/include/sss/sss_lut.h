@@ -1,9 +1,10 @@
 /*
  * sss_lut: pre-integrated skin shading lookup tables (Penner and Borshukov 2011), C99.
  *
- * Include this header (it includes <sss/sss.h> for sss_result, sss_context and SSS_API; sss.h does
- * not include it). The fill functions need no GL context; sss_lut_create_texture needs the one an
- * sss_context was created in.
+ * A tools header: include it (it includes <sss/sss.h> for sss_result, sss_context, sss_profile and
+ * SSS_API; sss.h does not include it). Implemented in the runtime library (sss::sss): the LUTs need
+ * neither NLopt nor Eigen, and sss_lut_create_texture draws with the context's GL objects. The fill
+ * functions need no GL context; sss_lut_create_texture needs the one an sss_context was created in.
  *
  *   Diffuse LUT D(N·L, curvature), eq. (1.1): the light a sphere of radius r = 1/curvature lit
  *   from one direction shows at the angle θ = acos(N·L), the diffusion profile integrated around
@@ -28,27 +29,28 @@
 extern "C" {
 #endif
 
-/* Diffusion profiles for sss_lut_desc.profile: the materials of sss_kernels.h (sss.h includes it),
- * SSS_MATERIAL_SKIN (= SSS_PROFILE_SKIN_DEON, all six Gaussians) to SSS_MATERIAL_WHOLEMILK (the
- * dipoles of the 11 measured materials). SSS_MATERIAL_TABULATED has no place here (a table needs
- * the arrays of sss_profile_desc). */
-#define SSS_PROFILE_SKIN_DEON 0 /**< d'Eon and Luebke's six-Gaussian skin (the default) = SSS_MATERIAL_SKIN */
-#define SSS_PROFILE_COUNT 12    /**< profile values are [0, SSS_PROFILE_COUNT) = SSS_MATERIAL_SKIN..WHOLEMILK */
+/* Diffusion profiles for sss_lut_desc.profile: the sss_profile values of sss.h from
+ * SSS_PROFILE_SKIN_DEON (all six Gaussians) to SSS_PROFILE_WHOLEMILK (the dipoles of the 11 measured
+ * materials). SSS_PROFILE_TABULATED has no place here (a table needs the arrays of sss_profile_desc),
+ * nor SSS_PROFILE_MIKKELSEN_2010 (its spike is no radial profile) or SSS_PROFILE_KERNEL. */
 
-/* Shadow filters for sss_lut_desc.shadow_filter: the filter the host's shadow map uses. */
-#define SSS_LUT_SHADOW_BOX 0      /**< box PCF: the penumbra is a linear ramp (the default) */
-#define SSS_LUT_SHADOW_GAUSSIAN 1 /**< Gaussian-weighted PCF, its penumbra spanning ±2σ */
+/** Shadow filters for sss_lut_desc.shadow_filter: the filter the host's shadow map uses. */
+typedef enum sss_lut_shadow_filter {
+  SSS_LUT_SHADOW_BOX = 0,     /**< box PCF: the penumbra is a linear ramp (the default) */
+  SSS_LUT_SHADOW_GAUSSIAN = 1 /**< Gaussian-weighted PCF, its penumbra spanning ±2σ */
+} sss_lut_shadow_filter;
 
-/* Texture formats for sss_lut_desc.format (sss_lut_create_texture). */
-#define SSS_LUT_FORMAT_RGBA16F 0 /**< half floats (the default): 2^-11 relative error */
-#define SSS_LUT_FORMAT_RGBA32F 1 /**< floats, exactly the fill functions' values */
-#define SSS_LUT_FORMAT_RGBA8 2   /**< unsigned normalised bytes, linear (no sRGB): value = byte/255;
-                                      |error| <= 1/510 with SSS_LUT_CPU (rounded to nearest on the host),
-                                      <= 1/255 from the GPU generator (the driver's float-to-unorm rounding) */
+/** Texture formats for sss_lut_desc.format (sss_lut_create_texture). */
+typedef enum sss_lut_format {
+  SSS_LUT_FORMAT_RGBA16F = 0, /**< half floats (the default): 2^-11 relative error */
+  SSS_LUT_FORMAT_RGBA32F = 1, /**< floats, exactly the fill functions' values */
+  SSS_LUT_FORMAT_RGBA8 = 2    /**< unsigned normalised bytes, linear (no sRGB): value = byte/255;
+                                   |error| <= 1/510 with SSS_LUT_CPU (rounded to nearest on the host),
+                                   <= 1/255 from the GPU generator (the driver's float-to-unorm rounding) */
+} sss_lut_format;
 
-/* Which LUT sss_lut_create_texture makes. */
-#define SSS_LUT_DIFFUSE 0
-#define SSS_LUT_SHADOW 1
+/** Which LUT sss_lut_create_texture makes. */
+typedef enum sss_lut_kind { SSS_LUT_DIFFUSE = 0, SSS_LUT_SHADOW = 1 } sss_lut_kind;
 
 /* Flags for sss_lut_desc.flags. */
 /** sss_lut_create_texture: generate on the CPU and upload, instead of the fragment-shader generator. */
@@ -63,8 +65,8 @@ typedef struct sss_lut_desc {
   uint32_t struct_size;      /**< sizeof(sss_lut_desc) */
   int32_t width;             /**< [2, 4096] columns (N·L or shadow value). Default 256 */
   int32_t height;            /**< [2, 4096] rows (curvature or penumbra width). Default 256 */
-  int32_t profile;           /**< [0, 11]: SSS_PROFILE_SKIN_DEON or an SSS_MATERIAL_* of sss_kernels.h up to
-                                  SSS_MATERIAL_WHOLEMILK. Default SSS_PROFILE_SKIN_DEON */
+  int32_t profile;           /**< sss_profile in [SSS_PROFILE_SKIN_DEON, SSS_PROFILE_WHOLEMILK] (0..11).
+                                  Default SSS_PROFILE_SKIN_DEON */
   float curvature_min;       /**< diffuse: 1/mm, finite, [0, 1000], < curvature_max. Default 0 (flat) */
   float curvature_max;       /**< diffuse: 1/mm, finite, (curvature_min, 1000]. Default 1 (r = 1 mm) */
   float penumbra_min;        /**< shadow: world units, finite, > 0, < penumbra_max. Default 0.001 */
@@ -72,8 +74,8 @@ typedef struct sss_lut_desc {
   float world_units_per_mm;  /**< shadow: the scene's scale, finite, (0, 1e6]. Default 0.001 (metres) */
   float new_penumbra;        /**< shadow: width of the sharp penumbra as a fraction of the filter's, (0, 1].
                                   Default 0.25 */
-  int32_t shadow_filter;     /**< SSS_LUT_SHADOW_*. Default SSS_LUT_SHADOW_BOX */
-  int32_t format;            /**< SSS_LUT_FORMAT_* (textures only; the fill functions write floats). Default RGBA16F */
+  int32_t shadow_filter;     /**< sss_lut_shadow_filter. Default SSS_LUT_SHADOW_BOX */
+  int32_t format;            /**< sss_lut_format (textures only; the fill functions write floats). Default RGBA16F */
   int32_t threads;           /**< CPU generation: [0, 256] std::threads, 0 = as many as the hardware has. Default 0 */
   uint32_t flags;            /**< SSS_LUT_* flags. Default 0 */
 } sss_lut_desc;

@@ -13,6 +13,7 @@
 #include "gl_session.hpp"
 #include "host_texture_params.hpp"
 #include "validation.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -68,6 +69,11 @@ sss_result query(sss_context* ctx, const sss_frame& frame, gl::GLuint name, cons
 // (a texture that format cannot filter would be incomplete, even for texelFetch) and rendered to;
 // RGBA32F output is rendered to; depth is only fetched, through a GL_NEAREST sampler.
 sss_result check_es_format(sss_context* ctx, const char* role, const gl::TextureInfo& t, bool sampled_linear) {
+  if (ctx->gl.api.es && gl::is_alpha_free_color_format(t.internal_format) && !ctx->es_float_render) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "%s = %u is GL_R11F_G11F_B10F: rendering to it on OpenGL ES needs GL_EXT_color_buffer_float", role,
+                t.name);
+  }
   if (!ctx->gl.api.es || t.internal_format != static_cast<gl::GLint>(gl::RGBA32F)) return SSS_OK;
   if (!ctx->es_float_render) {
     return fail(ctx, SSS_ERROR_UNSUPPORTED, "%s = %u is GL_RGBA32F: rendering to it on OpenGL ES needs GL_EXT_color_buffer_float",
@@ -134,8 +140,13 @@ std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::ui
 sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   sss_result r = query(ctx, frame, frame.color_texture, "color_texture", "color_format", frame.color_format, &run->color);
   if (r != SSS_OK) return r;
-  if (!gl::is_color_format(run->color.internal_format)) {
-    return wrong_format(ctx, "color_texture", run->color, "GL_RGBA16F or GL_RGBA32F");
+  if (gl::is_alpha_free_color_format(run->color.internal_format) && frame.strength_texture == 0) {
+    return wrong_format(ctx, "color_texture", run->color,
+                        "GL_RGBA16F or GL_RGBA32F: GL_R11F_G11F_B10F has no alpha for the strength, so it needs a "
+                        "strength_texture (GL_R8, GL_R16F or GL_R32F; see sss_frame)");
+  }
+  if (!gl::is_color_format(run->color.internal_format) && !gl::is_alpha_free_color_format(run->color.internal_format)) {
+    return wrong_format(ctx, "color_texture", run->color, "GL_RGBA16F or GL_RGBA32F (GL_R11F_G11F_B10F with a strength_texture)");
   }
   r = check_es_format(ctx, "color_texture", run->color, true);
   if (r != SSS_OK) return r;
@@ -157,7 +168,37 @@ sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::F
                            linear ? "GL_MAX_COLOR_TEXTURE_SAMPLES" : "GL_MAX_DEPTH_TEXTURE_SAMPLES");
 }
 
-// The optional textures: a separate output, the host's stencil, the normals.
+// sss_frame.strength_texture: single-sample R8, R16F or R32F of the colour's size, with a colour
+// the passes can take it with (gl/strength_source.cpp).
+sss_result query_strength(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
+  sss_result r = query(ctx, frame, frame.strength_texture, "strength_texture", "strength_format",
+                       frame.strength_format, &run->strength);
+  if (r != SSS_OK) return r;
+  if (!gl::is_strength_format(run->strength.internal_format)) {
+    return wrong_format(ctx, "strength_texture", run->strength, "GL_R8, GL_R16F or GL_R32F");
+  }
+  if (run->strength.multisampled()) {
+    return fail(ctx, SSS_ERROR_INVALID_TEXTURE, "strength_texture = %u is %s: it must be a single-sample GL_TEXTURE_2D",
+                run->strength.name, gl::describe_target(run->strength).c_str());
+  }
+  r = same_size(ctx, "strength_texture", run->strength, run->color);
+  if (r != SSS_OK) return r;
+  if (run->color.multisampled()) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "strength_texture = %u with color_texture = %u %s: the MSAA path reads the strength from the colour's "
+                "samples' alpha; resolve the colour first, or put the strength in its alpha",
+                run->strength.name, run->color.name, gl::describe_target(run->color).c_str());
+  }
+  if (frame.output_texture == 0 && gl::is_color_format(run->color.internal_format)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "strength_texture = %u with color_texture = %u (%s) written back: the colour's alpha would be "
+                "overwritten with the strength; give an output_texture, or put the strength in the colour's alpha",
+                run->strength.name, run->color.name, gl::format_name(run->color.internal_format).c_str());
+  }
+  return SSS_OK;
+}
+
+// The optional textures: a separate output, the host's stencil, the normals, the strength.
 sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run,
                                    gl::StencilInput* stencil) {
   sss_result r = SSS_OK;
@@ -190,6 +231,10 @@ sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl:
     stencil->ref = frame.stencil->ref;
     stencil->mask = frame.stencil->mask;
     run->stencil = stencil;
+  }
+  if (frame.strength_texture != 0) {
+    r = query_strength(ctx, frame, run);
+    if (r != SSS_OK) return r;
   }
   if (frame.normal_texture != 0) {
     r = query(ctx, frame, frame.normal_texture, "normal_texture", "normal_format", frame.normal_format, &run->normals);
@@ -344,9 +389,13 @@ SSS_API sss_result sss_apply(sss_context* ctx, uint32_t color_texture, uint32_t 
   return sss_apply_frame(ctx, &frame);
 }
 
-SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* frame) {
+SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  sss_result r = sss::api::check_frame(ctx, frame);
+  sss_frame current;  // an earlier release's frame read into today's layout (versioned_structs.cpp)
+  sss_result r = sss::api::frame_from_caller(ctx, given, &current);
+  if (r != SSS_OK) return r;
+  const sss_frame* frame = &current;
+  r = sss::api::check_frame(ctx, frame);
   if (r != SSS_OK) return r;
   if (!ctx->has_camera) return fail(ctx, SSS_ERROR_INVALID_OPERATION, "no camera: call sss_set_camera before applying");
   const gl::Functions& f = ctx->gl;
@@ -397,10 +446,10 @@ SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
   auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
   if (stats == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats is NULL");
-  if (stats->struct_size != sizeof(sss_stats)) {
-    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats->struct_size = %u: expected sizeof(sss_stats) = %u",
-                stats->struct_size, static_cast<unsigned>(sizeof(sss_stats)));
-  }
+  // Every release so far has the same sss_stats (0.1's 72 bytes on x86-64).
+  const sss_result size = sss::api::check_struct_size(mutable_ctx, "stats->struct_size", "sss_stats", stats->struct_size,
+                                                      {{"0.1, 0.2, 0.3", static_cast<uint32_t>(sizeof(sss_stats))}});
+  if (size != SSS_OK) return size;
   sss_stats s = {};
   s.struct_size = sizeof s;
   switch (ctx->filter.variant()) {

@@ -7,6 +7,8 @@
 #include "../gl/state_guard.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "validation.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -59,10 +61,10 @@ sss_result check_version(sss_context* ctx, sss_get_proc_address_fn get_proc_addr
 
 sss_result check_create_desc(const sss_create_desc* desc) {
   if (desc == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
-  if (desc->struct_size != sizeof(sss_create_desc)) {
-    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_create_desc) = %u",
-                desc->struct_size, static_cast<unsigned>(sizeof(sss_create_desc)));
-  }
+  // Every release so far has the same sss_create_desc (0.1's 48 bytes on x86-64).
+  const sss_result size = sss::api::check_struct_size(nullptr, "desc->struct_size", "sss_create_desc", desc->struct_size,
+                                                      {{"0.1, 0.2, 0.3", static_cast<uint32_t>(sizeof(sss_create_desc))}});
+  if (size != SSS_OK) return size;
   if (desc->get_proc_address == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->get_proc_address is NULL");
   if ((desc->flags & ~SSS_CREATE_ALL_FLAGS) != 0) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", desc->flags,
@@ -185,7 +187,7 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     return r;
   }
   ctx->kernel = sss::math::build_pass_kernel(ctx->settings);
-  sss_default_kernel_desc(&ctx->kernel_desc);
+  sss::api::default_kernel_desc(&ctx->kernel_desc);
   log_created(ctx.get(), api, variant, renderer_name, software_renderer);
   *out = ctx.release();
   return SSS_OK;

@@ -1,13 +1,15 @@
-// The GL-free kernel and profile API (sss_kernels.h): argument checks, then the math layer's
-// build_kernel_plan / profiles. No GL calls, no context: messages go to the thread's sss_last_error.
+// The GL-free kernel and profile API (sss_tools.h; the tools library): argument checks, then the
+// math layer's build_kernel_plan / profiles. No GL calls, no context: messages go to the thread's
+// sss_last_error. Every entry point registers the fitters first (sss_tools_init).
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <new>
 
 #include "../math/kernel_request.hpp"
+#include "../math/materials.hpp"
 #include "context.hpp"
-#include "sss/sss_kernels.h"
+#include "sss/sss_tools.h"
 #include "validation.hpp"
 
 namespace {
@@ -24,41 +26,30 @@ bool finite_in(float v, float lo, float hi) { return std::isfinite(v) && v >= lo
 extern "C" {
 
 SSS_API void sss_default_profile_desc(sss_profile_desc* p) {
-  if (p == nullptr) return;
-  std::memset(p, 0, sizeof *p);
-  p->struct_size = sizeof *p;
-  p->material = SSS_MATERIAL_SKIN;
-  p->gaussian_count = 6;
+  sss_tools_init();
+  if (p != nullptr) sss::api::default_profile_desc(p);
 }
 
 SSS_API void sss_default_kernel_desc(sss_kernel_desc* d) {
-  if (d == nullptr) return;
-  const sss::math::KernelRequest r;
-  std::memset(d, 0, sizeof *d);
-  d->struct_size = sizeof *d;
-  d->family = SSS_KERNEL_SEPARABLE;
-  d->taps = r.taps;
-  d->rank = r.rank;
-  d->guide_k = static_cast<float>(r.guide_k);
-  for (std::size_t c = 0; c < 3; ++c) {
-    d->strength[c] = r.strength[c];
-    d->falloff[c] = r.falloff[c];
-    d->near_variance_mm2[c] = static_cast<float>(r.artist.near_variance_mm2[c]);
-    d->far_variance_mm2[c] = static_cast<float>(r.artist.far_variance_mm2[c]);
-    d->near_weight[c] = static_cast<float>(r.artist.near_weight[c]);
-  }
-  sss_default_profile_desc(&d->profile);
+  sss_tools_init();  // a host that fills its settings.kernel here gets the fitted families registered
+  if (d != nullptr) sss::api::default_kernel_desc(d);
 }
 
-SSS_API const char* sss_material_name(int32_t material) {
-  if (material == SSS_MATERIAL_SKIN) return "skin";
-  if (material == SSS_MATERIAL_TABULATED) return "tabulated";
-  if (material < SSS_MATERIAL_APPLE || material >= SSS_MATERIAL_TABULATED) return nullptr;
-  return sss::math::measured_materials()[static_cast<std::size_t>(material - SSS_MATERIAL_APPLE)].name;
+SSS_API const char* sss_profile_name(int32_t profile) {
+  switch (profile) {
+    case SSS_PROFILE_SKIN_DEON: return "skin";
+    case SSS_PROFILE_TABULATED: return "tabulated";
+    case SSS_PROFILE_MIKKELSEN_2010: return "mikkelsen-2010";
+    case SSS_PROFILE_KERNEL: return "kernel";
+    default: break;
+  }
+  if (profile < SSS_PROFILE_APPLE || profile > SSS_PROFILE_WHOLEMILK) return nullptr;
+  return sss::math::measured_materials()[static_cast<std::size_t>(profile - SSS_PROFILE_APPLE)].name;
 }
 
 SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t count, const float* radius_mm,
                                         float* out_rgb) {
+  sss_tools_init();
   sss_result r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (count < 1 || count > 100000000) {
@@ -87,6 +78,7 @@ SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t
 }
 
 SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float out_rgb[3]) {
+  sss_tools_init();
   sss_result r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (out_rgb == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_rgb is NULL");
@@ -103,6 +95,7 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float o
 
 SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* desc, int32_t max_terms, float* out_taps,
                                    float* out_depth_variance_mm2, int32_t* out_terms, float* out_reach_mm) {
+  sss_tools_init();
   sss_result r = check_kernel_desc(nullptr, desc, "desc->", false);
   if (r != SSS_OK) return r;
   if (out_taps == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_taps is NULL");

@@ -15,12 +15,11 @@
 
 namespace sss::api {
 
-static_assert(SSS_PROFILE_SKIN_DEON == SSS_MATERIAL_SKIN && SSS_PROFILE_COUNT == SSS_MATERIAL_TABULATED &&
-                  SSS_MATERIAL_WHOLEMILK - SSS_MATERIAL_APPLE + 1 == sss::math::kMaterialCount,
-              "sss_lut_desc.profile takes the materials of sss_kernels.h up to the tabulated one");
+static_assert(SSS_PROFILE_SKIN_DEON == 0 && SSS_PROFILE_WHOLEMILK - SSS_PROFILE_APPLE + 1 == sss::math::kMaterialCount,
+              "sss_lut_desc.profile takes the sss_profile values from d'Eon's skin to the last measured material");
 
 const sss::math::RadialProfile& lut_profile(const sss_lut_desc& desc) {
-  // desc.profile is validated: SSS_MATERIAL_SKIN (the six Gaussians) or a measured material's
+  // desc.profile is validated: SSS_PROFILE_SKIN_DEON (the six Gaussians) or a measured material's
   // dipole, built once each (thread-safe static) and kept for the program's life.
   static const auto dipoles = [] {
     std::array<std::unique_ptr<sss::math::RadialProfile>, sss::math::kMaterialCount> all;
@@ -31,8 +30,8 @@ const sss::math::RadialProfile& lut_profile(const sss_lut_desc& desc) {
     }
     return all;
   }();
-  if (desc.profile <= SSS_MATERIAL_SKIN || desc.profile > SSS_MATERIAL_WHOLEMILK) return sss::math::deon_skin_profile();
-  return *dipoles[static_cast<std::size_t>(desc.profile - SSS_MATERIAL_APPLE)];
+  if (desc.profile <= SSS_PROFILE_SKIN_DEON || desc.profile > SSS_PROFILE_WHOLEMILK) return sss::math::deon_skin_profile();
+  return *dipoles[static_cast<std::size_t>(desc.profile - SSS_PROFILE_APPLE)];
 }
 
 sss::math::DiffuseLutDesc diffuse_lut_desc(const sss_lut_desc& desc) {

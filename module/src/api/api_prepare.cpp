@@ -7,6 +7,7 @@
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -21,21 +22,43 @@ sss_result bad_format(sss_context* ctx, const char* field, std::uint32_t value, 
               gl::format_name(static_cast<gl::GLint>(value)).c_str(), expected);
 }
 
+// strength_format: its list, and a colour and sample count sss_apply_frame takes a strength texture with.
+sss_result check_strength(sss_context* ctx, const sss_prepare_desc& d) {
+  if (d.strength_format == 0) return SSS_OK;
+  if (!gl::is_strength_format(static_cast<gl::GLint>(d.strength_format))) {
+    return bad_format(ctx, "strength_format", d.strength_format,
+                      "0 (none), GL_R8 (0x8229), GL_R16F (0x822D) or GL_R32F (0x822E)");
+  }
+  if (d.samples > 1) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->strength_format = %s with samples = %d: the MSAA path reads the "
+                "strength from the colour's alpha", gl::format_name(static_cast<gl::GLint>(d.strength_format)).c_str(),
+                d.samples);
+  }
+  if (d.output_format == 0 && gl::is_color_format(static_cast<gl::GLint>(d.color_format))) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->strength_format with color_format = %s written back "
+                "(output_format 0): sss_apply_frame refuses it (the colour's alpha would become the strength)",
+                gl::format_name(static_cast<gl::GLint>(d.color_format)).c_str());
+  }
+  return SSS_OK;
+}
+
 // Every field against its list or range, without the GL.
 sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc) {
   if (desc == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
   const sss_prepare_desc& d = *desc;
-  if (d.struct_size != sizeof(sss_prepare_desc)) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->struct_size = %u: expected sizeof(sss_prepare_desc) = %u",
-                d.struct_size, static_cast<unsigned>(sizeof(sss_prepare_desc)));
-  }
+  // New in 0.3 (main between 0.2 and 0.3 had the same layout).
+  const sss_result size = sss::api::check_struct_size(ctx, "desc->struct_size", "sss_prepare_desc", d.struct_size,
+                                                      {{"0.3", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
+  if (size != SSS_OK) return size;
   if (d.width < 1 || d.height < 1) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->width = %d, height = %d: both must be >= 1", d.width,
                 d.height);
   }
   const auto format = [](std::uint32_t f) { return static_cast<gl::GLint>(f); };
-  if (!gl::is_color_format(format(d.color_format))) {
-    return bad_format(ctx, "color_format", d.color_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  if (!gl::is_color_format(format(d.color_format)) &&
+      !(gl::is_alpha_free_color_format(format(d.color_format)) && d.strength_format != 0)) {
+    return bad_format(ctx, "color_format", d.color_format,
+                      "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814); GL_R11F_G11F_B10F (0x8C3A) with strength_format");
   }
   if (d.output_format != 0 && !gl::is_color_format(format(d.output_format))) {
     return bad_format(ctx, "output_format", d.output_format,
@@ -53,6 +76,8 @@ sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc) {
     return bad_format(ctx, "stencil_format", d.stencil_format,
                       "0 (no stencil), GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");
   }
+  const sss_result r = check_strength(ctx, d);
+  if (r != SSS_OK) return r;
   if ((d.flags & ~SSS_PREPARE_ALL_FLAGS) != 0) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", d.flags,
                 d.flags & ~SSS_PREPARE_ALL_FLAGS);
@@ -85,10 +110,13 @@ sss_result check_limits(sss_context* ctx, const sss_prepare_desc& d) {
   }
   if (f.api.es) {
     const auto rgba32f = [](std::uint32_t format) { return format == static_cast<std::uint32_t>(gl::RGBA32F); };
-    const char* field = rgba32f(d.color_format) ? "color_format" : rgba32f(d.output_format) ? "output_format" : nullptr;
+    const bool r11f = gl::is_alpha_free_color_format(static_cast<gl::GLint>(d.color_format));
+    const char* field = rgba32f(d.color_format) || r11f ? "color_format"
+                        : rgba32f(d.output_format)      ? "output_format"
+                                                        : nullptr;
     if (field != nullptr && !ctx->es_float_render) {
-      return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->%s = GL_RGBA32F: rendering to it on OpenGL ES needs "
-                  "GL_EXT_color_buffer_float", field);
+      return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->%s = %s: rendering to it on OpenGL ES needs "
+                  "GL_EXT_color_buffer_float", field, r11f ? "GL_R11F_G11F_B10F" : "GL_RGBA32F");
     }
     if (rgba32f(d.color_format) && !ctx->es_float_linear) {
       return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->color_format = GL_RGBA32F: filtering it on OpenGL ES needs "
@@ -125,6 +153,11 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   if ((d.flags & SSS_PREPARE_NORMALS) != 0) {
     run.normals = described(d, static_cast<std::uint32_t>(gl::RGBA16F), false);
     run.normals.name = gl::kPrewarmPlaceholder;
+  }
+  if (d.strength_format != 0) {
+    run.strength = described(d, d.strength_format, false);
+    run.strength.name = gl::kPrewarmPlaceholder;
+    run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }
   if (d.stencil_format != 0) {
     stencil->texture = described(d, d.stencil_format, multisampled);

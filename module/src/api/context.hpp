@@ -16,6 +16,7 @@
 #include "../math/recent_kernels.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
+#include "sss/sss_tools.h"
 #include "steady_frame.hpp"
 
 struct sss_context {
@@ -37,7 +38,8 @@ struct sss_context {
   sss::math::FilterSettings settings;
   sss::math::PassKernel kernel;        // what the separable mode's passes run (settings.kernel, jitter)
   std::uint64_t kernel_revision = 1;
-  sss_kernel_desc kernel_desc{};       // settings.kernel as given, for sss_get_settings; its table pointers
+  bool has_kernel_desc = false;        // settings.kernel was not NULL
+  sss_kernel_desc kernel_desc{};       // *settings.kernel as given, for sss_get_settings; its table pointers
   std::vector<float> table_radius_mm;  // point at these copies
   std::vector<float> table_rgb;
   sss::math::CbfKernel cbf_kernel;            // built from cbf_kernel_inputs (taps 0: not built yet)
@@ -77,8 +79,5 @@ sss_result fail(sss_context* ctx, sss_result code, const char* format, ...)
 #endif
     ;
 void log(const sss_context* ctx, int level, const std::string& message);
-
-// The thread's message for calls without a context.
-std::string& thread_error();
 
 }  // namespace sss::api

@@ -1,12 +1,60 @@
-// The checks and conversions of sss_profile_desc and sss_kernel_desc, shared by the GL-free kernel
-// API (sss_kernel_plan, sss_profile_*) and sss_set_settings (its embedded kernel). No GL.
+// The checks and conversions of sss_profile_desc and sss_kernel_desc, and the tap and unit-range
+// checks, shared by the tools API (sss_kernel_plan, sss_profile_*; the tools library) and
+// sss_set_settings (settings->kernel; the runtime library). No GL: compiled into both libraries.
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
 
 #include "validation.hpp"
 
+#include <cstring>
+
 namespace sss::api {
+
+sss_result check_taps(sss_context* ctx, const char* name, int32_t taps) {
+  if (taps < SSS_MIN_TAPS || taps > SSS_MAX_TAPS || taps % 2 == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s = %d: must be odd and in [%d, %d]", name, taps, SSS_MIN_TAPS,
+                SSS_MAX_TAPS);
+  }
+  return SSS_OK;
+}
+
+sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]) {
+  if (values == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
+  for (int c = 0; c < 3; ++c) {
+    const float v = values[c];
+    if (!(v >= 0.0f && v <= 1.0f)) {  // also rejects NaN
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s[%d] = %g: must be in [0, 1]", name, c,
+                  static_cast<double>(v));
+    }
+  }
+  return SSS_OK;
+}
+
+void default_profile_desc(sss_profile_desc* p) {
+  std::memset(p, 0, sizeof *p);
+  p->struct_size = sizeof *p;
+  p->profile = SSS_PROFILE_SKIN_DEON;
+  p->gaussian_count = 6;
+}
+
+void default_kernel_desc(sss_kernel_desc* d) {
+  const sss::math::KernelRequest r;
+  std::memset(d, 0, sizeof *d);
+  d->struct_size = sizeof *d;
+  d->family = SSS_KERNEL_SEPARABLE;
+  d->taps = r.taps;
+  d->rank = r.rank;
+  d->guide_k = static_cast<float>(r.guide_k);
+  for (std::size_t c = 0; c < 3; ++c) {
+    d->strength[c] = r.strength[c];
+    d->falloff[c] = r.falloff[c];
+    d->near_variance_mm2[c] = static_cast<float>(r.artist.near_variance_mm2[c]);
+    d->far_variance_mm2[c] = static_cast<float>(r.artist.far_variance_mm2[c]);
+    d->near_weight[c] = static_cast<float>(r.artist.near_weight[c]);
+  }
+  default_profile_desc(&d->profile);
+}
 
 namespace {
 bool finite_in(float v, float lo, float hi) { return std::isfinite(v) && v >= lo && v <= hi; }
@@ -29,15 +77,16 @@ sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->struct_size = %u: expected sizeof(sss_profile_desc) = %u",
                 name, p->struct_size, static_cast<unsigned>(sizeof(sss_profile_desc)));
   }
-  if (p->material < 0 || p->material >= SSS_MATERIAL_COUNT) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->material = %d: must be in [0, %d)", name, p->material,
-                SSS_MATERIAL_COUNT);
+  if (p->profile < SSS_PROFILE_SKIN_DEON || p->profile > SSS_PROFILE_TABULATED) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "%s->profile = %d: must be an sss_profile in [SSS_PROFILE_SKIN_DEON (0), SSS_PROFILE_TABULATED (%d)]",
+                name, p->profile, SSS_PROFILE_TABULATED);
   }
-  if (p->material == SSS_MATERIAL_SKIN && (p->gaussian_count < 1 || p->gaussian_count > 6)) {
+  if (p->profile == SSS_PROFILE_SKIN_DEON && (p->gaussian_count < 1 || p->gaussian_count > 6)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->gaussian_count = %d: must be in [1, 6]", name,
                 p->gaussian_count);
   }
-  if (p->material != SSS_MATERIAL_TABULATED) return SSS_OK;
+  if (p->profile != SSS_PROFILE_TABULATED) return SSS_OK;
   if (p->table_size < 1 || p->table_size > SSS_PROFILE_MAX_TABLE) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->table_size = %d: must be in [1, %d]", name, p->table_size,
                 SSS_PROFILE_MAX_TABLE);
@@ -64,17 +113,17 @@ sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char
 
 sss::math::ProfileRequest to_request(const sss_profile_desc& p) {
   sss::math::ProfileRequest r;
-  if (p.material == SSS_MATERIAL_SKIN) {
+  if (p.profile == SSS_PROFILE_SKIN_DEON) {
     r.material = sss::math::kProfileSkin;
     r.gaussian_count = p.gaussian_count;
-  } else if (p.material == SSS_MATERIAL_TABULATED) {
+  } else if (p.profile == SSS_PROFILE_TABULATED) {
     r.material = sss::math::kProfileTable;
     for (int32_t i = 0; i < p.table_size; ++i) {
       r.table_radii_mm.push_back(p.table_radius_mm[i]);
       r.table_values.push_back({p.table_rgb[i * 3], p.table_rgb[i * 3 + 1], p.table_rgb[i * 3 + 2]});
     }
   } else {
-    r.material = p.material - SSS_MATERIAL_APPLE;  // the math table starts at apple
+    r.material = p.profile - SSS_PROFILE_APPLE;  // the math table starts at apple
   }
   return r;
 }
@@ -96,11 +145,8 @@ sss_result check_kernel_desc(sss_context* ctx, const sss_kernel_desc* d, const c
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%sfamily = %d: must be in [0, %d)", name, d->family,
                 SSS_KERNEL_FAMILY_COUNT);
   }
-  // In sss_settings, taps, strength and falloff are the settings' own (samples, strength, falloff).
-  if (!in_settings && (d->taps < SSS_MIN_SAMPLES || d->taps > SSS_MAX_SAMPLES || d->taps % 2 == 0)) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%staps = %d: must be odd and in [%d, %d]", name, d->taps,
-                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
-  }
+  // In sss_settings, taps, strength and falloff are the settings' own.
+  if (!in_settings && check_taps(ctx, named("taps"), d->taps) != SSS_OK) return SSS_ERROR_INVALID_ARGUMENT;
   if ((d->flags & ~SSS_KERNEL_ALL_FLAGS) != 0u) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%sflags = 0x%x: unknown bits 0x%x", name, d->flags,
                 d->flags & ~SSS_KERNEL_ALL_FLAGS);

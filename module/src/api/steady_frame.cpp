@@ -7,15 +7,17 @@ namespace sss::api {
 
 namespace {
 
-// Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals.
-std::array<std::uint32_t, 5> names_of(const sss_frame& frame) {
+// Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals, strength.
+std::array<std::uint32_t, 6> names_of(const sss_frame& frame) {
   return {frame.color_texture, frame.depth_texture, frame.output_texture,
-          frame.stencil != nullptr ? frame.stencil->depth_stencil_texture : 0u, frame.normal_texture};
+          frame.stencil != nullptr ? frame.stencil->depth_stencil_texture : 0u, frame.normal_texture,
+          frame.strength_texture};
 }
 
-std::array<std::uint32_t, 5> formats_of(const sss_frame& frame) {
+std::array<std::uint32_t, 6> formats_of(const sss_frame& frame) {
   return {frame.color_format, frame.depth_format, frame.output_texture != 0 ? frame.output_format : 0u,
-          frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u};
+          frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u,
+          frame.strength_texture != 0 ? frame.strength_format : 0u};
 }
 
 }  // namespace
@@ -23,8 +25,8 @@ std::array<std::uint32_t, 5> formats_of(const sss_frame& frame) {
 bool is_steady(const sss_context& ctx, const sss_frame& frame) {
   const SteadyFrame& s = ctx.steady;
   if (!s.valid) return false;
-  const std::array<std::uint32_t, 5> names = names_of(frame);
-  const std::array<std::uint32_t, 5> formats = formats_of(frame);
+  const std::array<std::uint32_t, 6> names = names_of(frame);
+  const std::array<std::uint32_t, 6> formats = formats_of(frame);
   return frame_described(frame) && names == s.names && formats == s.formats &&
          frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
          frame.msaa_depth_resolve == s.msaa_depth_resolve && ctx.kernel_revision == s.kernel_revision &&
@@ -38,6 +40,7 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
   run->depth = s.depth;
   run->output = s.output;
   run->normals = s.normals;
+  run->strength = s.strength;
   if (frame.stencil != nullptr) {
     stencil->texture = s.stencil;
     stencil->ref = frame.stencil->ref;
@@ -48,8 +51,8 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
 
 void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterRun& run) {
   SteadyFrame& s = ctx->steady;
-  const std::array<std::uint32_t, 5> names = names_of(frame);
-  const std::array<std::uint32_t, 5> formats = formats_of(frame);
+  const std::array<std::uint32_t, 6> names = names_of(frame);
+  const std::array<std::uint32_t, 6> formats = formats_of(frame);
   s.valid = frame_described(frame);  // an undescribed frame is asked again every time
   s.names = names;
   s.formats = formats;
@@ -67,6 +70,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.depth = run.depth;
   s.output = run.output;
   s.normals = run.normals;
+  s.strength = run.strength;
   s.stencil = run.stencil != nullptr ? run.stencil->texture : gl::TextureInfo{};
 }
 

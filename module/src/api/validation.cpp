@@ -7,28 +7,9 @@
 
 namespace sss::api {
 
-sss_result check_samples(sss_context* ctx, int32_t samples) {
-  if (samples < SSS_MIN_SAMPLES || samples > SSS_MAX_SAMPLES || samples % 2 == 0) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "samples = %d: must be odd and in [%d, %d]", samples,
-                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
-  }
-  return SSS_OK;
-}
-
-sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]) {
-  if (values == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
-  for (int c = 0; c < 3; ++c) {
-    const float v = values[c];
-    if (!(v >= 0.0f && v <= 1.0f)) {  // also rejects NaN
-      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s[%d] = %g: must be in [0, 1]", name, c,
-                  static_cast<double>(v));
-    }
-  }
-  return SSS_OK;
-}
-
 sss_result check_settings(sss_context* ctx, const sss_settings* s) {
   if (s == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
+  // Earlier releases' layouts are converted before (versioned_structs.cpp): this is the current one.
   if (s->struct_size != sizeof(sss_settings)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->struct_size = %u: expected sizeof(sss_settings) = %u",
                 s->struct_size, static_cast<unsigned>(sizeof(sss_settings)));
@@ -47,7 +28,7 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
   }
   sss_result r = check_unit_range(ctx, "settings->strength", s->strength);
   if (r == SSS_OK) r = check_unit_range(ctx, "settings->falloff", s->falloff);
-  if (r == SSS_OK) r = check_samples(ctx, s->samples);
+  if (r == SSS_OK) r = check_taps(ctx, "settings->taps", s->taps);
   if (r != SSS_OK) return r;
   if ((s->flags & ~SSS_SETTINGS_ALL_FLAGS) != 0) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->flags = 0x%x has unknown bits 0x%x", s->flags,
@@ -57,20 +38,17 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "settings->mode = %u: must be SSS_MODE_SEPARABLE (0) or SSS_MODE_CROSS_BILATERAL (1)", s->mode);
   }
-  if (s->cbf_taps < SSS_MIN_SAMPLES || s->cbf_taps > SSS_MAX_SAMPLES || s->cbf_taps % 2 == 0) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_taps = %d: must be odd and in [%d, %d]", s->cbf_taps,
-                SSS_MIN_SAMPLES, SSS_MAX_SAMPLES);
-  }
-  if (!(s->cbf_r_max_mm > 0.0f && s->cbf_r_max_mm <= SSS_CBF_MAX_R_MAX_MM)) {  // also rejects NaN
+  if (r == SSS_OK) r = check_taps(ctx, "settings->cbf_taps", s->cbf_taps);
+  if (r != SSS_OK) return r;
+  if (!(s->cbf_r_max_mm > 0.0f && s->cbf_r_max_mm <= sss::math::kCbfMaxRMaxMm)) {  // also rejects NaN
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->cbf_r_max_mm = %g: must be finite and in (0, %g]",
-                static_cast<double>(s->cbf_r_max_mm), static_cast<double>(SSS_CBF_MAX_R_MAX_MM));
+                static_cast<double>(s->cbf_r_max_mm), static_cast<double>(sss::math::kCbfMaxRMaxMm));
   }
   if (!sss::math::is_cbf_profile_id(s->cbf_profile)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                "settings->cbf_profile = %u: must be SSS_PROFILE_MIKKELSEN_2010 (0x%x), SSS_PROFILE_KERNEL (0x%x) or "
-                "an sss_material in [%d, %d]",
-                s->cbf_profile, SSS_PROFILE_MIKKELSEN_2010, SSS_PROFILE_KERNEL, SSS_MATERIAL_SKIN,
-                SSS_MATERIAL_WHOLEMILK);
+                "settings->cbf_profile = %u: must be an sss_profile in [SSS_PROFILE_SKIN_DEON (0), "
+                "SSS_PROFILE_WHOLEMILK (%d)], SSS_PROFILE_MIKKELSEN_2010 (%d) or SSS_PROFILE_KERNEL (%d)",
+                s->cbf_profile, SSS_PROFILE_WHOLEMILK, SSS_PROFILE_MIKKELSEN_2010, SSS_PROFILE_KERNEL);
   }
   if (!(s->jitter >= 0.0f && s->jitter <= 1.0f)) {  // also rejects NaN
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->jitter = %g: must be finite and in [0, 1]",
@@ -82,7 +60,9 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
                 "SSS_PATH_FRAGMENT_MASKED (3)",
                 s->path);
   }
-  return check_kernel_desc(ctx, &s->kernel, "settings->kernel.", true);
+  // NULL: eq. (1) from the fields above. A kernel desc is checked whole, whatever its family.
+  if (s->kernel == nullptr) return SSS_OK;
+  return check_kernel_desc(ctx, s->kernel, "settings->kernel->", true);
 }
 
 sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
@@ -118,6 +98,11 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->output_texture = %u is the colour texture: pass 0 to write back in place",
                 frame->output_texture);
   }
+  if (frame->strength_texture != 0 && frame->strength_texture == frame->color_texture) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->strength_texture = %u is the colour texture: pass 0 to read the strength from its alpha",
+                frame->strength_texture);
+  }
   if (frame->stencil != nullptr && (frame->stencil->ref > 255u || frame->stencil->mask > 255u)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "stencil ref = %u, mask = %u: both must be in [0, 255]",
                 frame->stencil->ref, frame->stencil->mask);
@@ -129,7 +114,8 @@ bool frame_described(const sss_frame& frame) {
   return frame.texture_width != 0 && frame.color_format != 0 && frame.depth_format != 0 &&
          (frame.output_texture == 0 || frame.output_format != 0) &&
          (frame.stencil == nullptr || frame.stencil_format != 0) &&
-         (frame.normal_texture == 0 || frame.normal_format != 0);
+         (frame.normal_texture == 0 || frame.normal_format != 0) &&
+         (frame.strength_texture == 0 || frame.strength_format != 0);
 }
 
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
@@ -145,8 +131,13 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->%s = 0x%04X (%s): expected 0 or %s", field, value,
                 gl::format_name(static_cast<gl::GLint>(value)).c_str(), expected);
   };
-  if (frame.color_format != 0 && !gl::is_color_format(format(frame.color_format))) {
-    return bad("color_format", frame.color_format, "GL_RGBA16F (0x881A) or GL_RGBA32F (0x8814)");
+  if (frame.color_format != 0 && !gl::is_color_format(format(frame.color_format)) &&
+      !gl::is_alpha_free_color_format(format(frame.color_format))) {
+    return bad("color_format", frame.color_format,
+               "GL_RGBA16F (0x881A), GL_RGBA32F (0x8814) or, with strength_texture, GL_R11F_G11F_B10F (0x8C3A)");
+  }
+  if (frame.strength_format != 0 && !gl::is_strength_format(format(frame.strength_format))) {
+    return bad("strength_format", frame.strength_format, "GL_R8 (0x8229), GL_R16F (0x822D) or GL_R32F (0x822E)");
   }
   if (frame.depth_format != 0 && !gl::is_hardware_depth_format(format(frame.depth_format)) &&
       !gl::is_linear_depth_format(format(frame.depth_format))) {
@@ -200,9 +191,10 @@ sss_result check_lut_desc(sss_context* ctx, const sss_lut_desc* desc, LutUse use
                   SSS_LUT_MAX_SIZE);
     }
   }
-  if (desc->profile < 0 || desc->profile >= SSS_PROFILE_COUNT) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->profile = %d: must be SSS_PROFILE_SKIN_DEON or an SSS_MATERIAL_* in [0, %d]",
-                desc->profile, SSS_PROFILE_COUNT - 1);
+  if (desc->profile < SSS_PROFILE_SKIN_DEON || desc->profile > SSS_PROFILE_WHOLEMILK) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "desc->profile = %d: must be an sss_profile in [SSS_PROFILE_SKIN_DEON (0), SSS_PROFILE_WHOLEMILK (%d)]",
+                desc->profile, SSS_PROFILE_WHOLEMILK);
   }
   if (desc->threads < 0 || desc->threads > 256) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->threads = %d: must be in [0, 256]", desc->threads);

@@ -7,11 +7,10 @@
 #include "../math/kernel_request.hpp"
 #include "context.hpp"
 #include "sss/sss_lut.h"
+#include "sss/sss_tools.h"
 
 namespace sss::api {
 
-sss_result check_samples(sss_context* ctx, int32_t samples);
-sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]);
 sss_result check_settings(sss_context* ctx, const sss_settings* s);
 sss_result check_frame(sss_context* ctx, const sss_frame* frame);
 // The optional texture description of sss_frame (formats in their lists, sizes both 0 or both > 0).
@@ -21,9 +20,16 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame);
 // steady (steady_frame.hpp) and is never asked about host texture parameters (host_texture_params.hpp).
 bool frame_described(const sss_frame& frame);
 
+// Shared by both libraries (kernel_desc.cpp): taps odd in [SSS_MIN_TAPS, SSS_MAX_TAPS], three values
+// in [0, 1], the default descs (what sss_default_profile_desc / sss_default_kernel_desc give).
+sss_result check_taps(sss_context* ctx, const char* name, int32_t taps);
+sss_result check_unit_range(sss_context* ctx, const char* name, const float values[3]);
+void default_profile_desc(sss_profile_desc* p);
+void default_kernel_desc(sss_kernel_desc* d);
+
 // sss_profile_desc and sss_kernel_desc (kernel_desc.cpp). `name` is how the fields are reached in
 // messages: check_profile's the struct itself ("profile"), check_kernel_desc's a prefix ("desc->",
-// "settings->kernel."). in_settings: the desc embedded in sss_settings, whose taps, strength and
+// "settings->kernel->"). in_settings: the desc embedded in sss_settings, whose taps, strength and
 // falloff are not read (the settings' own are).
 sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char* name);
 sss_result check_kernel_desc(sss_context* ctx, const sss_kernel_desc* d, const char* name, bool in_settings);

@@ -18,9 +18,9 @@ BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outsi
 }
 
 bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis) {
-  if (axis == 0) return true;
+  if (axis == 0) return run.intermediate_format() == static_cast<GLint>(RGBA16F);
   const std::size_t terms = run.cross_bilateral ? 1 : run.kernel->terms.size();
-  if (term + 1 < terms) return accumulators_are_half(gl);
+  if (term + 1 < terms) return accumulators_are_half(gl, run);
   return run.target().internal_format == static_cast<GLint>(RGBA16F);
 }
 

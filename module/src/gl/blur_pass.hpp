@@ -15,11 +15,13 @@ namespace sss::gl {
 BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside);
 // The sum of the kernel's terms: RGBA32F keeps up to six terms at float precision, but OpenGL ES
 // may not render to it (GL_EXT_color_buffer_float), while every ES context the module accepts
-// renders RGBA16F.
-inline bool accumulators_are_half(const Functions& gl) { return gl.api.es; }
+// renders RGBA16F; an RGBA32F colour on ES was checked to have that extension, so its sum is RGBA32F.
+inline bool accumulators_are_half(const Functions& gl, const FilterRun& run) {
+  return gl.api.es && run.color.internal_format != static_cast<GLint>(RGBA32F);
+}
 // Whether the pass of term `term` on `axis` writes a half-float target, so that the shader rounds
 // what it writes to nearest whatever rounding the driver's conversion does: horizontal passes
-// write the RGBA16F intermediate, vertical ones the sum of terms (RGBA32F; RGBA16F on ES) or, the
+// write the intermediate (FilterRun::intermediate_format), vertical ones the sum of terms (RGBA32F; RGBA16F on ES) or, the
 // last, the host's colour or output.
 bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis);
 // The kernel uniforms (uploaded only when the kernel, term or axis changed since the program last

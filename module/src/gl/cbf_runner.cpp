@@ -22,7 +22,9 @@ sss_result build(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal
     const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
     r = ctx.programs.cross_bilateral(outside, linear_depth, normals, vertical, message);
   }
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK) {
+    r = ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
+  }
   if (r == SSS_OK && run.stencil != nullptr) {
     r = ctx.targets.ensure_masked_source(run.color.internal_format, run.color.width, run.color.height, message);
   }

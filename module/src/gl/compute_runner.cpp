@@ -1,6 +1,6 @@
 // The compute path (sss.h SSS_PATH_COMPUTE, OpenGL 4.3+): the same two passes as the fragment
 // runner, as dispatches of separable_blur.comp that cache each row (then column) segment in shared
-// memory. Horizontal: host colour -> the RGBA16F intermediate (image unit 0); vertical:
+// memory. Horizontal: host colour -> the intermediate (RGBA16F, RGBA32F for RGBA32F colour; image unit 0); vertical:
 // intermediate -> the host's colour or the separate output (image unit 0). The image unit is part
 // of the StateGuard's list; samplers and texture units are the fragment path's.
 #include "blur_pass.hpp"
@@ -50,7 +50,7 @@ const char* compute_unavailable(const Functions& gl, const FilterRun& run) {
   if (run.stencil != nullptr) return "a stencil mask needs the fragment passes' stencil test";
   if (run.kernel == nullptr || run.kernel->terms.size() != 1) return "the kernel has several terms";
   if (image_format_index(run.target().internal_format) < 0) {
-    return "the target's format has no image format (RGBA16F or RGBA32F)";
+    return "the target's format has no image format (RGBA16F, RGBA32F or R11F_G11F_B10F)";
   }
   if (!run.target_complete) {
     return "the target texture may be incomplete (a mipmap GL_TEXTURE_MIN_FILTER, the default, with more levels "
@@ -66,12 +66,16 @@ sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* mess
   const int target_format = image_format_index(target.internal_format);
   BlurProgram* horizontal = nullptr;
   BlurProgram* vertical = nullptr;
-  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre), 0, &horizontal, message);
+  const int intermediate_format = image_format_index(run.intermediate_format());
+  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre), intermediate_format,
+                                      &horizontal, message);
   if (r == SSS_OK) {
     const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
     r = ctx.programs.compute(blur_variant(run, 0, 1, outside), target_format, &vertical, message);
   }
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK) {
+    r = ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
+  }
   if (r == SSS_OK && run.region && !run.writes_back()) r = copy_outside_region_first(ctx, run, message);
   if (r != SSS_OK) return r;
 
@@ -79,7 +83,8 @@ sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* mess
   {
     DebugGroup group(f, ctx.labels, "sss horizontal pass (compute)");
     measure.begin(PassQueries::horizontal);
-    f.BindImageTexture(0, ctx.targets.names().intermediate, 0, 0, 0, WRITE_ONLY, RGBA16F);
+    f.BindImageTexture(0, ctx.targets.names().intermediate, 0, 0, 0, WRITE_ONLY,
+                       kComputeImageFormats[intermediate_format].internal_format);
     dispatch_blur(ctx, *horizontal, run, run.color.name, 0);
     measure.end(PassQueries::horizontal);
   }

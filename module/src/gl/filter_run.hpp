@@ -31,6 +31,10 @@ struct FilterRun {
   TextureInfo depth;
   TextureInfo output;                      // name 0: write back into color
   TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
+  // The host's strength texture (sss_frame.strength_texture; name 0: the colour's alpha is the
+  // strength). SeparableFilter::run draws the colour with it as alpha into the module's copy and
+  // runs the passes on with_strength_source's run (strength_source.cpp): the runners never see it.
+  TextureInfo strength;
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
   // Where the passes draw and their taps stay (constants.clamp_*): the viewport, or the host's
@@ -72,6 +76,13 @@ struct FilterRun {
   bool writes_back() const { return output.name == 0; }
   // The texture the last pass writes: the host's colour (in place) or the separate output.
   const TextureInfo& target() const { return writes_back() ? color : output; }
+  // The horizontal pass's target, as precise as the colour it reads: RGBA32F for RGBA32F colour
+  // (irradiance above half float's 65504, or finer than its 11 bits, survives the passes), else
+  // RGBA16F (an RGBA16F or R11F_G11F_B10F colour holds nothing it would lose).
+  GLint intermediate_format() const {
+    return color.internal_format == static_cast<GLint>(RGBA32F) ? static_cast<GLint>(RGBA32F)
+                                                                 : static_cast<GLint>(RGBA16F);
+  }
 };
 
 }  // namespace sss::gl

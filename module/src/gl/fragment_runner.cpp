@@ -130,9 +130,12 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
 // checks, all before the first draw.
 sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
   sss_result r = build_programs(ctx, run, programs, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_intermediate(run.color.width, run.color.height, message);
+  if (r == SSS_OK) {
+    r = ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
+  }
   if (r == SSS_OK && run.kernel->terms.size() > 1) {
-    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl), message);
+    r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl, run),
+                                        message);
   }
   return r;
 }

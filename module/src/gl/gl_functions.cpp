@@ -70,6 +70,8 @@ std::string format_name(GLint internal_format) {
     case RGBA32F: return "GL_RGBA32F";
     case R16F: return "GL_R16F";
     case R32F: return "GL_R32F";
+    case R8: return "GL_R8";
+    case R11F_G11F_B10F: return "GL_R11F_G11F_B10F";
     case DEPTH_COMPONENT16: return "GL_DEPTH_COMPONENT16";
     case DEPTH_COMPONENT24: return "GL_DEPTH_COMPONENT24";
     case DEPTH_COMPONENT32: return "GL_DEPTH_COMPONENT32";

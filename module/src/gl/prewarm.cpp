@@ -42,13 +42,15 @@ sss_result prewarm_masked(PassContext& ctx, const FilterRun& run, std::string* m
 // target's image format) and the intermediate.
 sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* message) {
   BlurProgram* unused = nullptr;
-  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre), 0, &unused, message);
+  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre),
+                                      image_format_index(run.intermediate_format()), &unused, message);
   if (r == SSS_OK) {
     const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
     const int format = image_format_index(run.target().internal_format);
     r = ctx.programs.compute(blur_variant(run, 0, 1, outside), format, &unused, message);
   }
-  return r == SSS_OK ? ctx.targets.ensure_intermediate(run.color.width, run.color.height, message) : r;
+  if (r != SSS_OK) return r;
+  return ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
 }
 
 }  // namespace
@@ -57,6 +59,11 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, nullptr};
   FilterRun run = described;
   run.identity = false;  // what identity settings skip is prepared too: a superset costs only time here
+  if (run.strength.name != 0) {  // the passes run on the colour with the strength as alpha
+    const sss_result r = prepare_strength_source(ctx, run, message);
+    if (r != SSS_OK) return r;
+    run = with_strength_source(run, targets_.names());
+  }
   if (run.color.multisampled()) return prepare_msaa(ctx, run, message);
   // The paths choose_path may take for such a frame: the one asked for where it can run, else the
   // plain fragment passes; SSS_PATH_AUTO any of them (and the timing's queries). Whether the target

@@ -52,6 +52,7 @@ void ProgramCache::destroy() {
   remove(copy_);
   remove(stencil_mark_);
   remove(sample_write_.program);
+  remove(strength_combine_.program);
   forget();
 }
 
@@ -234,6 +235,20 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::strength_combine(StrengthProgram** out, std::string* message) {
+  StrengthProgram& p = strength_combine_;
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  p.program = link("strength_combine.frag", "", "strength texture combine shader", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, "sss colour with the strength texture as alpha", nullptr);
+  const Functions& f = *gl_;
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::strength);
   return SSS_OK;
 }
 

@@ -1,6 +1,7 @@
 // Every GL program the passes use, built on first use (or ahead, by prewarm) and kept until the
 // filter is destroyed: the copy, the separable blur (fragment and compute variants), the
-// cross-bilateral blur and the MSAA resolve, stencil mark and per-sample write. A program's
+// cross-bilateral blur, the MSAA resolve, stencil mark and per-sample write, and the strength
+// texture's combine. A program's
 // uniform locations are looked up once, when it is linked, and its sampler units set then too
 // (texture_units.hpp).
 #pragma once
@@ -48,6 +49,12 @@ struct CbfProgram {
   std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
 };
 
+// The colour with the host's separate strength texture as its alpha (strength_source.cpp).
+struct StrengthProgram {
+  GLuint program = 0;
+  GLint round_to_half = -1;
+};
+
 struct ResolveProgram {
   GLuint program = 0;
   GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
@@ -76,6 +83,7 @@ class ProgramCache {
   sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
+  sss_result strength_combine(StrengthProgram** out, std::string* message);
 
  private:
   static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
@@ -103,6 +111,7 @@ class ProgramCache {
   std::array<ResolveProgram, 2> resolve_{};  // index: host depth is linear
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
+  StrengthProgram strength_combine_;
 };
 
 }  // namespace sss::gl

@@ -48,4 +48,14 @@ sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message
 // what sss_prepare makes ahead for a multisampled frame (prewarm.cpp).
 sss_result prepare_msaa(PassContext& ctx, const FilterRun& run, std::string* message);
 
+// A host strength texture (run.strength, strength_source.cpp): the colour with the strength as
+// alpha, drawn into the module's copy before the passes, which then run on with_strength_source's
+// run. prepare_ builds the program and allocates the copy (sss_prepare too); draw_ draws it over
+// the viewport (module targets only: no host texture is written).
+sss_result prepare_strength_source(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result draw_strength_source(PassContext& ctx, const FilterRun& run, std::string* message);
+// The run the passes take: the copy as the colour and, written back, the host's colour as the
+// separate output (so the passes write its rgb alone: R11F_G11F_B10F has no alpha to keep).
+FilterRun with_strength_source(const FilterRun& run, const Targets& targets);
+
 }  // namespace sss::gl

@@ -94,9 +94,20 @@ void SeparableFilter::note_compute_refusal(const char* reason) {
   }
 }
 
-sss_result SeparableFilter::run(const FilterRun& run, std::string* message) {
+sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, measure_ ? &queries_ : nullptr};
-  ctx.check_framebuffers = run.verify;
+  ctx.check_framebuffers = given.verify;
+  // A strength texture: the passes run on the colour with it as alpha (strength_source.cpp); in
+  // place with nothing to blur, nothing changes (as without one).
+  FilterRun with_strength;
+  if (given.strength.name != 0) {
+    last_draws_ = 0;
+    if (given.identity && given.writes_back()) return SSS_OK;
+    const sss_result r = draw_strength_source(ctx, given, message);
+    if (r != SSS_OK) return r;
+    with_strength = with_strength_source(given, targets_.names());
+  }
+  const FilterRun& run = given.strength.name != 0 ? with_strength : given;
   if (run.color.multisampled()) {
     const sss_result r = run_msaa(ctx, run, message);
     last_draws_ = ctx.draws;

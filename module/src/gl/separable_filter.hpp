@@ -48,7 +48,7 @@ class SeparableFilter {
   // Deletes the objects (they must exist in the current context: see objects_present), then
   // forget()s them.
   void destroy();
-  sss_result run(const FilterRun& run, std::string* message);
+  sss_result run(const FilterRun& given, std::string* message);
   // Builds every program and allocates every target a frame like `run` can need, on each path
   // run.path lets it take (prewarm.cpp), so that run() on such a frame builds and allocates
   // nothing (sss_prepare). `run` describes the frame's textures by format, size and sample count;

@@ -20,7 +20,7 @@ constexpr int kComputeSegment = 128;
 constexpr int kComputeApron = 64;
 
 // The cross-bilateral blur's u_kernel[SSS_MAX_TAPS]: the most taps a pass takes (sss.h).
-inline constexpr int kCbfMaxTaps = SSS_MAX_SAMPLES;
+inline constexpr int kCbfMaxTaps = SSS_MAX_TAPS;
 
 // The LUT generator (lut_generate.frag): u_terms[SSS_LUT_MAX_TERMS], the Gaussians of a profile
 // it integrates (a profile of more is generated on the CPU), and u_gl[SSS_LUT_ORDER], the

@@ -34,8 +34,11 @@ struct ComputeImageFormat {
   GLenum internal_format;
   const char* qualifier;  // SSS_IMAGE_FORMAT
 };
-inline constexpr ComputeImageFormat kComputeImageFormats[] = {{RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}};
-inline constexpr int kComputeImageFormatCount = 2;
+// RGBA16F and RGBA32F: the intermediate, a colour or an output; R11F_G11F_B10F: a colour with a
+// strength texture, which the vertical pass writes as its output (strength_source.cpp).
+inline constexpr ComputeImageFormat kComputeImageFormats[] = {
+    {RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}, {R11F_G11F_B10F, "r11f_g11f_b10f"}};
+inline constexpr int kComputeImageFormatCount = 3;
 // The blur variant's switches, then the compute shader's (segment, apron, image format).
 std::string compute_blur_defines(const BlurVariant& v, int image_format);
 

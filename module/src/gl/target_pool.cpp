@@ -58,9 +58,10 @@ void TargetPool::destroy() {
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
                                  t_.msaa_read_framebuffer,    t_.sample_copy_framebuffer,
-                                 t_.sample_write_framebuffer};
+                                 t_.sample_write_framebuffer, t_.strength_framebuffer};
   const GLuint textures[] = {t_.intermediate,   t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
-                             t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy};
+                             t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy,
+                             t_.strength_source};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -92,12 +93,18 @@ sss_result TargetPool::allocate_target(GLuint* texture, GLenum internal_format, 
   return SSS_OK;
 }
 
-sss_result TargetPool::ensure_intermediate(int width, int height, std::string* message) {
-  if (t_.intermediate != 0 && intermediate_width_ == width && intermediate_height_ == height) return SSS_OK;
+sss_result TargetPool::ensure_intermediate(GLint format, int width, int height, std::string* message) {
+  if (t_.intermediate != 0 && intermediate_format_ == format && intermediate_width_ == width &&
+      intermediate_height_ == height) {
+    return SSS_OK;
+  }
   intermediate_width_ = intermediate_height_ = 0;
-  const sss_result r =
-      allocate_target(&t_.intermediate, RGBA16F, HALF_FLOAT, width, height, "RGBA16F intermediate target", message);
+  const bool single = format == static_cast<GLint>(RGBA32F);
+  const sss_result r = allocate_target(&t_.intermediate, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT,
+                                       width, height,
+                                       single ? "RGBA32F intermediate target" : "RGBA16F intermediate target", message);
   if (r != SSS_OK) return r;
+  intermediate_format_ = single ? static_cast<GLint>(RGBA32F) : static_cast<GLint>(RGBA16F);
   intermediate_width_ = width;
   intermediate_height_ = height;
   const Functions& f = *gl_;
@@ -107,7 +114,10 @@ sss_result TargetPool::ensure_intermediate(int width, int height, std::string* m
 }
 
 sss_result TargetPool::ensure_accumulators(int width, int height, bool half, std::string* message) {
-  if (t_.accumulators[1] != 0 && accumulator_width_ == width && accumulator_height_ == height) return SSS_OK;
+  if (t_.accumulators[1] != 0 && accumulator_half_ == half && accumulator_width_ == width &&
+      accumulator_height_ == height) {
+    return SSS_OK;
+  }
   accumulator_width_ = accumulator_height_ = 0;
   for (GLuint& t : t_.accumulators) {
     const sss_result r =
@@ -115,6 +125,7 @@ sss_result TargetPool::ensure_accumulators(int width, int height, bool half, std
                         half ? "RGBA16F sum of the kernel's terms" : "RGBA32F sum of the kernel's terms", message);
     if (r != SSS_OK) return r;
   }
+  accumulator_half_ = half;
   accumulator_width_ = width;
   accumulator_height_ = height;
   return SSS_OK;
@@ -261,6 +272,32 @@ sss_result TargetPool::ensure_sample_copy(const TextureInfo& color, std::string*
   copy_fixed_ = color.fixed_locations;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.sample_copy_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, t_.sample_copy, 0);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_strength_source(GLint format, int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  if (t_.strength_framebuffer == 0) {
+    f.GenFramebuffers(1, &t_.strength_framebuffer);
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.strength_framebuffer);
+    label_object(f, labels_, FRAMEBUFFER, t_.strength_framebuffer, "sss colour with the strength texture target");
+  }
+  if (t_.strength_source != 0 && strength_format_ == format && strength_width_ == width &&
+      strength_height_ == height) {
+    return SSS_OK;
+  }
+  strength_width_ = strength_height_ = 0;
+  const bool single = format == static_cast<GLint>(RGBA32F);
+  const sss_result r =
+      allocate_target(&t_.strength_source, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT, width, height,
+                      single ? "RGBA32F colour with the strength texture" : "RGBA16F colour with the strength texture",
+                      message);
+  if (r != SSS_OK) return r;
+  strength_format_ = format;
+  strength_width_ = width;
+  strength_height_ = height;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.strength_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.strength_source, 0);
   return SSS_OK;
 }
 

@@ -22,7 +22,7 @@ struct Targets {
   // of all terms but the last draw into `accumulator_framebuffer`.
   GLuint intermediate_framebuffer = 0, output_framebuffer = 0, stencil_source_framebuffer = 0,
          accumulator_framebuffer = 0;
-  GLuint intermediate = 0;             // RGBA16F, the horizontal pass's result
+  GLuint intermediate = 0;             // the horizontal pass's result: RGBA16F, or RGBA32F for RGBA32F colour
   std::array<GLuint, 2> accumulators{};  // the sum of the kernel's earlier terms, ping-ponged
   GLuint stencil_buffer = 0;           // the stencil copy (host's format) or the mask marked from alpha
   // Cross-bilateral mode with a stencil: the colour with alpha 0 outside it (host's format).
@@ -32,6 +32,8 @@ struct Targets {
   GLuint resolve_framebuffer = 0, msaa_read_framebuffer = 0, sample_copy_framebuffer = 0,
          sample_write_framebuffer = 0;
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, sample_copy = 0;
+  // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
+  GLuint strength_source = 0, strength_framebuffer = 0;
 };
 
 class TargetPool {
@@ -42,7 +44,8 @@ class TargetPool {
   void forget();   // drops the names (context lost)
   const Targets& names() const { return t_; }
 
-  sss_result ensure_intermediate(int width, int height, std::string* message);
+  // `format`: intermediate_format (pass_setup.hpp) of the frame: RGBA16F, or RGBA32F for RGBA32F colour.
+  sss_result ensure_intermediate(GLint format, int width, int height, std::string* message);
   // `half`: RGBA16F (OpenGL ES, where RGBA32F may not be renderable), else RGBA32F.
   sss_result ensure_accumulators(int width, int height, bool half, std::string* message);
   sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
@@ -50,6 +53,8 @@ class TargetPool {
   void ensure_msaa_framebuffers();
   sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred, std::string* message);
   sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
+  // `format`: RGBA16F or RGBA32F.
+  sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
 
  private:
   // A colour texture the module owns, (re)allocated at this size and format.
@@ -61,7 +66,9 @@ class TargetPool {
   bool labels_ = false;
   const Log* log_ = nullptr;
   Targets t_;
+  GLint intermediate_format_ = 0;
   int intermediate_width_ = 0, intermediate_height_ = 0;
+  bool accumulator_half_ = false;
   int accumulator_width_ = 0, accumulator_height_ = 0;
   GLint stencil_format_ = 0;
   int stencil_width_ = 0, stencil_height_ = 0;
@@ -73,6 +80,8 @@ class TargetPool {
   GLint copy_format_ = 0;
   int copy_width_ = 0, copy_height_ = 0, copy_samples_ = 0;
   GLboolean copy_fixed_ = 1;
+  GLint strength_format_ = 0;
+  int strength_width_ = 0, strength_height_ = 0;
 };
 
 }  // namespace sss::gl

@@ -79,6 +79,12 @@ std::string describe_target(const TextureInfo& t) {
 
 bool is_color_format(GLint f) { return f == static_cast<GLint>(RGBA16F) || f == static_cast<GLint>(RGBA32F); }
 
+bool is_alpha_free_color_format(GLint f) { return f == static_cast<GLint>(R11F_G11F_B10F); }
+
+bool is_strength_format(GLint f) {
+  return f == static_cast<GLint>(R8) || f == static_cast<GLint>(R16F) || f == static_cast<GLint>(R32F);
+}
+
 bool is_depth_stencil_format(GLint f) {
   return f == static_cast<GLint>(DEPTH24_STENCIL8) || f == static_cast<GLint>(DEPTH32F_STENCIL8);
 }

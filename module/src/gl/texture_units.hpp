@@ -13,6 +13,8 @@ constexpr GLuint depth = 1;        // the host's depth (or the MSAA path's resol
 constexpr GLuint original = 2;     // the host's colour, read by a pass writing a separate output
 constexpr GLuint normals = 3;      // the cross-bilateral mode's host normals
 constexpr GLuint accumulated = 3;  // the earlier terms' sum (separable kernels of several terms)
+// The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
+constexpr GLuint strength = 1;
 
 // The MSAA resolve, stencil mark and per-sample write.
 constexpr GLuint msaa_color = 0;  // resolve: the host's samples; write: the copy of them

@@ -15,7 +15,7 @@ namespace {
 using cpu_passes::Plane;
 using cpu_passes::Rgba;
 
-bool finite4(const Rgba& v) { return cpu_passes::all_finite(v.data(), 4); }
+bool finite4(const Rgba& v) { return cpu_passes::in_colour_range(v.data(), 4); }
 
 struct ViewPoint {
   float x, y, z;
@@ -132,11 +132,11 @@ void cpu_cbf_filter(const CbfKernel& kernel, const PassConstants& constants, con
   const Plane color{w, h, 4, image.color};
   const Plane depth{w, h, 1, image.depth};
 
-  // Horizontal pass into the RGBA16F intermediate; pixels the mask excludes get alpha 0 there, so
+  // Horizontal pass into the intermediate; pixels the mask excludes get alpha 0 there, so
   // the vertical pass gives them no weight either.
   std::vector<float> intermediate(count * 4);
   const Pass horizontal{kernel, constants, cbf, color, depth, image.mask, 0, normals};
-  cpu_passes::horizontal_into_half(
+  cpu_passes::horizontal_into_intermediate(
       image, constants, true, [&](int x, int y, Rgba* blurred) { return horizontal.pixel(x, y, blurred); },
       intermediate.data());
 

@@ -28,9 +28,14 @@ struct Plane {
   Rgba rgba(int x, int y) const { return {at(x, y, 0), at(x, y, 1), at(x, y, 2), at(x, y, 3)}; }
 };
 
-inline bool all_finite(const float* v, int n) {
+// The colours the passes blur: finite and within +-2^125, the shaders' bound
+// (module/shaders/colour_range.glsl: past it the float arithmetic could overflow). A colour outside
+// keeps its value, and as a tap counts as the centre's colour.
+constexpr float kColourLimit = 0x1p125f;
+
+inline bool in_colour_range(const float* v, int n) {
   for (int i = 0; i < n; ++i) {
-    if (!std::isfinite(v[i])) return false;
+    if (!std::isfinite(v[i]) || std::fabs(v[i]) > kColourLimit) return false;
   }
   return true;
 }
@@ -43,11 +48,12 @@ inline bool inside(const PassConstants& k, int x, int y) {
 
 inline bool masked_in(const CpuFilterImage& image, std::size_t i) { return image.mask == nullptr || image.mask[i] != 0; }
 
-// The horizontal pass into the RGBA16F intermediate (`intermediate`: width·height·4 floats): each
+// The horizontal pass into the intermediate (`intermediate`: width·height·4 floats, rounded to half
+// float unless image.intermediate_is_half is false): each
 // pixel inside the rectangle and the mask blurred by `pixel(x, y, &rgba)` where it returns true,
 // the rest copied (with alpha 0 where the mask leaves them out and `clear_masked_alpha`).
 template <typename Pixel>
-void horizontal_into_half(const CpuFilterImage& image, const PassConstants& k, bool clear_masked_alpha,
+void horizontal_into_intermediate(const CpuFilterImage& image, const PassConstants& k, bool clear_masked_alpha,
                           const Pixel& pixel, float* intermediate) {
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
@@ -59,7 +65,10 @@ void horizontal_into_half(const CpuFilterImage& image, const PassConstants& k, b
         Rgba blurred;
         if (pixel(x, y, &blurred)) value = blurred;
       }
-      for (int c = 0; c < 4; ++c) intermediate[i * 4 + c] = round_to_half(value[static_cast<std::size_t>(c)]);
+      for (int c = 0; c < 4; ++c) {
+        const float v = value[static_cast<std::size_t>(c)];
+        intermediate[i * 4 + c] = image.intermediate_is_half ? round_to_half(v) : v;
+      }
     }
   }
 }

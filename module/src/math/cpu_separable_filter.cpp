@@ -11,7 +11,7 @@ namespace sss::math {
 
 namespace {
 
-using cpu_passes::all_finite;
+using cpu_passes::in_colour_range;
 using cpu_passes::Plane;
 using cpu_passes::Rgba;
 
@@ -29,7 +29,7 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
                   const Plane& source, const Plane& depth, int axis, int x, int y, Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = source.rgba(x, y);
-  if (!(centre[3] > 0.0f) || !all_finite(centre.data(), 4)) return false;
+  if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) return false;
   const float strength = std::min(centre[3], 1.0f);
   const float centre_distance = linearise_depth(k, depth.at(x, y, 0));
   const float w = clip_w(k, centre_distance);
@@ -56,7 +56,7 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
       py = std::clamp(py, k.clamp_min[1], k.clamp_max[1]);
       const int tx = static_cast<int>(px), ty = static_cast<int>(py);
       std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
-      if (!all_finite(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
+      if (!in_colour_range(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
       if (k.follow_surface_factor > 0.0f) {
         const float d = follow_surface * std::fabs(centre_distance - linearise_depth(k, depth.at(tx, ty, 0)));
         follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
@@ -84,8 +84,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   for (std::size_t t = 0; t < terms; ++t) {
     const PassTerm& term = kernel.terms[t];
     const bool last = t + 1 == terms;
-    // Horizontal pass into the RGBA16F intermediate: translucent pixels blurred, the rest copied.
-    cpu_passes::horizontal_into_half(
+    // Horizontal pass into the intermediate: translucent pixels blurred, the rest copied.
+    cpu_passes::horizontal_into_intermediate(
         image, constants, false,
         [&](int x, int y, Rgba* blurred) {
           return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, color, depth, 0, x, y,

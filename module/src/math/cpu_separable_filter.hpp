@@ -20,13 +20,17 @@ struct CpuFilterImage {
   const uint8_t* mask = nullptr;   // optional: 1 where the stencil test passes; nullptr: everywhere
   bool output_is_half = false;     // the output texture is RGBA16F: round the result like the GL
   bool accumulator_is_half = false;  // several terms: the module's sum of the earlier terms is RGBA16F (ES)
+  // The horizontal pass's target is RGBA16F (every colour but RGBA32F, whose intermediate is
+  // RGBA32F: gl::FilterRun::intermediate_format): round what it stores like the GL.
+  bool intermediate_is_half = true;
 };
 
 // Runs both passes of every term of `kernel` (pass_kernel.hpp) into `out` (RGBA, width·height·4
 // floats; may not alias color). Pixels that are outside the mask, have alpha <= 0 (after the
-// intermediate's rounding), a non-finite colour or alpha, or an unusable depth keep their input value
-// exactly; pixels outside the viewport too. Alpha above 1 counts as 1. A non-finite tap counts as the
-// centre's colour (it does not spread). Per term: a horizontal pass into the RGBA16F intermediate
+// intermediate's rounding), a non-finite colour or alpha (or one past +-2^125: kColourLimit), or an
+// unusable depth keep their input value exactly; pixels outside the viewport too. Alpha above 1 counts
+// as 1. Such a tap counts as the centre's colour (it does not spread). Per term: a horizontal pass into the intermediate (RGBA16F
+// unless intermediate_is_half is false)
 // and a vertical pass that adds the sum of the earlier terms (kept in RGBA32F, or RGBA16F with
 // accumulator_is_half, as the GL does); jittered taps move by jitter_noise; a term with a depth
 // variance blends taps towards the centre by 1 - exp(-dz²/2v) instead of the ramp.

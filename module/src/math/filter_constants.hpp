@@ -10,6 +10,8 @@
 
 namespace sss::math {
 
+inline constexpr float kCbfMaxRMaxMm = 50.0f;  // the largest sss_settings.cbf_r_max_mm
+
 struct FilterSettings {
   // The scene scale and the look, apart: one millimetre of surface is world_units_per_mm world
   // units (0.001: a scene in metres), and `scale` multiplies every scattering distance (1: the
@@ -26,8 +28,8 @@ struct FilterSettings {
   // The cross-bilateral mode (sss_settings.mode and cbf_*; see spike_gaussian_profile.hpp, cbf_kernel.hpp).
   bool cross_bilateral = false;
   int cbf_taps = 13;
-  float cbf_r_max_mm = 4.5f;
-  unsigned cbf_profile = 0x100u;  // SSS_PROFILE_MIKKELSEN_2010 or an sss_material (spike_gaussian_profile.hpp)
+  float cbf_r_max_mm = 4.5f;  // Mikkelsen's r_max for skin, (0, kCbfMaxRMaxMm]
+  unsigned cbf_profile = 13u;  // an sss_profile: SSS_PROFILE_MIKKELSEN_2010 (spike_gaussian_profile.hpp)
   // The kernel family of the separable mode (sss_settings.kernel): kernel.family separable is eq. (1)
   // from samples, strength and falloff above; every other family is built by build_kernel_plan with
   // `samples` taps (kernel.taps, .strength and .falloff are not read).

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "kernel_fits.hpp"
+#include "fitters.hpp"
 #include "radial_profile.hpp"
 
 namespace sss::math {
@@ -36,7 +36,7 @@ SpikeGaussianProfile spike_gaussian_profile(unsigned id) {
   const MaterialCoefficients& m = measured_materials().at(id - 1);
   SpikeGaussianProfile p;
   p.name = m.name;
-  p.terms = fit_gaussian_sum(DipoleProfile(m), kFittedGaussians);
+  p.terms = fitters("a measured material's Gaussians (its dipole fitted)").fit_gaussian_sum(DipoleProfile(m), kFittedGaussians);
   return p;
 }
 
@@ -44,7 +44,8 @@ SpikeGaussianProfile spike_gaussian_profile(const RadialProfile& profile, const 
   SpikeGaussianProfile p;
   p.name = name;
   const std::vector<GaussianTerm>* terms = profile.gaussian_terms();
-  p.terms = terms != nullptr ? *terms : fit_gaussian_sum(profile, kFittedGaussians);
+  p.terms = terms != nullptr ? *terms
+                             : fitters("the Gaussians fitted to a profile").fit_gaussian_sum(profile, kFittedGaussians);
   return p;
 }
 

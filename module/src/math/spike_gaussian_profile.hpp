@@ -30,11 +30,11 @@ SpikeGaussianProfile mikkelsen_profile();
 // as the separable kernel treats it.
 SpikeGaussianProfile skin_spike_gaussian_profile();
 
-// The ids of sss_settings.cbf_profile: the sss_material values 0 (d'Eon skin) to 11 (the measured
+// The ids of sss_settings.cbf_profile, sss_profile values (sss.h): 0 (d'Eon skin) to 11 (the measured
 // materials, as kFittedGaussians Gaussians fitted to the dipole by fit_gaussian_sum, with no spike:
 // the fit's narrowest term is a real part of the profile, not the unscattered share) and
 // kMikkelsenProfileId. The API layer checks the value with is_spike_gaussian_profile_id.
-inline constexpr unsigned kMikkelsenProfileId = 0x100u;
+inline constexpr unsigned kMikkelsenProfileId = 13u;  // SSS_PROFILE_MIKKELSEN_2010
 inline constexpr int kFittedGaussians = 4;
 bool is_spike_gaussian_profile_id(unsigned id);
 SpikeGaussianProfile spike_gaussian_profile(unsigned id);
@@ -42,7 +42,7 @@ SpikeGaussianProfile spike_gaussian_profile(unsigned id);
 // SSS_PROFILE_KERNEL: sss_settings.cbf_profile naming the profile of sss_settings.kernel.profile.
 // A sum of Gaussians (d'Eon's, any count) is taken as it is, any other profile (a dipole, a table)
 // fitted with kFittedGaussians Gaussians; no spike.
-inline constexpr unsigned kKernelProfileId = 0x101u;
+inline constexpr unsigned kKernelProfileId = 14u;  // SSS_PROFILE_KERNEL
 SpikeGaussianProfile spike_gaussian_profile(const RadialProfile& profile, const std::string& name);
 // Any cbf_profile id, kKernelProfileId taking `kernel_profile`.
 bool is_cbf_profile_id(unsigned id);

@@ -1,0 +1,36 @@
+# cmake -DHEADER=<sss.h> -DOUT=<file.c> -P SssExtractHeaderExample.cmake
+# Writes the example of the header's top comment (the lines between "sss-h-example: begin" and
+# "sss-h-example: end", each without its " *   " comment prefix) to OUT, so that it is compiled as it
+# is printed (tools/docs/CMakeLists.txt: sss_header_example, ctest docs.header_example).
+# One list element per line: the characters CMake lists treat specially (; [ ]) stand in for
+# placeholders until each line is written back.
+file(READ "${HEADER}" content)
+string(REPLACE ";" "@SEMI@" content "${content}")
+string(REPLACE "[" "@OPEN@" content "${content}")
+string(REPLACE "]" "@CLOSE@" content "${content}")
+string(REPLACE "\n" ";" lines "${content}")
+set(inside OFF)
+set(code "/* Generated from ${HEADER} by cmake/SssExtractHeaderExample.cmake: do not edit. */\n")
+set(found OFF)
+foreach(line IN LISTS lines)
+  if(line MATCHES "sss-h-example: end")
+    set(inside OFF)
+    set(found ON)
+  elseif(inside)
+    if(NOT line MATCHES "^ \\*   " AND NOT line STREQUAL " *")
+      message(FATAL_ERROR "${HEADER}: example line without the \" *   \" prefix: ${line}")
+    endif()
+    string(REGEX REPLACE "^ \\*   ?" "" line "${line}")
+    string(REPLACE "@SEMI@" ";" line "${line}")
+    string(REPLACE "@OPEN@" "[" line "${line}")
+    string(REPLACE "@CLOSE@" "]" line "${line}")
+    string(APPEND code "${line}\n")
+  elseif(line MATCHES "sss-h-example: begin")
+    set(inside ON)
+  endif()
+endforeach()
+if(NOT found)
+  message(FATAL_ERROR "${HEADER}: no \"sss-h-example: begin\" ... \"sss-h-example: end\" lines")
+endif()
+file(WRITE "${OUT}.tmp" "${code}")
+file(COPY_FILE "${OUT}.tmp" "${OUT}" ONLY_IF_DIFFERENT)

@@ -1,0 +1,171 @@
+#include "versioned_structs.hpp"
+
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "legacy_structs.hpp"
+#include "validation.hpp"
+
+namespace sss::api {
+
+namespace {
+
+using legacy::Settings01;
+using legacy::Settings02;
+
+static_assert(offsetof(sss_frame, depth_stencil_mode) == legacy::kFrameSize02,
+              "0.1's and 0.2's sss_frame are today's up to depth_stencil_mode");
+
+// The 0.1 and 0.2 layouts embedded a kernel desc whose eq. (1) family meant "the settings' own
+// strength and falloff": today that is settings.kernel = NULL.
+template <typename Legacy>
+void take_legacy_kernel(const Legacy& in, CurrentSettings* out) {
+  out->kernel = in.kernel;
+  out->settings.kernel = in.kernel.family == SSS_KERNEL_SEPARABLE ? nullptr : &out->kernel;
+}
+
+// The fields 0.1, 0.2 and 0.3 share by name and meaning.
+template <typename Legacy>
+void take_common(const Legacy& in, CurrentSettings* out) {
+  sss_settings& s = out->settings;
+  for (int c = 0; c < 3; ++c) {
+    s.strength[c] = in.strength[c];
+    s.falloff[c] = in.falloff[c];
+  }
+  s.taps = in.samples;
+  s.flags = in.flags & ~legacy::kLegacyAdaptiveTaps;  // accepted and ignored since 0.2
+  s.mode = in.mode;
+  s.cbf_taps = in.cbf_taps;
+  s.cbf_r_max_mm = in.cbf_r_max_mm;
+  s.cbf_profile = profile_from_legacy(in.cbf_profile);
+  s.jitter = in.jitter;
+  s.path = in.path;
+  take_legacy_kernel(in, out);
+}
+
+template <typename Legacy>
+void give_common(const sss_settings& s, Legacy* out) {
+  for (int c = 0; c < 3; ++c) {
+    out->strength[c] = s.strength[c];
+    out->falloff[c] = s.falloff[c];
+  }
+  out->samples = s.taps;
+  out->flags = s.flags;
+  out->mode = s.mode;
+  out->cbf_taps = s.cbf_taps;
+  out->cbf_r_max_mm = s.cbf_r_max_mm;
+  out->cbf_profile = profile_to_legacy(s.cbf_profile);
+  if (s.kernel != nullptr) {
+    out->kernel = *s.kernel;
+  } else {
+    default_kernel_desc(&out->kernel);
+  }
+  out->jitter = s.jitter;
+  out->path = s.path;
+}
+
+constexpr auto kSettings01 = static_cast<std::uint32_t>(sizeof(Settings01));
+constexpr auto kSettings02 = static_cast<std::uint32_t>(sizeof(Settings02));
+constexpr auto kSettings03 = static_cast<std::uint32_t>(sizeof(sss_settings));
+
+}  // namespace
+
+sss_result check_struct_size(sss_context* ctx, const char* field, const char* type, std::uint32_t size,
+                             std::initializer_list<StructRelease> known) {
+  std::string sizes;
+  for (const StructRelease& k : known) {
+    if (k.size == size) return SSS_OK;
+    if (!sizes.empty()) sizes += ", ";
+    sizes += std::to_string(k.size) + " (" + k.release + ")";
+  }
+  return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s = %u: no release of sss defined %s with that size; accepted: %s",
+              field, size, type, sizes.c_str());
+}
+
+std::uint32_t profile_from_legacy(std::uint32_t legacy) {
+  if (legacy == legacy::kLegacyMikkelsen) return SSS_PROFILE_MIKKELSEN_2010;
+  if (legacy == legacy::kLegacyKernelProfile) return SSS_PROFILE_KERNEL;
+  // 0..11 kept their values; anything else stays out of range for check_settings to name.
+  return legacy <= SSS_PROFILE_WHOLEMILK ? legacy : 0xFFFFFFFFu;
+}
+
+std::uint32_t profile_to_legacy(std::uint32_t profile) {
+  if (profile == SSS_PROFILE_MIKKELSEN_2010) return legacy::kLegacyMikkelsen;
+  if (profile == SSS_PROFILE_KERNEL) return legacy::kLegacyKernelProfile;
+  return profile;
+}
+
+sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, CurrentSettings* out) {
+  if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
+  const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", in->struct_size,
+                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3", kSettings03}});
+  if (r != SSS_OK) return r;
+  if (in->struct_size == kSettings03) {
+    out->settings = *in;
+    return SSS_OK;
+  }
+  sss_default_settings(&out->settings);
+  if (in->struct_size == kSettings02) {
+    Settings02 old;
+    std::memcpy(&old, in, sizeof old);
+    out->settings.world_units_per_mm = old.world_units_per_mm;
+    out->settings.scale = old.scale;
+    out->settings.separable_scale = old.separable_scale;
+    take_common(old, out);
+    return SSS_OK;
+  }
+  // 0.1: one millimetre of the eq. (1) kernel spanned (2/3)·width world units, in the kernel's own
+  // millimetres (separable_scale 1: 0.1's image footprint, docs/migration.md); every other family's
+  // millimetres are the profile's, which the same conversion keeps.
+  Settings01 old;
+  std::memcpy(&old, in, sizeof old);
+  out->settings.world_units_per_mm = old.width * (2.0f / 3.0f);
+  out->settings.scale = 1.0f;
+  out->settings.separable_scale = 1.0f;
+  take_common(old, out);
+  return SSS_OK;
+}
+
+sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss_settings* out) {
+  const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", out->struct_size,
+                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3", kSettings03}});
+  if (r != SSS_OK) return r;
+  if (out->struct_size == kSettings03) {
+    *out = current;
+    return SSS_OK;
+  }
+  if (out->struct_size == kSettings02) {
+    Settings02 old{};
+    old.struct_size = kSettings02;
+    old.world_units_per_mm = current.world_units_per_mm;
+    old.scale = current.scale;
+    old.separable_scale = current.separable_scale;
+    give_common(current, &old);
+    std::memcpy(static_cast<void*>(out), &old, sizeof old);
+    return SSS_OK;
+  }
+  // 0.1 has no scale or separable_scale: its width is the one that gives today's world_units_per_mm
+  // · scale (the eq. (1) kernel's own size is not expressible there).
+  Settings01 old{};
+  old.struct_size = kSettings01;
+  old.width = current.world_units_per_mm * current.scale * 1.5f;
+  give_common(current, &old);
+  std::memcpy(static_cast<void*>(out), &old, sizeof old);
+  return SSS_OK;
+}
+
+sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* out) {
+  if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame is NULL");
+  const sss_result r =
+      check_struct_size(ctx, "frame->struct_size", "sss_frame", in->struct_size,
+                        {{"0.1, 0.2", legacy::kFrameSize02}, {"0.3", static_cast<std::uint32_t>(sizeof(sss_frame))}});
+  if (r != SSS_OK) return r;
+  *out = sss_frame{};
+  std::memcpy(static_cast<void*>(out), in, in->struct_size);
+  out->struct_size = sizeof(sss_frame);
+  return SSS_OK;
+}
+
+}  // namespace sss::api

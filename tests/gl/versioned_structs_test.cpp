@@ -1,0 +1,335 @@
+// Versioned structs (sss.h, "struct_size"): a struct of an earlier release is accepted and means what
+// it meant then, a size no release defined is refused with a message naming the struct and the size.
+// The 0.1 and 0.2 layouts of sss_settings are written out here from those releases' sss.h (git
+// 4cb68e3 and 5646dcc), field for field, as a host compiled against them would pass them.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "gl_fixture.hpp"
+#include "math/fitters.hpp"
+#include "synthetic_scene.hpp"
+
+namespace sss_test {
+namespace {
+
+// sss 0.1's sss_settings (its sss.h): the paper's width, the kernel desc embedded.
+struct Settings01 {
+  uint32_t struct_size;
+  float width;
+  float strength[3];
+  float falloff[3];
+  int32_t samples;
+  uint32_t flags;  // SSS_FOLLOW_SURFACE 0x1, SSS_ADAPTIVE_TAPS 0x2
+  uint32_t mode;
+  int32_t cbf_taps;
+  float cbf_r_max_mm;
+  uint32_t cbf_profile;  // an sss_material 0..11, 0x100 SSS_PROFILE_MIKKELSEN_2010, 0x101 SSS_PROFILE_KERNEL
+  sss_kernel_desc kernel;
+  float jitter;
+  uint32_t path;
+};
+
+// sss 0.2's: world units per millimetre, scale and separable_scale apart.
+struct Settings02 {
+  uint32_t struct_size;
+  float world_units_per_mm;
+  float scale;
+  float strength[3];
+  float falloff[3];
+  float separable_scale;
+  int32_t samples;
+  uint32_t flags;
+  uint32_t mode;
+  int32_t cbf_taps;
+  float cbf_r_max_mm;
+  uint32_t cbf_profile;
+  sss_kernel_desc kernel;
+  float jitter;
+  uint32_t path;
+};
+
+#if UINTPTR_MAX == 0xFFFFFFFFFFFFFFFFu
+// The sizes those releases had on x86-64 (LP64), as their sss.h compiled.
+static_assert(sizeof(Settings01) == 184, "0.1's sss_settings");
+static_assert(sizeof(Settings02) == 192, "0.2's sss_settings");
+static_assert(sizeof(sss_kernel_desc) == 120, "sss_kernel_desc kept 0.1's layout");
+static_assert(sizeof(sss_create_desc) == 48 && sizeof(sss_stats) == 72, "kept 0.1's layout");
+static_assert(sizeof(sss_frame) == 112, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format");
+#endif
+
+const sss::math::Matrix4 kCamera = perspective_matrix(45.0f, 1.0f, 0.1f, 10.0f);
+
+void fill_common(sss_kernel_desc* k) {
+  sss_default_kernel_desc(k);
+  k->family = SSS_KERNEL_SVD;
+  k->rank = 2;
+  k->profile.profile = SSS_PROFILE_MARBLE;  // the same value as 0.1's SSS_MATERIAL_MARBLE
+}
+
+// Every field sss_get_settings gives back, the kernel by content.
+void expect_same_settings(const sss_settings& a, const sss_settings& b) {
+  EXPECT_EQ(a.world_units_per_mm, b.world_units_per_mm);
+  EXPECT_EQ(a.scale, b.scale);
+  EXPECT_EQ(a.separable_scale, b.separable_scale);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(a.strength[c], b.strength[c]) << c;
+    EXPECT_EQ(a.falloff[c], b.falloff[c]) << c;
+  }
+  EXPECT_EQ(a.taps, b.taps);
+  EXPECT_EQ(a.flags, b.flags);
+  EXPECT_EQ(a.mode, b.mode);
+  EXPECT_EQ(a.cbf_taps, b.cbf_taps);
+  EXPECT_EQ(a.cbf_r_max_mm, b.cbf_r_max_mm);
+  EXPECT_EQ(a.cbf_profile, b.cbf_profile);
+  EXPECT_EQ(a.jitter, b.jitter);
+  EXPECT_EQ(a.path, b.path);
+  ASSERT_EQ(a.kernel == nullptr, b.kernel == nullptr);
+  if (a.kernel != nullptr) {
+    EXPECT_EQ(std::memcmp(a.kernel, b.kernel, sizeof(sss_kernel_desc)), 0);
+  }
+}
+
+class VersionedStructs : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    if (HasFatalFailure()) return;
+    sss_ = create_sss();
+    ASSERT_NE(sss_, nullptr);
+  }
+
+  // What the context holds, read back in today's layout.
+  sss_settings current() {
+    sss_settings s;
+    s.struct_size = sizeof s;
+    EXPECT_EQ(sss_get_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+    return s;
+  }
+
+  // `s` set on a context of its own, read back: what today's layout of the converted settings gives.
+  sss_settings as_set(const sss_settings& s) {
+    sss_context* other = create_sss();
+    EXPECT_NE(other, nullptr);
+    EXPECT_EQ(sss_set_settings(other, &s), SSS_OK) << sss_last_error(other);
+    sss_settings back;
+    back.struct_size = sizeof back;
+    EXPECT_EQ(sss_get_settings(other, &back), SSS_OK);
+    if (back.kernel != nullptr) {
+      kept_ = *back.kernel;  // the other context's copy goes with it
+      back.kernel = &kept_;
+    }
+    sss_destroy(other);
+    return back;
+  }
+
+  sss_kernel_desc kept_{};
+};
+
+TEST_F(VersionedStructs, Settings01AreConvertedToWhatTheyMeant) {
+  Settings01 old{};
+  old.struct_size = sizeof old;
+  old.width = 0.06f;
+  const float strength[3] = {0.78f, 0.70f, 0.75f}, falloff[3] = {0.57f, 0.13f, 0.08f};
+  std::memcpy(old.strength, strength, sizeof strength);
+  std::memcpy(old.falloff, falloff, sizeof falloff);
+  old.samples = 25;
+  old.flags = SSS_FOLLOW_SURFACE | 0x2u;  // 0.1's SSS_ADAPTIVE_TAPS: accepted, ignored
+  old.mode = SSS_MODE_SEPARABLE;
+  old.cbf_taps = 15;
+  old.cbf_r_max_mm = 3.5f;
+  old.cbf_profile = 0x100u;  // 0.1's SSS_PROFILE_MIKKELSEN_2010
+  fill_common(&old.kernel);
+  old.jitter = 0.25f;
+  old.path = SSS_PATH_FRAGMENT;
+  ASSERT_EQ(sss_set_settings(sss_, reinterpret_cast<const sss_settings*>(&old)), SSS_OK) << sss_last_error(sss_);
+
+  // What 0.1 meant, in 0.3's terms: one profile millimetre spanned (2/3)·width world units, in the
+  // eq. (1) kernel's own millimetres (separable_scale 1), at scale 1.
+  sss_settings expected;
+  sss_default_settings(&expected);
+  expected.world_units_per_mm = sss_world_units_per_mm_from_legacy_width(old.width);
+  expected.scale = 1.0f;
+  expected.separable_scale = 1.0f;
+  std::memcpy(expected.strength, strength, sizeof strength);
+  std::memcpy(expected.falloff, falloff, sizeof falloff);
+  expected.taps = 25;
+  expected.flags = SSS_FOLLOW_SURFACE;
+  expected.cbf_taps = 15;
+  expected.cbf_r_max_mm = 3.5f;
+  expected.cbf_profile = SSS_PROFILE_MIKKELSEN_2010;
+  expected.kernel = &old.kernel;
+  expected.jitter = 0.25f;
+  expected.path = SSS_PATH_FRAGMENT;  // the old struct's path, not today's default (SSS_PATH_AUTO)
+  expect_same_settings(current(), as_set(expected));
+}
+
+TEST_F(VersionedStructs, Settings02AreConvertedToWhatTheyMeant) {
+  Settings02 old{};
+  old.struct_size = sizeof old;
+  old.world_units_per_mm = 0.01f;
+  old.scale = 1.5f;
+  sss_settings defaults;
+  sss_default_settings(&defaults);
+  std::memcpy(old.strength, defaults.strength, sizeof old.strength);
+  std::memcpy(old.falloff, defaults.falloff, sizeof old.falloff);
+  old.separable_scale = defaults.separable_scale;
+  old.samples = 11;
+  old.flags = 0u;
+  old.mode = SSS_MODE_CROSS_BILATERAL;
+  old.cbf_taps = 13;
+  old.cbf_r_max_mm = 4.5f;
+  old.cbf_profile = 0x101u;  // 0.2's SSS_PROFILE_KERNEL: the kernel desc's profile
+  sss_default_kernel_desc(&old.kernel);
+  old.kernel.family = SSS_KERNEL_ARTIST;
+  old.jitter = 0.0f;
+  old.path = SSS_PATH_AUTO;
+  ASSERT_EQ(sss_set_settings(sss_, reinterpret_cast<const sss_settings*>(&old)), SSS_OK) << sss_last_error(sss_);
+
+  sss_settings expected = defaults;
+  expected.world_units_per_mm = 0.01f;
+  expected.scale = 1.5f;
+  expected.taps = 11;
+  expected.flags = 0u;
+  expected.mode = SSS_MODE_CROSS_BILATERAL;
+  expected.cbf_profile = SSS_PROFILE_KERNEL;
+  expected.kernel = &old.kernel;
+  expected.path = SSS_PATH_AUTO;
+  expect_same_settings(current(), as_set(expected));
+
+  // 0.2's eq. (1) family meant the settings' own strength and falloff: today's NULL kernel.
+  old.kernel.family = SSS_KERNEL_SEPARABLE;
+  ASSERT_EQ(sss_set_settings(sss_, reinterpret_cast<const sss_settings*>(&old)), SSS_OK);
+  EXPECT_EQ(current().kernel, nullptr);
+}
+
+TEST_F(VersionedStructs, GetSettingsWritesTheLayoutItIsGiven) {
+  sss_settings s;
+  sss_default_settings(&s);
+  s.world_units_per_mm = 0.002f;
+  s.scale = 2.0f;
+  s.taps = 21;
+  s.cbf_profile = SSS_PROFILE_MIKKELSEN_2010;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  Settings02 two{};
+  two.struct_size = sizeof two;
+  ASSERT_EQ(sss_get_settings(sss_, reinterpret_cast<sss_settings*>(&two)), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(two.struct_size, sizeof two);
+  EXPECT_EQ(two.world_units_per_mm, 0.002f);
+  EXPECT_EQ(two.scale, 2.0f);
+  EXPECT_EQ(two.samples, 21);
+  EXPECT_EQ(two.cbf_profile, 0x100u);
+  EXPECT_EQ(two.kernel.family, SSS_KERNEL_SEPARABLE);
+  EXPECT_EQ(two.kernel.struct_size, sizeof(sss_kernel_desc));
+  Settings01 one{};
+  one.struct_size = sizeof one;
+  ASSERT_EQ(sss_get_settings(sss_, reinterpret_cast<sss_settings*>(&one)), SSS_OK) << sss_last_error(sss_);
+  EXPECT_FLOAT_EQ(sss_world_units_per_mm_from_legacy_width(one.width), 0.002f * 2.0f);  // scale folded in
+  EXPECT_EQ(one.samples, 21);
+  EXPECT_EQ(one.cbf_profile, 0x100u);
+}
+
+TEST_F(VersionedStructs, SizesNoReleaseDefinedAreRefusedByName) {
+  sss_settings good;
+  sss_default_settings(&good);
+  good.taps = 9;
+  ASSERT_EQ(sss_set_settings(sss_, &good), SSS_OK);
+  // Larger than today's, between the releases' sizes, smaller than any.
+  for (uint32_t size : {static_cast<uint32_t>(sizeof(sss_settings)) + 8u, 188u, 100u, 4u, 0u}) {
+    SCOPED_TRACE(size);
+    sss_settings s = good;
+    s.taps = 11;
+    s.struct_size = size;
+    EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
+    const std::string message = sss_last_error(sss_);
+    EXPECT_NE(message.find("settings->struct_size = " + std::to_string(size)), std::string::npos) << message;
+    EXPECT_NE(message.find("sss_settings"), std::string::npos) << message;
+    EXPECT_EQ(current().taps, 9);  // the old settings stay
+  }
+  sss_create_desc desc{};
+  desc.struct_size = sizeof desc + 4;
+  desc.get_proc_address = sss_headless_get_proc_address;
+  sss_context* none = nullptr;
+  EXPECT_EQ(sss_create(&desc, &none), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(nullptr)).find("sss_create_desc"), std::string::npos) << sss_last_error(nullptr);
+  sss_stats stats{};
+  stats.struct_size = 64;
+  EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("stats->struct_size = 64"), std::string::npos);
+}
+
+TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
+  if (is_gles()) GTEST_SKIP() << "OpenGL ES 3.0 needs described frames; the sizes are the same there";
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  // A world unit of a millimetre, so that the kernel spans pixels of this small frame (at the default
+  // metres it stays inside each pixel and, with the RGBA32F intermediate of an RGBA32F colour, the
+  // frame comes back exactly unchanged, which would not show that the frame ran).
+  sss_settings settings;
+  sss_default_settings(&settings);
+  settings.world_units_per_mm = 1.0f;
+  ASSERT_EQ(sss_set_settings(sss_, &settings), SSS_OK) << sss_last_error(sss_);
+  const SyntheticScene scene = make_relief_scene(8, 8, 1, kCamera);
+  const GLuint depth = make_depth32f(8, 8, scene.window_depth);
+  std::vector<float> results[2];
+  const uint32_t sizes[2] = {96u, static_cast<uint32_t>(sizeof(sss_frame))};  // 0.1 and 0.2; 0.3
+  for (int i = 0; i < 2; ++i) {
+    const GLuint color = make_rgba32f(8, 8, scene.color);
+    sss_frame f{};
+    f.struct_size = sizes[i];
+    f.color_texture = color;
+    f.depth_texture = depth;
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sizes[i] << ": " << sss_last_error(sss_);
+    results[i] = read_rgba(color, 8, 8);
+  }
+  EXPECT_EQ(results[0], results[1]);  // depth_stencil_mode's default: the same frame
+  EXPECT_NE(results[0], scene.color);
+  sss_frame f{};
+  f.struct_size = 100u;
+  f.color_texture = make_rgba32f(8, 8, scene.color);
+  f.depth_texture = depth;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_INVALID_ARGUMENT);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("frame->struct_size = 100"), std::string::npos) << message;
+  EXPECT_NE(message.find("sss_frame"), std::string::npos) << message;
+}
+
+// The runtime builds no fitted kernel by itself (it links neither NLopt nor Eigen): without the tools'
+// fitters registered, settings that need one are refused by name and the old settings stay; after
+// sss_tools_init they are taken. (This binary registers them before main through sss_math: the test
+// takes them away for its span and puts them back.)
+TEST_F(VersionedStructs, FittedKernelsNeedTheToolsRegistered) {
+  struct Reregister {  // whatever happens below, the next tests find the fitters registered
+    ~Reregister() { sss::math::set_fitters(&sss::math::tool_fitters()); }
+  } reregister;
+  sss::math::set_fitters(nullptr);
+  sss_kernel_desc guided;
+  sss_default_kernel_desc(&guided);  // registers the fitters (every sss_tools.h function does) ...
+  sss::math::set_fitters(nullptr);    // ... which this test takes away again
+  guided.family = SSS_KERNEL_GUIDED;
+  sss_settings s;
+  sss_default_settings(&s);
+  s.taps = 9;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  s.kernel = &guided;
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_UNSUPPORTED);
+  const std::string message = sss_last_error(sss_);
+  EXPECT_NE(message.find("settings->kernel->family = 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("sss_tools_init"), std::string::npos) << message;
+  EXPECT_EQ(current().kernel, nullptr);  // the old settings stay
+  sss_settings cbf;
+  sss_default_settings(&cbf);
+  cbf.mode = SSS_MODE_CROSS_BILATERAL;
+  cbf.cbf_profile = SSS_PROFILE_APPLE;  // a measured material: its Gaussians are fitted
+  EXPECT_EQ(sss_set_settings(sss_, &cbf), SSS_ERROR_UNSUPPORTED);
+  cbf.cbf_profile = SSS_PROFILE_SKIN_DEON;  // closed form: the runtime builds it alone
+  EXPECT_EQ(sss_set_settings(sss_, &cbf), SSS_OK) << sss_last_error(sss_);
+  sss_tools_init();
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  ASSERT_NE(current().kernel, nullptr);
+  EXPECT_EQ(current().kernel->family, SSS_KERNEL_GUIDED);
+}
+
+}  // namespace
+}  // namespace sss_test
