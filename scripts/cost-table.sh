@@ -3,20 +3,24 @@
 # on llvmpipe) for each scene and path, for this build's probe and, optionally, a baseline build's:
 # the repeatable counterpart of the benchmark's llvmpipe times.
 #
-#   scripts/cost-table.sh [--size WxH] [--baseline PROBE --baseline-name NAME] > FILE.md
+#   scripts/cost-table.sh [--size WxH] [--scenes a,b,...] [--baseline PROBE --baseline-name NAME] > FILE.md
 #
 # PROBE: another checkout's build/release/tests/bench/sss_cost_probe (tests/bench/cost_probe.cpp
 # builds against sss 0.1 too: copy it and its CMake lines there). Default size 640x360 (about 15 s
-# a count; 1920x1080 about 2.5 min).
+# a count; 1920x1080 about 2.5 min); default scenes head-close, head-mid, head-far and empty. The
+# paths: each build's default (sss_default_settings: 0.1 the plain passes, SSS_PATH_AUTO since),
+# the plain fragment passes and the masked ones.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 size=640x360
+scenes=head-close,head-mid,head-far,empty
 baseline=""
 baseline_name=baseline
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --size) size=$2; shift 2 ;;
+    --scenes) scenes=$2; shift 2 ;;
     --baseline) baseline=$2; shift 2 ;;
     --baseline-name) baseline_name=$2; shift 2 ;;
     *) echo "cost-table.sh: unknown argument '$1'" >&2; exit 2 ;;
@@ -28,12 +32,13 @@ count() {  # probe, scene, path
 }
 
 rev=$(git rev-parse --short HEAD)
-echo "# Instructions per frame on llvmpipe ($size, in place, 17 taps, default settings)"
+echo "# Instructions per frame on llvmpipe ($size, in place, 17 taps, default settings but the path)"
 echo
 echo "Counted by callgrind over one steady \`sss_apply_frame\` + \`glFinish\` (\`scripts/cost-probe.sh\`:"
 echo "the JIT-compiled shaders and the rasteriser included, in one thread); written by"
 echo "\`scripts/cost-table.sh\` at $rev on $(date -u '+%Y-%m-%d %H:%M UTC'). Counts repeat to about 1e-7;"
-echo "they measure work, not time (no cache or memory effects)."
+echo "they measure work, not time (no cache or memory effects). Path \`default\`: what sss_default_settings"
+echo "asks for (0.1: the plain fragment passes; since: \`SSS_PATH_AUTO\`, which takes the masked passes here)."
 echo
 if [[ -n $baseline ]]; then
   echo "| scene | path | $baseline_name | this build ($rev) | ratio |"
@@ -42,8 +47,8 @@ else
   echo "| scene | path | this build ($rev) |"
   echo "|---|---|---:|"
 fi
-for path in fragment masked; do
-  for scene in head-close head-mid head-far empty; do
+for path in default fragment masked; do
+  for scene in ${scenes//,/ }; do
     now=$(count "$probe" "$scene" "$path")
     if [[ -n $baseline ]]; then
       before=$(count "$baseline" "$scene" "$path")

@@ -5,17 +5,24 @@
 // `valgrind --tool=callgrind --instr-atstart=no` with the rasteriser in the calling thread
 // (LP_NUM_THREADS=0), and only the timed frame is counted (CALLGRIND_START/STOP_INSTRUMENTATION
 // around it). Builds against any release of the library with the same bench scenes, so two
-// builds compare on the same frame.
+// builds compare on the same frame. With --frames N it also times N more frames (wall clock around
+// sss_apply_frame + glFinish, the refill before each outside it) and prints their median and
+// fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
-//   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] [--path fragment|masked]
+//   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
+//                  [--path default|fragment|masked|auto] [--frames N]
 //
-// Prints the scene's translucent pixels and "frame done" (the counts come from callgrind).
+// --path default (also without --path) keeps sss_default_settings' path: the frame a host gets.
+// Prints the path that ran and "frame done" (the counts come from callgrind).
 #include <valgrind/callgrind.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "gpu_scene.hpp"
 #include "host_gl.hpp"
@@ -32,7 +39,9 @@ struct Options {
   std::string scene = "head-close";
   int width = 1920, height = 1080;
   int taps = 17;
+  bool default_path = true;  // sss_default_settings' path; else `path`
   unsigned path = SSS_PATH_FRAGMENT;
+  int frames = 0;  // timed frames after the counted one
 };
 
 bool parse(int argc, char** argv, Options* o) {
@@ -47,7 +56,18 @@ bool parse(int argc, char** argv, Options* o) {
     } else if (key == "--taps") {
       o->taps = std::atoi(value.c_str());
     } else if (key == "--path") {
-      o->path = value == "masked" ? SSS_PATH_FRAGMENT_MASKED : SSS_PATH_FRAGMENT;
+      o->default_path = value == "default";
+      if (value == "masked") {
+        o->path = SSS_PATH_FRAGMENT_MASKED;
+      } else if (value == "auto") {
+        o->path = SSS_PATH_AUTO;
+      } else if (value == "fragment" || value == "default") {
+        o->path = SSS_PATH_FRAGMENT;
+      } else {
+        return false;
+      }
+    } else if (key == "--frames") {
+      o->frames = std::atoi(value.c_str());
     } else {
       return false;
     }
@@ -78,8 +98,12 @@ void physical_settings(const sss_bench::GpuScene& scene, const Options& o, sss_s
 #else
   s->world_units_per_mm = scene.world_units_per_mm;
 #endif
+#if SSS_VERSION_MAJOR == 0 && SSS_VERSION_MINOR < 3
+  s->samples = o.taps;  // renamed `taps` in 0.3
+#else
   s->taps = o.taps;
-  s->path = o.path;
+#endif
+  if (!o.default_path) s->path = o.path;
 }
 
 }  // namespace
@@ -88,7 +112,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path fragment|masked]\n");
+                         "[--path default|fragment|masked|auto] [--frames N]\n");
     return 2;
   }
   sss_headless_desc hd = {};
@@ -140,7 +164,24 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::printf("%s %dx%d, %d taps, path %u: frame done\n", o.scene.c_str(), o.width, o.height, o.taps, o.path);
+  std::vector<double> ms;
+  for (int i = 0; i < o.frames; ++i) {
+    refill(scene.irradiance, color, o.width, o.height);
+    const auto start = std::chrono::steady_clock::now();
+    const sss_result r = sss_apply_frame(ctx, &frame);
+    glFinish();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (r != SSS_OK) return 1;
+  }
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  const unsigned ran = sss_get_stats(ctx, &stats) == SSS_OK ? stats.last_frame_path : 99u;
+  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran: frame done\n", o.scene.c_str(), o.width, o.height,
+              o.taps, s.path, o.default_path ? "the default" : "named", ran);
+  if (!ms.empty()) {
+    std::sort(ms.begin(), ms.end());
+    std::printf("time of %d frames: median %.2f ms, fastest %.2f ms\n", o.frames, ms[ms.size() / 2], ms.front());
+  }
   sss_destroy(ctx);
   glDeleteTextures(1, &color);
   sss_bench::destroy_scene(&scene);

@@ -40,6 +40,9 @@ class SeparableMethod : public Method {
     s.world_units_per_mm = (scene.world_units_per_mm);
     s.taps = taps_;
     s.flags = follow_ ? SSS_FOLLOW_SURFACE : 0u;
+    // The filter's own passes, on the plain fragment path: what these rows have always timed. The
+    // default path (SSS_PATH_AUTO) is timed by the in-place rows ("separable-auto", ...).
+    s.path = SSS_PATH_FRAGMENT;
     if (!kernel_.name.empty()) {
       sss_test::kernel_of(s).family = kernel_.family;
       sss_test::kernel_of(s).rank = kernel_.rank;

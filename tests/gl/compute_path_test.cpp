@@ -408,18 +408,18 @@ TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
   ASSERT_NE(sss_, nullptr);
   sss_settings s;
   sss_default_settings(&s);
-  EXPECT_EQ(s.path, SSS_PATH_FRAGMENT);
+  EXPECT_EQ(s.path, SSS_PATH_AUTO);  // the default: the fastest path here (sss.h, SSS_PATH_AUTO)
   s.path = 4;
   EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 4"), std::string::npos) << sss_last_error(sss_);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
-  EXPECT_EQ(back.path, SSS_PATH_FRAGMENT);  // nothing changed
-  s.path = SSS_PATH_AUTO;
+  EXPECT_EQ(back.path, SSS_PATH_AUTO);  // nothing changed
+  s.path = SSS_PATH_FRAGMENT;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);
-  EXPECT_EQ(back.path, SSS_PATH_AUTO);
+  EXPECT_EQ(back.path, SSS_PATH_FRAGMENT);
 }
 
 // ---- The masked fragment path (SSS_PATH_FRAGMENT_MASKED).

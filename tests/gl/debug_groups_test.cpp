@@ -24,18 +24,25 @@ void APIENTRY record(GLenum, GLenum type, GLuint, GLenum, GLsizei, const GLchar*
 
 class DebugGroups : public GlTest {
  protected:
-  std::vector<std::string> apply_and_record(uint32_t create_flags) {
+  // path: sss_settings.path, or the default (SSS_PATH_AUTO) when UINT32_MAX.
+  std::vector<std::string> apply_and_record(uint32_t create_flags, uint32_t path = UINT32_MAX) {
     Recorder recorder;
     glEnable(GL_DEBUG_OUTPUT);
     glDebugMessageCallback(record, &recorder);
-    apply(create_flags);
+    apply(create_flags, path);
     glDebugMessageCallback(nullptr, nullptr);
     glDisable(GL_DEBUG_OUTPUT);
     return recorder.events;
   }
 
-  void apply(uint32_t create_flags) {
+  void apply(uint32_t create_flags, uint32_t path = UINT32_MAX) {
     sss_ = create_sss(create_flags);
+    if (path != UINT32_MAX) {
+      sss_settings s;
+      sss_default_settings(&s);
+      s.path = path;
+      EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+    }
     const SyntheticScene scene = make_relief_scene(16, 16, 1, perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f));
     const GLuint color = make_rgba16f(16, 16, scene.color);
     const GLuint depth = make_depth32f(16, 16, scene.window_depth);
@@ -52,10 +59,19 @@ TEST_F(DebugGroups, NamedAndBalanced) {
   // still runs under the sanitizers on OSMesa, and everywhere in the release build.
   if (test_backend() != SSS_HEADLESS_OSMESA) GTEST_SKIP() << "LeakSanitizer tracer crash with EGL debug output";
 #endif
-  const std::vector<std::string> expected = {
+  // The plain fragment path: the two passes.
+  const std::vector<std::string> plain = {
       "push sss_apply",          "push sss horizontal pass", "pop sss horizontal pass",
       "push sss vertical pass",  "pop sss vertical pass",    "pop sss_apply"};
-  EXPECT_EQ(apply_and_record(0), expected);
+  EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT), plain);
+  sss_destroy(sss_);
+  sss_ = nullptr;
+  // The masked path (the default's choice on a software rasteriser): the stencil mark first.
+  const std::vector<std::string> masked = {
+      "push sss_apply",          "push sss stencil from alpha", "pop sss stencil from alpha",
+      "push sss horizontal pass", "pop sss horizontal pass",    "push sss vertical pass",
+      "pop sss vertical pass",   "pop sss_apply"};
+  EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT_MASKED), masked);
 }
 
 TEST_F(DebugGroups, NoneWhenTheHostTurnsThemOff) {

@@ -43,6 +43,9 @@ class GlQueries : public FilterCaseTest {
     loader_override_ = nullptr;
     ASSERT_NE(sss_, nullptr);
     settings_ = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+    // The plain fragment path unless a case names another: the counts below are its own. The
+    // default, SSS_PATH_AUTO, reads more (ADescribedSteadyFrameWithStateRestore... says what).
+    settings_.path = SSS_PATH_FRAGMENT;
     ASSERT_EQ(sss_set_settings(sss_, &settings_), SSS_OK) << sss_last_error(sss_);
     ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
   }
@@ -237,6 +240,41 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
   EXPECT_EQ(n.queries, expected) << "per frame: " << per_frame(n.queries, kSteadyFrames) << "; expected "
                                  << per_frame(expected, kSteadyFrames) << " (" << per_frame_total << ")";
   EXPECT_EQ(n.total_creations(), 0) << n.describe_creations();
+
+  // The default path, SSS_PATH_AUTO, may take the masked path (it changes the stencil state) or the
+  // compute path (image unit 0, where the context has compute shaders), so it reads both: the
+  // stencil's function, reference, value mask and three operations for each face, and the image
+  // unit's name, level, layer, access and format and whether it is layered.
+  sss_settings s = settings_;
+  s.path = SSS_PATH_AUTO;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  const sss_frame f = described_frame();
+  // Past the choice: where the timer is trusted (a GPU) the first frames time each path, each
+  // result read once the GPU is done with it.
+  for (int i = 0; i < 3 * 3 + 2; ++i) {  // three timed frames of each of up to three paths
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    glFinish();
+  }
+  const GlCallCounts a = steady_counts(f);
+  std::map<std::string, long> expected_auto = expected_guard_reads(is_gles(), es_minor);
+  expected_auto["glGetIntegerv"] += 2 * 7;
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (!is_gles() && major * 10 + minor >= 43) {
+    expected_auto["glGetIntegeri_v"] = 5;
+    expected_auto["glGetBooleani_v"] = 1;
+  }
+  per_frame_total = 0;
+  for (auto& [name, count] : expected_auto) {
+    per_frame_total += count;
+    count *= kSteadyFrames;
+  }
+  std::printf("[ counts   ] the default path, with state restore: %ld queries per steady frame (%s)\n",
+              a.total_queries() / kSteadyFrames, per_frame(a.queries, kSteadyFrames).c_str());
+  EXPECT_EQ(a.queries, expected_auto) << "per frame: " << per_frame(a.queries, kSteadyFrames) << "; expected "
+                                      << per_frame(expected_auto, kSteadyFrames) << " (" << per_frame_total << ")";
+  EXPECT_EQ(a.total_creations(), 0) << a.describe_creations();
 }
 
 TEST_F(GlQueries, DebugChecksCheckEverySteadyFrame) {

@@ -235,11 +235,15 @@ TEST_F(KernelFamilies, EveryTermIsAPairOfPasses) {
   const SyntheticScene scene = relief();
   FilterCase c;
   c.settings = family_settings(SSS_KERNEL_SUM_OF_GAUSSIANS, 5);
+  // The plain fragment path: nothing but the terms' passes (the default, SSS_PATH_AUTO, takes the
+  // masked path on llvmpipe, which adds its stencil mark and a copy per horizontal pass).
+  c.settings.path = SSS_PATH_FRAGMENT;
   const FilterOutcome o = run_case(scene, c);
   ASSERT_EQ(o.result, SSS_OK);
   sss_stats stats;
   stats.struct_size = sizeof stats;
   ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+  EXPECT_EQ(stats.last_frame_path, SSS_PATH_FRAGMENT);
   EXPECT_EQ(stats.last_frame_passes, 10u);
 }
 

@@ -47,6 +47,10 @@ class Stats : public FilterCaseTest {
     sss_settings s;
     sss_default_settings(&s);
     s.world_units_per_mm = 0.02f;
+    // The plain fragment path: the counts below are its two passes a frame, and its timer queries
+    // are the ones read. The default (SSS_PATH_AUTO) adds the masked path's mark and copy on a
+    // software rasteriser, and on a GPU its trial frames hold GL_TIME_ELAPSED (compute_path_test.cpp).
+    s.path = SSS_PATH_FRAGMENT;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
     ASSERT_EQ(sss_set_camera(sss_, projection_.data()), SSS_OK);
   }

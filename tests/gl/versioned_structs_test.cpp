@@ -162,6 +162,7 @@ TEST_F(VersionedStructs, Settings01AreConvertedToWhatTheyMeant) {
   expected.cbf_profile = SSS_PROFILE_MIKKELSEN_2010;
   expected.kernel = &old.kernel;
   expected.jitter = 0.25f;
+  expected.path = SSS_PATH_FRAGMENT;  // the old struct's path, not today's default (SSS_PATH_AUTO)
   expect_same_settings(current(), as_set(expected));
 }
 

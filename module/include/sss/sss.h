@@ -103,7 +103,7 @@ typedef enum sss_mode { SSS_MODE_SEPARABLE = 0, SSS_MODE_CROSS_BILATERAL = 1 } s
 typedef enum sss_path {
   SSS_PATH_FRAGMENT = 0,       /**< two full-screen fragment passes (every GL) */
   SSS_PATH_COMPUTE = 1,        /**< two compute dispatches (desktop GL 4.3+), else fragment */
-  SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy) */
+  SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy); default */
   SSS_PATH_FRAGMENT_MASKED = 3 /**< fragment passes behind a stencil marked from alpha */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */
@@ -128,7 +128,7 @@ typedef struct sss_settings {
   const struct sss_kernel_desc *kernel; /**< NULL: eq. (1) from the fields above (the default); else
                                  a kernel family of sss_tools.h, copied by sss_set_settings */
   float jitter;             /**< [0, 1]: share of the outer taps jittered per pixel. Default 0 */
-  uint32_t path;            /**< sss_path. Default SSS_PATH_FRAGMENT */
+  uint32_t path;            /**< sss_path. Default SSS_PATH_AUTO (before 0.3: SSS_PATH_FRAGMENT) */
 } sss_settings;
 
 typedef struct sss_stencil { /* host stencil: translucent where (stencil & mask) == (ref & mask) */

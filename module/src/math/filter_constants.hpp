@@ -35,7 +35,7 @@ struct FilterSettings {
   // `samples` taps (kernel.taps, .strength and .falloff are not read).
   KernelRequest kernel;
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
-  unsigned path = 0;           // SSS_PATH_*: fragment passes, compute dispatches, or the faster one
+  unsigned path = 2;  // SSS_PATH_AUTO (SSS_PATH_*: fragment passes, masked ones, compute dispatches, or the fastest)
 };
 
 enum class DepthEncoding {
