@@ -10,6 +10,10 @@
 // different order (a few float ulps, ~1e-7 per operation; llvmpipe measured below 1e-6, printed),
 // while a half-float intermediate misses by up to half a half-float step, 2.4e-4 relative, and by
 // infinity above 65504. Every path and mode is run: each has its own intermediate pass.
+// The cross-bilateral mode gets 1e-4: its weights are exp() of the taper and the depth and normal
+// terms, which GLSL computes to only (3 + 2|x|) ULP (GLSL 4.60, 4.7.1); NVIDIA's approximate exp
+// measured 2.4e-5 there (H200, 2026-11-26), llvmpipe below 1e-6. 1e-4 still fails a half-float
+// intermediate, which misses by 3.3e-4 on values in [0, 1] (measured with the fix taken out).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +27,7 @@ namespace sss_test {
 namespace {
 
 constexpr float kFloatTolerance = 2e-5f;
+constexpr float kCrossBilateralFloatTolerance = 1e-4f;
 
 SyntheticScene relief() { return make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)); }
 
@@ -88,7 +93,7 @@ class IntermediatePrecision : public FilterCaseTest {
         const float d = largest_relative_difference(o.gpu, o.cpu);
         std::printf("%s%s: GPU vs CPU model in float: largest relative difference %.3g\n", p.name,
                     separate ? ", separate output" : ", in place", static_cast<double>(d));
-        EXPECT_LE(d, kFloatTolerance);
+        EXPECT_LE(d, p.mode == SSS_MODE_CROSS_BILATERAL ? kCrossBilateralFloatTolerance : kFloatTolerance);
         // The case must blur, or the comparison proves nothing.
         EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);
         worst = std::max(worst, d);
