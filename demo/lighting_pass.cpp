@@ -2,6 +2,7 @@
 
 #include "embedded_shaders.hpp"
 #include "host_gl_util.hpp"
+#include "mesh_vertex_shader.hpp"
 
 #include <sss/sss_tools.h>
 
@@ -15,24 +16,8 @@ namespace demo {
 
 namespace {
 
-const char *const kVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_texcoord;
-layout(location = 3) in vec4 a_tangent;
-uniform mat4 u_view_projection;
-out vec3 v_position;
-out vec3 v_normal;
-out vec4 v_tangent;
-out vec2 v_texcoord;
-void main() {
-  v_position = a_position;
-  v_normal = a_normal;
-  v_tangent = a_tangent;
-  v_texcoord = a_texcoord;
-  gl_Position = u_view_projection * vec4(a_position, 1.0);
-}
-)";
+// The mesh's vertex stage (integration/gltf_mesh/mesh_vertex_shader.hpp, shared with the web demo).
+const std::string kVertexShader = gltf_mesh::mesh_vertex_shader("#version 330 core");
 
 // After "#version 330 core" and the library's transmittance include (integration/glsl); the
 // pre-integrated variant also defines SSS_PREINTEGRATED and prepends
@@ -214,9 +199,9 @@ bool create_lighting_pass(LightingPass *pass) {
   const std::string plain = std::string("#version 330 core\n") + glsl::sss_transmittance_glsl + kFragmentShader;
   const std::string pre = std::string("#version 330 core\n#define SSS_PREINTEGRATED 1\n") + glsl::sss_transmittance_glsl +
                           kPreintegratedInclude + kFragmentShader;
-  pass->program = build_program("lighting", kVertexShader, plain.c_str());
+  pass->program = build_program("lighting", kVertexShader.c_str(), plain.c_str());
   if (pass->program == 0) return false;
-  pass->preintegrated_program = build_program("lighting (pre-integrated)", kVertexShader, pre.c_str());
+  pass->preintegrated_program = build_program("lighting (pre-integrated)", kVertexShader.c_str(), pre.c_str());
   if (pass->preintegrated_program == 0) return false;
   glGenSamplers(1, &pass->depth_sampler);
   glSamplerParameteri(pass->depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);

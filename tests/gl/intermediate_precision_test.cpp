@@ -48,19 +48,6 @@ float largest_value(const std::vector<float>& rgba) {
   return m;
 }
 
-struct PathCase {
-  const char* name;
-  uint32_t path, mode;
-  bool two_terms;
-};
-constexpr PathCase kPaths[] = {
-    {"fragment", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false},
-    {"masked", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false},
-    {"compute (the fragment path where the GL has none)", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false},
-    {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true},
-    {"cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false},
-};
-
 class IntermediatePrecision : public FilterCaseTest {
  protected:
   // The compute path runs where the GL has it (the test's textures are complete: GL_NEAREST).
@@ -81,7 +68,7 @@ class IntermediatePrecision : public FilterCaseTest {
   // the CPU model in float; the largest difference over all of them.
   float largest_difference_on_every_path(const SyntheticScene& scene, float* largest_output) {
     float worst = 0.0f;
-    for (const PathCase& p : kPaths) {
+    for (const PathCase& p : kEveryPath) {
       for (bool separate : {false, true}) {
         SCOPED_TRACE(std::string(p.name) + (separate ? ", separate output" : ", in place"));
         FilterCase c;

@@ -73,19 +73,6 @@ Inputs make_inputs(const SyntheticScene& scene) {
   return in;
 }
 
-struct PathCase {
-  const char* name;
-  uint32_t path, mode;
-  bool two_terms;
-};
-constexpr PathCase kPaths[] = {
-    {"fragment", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false},
-    {"masked", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false},
-    {"compute (the fragment path where the GL has none)", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false},
-    {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true},
-    {"cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false},
-};
-
 class StrengthTexture : public GlTest {
  protected:
   void SetUp() override {
@@ -187,7 +174,7 @@ void StrengthTexture::compare_on(const PathCase& p, bool separate) {
 }
 
 TEST_F(StrengthTexture, R11fColourWithAnR8StrengthMatchesRgba16fWithThatAlpha) {
-  for (const PathCase& p : kPaths) {
+  for (const PathCase& p : kEveryPath) {
     for (bool separate : {false, true}) {
       SCOPED_TRACE(std::string(p.name) + (separate ? ", separate output" : ", in place"));
       compare_on(p, separate);

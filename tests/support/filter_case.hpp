@@ -40,6 +40,21 @@ sss_settings visible_settings(int samples, uint32_t flags, float width);
 // settings of a per-path case in the suites that walk every way a frame can run.
 sss_settings path_case_settings(sss_settings base, uint32_t path, uint32_t mode, bool two_terms);
 
+// Every way a frame can run, for path_case_settings: each path, a kernel of two terms, and the
+// cross-bilateral mode (the compute path is the fragment path where the GL has no compute shaders).
+struct PathCase {
+  const char* name;
+  uint32_t path, mode;
+  bool two_terms;
+};
+inline constexpr PathCase kEveryPath[] = {
+    {"fragment", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false},
+    {"masked", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false},
+    {"compute (the fragment path where the GL has none)", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false},
+    {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true},
+    {"cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false},
+};
+
 // Compares GPU and CPU per channel; returns the largest |gpu - cpu| / max(1, |cpu|) (equal values,
 // infinities and NaN in both count as no difference; NaN in one only as NaN, the worst).
 float largest_relative_difference(const std::vector<float>& gpu, const std::vector<float>& cpu);

@@ -151,7 +151,7 @@ bool Scene::init(const gltf_mesh::Model& model, int width, int height, std::stri
   albedo_ = material_texture(model.images.at(static_cast<size_t>(material.base_color_image)), true);
   normal_map_ = material_texture(model.images.at(static_cast<size_t>(material.normal_image)), false);
   shadow_program_ = link(kShadowVertex, kShadowFragment, error);
-  lit_program_ = link(kLitVertex, kLitFragment, error);
+  lit_program_ = link(kLitVertex.c_str(), kLitFragment, error);
   composite_program_ = link(kFullscreenVertex, kCompositeFragment, error);
   if (shadow_program_ == 0 || lit_program_ == 0 || composite_program_ == 0) return false;
   if (!build_targets()) {

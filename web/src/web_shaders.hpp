@@ -3,6 +3,10 @@
 // composite after the library has scattered the diffuse.
 #pragma once
 
+#include <string>
+
+#include "mesh_vertex_shader.hpp"
+
 namespace web {
 
 // Depth only, from the key light.
@@ -17,24 +21,8 @@ precision mediump float;
 void main() {}
 )";
 
-inline const char* const kLitVertex = R"(#version 300 es
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_texcoord;
-layout(location = 3) in vec4 a_tangent;
-uniform mat4 u_view_projection;
-out vec3 v_position;
-out vec3 v_normal;
-out vec4 v_tangent;
-out vec2 v_texcoord;
-void main() {
-  v_position = a_position;
-  v_normal = a_normal;
-  v_tangent = a_tangent;
-  v_texcoord = a_texcoord;
-  gl_Position = u_view_projection * vec4(a_position, 1.0);
-}
-)";
+// The mesh's vertex stage, shared with the native demo (integration/gltf_mesh/mesh_vertex_shader.hpp).
+inline const std::string kLitVertex = gltf_mesh::mesh_vertex_shader("#version 300 es");
 
 // Diffuse (albedo x irradiance, alpha = the scattering strength) and specular (Kelemen and
 // Szirmay-Kalos with a Beckmann lobe) to two RGBA16F targets: the library scatters the first only.

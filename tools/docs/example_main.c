@@ -1,7 +1,8 @@
 /*
- * Runs the example at the top of <sss/sss.h> (extracted from the header's comment at build time by
- * cmake/SssExtractHeaderExample.cmake, compiled as strict C99 and linked against the runtime
- * library alone) as a host would: a headless GL context
+ * Runs one of the two host examples as a host would: the README's (readme_example.c; the target
+ * sss_readme_example) or, built with SSS_HEADER_EXAMPLE, the one at the top of <sss/sss.h> (extracted
+ * from the header's comment at build time by cmake/SssExtractHeaderExample.cmake, compiled as strict
+ * C99 and linked against the runtime library alone: sss_header_example). A headless GL context
  * (EGL surfaceless, else OSMesa), a lit diffuse target in RGBA16F with alpha = strength holding a
  * bright dot on a dim plane 12 cm from the camera, a depth-stencil texture, one frame. Exit status 0
  * when the example's calls succeeded, the dot's light spread and the light was conserved.
@@ -14,10 +15,23 @@
 #include <sss/sss.h>
 #include <sss_headless.h>
 
-/* The example's three functions (the header's comment has no prototypes to include). */
+#ifdef SSS_HEADER_EXAMPLE
+/* The header example's three functions (its comment has no prototypes to include). */
 sss_context *engine_sss_init(sss_get_proc_address_fn load, void *load_user, int w, int h);
 int engine_sss_frame(sss_context *sss, const float projection[16], uint32_t diffuse, uint32_t depth, int w, int h);
 void engine_sss_shutdown(sss_context *sss);
+#define EXAMPLE "sss.h example"
+#define CREATE(h) engine_sss_init(sss_headless_get_proc_address, (h), W, H)
+#define FRAME(sss, p, c, d) engine_sss_frame((sss), (p), (c), (d), W, H)
+#define DESTROY(sss) engine_sss_shutdown(sss)
+#else
+sss_context *engine_sss_create(sss_get_proc_address_fn get_proc_address, void *loader_user);
+int engine_sss_frame(sss_context *sss, const float projection[16], uint32_t diffuse, uint32_t depth);
+#define EXAMPLE "README example"
+#define CREATE(h) engine_sss_create(sss_headless_get_proc_address, (h))
+#define FRAME(sss, p, c, d) engine_sss_frame((sss), (p), (c), (d))
+#define DESTROY(sss) sss_destroy(sss)
+#endif
 
 enum { W = 64, H = 64, DOT = (H / 2) * W + W / 2 };
 
@@ -77,14 +91,14 @@ int main(void) {
   tex_image_2d(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, W, H, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth_stencil);
   bind_texture(GL_TEXTURE_2D, 0);
 
-  sss = engine_sss_init(sss_headless_get_proc_address, h, W, H);
+  sss = CREATE(h);
   if (sss == NULL) {
-    fprintf(stderr, "engine_sss_init: %s\n", sss_last_error(NULL));
+    fprintf(stderr, "%s: creating: %s\n", EXAMPLE, sss_last_error(NULL));
     return 1;
   }
-  ok = engine_sss_frame(sss, projection, textures[0], textures[1], W, H);
+  ok = FRAME(sss, projection, textures[0], textures[1]);
   if (!ok) fprintf(stderr, "engine_sss_frame: %s\n", sss_last_error(sss));
-  engine_sss_shutdown(sss);
+  DESTROY(sss);
 
   bind_texture(GL_TEXTURE_2D, textures[0]);
   get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, result);
@@ -95,6 +109,6 @@ int main(void) {
     before += diffuse[i * 4];
     after += result[i * 4];
   }
-  printf("sss.h example: dot %.2f -> %.2f, energy %.3f -> %.3f\n", diffuse[DOT * 4], result[DOT * 4], before, after);
+  printf(EXAMPLE ": dot %.2f -> %.2f, energy %.3f -> %.3f\n", diffuse[DOT * 4], result[DOT * 4], before, after);
   return ok && result[DOT * 4] < 45.0f && fabs(after - before) < 0.01 * before ? 0 : 1;
 }
