@@ -39,7 +39,7 @@ bool App::init(sss_get_proc_address_fn get_proc_address, void* user, const std::
   sss_settings s;
   sss_default_settings(&s);
   s.world_units_per_mm = 0.001f;
-  if (sss_set_settings(sss_, &s) != SSS_OK) {
+  if (sss_set_settings(sss_, &s) != SSS_OK || scene_->prepare(sss_) != SSS_OK) {
     message_ = sss_last_error(sss_);
     return false;
   }
@@ -76,6 +76,7 @@ sss_result App::set_knobs(const Knobs& knobs) {
     s.flags = knobs.follow_surface ? (s.flags | SSS_FOLLOW_SURFACE) : (s.flags & ~static_cast<uint32_t>(SSS_FOLLOW_SURFACE));
     r = sss_set_settings(sss_, &s);
   }
+  if (r == SSS_OK) r = scene_->prepare(sss_);  // the next frame compiles and allocates nothing
   if (r != SSS_OK) {
     message_ = sss_last_error(sss_);
     return r;

@@ -309,6 +309,17 @@ sss_result Scene::render(sss_context* sss, float split) {
   return r;
 }
 
+sss_result Scene::prepare(sss_context* sss) const {
+  sss_prepare_desc d{};  // the frame of render(), as sss_prepare_desc says it
+  d.struct_size = sizeof d;
+  d.width = width_;
+  d.height = height_;
+  d.color_format = GL_RGBA16F;
+  d.output_format = GL_RGBA16F;
+  d.depth_format = GL_DEPTH24_STENCIL8;
+  return sss_prepare(sss, &d);
+}
+
 void Scene::read_pixels(uint8_t* out) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, image_fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -46,6 +46,9 @@ class Scene {
   // RGBA8 image. Returns what sss_apply_frame returned (SSS_OK when sss is NULL); on an error the
   // image shows the unscattered frame, never a half-written one.
   sss_result render(sss_context* sss, float split);
+  // sss_prepare for the frames render() describes, with the settings `sss` holds now: the next frame
+  // compiles and allocates nothing (no hitch when a knob changes).
+  sss_result prepare(sss_context* sss) const;
   // The RGBA8 image, bottom row first (glReadPixels order), width * height * 4 bytes.
   void read_pixels(uint8_t* out) const;
   // One pixel of the image: a read that waits for the frame to finish.
