@@ -15,18 +15,8 @@ cd "$(dirname "$0")/.."
 
 size=640x360
 scenes=head-close,head-mid,head-far,empty
-baseline=""
-baseline_name=baseline
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --size) size=$2; shift 2 ;;
-    --scenes) scenes=$2; shift 2 ;;
-    --baseline) baseline=$2; shift 2 ;;
-    --baseline-name) baseline_name=$2; shift 2 ;;
-    *) echo "cost-table.sh: unknown argument '$1'" >&2; exit 2 ;;
-  esac
-done
-probe=build/release/tests/bench/sss_cost_probe
+source scripts/cost-options.sh
+cost_options cost-table.sh "$@"
 count() {  # probe, scene, path
   scripts/cost-probe.sh "$1" -- --scene "$2" --size "$size" --path "$3" | awk '{print $NF}'
 }

@@ -15,21 +15,9 @@ size=1920x1080
 scenes=head-close,head-mid,head-far
 reps=5
 frames=7
-baseline=""
-baseline_name=baseline
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --size) size=$2; shift 2 ;;
-    --scenes) scenes=$2; shift 2 ;;
-    --reps) reps=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    --baseline) baseline=$2; shift 2 ;;
-    --baseline-name) baseline_name=$2; shift 2 ;;
-    *) echo "cost-times.sh: unknown argument '$1'" >&2; exit 2 ;;
-  esac
-done
+source scripts/cost-options.sh
+cost_options cost-times.sh "$@"
 [[ -n $baseline ]] || { echo "cost-times.sh: --baseline PROBE is needed" >&2; exit 2; }
-probe=build/release/tests/bench/sss_cost_probe
 for p in "$probe" "$baseline"; do
   [[ -x $p ]] || { echo "cost-times.sh: $p not built" >&2; exit 2; }
 done

@@ -17,7 +17,7 @@ namespace {
 std::unique_ptr<web::App> g_app;
 web::Knobs g_knobs;
 std::string g_text;   // why web_init failed
-std::string g_probe;  // the library's message from the last web_try_without
+std::string g_probe;  // the library's message from the last probe (web_try_without, web_try_fitted_kernel)
 
 // sss_create_desc.get_proc_address: Emscripten's own table of the WebGL2 entry points.
 void* webgl_get_proc_address(const char* name, void*) { return emscripten_webgl_get_proc_address(name); }
@@ -39,6 +39,28 @@ const GLubyte* hiding_get_stringi(GLenum name, GLuint index) {
 void* hiding_get_proc_address(const char* name, void*) {
   if (std::strcmp(name, "glGetStringi") == 0) return reinterpret_cast<void*>(&hiding_get_stringi);
   return emscripten_webgl_get_proc_address(name);
+}
+
+// A context of its own for a probe (web_try_without, web_try_fitted_kernel), `settings` taken (NULL:
+// the defaults in metres), and `run` on it when both succeed; then the context is destroyed. Returns the first sss_result
+// that is not SSS_OK (or SSS_OK); the library's message, if any, in g_probe.
+template <typename Run>
+sss_result probe(sss_get_proc_address_fn get_proc_address, const sss_settings* settings, Run run) {
+  sss_create_desc desc{};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = get_proc_address;
+  sss_context* sss = nullptr;
+  sss_result r = sss_create(&desc, &sss);
+  g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
+  if (r != SSS_OK) return r;
+  sss_settings defaults;
+  sss_default_settings(&defaults);
+  defaults.world_units_per_mm = 0.001f;
+  r = sss_set_settings(sss, settings != nullptr ? settings : &defaults);
+  if (r == SSS_OK) r = run(sss);
+  if (r != SSS_OK) g_probe = sss_last_error(sss);
+  sss_destroy(sss);
+  return r;
 }
 
 }  // namespace
@@ -136,21 +158,8 @@ EMSCRIPTEN_KEEPALIVE void web_read_pixels(uint8_t* out) {
 // library's message in web_probe_message().
 EMSCRIPTEN_KEEPALIVE int web_try_without(const char* names) {
   g_hidden = std::string(",") + names + ",";
-  sss_create_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.get_proc_address = hiding_get_proc_address;
-  sss_context* sss = nullptr;
-  sss_result r = sss_create(&desc, &sss);
-  g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
-  if (r == SSS_OK) {
-    sss_settings s;
-    sss_default_settings(&s);
-    s.world_units_per_mm = 0.001f;
-    r = sss_set_settings(sss, &s);
-    if (r == SSS_OK) r = g_app->render_with(sss, 0.0f);
-    if (r != SSS_OK) g_probe = sss_last_error(sss);
-    sss_destroy(sss);
-  }
+  const sss_result r =
+      probe(hiding_get_proc_address, nullptr, [](sss_context* sss) { return g_app->render_with(sss, 0.0f); });
   g_hidden.clear();
   return r;
 }
@@ -160,24 +169,13 @@ EMSCRIPTEN_KEEPALIVE int web_try_without(const char* names) {
 // tools registered, so the refusal is the optimiser's, not a missing sss_tools_init). Tried on a
 // context of its own; returns the sss_result, the message in web_probe_message().
 EMSCRIPTEN_KEEPALIVE int web_try_fitted_kernel() {
-  sss_create_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.get_proc_address = webgl_get_proc_address;
-  sss_context* sss = nullptr;
-  sss_result r = sss_create(&desc, &sss);
-  g_probe = r == SSS_OK ? "" : sss_last_error(nullptr);
-  if (r == SSS_OK) {
-    sss_kernel_desc kernel;
-    sss_default_kernel_desc(&kernel);  // registers the tools' kernels
-    kernel.family = SSS_KERNEL_GUIDED;
-    sss_settings s;
-    sss_default_settings(&s);
-    s.kernel = &kernel;
-    r = sss_set_settings(sss, &s);
-    g_probe = r == SSS_OK ? "" : sss_last_error(sss);
-    sss_destroy(sss);
-  }
-  return r;
+  sss_kernel_desc kernel;
+  sss_default_kernel_desc(&kernel);  // registers the tools' kernels
+  kernel.family = SSS_KERNEL_GUIDED;
+  sss_settings s;
+  sss_default_settings(&s);
+  s.kernel = &kernel;
+  return probe(webgl_get_proc_address, &s, [](sss_context*) { return SSS_OK; });
 }
 
 EMSCRIPTEN_KEEPALIVE const char* web_probe_message() { return g_probe.c_str(); }

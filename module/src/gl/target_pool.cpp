@@ -156,11 +156,7 @@ sss_result TargetPool::ensure_stencil_buffer(GLint format, int width, int height
 
 sss_result TargetPool::ensure_masked_source(GLint format, int width, int height, std::string* message) {
   const Functions& f = *gl_;
-  if (t_.masked_framebuffer == 0) {
-    f.GenFramebuffers(1, &t_.masked_framebuffer);
-    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.masked_framebuffer);
-    label_object(f, labels_, FRAMEBUFFER, t_.masked_framebuffer, "sss masked colour copy target");
-  }
+  ensure_framebuffer(&t_.masked_framebuffer, "sss masked colour copy target");
   if (t_.masked_source != 0 && masked_format_ == format && masked_width_ == width && masked_height_ == height) {
     return SSS_OK;
   }
@@ -181,8 +177,7 @@ sss_result TargetPool::ensure_masked_source(GLint format, int width, int height,
   masked_format_ = format;
   masked_width_ = width;
   masked_height_ = height;
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.masked_framebuffer);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.masked_source, 0);
+  attach_colour(t_.masked_framebuffer, t_.masked_source);
   return SSS_OK;
 }
 
@@ -276,12 +271,7 @@ sss_result TargetPool::ensure_sample_copy(const TextureInfo& color, std::string*
 }
 
 sss_result TargetPool::ensure_strength_source(GLint format, int width, int height, std::string* message) {
-  const Functions& f = *gl_;
-  if (t_.strength_framebuffer == 0) {
-    f.GenFramebuffers(1, &t_.strength_framebuffer);
-    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.strength_framebuffer);
-    label_object(f, labels_, FRAMEBUFFER, t_.strength_framebuffer, "sss colour with the strength texture target");
-  }
+  ensure_framebuffer(&t_.strength_framebuffer, "sss colour with the strength texture target");
   if (t_.strength_source != 0 && strength_format_ == format && strength_width_ == width &&
       strength_height_ == height) {
     return SSS_OK;
@@ -296,9 +286,22 @@ sss_result TargetPool::ensure_strength_source(GLint format, int width, int heigh
   strength_format_ = format;
   strength_width_ = width;
   strength_height_ = height;
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.strength_framebuffer);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.strength_source, 0);
+  attach_colour(t_.strength_framebuffer, t_.strength_source);
   return SSS_OK;
+}
+
+void TargetPool::ensure_framebuffer(GLuint* framebuffer, const char* label) {
+  if (*framebuffer != 0) return;
+  const Functions& f = *gl_;
+  f.GenFramebuffers(1, framebuffer);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, *framebuffer);  // a name is an object only once bound (for the label)
+  label_object(f, labels_, FRAMEBUFFER, *framebuffer, label);
+}
+
+void TargetPool::attach_colour(GLuint framebuffer, GLuint texture) {
+  const Functions& f = *gl_;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, texture, 0);
 }
 
 }  // namespace sss::gl

@@ -57,6 +57,10 @@ class TargetPool {
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
 
  private:
+  // Creates *framebuffer (labelled `label`) when it is 0; nothing attached yet.
+  void ensure_framebuffer(GLuint* framebuffer, const char* label);
+  // `texture` as colour attachment 0 of `framebuffer` (left bound as the draw framebuffer).
+  void attach_colour(GLuint framebuffer, GLuint texture);
   // A colour texture the module owns, (re)allocated at this size and format.
   sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
                              const char* what, std::string* message);
