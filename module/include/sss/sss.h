@@ -94,9 +94,9 @@ typedef enum sss_profile {
   SSS_PROFILE_WHOLEMILK = 11,      /**< 1..11: Jensen et al. 2001's measured dipoles */
   SSS_PROFILE_TABULATED = 12,      /**< the caller's table (sss_tools.h sss_profile_desc only) */
   SSS_PROFILE_MIKKELSEN_2010 = 13, /**< spike + one Gaussian per channel (cross-bilateral default) */
-  SSS_PROFILE_KERNEL = 14          /**< cbf_profile only: the profile of settings.kernel */
+  SSS_PROFILE_KERNEL = 14, SSS_PROFILE_BURLEY = 15 /**< 14: cbf_profile only (settings.kernel's); 15: Burley, as 12 */
 } sss_profile;
-#define SSS_PROFILE_COUNT 15
+#define SSS_PROFILE_COUNT 16
 
 typedef enum sss_mode { SSS_MODE_SEPARABLE = 0, SSS_MODE_CROSS_BILATERAL = 1 } sss_mode; /**< paper; Mikkelsen 2010 */
 /** How the separable passes run; all give the same image within fp16 rounding. */

@@ -49,15 +49,30 @@ typedef enum sss_kernel_family {
 
 #define SSS_PROFILE_MAX_TABLE 4096
 
+/** Burley's normalized diffusion (SSS_PROFILE_BURLEY; Christensen and Burley 2015), per channel
+ *  R(r) = A·(e^{-r/d} + e^{-r/(3d)})/(8π·d·r) with d = ℓ_d/s(A), s(A) = 3.5 + 100·(A − 0.33)⁴ (the
+ *  memo's fit for the diffuse mean free path ℓ_d). ∫∫R = A; R is infinite at r = 0 (its 1/r), which
+ *  sss_profile_evaluate returns as +inf. The kernels redistribute irradiance (each channel sums to 1),
+ *  so there A only shapes the profile through s(A); the diffuse colour stays the host's.
+ *  Published materials: sss_profile_burley_from_measured, docs/burley.md. */
+#define SSS_BURLEY_MIN_DMFP_MM 1e-3f
+#define SSS_BURLEY_MAX_DMFP_MM 1e3f
+
 typedef struct sss_profile_desc {
-  uint32_t struct_size;         /**< sizeof(sss_profile_desc) */
+  uint32_t struct_size;         /**< sizeof(sss_profile_desc) (0.1-0.3's, without the burley fields, too) */
   int32_t profile;              /**< sss_profile (sss.h): SSS_PROFILE_SKIN_DEON (default), a measured material
-                                     SSS_PROFILE_APPLE..SSS_PROFILE_WHOLEMILK, or SSS_PROFILE_TABULATED */
+                                     SSS_PROFILE_APPLE..SSS_PROFILE_WHOLEMILK, SSS_PROFILE_TABULATED or
+                                     SSS_PROFILE_BURLEY */
   int32_t gaussian_count;       /**< SSS_PROFILE_SKIN_DEON: the first 1..6 Gaussians, renormalised; default 6 */
   int32_t table_size;           /**< SSS_PROFILE_TABULATED: entries, 1..SSS_PROFILE_MAX_TABLE */
   const float *table_radius_mm; /**< table_size radii, finite, >= 0, strictly increasing */
   const float *table_rgb;       /**< 3 × table_size values R_c(r) in mm⁻², finite, >= 0; linear between
                                      radii, constant inside the first, 0 beyond the last */
+  float burley_albedo[3];       /**< SSS_PROFILE_BURLEY: surface albedo A (total diffuse reflectance) per
+                                     channel, (0, 1]; default: as burley_dmfp_mm */
+  float burley_dmfp_mm[3];      /**< SSS_PROFILE_BURLEY: diffuse mean free path ℓ_d = 1/σtr per channel, mm,
+                                     [SSS_BURLEY_MIN_DMFP_MM, SSS_BURLEY_MAX_DMFP_MM]; default Jensen et al.
+                                     2001's skin1 (sss_profile_burley_from_measured; docs/burley.md) */
 } sss_profile_desc;
 
 /** SSS_KERNEL_SVD: keep the plain rank-N truncation (no rescaling to the profile's energy). */
@@ -65,7 +80,7 @@ typedef struct sss_profile_desc {
 #define SSS_KERNEL_ALL_FLAGS 0x1u
 
 typedef struct sss_kernel_desc {
-  uint32_t struct_size;        /**< sizeof(sss_kernel_desc) */
+  uint32_t struct_size;        /**< sizeof(sss_kernel_desc) (0.1-0.3's, profile without burley fields, too) */
   int32_t family;              /**< sss_kernel_family; default SSS_KERNEL_SEPARABLE */
   int32_t taps;                /**< taps per pass, odd, [SSS_MIN_TAPS, SSS_MAX_TAPS]; default 17 */
   int32_t rank;                /**< SUM_OF_GAUSSIANS: Gaussians, SVD: rank, PREINTEGRATED: terms (1: the
@@ -90,14 +105,22 @@ SSS_API void sss_default_profile_desc(sss_profile_desc *p);
 SSS_API void sss_default_kernel_desc(sss_kernel_desc *d);
 
 /** The profile's short name ("apple"; "skin" for SSS_PROFILE_SKIN_DEON, "tabulated", "mikkelsen-2010",
- *  "kernel"), or NULL when profile is outside [0, SSS_PROFILE_COUNT). */
+ *  "kernel", "burley"), or NULL when profile is outside [0, SSS_PROFILE_COUNT). */
 SSS_API const char *sss_profile_name(int32_t profile);
+
+/** Burley's parameters for a measured material: *out becomes the default desc with profile
+ *  SSS_PROFILE_BURLEY, burley_albedo the material dipole's total diffuse reflectance R_d and
+ *  burley_dmfp_mm 1/σtr, from Jensen et al. 2001's σa, σs' and η (the table: docs/burley.md).
+ *  @retval SSS_OK
+ *  @retval SSS_ERROR_INVALID_ARGUMENT out NULL, or material outside [SSS_PROFILE_APPLE, SSS_PROFILE_WHOLEMILK] */
+SSS_API sss_result sss_profile_burley_from_measured(int32_t material, sss_profile_desc *out);
 
 /** R_c(r) of the profile at `count` radii into out_rgb (3 floats per radius, mm⁻²).
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT profile, radius_mm or out_rgb NULL; count outside [1, 1e8]; a radius
  *                                     negative or not finite; or the profile invalid (struct_size, profile,
- *                                     gaussian_count, table_size, a table pointer NULL, a table value out of range) */
+ *                                     gaussian_count, table_size, a table pointer NULL, a table value out of range,
+ *                                     a burley field out of range) */
 SSS_API sss_result sss_profile_evaluate(const sss_profile_desc *profile, int32_t count, const float *radius_mm,
                                         float *out_rgb);
 
@@ -139,8 +162,8 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc *desc, int32_t max_term
  *  - SSS_PROFILE_MIKKELSEN_2010: its three broad Gaussians (the spike has no width and transmits nothing);
  *  - SSS_PROFILE_SKIN_DEON: d'Eon–Luebke's six Gaussians (the 0.0064 mm² one is the blur's spike);
  *  - SSS_PROFILE_APPLE .. SSS_PROFILE_WHOLEMILK: SSS_PROFILE_FIT_GAUSSIANS Gaussians fitted to the
- *    material's dipole (an NLopt fit: milliseconds to ~0.1 s; no spike). SSS_PROFILE_TABULATED and
- *    SSS_PROFILE_KERNEL are not accepted (they need an sss_profile_desc).
+ *    material's dipole (an NLopt fit: milliseconds to ~0.1 s; no spike). SSS_PROFILE_TABULATED,
+ *    SSS_PROFILE_KERNEL and SSS_PROFILE_BURLEY are not accepted (they need an sss_profile_desc).
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT profile neither SSS_PROFILE_MIKKELSEN_2010 nor in [SSS_PROFILE_SKIN_DEON,
  *                                     SSS_PROFILE_WHOLEMILK], out_terms or count NULL, or capacity smaller

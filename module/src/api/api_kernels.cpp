@@ -6,6 +6,7 @@
 #include <exception>
 #include <new>
 
+#include "../math/burley_profile.hpp"
 #include "../math/fitters.hpp"
 #include "../math/kernel_request.hpp"
 #include "../math/materials.hpp"
@@ -42,16 +43,36 @@ SSS_API const char* sss_profile_name(int32_t profile) {
     case SSS_PROFILE_TABULATED: return "tabulated";
     case SSS_PROFILE_MIKKELSEN_2010: return "mikkelsen-2010";
     case SSS_PROFILE_KERNEL: return "kernel";
+    case SSS_PROFILE_BURLEY: return "burley";
     default: break;
   }
   if (profile < SSS_PROFILE_APPLE || profile > SSS_PROFILE_WHOLEMILK) return nullptr;
   return sss::math::measured_materials()[static_cast<std::size_t>(profile - SSS_PROFILE_APPLE)].name;
 }
 
-SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t count, const float* radius_mm,
+SSS_API sss_result sss_profile_burley_from_measured(int32_t material, sss_profile_desc* out) {
+  sss_tools_init();
+  if (out == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out is NULL");
+  if (material < SSS_PROFILE_APPLE || material > SSS_PROFILE_WHOLEMILK) {
+    return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT,
+                "material = %d: must be a measured material in [SSS_PROFILE_APPLE (%d), SSS_PROFILE_WHOLEMILK (%d)]",
+                material, SSS_PROFILE_APPLE, SSS_PROFILE_WHOLEMILK);
+  }
+  sss::api::default_profile_desc(out);
+  out->profile = SSS_PROFILE_BURLEY;
+  sss::api::set_burley(
+      sss::math::burley_from_material(sss::math::measured_materials()[static_cast<std::size_t>(material - SSS_PROFILE_APPLE)]),
+      out);
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* given, int32_t count, const float* radius_mm,
                                         float* out_rgb) {
   sss_tools_init();
-  sss_result r = check_profile(nullptr, profile, "profile");
+  sss_profile_desc current;
+  sss_result r = sss::api::profile_desc_from_caller(nullptr, given, "profile", &current);
+  const sss_profile_desc* profile = &current;
+  if (r == SSS_OK) r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (count < 1 || count > 100000000) {
     return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "count = %d: must be in [1, 1e8]", count);
@@ -80,9 +101,12 @@ SSS_API sss_result sss_profile_evaluate(const sss_profile_desc* profile, int32_t
   return SSS_OK;
 }
 
-SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float out_rgb[3]) {
+SSS_API sss_result sss_profile_integral(const sss_profile_desc* given, float out_rgb[3]) {
   sss_tools_init();
-  sss_result r = check_profile(nullptr, profile, "profile");
+  sss_profile_desc current;
+  sss_result r = sss::api::profile_desc_from_caller(nullptr, given, "profile", &current);
+  const sss_profile_desc* profile = &current;
+  if (r == SSS_OK) r = check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   if (out_rgb == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_rgb is NULL");
   try {
@@ -98,10 +122,13 @@ SSS_API sss_result sss_profile_integral(const sss_profile_desc* profile, float o
   return SSS_OK;
 }
 
-SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* desc, int32_t max_terms, float* out_taps,
+SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* given, int32_t max_terms, float* out_taps,
                                    float* out_depth_variance_mm2, int32_t* out_terms, float* out_reach_mm) {
   sss_tools_init();
-  sss_result r = check_kernel_desc(nullptr, desc, "desc->", false);
+  sss_kernel_desc current;
+  sss_result r = sss::api::kernel_desc_from_caller(nullptr, given, "desc", &current);
+  const sss_kernel_desc* desc = &current;
+  if (r == SSS_OK) r = check_kernel_desc(nullptr, desc, "desc->", false);
   if (r != SSS_OK) return r;
   if (out_taps == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_taps is NULL");
   if (out_terms == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "out_terms is NULL");

@@ -103,10 +103,13 @@ SSS_API sss_result sss_profile_transmittance_terms(uint32_t profile, float* out_
                                    capacity, count);
 }
 
-SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc* profile, float* out_terms,
+SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc* given, float* out_terms,
                                                         int32_t capacity, int32_t* count) {
   sss_tools_init();
-  const sss_result r = sss::api::check_profile(nullptr, profile, "profile");
+  sss_profile_desc current;
+  sss_result r = sss::api::profile_desc_from_caller(nullptr, given, "profile", &current);
+  const sss_profile_desc* profile = &current;
+  if (r == SSS_OK) r = sss::api::check_profile(nullptr, profile, "profile");
   if (r != SSS_OK) return r;
   const sss::math::ProfileRequest request = sss::api::to_request(*profile);
   return write_transmittance_terms(

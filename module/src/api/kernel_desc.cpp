@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <initializer_list>
 
+#include "legacy_structs.hpp"
 #include "validation.hpp"
 
 #include <cstring>
@@ -31,11 +32,19 @@ sss_result check_unit_range(sss_context* ctx, const char* name, const float valu
   return SSS_OK;
 }
 
+void set_burley(const sss::math::BurleyParameters& b, sss_profile_desc* p) {
+  for (std::size_t c = 0; c < 3; ++c) {
+    p->burley_albedo[c] = static_cast<float>(b.albedo[c]);
+    p->burley_dmfp_mm[c] = static_cast<float>(b.dmfp_mm[c]);
+  }
+}
+
 void default_profile_desc(sss_profile_desc* p) {
   std::memset(p, 0, sizeof *p);
   p->struct_size = sizeof *p;
   p->profile = SSS_PROFILE_SKIN_DEON;
   p->gaussian_count = 6;
+  set_burley(sss::math::burley_default_parameters(), p);
 }
 
 void default_kernel_desc(sss_kernel_desc* d) {
@@ -69,6 +78,25 @@ sss_result check_positive3(sss_context* ctx, const char* prefix, const char* nam
   return SSS_OK;
 }
 
+sss_result check_burley(sss_context* ctx, const sss_profile_desc* p, const char* name) {
+  for (int c = 0; c < 3; ++c) {
+    const float a = p->burley_albedo[c];
+    if (!(finite_in(a, 0.0f, 1.0f) && a > 0.0f)) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->burley_albedo[%d] = %g: must be in (0, 1]", name, c,
+                  static_cast<double>(a));
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    const float l = p->burley_dmfp_mm[c];
+    if (!finite_in(l, SSS_BURLEY_MIN_DMFP_MM, SSS_BURLEY_MAX_DMFP_MM)) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->burley_dmfp_mm[%d] = %g: must be in [%g, %g] mm", name, c,
+                  static_cast<double>(l), static_cast<double>(SSS_BURLEY_MIN_DMFP_MM),
+                  static_cast<double>(SSS_BURLEY_MAX_DMFP_MM));
+    }
+  }
+  return SSS_OK;
+}
+
 }  // namespace
 
 sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char* name) {
@@ -77,15 +105,17 @@ sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->struct_size = %u: expected sizeof(sss_profile_desc) = %u",
                 name, p->struct_size, static_cast<unsigned>(sizeof(sss_profile_desc)));
   }
-  if (p->profile < SSS_PROFILE_SKIN_DEON || p->profile > SSS_PROFILE_TABULATED) {
+  if ((p->profile < SSS_PROFILE_SKIN_DEON || p->profile > SSS_PROFILE_TABULATED) && p->profile != SSS_PROFILE_BURLEY) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                "%s->profile = %d: must be an sss_profile in [SSS_PROFILE_SKIN_DEON (0), SSS_PROFILE_TABULATED (%d)]",
-                name, p->profile, SSS_PROFILE_TABULATED);
+                "%s->profile = %d: must be an sss_profile in [SSS_PROFILE_SKIN_DEON (0), SSS_PROFILE_TABULATED (%d)] "
+                "or SSS_PROFILE_BURLEY (%d)",
+                name, p->profile, SSS_PROFILE_TABULATED, SSS_PROFILE_BURLEY);
   }
   if (p->profile == SSS_PROFILE_SKIN_DEON && (p->gaussian_count < 1 || p->gaussian_count > 6)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->gaussian_count = %d: must be in [1, 6]", name,
                 p->gaussian_count);
   }
+  if (p->profile == SSS_PROFILE_BURLEY) return check_burley(ctx, p, name);
   if (p->profile != SSS_PROFILE_TABULATED) return SSS_OK;
   if (p->table_size < 1 || p->table_size > SSS_PROFILE_MAX_TABLE) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s->table_size = %d: must be in [1, %d]", name, p->table_size,
@@ -111,6 +141,70 @@ sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char
   return SSS_OK;
 }
 
+// ---- Earlier releases' layouts (legacy_structs.hpp): read as the prefix they are, the burley
+// fields taking their defaults.
+
+void kernel_desc_from_legacy(const legacy::KernelDesc03& old, sss_kernel_desc* out) {
+  default_kernel_desc(out);
+  std::memcpy(static_cast<void*>(out), &old, offsetof(legacy::KernelDesc03, profile));
+  std::memcpy(static_cast<void*>(&out->profile), &old.profile, sizeof old.profile);
+  out->struct_size = sizeof *out;
+  // An embedded 0.1-0.3 profile desc becomes today's; any other size stays for check_profile to name.
+  if (old.profile.struct_size == sizeof(legacy::ProfileDesc03)) out->profile.struct_size = sizeof(sss_profile_desc);
+}
+
+void kernel_desc_to_legacy(const sss_kernel_desc& current, legacy::KernelDesc03* old) {
+  std::memcpy(old, &current, offsetof(legacy::KernelDesc03, profile));
+  std::memcpy(&old->profile, &current.profile, sizeof old->profile);
+  old->struct_size = sizeof *old;
+  old->profile.struct_size = sizeof old->profile;
+}
+
+sss_result profile_desc_from_caller(sss_context* ctx, const sss_profile_desc* in, const char* name,
+                                    sss_profile_desc* out) {
+  if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
+  if (in->struct_size == sizeof(legacy::ProfileDesc03)) {
+    default_profile_desc(out);
+    std::memcpy(static_cast<void*>(out), in, sizeof(legacy::ProfileDesc03));
+    out->struct_size = sizeof *out;
+    return SSS_OK;
+  }
+  if (in->struct_size != sizeof(sss_profile_desc)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "%s->struct_size = %u: expected sizeof(sss_profile_desc) = %u (or 0.1-0.3's %u)", name,
+                in->struct_size, static_cast<unsigned>(sizeof(sss_profile_desc)),
+                static_cast<unsigned>(sizeof(legacy::ProfileDesc03)));
+  }
+  *out = *in;
+  return SSS_OK;
+}
+
+sss_result kernel_desc_from_caller(sss_context* ctx, const sss_kernel_desc* in, const char* name,
+                                   sss_kernel_desc* out) {
+  if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
+  if (in->struct_size == sizeof(legacy::KernelDesc03)) {
+    legacy::KernelDesc03 old;
+    std::memcpy(&old, in, sizeof old);
+    if (old.profile.struct_size != sizeof(legacy::ProfileDesc03)) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "%s->profile.struct_size = %u: a 0.1-0.3 sss_kernel_desc (%u bytes) holds 0.1-0.3's "
+                  "sss_profile_desc (%u)",
+                  name, old.profile.struct_size, static_cast<unsigned>(sizeof old),
+                  static_cast<unsigned>(sizeof old.profile));
+    }
+    kernel_desc_from_legacy(old, out);
+    return SSS_OK;
+  }
+  if (in->struct_size != sizeof(sss_kernel_desc)) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "%s->struct_size = %u: expected sizeof(sss_kernel_desc) = %u (or 0.1-0.3's %u)", name,
+                in->struct_size, static_cast<unsigned>(sizeof(sss_kernel_desc)),
+                static_cast<unsigned>(sizeof(legacy::KernelDesc03)));
+  }
+  *out = *in;
+  return SSS_OK;
+}
+
 sss::math::ProfileRequest to_request(const sss_profile_desc& p) {
   sss::math::ProfileRequest r;
   if (p.profile == SSS_PROFILE_SKIN_DEON) {
@@ -121,6 +215,12 @@ sss::math::ProfileRequest to_request(const sss_profile_desc& p) {
     for (int32_t i = 0; i < p.table_size; ++i) {
       r.table_radii_mm.push_back(p.table_radius_mm[i]);
       r.table_values.push_back({p.table_rgb[i * 3], p.table_rgb[i * 3 + 1], p.table_rgb[i * 3 + 2]});
+    }
+  } else if (p.profile == SSS_PROFILE_BURLEY) {
+    r.material = sss::math::kProfileBurley;
+    for (std::size_t c = 0; c < 3; ++c) {
+      r.burley.albedo[c] = p.burley_albedo[c];
+      r.burley.dmfp_mm[c] = p.burley_dmfp_mm[c];
     }
   } else {
     r.material = p.profile - SSS_PROFILE_APPLE;  // the math table starts at apple

@@ -1,14 +1,34 @@
 // The layouts of sss_settings in the releases before 0.3 (from their sss.h, field for field), for
 // the conversions of versioned_structs.cpp (tests/gl/versioned_structs_test.cpp writes its own copies,
 // from the old headers, and passes them).
-// sss_kernel_desc and sss_profile_desc kept their layout (profile_desc's `material` is `profile`).
+// sss_kernel_desc and sss_profile_desc kept 0.1's layout up to 0.3 (profile_desc's `material` is
+// `profile`); 0.4 appended the burley fields to sss_profile_desc, and so to sss_kernel_desc.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "sss/sss_tools.h"
 
 namespace sss::legacy {
+
+// sss_profile_desc and sss_kernel_desc of 0.1 to 0.3: today's without the burley fields.
+struct ProfileDesc03 {
+  std::uint32_t struct_size;
+  std::int32_t profile, gaussian_count, table_size;
+  const float* table_radius_mm;
+  const float* table_rgb;
+};
+struct KernelDesc03 {
+  std::uint32_t struct_size;
+  std::int32_t family, taps, rank;
+  std::uint32_t flags;
+  float guide_k, radius_mm;
+  float strength[3], falloff[3], near_variance_mm2[3], far_variance_mm2[3], near_weight[3];
+  ProfileDesc03 profile;
+};
+static_assert(offsetof(sss_profile_desc, burley_albedo) == sizeof(ProfileDesc03), "0.4 appended the burley fields");
+static_assert(offsetof(sss_kernel_desc, profile) == offsetof(KernelDesc03, profile), "the fields before the profile kept");
 
 // sss 0.1 (git 4cb68e3): the paper's width, Table 1 defaults, the kernel desc embedded.
 struct Settings01 {
@@ -22,7 +42,7 @@ struct Settings01 {
   std::int32_t cbf_taps;
   float cbf_r_max_mm;
   std::uint32_t cbf_profile;  // sss_material 0..11, 0x100 Mikkelsen, 0x101 the kernel's profile
-  sss_kernel_desc kernel;
+  KernelDesc03 kernel;
   float jitter;
   std::uint32_t path;
 };
@@ -41,7 +61,7 @@ struct Settings02 {
   std::int32_t cbf_taps;
   float cbf_r_max_mm;
   std::uint32_t cbf_profile;
-  sss_kernel_desc kernel;
+  KernelDesc03 kernel;
   float jitter;
   std::uint32_t path;
 };
@@ -63,3 +83,9 @@ struct Frame02 {
 inline constexpr auto kFrameSize02 = static_cast<std::uint32_t>(sizeof(Frame02));
 
 }  // namespace sss::legacy
+
+namespace sss::api {
+// 0.1-0.3's kernel desc as today's (the burley fields their defaults) and back (kernel_desc.cpp).
+void kernel_desc_from_legacy(const legacy::KernelDesc03& old, sss_kernel_desc* out);
+void kernel_desc_to_legacy(const sss_kernel_desc& current, legacy::KernelDesc03* old);
+}  // namespace sss::api

@@ -34,6 +34,16 @@ void default_kernel_desc(sss_kernel_desc* d);
 sss_result check_profile(sss_context* ctx, const sss_profile_desc* p, const char* name);
 sss_result check_kernel_desc(sss_context* ctx, const sss_kernel_desc* d, const char* name, bool in_settings);
 sss::math::ProfileRequest to_request(const sss_profile_desc& p);
+// The burley fields of *p from the math's parameters.
+void set_burley(const sss::math::BurleyParameters& b, sss_profile_desc* p);
+
+// A desc of this release or of 0.1-0.3 (legacy_structs.hpp: without the burley fields, which then
+// take their defaults) as today's, into *out. Refuses NULL and any other struct_size, named as
+// `name` ("profile", "desc", "settings->kernel"). Every entry point that takes a desc reads it so.
+sss_result profile_desc_from_caller(sss_context* ctx, const sss_profile_desc* in, const char* name,
+                                    sss_profile_desc* out);
+sss_result kernel_desc_from_caller(sss_context* ctx, const sss_kernel_desc* in, const char* name,
+                                   sss_kernel_desc* out);
 sss::math::KernelRequest to_kernel_request(const sss_kernel_desc& d);
 
 // Which fields of an sss_lut_desc a call uses: the diffuse or the shadow ones, and the format.

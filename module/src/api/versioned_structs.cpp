@@ -22,7 +22,7 @@ static_assert(offsetof(sss_frame, depth_stencil_mode) == legacy::kFrameSize02,
 // strength and falloff": today that is settings.kernel = NULL.
 template <typename Legacy>
 void take_legacy_kernel(const Legacy& in, CurrentSettings* out) {
-  out->kernel = in.kernel;
+  kernel_desc_from_legacy(in.kernel, &out->kernel);
   out->settings.kernel = in.kernel.family == SSS_KERNEL_SEPARABLE ? nullptr : &out->kernel;
 }
 
@@ -57,11 +57,9 @@ void give_common(const sss_settings& s, Legacy* out) {
   out->cbf_taps = s.cbf_taps;
   out->cbf_r_max_mm = s.cbf_r_max_mm;
   out->cbf_profile = profile_to_legacy(s.cbf_profile);
-  if (s.kernel != nullptr) {
-    out->kernel = *s.kernel;
-  } else {
-    default_kernel_desc(&out->kernel);
-  }
+  sss_kernel_desc eq1;
+  default_kernel_desc(&eq1);
+  kernel_desc_to_legacy(s.kernel != nullptr ? *s.kernel : eq1, &out->kernel);
   out->jitter = s.jitter;
   out->path = s.path;
 }
@@ -104,7 +102,10 @@ sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, Curren
   if (r != SSS_OK) return r;
   if (in->struct_size == kSettings03) {
     out->settings = *in;
-    return SSS_OK;
+    // Its kernel desc may be 0.1-0.3's (a host built against 0.3): read as today's.
+    if (in->kernel == nullptr) return SSS_OK;
+    out->settings.kernel = &out->kernel;
+    return kernel_desc_from_caller(ctx, in->kernel, "settings->kernel", &out->kernel);
   }
   sss_default_settings(&out->settings);
   if (in->struct_size == kSettings02) {

@@ -6,11 +6,12 @@ namespace sss::math {
 
 bool same_profile_request(const ProfileRequest& a, const ProfileRequest& b) {
   return a.material == b.material && a.gaussian_count == b.gaussian_count && a.table_radii_mm == b.table_radii_mm &&
-         a.table_values == b.table_values;
+         a.table_values == b.table_values && a.burley.albedo == b.burley.albedo && a.burley.dmfp_mm == b.burley.dmfp_mm;
 }
 
 std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& r) {
   if (r.material == kProfileTable) return std::make_unique<TabulatedProfile>(r.table_radii_mm, r.table_values);
+  if (r.material == kProfileBurley) return std::make_unique<BurleyProfile>(r.burley);
   if (r.material >= 0 && r.material < kMaterialCount) {
     return std::make_unique<DipoleProfile>(measured_materials()[static_cast<std::size_t>(r.material)]);
   }

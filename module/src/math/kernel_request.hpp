@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "burley_profile.hpp"
 #include "default_kernel_fit.hpp"
 #include "kernel_families.hpp"
 #include "separable_kernel.hpp"
@@ -22,14 +23,16 @@ enum class KernelFamily { separable, sum_of_gaussians, svd, preintegrated, guide
 
 struct ProfileRequest {
   // -1: d'Eon–Luebke skin (the first gaussian_count of its six Gaussians); 0..10: the dipole of
-  // measured_materials()[material]; -2: the table below.
+  // measured_materials()[material]; -2: the table below; -3: Burley's normalized diffusion.
   int material = -1;
   int gaussian_count = 6;
   std::vector<double> table_radii_mm;
   std::vector<Rgb> table_values;
+  BurleyParameters burley = burley_default_parameters();
 };
 inline constexpr int kProfileSkin = -1;
 inline constexpr int kProfileTable = -2;
+inline constexpr int kProfileBurley = -3;
 
 std::unique_ptr<RadialProfile> make_profile(const ProfileRequest& request);
 // Whether two requests describe the same profile (every field make_profile reads).

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "radial_integrals.hpp"
+
 namespace sss::math {
 
 namespace {
@@ -52,7 +54,12 @@ ProfileMatrix discretise_profile(const RadialProfile& profile, const TapGrid& gr
   for (int i = 0; i < n; ++i) {
     for (int j = i; j < n; ++j) {
       Rgb sum{};
-      for (std::size_t a = 0; a < q; ++a) {
+      if (profile.singular_at_centre()) {
+        // Gauss–Legendre cannot follow R to infinity at the centre: the cells' exact integrals.
+        const auto e = [&grid](int k) { return grid.edges_mm[static_cast<std::size_t>(k)]; };
+        sum = rectangle_integral(profile, e(i), e(i + 1), e(j), e(j + 1));
+      }
+      for (std::size_t a = 0; a < q && !profile.singular_at_centre(); ++a) {
         for (std::size_t b = 0; b < q; ++b) {
           const std::size_t ia = static_cast<std::size_t>(i) * q + a, jb = static_cast<std::size_t>(j) * q + b;
           const Rgb v = profile.evaluate(std::hypot(x[ia], x[jb]));

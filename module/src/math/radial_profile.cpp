@@ -44,6 +44,13 @@ double RadialProfile::support_mm(double tail_fraction) const {
   return hi;
 }
 
+Rgb RadialProfile::encircled(double r_mm) const { return encircled_numeric(*this, r_mm); }
+
+Rgb RadialProfile::outside(double r_mm) const {
+  const Rgb total = integral(), inside = encircled(r_mm);
+  return {total[0] - inside[0], total[1] - inside[1], total[2] - inside[2]};
+}
+
 std::string RadialProfile::identity() const {
   std::string text = "profile";
   for (double r = 0.0; r < 1e3; r = r == 0.0 ? 1e-3 : r * 2.0) {
@@ -104,6 +111,15 @@ double GaussianSumProfile::support_mm(double tail_fraction) const {
     if (t.weight[0] > 0.0 || t.weight[1] > 0.0 || t.weight[2] > 0.0) v = std::max(v, t.variance_mm2);
   }
   return std::sqrt(-2.0 * v * std::log(tail_fraction));
+}
+
+Rgb GaussianSumProfile::outside(double r_mm) const {
+  Rgb out{};
+  for (const auto& t : terms_) {
+    const double g = std::exp(-r_mm * r_mm / (2.0 * t.variance_mm2));
+    for (std::size_t c = 0; c < 3; ++c) out[c] += t.weight[c] * g;
+  }
+  return out;
 }
 
 std::string GaussianSumProfile::identity() const {
@@ -260,7 +276,8 @@ Rgb encircled_numeric(const RadialProfile& p, double r_mm) {
   const double smax = std::sqrt(std::max(r_mm, 0.0));
   const double h = smax / n;
   Rgb sum{};
-  for (int i = 0; i <= n; ++i) {
+  // i = 0 is r = 0, whose term 2πr·R(r)·2s is 0 (s = 0) but would read R(0), infinite for Burley.
+  for (int i = 1; i <= n; ++i) {
     const double s = h * i;
     const double r = s * s;
     const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);

@@ -38,6 +38,14 @@ class RadialProfile {
   // The terms when the profile is a sum of 2D-normalised Gaussians (the GPU LUT generator and the
   // normal blur evaluate those in closed form), else nullptr.
   virtual const std::vector<GaussianTerm>* gaussian_terms() const { return nullptr; }
+
+  // What integrals over cells (radial_integrals.hpp) need from profiles whose R is infinite at the
+  // centre (Burley's 1/r), where sampling R fails: the energy inside and outside a radius, per
+  // channel. Defaults: encircled_numeric(), and integral() minus it; subclasses answer in closed
+  // form, outside() without the cancellation of the difference in the far tail.
+  virtual bool singular_at_centre() const { return false; }
+  virtual Rgb encircled(double r_mm) const;
+  virtual Rgb outside(double r_mm) const;
 };
 
 // A sum of 2D-normalised Gaussians (d'Eon–Luebke form). The first `count` terms of `terms`,
@@ -52,6 +60,7 @@ class GaussianSumProfile final : public RadialProfile {
   double support_mm(double tail_fraction) const override;  // closed form
   std::string identity() const override;
   const std::vector<GaussianTerm>* gaussian_terms() const override { return &terms_; }
+  Rgb outside(double r_mm) const override;  // closed form: Σ w · exp(-r²/2v)
   const std::vector<GaussianTerm>& terms() const { return terms_; }
 
  private:
@@ -69,7 +78,7 @@ class DipoleProfile final : public RadialProfile {
   double support_mm(double tail_fraction) const override;  // bisection on the closed-form encircled()
   std::string identity() const override;
   // ∫∫ over the disk of radius r_mm, closed form per channel.
-  Rgb encircled(double r_mm) const;
+  Rgb encircled(double r_mm) const override;
 
  private:
   struct Channel {
@@ -101,7 +110,8 @@ const GaussianSumProfile& deon_skin_profile();
 // Fresnel diffuse reflectance F_dr (Egan & Hilgeman's fit, as Jensen et al. 2001 use it).
 double fresnel_diffuse_reflectance(double eta);
 
-// ∫∫ over the disk of radius r_mm by numeric quadrature of 2πr·R(r): for any profile.
+// ∫∫ over the disk of radius r_mm by numeric quadrature of 2πr·R(r): for any profile whose r·R(r)
+// is bounded at the centre (R itself may not be: the r = 0 sample is never taken).
 Rgb encircled_numeric(const RadialProfile& p, double r_mm);
 
 // The smallest radius inside which every channel holds at least `fraction` of its integral.
