@@ -15,6 +15,51 @@
 namespace sss_test {
 namespace {
 
+// 0.1-0.3's sss_profile_desc and sss_kernel_desc (their sss_tools.h): 0.4 appended the burley fields.
+struct ProfileDesc03 {
+  uint32_t struct_size;
+  int32_t profile, gaussian_count, table_size;
+  const float* table_radius_mm;
+  const float* table_rgb;
+};
+struct KernelDesc03 {
+  uint32_t struct_size;
+  int32_t family, taps, rank;
+  uint32_t flags;
+  float guide_k, radius_mm;
+  float strength[3], falloff[3], near_variance_mm2[3], far_variance_mm2[3], near_weight[3];
+  ProfileDesc03 profile;
+};
+
+// Today's desc as 0.3's (field for field) and 0.3's as today's reads it (the burley fields default).
+KernelDesc03 as03(const sss_kernel_desc& k) {
+  KernelDesc03 o{};
+  o.struct_size = sizeof o;
+  o.family = k.family, o.taps = k.taps, o.rank = k.rank, o.flags = k.flags, o.guide_k = k.guide_k;
+  o.radius_mm = k.radius_mm;
+  for (int c = 0; c < 3; ++c) {
+    o.strength[c] = k.strength[c], o.falloff[c] = k.falloff[c], o.near_variance_mm2[c] = k.near_variance_mm2[c];
+    o.far_variance_mm2[c] = k.far_variance_mm2[c], o.near_weight[c] = k.near_weight[c];
+  }
+  o.profile = {sizeof o.profile, k.profile.profile, k.profile.gaussian_count, k.profile.table_size,
+               k.profile.table_radius_mm, k.profile.table_rgb};
+  return o;
+}
+sss_kernel_desc as_current(const KernelDesc03& o) {
+  sss_kernel_desc k;
+  sss_default_kernel_desc(&k);
+  k.family = o.family, k.taps = o.taps, k.rank = o.rank, k.flags = o.flags, k.guide_k = o.guide_k;
+  k.radius_mm = o.radius_mm;
+  for (int c = 0; c < 3; ++c) {
+    k.strength[c] = o.strength[c], k.falloff[c] = o.falloff[c], k.near_variance_mm2[c] = o.near_variance_mm2[c];
+    k.far_variance_mm2[c] = o.far_variance_mm2[c], k.near_weight[c] = o.near_weight[c];
+  }
+  k.profile.profile = o.profile.profile, k.profile.gaussian_count = o.profile.gaussian_count;
+  k.profile.table_size = o.profile.table_size, k.profile.table_radius_mm = o.profile.table_radius_mm;
+  k.profile.table_rgb = o.profile.table_rgb;
+  return k;
+}
+
 // sss 0.1's sss_settings (its sss.h): the paper's width, the kernel desc embedded.
 struct Settings01 {
   uint32_t struct_size;
@@ -27,7 +72,7 @@ struct Settings01 {
   int32_t cbf_taps;
   float cbf_r_max_mm;
   uint32_t cbf_profile;  // an sss_material 0..11, 0x100 SSS_PROFILE_MIKKELSEN_2010, 0x101 SSS_PROFILE_KERNEL
-  sss_kernel_desc kernel;
+  KernelDesc03 kernel;
   float jitter;
   uint32_t path;
 };
@@ -46,7 +91,7 @@ struct Settings02 {
   int32_t cbf_taps;
   float cbf_r_max_mm;
   uint32_t cbf_profile;
-  sss_kernel_desc kernel;
+  KernelDesc03 kernel;
   float jitter;
   uint32_t path;
 };
@@ -55,18 +100,21 @@ struct Settings02 {
 // The sizes those releases had on x86-64 (LP64), as their sss.h compiled.
 static_assert(sizeof(Settings01) == 184, "0.1's sss_settings");
 static_assert(sizeof(Settings02) == 192, "0.2's sss_settings");
-static_assert(sizeof(sss_kernel_desc) == 120, "sss_kernel_desc kept 0.1's layout");
+static_assert(sizeof(KernelDesc03) == 120 && sizeof(ProfileDesc03) == 32, "0.1-0.3's sss_kernel_desc");
+static_assert(sizeof(sss_kernel_desc) == 144, "0.4: six burley floats appended to the embedded profile desc");
 static_assert(sizeof(sss_create_desc) == 48 && sizeof(sss_stats) == 72, "kept 0.1's layout");
 static_assert(sizeof(sss_frame) == 112, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format");
 #endif
 
 const sss::math::Matrix4 kCamera = perspective_matrix(45.0f, 1.0f, 0.1f, 10.0f);
 
-void fill_common(sss_kernel_desc* k) {
-  sss_default_kernel_desc(k);
-  k->family = SSS_KERNEL_SVD;
-  k->rank = 2;
-  k->profile.profile = SSS_PROFILE_MARBLE;  // the same value as 0.1's SSS_MATERIAL_MARBLE
+void fill_common(KernelDesc03* old) {
+  sss_kernel_desc k;
+  sss_default_kernel_desc(&k);
+  k.family = SSS_KERNEL_SVD;
+  k.rank = 2;
+  k.profile.profile = SSS_PROFILE_MARBLE;  // the same value as 0.1's SSS_MATERIAL_MARBLE
+  *old = as03(k);
 }
 
 // Every field sss_get_settings gives back, the kernel by content.
@@ -160,7 +208,8 @@ TEST_F(VersionedStructs, Settings01AreConvertedToWhatTheyMeant) {
   expected.cbf_taps = 15;
   expected.cbf_r_max_mm = 3.5f;
   expected.cbf_profile = SSS_PROFILE_MIKKELSEN_2010;
-  expected.kernel = &old.kernel;
+  const sss_kernel_desc kernel = as_current(old.kernel);
+  expected.kernel = &kernel;
   expected.jitter = 0.25f;
   expected.path = SSS_PATH_FRAGMENT;  // the old struct's path, not today's default (SSS_PATH_AUTO)
   expect_same_settings(current(), as_set(expected));
@@ -182,8 +231,10 @@ TEST_F(VersionedStructs, Settings02AreConvertedToWhatTheyMeant) {
   old.cbf_taps = 13;
   old.cbf_r_max_mm = 4.5f;
   old.cbf_profile = 0x101u;  // 0.2's SSS_PROFILE_KERNEL: the kernel desc's profile
-  sss_default_kernel_desc(&old.kernel);
-  old.kernel.family = SSS_KERNEL_ARTIST;
+  sss_kernel_desc artist;
+  sss_default_kernel_desc(&artist);
+  artist.family = SSS_KERNEL_ARTIST;
+  old.kernel = as03(artist);
   old.jitter = 0.0f;
   old.path = SSS_PATH_AUTO;
   ASSERT_EQ(sss_set_settings(sss_, reinterpret_cast<const sss_settings*>(&old)), SSS_OK) << sss_last_error(sss_);
@@ -195,7 +246,7 @@ TEST_F(VersionedStructs, Settings02AreConvertedToWhatTheyMeant) {
   expected.flags = 0u;
   expected.mode = SSS_MODE_CROSS_BILATERAL;
   expected.cbf_profile = SSS_PROFILE_KERNEL;
-  expected.kernel = &old.kernel;
+  expected.kernel = &artist;
   expected.path = SSS_PATH_AUTO;
   expect_same_settings(current(), as_set(expected));
 
@@ -222,7 +273,8 @@ TEST_F(VersionedStructs, GetSettingsWritesTheLayoutItIsGiven) {
   EXPECT_EQ(two.samples, 21);
   EXPECT_EQ(two.cbf_profile, 0x100u);
   EXPECT_EQ(two.kernel.family, SSS_KERNEL_SEPARABLE);
-  EXPECT_EQ(two.kernel.struct_size, sizeof(sss_kernel_desc));
+  EXPECT_EQ(two.kernel.struct_size, sizeof(KernelDesc03));  // 0.2's layout, its size
+  EXPECT_EQ(two.kernel.profile.struct_size, sizeof(ProfileDesc03));
   Settings01 one{};
   one.struct_size = sizeof one;
   ASSERT_EQ(sss_get_settings(sss_, reinterpret_cast<sss_settings*>(&one)), SSS_OK) << sss_last_error(sss_);
@@ -258,6 +310,31 @@ TEST_F(VersionedStructs, SizesNoReleaseDefinedAreRefusedByName) {
   stats.struct_size = 64;
   EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("stats->struct_size = 64"), std::string::npos);
+}
+
+// A host built against 0.3 passes today's sss_settings pointing at 0.3's kernel desc (no burley
+// fields): read as today's with those fields at their defaults; a size no release had is refused.
+TEST_F(VersionedStructs, KernelDescsOfEarlierReleasesAreRead) {
+  KernelDesc03 old{};
+  fill_common(&old);
+  sss_settings s;
+  sss_default_settings(&s);
+  s.kernel = reinterpret_cast<const sss_kernel_desc*>(&old);
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  const sss_kernel_desc expected = as_current(old);
+  s.kernel = &expected;
+  expect_same_settings(current(), as_set(s));
+  sss_kernel_desc odd = expected;
+  odd.struct_size = 124u;
+  s.kernel = &odd;
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->kernel->struct_size = 124"), std::string::npos)
+      << sss_last_error(sss_);
+  old.profile.struct_size = sizeof(sss_profile_desc);  // 0.3's kernel desc cannot hold today's profile desc
+  s.kernel = reinterpret_cast<const sss_kernel_desc*>(&old);
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->kernel->profile.struct_size"), std::string::npos)
+      << sss_last_error(sss_);
 }
 
 TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {

@@ -36,7 +36,7 @@ TEST(KernelApi, DefaultsAreValidAndBuildTheTable1Kernel) {
 
 TEST(KernelApi, EveryFamilyAndMaterialBuildsAnEnergyConservingPlan) {
   for (int32_t family = 0; family < SSS_KERNEL_FAMILY_COUNT; ++family) {
-    for (int32_t material : {SSS_PROFILE_SKIN_DEON, SSS_PROFILE_MARBLE, SSS_PROFILE_KETCHUP}) {
+    for (int32_t material : {SSS_PROFILE_SKIN_DEON, SSS_PROFILE_MARBLE, SSS_PROFILE_KETCHUP, SSS_PROFILE_BURLEY}) {
       sss_kernel_desc d;
       sss_default_kernel_desc(&d);
       d.family = family;
