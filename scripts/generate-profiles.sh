@@ -4,6 +4,7 @@
 #   data/profiles/summary.csv      total diffuse reflectance, Monte Carlo and dipole
 #   docs/profiles/<material>.png   dipole against Monte Carlo per material (gnuplot)
 #   docs/kernel-fits.md            the kernel fits and decompositions (tools/kernel_report.cpp)
+#   docs/burley.md's table         Burley's parameters of the materials (tools/burley_table.cpp)
 #
 #   scripts/generate-profiles.sh [--photons N] [--threads T] [--plots-only]
 #
@@ -30,7 +31,7 @@ scripts/install-deps.sh test  # gnuplot for the plots, nlohmann-json for the rep
 if [[ ! -f build/CMakeCache.txt ]]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_BUILD_DEMO=OFF
 fi
-cmake --build build --target sss_mc_profiles sss_kernel_report
+cmake --build build --target sss_mc_profiles sss_kernel_report sss_burley_table
 
 mkdir -p data/profiles docs/profiles
 if [[ $plots_only == 0 ]]; then
@@ -65,4 +66,5 @@ GP
 done
 
 build/tools/sss_kernel_report --out docs/kernel-fits.md
-echo "generate-profiles: data/profiles/, docs/profiles/*.png and docs/kernel-fits.md written"
+build/tools/sss_burley_table --update docs/burley.md
+echo "generate-profiles: data/profiles/, docs/profiles/*.png, docs/kernel-fits.md and docs/burley.md's table written"
