@@ -43,11 +43,12 @@ struct GlLoader {
 std::unique_ptr<Method> make_separable_method(const GlLoader& loader, int taps, bool follow_surface,
                                               uint32_t create_flags = 0);
 // A kernel family of sss_kernels.h run by the library (sss_settings.kernel, jitter), on the skin
-// profile, follow-surface on. Its passes are 2 × the plan's terms.
+// profile or the choice's, follow-surface on. Its passes are 2 × the plan's terms.
 struct KernelChoice {
   std::string name;  // the method's name in the results, "kernel-svd-3"
   int32_t family = 0, rank = 1;
   float jitter = 0.0f;
+  const sss_profile_desc* profile = nullptr;  // nullptr: the default (d'Eon's skin); else kept by the caller
 };
 const std::vector<KernelChoice>& kernel_family_choices();
 // The 12-pass baseline ("sum-of-gaussians"): d'Eon's six Gaussians as the library's family, each

@@ -46,6 +46,7 @@ class SeparableMethod : public Method {
     if (!kernel_.name.empty()) {
       sss_test::kernel_of(s).family = kernel_.family;
       sss_test::kernel_of(s).rank = kernel_.rank;
+      if (kernel_.profile != nullptr) sss_test::kernel_of(s).profile = *kernel_.profile;
       s.jitter = kernel_.jitter;
     }
     sss_frame frame = {};

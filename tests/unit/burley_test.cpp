@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "math/burley_profile.hpp"
@@ -207,6 +208,27 @@ TEST(RadialPlaneReference, MatchesTheSeparableReferenceForGaussians) {
       }
     }
   }
+}
+
+// A kernel built once serves frames of its pixel size and no others (the benchmark shares one per
+// footprint); stride picks the reference grid of sss_bench.
+TEST(RadialPlaneReference, SharedKernelAndStride) {
+  const BurleyProfile p(cases()[0]);
+  std::vector<float> e(static_cast<std::size_t>(16 * 12 * 4), 1.0f);
+  e[static_cast<std::size_t>((5 * 16 + 7) * 4)] = 9.0f;
+  const sss::math::PlaneInput in{16, 12, e.data(), 0.1, 0.1};
+  std::vector<double> once(16 * 12 * 3, -1.0), shared(once.size(), -1.0);
+  sss::math::convolve_plane_radial(in, p, {0, 0, 16, 12}, once.data(), 1, 3);
+  const sss::math::RadialPixelKernel k(p, 0.1, 0.1, 20, 12);
+  sss::math::convolve_plane_radial(in, k, {0, 0, 16, 12}, shared.data(), 2, 3);
+  EXPECT_EQ(once, shared);
+  for (int y = 0; y < 12; ++y) {
+    for (int x = 0; x < 16; ++x) EXPECT_EQ(once[static_cast<std::size_t>((y * 16 + x) * 3)] >= 0.0, x % 3 == 1 && y % 3 == 1);
+  }
+  const sss::math::RadialPixelKernel other(p, 0.1, 0.2, 20, 12), small(p, 0.1, 0.1, 15, 12);
+  EXPECT_THROW(sss::math::convolve_plane_radial(in, other, {0, 0, 16, 12}, shared.data()), std::invalid_argument);
+  EXPECT_THROW(sss::math::convolve_plane_radial(in, small, {0, 0, 16, 12}, shared.data()), std::invalid_argument);
+  EXPECT_THROW(sss::math::convolve_plane_radial(in, k, {0, 0, 17, 12}, shared.data()), std::invalid_argument);
 }
 
 // A uniformly lit plane: the centre receives A less what the frame loses past its edge, which the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "radial_integrals.hpp"
@@ -37,7 +38,7 @@ void parallel_for(int count, int threads, const Work& work) {
 }  // namespace
 
 RadialPixelKernel::RadialPixelKernel(const RadialProfile& profile, double sx, double sy, int nx, int ny, int threads)
-    : nx_(nx), ny_(ny) {
+    : nx_(nx), ny_(ny), sx_(sx), sy_(sy) {
   if (!(sx > 0.0) || !(sy > 0.0) || nx < 1 || ny < 1) {
     std::ostringstream why;
     why << "pixel " << sx << " x " << sy << " mm, kernel " << nx << " x " << ny << ": must all be positive";
@@ -58,7 +59,17 @@ const Rgb& RadialPixelKernel::at(int i, int j) const {
 }
 
 void convolve_plane_radial(const PlaneInput& in, const RadialProfile& profile, const PixelRegion& r, double* out_rgb,
-                           int threads) {
+                           int threads, int stride) {
+  if (in.width <= 0 || in.height <= 0) {
+    invalid("image " + std::to_string(in.width) + "x" + std::to_string(in.height) + " is not positive");
+  }
+  const RadialPixelKernel k(profile, in.pixel_x_mm, in.pixel_y_mm, in.width, in.height, threads);
+  convolve_plane_radial(in, k, r, out_rgb, threads, stride);
+}
+
+void convolve_plane_radial(const PlaneInput& in, const RadialPixelKernel& k, const PixelRegion& r, double* out_rgb,
+                           int threads, int stride) {
+  if (stride < 1) invalid("stride " + std::to_string(stride) + " is not positive");
   if (in.width <= 0 || in.height <= 0 || in.irradiance == nullptr || out_rgb == nullptr) {
     std::ostringstream why;
     why << "image " << in.width << "x" << in.height << " with irradiance " << (in.irradiance ? "set" : "null")
@@ -71,11 +82,19 @@ void convolve_plane_radial(const PlaneInput& in, const RadialProfile& profile, c
         << in.width << "x" << in.height << " image";
     invalid(why.str());
   }
-  const RadialPixelKernel k(profile, in.pixel_x_mm, in.pixel_y_mm, in.width, in.height, threads);
+  if (k.nx() < in.width || k.ny() < in.height || k.pixel_x_mm() != in.pixel_x_mm || k.pixel_y_mm() != in.pixel_y_mm) {
+    std::ostringstream why;
+    why << "a kernel of " << k.nx() << "x" << k.ny() << " cells of " << k.pixel_x_mm() << " x " << k.pixel_y_mm()
+        << " mm does not serve a " << in.width << "x" << in.height << " image of " << in.pixel_x_mm << " x "
+        << in.pixel_y_mm << " mm pixels";
+    invalid(why.str());
+  }
   const auto w = static_cast<std::size_t>(in.width);
   parallel_for(r.height, threads, [&](int row) {
     const int y = r.y + row;
+    if (y % stride != stride / 2) return;
     for (int x = r.x; x < r.x + r.width; ++x) {
+      if (x % stride != stride / 2) continue;
       double sum[3] = {0.0, 0.0, 0.0};
       for (int sy = 0; sy < in.height; ++sy) {
         const float* e = in.irradiance + static_cast<std::size_t>(sy) * w * 4;

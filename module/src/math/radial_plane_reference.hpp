@@ -30,19 +30,28 @@ class RadialPixelKernel {
   RadialPixelKernel(const RadialProfile& profile, double pixel_x_mm, double pixel_y_mm, int nx, int ny,
                     int threads = 0);
   const Rgb& at(int i, int j) const;  // |i| < nx, |j| < ny
+  double pixel_x_mm() const { return sx_; }
+  double pixel_y_mm() const { return sy_; }
   int nx() const { return nx_; }
   int ny() const { return ny_; }
 
  private:
   int nx_ = 0, ny_ = 0;
+  double sx_ = 0.0, sy_ = 0.0;
   std::vector<Rgb> k_;  // k_[j * nx + i]
 };
 
 // M for the pixels of `receivers` into out_rgb (width · height · 3 doubles, row 0 at the bottom;
-// other pixels are not written). Throws std::invalid_argument on a bad size, a null pointer, a
-// non-positive footprint or a region outside the frame.
+// other pixels are not written); with stride s > 1 only those with x % s == s / 2 and
+// y % s == s / 2 (the benchmark's reference grid). Throws std::invalid_argument on a bad size, a
+// null pointer, a non-positive footprint or stride, or a region outside the frame.
 void convolve_plane_radial(const PlaneInput& input, const RadialProfile& profile, const PixelRegion& receivers,
-                           double* out_rgb, int threads = 0);
+                           double* out_rgb, int threads = 0, int stride = 1);
+// The same with the kernel built once for frames of one pixel size (its cells dominate the cost of
+// a few receivers): the kernel must reach the whole frame (nx >= width, ny >= height) and have
+// been built for input's pixel sides.
+void convolve_plane_radial(const PlaneInput& input, const RadialPixelKernel& kernel, const PixelRegion& receivers,
+                           double* out_rgb, int threads = 0, int stride = 1);
 
 // Burley's line (marginal) profile ∫ R(√(x² + y²)) dy over the whole line, per channel: since
 // ∫ e^{-√(x²+y²)/c} / √(x²+y²) dy = 2 K0(|x|/c), it is A (K0(|x|/d) + K0(|x|/(3d))) / (4π d), mm⁻¹
