@@ -158,7 +158,10 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "Creative Commons Attribution 3.0 Unported License, based on a work at www.triplegangers.com.\n"
       << "- The zero-pass alternative, pre-integrated skin shading (LUT generation time, and its error against the "
          "same reference): [benchmarks/preintegrated.md](benchmarks/preintegrated.md), written by "
-         "`sss_bench_preintegrated` in the same script.\n\n";
+         "`sss_bench_preintegrated` in the same script.\n"
+      << "- Burley's normalized diffusion (marble and skin1 from their measurements) on the same footprint sweep, "
+         "the kernel families against its own exact plane reference: [benchmarks/burley.md](benchmarks/burley.md), "
+         "written by `sss_bench_burley` in the same script.\n\n";
 
   write_error_definitions(out, info);
   write_footprint_sweep(out, rows, footprint_plots, band_plots, path);

@@ -8,6 +8,7 @@
 // The context is the library's own struct built without GL (api/context.hpp): sss_set_settings
 // and sss_set_camera never call GL, so nothing else is needed.
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -44,7 +45,11 @@ bool settings_valid(const sss_settings& s) {
   // The kernel desc: NULL, or every field but taps, strength and falloff, whatever the family.
   if (s.kernel == nullptr) return true;
   const sss_kernel_desc& k = *s.kernel;
-  if (k.struct_size != sizeof(sss_kernel_desc) || k.family < 0 || k.family >= SSS_KERNEL_FAMILY_COUNT) return false;
+  // 0.1-0.3's kernel desc (no burley fields, its profile desc 0.3's) is read as that prefix.
+  const auto old_profile = static_cast<uint32_t>(offsetof(sss_profile_desc, burley_albedo));
+  const bool old = k.struct_size == offsetof(sss_kernel_desc, profile) + old_profile;
+  if (old && k.profile.struct_size != old_profile) return false;
+  if ((!old && k.struct_size != sizeof(sss_kernel_desc)) || k.family < 0 || k.family >= SSS_KERNEL_FAMILY_COUNT) return false;
   if ((k.flags & ~SSS_KERNEL_ALL_FLAGS) != 0u) return false;
   for (int c = 0; c < 3; ++c) {
     auto positive = [](float v) { return v > 0.0f && v <= 1e4f; };
@@ -53,8 +58,15 @@ bool settings_valid(const sss_settings& s) {
   if (k.rank < 1 || k.rank > 6 || !(k.guide_k >= 0.0f && k.guide_k <= 4.0f)) return false;
   if (!(k.radius_mm >= 0.0f && k.radius_mm <= 1e4f)) return false;
   const sss_profile_desc& p = k.profile;
-  if (p.struct_size != sizeof(sss_profile_desc) || p.profile < 0 || p.profile > SSS_PROFILE_TABULATED) return false;
+  if (!old && p.struct_size != sizeof(sss_profile_desc)) return false;
+  if ((p.profile < 0 || p.profile > SSS_PROFILE_TABULATED) && p.profile != SSS_PROFILE_BURLEY) return false;
   if (p.profile == SSS_PROFILE_SKIN_DEON && (p.gaussian_count < 1 || p.gaussian_count > 6)) return false;
+  if (p.profile == SSS_PROFILE_BURLEY && !old) {  // an old desc's burley fields are the defaults
+    for (int c = 0; c < 3; ++c) {
+      if (!(p.burley_albedo[c] > 0.0f && p.burley_albedo[c] <= 1.0f)) return false;
+      if (!(p.burley_dmfp_mm[c] >= SSS_BURLEY_MIN_DMFP_MM && p.burley_dmfp_mm[c] <= SSS_BURLEY_MAX_DMFP_MM)) return false;
+    }
+  }
   return p.profile != SSS_PROFILE_TABULATED;  // the fuzzer gives no table: NULL pointers are refused
 }
 
