@@ -122,6 +122,7 @@ struct Row {
   double footprint_mm = 0.0;
   sss_bench::Miss miss;
   int stride = 1;
+  int passes = 0;  // full-screen passes per frame (2 × the plan's terms)
 };
 
 // The kernel families a host would pick for a Burley profile: the per-pixel profiles' rank 1
@@ -188,7 +189,7 @@ void run_frame(const BurleyCase& b, const sss::math::RadialPixelKernel& kernel, 
     const sss_bench::RgbImage result =
         sss_bench::RgbImage::from_rgba(sss_bench::read_texture_rgba(output, side, side).data(), side, side);
     rows->push_back({b.name, k.name, scene_name, footprint, sss_bench::miss_share(result, reference, input, interior.data()),
-                     stride});
+                     stride, k.method->passes()});
   }
   std::printf("burley-%s %s %.4g mm/px: %dx%d, %zu receivers (stride %d), their sums %.1f s; miss %s %.3f\n",
               b.name.c_str(), scene_name.c_str(), footprint, side, side, rows->back().miss.pixels, stride, seconds,
@@ -251,8 +252,12 @@ void write_headline(std::ostringstream& md, const std::vector<Row>& rows, const 
 // Per profile: the median interior miss over the scenes and the worst channel, per footprint.
 void write_tables(std::ostringstream& md, const std::vector<Row>& rows, const BurleyCase& b, const Args& args) {
   std::vector<std::string> methods;
+  std::vector<int> passes;
   for (const Row& r : rows) {
-    if (r.profile == b.name && std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+    if (r.profile == b.name && std::find(methods.begin(), methods.end(), r.method) == methods.end()) {
+      methods.push_back(r.method);
+      passes.push_back(r.passes);
+    }
   }
   for (int table = 0; table < 2; ++table) {
     md << (table == 0 ? "**Median interior miss over the scenes**" : "**Worst channel** over the scenes")
@@ -261,8 +266,11 @@ void write_tables(std::ostringstream& md, const std::vector<Row>& rows, const Bu
     md << "\n|---|";
     for (std::size_t i = 0; i < args.footprints.size(); ++i) md << "---:|";
     md << "\n";
-    for (const std::string& m : methods) {
-      md << "| " << m << (m == "no-scattering" ? "" : " " + std::to_string(args.taps) + " taps") << " |";
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+      const std::string& m = methods[i];
+      md << "| " << m
+         << (m == "no-scattering" ? "" : " " + std::to_string(args.taps) + " taps, " + std::to_string(passes[i]) + " passes")
+         << " |";
       for (double f : args.footprints) {
         double worst = 0.0;
         for (const Row& r : rows) {
