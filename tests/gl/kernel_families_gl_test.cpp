@@ -247,6 +247,40 @@ TEST_F(KernelFamilies, EveryTermIsAPairOfPasses) {
   EXPECT_EQ(stats.last_frame_passes, 10u);
 }
 
+// Burley's normalized diffusion (SSS_PROFILE_BURLEY, its 1/r centre integrated exactly into the
+// kernel's cells) runs like any profile: the rank-1 pre-integrated kernel the per-pixel profiles take
+// and a multi-term SVD against the CPU model; as one of several profiles; its fields checked by name.
+TEST_F(KernelFamilies, BurleyProfilesRunLikeAnyOther) {
+  sss_profile_desc marble;
+  ASSERT_EQ(sss_profile_burley_from_measured(SSS_PROFILE_MARBLE, &marble), SSS_OK);
+  for (int32_t rank : {1, 3}) {
+    FilterCase c;
+    c.settings = family_settings(rank == 1 ? SSS_KERNEL_PREINTEGRATED : SSS_KERNEL_SVD, rank);
+    sss_test::kernel_of(c.settings).profile = marble;
+    c.settings.world_units_per_mm = 0.01f;  // marble scatters far: fewer pixels per mm
+    expect_blurred_and_matching(run_case(relief(), c), rank == 1 ? "Burley marble, pre-integrated" : "Burley marble, SVD 3",
+                                is_gles(), rank);
+    TearDown();
+    SetUp();
+  }
+  sss_context* ctx = create_sss();
+  ASSERT_NE(ctx, nullptr);
+  sss_settings profiles[2];
+  sss_default_settings(&profiles[0]);
+  profiles[1] = family_settings(SSS_KERNEL_PREINTEGRATED);
+  profiles[1].taps = profiles[0].taps;
+  profiles[1].jitter = profiles[0].jitter;
+  profiles[1].flags = profiles[0].flags;
+  sss_test::kernel_of(profiles[1]).profile = marble;
+  EXPECT_EQ(sss_set_profiles(ctx, profiles, 2), SSS_OK) << sss_last_error(ctx);
+  sss_settings bad = profiles[1];
+  sss_test::kernel_of(bad).profile.burley_dmfp_mm[2] = 0.0f;
+  EXPECT_EQ(sss_set_settings(ctx, &bad), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(ctx)).find("settings->kernel->profile->burley_dmfp_mm[2] = 0"), std::string::npos)
+      << sss_last_error(ctx);
+  sss_destroy(ctx);
+}
+
 TEST_F(KernelFamilies, BadKernelSettingsAreNamedAndTheOldOnesStay) {
   sss_context* ctx = create_sss();
   ASSERT_NE(ctx, nullptr);
