@@ -16,15 +16,8 @@ scenes=head-close,head-mid,head-far
 reps=5
 frames=7
 profiles=4
-args=()
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --profiles) profiles=$2; shift 2 ;;
-    *) args+=("$1"); [[ $# -gt 1 ]] && args+=("$2"); shift 2 ;;
-  esac
-done
 source scripts/cost-options.sh
-cost_options profile-cost.sh "${args[@]}"
+cost_options profile-cost.sh "$@"
 [[ -x $probe ]] || { echo "profile-cost.sh: $probe not built" >&2; exit 2; }
 count() {  # scene, profiles
   scripts/cost-probe.sh "$probe" -- --scene "$1" --size "$size" --profiles "$2" | awk '{print $NF}'
@@ -32,7 +25,6 @@ count() {  # scene, profiles
 time_of() {  # scene, profiles: the median of one run's frames, in ms
   "$probe" --scene "$1" --size "$size" --profiles "$2" --frames "$frames" | sed -n 's/.*median \([0-9.]*\) ms.*/\1/p'
 }
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 declare -A runs
 for ((r = 0; r < reps; ++r)); do
