@@ -112,8 +112,13 @@ sss::math::KernelRequest request_for(const sss_kernel_desc& d) {
   }
   q.profile.material = d.profile.profile == SSS_PROFILE_SKIN_DEON ? sss::math::kProfileSkin
                        : d.profile.profile == SSS_PROFILE_TABULATED ? sss::math::kProfileTable
+                       : d.profile.profile == SSS_PROFILE_BURLEY    ? sss::math::kProfileBurley
                                                                      : d.profile.profile - 1;
   q.profile.gaussian_count = d.profile.gaussian_count;
+  for (std::size_t c = 0; c < 3; ++c) {
+    q.profile.burley.albedo[c] = d.profile.burley_albedo[c];
+    q.profile.burley.dmfp_mm[c] = d.profile.burley_dmfp_mm[c];
+  }
   for (int32_t i = 0; d.profile.profile == SSS_PROFILE_TABULATED && i < d.profile.table_size; ++i) {
     q.profile.table_radii_mm.push_back(d.profile.table_radius_mm[i]);
     q.profile.table_values.push_back({d.profile.table_rgb[i * 3], d.profile.table_rgb[i * 3 + 1], d.profile.table_rgb[i * 3 + 2]});
