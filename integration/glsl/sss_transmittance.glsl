@@ -42,10 +42,11 @@
 //                 streaks, and no glow where another object (or the rest of the head) stands between
 //                 the light and the ear. The smaller would let a baked ear glow in another object's
 //                 shadow.
-// Bad thickness values, from any source (a NaN or infinite texel or attribute, a point outside the
-// light's map): sss_transmittance returns 0 for a NaN or infinite thickness (no light through, and
+// Bad thickness values, from any source (a NaN or infinite texel or attribute, a degenerate light
+// projection): sss_transmittance returns 0 for a NaN or infinite thickness (no light through, and
 // no NaN into the blur, which would spread it) and counts a negative thickness as 0 (touching
-// surfaces: the most light).
+// surfaces: the most light). (GLSL lets a driver without NaNs leave isnan undefined; Mesa keeps
+// them, tests/gl/thickness_test.cpp checks it there.)
 
 #ifndef SSS_TRANSMITTANCE_MAX_TERMS
 #define SSS_TRANSMITTANCE_MAX_TERMS 8  // = SSS_PROFILE_MAX_TERMS in sss_tools.h
