@@ -53,6 +53,7 @@ void ProgramCache::destroy() {
   remove(stencil_mark_);
   remove(sample_write_.program);
   remove(strength_combine_.program);
+  for (const ProfileDepthProgram& p : profile_depth_) remove(p.program);
   forget();
 }
 
@@ -84,19 +85,24 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   BlurProgram& p = blur_[static_cast<std::size_t>(blur_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = blur_defines(v);
+  const std::string defines = blur_defines(v, profile_capacity_);
   p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d profiles=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0);
+                v.accumulate ? 1 : 0, v.profile_ids ? 1 : 0);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
   set_unit(p.program, p.source, unit::source);
   set_unit(p.program, p.depth, unit::depth);
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
+  set_unit(p.program, p.profile_ids, unit::profile_ids);
+  if (v.profile_ids) {  // the tables' block on binding point 0 (ProfileTables::bind)
+    const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
+    if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
+  }
   return SSS_OK;
 }
 
@@ -146,6 +152,9 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.profile_ids = f.GetUniformLocation(p.program, "u_depth_ids");
+  p.profile = f.GetUniformLocation(p.program, "u_profile");
+  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }
 
 sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
@@ -235,6 +244,22 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message) {
+  ProfileDepthProgram& p = profile_depth_[linear_depth ? 1 : 0];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  p.program = link("profile_depth.frag", profile_depth_defines(linear_depth), "per-pixel profiles' depth and index shader",
+                   message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, "sss view distance and profile index", nullptr);
+  const Functions& f = *gl_;
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
   return SSS_OK;
 }
 
