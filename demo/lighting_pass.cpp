@@ -54,9 +54,9 @@ uniform mat4 u_light_projection[2];
 uniform int u_transmittance;       // 1: add the light transmitted through thin parts
 uniform float u_sss_width;
 uniform float u_translucency;
-uniform float u_shrink[2];         // world units the thickness lookup pulls the point inward
 uniform int u_thickness_source;    // 0: the shadow map, 1: the material's baked thickness, 2: the larger
 uniform float u_baked_thickness;   // world units (a host's baked map or attribute would give it per texel)
+uniform float u_shrink[2];         // world units the thickness lookup pulls the point inward
 #ifdef SSS_PREINTEGRATED
 uniform sampler2D u_diffuse_lut;     // sss_lut_create_texture(SSS_LUT_DIFFUSE)
 uniform sampler2D u_shadow_lut;      // sss_lut_create_texture(SSS_LUT_SHADOW), box filter
@@ -328,9 +328,9 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     glUniform4fv(u.base_color, 1, material.base_color);
     glUniform1f(u.normal_scale, material.normal_scale);
     glUniform1f(u.sss_strength, look.sss_strength);
+    glUniform1f(u.baked_thickness, look.baked_thickness > 0.0f ? look.baked_thickness : transmittance.baked_thickness);
     glUniform1f(u.specular_intensity, look.specular_intensity);
     glUniform1f(u.roughness, look.roughness);
-    glUniform1f(u.baked_thickness, look.baked_thickness > 0.0f ? look.baked_thickness : transmittance.baked_thickness);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, gpu.materials[index].albedo);
     glActiveTexture(GL_TEXTURE1);

@@ -139,8 +139,9 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
+    kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
-    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kThickness, kBakedThickness
+    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -173,9 +174,9 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"help", no_argument, nullptr, kHelp},
       {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
       {"translucency", optional_argument, nullptr, kTranslucency},
-      {"back-light", no_argument, nullptr, kBackLight},
       {"thickness", required_argument, nullptr, kThickness},
       {"baked-thickness", required_argument, nullptr, kBakedThickness},
+      {"back-light", no_argument, nullptr, kBackLight},
       {nullptr, 0, nullptr, 0}};
 
   opterr = 1;
@@ -300,7 +301,6 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         if (ok) o->jitter = v;
         break;
       }
-      case kBackLight: o->back_light = true; break;
       case kThickness: {
         const std::string v = optarg;
         o->thickness_source = v == "shadow" ? 0 : v == "baked" ? 1 : v == "both" ? 2 : -1;
@@ -312,6 +312,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
               o->baked_thickness_mm <= 100.0f) ||
              fail("--baked-thickness wants millimetres in (0, 100]", optarg);
         break;
+      case kBackLight: o->back_light = true; break;
       case kTranslucency: {
         o->translucency = true;
         if (optarg != nullptr) {
