@@ -33,6 +33,8 @@ struct Options {
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
+  int thickness_source = 0;      // TransmittanceInputs::thickness_source: 0 shadow maps, 1 baked, 2 both (the larger)
+  float baked_thickness_mm = 2.0f;  // the translucent materials' baked thickness (--baked-thickness), mm
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
   float scale = 1.0f;            // sss_settings.scale: multiplies the scattering distances (1 = physical size)
   int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
