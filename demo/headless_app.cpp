@@ -5,6 +5,7 @@
 #include "apps.hpp"
 
 #include "context.hpp"
+#include "dump_output.hpp"
 #include "gl_functions.hpp"
 #include "heat_map.hpp"
 #include "host_gl_util.hpp"
@@ -131,6 +132,8 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
       {"split", "left: without, right: with subsurface scattering", &frame, ViewMode::kSplit},
       {"heatmap", "error against the exact reference (small frame, scaled up)", &frame, ViewMode::kHeatMap},
       {"touched", "pixels the library changed (orange), translucent but unchanged (blue)", &frame, ViewMode::kTouched},
+      {"profiles", "the G-buffer's profile/object byte in false colours (a hue per profile, a shade per object)",
+       &frame, ViewMode::kProfiles},
   };
   const std::string settings = format_settings(renderer->sss.settings, controls, scene.world_units_per_mm);
   bool ok = true;
@@ -144,6 +147,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
     if (&v == &views[1]) after = image;
     std::string description = std::string(v.title) + ". " + scene.name + ", " + preset_title(preset) + ", " +
                               std::to_string(targets->width) + "x" + std::to_string(targets->height) + ". " + settings;
+    if (v.mode == ViewMode::kProfiles) description += ". " + profile_legend(scene, controls);
     if (v.mode == ViewMode::kHeatMap) {
       char extra[256];
       std::snprintf(extra, sizeof extra,
@@ -171,6 +175,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
                             context.renderer)) &&
        ok;
   glDeleteTextures(1, &heat_texture);
+  if (o.dump) ok = write_frame_dumps(*targets, frame.sss_ran, prefix) && ok;
   return ok && check_gl("the views");
 }
 
@@ -196,12 +201,14 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
       "                      re-render of the same frame at 1/heat-factor of each side, shown scaled up.\n"
       "  PRESET-touched.png  orange: pixels the library changed; blue: translucent but unchanged; grey: the rest\n"
       "  PRESET-zoom.png     before | after, magnified 3x, around the block where they differ most\n"
+      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n"
       "Tone mapping: x exposure, Narkowicz's ACES filmic fit, sRGB.\n\n";
   t += "Scene        " + scene.name + ": " + scene.description + "\n";
   t += "GL_RENDERER  " + context.renderer + "\nGL_VERSION   " + context.version + "\nbackend      " +
        context.backend + " (requested " + o.backend + ")\n";
   t += "size         " + std::to_string(o.width) + "x" + std::to_string(o.height) + "\n";
   t += "settings     " + settings + "\n";
+  t += "materials    " + profile_legend(scene, controls_from_options(o)) + "\n";
   char line[512];
   std::snprintf(line, sizeof line, "exposure %.3g, heat scale %.3g, heat factor %d, %d timed frames per preset\n\n",
                 static_cast<double>(o.exposure), static_cast<double>(o.heat_scale), o.heat_factor, o.repeat);
@@ -285,7 +292,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
     if (ok && !scene.attribution.empty())
       ok = write_text((dir / "ATTRIBUTION.txt").string(), "The images in this folder show a model whose licence asks for this attribution:\n" +
                                                               scene.attribution + "\n");
-    if (ok) std::printf("wrote %zu presets x {before,after,split,heatmap,touched,zoom}.png and README.txt into %s\n",
+    if (ok) std::printf("wrote %zu presets x {before,after,split,heatmap,touched,zoom,profiles}.png and README.txt into %s\n",
                         reports.size(), o.out_dir.c_str());
   }
   if (!scene.attribution.empty()) std::printf("%s\n", scene.attribution.c_str());

@@ -17,8 +17,6 @@
 
 namespace demo {
 
-namespace {
-
 std::vector<float> read_texture_rgba(GLuint texture, int width, int height) {
   std::vector<float> rgba(static_cast<size_t>(width) * static_cast<size_t>(height) * 4u);
   glBindTexture(GL_TEXTURE_2D, texture);
@@ -27,6 +25,18 @@ std::vector<float> read_texture_rgba(GLuint texture, int width, int height) {
   glBindTexture(GL_TEXTURE_2D, 0);
   return rgba;
 }
+
+std::vector<uint8_t> read_texture_r8ui(GLuint texture, int width, int height) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(width) * static_cast<size_t>(height));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return bytes;
+}
+
+namespace {
 
 sss_bench::RgbImage rgb_of(const std::vector<float> &rgba, int width, int height) {
   return sss_bench::RgbImage::from_rgba(rgba.data(), width, height);

@@ -38,6 +38,10 @@ struct SmallFrame {
   double world_units_per_mm = 0.001;
 };
 
+// A texture's level 0 read back, rows bottom-up: RGBA floats; the R8UI profile/object bytes.
+std::vector<float> read_texture_rgba(GLuint texture, int width, int height);
+std::vector<uint8_t> read_texture_r8ui(GLuint texture, int width, int height);
+
 // Reads the small targets back (a current context; `sss_ran`: whether `after` holds the library's output).
 SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
                             double world_units_per_mm);

@@ -153,7 +153,7 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,
-                    result->preintegrated ? &r->luts : nullptr);
+                    result->preintegrated ? &r->luts : nullptr, controls.object_ids);
   resolve_lighting(*targets);  // MSAA: the single-sample "before", specular and stencil for the composite
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
@@ -162,7 +162,8 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     // result goes where the library's output would ("after") and a Lambert lighting pass refills
     // "before"; untimed: a renderer using pre-integrated shading would not draw it.
     copy_diffuse_to_after(*targets);
-    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance, nullptr);
+    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance, nullptr,
+                      controls.object_ids);
     resolve_lighting(*targets);
     result->sss_ran = true;
     double untimed = 0.0;

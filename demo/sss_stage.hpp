@@ -50,6 +50,9 @@ struct SssControls {
   // SSS_CREATE_DEBUG_CHECKS: every frame checks the GL (errors, framebuffers, textures). A create
   // flag: toggling it re-creates the library's context (render_frame).
   bool debug_checks = false;
+  // The G-buffer's byte carries object IDs (profile | object << 4); off: the profile alone, so light
+  // crosses between objects of one profile (the bleeding test scene shows the difference).
+  bool object_ids = true;
 };
 
 constexpr int kShadingScreenSpace = 0;

@@ -62,7 +62,7 @@ void on_key(GLFWwindow *window, int key, int /*scancode*/, int action, int /*mod
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing into a field
   switch (key) {
     case GLFW_KEY_S: s->controls.enabled = !s->controls.enabled; break;
-    case GLFW_KEY_V: s->view = static_cast<ViewMode>((static_cast<int>(s->view) + 1) % 4); break;
+    case GLFW_KEY_V: s->view = static_cast<ViewMode>((static_cast<int>(s->view) + 1) % kViewModeCount); break;
     case GLFW_KEY_1: s->preset = Preset::kClose; s->preset_requested = true; break;
     case GLFW_KEY_2: s->preset = Preset::kMid; s->preset_requested = true; break;
     case GLFW_KEY_3: s->preset = Preset::kFar; s->preset_requested = true; break;
