@@ -120,7 +120,7 @@ DemoScene make_hand_scene() {
   // Four fingers from the knuckles (below the jaw) up across the cheek on the subject's left (+X, the
   // side the cameras see), and the thumb towards the chin, each pushed out until its back is `gap`
   // in front of the face under it; the palm below the jaw.
-  const float gap = 0.002f, flatten = 0.6f;
+  const float gap = -0.001f, flatten = 0.6f;
   const glm::vec3 out(0.0f, 0.0f, 1.0f);
   struct Digit {
     float x0, y0, x1, y1, radius;
