@@ -73,6 +73,7 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   const bool ok = render_frame(renderer, m, small_controls, &small, false, &frame);
   SmallFrame data;
   if (ok) data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+  data.materials = reference_materials(*renderer->scene);
   destroy_frame_targets(&small);
   if (!ok) return false;
 

@@ -8,6 +8,8 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace demo {
 
@@ -72,6 +74,14 @@ struct SssStage {
   sss_context *context = nullptr;
   sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
   sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
+  // The scene's other profiles (sss_set_profiles; [0] is `settings`): a measured material each, as a
+  // rank-1 pre-integrated kernel (profile_kernels[i], which profiles[i].kernel points at).
+  // profile_count: how many the library holds (1 when profile 0's kernel has several terms or the
+  // mode is cross-bilateral: the other profiles' pixels are then left untouched).
+  std::vector<sss_settings> profiles;
+  std::vector<sss_kernel_desc> profile_kernels;
+  std::uint32_t profile_count = 1;
+  std::string profile_note;  // why profile_count is 1 in a scene of several profiles; empty otherwise
   sss_get_proc_address_fn get_proc_address = nullptr;  // as created, for a re-creation
   void *user = nullptr;
   bool debug_checks = false;  // created with SSS_CREATE_DEBUG_CHECKS
@@ -88,6 +98,7 @@ struct SssStage {
 struct SssFrameShape {
   int width = 0, height = 0, samples = 0;
   bool stencil = false, region = false;
+  bool profile_texture = false;  // frames bring an R8UI profile/object texture
 };
 
 // sss_create with the given loader (a GL context must be current), with SSS_CREATE_DEBUG_CHECKS
@@ -100,15 +111,19 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
 // after printing the error.
 bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 
-// sss_set_settings from the controls, at the scene's world units per millimetre of surface
+// sss_set_profiles from the controls (profile 0) and the scene's other profiles (`materials`: an
+// sss_profile per profile index >= 1, each a rank-1 pre-integrated kernel with profile 0's taps,
+// flags, mode, jitter and path), at the scene's world units per millimetre of surface
 // (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.
-bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm);
+bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
+                      const std::vector<int> &materials = {});
 
 // sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,
-// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none.
+// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI
+// profile/object texture (sss_frame.profile_texture), or 0 for none (every pixel profile 0).
 bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
                std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after,
-               const std::int32_t *region = nullptr);
+               const std::int32_t *region = nullptr, std::uint32_t profile = 0);
 
 void destroy_sss_stage(SssStage *stage);
 

@@ -142,6 +142,7 @@ class HeatMapper {
     controls.decision_height = s->height;  // choose the shading as the shown frame does
     if (!render_frame(renderer, m, controls, &small_, false, &frame)) return 0;
     SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+    data.materials = reference_materials(*renderer->scene);
 
     // Collect a finished reference; start one when the camera or size moved on.
     if (pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {

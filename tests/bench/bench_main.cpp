@@ -67,6 +67,9 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // frame), and with the host's region of translucent pixels.
   // The masked fragment path and the compute path (sss_settings.path) the same two ways, and the
   // automatic choice.
+  // Several materials in one pass pair: one profile against per-pixel profiles, in the same run.
+  configs.push_back({"separable-one-profile", SSS_TAPS_MEDIUM, true});
+  configs.push_back({"separable-profiles", SSS_TAPS_MEDIUM, true});
   for (const char* kind : {"separable-in-place", "separable-region",
                            "separable-masked", "separable-masked-region", "separable-compute",
                            "separable-compute-region", "separable-auto-region"}) {
@@ -113,6 +116,8 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
   if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false);
+  if (c.kind == "separable-one-profile") return make_profiles_method(loader, c.taps, false);
+  if (c.kind == "separable-profiles") return make_profiles_method(loader, c.taps, true);
   if (c.kind == "separable-region") return make_in_place_method(loader, c.taps, true);
   if (c.kind == "separable-masked") return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT_MASKED);
   if (c.kind == "separable-masked-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_FRAGMENT_MASKED);
@@ -435,6 +440,7 @@ int run(const Options& options) {
         if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
         row.method = method->name();
         path_ran = method->path_ran();
+        row.path_ran = path_ran;
         row.taps = method->taps();
         row.follow_surface = method->follow_surface();
         row.passes = method->passes();
