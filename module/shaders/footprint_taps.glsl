@@ -5,30 +5,51 @@
 // (module/src/math/footprint_kernel.cpp).
 //
 // Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_JITTER,
-// SSS_FOLLOW_SURFACE (see separable_blur.frag). Before this piece the shader includes depth.glsl
+// SSS_FOLLOW_SURFACE, SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). Before this piece the shader includes depth.glsl
 // and jitter.glsl, and defines how its taps are read (GLSL has no function pointers):
 //   struct TapSite      what the shader needs to find this pixel's taps
 //   vec4 sss_fetch_tap(TapSite site, float offset)
 //                       the pixel `offset` pixels from the centre along the pass's axis, kept in
 //                       u_clamp: rgb its colour, a its raw depth (read only with SSS_FOLLOW_SURFACE)
+//   uint sss_fetch_id(TapSite site, float offset)   (SSS_PROFILE_IDS only)
+//                       that pixel's profile and object index; a tap whose index is not
+//                       sss_centre_id counts as the centre's colour
 
+#if SSS_PROFILE_IDS
+// Per-pixel profiles (SSS_PROFILE_IDS 1): every profile's table for this pass in one uniform block
+// (module/src/math/profile_set.hpp's layout: SSS_CDF_ENTRIES cumulative entries, then the reach and
+// centre delta), picked by the centre pixel's index; main() sets sss_table_base and
+// sss_inv_two_variance before the taps.
+layout(std140) uniform SssProfileTables {
+  vec4 u_tables[SSS_PROFILES * (SSS_CDF_ENTRIES + 1)];
+};
+int sss_table_base;
+float sss_inv_two_variance;
+#define SSS_CDF(j) u_tables[sss_table_base + (j)]
+#define SSS_FOOTPRINT u_tables[sss_table_base + SSS_CDF_ENTRIES]
+#define SSS_INV_TWO_VARIANCE sss_inv_two_variance
+#else
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
 uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
+#define SSS_CDF(j) u_cdf[j]
+#define SSS_FOOTPRINT u_footprint
+#if SSS_FOLLOW_SURFACE == 2
+uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
+#define SSS_INV_TWO_VARIANCE u_inv_two_variance
+#endif
+#endif
 uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
 uniform int u_half_taps;                      // the most taps on either side
 #if SSS_JITTER
 uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
 #endif
-#if SSS_FOLLOW_SURFACE == 2
-uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
-#endif
 
 // The pass's kernel integrated from 0 to x_mm, as sss::math::footprint_half_cdf.
 vec3 half_cdf(float x_mm) {
-  float u = sqrt(min(x_mm / u_footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  float u = sqrt(min(x_mm / SSS_FOOTPRINT.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
   int j = min(int(u), SSS_CDF_ENTRIES - 2);
   float f = u - float(j);
-  return u_cdf[j].rgb * (1.0 - f) + u_cdf[j + 1].rgb * f;
+  return SSS_CDF(j).rgb * (1.0 - f) + SSS_CDF(j + 1).rgb * f;
 }
 
 // The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
@@ -46,7 +67,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
 #if SSS_FOLLOW_SURFACE
   float d = follow_surface * abs(centre_distance - view_distance(fetched.a));
 #if SSS_FOLLOW_SURFACE == 2
-  float s = 1.0 - exp(-d * d * u_inv_two_variance);
+  float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
   float s = d;
 #endif
@@ -63,7 +84,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
 // pixels between the midpoints to its neighbours; the last one takes the tail.
 vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, float follow_surface,
                    ivec2 pixel, int axis) {
-  float reach_pixels = min(u_footprint.x * step_pixels, 1.0e6);
+  float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(u_half_taps) + 0.5;
   int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
 #if SSS_JITTER
@@ -75,14 +96,14 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
   // the midpoint to the first tap, so only a pixel with taps (a kernel wider than its pixel) looks
   // that up: in a block of its own before the loop, not in the loop's first step, because a SIMD
   // rasteriser that runs every step's body for all its lanes (llvmpipe) would pay for it each step.
-  vec3 total = u_cdf[SSS_CDF_ENTRIES - 1].rgb;
-  vec3 sum = centre * (2.0 * total + u_footprint.yzw);
+  vec3 total = SSS_CDF(SSS_CDF_ENTRIES - 1).rgb;
+  vec3 sum = centre * (2.0 * total + SSS_FOOTPRINT.yzw);
   vec3 below = total;
   float p = 0.0;
   if (count > 0) {
     p = tap_position(1, 0.0, dense, reach_pixels);
     below = half_cdf(0.5 * p / step_pixels);
-    sum = centre * (2.0 * below + u_footprint.yzw);
+    sum = centre * (2.0 * below + SSS_FOOTPRINT.yzw);
   }
   for (int i = 1; i <= count; ++i) {
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
@@ -94,7 +115,12 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
 #endif
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
-      pair += settled_tap(sss_fetch_tap(site, side == 0 ? read : -read), centre, centre_distance, follow_surface);
+      float offset = side == 0 ? read : -read;
+      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, centre_distance, follow_surface);
+#if SSS_PROFILE_IDS
+      if (sss_fetch_id(site, offset) != sss_centre_id) tap = centre;  // another material or object
+#endif
+      pair += tap;
     }
     sum += (upto - below) * pair;
     below = upto;

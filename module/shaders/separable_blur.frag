@@ -18,6 +18,10 @@
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
 //   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
+//   SSS_PROFILE_IDS     1: per-pixel profiles (sss_frame.profile_texture, unit 4): the centre's index
+//                       (value & 15) picks its profile's table (a uniform block of SSS_PROFILES) and
+//                       u_profile[] entry; an index >= u_profile_count leaves the pixel alone; taps
+//                       whose whole value (profile and object) differs count as the centre
 // and from the dialect's header (version_*.glsl, module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
@@ -44,6 +48,13 @@ uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strengt
 uniform float u_follow_surface;       // 1 / the kernel's reach in world units (SSS_FOLLOW_SURFACE 2: 1 / world units per mm)
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
 
+#if SSS_PROFILE_IDS
+SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's profile (bits 0-3) and object indices
+uniform vec4 u_profile[SSS_PROFILES];  // per profile: pixels per mm along u_axis, follow-surface factor, 1/(2v)
+uniform int u_profile_count;           // the profiles set (sss_set_profiles)
+uint sss_centre_id;                    // the centre pixel's whole index
+#endif
+
 out vec4 o_color;
 
 // footprint_taps.glsl's tap reads: straight from the textures, around the fragment.
@@ -60,6 +71,13 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
   return vec4(texelFetch(u_source, texel, 0).rgb, 0.0);
 #endif
 }
+
+#if SSS_PROFILE_IDS
+uint sss_fetch_id(TapSite site, float offset) {
+  vec2 position = clamp(site.centre + u_axis * offset, u_clamp.xy, u_clamp.zw);
+  return texelFetch(u_profile_ids, ivec2(position), 0).r;
+}
+#endif
 
 #include "footprint_taps.glsl"
 
@@ -92,8 +110,22 @@ void main() {
     return;
   }
 
+#if SSS_PROFILE_IDS
+  sss_centre_id = texelFetch(u_profile_ids, pixel, 0).r;
+  int profile = int(sss_centre_id & 15u);
+  if (profile >= u_profile_count) {  // no profile set for this index: documented as left alone
+    leave_untouched(pixel, centre);
+    return;
+  }
+  sss_table_base = profile * (SSS_CDF_ENTRIES + 1);
+  vec4 look = u_profile[profile];
+  sss_inv_two_variance = look.z;
+  float step_pixels = look.x * strength / w;
+  float follow_surface = look.y / strength;
+#else
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
+#endif
   vec3 sum = footprint_sum(TapSite(gl_FragCoord.xy), centre.rgb, step_pixels, centre_distance, follow_surface,
                            pixel, u_axis.y > 0.5 ? 1 : 0);
 #if SSS_ACCUMULATE

@@ -10,7 +10,11 @@
 // fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
-//                  [--path default|fragment|masked|auto] [--frames N]
+//                  [--path default|fragment|masked|auto] [--frames N] [--profiles N]
+//
+// --profiles N (0.4 on): N per-pixel profiles (sss_set_profiles; the others are eq. (1) looks of
+// other strength, falloff and scale) and an R8UI profile texture of index 0 everywhere: the cost of
+// the per-pixel selection on the same frame (the scene is one material).
 //
 // --path default (also without --path) keeps sss_default_settings' path: the frame a host gets.
 // Prints the path that ran and "frame done" (the counts come from callgrind).
@@ -42,6 +46,7 @@ struct Options {
   bool default_path = true;  // sss_default_settings' path; else `path`
   unsigned path = SSS_PATH_FRAGMENT;
   int frames = 0;  // timed frames after the counted one
+  int profiles = 0;  // 0: sss_set_settings and no profile texture; else sss_set_profiles with this many
 };
 
 bool parse(int argc, char** argv, Options* o) {
@@ -68,6 +73,8 @@ bool parse(int argc, char** argv, Options* o) {
       }
     } else if (key == "--frames") {
       o->frames = std::atoi(value.c_str());
+    } else if (key == "--profiles") {
+      o->profiles = std::atoi(value.c_str());
     } else {
       return false;
     }
@@ -112,7 +119,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path default|fragment|masked|auto] [--frames N]\n");
+                         "[--path default|fragment|masked|auto] [--frames N] [--profiles N]\n");
     return 2;
   }
   sss_headless_desc hd = {};
@@ -152,6 +159,37 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sss_cost_probe: %s\n", sss_last_error(ctx));
     return 1;
   }
+#if SSS_VERSION_MAJOR > 0 || SSS_VERSION_MINOR >= 4
+  std::vector<uint8_t> zeros;
+  GLuint ids = 0;
+  if (o.profiles > 0) {
+    std::vector<sss_settings> looks(static_cast<std::size_t>(o.profiles), s);
+    for (std::size_t i = 1; i < looks.size(); ++i) {
+      looks[i].scale = 1.0f + 0.5f * static_cast<float>(i);
+      for (int c = 0; c < 3; ++c) {
+        looks[i].strength[c] = 0.4f + 0.1f * static_cast<float>((static_cast<int>(i) + c) % 5);
+        looks[i].falloff[c] = 0.3f + 0.1f * static_cast<float>((static_cast<int>(i) * 2 + c) % 7);
+      }
+    }
+    zeros.assign(static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height), 0);
+    glGenTextures(1, &ids);
+    glBindTexture(GL_TEXTURE_2D, ids);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, o.width, o.height, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, zeros.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    frame.profile_texture = ids;
+    if (sss_set_profiles(ctx, looks.data(), static_cast<uint32_t>(looks.size())) != SSS_OK) {
+      std::fprintf(stderr, "sss_cost_probe: %s\n", sss_last_error(ctx));
+      return 1;
+    }
+  }
+#else
+  if (o.profiles > 0) {
+    std::fprintf(stderr, "sss_cost_probe: --profiles needs 0.4 or later\n");
+    return 2;
+  }
+#endif
   // One frame first: programs built, targets allocated, as in a steady frame.
   for (int frame_index = 0; frame_index < 2; ++frame_index) {
     refill(scene.irradiance, color, o.width, o.height);
@@ -176,8 +214,8 @@ int main(int argc, char** argv) {
   sss_stats stats = {};
   stats.struct_size = sizeof stats;
   const unsigned ran = sss_get_stats(ctx, &stats) == SSS_OK ? stats.last_frame_path : 99u;
-  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran: frame done\n", o.scene.c_str(), o.width, o.height,
-              o.taps, s.path, o.default_path ? "the default" : "named", ran);
+  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran, %d per-pixel profiles: frame done\n", o.scene.c_str(),
+              o.width, o.height, o.taps, s.path, o.default_path ? "the default" : "named", ran, o.profiles);
   if (!ms.empty()) {
     std::sort(ms.begin(), ms.end());
     std::printf("time of %d frames: median %.2f ms, fastest %.2f ms\n", o.frames, ms[ms.size() / 2], ms.front());

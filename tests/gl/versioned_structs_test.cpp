@@ -57,7 +57,12 @@ static_assert(sizeof(Settings01) == 184, "0.1's sss_settings");
 static_assert(sizeof(Settings02) == 192, "0.2's sss_settings");
 static_assert(sizeof(sss_kernel_desc) == 120, "sss_kernel_desc kept 0.1's layout");
 static_assert(sizeof(sss_create_desc) == 48 && sizeof(sss_stats) == 72, "kept 0.1's layout");
-static_assert(sizeof(sss_frame) == 112, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format");
+static_assert(sizeof(sss_frame) == 120, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format "
+              "(0.3's 112), profile_texture and _format");
+static_assert(offsetof(sss_frame, profile_texture) == 108, "0.3's sss_frame (112 with its padding) is today's up to "
+              "profile_texture");
+static_assert(sizeof(sss_prepare_desc) == 44 && offsetof(sss_prepare_desc, profile_format) == 40,
+              "0.3's sss_prepare_desc (40 bytes) is today's up to profile_format");
 #endif
 
 const sss::math::Matrix4 kCamera = perspective_matrix(45.0f, 1.0f, 0.1f, 10.0f);
@@ -272,18 +277,22 @@ TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   ASSERT_EQ(sss_set_settings(sss_, &settings), SSS_OK) << sss_last_error(sss_);
   const SyntheticScene scene = make_relief_scene(8, 8, 1, kCamera);
   const GLuint depth = make_depth32f(8, 8, scene.window_depth);
-  std::vector<float> results[2];
-  const uint32_t sizes[2] = {96u, static_cast<uint32_t>(sizeof(sss_frame))};  // 0.1 and 0.2; 0.3
-  for (int i = 0; i < 2; ++i) {
+  std::vector<float> results[3];
+  const uint32_t sizes[3] = {96u, 112u, static_cast<uint32_t>(sizeof(sss_frame))};  // 0.1 and 0.2; 0.3; 0.4
+  for (int i = 0; i < 3; ++i) {
     const GLuint color = make_rgba32f(8, 8, scene.color);
     sss_frame f{};
     f.struct_size = sizes[i];
     f.color_texture = color;
     f.depth_texture = depth;
+    // 0.3's 112 bytes end in 4 bytes of padding where 0.4 has profile_texture: whatever a 0.3 host
+    // left there is not read as a texture name.
+    if (sizes[i] == 112u) f.profile_texture = 0xDEADu;
     ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sizes[i] << ": " << sss_last_error(sss_);
     results[i] = read_rgba(color, 8, 8);
   }
   EXPECT_EQ(results[0], results[1]);  // depth_stencil_mode's default: the same frame
+  EXPECT_EQ(results[0], results[2]);  // no profile texture: the same frame
   EXPECT_NE(results[0], scene.color);
   sss_frame f{};
   f.struct_size = 100u;

@@ -60,8 +60,8 @@ const char* dialect_prefix(gl::GlslVariant v) {
 
 std::string blur_name(const gl::BlurVariant& v) {
   char name[64];
-  std::snprintf(name, sizeof name, "o%d_f%d_l%d_j%d", static_cast<int>(v.outside), v.follow_surface,
-                v.linear_depth ? 1 : 0, v.jitter ? 1 : 0);
+  std::snprintf(name, sizeof name, "o%d_f%d_l%d_j%d_p%d", static_cast<int>(v.outside), v.follow_surface,
+                v.linear_depth ? 1 : 0, v.jitter ? 1 : 0, v.profile_ids ? 1 : 0);
   return name;
 }
 
@@ -105,7 +105,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
 void write_compute(Writer* out) {
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
-    if (v.accumulate) continue;
+    if (v.accumulate || v.profile_ids) continue;  // per-pixel profiles run on the fragment passes
     for (int format = 0; format < gl::kComputeImageFormatCount; ++format) {
       out->write("430_blur_compute_" + blur_name(v) + '_' + gl::kComputeImageFormats[format].qualifier + ".comp",
                  gl::compute_recipe(gl::compute_blur_defines(v, format)));

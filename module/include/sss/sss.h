@@ -37,8 +37,7 @@
  *     frame.depth_format = 0x88F0; frame.texture_width = w; frame.texture_height = h;
  *     if (sss_set_camera(sss, projection) != SSS_OK) return 0; // column-major
  *     if (sss_apply_frame(sss, &frame) != SSS_OK) return 0;    // blurred in place
- *     stats.struct_size = sizeof stats;
- *     sss_get_stats(sss, &stats); // e.g. stats.last_frame_path for an overlay
+ *     stats.struct_size = sizeof stats; sss_get_stats(sss, &stats); // e.g. stats.last_frame_path
  *     return 1;
  *   }
  *   void engine_sss_shutdown(sss_context *sss) { sss_destroy(sss); } // same GL context current
@@ -50,13 +49,14 @@
  *
  * GL state (SSS_STATE_LIST; docs/integration.md details it): a call that draws restores what it changed
  * (unless SSS_CREATE_NO_STATE_RESTORE) and leaves no GL error: program, vertex array, draw and read
- * framebuffers, renderbuffer, active texture; on units 0-3 the 2D and 2D-multisample texture and sampler;
- * the unpack buffer and alignment/row length/skips; image unit 0; viewport; sample mask word 0; the enables
+ * framebuffers, renderbuffer, active texture; on units 0-4 the 2D and 2D-multisample texture and sampler;
+ * uniform buffer binding 0 and the generic one; the unpack buffer and alignment/row length/skips (pack
+ * state too under SSS_CREATE_DEBUG_CHECKS); image unit 0; viewport; sample mask word 0; the enables
  * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
  * SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7,
  * MULTISAMPLE; colour mask (buffer 0); polygon mode; front/back stencil state; the depth texture's
  * DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there. Untouched: blend/depth functions, scissor box, clear
- * values, pack state, other bindings and texture parameters. No transform feedback or conditional render.
+ * values, other bindings and texture parameters. No transform feedback or conditional render.
  */
 #ifndef SSS_SSS_H
 #define SSS_SSS_H
@@ -75,16 +75,13 @@ typedef void (*sss_log_fn)(int level, const char *message, void *user); /**< lev
 typedef enum sss_create_flag { /* sss_create_desc.flags */
   SSS_CREATE_NO_STATE_RESTORE = 0x1, /**< the host restores GL state itself: no state queries */
   SSS_CREATE_NO_DEBUG_LABELS = 0x2, SSS_CREATE_STATS = 0x4, /**< no KHR_debug; GPU measurements in sss_stats */
-  SSS_CREATE_DEBUG_CHECKS = 0x8 /**< check textures, framebuffers and glGetError on every frame */
-} sss_create_flag;
+  SSS_CREATE_DEBUG_CHECKS = 0x8 /**< check textures, framebuffers, profile indices, glGetError every frame */ } sss_create_flag;
 #define SSS_CREATE_ALL_FLAGS 0xFu
 
 typedef struct sss_create_desc {
   uint32_t struct_size;                     /**< sizeof(sss_create_desc) */
   sss_get_proc_address_fn get_proc_address; void *get_proc_address_user; /**< required; its user pointer */
-  sss_log_fn log; void *log_user;           /**< optional */
-  uint32_t flags;                           /**< sss_create_flag bits */
-} sss_create_desc;
+  sss_log_fn log; void *log_user; uint32_t flags; /**< optional; sss_create_flag bits */ } sss_create_desc;
 
 /** One profile-ID space for every profile the module knows (settings, LUTs, tools, per-pixel ids). */
 typedef enum sss_profile {
@@ -123,18 +120,15 @@ typedef struct sss_settings {
   uint32_t mode;            /**< sss_mode. Default SSS_MODE_SEPARABLE */
   int32_t cbf_taps;         /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
   float cbf_r_max_mm;       /**< (0, 50]: cross-bilateral footprint radius in profile mm. Default 4.5 */
-  uint32_t cbf_profile;     /**< sss_profile of the cross-bilateral mode (not TABULATED); measured
-                                 dipoles and SSS_PROFILE_KERNEL's tables need sss_tools_init. Default MIKKELSEN_2010 */
-  const struct sss_kernel_desc *kernel; /**< NULL: eq. (1) from the fields above (the default); else
-                                 a kernel family of sss_tools.h, copied by sss_set_settings */
+  uint32_t cbf_profile;     /**< cross-bilateral sss_profile (measured/KERNEL need sss_tools_init). Default MIKKELSEN_2010 */
+  const struct sss_kernel_desc *kernel; /**< NULL: eq. (1) from the above (default); else a sss_tools.h kernel (copied) */
   float jitter;             /**< [0, 1]: share of the outer taps jittered per pixel. Default 0 */
   uint32_t path;            /**< sss_path. Default SSS_PATH_AUTO (before 0.3: SSS_PATH_FRAGMENT) */
 } sss_settings;
 
 typedef struct sss_stencil { /* host stencil: translucent where (stencil & mask) == (ref & mask) */
   uint32_t depth_stencil_texture; /**< GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, like colour */
-  uint32_t ref, mask;             /**< [0, 255] */
-} sss_stencil;
+  uint32_t ref, mask; /**< [0, 255] */ } sss_stencil;
 
 typedef enum sss_frame_flag /* sss_frame.flags */ {
   SSS_FRAME_DEPTH_ZERO_TO_ONE = 0x1, SSS_FRAME_REGION = 0x2, /**< glClipControl 0..1 depth; frame.region is set */
@@ -169,6 +163,8 @@ typedef struct sss_frame {
   uint32_t depth_stencil_mode; /**< 0, 0x1902 GL_DEPTH_COMPONENT or 0x1901 GL_STENCIL_INDEX (the host's) */
   uint32_t strength_texture;  /**< 0: alpha is strength; else 2D R8/R16F/R32F: red = strength, alpha unused */
   uint32_t strength_format;   /**< 0, 0x8229 R8, 0x822D R16F, 0x822E R32F */
+  uint32_t profile_texture, profile_format; /**< 0, or 2D R8UI (0x8232)/R16UI (0x8234): value & 15 the profile
+                                   (sss_set_profiles), value >> 4 an object; taps of another value are not taken */
 } sss_frame;
 
 typedef enum sss_prepare_flag { /* frames give normal_texture; SSS_FRAME_REGION; MSAA without fixed locations */
@@ -182,6 +178,7 @@ typedef struct sss_prepare_desc {
   int32_t samples;         /**< MSAA sample count: 0 or 1 single-sample, [2, 32] multisampled */
   uint32_t stencil_format, flags; /**< 0: no host stencil; sss_prepare_flag bits */
   uint32_t strength_format; /**< 0: no strength texture; else as sss_frame (then samples 0 or 1) */
+  uint32_t profile_format;  /**< 0: no profile texture; else as sss_frame (then samples 0 or 1) */
 } sss_prepare_desc;
 
 typedef enum sss_glsl { SSS_GLSL_330_CORE = 0, SSS_GLSL_420_CORE = 1, SSS_GLSL_300_ES = 2 } sss_glsl;
@@ -191,8 +188,7 @@ typedef struct sss_stats {
   uint32_t struct_size;       /**< set by the caller */
   uint32_t glsl_variant;      /**< sss_glsl */
   uint64_t frames, passes;    /**< successful frames; draws and dispatches over them */
-  uint32_t last_frame_passes; /**< draws of the last frame */
-  uint32_t measured;          /**< sss_stats_flag bits */
+  uint32_t last_frame_passes, measured; /**< draws of the last frame; sss_stats_flag bits */
   uint64_t measured_frame;    /**< the frame the measurements come from (1 = first); 0 none */
   uint64_t pixels_touched;    /**< pixels the vertical pass wrote (desktop GL) */
   double gpu_time_ms[2];      /**< horizontal, vertical pass */
@@ -203,36 +199,40 @@ SSS_API const char *sss_result_string(sss_result r); /**< "SSS_ERROR_INVALID_TEX
 /** The last failure's message on ctx (NULL: on this thread, for calls without a context). Never NULL. */
 SSS_API const char *sss_last_error(const sss_context *ctx);
 
-/** Compiles the shaders in the current GL context.
- *  @return OK; INVALID_ARGUMENT (desc, out, struct_size, get_proc_address, flags); NO_CONTEXT;
- *  UNSUPPORTED (GL < 3.3, ES < 3.0 or without float render targets); GL_FUNCTION_MISSING;
- *  SHADER_COMPILE; OUT_OF_MEMORY. On failure *out is NULL and nothing is left in the GL. */
+/** Compiles the shaders in the current GL context. @return OK; INVALID_ARGUMENT (desc, out, struct_size,
+ *  get_proc_address, flags); NO_CONTEXT; UNSUPPORTED (GL < 3.3, ES < 3.0 or without float render targets);
+ *  GL_FUNCTION_MISSING; SHADER_COMPILE; OUT_OF_MEMORY. On failure *out is NULL and nothing is left in the GL. */
 SSS_API sss_result sss_create(const sss_create_desc *desc, sss_context **out);
 SSS_API void sss_destroy(sss_context *ctx); /**< deletes its GL objects (same context current); NULL: no-op */
-
 SSS_API void sss_default_settings(sss_settings *s); /**< the defaults, struct_size = sizeof; NULL: no-op */
-/** Validates and takes *s; no GL. Kernels are built here, never per frame (a fitted one up to ~0.7 s).
+/** Validates and takes *s (one profile); no GL. Kernels are built here, never per frame (a fit up to ~0.7 s).
  *  @return OK; INVALID_ARGUMENT (a field out of range, named); UNSUPPORTED (needs the tools library:
  *  sss_tools_init not called); OUT_OF_MEMORY. On failure the old settings stay. */
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
+#define SSS_MAX_PROFILES 16
+/** Per-pixel profiles: profiles[i] for pixels of sss_frame.profile_texture index i, all in one pass pair.
+ *  Each may differ in world_units_per_mm, scale, strength, falloff, separable_scale and kernel (one term
+ *  when count > 1); the other fields must equal profiles[0]'s, which becomes the settings (sss_set_settings
+ *  is count 1). Indices >= count are left alone (refused under SSS_CREATE_DEBUG_CHECKS). No GL.
+ *  @return OK; INVALID_ARGUMENT (count outside [1, SSS_MAX_PROFILES], profiles[i].field named); UNSUPPORTED
+ *  (several terms or cross-bilateral with count > 1; count over the GL's uniform block). Else all kept. */
+SSS_API sss_result sss_set_profiles(sss_context *ctx, const sss_settings *profiles, uint32_t count);
 /** The current settings into *s; s->struct_size selects the layout written (this or an earlier release's).
  *  settings.kernel points at the context's copy until the next sss_set_settings. @return OK; INVALID_ARGUMENT */
 SSS_API sss_result sss_get_settings(const sss_context *ctx, sss_settings *s);
 /** Projection matrix, column-major (perspective, reversed-Z, infinite or orthographic). No GL.
  *  @return OK; INVALID_ARGUMENT (NULL, non-finite, singular); UNSUPPORTED (sheared, w from x/y) */
 SSS_API sss_result sss_set_camera(sss_context *ctx, const float projection[16]);
-
 /** Compiles and allocates all that frames like *desc need with the current settings (no hitch later).
  *  @return OK; INVALID_ARGUMENT; UNSUPPORTED; NO_CONTEXT; SHADER_COMPILE; OUT_OF_MEMORY; GL */
 SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
 
 /** Runs the filter on *frame. Pixels with alpha 0, outside the stencil, non-finite or beyond 2^125 keep
- *  their value (and give their weight to the centre).
- *  @return OK; INVALID_ARGUMENT (a field outside its list); INVALID_TEXTURE (name, target, format
- *  or size); UNSUPPORTED (a format or sample count this GL lacks); INVALID_OPERATION (no camera);
- *  NO_CONTEXT (context lost: objects rebuilt on the next call); FRAMEBUFFER; OUT_OF_MEMORY;
- *  SHADER_COMPILE; GL (raised during the draws: the target may be partly written). Every check
- *  runs before the first draw, so on any other failure the host's textures are untouched. */
+ *  their value (and give their weight to the centre). @return OK; INVALID_ARGUMENT (a field outside its
+ *  list); INVALID_TEXTURE (name, target, format or size; a profile index >= the count, debug checks);
+ *  UNSUPPORTED (a format or sample count this GL lacks); INVALID_OPERATION (no camera); NO_CONTEXT (context
+ *  lost: objects rebuilt on the next call); FRAMEBUFFER; OUT_OF_MEMORY; SHADER_COMPILE; GL (raised during
+ *  the draws: the target may be partly written). Every check runs before the first draw. */
 SSS_API sss_result sss_apply_frame(sss_context *ctx, const sss_frame *frame);
 /** sss_apply_frame of color_texture in place, undescribed (not on ES 3.0). */
 SSS_API sss_result sss_apply(sss_context *ctx, uint32_t color_texture, uint32_t depth_texture,

@@ -25,7 +25,7 @@ extern "C" {
 #endif
 
 #define SSS_VERSION_MAJOR 0
-#define SSS_VERSION_MINOR 3
+#define SSS_VERSION_MINOR 4
 #define SSS_VERSION_PATCH 0
 
 /** Status codes. Every failing call also leaves a message naming the bad argument and its value,

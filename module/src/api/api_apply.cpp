@@ -12,6 +12,7 @@
 #include "context.hpp"
 #include "gl_session.hpp"
 #include "host_texture_params.hpp"
+#include "profiles.hpp"
 #include "validation.hpp"
 #include "versioned_structs.hpp"
 
@@ -129,6 +130,7 @@ std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::ui
   mix(static_cast<std::uint64_t>(run.color.width));
   mix(static_cast<std::uint64_t>(run.color.height));
   mix(ctx.kernel_revision);
+  mix(run.has_profiles() ? ctx.profiles_revision : 0u);
   mix(ctx.settings.follow_surface ? 1u : 0u);
   mix(run.output.name != 0 ? static_cast<std::uint64_t>(run.output.internal_format) : 0u);
   mix(static_cast<std::uint64_t>(run.color.internal_format));
@@ -236,6 +238,12 @@ sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl:
     r = query_strength(ctx, frame, run);
     if (r != SSS_OK) return r;
   }
+  if (frame.profile_texture != 0) {
+    r = query(ctx, frame, frame.profile_texture, "profile_texture", "profile_format", frame.profile_format,
+              &run->profile_ids);
+    if (r == SSS_OK) r = sss::api::check_profile_texture(ctx, *run);
+    if (r != SSS_OK) return r;
+  }
   if (frame.normal_texture != 0) {
     r = query(ctx, frame, frame.normal_texture, "normal_texture", "normal_format", frame.normal_format, &run->normals);
     if (r != SSS_OK) return r;
@@ -296,15 +304,6 @@ sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint3
                                                           : sss::math::DepthEncoding::hardware_minus_one_to_one;
 }
 
-// Width 0 or no strength in any channel: the filter is the identity, so nothing is drawn unless a
-// separate output must receive the colour.
-bool is_identity(const sss::math::FilterSettings& s) {
-  if (s.world_units_per_mm == 0.0f || s.scale == 0.0f) return true;
-  // Strength applies to eq. (1) alone (the separable family); the others scatter what their profile does.
-  return s.kernel.family == sss::math::KernelFamily::separable && s.strength[0] == 0.0f && s.strength[1] == 0.0f &&
-         s.strength[2] == 0.0f;
-}
-
 // Everything of the run but the textures and rectangles: the constants from the settings, the
 // camera and the frame's geometry; the kernel; the path.
 void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run) {
@@ -324,7 +323,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
   run->kernel = &ctx.kernel;
   run->kernel_revision = ctx.kernel_revision;
   run->follow_surface = ctx.settings.follow_surface;
-  run->identity = is_identity(ctx.settings);
+  run->identity = sss::api::is_identity_settings(ctx.settings);  // nothing drawn unless an output needs the copy
   run->frame = ctx.frames + 1;
   run->path = ctx.settings.path;
   if (run->path == SSS_PATH_AUTO) run->path_key = path_key(ctx, *run, frame.flags);  // only AUTO reads it
@@ -345,6 +344,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
       sss::math::clamp_to_rect(&run->constants, run->draw_rect);
     }
   }
+  if (run->has_profiles()) sss::api::fill_profiles(ctx, &geometry, run);
 }
 
 // The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
@@ -430,6 +430,10 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
     sss::api::drain_host_errors(ctx, f);
   }
   run.verify = !steady;
+  if (run.has_profiles() && !run.identity && (ctx->create_flags & SSS_CREATE_DEBUG_CHECKS) != 0) {
+    r = sss::api::check_profile_indices(ctx, run);
+    if (r != SSS_OK) return r;
+  }
 
   r = run_passes(ctx, *frame, steady, &run);
   if (r == SSS_OK) {

@@ -2,11 +2,15 @@
 // moment of its choosing (load, resize) instead of inside the first such frame, where a shader
 // compile or a texture allocation is a visible hitch. The description is checked in full before
 // anything is built; the GPU side is gl::SeparableFilter::prewarm (gl/prewarm.cpp).
+#include <cstddef>
+#include <cstring>
+
 #include "../gl/debug_label.hpp"
 #include "../gl/state_guard.hpp"
 #include "../gl/texture_query.hpp"
 #include "context.hpp"
 #include "gl_session.hpp"
+#include "profiles.hpp"
 #include "versioned_structs.hpp"
 
 namespace {
@@ -42,14 +46,36 @@ sss_result check_strength(sss_context* ctx, const sss_prepare_desc& d) {
   return SSS_OK;
 }
 
-// Every field against its list or range, without the GL.
-sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc) {
+// profile_format: its list, single-sample, the separable mode (as sss_apply_frame takes it).
+sss_result check_profile_format(sss_context* ctx, const sss_prepare_desc& d) {
+  if (d.profile_format == 0) return SSS_OK;
+  if (!gl::is_profile_format(static_cast<gl::GLint>(d.profile_format))) {
+    return bad_format(ctx, "profile_format", d.profile_format, "0 (none), GL_R8UI (0x8232) or GL_R16UI (0x8234)");
+  }
+  if (d.samples > 1) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->profile_format with samples = %d: per-pixel profiles take "
+                "single-sample textures", d.samples);
+  }
+  if (ctx->settings.cross_bilateral) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->profile_format in the cross-bilateral mode: per-pixel profiles "
+                "run the separable mode");
+  }
+  return SSS_OK;
+}
+
+// The caller's desc in today's layout (0.3's ends before profile_format, which is then 0) into
+// *out, and every field against its list or range, without the GL.
+sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc, sss_prepare_desc* out) {
   if (desc == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc is NULL");
-  const sss_prepare_desc& d = *desc;
-  // New in 0.3 (main between 0.2 and 0.3 had the same layout).
-  const sss_result size = sss::api::check_struct_size(ctx, "desc->struct_size", "sss_prepare_desc", d.struct_size,
-                                                      {{"0.3", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
+  // New in 0.3 (main between 0.2 and 0.3 had the same layout); 0.4 added profile_format.
+  const sss_result size =
+      sss::api::check_struct_size(ctx, "desc->struct_size", "sss_prepare_desc", desc->struct_size,
+                                  {{"0.3", static_cast<uint32_t>(offsetof(sss_prepare_desc, profile_format))},
+                                   {"0.4", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
   if (size != SSS_OK) return size;
+  *out = sss_prepare_desc{};
+  std::memcpy(out, desc, desc->struct_size);
+  const sss_prepare_desc& d = *out;
   if (d.width < 1 || d.height < 1) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->width = %d, height = %d: both must be >= 1", d.width,
                 d.height);
@@ -76,7 +102,8 @@ sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc) {
     return bad_format(ctx, "stencil_format", d.stencil_format,
                       "0 (no stencil), GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");
   }
-  const sss_result r = check_strength(ctx, d);
+  sss_result r = check_strength(ctx, d);
+  if (r == SSS_OK) r = check_profile_format(ctx, d);
   if (r != SSS_OK) return r;
   if ((d.flags & ~SSS_PREPARE_ALL_FLAGS) != 0) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "desc->flags = 0x%x has unknown bits 0x%x", d.flags,
@@ -177,6 +204,11 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   run.cross_bilateral = ctx.settings.cross_bilateral;
   run.cbf_kernel = &ctx.cbf_kernel;
   run.cbf_kernel_revision = ctx.cbf_kernel_revision;
+  if (d.profile_format != 0) {
+    run.profile_ids = described(d, d.profile_format, false);
+    run.profile_ids.name = gl::kPrewarmPlaceholder;
+    sss::api::fill_profiles(ctx, nullptr, &run);  // the kernels; their constants are per frame
+  }
   return run;
 }
 
@@ -184,10 +216,12 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
 
 extern "C" {
 
-SSS_API sss_result sss_prepare(sss_context* ctx, const sss_prepare_desc* desc) {
+SSS_API sss_result sss_prepare(sss_context* ctx, const sss_prepare_desc* given) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  sss_result r = check_fields(ctx, desc);
+  sss_prepare_desc current;
+  sss_result r = check_fields(ctx, given, &current);
   if (r != SSS_OK) return r;
+  const sss_prepare_desc* desc = &current;
   const gl::Functions& f = ctx->gl;
   r = sss::api::require_current_context(ctx, f);
   if (r != SSS_OK) return r;

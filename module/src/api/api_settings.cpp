@@ -11,10 +11,9 @@
 #include "validation.hpp"
 #include "versioned_structs.hpp"
 #include "../math/fitters.hpp"
+#include "profiles.hpp"
 
-namespace {
-
-using sss::api::fail;
+namespace sss::api {
 
 sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   sss::math::FilterSettings f;
@@ -34,6 +33,13 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.path = s.path;
   return f;
 }
+
+}  // namespace sss::api
+
+namespace {
+
+using sss::api::fail;
+using sss::api::to_filter_settings;
 
 void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
   s->world_units_per_mm = f.world_units_per_mm;
@@ -114,34 +120,50 @@ sss_result update_cbf_kernel(sss_context* ctx, const sss::math::FilterSettings& 
   return SSS_OK;
 }
 
+}  // namespace
+
+namespace sss::api {
+
+sss_result build_pass_kernel(sss_context* ctx, const sss::math::FilterSettings& next, sss::math::PassKernel* out) {
+  const int family = static_cast<int>(next.kernel.family);
+  if (const sss::math::PassKernel* kept = ctx->recent_kernels.find(next)) {
+    *out = *kept;
+    log(ctx, SSS_LOG_DEBUG, "sss_set_settings: the kernel was kept from earlier settings");
+    return SSS_OK;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const sss_result r = check_profile_energy(ctx, next.kernel);
+    if (r != SSS_OK) return r;
+    *out = sss::math::build_pass_kernel(next);
+    ctx->recent_kernels.keep(next, *out);
+  } catch (const sss::math::FittersMissing& e) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "settings->kernel->family = %d: %s", family, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
+                family);
+  } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", family, e.what());
+  }
+  char note[160];
+  std::snprintf(note, sizeof note, "sss_set_settings: built the kernel (family %d, %d taps) in %.1f ms", family,
+                next.samples, milliseconds_since(start));
+  log(ctx, SSS_LOG_DEBUG, note);
+  return SSS_OK;
+}
+
+}  // namespace sss::api
+
+namespace {
+
 // The separable mode's kernel, rebuilt only when what it is built from changes, and taken from
 // ctx->recent_kernels when it was built lately (a fitted family runs an optimiser).
 sss_result update_pass_kernel(sss_context* ctx, const sss::math::FilterSettings& next) {
   if (sss::math::same_pass_kernel_inputs(next, ctx->settings)) return SSS_OK;
-  const int family = static_cast<int>(next.kernel.family);
-  if (const sss::math::PassKernel* kept = ctx->recent_kernels.find(next)) {
-    ctx->kernel = *kept;
-    sss::api::log(ctx, SSS_LOG_DEBUG, "sss_set_settings: the kernel was kept from earlier settings");
-  } else {
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      const sss_result r = check_profile_energy(ctx, next.kernel);
-      if (r != SSS_OK) return r;
-      ctx->kernel = sss::math::build_pass_kernel(next);
-      ctx->recent_kernels.keep(next, ctx->kernel);
-    } catch (const sss::math::FittersMissing& e) {
-      return fail(ctx, SSS_ERROR_UNSUPPORTED, "settings->kernel->family = %d: %s", family, e.what());
-    } catch (const std::bad_alloc&) {
-      return fail(ctx, SSS_ERROR_OUT_OF_MEMORY, "settings->kernel: out of memory building the kernel (family %d)",
-                  family);
-    } catch (const std::exception& e) {  // validation should leave nothing for the math layer to refuse
-      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->kernel (family %d): %s", family, e.what());
-    }
-    char note[160];
-    std::snprintf(note, sizeof note, "sss_set_settings: built the kernel (family %d, %d taps) in %.1f ms",
-                  family, next.samples, milliseconds_since(start));
-    sss::api::log(ctx, SSS_LOG_DEBUG, note);
-  }
+  sss::math::PassKernel built;
+  const sss_result r = sss::api::build_pass_kernel(ctx, next, &built);
+  if (r != SSS_OK) return r;
+  ctx->kernel = std::move(built);
   ++ctx->kernel_revision;
   return SSS_OK;
 }
@@ -174,6 +196,8 @@ SSS_API sss_result sss_set_settings(sss_context* ctx, const sss_settings* given)
   if (r == SSS_OK) r = update_pass_kernel(ctx, next);
   if (r != SSS_OK) return r;
   ctx->settings = next;
+  ctx->extra_profiles.clear();  // one profile: sss_set_profiles(s, 1)
+  ++ctx->profiles_revision;
   // What sss_get_settings gives back: the desc as given, its table pointing at the context's copy.
   ctx->has_kernel_desc = s->kernel != nullptr;
   if (s->kernel != nullptr) ctx->kernel_desc = *s->kernel;

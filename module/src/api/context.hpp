@@ -13,6 +13,7 @@
 #include "../math/projection.hpp"
 #include "../math/cbf_kernel.hpp"
 #include "../math/pass_kernel.hpp"
+#include "../math/profile_set.hpp"
 #include "../math/recent_kernels.hpp"
 #include "../math/separable_kernel.hpp"
 #include "sss/sss.h"
@@ -42,6 +43,10 @@ struct sss_context {
   sss_kernel_desc kernel_desc{};       // *settings.kernel as given, for sss_get_settings; its table pointers
   std::vector<float> table_radius_mm;  // point at these copies
   std::vector<float> table_rgb;
+  // Per-pixel profiles 1.. (sss_set_profiles; profile 0 is `settings` and `kernel`), and a revision
+  // that changes whenever any profile's kernel or look does (sss_set_settings clears them).
+  std::vector<sss::math::Profile> extra_profiles;
+  std::uint64_t profiles_revision = 1;
   sss::math::CbfKernel cbf_kernel;            // built from cbf_kernel_inputs (taps 0: not built yet)
   sss::math::CbfKernelInputs cbf_kernel_inputs;
   std::uint64_t cbf_kernel_revision = 1;

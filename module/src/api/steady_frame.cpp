@@ -7,17 +7,18 @@ namespace sss::api {
 
 namespace {
 
-// Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals, strength.
-std::array<std::uint32_t, 6> names_of(const sss_frame& frame) {
+// Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals, strength,
+// profile indices.
+std::array<std::uint32_t, 7> names_of(const sss_frame& frame) {
   return {frame.color_texture, frame.depth_texture, frame.output_texture,
           frame.stencil != nullptr ? frame.stencil->depth_stencil_texture : 0u, frame.normal_texture,
-          frame.strength_texture};
+          frame.strength_texture, frame.profile_texture};
 }
 
-std::array<std::uint32_t, 6> formats_of(const sss_frame& frame) {
+std::array<std::uint32_t, 7> formats_of(const sss_frame& frame) {
   return {frame.color_format, frame.depth_format, frame.output_texture != 0 ? frame.output_format : 0u,
           frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u,
-          frame.strength_texture != 0 ? frame.strength_format : 0u};
+          frame.strength_texture != 0 ? frame.strength_format : 0u, frame.profile_texture != 0 ? frame.profile_format : 0u};
 }
 
 }  // namespace
@@ -25,11 +26,12 @@ std::array<std::uint32_t, 6> formats_of(const sss_frame& frame) {
 bool is_steady(const sss_context& ctx, const sss_frame& frame) {
   const SteadyFrame& s = ctx.steady;
   if (!s.valid) return false;
-  const std::array<std::uint32_t, 6> names = names_of(frame);
-  const std::array<std::uint32_t, 6> formats = formats_of(frame);
+  const std::array<std::uint32_t, 7> names = names_of(frame);
+  const std::array<std::uint32_t, 7> formats = formats_of(frame);
   return frame_described(frame) && names == s.names && formats == s.formats &&
          frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
          frame.msaa_depth_resolve == s.msaa_depth_resolve && ctx.kernel_revision == s.kernel_revision &&
+         ctx.profiles_revision == s.profiles_revision &&
          ctx.cbf_kernel_revision == s.cbf_kernel_revision && ctx.settings.path == s.path &&
          ctx.settings.cross_bilateral == s.cross_bilateral && ctx.settings.follow_surface == s.follow_surface;
 }
@@ -41,6 +43,7 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
   run->output = s.output;
   run->normals = s.normals;
   run->strength = s.strength;
+  run->profile_ids = s.profile_ids;
   if (frame.stencil != nullptr) {
     stencil->texture = s.stencil;
     stencil->ref = frame.stencil->ref;
@@ -51,8 +54,8 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
 
 void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterRun& run) {
   SteadyFrame& s = ctx->steady;
-  const std::array<std::uint32_t, 6> names = names_of(frame);
-  const std::array<std::uint32_t, 6> formats = formats_of(frame);
+  const std::array<std::uint32_t, 7> names = names_of(frame);
+  const std::array<std::uint32_t, 7> formats = formats_of(frame);
   s.valid = frame_described(frame);  // an undescribed frame is asked again every time
   s.names = names;
   s.formats = formats;
@@ -61,6 +64,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.frame_flags = frame.flags;
   s.msaa_depth_resolve = frame.msaa_depth_resolve;
   s.kernel_revision = ctx->kernel_revision;
+  s.profiles_revision = ctx->profiles_revision;
   s.cbf_kernel_revision = ctx->cbf_kernel_revision;
   s.path = ctx->settings.path;
   s.cross_bilateral = ctx->settings.cross_bilateral;
@@ -71,6 +75,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.output = run.output;
   s.normals = run.normals;
   s.strength = run.strength;
+  s.profile_ids = run.profile_ids;
   s.stencil = run.stencil != nullptr ? run.stencil->texture : gl::TextureInfo{};
 }
 
@@ -82,6 +87,8 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   scope.multisample = msaa;
   scope.stencil = frame.stencil != nullptr || path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || msaa;
   scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1;
+  scope.profiles = frame.profile_texture != 0;
+  scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;
 }
 

@@ -103,6 +103,10 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->strength_texture = %u is the colour texture: pass 0 to read the strength from its alpha",
                 frame->strength_texture);
   }
+  if (frame->profile_texture != 0 && frame->profile_texture == frame->color_texture) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->profile_texture = %u is the colour texture",
+                frame->profile_texture);
+  }
   if (frame->stencil != nullptr && (frame->stencil->ref > 255u || frame->stencil->mask > 255u)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "stencil ref = %u, mask = %u: both must be in [0, 255]",
                 frame->stencil->ref, frame->stencil->mask);
@@ -115,7 +119,8 @@ bool frame_described(const sss_frame& frame) {
          (frame.output_texture == 0 || frame.output_format != 0) &&
          (frame.stencil == nullptr || frame.stencil_format != 0) &&
          (frame.normal_texture == 0 || frame.normal_format != 0) &&
-         (frame.strength_texture == 0 || frame.strength_format != 0);
+         (frame.strength_texture == 0 || frame.strength_format != 0) &&
+         (frame.profile_texture == 0 || frame.profile_format != 0);
 }
 
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
@@ -135,6 +140,9 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
       !gl::is_alpha_free_color_format(format(frame.color_format))) {
     return bad("color_format", frame.color_format,
                "GL_RGBA16F (0x881A), GL_RGBA32F (0x8814) or, with strength_texture, GL_R11F_G11F_B10F (0x8C3A)");
+  }
+  if (frame.profile_format != 0 && !gl::is_profile_format(format(frame.profile_format))) {
+    return bad("profile_format", frame.profile_format, "GL_R8UI (0x8232) or GL_R16UI (0x8234)");
   }
   if (frame.strength_format != 0 && !gl::is_strength_format(format(frame.strength_format))) {
     return bad("strength_format", frame.strength_format, "GL_R8 (0x8229), GL_R16F (0x822D) or GL_R32F (0x822E)");

@@ -100,7 +100,7 @@ std::uint32_t profile_to_legacy(std::uint32_t profile) {
 sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, CurrentSettings* out) {
   if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
   const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", in->struct_size,
-                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3", kSettings03}});
+                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3, 0.4", kSettings03}});
   if (r != SSS_OK) return r;
   if (in->struct_size == kSettings03) {
     out->settings = *in;
@@ -130,7 +130,7 @@ sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, Curren
 
 sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss_settings* out) {
   const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", out->struct_size,
-                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3", kSettings03}});
+                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3, 0.4", kSettings03}});
   if (r != SSS_OK) return r;
   if (out->struct_size == kSettings03) {
     *out = current;
@@ -156,14 +156,21 @@ sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss
   return SSS_OK;
 }
 
+// 0.3's sss_frame: today's fields up to profile_texture, its size rounded up to the struct's
+// alignment (112 bytes on LP64, where the bytes after strength_format are padding; 108 on wasm32).
+constexpr auto kFrameFields03 = static_cast<std::uint32_t>(offsetof(sss_frame, profile_texture));
+constexpr auto kFrameSize03 =
+    static_cast<std::uint32_t>((kFrameFields03 + alignof(sss_frame) - 1) / alignof(sss_frame) * alignof(sss_frame));
+
 sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* out) {
   if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame is NULL");
-  const sss_result r =
-      check_struct_size(ctx, "frame->struct_size", "sss_frame", in->struct_size,
-                        {{"0.1, 0.2", legacy::kFrameSize02}, {"0.3", static_cast<std::uint32_t>(sizeof(sss_frame))}});
+  const sss_result r = check_struct_size(
+      ctx, "frame->struct_size", "sss_frame", in->struct_size,
+      {{"0.1, 0.2", legacy::kFrameSize02}, {"0.3", kFrameSize03}, {"0.4", static_cast<std::uint32_t>(sizeof(sss_frame))}});
   if (r != SSS_OK) return r;
   *out = sss_frame{};
-  std::memcpy(static_cast<void*>(out), in, in->struct_size);
+  // An earlier release's fields only: its padding is not today's fields.
+  std::memcpy(static_cast<void*>(out), in, in->struct_size == kFrameSize03 ? kFrameFields03 : in->struct_size);
   out->struct_size = sizeof(sss_frame);
   return SSS_OK;
 }

@@ -1,5 +1,7 @@
 #include "blur_pass.hpp"
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "texture_units.hpp"
@@ -14,6 +16,7 @@ BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outsi
   v.linear_depth = run.constants.linear_depth;
   v.jitter = run.kernel->jittered();
   v.accumulate = axis == 1 && term > 0;
+  v.profile_ids = run.has_profiles();
   return v;
 }
 
@@ -29,12 +32,14 @@ namespace {
 // taps per side, the first that jitters and the depth Gaussian of the term.
 void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& run, const math::PassTerm& t,
                    const math::PassTaps& taps) {
-  const math::FootprintTable& table = taps.footprint;
-  std::vector<float> packed;
-  packed.reserve(table.half_cdf.size() * 4);
-  for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
-  f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
-  f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+  if (p.cdf >= 0) {  // a per-pixel profile variant reads its tables from a uniform block instead
+    const math::FootprintTable& table = taps.footprint;
+    std::vector<float> packed;
+    packed.reserve(table.half_cdf.size() * 4);
+    for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
+    f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+    f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+  }
   const std::vector<float>& spacing = run.kernel->spacing;
   if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
   f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
@@ -66,11 +71,28 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
   f.Uniform1i(p.round_to_half, writes_half_float(f, run, term, axis) ? 1 : 0);
+  if (p.profile >= 0) {
+    // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
+    std::array<float, 4 * math::kMaxProfiles> looks{};
+    for (int i = 0; i < run.profile_count; ++i) {
+      const auto look = math::profile_pass_vector(run.profile_constants[static_cast<std::size_t>(i)],
+                                                  run.profile_kernels[static_cast<std::size_t>(i)]->terms[term], axis);
+      std::copy(look.begin(), look.end(), looks.begin() + 4 * i);
+    }
+    f.Uniform4fv(p.profile, run.profile_count, looks.data());
+    f.Uniform1i(p.profile_count, run.profile_count);
+  }
 }
 
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {
   bind_texture(ctx, unit::source, source, ctx.objects.sampler);
   bind_texture(ctx, unit::depth, depth, ctx.objects.depth_sampler);
+}
+
+void bind_profile_inputs(PassContext& ctx, const FilterRun& run, int axis) {
+  // An integer texture is incomplete under GL_LINEAR, even for texelFetch: the nearest sampler.
+  bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  ctx.profile_tables->bind(axis);
 }
 
 }  // namespace sss::gl

@@ -48,6 +48,7 @@ const char* compute_unavailable(const Functions& gl, const FilterRun& run) {
   if (run.color.multisampled()) return "the colour is multisampled";
   if (run.cross_bilateral) return "the cross-bilateral mode runs as fragment passes";
   if (run.stencil != nullptr) return "a stencil mask needs the fragment passes' stencil test";
+  if (run.has_profiles()) return "per-pixel profiles (profile_texture) run on the fragment passes";
   if (run.kernel == nullptr || run.kernel->terms.size() != 1) return "the kernel has several terms";
   if (image_format_index(run.target().internal_format) < 0) {
     return "the target's format has no image format (RGBA16F, RGBA32F or R11F_G11F_B10F)";

@@ -11,6 +11,7 @@
 #include "../math/cbf_kernel.hpp"
 #include "../math/filter_constants.hpp"
 #include "../math/pass_kernel.hpp"
+#include "../math/profile_set.hpp"
 #include "sss/sss.h"
 #include "texture_query.hpp"
 
@@ -45,6 +46,16 @@ struct FilterRun {
   const math::PassKernel* kernel = nullptr;  // one pair of passes per term
   std::uint64_t kernel_revision = 0;       // changes whenever the kernel does
   math::PassConstants constants;
+  // Per-pixel profiles (sss_frame.profile_texture; name 0: none, and the fields below are unused):
+  // the host's R8UI/R16UI indices, and profile_count profiles' kernels ([0] is `kernel`; one term
+  // each when there are several) with their per-frame constants (pixels per millimetre, the
+  // follow-surface factor). profiles_revision changes whenever a kernel does.
+  TextureInfo profile_ids;
+  int profile_count = 1;
+  std::array<const math::PassKernel*, math::kMaxProfiles> profile_kernels{};
+  std::array<math::PassConstants, math::kMaxProfiles> profile_constants{};
+  std::uint64_t profiles_revision = 0;
+  bool has_profiles() const { return profile_ids.name != 0; }
   bool follow_surface = false;
   bool identity = false;                   // nothing to blur: only copy into a separate output
   std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)

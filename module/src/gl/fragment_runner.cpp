@@ -55,6 +55,7 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
   set_blur_uniforms(ctx, p, run, term, axis);
   bind_blur_inputs(ctx, source, run.depth.name);
+  if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
   ctx.gl.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
 }

@@ -71,6 +71,8 @@ std::string format_name(GLint internal_format) {
     case R16F: return "GL_R16F";
     case R32F: return "GL_R32F";
     case R8: return "GL_R8";
+    case R8UI: return "GL_R8UI";
+    case R16UI: return "GL_R16UI";
     case R11F_G11F_B10F: return "GL_R11F_G11F_B10F";
     case DEPTH_COMPONENT16: return "GL_DEPTH_COMPONENT16";
     case DEPTH_COMPONENT24: return "GL_DEPTH_COMPONENT24";

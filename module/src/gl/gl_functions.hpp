@@ -112,7 +112,21 @@ using GLubyte = unsigned char;
   X(void, PixelStorei, (GLenum pname, GLint param))                                                   \
   X(void, ClearBufferfv, (GLenum buffer, GLint drawbuffer, const GLfloat* value))                   \
   X(void, GetIntegeri_v, (GLenum target, GLuint index, GLint * data))                                  \
-  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))
+  X(void, ClearBufferiv, (GLenum buffer, GLint drawbuffer, const GLint* value))                    \
+  X(void, ReadPixels, (GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,    \
+                       void* pixels))                                                                  \
+  X(void, GenBuffers, (GLsizei n, GLuint * buffers))                                                   \
+  X(void, DeleteBuffers, (GLsizei n, const GLuint* buffers))                                           \
+  X(GLboolean, IsBuffer, (GLuint buffer))                                                              \
+  X(void, BufferData, (GLenum target, std::ptrdiff_t size, const void* data, GLenum usage))            \
+  X(void, BufferSubData, (GLenum target, std::ptrdiff_t offset, std::ptrdiff_t size, const void* data)) \
+  X(void, BindBufferBase, (GLenum target, GLuint index, GLuint buffer))                                \
+  X(void, BindBufferRange, (GLenum target, GLuint index, GLuint buffer, std::ptrdiff_t offset,         \
+                            std::ptrdiff_t size))                                                      \
+  X(void, GetInteger64i_v, (GLenum target, GLuint index, std::int64_t * data))                         \
+  X(GLuint, GetUniformBlockIndex, (GLuint program, const GLchar* name))                                \
+  X(void, UniformBlockBinding, (GLuint program, GLuint block_index, GLuint binding))                   \
+  X(void, Uniform1ui, (GLint location, GLuint v0))
 
 // Compute shaders and image load/store (desktop OpenGL 4.3+): the compute path of the separable
 // filter (sss.h SSS_PATH_*). Loaded on desktop GL 4.3+ only; has_compute says they are there.
@@ -187,6 +201,9 @@ struct Functions {
 bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const Api& api, Functions* out,
                     std::string* missing);
 
+// glGetUniformBlockIndex's "no such block".
+inline constexpr GLuint kInvalidIndex = 0xFFFFFFFFu;
+
 // GL constants used by the module (values from the Khronos registry).
 enum : GLenum {
   NO_ERROR = 0,
@@ -243,6 +260,24 @@ enum : GLenum {
   R16F = 0x822D,
   R32F = 0x822E,
   R8 = 0x8229,
+  R8UI = 0x8232,
+  R16UI = 0x8234,
+  RGBA_INTEGER = 0x8D99,
+  UNSIGNED_INT = 0x1405,
+  UNIFORM_BUFFER = 0x8A11,
+  UNIFORM_BUFFER_BINDING = 0x8A28,
+  UNIFORM_BUFFER_START = 0x8A29,
+  UNIFORM_BUFFER_SIZE = 0x8A2A,
+  MAX_UNIFORM_BLOCK_SIZE = 0x8A30,
+  UNIFORM_BUFFER_OFFSET_ALIGNMENT = 0x8A34,
+  DYNAMIC_DRAW = 0x88E8,
+  BUFFER = 0x82E0,
+  PIXEL_PACK_BUFFER = 0x88EB,
+  PIXEL_PACK_BUFFER_BINDING = 0x88ED,
+  PACK_ROW_LENGTH = 0x0D02,
+  PACK_SKIP_ROWS = 0x0D03,
+  PACK_SKIP_PIXELS = 0x0D04,
+  PACK_ALIGNMENT = 0x0D05,
   R11F_G11F_B10F = 0x8C3A,
   DEPTH_COMPONENT16 = 0x81A5,
   DEPTH_COMPONENT24 = 0x81A6,

@@ -35,28 +35,32 @@ void PassObjects::create(const Functions& f, bool labels) {
   f.BindVertexArray(vertex_array);  // a vertex array name becomes an object on first bind
   // Samplers override whatever parameters the host set on its own textures, which the module
   // never changes.
-  GLuint samplers[2] = {0, 0};
-  f.GenSamplers(2, samplers);
+  GLuint samplers[3] = {0, 0, 0};
+  f.GenSamplers(3, samplers);
   sampler = samplers[0];
   depth_sampler = samplers[1];
+  nearest_sampler = samplers[2];
   set_sampler(f, sampler, LINEAR);
   set_sampler(f, depth_sampler, f.api.es ? NEAREST : LINEAR);
+  set_sampler(f, nearest_sampler, NEAREST);
   sampler_tag = next_sampler_tag();
   f.SamplerParameterf(sampler, TEXTURE_MAX_LOD, sampler_tag);
   label_object(f, labels, VERTEX_ARRAY, vertex_array, "sss fullscreen triangle");
   label_object(f, labels, SAMPLER, sampler, "sss bilinear clamp");
   label_object(f, labels, SAMPLER, depth_sampler, "sss depth clamp");
+  label_object(f, labels, SAMPLER, nearest_sampler, "sss nearest clamp");
 }
 
 void PassObjects::destroy(const Functions& f) {
-  const GLuint samplers[2] = {sampler, depth_sampler};
-  f.DeleteSamplers(2, samplers);
+  const GLuint samplers[3] = {sampler, depth_sampler, nearest_sampler};
+  f.DeleteSamplers(3, samplers);
   if (vertex_array != 0) f.DeleteVertexArrays(1, &vertex_array);
   *this = PassObjects{};
 }
 
 bool PassObjects::present(const Functions& f) const {
-  if (vertex_array == 0 || !f.IsVertexArray(vertex_array) || !f.IsSampler(sampler) || !f.IsSampler(depth_sampler)) {
+  if (vertex_array == 0 || !f.IsVertexArray(vertex_array) || !f.IsSampler(sampler) || !f.IsSampler(depth_sampler) ||
+      !f.IsSampler(nearest_sampler)) {
     return false;
   }
   GLfloat tag = -1.0f;

@@ -10,19 +10,21 @@
 #include "filter_run.hpp"
 #include "gl_functions.hpp"
 #include "pass_queries.hpp"
+#include "profile_tables.hpp"
 #include "program_cache.hpp"
 #include "target_pool.hpp"
 
 namespace sss::gl {
 
 // The objects that do not depend on a frame's size: the full-screen triangle's vertex array and
-// the two samplers. The colour sampler's maximum LOD carries a tag unique to this instance in the
+// the three samplers. The colour sampler's maximum LOD carries a tag unique to this instance in the
 // process, which tells a context holding the module's objects from one that does not
 // (SeparableFilter::objects_present).
 struct PassObjects {
   GLuint vertex_array = 0;
   GLuint sampler = 0;        // bilinear, clamped, no depth comparison
   GLuint depth_sampler = 0;  // the same, GL_NEAREST on ES (a depth texture is incomplete otherwise)
+  GLuint nearest_sampler = 0;  // GL_NEAREST everywhere: integer textures (the profile indices)
   GLfloat sampler_tag = 0.0f;
 
   void create(const Functions& gl, bool labels);
@@ -41,6 +43,7 @@ struct PassContext {
   // glCheckFramebufferStatus on each framebuffer the run attaches (SeparableFilter::run decides:
   // off only where an earlier successful run checked the same attachments).
   bool check_framebuffers = true;
+  ProfileTables* profile_tables = nullptr;  // the per-pixel profiles' uniform buffer
 };
 
 // The measurement of one frame's passes (sss_get_stats): every call is a no-op when the run is not

@@ -57,8 +57,13 @@ sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* 
 
 sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, nullptr};
+  ctx.profile_tables = &profile_tables_;
   FilterRun run = described;
   run.identity = false;  // what identity settings skip is prepared too: a superset costs only time here
+  if (run.has_profiles()) {  // the tables' buffer, made and filled now
+    const sss_result r = profile_tables_.upload(run, message);
+    if (r != SSS_OK) return r;
+  }
   if (run.strength.name != 0) {  // the passes run on the colour with the strength as alpha
     const sss_result r = prepare_strength_source(ctx, run, message);
     if (r != SSS_OK) return r;

@@ -84,19 +84,24 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   BlurProgram& p = blur_[static_cast<std::size_t>(blur_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = blur_defines(v);
+  const std::string defines = blur_defines(v, profile_capacity_);
   p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d",
+  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d profiles=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0);
+                v.accumulate ? 1 : 0, v.profile_ids ? 1 : 0);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
   set_unit(p.program, p.source, unit::source);
   set_unit(p.program, p.depth, unit::depth);
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
+  set_unit(p.program, p.profile_ids, unit::profile_ids);
+  if (v.profile_ids) {  // the tables' block on binding point 0 (ProfileTables::bind)
+    const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
+    if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
+  }
   return SSS_OK;
 }
 
@@ -146,6 +151,9 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.profile_ids = f.GetUniformLocation(p.program, "u_profile_ids");
+  p.profile = f.GetUniformLocation(p.program, "u_profile");
+  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }
 
 sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,

@@ -33,6 +33,7 @@ struct BlurProgram {
         axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint rect = -1;  // compute programs only
+  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   bool compute = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
@@ -74,6 +75,8 @@ class ProgramCache {
   void destroy();  // deletes the programs (they must exist in the current context), then forget()s
   void forget();   // drops the names (context lost)
 
+  // SSS_PROFILES of the per-pixel profile variants (ProfileTables::capacity); before init().
+  void set_profile_capacity(int profiles) { profile_capacity_ = profiles; }
   GLuint copy() const { return copy_; }
   sss_result blur(const BlurVariant& v, BlurProgram** out, std::string* message);
   // The compute variant of `v` (SSS_ACCUMULATE unset) writing image format `image_format`.
@@ -103,6 +106,7 @@ class ProgramCache {
   const Functions* gl_ = nullptr;
   GlslVariant variant_ = GlslVariant::glsl330;
   bool labels_ = false;
+  int profile_capacity_ = SSS_MAX_PROFILES;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
   std::array<BlurProgram, kBlurVariantCount> blur_{};

@@ -17,6 +17,8 @@ sss_result SeparableFilter::init(const Functions* gl, GlslVariant variant, bool 
   GLint bits = 0;
   if (!software_renderer_ && !gl_->api.es) f.GetQueryiv(TIME_ELAPSED, QUERY_COUNTER_BITS, &bits);
   chooser_.init(gl_, bits > 0);
+  profile_tables_.init(gl_, labels_);
+  programs_.set_profile_capacity(profile_tables_.capacity());
   return programs_.init(gl_, variant_, labels_, &log_, message);
 }
 
@@ -24,6 +26,7 @@ void SeparableFilter::destroy() {
   if (gl_ == nullptr) return;
   programs_.destroy();
   targets_.destroy();
+  profile_tables_.destroy();
   objects_.destroy(*gl_);
   queries_.destroy();
   chooser_.destroy();
@@ -42,6 +45,7 @@ void SeparableFilter::forget() {
   objects_ = PassObjects{};
   programs_.forget();
   targets_.forget();
+  profile_tables_.forget();
   queries_ = PassQueries{};
   chooser_ = PathChooser{};
   last_draws_ = 0;
@@ -97,6 +101,11 @@ void SeparableFilter::note_compute_refusal(const char* reason) {
 sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   PassContext ctx{*gl_, programs_, targets_, objects_, labels_, measure_ ? &queries_ : nullptr};
   ctx.check_framebuffers = given.verify;
+  ctx.profile_tables = &profile_tables_;
+  if (given.has_profiles() && !given.identity) {  // before the first draw: it can fail
+    const sss_result r = profile_tables_.upload(given, message);
+    if (r != SSS_OK) return r;
+  }
   // A strength texture: the passes run on the colour with it as alpha (strength_source.cpp); in
   // place with nothing to blur, nothing changes (as without one).
   FilterRun with_strength;

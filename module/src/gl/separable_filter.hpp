@@ -2,6 +2,7 @@
 // how each frame's passes run. The work is split by job:
 //   program_cache.hpp  every program variant, built on first use or at create
 //   target_pool.hpp    the render targets and framebuffers, reallocated when a frame's size changes
+//   profile_tables.hpp the per-pixel profiles' kernel tables (a uniform buffer)
 //   pass_setup.hpp     what every path shares (vertex array, samplers, attachments, measurements)
 //   runners.hpp        one runner per path: fragment (and cross-bilateral), masked, compute, MSAA
 //   path_chooser.hpp   SSS_PATH_AUTO's timing of the paths
@@ -32,6 +33,8 @@ class SeparableFilter {
   // broken driver fails at create. Returns SSS_OK or an error with `message` set.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, std::string* message);
   GlslVariant variant() const { return variant_; }
+  // How many per-pixel profiles the passes can hold (sss_set_profiles' limit; known after init()).
+  int profile_capacity() const { return profile_tables_.capacity(); }
   // Measurements for sss_get_stats; call before init(). Off by default: no query objects exist.
   void enable_measurements(bool es_timer_extension) {
     measure_ = true;
@@ -88,6 +91,7 @@ class SeparableFilter {
   PassObjects objects_;
   ProgramCache programs_;
   TargetPool targets_;
+  ProfileTables profile_tables_;
   PassQueries queries_;
   PathChooser chooser_;
   int last_draws_ = 0;

@@ -8,7 +8,8 @@
 namespace sss::gl {
 
 int blur_variant_index(const BlurVariant& v) {
-  int index = static_cast<int>(v.outside) * 3 + v.follow_surface;
+  int index = (v.profile_ids ? 3 : 0) + static_cast<int>(v.outside);
+  index = index * 3 + v.follow_surface;
   index = index * 2 + (v.linear_depth ? 1 : 0);
   index = index * 2 + (v.jitter ? 1 : 0);
   return index * 2 + (v.accumulate ? 1 : 0);
@@ -23,18 +24,20 @@ BlurVariant blur_variant_at(int index) {
   v.linear_depth = index % 2 != 0;
   index /= 2;
   v.follow_surface = index % 3;
-  v.outside = static_cast<BlurOutside>(index / 3);
+  index /= 3;
+  v.outside = static_cast<BlurOutside>(index % 3);
+  v.profile_ids = index / 3 != 0;
   return v;
 }
 
-std::string blur_defines(const BlurVariant& v) {
-  char defines[320];
+std::string blur_defines(const BlurVariant& v, int profiles) {
+  char defines[384];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
                 "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
-                "#define SSS_MAX_HALF_TAPS %d\n",
+                "#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS %d\n#define SSS_PROFILES %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps);
+                v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids ? 1 : 0, profiles);
   return defines;
 }
 

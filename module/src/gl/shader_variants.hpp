@@ -22,12 +22,15 @@ struct BlurVariant {
   BlurOutside outside = BlurOutside::write_centre;
   int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
   bool linear_depth = false, jitter = false, accumulate = false;
+  bool profile_ids = false;  // per-pixel profiles (SSS_PROFILE_IDS): fragment passes only
 };
-inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2;
+inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
 // A variant's index in [0, kBlurVariantCount), and the variant at an index.
 int blur_variant_index(const BlurVariant& v);
 BlurVariant blur_variant_at(int index);
-std::string blur_defines(const BlurVariant& v);
+// `profiles`: SSS_PROFILES, the profiles the per-pixel variant's uniform block holds (the context's
+// ProfileTables::capacity; SSS_MAX_PROFILES where the GL's block size allows).
+std::string blur_defines(const BlurVariant& v, int profiles = SSS_MAX_PROFILES);
 
 // The compute path's target image formats (every colour and output format the path takes).
 struct ComputeImageFormat {

@@ -49,6 +49,16 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
     gl_.GetIntegeri_v(IMAGE_BINDING_ACCESS, 0, &image_unit_.access);
     gl_.GetIntegeri_v(IMAGE_BINDING_FORMAT, 0, &image_unit_.format);
   }
+  if (scope_.profiles) {
+    gl_.GetIntegerv(UNIFORM_BUFFER_BINDING, &uniform_buffer_);
+    gl_.GetIntegeri_v(UNIFORM_BUFFER_BINDING, 0, &uniform_buffer0_);
+    gl_.GetInteger64i_v(UNIFORM_BUFFER_START, 0, &uniform_buffer0_start_);
+    gl_.GetInteger64i_v(UNIFORM_BUFFER_SIZE, 0, &uniform_buffer0_size_);
+  }
+  if (scope_.pack) {
+    gl_.GetIntegerv(PIXEL_PACK_BUFFER_BINDING, &pack_buffer_);
+    for (std::size_t i = 0; i < kPackParameters.size(); ++i) gl_.GetIntegerv(kPackParameters[i], &pack_[i]);
+  }
   if (!scope_.stencil) return;
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
@@ -150,12 +160,34 @@ StateGuard::~StateGuard() {
                          image_unit_.layer, static_cast<GLenum>(image_unit_.access),
                          static_cast<GLenum>(image_unit_.format));
   }
+  if (scope_.profiles && restore(restore_group::uniform_buffer)) restore_uniform_buffer();
+  if (scope_.pack && restore(restore_group::pack_state)) {
+    gl_.BindBuffer(PIXEL_PACK_BUFFER, static_cast<GLuint>(pack_buffer_));
+    for (std::size_t i = 0; i < kPackParameters.size(); ++i) gl_.PixelStorei(kPackParameters[i], pack_[i]);
+  }
   if (restore(restore_group::vertex_array)) gl_.BindVertexArray(static_cast<GLuint>(vertex_array_));
   // A program the host deleted while it was current lives on only while current: once the
   // passes bound another, it is gone and binding its name would raise GL_INVALID_VALUE. Zero is
   // what the host's own next glUseProgram would have found then.
   const GLuint program = static_cast<GLuint>(program_);
   if (restore(restore_group::program)) gl_.UseProgram(program != 0 && gl_.IsProgram(program) ? program : 0);
+}
+
+void StateGuard::restore_uniform_buffer() const {
+  // Binding point 0 as a range, or whole (size 0: glBindBufferBase); a buffer the host deleted
+  // meanwhile left the binding by itself, so its name restores as 0. The generic binding last:
+  // glBindBufferBase/Range set it too.
+  const GLuint name = static_cast<GLuint>(uniform_buffer0_);
+  if (name == 0 || !gl_.IsBuffer(name)) {
+    gl_.BindBufferBase(UNIFORM_BUFFER, 0, 0);
+  } else if (uniform_buffer0_size_ == 0) {
+    gl_.BindBufferBase(UNIFORM_BUFFER, 0, name);
+  } else {
+    gl_.BindBufferRange(UNIFORM_BUFFER, 0, name, static_cast<std::ptrdiff_t>(uniform_buffer0_start_),
+                        static_cast<std::ptrdiff_t>(uniform_buffer0_size_));
+  }
+  const GLuint generic = static_cast<GLuint>(uniform_buffer_);
+  gl_.BindBuffer(UNIFORM_BUFFER, generic != 0 && gl_.IsBuffer(generic) ? generic : 0);
 }
 
 void set_pass_state(const Functions& gl) {

@@ -37,15 +37,17 @@ enum : uint32_t {
   vertex_array = 1u << 15,
   program = 1u << 16,
   image_unit = 1u << 17,         // image unit 0 (the compute path's target), GL 4.3+
-  all = (1u << 18) - 1u
+  uniform_buffer = 1u << 18,     // uniform buffer binding 0 and the generic one (per-pixel profiles)
+  pack_state = 1u << 19,         // pack buffer, alignment, row length, skips (debug checks' readback)
+  all = (1u << 20) - 1u
 };
 }  // namespace restore_group
 #ifdef SSS_STATE_GUARD_TEST_HOOK
 std::atomic<uint32_t>& restore_skip_mask_for_tests();  // 0: restore everything
 #endif
 
-// Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals.
-constexpr int kUnitCount = 4;
+// Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals, 4 profile indices.
+constexpr int kUnitCount = 5;
 
 // The parts of the list a call may change; everything else is saved always. The default is all.
 struct GuardScope {
@@ -56,6 +58,8 @@ struct GuardScope {
                              // GL_MULTISAMPLE: the MSAA path, and the texture query's probe of a
                              // texture's target
   bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
+  bool profiles = true;      // texture unit 4 and uniform buffer binding 0: per-pixel profiles
+  bool pack = false;         // the pack state: the debug checks read the profile indices back
 };
 
 class StateGuard {
@@ -81,7 +85,10 @@ class StateGuard {
   void save_stencil_face(GLenum func, GLenum ref, GLenum value_mask, GLenum fail, GLenum depth_fail,
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
   void restore_stencil_face(GLenum face_enum, const StencilFace& face) const;
-  int units() const { return scope_.unit3 ? kUnitCount : kUnitCount - 1; }
+  void restore_uniform_buffer() const;
+  static constexpr std::array<GLenum, 4> kPackParameters = {PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS,
+                                                              PACK_SKIP_PIXELS};
+  int units() const { return scope_.profiles ? kUnitCount : scope_.unit3 ? kUnitCount - 1 : kUnitCount - 2; }
   // GL_SAMPLE_MASK_VALUE and GL_MULTISAMPLE: set by the desktop MSAA write-back only (never on ES).
   bool msaa_write_back_in_scope() const { return scope_.multisample && gl_.has_msaa_path(); }
 
@@ -107,6 +114,12 @@ class StateGuard {
     GLint name = 0, level = 0, layer = 0, access = 0, format = 0;
     GLboolean layered = 0;
   } image_unit_;
+  // Uniform buffer binding point 0 (name, range) and the generic GL_UNIFORM_BUFFER binding.
+  GLint uniform_buffer_ = 0, uniform_buffer0_ = 0;
+  std::int64_t uniform_buffer0_start_ = 0, uniform_buffer0_size_ = 0;
+  // GL_PIXEL_PACK_BUFFER binding, then alignment, row length, skip rows, skip pixels.
+  GLint pack_buffer_ = 0;
+  std::array<GLint, 4> pack_{};
 };
 
 // Sets the fixed-function state the passes need (after a StateGuard saved it): everything that

@@ -85,6 +85,8 @@ bool is_strength_format(GLint f) {
   return f == static_cast<GLint>(R8) || f == static_cast<GLint>(R16F) || f == static_cast<GLint>(R32F);
 }
 
+bool is_profile_format(GLint f) { return f == static_cast<GLint>(R8UI) || f == static_cast<GLint>(R16UI); }
+
 bool is_depth_stencil_format(GLint f) {
   return f == static_cast<GLint>(DEPTH24_STENCIL8) || f == static_cast<GLint>(DEPTH32F_STENCIL8);
 }

@@ -1,6 +1,6 @@
 // The texture units the module's programs read from. They are fixed per program (set once after
 // linking, or by layout(binding) in GLSL 4.20: module/shaders/*), so a frame binds textures and
-// never changes a sampler uniform. Units 0-3 are in the StateGuard's list (sss.h).
+// never changes a sampler uniform. Units 0-4 are in the StateGuard's list (sss.h).
 #pragma once
 
 #include "gl_functions.hpp"
@@ -13,6 +13,7 @@ constexpr GLuint depth = 1;        // the host's depth (or the MSAA path's resol
 constexpr GLuint original = 2;     // the host's colour, read by a pass writing a separate output
 constexpr GLuint normals = 3;      // the cross-bilateral mode's host normals
 constexpr GLuint accumulated = 3;  // the earlier terms' sum (separable kernels of several terms)
+constexpr GLuint profile_ids = 4;  // the host's per-pixel profile and object indices (sss_frame.profile_texture)
 // The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;
 
