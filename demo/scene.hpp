@@ -40,9 +40,6 @@ struct MaterialLook {
   glm::vec3 emission{0.0f};         // linear radiance added unlit (the candle's flame), never scattered
 };
 
-// Whether frames of the scene hand the library its profile/object byte (several profiles or objects).
-inline bool uses_profiles(const DemoScene &scene) { return scene.profiles.size() > 1 || !scene.object_names.empty(); }
-
 // The byte the G-buffer's profile attachment gets for a material (object IDs off: the profile alone).
 inline unsigned profile_byte(const MaterialLook &look, bool object_ids) {
   return static_cast<unsigned>(look.profile & 15) | (object_ids ? static_cast<unsigned>(look.object & 15) << 4 : 0u);
@@ -88,6 +85,10 @@ struct DemoScene {
 };
 
 constexpr int kMaxLights = 2;
+
+// Whether frames of the scene hand the library its profile/object byte (several profiles or objects).
+inline bool uses_profiles(const DemoScene &scene) { return scene.profiles.size() > 1 || !scene.object_names.empty(); }
+
 
 // The Lee Perry-Smith head scan from the shared assets (sss_assets::head_path()).
 DemoScene load_head_scene();

@@ -85,6 +85,12 @@ std::vector<MethodConfig> method_configs(const Options& o) {
     for (int taps : o.family_taps) configs.push_back({k.name, taps, true});
   }
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
+  if (!o.methods.empty()) {
+    const auto unwanted = [&o](const MethodConfig& c) {
+      return std::find(o.methods.begin(), o.methods.end(), c.kind) == o.methods.end();
+    };
+    configs.erase(std::remove_if(configs.begin(), configs.end(), unwanted), configs.end());
+  }
   return configs;
 }
 
@@ -315,16 +321,17 @@ int run(const Options& options) {
   for (std::size_t i = 0; i < options.sizes.size(); ++i) {
     for (const std::string& name : scenes_at(i)) jobs.push_back({name, options.sizes[i].first, options.sizes[i].second, 0.0});
   }
+  const std::vector<MethodConfig> configs = method_configs(options);
+  const auto sweep_count = static_cast<std::size_t>(
+      std::count_if(configs.begin(), configs.end(), [&](const MethodConfig& c) { return runs_on_sweep(c, options); }));
   for (const std::string& name : options.sweep_scenes.empty() ? footprint_scene_names() : options.sweep_scenes) {
+    if (sweep_count == 0) break;  // --methods left nothing that runs on the sweep
     for (double f : options.footprints) {
       const int side = sweep_frame_side(f, options.sweep_interior_px, reach_mm);
       jobs.push_back({name, side, side, f});
     }
   }
   info.reach_mm = reach_mm;
-  const std::vector<MethodConfig> configs = method_configs(options);
-  const auto sweep_count = static_cast<std::size_t>(
-      std::count_if(configs.begin(), configs.end(), [&](const MethodConfig& c) { return runs_on_sweep(c, options); }));
   std::size_t total = 0;
   for (const SceneJob& job : jobs) total += (job.footprint_mm > 0.0 ? sweep_count : configs.size()) + 1;
   std::size_t done = 0;
