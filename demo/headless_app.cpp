@@ -189,7 +189,7 @@ bool write_text(const std::string &path, const std::string &text) {
 }
 
 std::string readme(const Options &o, const Context &context, const DemoScene &scene, const std::string &settings,
-                   const std::vector<PresetReport> &reports) {
+                   const std::vector<PresetReport> &reports, const std::string &profile_note) {
   std::string t =
       "sss_demo --headless: screen-space separable subsurface scattering (Jimenez et al. 2012)\n\n"
       "For each camera preset (close = close-up, mid = mid shot, far = far shot):\n"
@@ -210,6 +210,7 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
   t += "size         " + std::to_string(o.width) + "x" + std::to_string(o.height) + "\n";
   t += "settings     " + settings + "\n";
   t += "materials    " + profile_legend(scene, controls_from_options(o)) + "\n";
+  if (!profile_note.empty()) t += "             " + profile_note + "\n";
   char line[512];
   std::snprintf(line, sizeof line, "exposure %.3g, heat scale %.3g, heat factor %d, %d timed frames per preset\n\n",
                 static_cast<double>(o.exposure), static_cast<double>(o.heat_scale), o.heat_factor, o.repeat);
@@ -276,6 +277,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
                     : stats.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "fragment passes behind a stencil from alpha"
                                                                         : "fragment passes");
       }
+      if (!renderer.sss.profile_note.empty()) std::printf("         note: %s\n", renderer.sss.profile_note.c_str());
       std::printf("         heat map: exact reference at %dx%d in %.2f s; interior miss %.3f (worst channel %.3f; no SSS:"
                   " 1); relative RMSE %.4f with SSS, %.4f without; touched %llu of %llu marked pixels\n",
                   report.small_width, report.small_height, report.reference.seconds, report.heat.miss_interior,
@@ -289,7 +291,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
     const std::string settings =
         format_settings(renderer.sss.settings, controls, scene.world_units_per_mm);
     const std::filesystem::path dir(o.out_dir);
-    ok = write_text((dir / "README.txt").string(), readme(o, context, scene, settings, reports));
+    ok = write_text((dir / "README.txt").string(), readme(o, context, scene, settings, reports, renderer.sss.profile_note));
     if (ok && !scene.attribution.empty())
       ok = write_text((dir / "ATTRIBUTION.txt").string(), "The images in this folder show a model whose licence asks for this attribution:\n" +
                                                               scene.attribution + "\n");

@@ -192,6 +192,7 @@ void draw_panel(WindowState *s) {
       ImGui::Checkbox("object IDs (no light between objects)", &s->controls.object_ids);
       ImGui::TextWrapped("%s", profile_legend(*s->scene, s->controls).c_str());
       ImGui::TextDisabled("  the G-buffer's R8UI byte: profile | object << 4 (the \"profiles\" view)");
+      if (!s->profile_note.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", s->profile_note.c_str());
     }
   }
   if (ImGui::CollapsingHeader("Translucency")) {

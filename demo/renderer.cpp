@@ -183,14 +183,17 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     shape.samples = targets->samples;
     shape.stencil = controls.use_stencil;
     shape.region = has_region;
-    // Several profiles or objects: the G-buffer's byte goes with the frame (single-sample only: the
-    // library refuses a profile texture with MSAA colour, so MSAA frames run every pixel as profile 0).
-    shape.profile_texture = uses_profiles(*r->scene) && targets->samples == 0;
     std::vector<int> materials;
     for (size_t i = 1; i < r->scene->profiles.size(); ++i) materials.push_back(r->scene->profiles[i].material);
+    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm, materials, uses_profiles(*r->scene)))
+      return false;
+    // Several profiles or objects: the G-buffer's byte goes with the frame when the controls allow
+    // per-pixel profiles (else every pixel is profile 0, as before them), single-sample only (the
+    // library refuses a profile texture with MSAA colour).
+    shape.profile_texture = uses_profiles(*r->scene) && targets->samples == 0 && r->sss.per_pixel;
     // After new settings or a resize, sss_prepare builds and allocates what the frame will need,
     // so the frame itself does not (no hitch; a no-op when nothing changed).
-    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm, materials) || !prepare_sss(&r->sss, shape) ||
+    if (!prepare_sss(&r->sss, shape) ||
         !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
                    targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
                    has_region ? region : nullptr, shape.profile_texture ? targets->profile : 0u)) {

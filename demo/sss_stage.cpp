@@ -92,7 +92,7 @@ void build_profiles(SssStage *stage, const std::vector<int> &materials) {
 }
 
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
-                      const std::vector<int> &materials) {
+                      const std::vector<int> &materials, bool per_pixel) {
   sss_settings s{};
   sss_default_settings(&s);
   s.world_units_per_mm = world_units_per_mm;
@@ -113,6 +113,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
   // Unchanged: nothing to validate or rebuild (the scene's other profiles never change).
+  // (The scene, so `materials` and `per_pixel`, is the same for the stage's whole life.)
   if (std::memcmp(&s, &stage->settings, sizeof s) == 0 && stage->profiles.size() == materials.size() + 1) return true;
   const std::uint32_t count = one_term(s) ? static_cast<std::uint32_t>(materials.size() + 1) : 1u;
   sss_settings old = stage->settings;
@@ -129,9 +130,10 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
     return false;
   }
   stage->profile_count = count;
-  stage->profile_note = count < materials.size() + 1
-                            ? "only profile 0 is set (several profiles need a one-term kernel in the separable mode): "
-                              "the other materials are left unfiltered"
+  stage->per_pixel = one_term(s);
+  stage->profile_note = per_pixel && !stage->per_pixel
+                            ? "no per-pixel profiles or object IDs (they need a one-term kernel in the separable "
+                              "mode): every material is filtered with profile 0's, and light crosses between objects"
                             : "";
   return true;
 }

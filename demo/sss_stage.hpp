@@ -76,12 +76,14 @@ struct SssStage {
   sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
   // The scene's other profiles (sss_set_profiles; [0] is `settings`): a measured material each, as a
   // rank-1 pre-integrated kernel (profile_kernels[i], which profiles[i].kernel points at).
-  // profile_count: how many the library holds (1 when profile 0's kernel has several terms or the
-  // mode is cross-bilateral: the other profiles' pixels are then left untouched).
+  // profile_count: how many the library holds; per_pixel: frames may bring the profile texture (the
+  // library takes it, and several profiles, only with a one-term kernel in the separable mode; else
+  // profile_count is 1 and frames come without the texture: every pixel profile 0).
   std::vector<sss_settings> profiles;
   std::vector<sss_kernel_desc> profile_kernels;
   std::uint32_t profile_count = 1;
-  std::string profile_note;  // why profile_count is 1 in a scene of several profiles; empty otherwise
+  bool per_pixel = true;
+  std::string profile_note;  // why a scene of several profiles or objects runs without them; empty otherwise
   sss_get_proc_address_fn get_proc_address = nullptr;  // as created, for a re-creation
   void *user = nullptr;
   bool debug_checks = false;  // created with SSS_CREATE_DEBUG_CHECKS
@@ -114,9 +116,10 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 // sss_set_profiles from the controls (profile 0) and the scene's other profiles (`materials`: an
 // sss_profile per profile index >= 1, each a rank-1 pre-integrated kernel with profile 0's taps,
 // flags, mode, jitter and path), at the scene's world units per millimetre of surface
-// (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.
+// (sss_settings.world_units_per_mm) and the controls' scale. `per_pixel`: the scene's frames would
+// bring a profile texture (profile_note says when the controls rule it out). Prints the error on failure.
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
-                      const std::vector<int> &materials = {});
+                      const std::vector<int> &materials = {}, bool per_pixel = false);
 
 // sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,
 // height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI

@@ -335,6 +335,7 @@ int run_window(const Options &o, const DemoScene &scene) {
     s.counts = frame.counts;
     s.preintegrated = frame.preintegrated;
     s.pixels_per_mm = frame.pixels_per_mm;
+    s.profile_note = renderer.sss.profile_note;
     GLuint heat_texture = 0;
     ViewMode mode = s.view;
     if (mode == ViewMode::kHeatMap) {

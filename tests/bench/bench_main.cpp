@@ -402,6 +402,12 @@ int run(const Options& options) {
         ++done;
         continue;
       }
+      // The exact 2D filter convolves with one profile (skin): no method for a scene of several
+      // materials, whose reference is per material.
+      if (config.kind == "exact-2d" && !scene.profile.empty()) {
+        ++done;
+        continue;
+      }
       ResultRow row = scene_row;
       std::string path_ran;
       ErrorMetrics e;
