@@ -129,6 +129,9 @@
   X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)             \
   X(PFNGLGETQUERYIVPROC, glGetQueryiv)                           \
   X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                     \
+  X(PFNGLGETINTEGER64I_VPROC, glGetInteger64i_v)                 \
+  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                   \
+  X(PFNGLBINDBUFFERRANGEPROC, glBindBufferRange)                 \
   X(PFNGLGETBOOLEANI_VPROC, glGetBooleani_v)                     \
   X(PFNGLBINDIMAGETEXTUREPROC, glBindImageTexture)               \
   X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                 \

@@ -11,9 +11,8 @@
 //   vec4 sss_fetch_tap(TapSite site, float offset)
 //                       the pixel `offset` pixels from the centre along the pass's axis, kept in
 //                       u_clamp: rgb its colour, a its raw depth (read only with SSS_FOLLOW_SURFACE)
-//   uint sss_fetch_id(TapSite site, float offset)   (SSS_PROFILE_IDS only)
-//                       that pixel's profile and object index; a tap whose index is not
-//                       sss_centre_id counts as the centre's colour
+//   bool sss_tap_foreign   (SSS_PROFILE_IDS only) set by sss_fetch_tap: the pixel it read has
+//                       another profile or object index than the centre, and counts as the centre
 
 #if SSS_PROFILE_IDS
 // Per-pixel profiles (SSS_PROFILE_IDS 1): every profile's table for this pass in one uniform block
@@ -26,12 +25,14 @@ layout(std140) uniform SssProfileTables {
 int sss_table_base;
 float sss_inv_two_variance;
 #define SSS_CDF(j) u_tables[sss_table_base + (j)]
+#define SSS_TAP_DISTANCE(a) (a)  // the module's copy holds view distances (profile_depth.frag)
 #define SSS_FOOTPRINT u_tables[sss_table_base + SSS_CDF_ENTRIES]
 #define SSS_INV_TWO_VARIANCE sss_inv_two_variance
 #else
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
 uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
 #define SSS_CDF(j) u_cdf[j]
+#define SSS_TAP_DISTANCE(a) view_distance(a)
 #define SSS_FOOTPRINT u_footprint
 #if SSS_FOLLOW_SURFACE == 2
 uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
@@ -65,7 +66,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
   vec3 tap = fetched.rgb;
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #if SSS_FOLLOW_SURFACE
-  float d = follow_surface * abs(centre_distance - view_distance(fetched.a));
+  float d = follow_surface * abs(centre_distance - SSS_TAP_DISTANCE(fetched.a));
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
@@ -118,7 +119,7 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
       float offset = side == 0 ? read : -read;
       vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, centre_distance, follow_surface);
 #if SSS_PROFILE_IDS
-      if (sss_fetch_id(site, offset) != sss_centre_id) tap = centre;  // another material or object
+      if (sss_tap_foreign) tap = centre;  // another material or object: its weight stays on the centre
 #endif
       pair += tap;
     }

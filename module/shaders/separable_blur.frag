@@ -18,10 +18,13 @@
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
 //   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
-//   SSS_PROFILE_IDS     1: per-pixel profiles (sss_frame.profile_texture, unit 4): the centre's index
-//                       (value & 15) picks its profile's table (a uniform block of SSS_PROFILES) and
-//                       u_profile[] entry; an index >= u_profile_count leaves the pixel alone; taps
-//                       whose whole value (profile and object) differs count as the centre
+//   SSS_PROFILE_IDS     1: per-pixel profiles (sss_frame.profile_texture): depth and index come from
+//                       the module's RG32UI copy (profile_depth.frag, unit 4) in one fetch, the
+//                       depth as a view distance already (SSS_TAP_DISTANCE is then the identity); the
+//                       centre's index (value & 15) picks its profile's table (a uniform block of
+//                       SSS_PROFILES) and u_profile[] entry; an index >= u_profile_count leaves the
+//                       pixel alone; taps whose whole value (profile and object) differs count as
+//                       the centre
 // and from the dialect's header (version_*.glsl, module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
@@ -49,10 +52,11 @@ uniform float u_follow_surface;       // 1 / the kernel's reach in world units (
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
 
 #if SSS_PROFILE_IDS
-SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's profile (bits 0-3) and object indices
+SSS_BINDING(4) uniform highp usampler2D u_depth_ids;  // per pixel: view distance bits, profile (bits 0-3), object
 uniform vec4 u_profile[SSS_PROFILES];  // per profile: pixels per mm along u_axis, follow-surface factor, 1/(2v)
 uniform int u_profile_count;           // the profiles set (sss_set_profiles)
 uint sss_centre_id;                    // the centre pixel's whole index
+bool sss_tap_foreign;                  // the last tap sss_fetch_tap read has another index
 #endif
 
 out vec4 o_color;
@@ -65,19 +69,16 @@ struct TapSite {
 vec4 sss_fetch_tap(TapSite site, float offset) {
   vec2 position = clamp(site.centre + u_axis * offset, u_clamp.xy, u_clamp.zw);
   ivec2 texel = ivec2(position);
-#if SSS_FOLLOW_SURFACE
+#if SSS_PROFILE_IDS
+  uvec2 depth_id = texelFetch(u_depth_ids, texel, 0).rg;
+  sss_tap_foreign = depth_id.y != sss_centre_id;
+  return vec4(texelFetch(u_source, texel, 0).rgb, uintBitsToFloat(depth_id.x));  // a view distance already
+#elif SSS_FOLLOW_SURFACE
   return vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
 #else
   return vec4(texelFetch(u_source, texel, 0).rgb, 0.0);
 #endif
 }
-
-#if SSS_PROFILE_IDS
-uint sss_fetch_id(TapSite site, float offset) {
-  vec2 position = clamp(site.centre + u_axis * offset, u_clamp.xy, u_clamp.zw);
-  return texelFetch(u_profile_ids, ivec2(position), 0).r;
-}
-#endif
 
 #include "footprint_taps.glsl"
 
@@ -101,7 +102,12 @@ void main() {
     return;
   }
   float strength = min(centre.a, 1.0);  // alpha is documented as 0..1; more must not widen the kernel
+#if SSS_PROFILE_IDS
+  uvec2 centre_depth_id = texelFetch(u_depth_ids, pixel, 0).rg;
+  float centre_distance = uintBitsToFloat(centre_depth_id.x);
+#else
   float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
+#endif
   float w = clip_w(centre_distance);
   // Behind the camera, on an infinite far plane, or NaN. isnan() and not only !(w > 0.0): on
   // NVIDIA's driver (580) the negated comparison behaved as the opposite one, which a NaN passes.
@@ -111,7 +117,7 @@ void main() {
   }
 
 #if SSS_PROFILE_IDS
-  sss_centre_id = texelFetch(u_profile_ids, pixel, 0).r;
+  sss_centre_id = centre_depth_id.y;
   int profile = int(sss_centre_id & 15u);
   if (profile >= u_profile_count) {  // no profile set for this index: documented as left alone
     leave_untouched(pixel, centre);

@@ -56,6 +56,7 @@ struct Case {
   bool region = false;
   int samples = 0;       // > 1: multisampled colour and depth (desktop GL)
   GLenum strength_format = 0;  // a strength texture (sss_frame.strength_texture) of this format
+  GLenum profile_format = 0;   // per-pixel profiles: two profiles set, a profile texture of this format
 };
 
 sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
@@ -99,6 +100,7 @@ class Prewarm : public GlTest {
     d.flags = (c.normals ? static_cast<std::uint32_t>(SSS_PREPARE_NORMALS) : 0u) |
               (c.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u);
     d.strength_format = c.strength_format;
+    d.profile_format = c.profile_format;
     return d;
   }
   // A fresh context with c's settings and camera (sss_ replaced).
@@ -107,6 +109,11 @@ class Prewarm : public GlTest {
     sss_ = create_sss();
     ASSERT_NE(sss_, nullptr);
     ASSERT_EQ(sss_set_settings(sss_, &c.settings), SSS_OK) << sss_last_error(sss_);
+    if (c.profile_format != 0) {
+      sss_settings two[2] = {c.settings, c.settings};
+      two[1].scale = 2.0f;
+      ASSERT_EQ(sss_set_profiles(sss_, two, 2), SSS_OK) << sss_last_error(sss_);
+    }
     ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
   }
   // What the first frame of `c` creates in a fresh context, prepared for it or not.
@@ -187,6 +194,16 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
                              ? make_texture(GL_R8, w, h, GL_RED, GL_UNSIGNED_BYTE, bytes.data())
                              : make_texture(c.strength_format, w, h, GL_RED, GL_FLOAT, strength.data());
   }
+  if (c.profile_format != 0) {  // left half profile 0, right half profile 1 (object 2)
+    std::vector<uint16_t> ids(static_cast<std::size_t>(w) * h);
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<uint16_t>(static_cast<int>(i % static_cast<std::size_t>(w)) < w / 2 ? 0 : 0x21);
+    std::vector<uint8_t> bytes(ids.begin(), ids.end());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    f.profile_texture = c.profile_format == GL_R8UI
+                            ? make_texture(GL_R8UI, w, h, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data())
+                            : make_texture(GL_R16UI, w, h, GL_RED_INTEGER, GL_UNSIGNED_SHORT, ids.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  }
   if (c.normals) {
     std::vector<float> normals(static_cast<std::size_t>(w) * h * 4, 0.0f);
     for (std::size_t i = 2; i < normals.size(); i += 4) normals[i] = 1.0f;
@@ -206,6 +223,7 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
     f.stencil_format = c.stencil ? GL_DEPTH24_STENCIL8 : 0;
     f.normal_format = c.normals ? GL_RGBA16F : 0;
     f.strength_format = c.strength_format;
+    f.profile_format = c.profile_format;
     f.texture_width = w;
     f.texture_height = h;
   }
@@ -309,6 +327,19 @@ TEST_F(Prewarm, TheFirstFrameOfAnRgba32fColourOrAStrengthTextureCreatesNothing) 
          settings_with(SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL), GL_R11F_G11F_B10F};
   c.strength_format = GL_R32F;
   expect_no_hitch(c);
+}
+
+TEST_F(Prewarm, TheFirstFrameOfPerPixelProfilesCreatesNothing) {
+  for (uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_AUTO}) {
+    Case c{"two profiles, R8UI indices, in place", settings_with(path)};
+    c.profile_format = GL_R8UI;
+    expect_no_hitch(c);
+    c = Case{"two profiles, R16UI indices, linear depth, a region, separate output", settings_with(path), GL_RGBA16F,
+             GL_RGBA16F, GL_R32F};
+    c.region = true;
+    c.profile_format = GL_R16UI;
+    expect_no_hitch(c);
+  }
 }
 
 TEST_F(Prewarm, AFrameOfAnotherSizeAllocates) {

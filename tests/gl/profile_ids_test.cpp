@@ -85,6 +85,9 @@ class ProfileIds : public GlTest {
       }
       compute_window_depth(&s);
     }
+    if (linear_depth_) {  // the view distance itself, R32F
+      return {make_rgba16f(kW, kH, s.color), make_texture(GL_R32F, kW, kH, GL_RED, GL_FLOAT, s.distance.data())};
+    }
     return {make_rgba16f(kW, kH, s.color), make_depth32f(kW, kH, s.window_depth)};
   }
   // The frame, described (OpenGL ES 3.0 cannot be asked), written back.
@@ -93,7 +96,7 @@ class ProfileIds : public GlTest {
     f.texture_width = kW;
     f.texture_height = kH;
     f.color_format = GL_RGBA16F;
-    f.depth_format = GL_DEPTH_COMPONENT32F;
+    f.depth_format = linear_depth_ ? GL_R32F : GL_DEPTH_COMPONENT32F;
     f.profile_texture = ids;
     f.profile_format = ids != 0 ? ids_format : 0;
     return sss_apply_frame(sss_, &f);
@@ -119,6 +122,7 @@ class ProfileIds : public GlTest {
 
   SyntheticScene scene_;
   sss_settings first_{};
+  bool linear_depth_ = false;  // the host's depth is linear view distance (R32F), not hardware depth
 };
 
 // rgb of pixel (x, y) equal in a and b, bit for bit (alpha is the host's in both).
@@ -163,6 +167,12 @@ void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsi
 }  // namespace
 
 TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAlone) {
+  const sss_settings profiles[2] = {first_, second_look(first_)};
+  expect_each_material_alone(profiles, 1u);
+}
+
+TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAloneOnLinearDepth) {
+  linear_depth_ = true;
   const sss_settings profiles[2] = {first_, second_look(first_)};
   expect_each_material_alone(profiles, 1u);
 }

@@ -34,6 +34,10 @@ class StateHarness : public GlTest {
     glGenRenderbuffers(1, &renderbuffer_);
     glGenBuffers(2, buffers_);
     glGenSamplers(2, samplers_);
+    glGenBuffers(1, &uniform_buffer_);
+    glBindBuffer(GL_UNIFORM_BUFFER, uniform_buffer_);
+    glBufferData(GL_UNIFORM_BUFFER, 2048, nullptr, GL_STATIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
     for (GLuint& t : host_textures_) t = make_rgba16f(2, 2, std::vector<float>(16, 0.5f));
     // Make the names objects (FBOs, VAOs, renderbuffers and buffers exist from their first bind).
     for (GLuint f : fbos_) glBindFramebuffer(GL_FRAMEBUFFER, f);
@@ -53,6 +57,11 @@ class StateHarness : public GlTest {
       packed[i] = (static_cast<uint32_t>(scene_.window_depth[i] * 16777215.0) << 8) | scene_.stencil[i];
     }
     depth_ = make_texture(GL_DEPTH24_STENCIL8, kSize, kSize, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+    std::vector<uint8_t> ids(static_cast<std::size_t>(kSize) * kSize);
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<uint8_t>((i % kSize) < kSize / 2 ? 0 : 0x11);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    profile_ids_ = make_texture(GL_R8UI, kSize, kSize, GL_RED_INTEGER, GL_UNSIGNED_BYTE, ids.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   }
 
   void TearDown() override {
@@ -64,6 +73,7 @@ class StateHarness : public GlTest {
       glDeleteRenderbuffers(1, &renderbuffer_);
       glDeleteBuffers(2, buffers_);
       glDeleteSamplers(2, samplers_);
+      glDeleteBuffers(1, &uniform_buffer_);
     }
     GlTest::TearDown();
   }
@@ -113,6 +123,21 @@ class StateHarness : public GlTest {
     glFrontFace(pick<GLenum>(rng, {GL_CW, GL_CCW}));
     glPixelStorei(GL_UNPACK_ALIGNMENT, pick<GLint>(rng, {1, 2, 4, 8}));
     glPixelStorei(GL_PACK_ALIGNMENT, pick<GLint>(rng, {1, 2, 4, 8}));
+    glPixelStorei(GL_PACK_ROW_LENGTH, pick<GLint>(rng, {0, 7, 64}));
+    glPixelStorei(GL_PACK_SKIP_ROWS, pick<GLint>(rng, {0, 3}));
+    glPixelStorei(GL_PACK_SKIP_PIXELS, pick<GLint>(rng, {0, 5}));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, pick<GLuint>(rng, {0u, buffers_[1]}));
+    // Uniform buffer binding point 0 (whole, a range, or none) and the generic binding.
+    switch (small(rng) % 3) {
+      case 0: glBindBufferBase(GL_UNIFORM_BUFFER, 0, 0); break;
+      case 1: glBindBufferBase(GL_UNIFORM_BUFFER, 0, uniform_buffer_); break;
+      default: glBindBufferRange(GL_UNIFORM_BUFFER, 0, uniform_buffer_, 256, 512); break;
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, pick<GLuint>(rng, {0u, buffers_[0], uniform_buffer_}));
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, pick<GLuint>(rng, {0u, host_textures_[2]}));
+    glBindSampler(4, pick<GLuint>(rng, {0u, samplers_[0]}));
+    glActiveTexture(GL_TEXTURE0);
     for (GLenum face : {GL_FRONT, GL_BACK}) {
       glStencilFuncSeparate(face, pick<GLenum>(rng, {GL_NEVER, GL_LESS, GL_GREATER, GL_ALWAYS}), byte(rng),
                             static_cast<GLuint>(byte(rng)));
@@ -192,6 +217,23 @@ class StateHarness : public GlTest {
            s.path = SSS_PATH_FRAGMENT;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
          }},
+        // Per-pixel profiles: texture unit 4 and uniform buffer binding 0; under the debug checks
+        // also the read-back of the indices (the pack state), on a context of its own.
+        {"sss_apply_frame (per-pixel profiles; then with debug checks)",
+         [this] {
+           sss_settings p[2] = {harness_settings(), harness_settings()};
+           p[1].scale = 2.0f;
+           EXPECT_EQ(sss_set_profiles(sss_, p, 2), SSS_OK) << sss_last_error(sss_);
+           sss_frame f = frame_of(color_, depth_);
+           f.profile_texture = profile_ids_;
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           sss_context* checked = create_sss(SSS_CREATE_DEBUG_CHECKS);
+           EXPECT_EQ(sss_set_profiles(checked, p, 2), SSS_OK) << sss_last_error(checked);
+           EXPECT_EQ(sss_set_camera(checked, scene_.projection.data()), SSS_OK);
+           EXPECT_EQ(sss_apply_frame(checked, &f), SSS_OK) << sss_last_error(checked);
+           sss_destroy(checked);
+           EXPECT_EQ(sss_set_settings(sss_, &p[0]), SSS_OK);
+         }},
         {"sss_apply (failing: wrong format)",
          [this] { EXPECT_EQ(sss_apply(sss_, host_textures_[3] /* RGBA16F */, color_, nullptr), SSS_ERROR_INVALID_TEXTURE); }},
         // New inputs on every call (a cached LUT would call no GL): the GPU generator and the CPU upload.
@@ -251,7 +293,7 @@ class StateHarness : public GlTest {
   }
 
   GLuint programs_[2] = {0, 0}, vaos_[2] = {0, 0}, fbos_[2] = {0, 0}, renderbuffer_ = 0, buffers_[2] = {0, 0};
-  GLuint samplers_[2] = {0, 0}, host_textures_[4] = {0, 0, 0, 0};
+  GLuint samplers_[2] = {0, 0}, host_textures_[4] = {0, 0, 0, 0}, uniform_buffer_ = 0, profile_ids_ = 0;
   SyntheticScene scene_;
   GLuint color_ = 0, output_ = 0, depth_ = 0;
   int lut_calls_ = 0;
@@ -273,7 +315,7 @@ TEST_F(StateHarness, EveryEntryPointRestoresRandomState) {
     }
   }
   RecordProperty("calls_checked", checked);
-  EXPECT_EQ(checked, 40 * 11);
+  EXPECT_EQ(checked, 40 * 12);
 }
 
 TEST_F(StateHarness, FailsWhenTheRestoresAreOff) {
@@ -311,6 +353,8 @@ TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
       {"vertex array", g::vertex_array},
       {"program", g::program},
       {"image unit", g::image_unit},
+      {"uniform buffer", g::uniform_buffer},
+      {"pack state", g::pack_state},
   };
   std::atomic<uint32_t>& skip = sss::gl::restore_skip_mask_for_tests();
   for (const auto& [name, group] : groups) {
@@ -352,6 +396,10 @@ TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
       {"GL_ACTIVE_TEXTURE", [] { glActiveTexture(GL_TEXTURE3); }},
       {"GL_TEXTURE_BINDING_2D unit 2", [this] { glActiveTexture(GL_TEXTURE2); glBindTexture(GL_TEXTURE_2D, host_textures_[1]); glActiveTexture(GL_TEXTURE0); }},
       {"GL_SAMPLER_BINDING unit 1", [this] { glBindSampler(1, samplers_[1]); }},
+      {"GL_TEXTURE_BINDING_2D unit 4", [this] { glActiveTexture(GL_TEXTURE4); glBindTexture(GL_TEXTURE_2D, host_textures_[1]); glActiveTexture(GL_TEXTURE0); }},
+      {"GL_UNIFORM_BUFFER_BINDING index 0", [this] { glBindBufferRange(GL_UNIFORM_BUFFER, 0, uniform_buffer_, 256, 512); }},
+      {"GL_UNIFORM_BUFFER_BINDING", [this] { glBindBuffer(GL_UNIFORM_BUFFER, uniform_buffer_); }},
+      {"GL_PACK_ROW_LENGTH", [] { glPixelStorei(GL_PACK_ROW_LENGTH, 9); }},
       {"GL_VIEWPORT", [] { glViewport(1, 2, 3, 4); }},
       {"GL_SCISSOR_TEST", [] { glEnable(GL_SCISSOR_TEST); }},
       {"GL_RASTERIZER_DISCARD", [] { glEnable(GL_RASTERIZER_DISCARD); }},
@@ -375,8 +423,13 @@ TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindSampler(1, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, 0);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
     glViewport(0, 0, 16, 16);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_RASTERIZER_DISCARD);

@@ -71,6 +71,10 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   out->write(d + "fullscreen.vert", gl::vertex_recipe(dialect));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
+  for (int linear = 0; linear < 2; ++linear) {
+    out->write(d + "profile_depth_l" + std::to_string(linear) + ".frag",
+               gl::stage_recipe(dialect, "profile_depth.frag", gl::profile_depth_defines(linear != 0)));
+  }
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
     out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + ".frag",

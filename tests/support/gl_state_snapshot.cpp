@@ -34,10 +34,20 @@ Snapshot take_snapshot(bool es) {
   s.integer("GL_PIXEL_UNPACK_BUFFER_BINDING", GL_PIXEL_UNPACK_BUFFER_BINDING);
   s.integer("GL_PIXEL_PACK_BUFFER_BINDING", GL_PIXEL_PACK_BUFFER_BINDING);
   s.integer("GL_ARRAY_BUFFER_BINDING", GL_ARRAY_BUFFER_BINDING);
+  s.integer("GL_UNIFORM_BUFFER_BINDING", GL_UNIFORM_BUFFER_BINDING);
+  {
+    GLint name = -1;
+    GLint64 start = -1, size = -1;
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &name);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_START, 0, &start);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, 0, &size);
+    s.add("GL_UNIFORM_BUFFER_BINDING index 0 (name, start, size)",
+          {name, static_cast<GLint>(start), static_cast<GLint>(size)});
+  }
   s.integer("GL_ACTIVE_TEXTURE", GL_ACTIVE_TEXTURE);
   GLint active = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  for (GLenum unit = 0; unit < 4; ++unit) {
+  for (GLenum unit = 0; unit < 5; ++unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
     s.integer(("GL_TEXTURE_BINDING_2D unit " + std::to_string(unit)).c_str(), GL_TEXTURE_BINDING_2D);
     s.integer(("GL_SAMPLER_BINDING unit " + std::to_string(unit)).c_str(), GL_SAMPLER_BINDING);
@@ -104,6 +114,9 @@ Snapshot take_snapshot(bool es) {
   s.integer("GL_FRONT_FACE", GL_FRONT_FACE);
   s.integer("GL_UNPACK_ALIGNMENT", GL_UNPACK_ALIGNMENT);
   s.integer("GL_PACK_ALIGNMENT", GL_PACK_ALIGNMENT);
+  s.integer("GL_PACK_ROW_LENGTH", GL_PACK_ROW_LENGTH);
+  s.integer("GL_PACK_SKIP_ROWS", GL_PACK_SKIP_ROWS);
+  s.integer("GL_PACK_SKIP_PIXELS", GL_PACK_SKIP_PIXELS);
   const std::pair<const char*, GLenum> stencil[] = {
       {"GL_STENCIL_FUNC", GL_STENCIL_FUNC},
       {"GL_STENCIL_REF", GL_STENCIL_REF},

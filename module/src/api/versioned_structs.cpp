@@ -74,9 +74,11 @@ constexpr auto kSettings03 = static_cast<std::uint32_t>(sizeof(sss_settings));
 
 sss_result check_struct_size(sss_context* ctx, const char* field, const char* type, std::uint32_t size,
                              std::initializer_list<StructRelease> known) {
-  std::string sizes;
   for (const StructRelease& k : known) {
     if (k.size == size) return SSS_OK;
+  }
+  std::string sizes;  // only for the message: a frame of a known size allocates nothing
+  for (const StructRelease& k : known) {
     if (!sizes.empty()) sizes += ", ";
     sizes += std::to_string(k.size) + " (" + k.release + ")";
   }

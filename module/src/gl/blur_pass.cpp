@@ -89,9 +89,9 @@ void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {
   bind_texture(ctx, unit::depth, depth, ctx.objects.depth_sampler);
 }
 
-void bind_profile_inputs(PassContext& ctx, const FilterRun& run, int axis) {
+void bind_profile_inputs(PassContext& ctx, int axis) {
   // An integer texture is incomplete under GL_LINEAR, even for texelFetch: the nearest sampler.
-  bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::profile_ids, ctx.targets.names().profile_depth, ctx.objects.nearest_sampler);
   ctx.profile_tables->bind(axis);
 }
 

@@ -29,8 +29,8 @@ bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t te
 void set_blur_uniforms(PassContext& ctx, BlurProgram& program, const FilterRun& run, std::size_t term, int axis);
 // The pass input and the host's depth on their units, with the module's samplers.
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth);
-// Per-pixel profiles: the host's indices on their unit and the tables of the pass along `axis` on
-// uniform buffer binding point 0 (ProfileTables::upload ran for this frame).
-void bind_profile_inputs(PassContext& ctx, const FilterRun& run, int axis);
+// Per-pixel profiles: the module's depth-and-index copy (drawn first this frame) on its unit and the
+// tables of the pass along `axis` on uniform buffer binding point 0 (ProfileTables::upload ran).
+void bind_profile_inputs(PassContext& ctx, int axis);
 
 }  // namespace sss::gl

@@ -55,7 +55,7 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
   set_blur_uniforms(ctx, p, run, term, axis);
   bind_blur_inputs(ctx, source, run.depth.name);
-  if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
+  if (run.has_profiles()) bind_profile_inputs(ctx, axis);
   ctx.gl.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
 }
@@ -138,7 +138,33 @@ sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermProgram
     r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl, run),
                                         message);
   }
+  if (r == SSS_OK && run.has_profiles()) {
+    ProfileDepthProgram* unused = nullptr;
+    r = ctx.programs.profile_depth(run.constants.linear_depth, &unused, message);
+    if (r == SSS_OK) r = ctx.targets.ensure_profile_depth(run.color.width, run.color.height, message);
+  }
   return r;
+}
+
+// Per-pixel profiles: each pixel's view distance and index into the module's RG32UI copy, over the
+// drawn rectangle (where the taps stay), every pixel of it: the taps read outside the stencil too.
+sss_result draw_profile_depth(PassContext& ctx, const FilterRun& run, std::string* message) {
+  const Functions& f = ctx.gl;
+  ProfileDepthProgram* p = nullptr;
+  const sss_result r = ctx.programs.profile_depth(run.constants.linear_depth, &p, message);
+  if (r != SSS_OK) return r;
+  DebugGroup group(f, ctx.labels, "sss view distance and profile index");
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().profile_depth_framebuffer);
+  f.Disable(STENCIL_TEST);
+  f.UseProgram(p->program);
+  const math::PassConstants& k = run.constants;
+  f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p->depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
+  bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+  return SSS_OK;
 }
 }  // namespace
 
@@ -157,7 +183,8 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
   sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  r = attach_targets(ctx, run, terms, message);
+  if (run.has_profiles()) r = draw_profile_depth(ctx, run, message);
+  if (r == SSS_OK) r = attach_targets(ctx, run, terms, message);
   if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
   detach_output(ctx);
   return r;

@@ -53,6 +53,7 @@ void ProgramCache::destroy() {
   remove(stencil_mark_);
   remove(sample_write_.program);
   remove(strength_combine_.program);
+  for (const ProfileDepthProgram& p : profile_depth_) remove(p.program);
   forget();
 }
 
@@ -151,7 +152,7 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
-  p.profile_ids = f.GetUniformLocation(p.program, "u_profile_ids");
+  p.profile_ids = f.GetUniformLocation(p.program, "u_depth_ids");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }
@@ -243,6 +244,22 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message) {
+  ProfileDepthProgram& p = profile_depth_[linear_depth ? 1 : 0];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  p.program = link("profile_depth.frag", profile_depth_defines(linear_depth), "per-pixel profiles' depth and index shader",
+                   message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, "sss view distance and profile index", nullptr);
+  const Functions& f = *gl_;
+  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
   return SSS_OK;
 }
 

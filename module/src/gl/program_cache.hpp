@@ -33,7 +33,7 @@ struct BlurProgram {
         axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint rect = -1;  // compute programs only
-  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
+  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only (u_depth_ids, ...)
   bool compute = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
@@ -59,6 +59,11 @@ struct StrengthProgram {
 struct ResolveProgram {
   GLuint program = 0;
   GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
+};
+
+struct ProfileDepthProgram {
+  GLuint program = 0;
+  GLint ndc_from_depth = -1, depth_terms = -1;
 };
 
 struct SampleWriteProgram {
@@ -87,6 +92,8 @@ class ProgramCache {
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
+  // Per-pixel profiles: each pixel's view distance and index into the module's RG32UI copy.
+  sss_result profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message);
 
  private:
   static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
@@ -116,6 +123,7 @@ class ProgramCache {
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
   StrengthProgram strength_combine_;
+  std::array<ProfileDepthProgram, 2> profile_depth_{};  // index: host depth is linear
 };
 
 }  // namespace sss::gl

@@ -50,6 +50,8 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
 
 // The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH.
 std::string msaa_resolve_defines(bool linear_depth);
+// Per-pixel profiles' view distance and index (profile_depth.frag): SSS_LINEAR_DEPTH.
+inline std::string profile_depth_defines(bool linear_depth) { return msaa_resolve_defines(linear_depth); }
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 

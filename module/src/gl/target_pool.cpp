@@ -58,10 +58,10 @@ void TargetPool::destroy() {
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
                                  t_.msaa_read_framebuffer,    t_.sample_copy_framebuffer,
-                                 t_.sample_write_framebuffer, t_.strength_framebuffer};
+                                 t_.sample_write_framebuffer, t_.strength_framebuffer, t_.profile_depth_framebuffer};
   const GLuint textures[] = {t_.intermediate,   t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
                              t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy,
-                             t_.strength_source};
+                             t_.strength_source,  t_.profile_depth};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -76,10 +76,10 @@ void TargetPool::note(const std::string& text) const {
 }
 
 sss_result TargetPool::allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
-                                       const char* what, std::string* message) {
+                                       const char* what, std::string* message, GLenum pixel_format) {
   const Functions& f = *gl_;
   if (*texture == 0) f.GenTextures(1, texture);
-  specify_2d(f, *texture, static_cast<GLint>(internal_format), RGBA, type, width, height);
+  specify_2d(f, *texture, static_cast<GLint>(internal_format), pixel_format, type, width, height);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
     f.DeleteTextures(1, texture);
@@ -287,6 +287,19 @@ sss_result TargetPool::ensure_strength_source(GLint format, int width, int heigh
   strength_width_ = width;
   strength_height_ = height;
   attach_colour(t_.strength_framebuffer, t_.strength_source);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_profile_depth(int width, int height, std::string* message) {
+  ensure_framebuffer(&t_.profile_depth_framebuffer, "sss depth and profile index target");
+  if (t_.profile_depth != 0 && profile_depth_width_ == width && profile_depth_height_ == height) return SSS_OK;
+  profile_depth_width_ = profile_depth_height_ = 0;
+  const sss_result r = allocate_target(&t_.profile_depth, RG32UI, UNSIGNED_INT, width, height,
+                                       "RG32UI depth and profile index", message, RG_INTEGER);
+  if (r != SSS_OK) return r;
+  profile_depth_width_ = width;
+  profile_depth_height_ = height;
+  attach_colour(t_.profile_depth_framebuffer, t_.profile_depth);
   return SSS_OK;
 }
 

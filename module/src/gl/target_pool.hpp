@@ -34,6 +34,8 @@ struct Targets {
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, sample_copy = 0;
   // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
   GLuint strength_source = 0, strength_framebuffer = 0;
+  // Per-pixel profiles: each pixel's raw depth bits and profile index (RG32UI, profile_depth.frag).
+  GLuint profile_depth = 0, profile_depth_framebuffer = 0;
 };
 
 class TargetPool {
@@ -55,6 +57,7 @@ class TargetPool {
   sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
   // `format`: RGBA16F or RGBA32F.
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
+  sss_result ensure_profile_depth(int width, int height, std::string* message);
 
  private:
   // Creates *framebuffer (labelled `label`) when it is 0; nothing attached yet.
@@ -63,7 +66,7 @@ class TargetPool {
   void attach_colour(GLuint framebuffer, GLuint texture);
   // A colour texture the module owns, (re)allocated at this size and format.
   sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
-                             const char* what, std::string* message);
+                             const char* what, std::string* message, GLenum pixel_format = RGBA);
   void note(const std::string& text) const;
 
   const Functions* gl_ = nullptr;
@@ -86,6 +89,7 @@ class TargetPool {
   GLboolean copy_fixed_ = 1;
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
+  int profile_depth_width_ = 0, profile_depth_height_ = 0;
 };
 
 }  // namespace sss::gl
