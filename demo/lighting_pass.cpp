@@ -54,6 +54,8 @@ uniform mat4 u_light_projection[2];
 uniform int u_transmittance;       // 1: add the light transmitted through thin parts
 uniform float u_sss_width;
 uniform float u_translucency;
+uniform int u_thickness_source;    // 0: the shadow map, 1: the material's baked thickness, 2: the larger
+uniform float u_baked_thickness;   // world units (a host's baked map or attribute would give it per texel)
 uniform float u_shrink[2];         // world units the thickness lookup pulls the point inward
 uniform uint u_profile_byte;       // the material's profile | object << 4 (sss_frame.profile_texture)
 uniform vec3 u_emission;           // unlit radiance (the flame), alpha 0: never scattered
@@ -142,12 +144,17 @@ void main() {
 #endif
     specular += u_light_irradiance[i] * (shadow * ksk_specular(n, l, v, u_roughness, u_specular_intensity));
     // Transmittance through thin parts (ears, nostrils): the thickness from the same shadow map
-    // read as plain depth, the profile the blur uses (terms uploaded from the library's C API).
+    // read as plain depth, or the material's baked one, or the larger of both; the profile the blur
+    // uses (terms uploaded from the library's C API).
     if (u_transmittance == 1 && u_sss_strength > 0.0) {
-      float thickness = i == 0 ? sss_thickness(u_depth_map0, u_light_view[0], u_light_projection[0], v_position,
-                                               geometric, u_shrink[0])
-                               : sss_thickness(u_depth_map1, u_light_view[1], u_light_projection[1], v_position,
-                                               geometric, u_shrink[1]);
+      float thickness = u_baked_thickness;
+      if (u_thickness_source != 1) {
+        float shadow = i == 0 ? sss_thickness(u_depth_map0, u_light_view[0], u_light_projection[0], v_position,
+                                              geometric, u_shrink[0])
+                              : sss_thickness(u_depth_map1, u_light_view[1], u_light_projection[1], v_position,
+                                              geometric, u_shrink[1]);
+        thickness = u_thickness_source == 0 ? shadow : sss_thickness_combined(u_baked_thickness, shadow);
+      }
       irradiance += u_light_irradiance[i] * sss_transmittance(thickness, u_sss_width, u_translucency, geometric, l);
     }
   }
@@ -161,7 +168,7 @@ void main() {
 )";
 
 struct Uniforms {
-  GLint transmittance, sss_width, translucency, terms, term_count;
+  GLint transmittance, sss_width, translucency, terms, term_count, thickness_source, baked_thickness;
   GLint light_view[kMaxLights], light_projection[kMaxLights], shrink[kMaxLights];
   GLint profile_byte, emission;
   GLint view_projection, light_count, eye, sky_ambient, ground_ambient, base_color, normal_scale, green_sign,
@@ -190,6 +197,8 @@ Uniforms locate(GLuint p) {
   u.translucency = glGetUniformLocation(p, "u_translucency");
   u.terms = glGetUniformLocation(p, "sss_transmittance_terms");
   u.term_count = glGetUniformLocation(p, "sss_transmittance_term_count");
+  u.thickness_source = glGetUniformLocation(p, "u_thickness_source");
+  u.baked_thickness = glGetUniformLocation(p, "u_baked_thickness");
   for (int i = 0; i < kMaxLights; ++i) {
     const std::string index = "[" + std::to_string(i) + "]";
     u.light_matrix[i] = glGetUniformLocation(p, ("u_light_matrix" + index).c_str());
@@ -298,6 +307,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glUniform1f(u.sss_width,
               transmittance.world_units_per_profile_mm / sss_world_units_per_mm_from_legacy_width(1.0f));
   glUniform1f(u.translucency, transmittance.translucency);
+  glUniform1i(u.thickness_source, transmittance.thickness_source);
   for (int i = 0; i < shadows.light_count; ++i) {
     const ShadowMap &map = shadows.maps[static_cast<size_t>(i)];
     const Light &light = scene.lights[static_cast<size_t>(i)];
@@ -333,6 +343,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     glUniform4fv(u.base_color, 1, material.base_color);
     glUniform1f(u.normal_scale, material.normal_scale);
     glUniform1f(u.sss_strength, look.sss_strength);
+    glUniform1f(u.baked_thickness, look.baked_thickness > 0.0f ? look.baked_thickness : transmittance.baked_thickness);
     glUniform1f(u.specular_intensity, look.specular_intensity);
     glUniform1f(u.roughness, look.roughness);
     glUniform1ui(u.profile_byte, profile_byte(look, object_ids));

@@ -45,6 +45,11 @@ struct TransmittanceInputs {
   float world_units_per_profile_mm = 0.0f;
   float translucency = 0.8f;   // 0..1
   std::uint32_t profile = 0;   // SSS_PROFILE_*: the blur's profile, whose terms the include evaluates
+  // Where the thickness comes from: 0 the lights' shadow maps (sss_thickness), 1 each translucent
+  // material's baked thickness (MaterialLook::baked_thickness, else baked_thickness: the shape a
+  // host's baked map or attribute gives), 2 the larger of both (sss_thickness_combined).
+  int thickness_source = 0;
+  float baked_thickness = 0.002f;  // world units
 };
 
 bool create_lighting_pass(LightingPass *pass);

@@ -30,6 +30,8 @@ SssControls controls_from_options(const Options &o) {
   c.path = static_cast<int>(o.path);
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
+  c.thickness_source = o.thickness_source;
+  c.baked_thickness_mm = o.baked_thickness_mm;
   c.msaa_samples = o.msaa;
   c.object_ids = o.object_ids;
   return c;

@@ -126,6 +126,9 @@ void print_usage(const char *program) {
       "                      (OpenGL 4.3+ compute dispatches, shared-memory rows and columns)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
+      "  --thickness NAME    where the translucency's thickness comes from: shadow (the light's shadow map,\n"
+      "                      default) | baked (each translucent material's baked thickness) | both (the larger)\n"
+      "  --baked-thickness MM  the baked thickness of translucent materials, (0, 100] mm (default 2)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
@@ -143,6 +146,7 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
+    kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kNoObjectIds, kDump, kHandColourOption
   };
@@ -177,6 +181,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"help", no_argument, nullptr, kHelp},
       {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
       {"translucency", optional_argument, nullptr, kTranslucency},
+      {"thickness", required_argument, nullptr, kThickness},
+      {"baked-thickness", required_argument, nullptr, kBakedThickness},
       {"back-light", no_argument, nullptr, kBackLight},
       {"no-object-ids", no_argument, nullptr, kNoObjectIds},
       {"dump", no_argument, nullptr, kDump},
@@ -306,6 +312,17 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         if (ok) o->jitter = v;
         break;
       }
+      case kThickness: {
+        const std::string v = optarg;
+        o->thickness_source = v == "shadow" ? 0 : v == "baked" ? 1 : v == "both" ? 2 : -1;
+        ok = o->thickness_source >= 0 || fail("--thickness wants shadow, baked or both", optarg);
+        break;
+      }
+      case kBakedThickness:
+        ok = (parse_float(optarg, &o->baked_thickness_mm) && o->baked_thickness_mm > 0.0f &&
+              o->baked_thickness_mm <= 100.0f) ||
+             fail("--baked-thickness wants millimetres in (0, 100]", optarg);
+        break;
       case kBackLight: o->back_light = true; break;
       case kNoObjectIds: o->object_ids = false; break;
       case kDump: o->dump = true; break;

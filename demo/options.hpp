@@ -34,6 +34,8 @@ struct Options {
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
+  int thickness_source = 0;      // TransmittanceInputs::thickness_source: 0 shadow maps, 1 baked, 2 both (the larger)
+  float baked_thickness_mm = 2.0f;  // the translucent materials' baked thickness (--baked-thickness), mm
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
   bool object_ids = true;        // the profile byte carries object IDs (--no-object-ids: the profile alone)
   float hand_colour[3] = {kHandColour[0], kHandColour[1], kHandColour[2]};  // --scene hand

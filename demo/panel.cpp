@@ -196,8 +196,10 @@ void draw_panel(WindowState *s) {
     }
   }
   if (ImGui::CollapsingHeader("Translucency")) {
-    ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
+    ImGui::Checkbox("translucency (transmittance through thin parts)", &s->controls.translucency);
     ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
+    ImGui::Combo("thickness", &s->controls.thickness_source, "shadow maps\0baked\0both (the larger)\0");
+    ImGui::SliderFloat("baked thickness (mm)", &s->controls.baked_thickness_mm, 0.1f, 20.0f, "%.1f");
     ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"
                         "  --back-light puts a light behind the head");
   }

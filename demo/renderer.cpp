@@ -153,6 +153,9 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   transmittance.world_units_per_profile_mm = r->scene->world_units_per_mm * controls.scale;  // as the blur
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
+  transmittance.thickness_source = controls.thickness_source;
+  // A thickness is geometry: millimetres of the scene, not scaled with the scattering.
+  transmittance.baked_thickness = controls.baked_thickness_mm * r->scene->world_units_per_mm;
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,
                     result->preintegrated ? &r->luts : nullptr, controls.object_ids);
   resolve_lighting(*targets);  // MSAA: the single-sample "before", specular and stencil for the composite

@@ -104,6 +104,10 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
     std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",
                   static_cast<double>(c.translucency_amount));
     result += text;
+    std::snprintf(text, sizeof text, "%.1f mm", static_cast<double>(c.baked_thickness_mm));
+    result += c.thickness_source == 0   ? ", thickness from the shadow maps"
+              : c.thickness_source == 1 ? std::string(", thickness baked ") + text
+                                        : std::string(", thickness the larger of baked ") + text + " and the shadow maps";
   }
   return result;
 }

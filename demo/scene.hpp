@@ -30,6 +30,7 @@ struct Light {
 // How the lighting pass treats one material of the model (same index as model.materials).
 struct MaterialLook {
   float sss_strength = 0.0f;        // the diffuse alpha (scales the scattering per pixel); > 0 sets stencil 1
+  float baked_thickness = 0.0f;     // world units, for --thickness baked/both; 0: the --baked-thickness value
   float specular_intensity = 0.0f;  // rho_s of the Kelemen/Szirmay-Kalos specular
   float roughness = 0.35f;          // Beckmann m
   // The G-buffer's profile/object byte (sss_frame.profile_texture): profile | object << 4. `profile`

@@ -41,6 +41,8 @@ struct SssControls {
   // with the profile the blur uses.
   bool translucency = false;
   float translucency_amount = 0.95f;  // the include's `translucency`, 0..1 (1: the most light through)
+  int thickness_source = 0;           // TransmittanceInputs::thickness_source (shadow, baked, both)
+  float baked_thickness_mm = 2.0f;    // translucent materials without their own MaterialLook::baked_thickness
   int msaa_samples = 0;          // 0, or 4: the lighting pass renders 4x MSAA targets and the library gets those
   // How skin scatters: the library's screen-space filter, pre-integrated shading in the lighting
   // pass (no SSS pass), or automatic: pre-integrated once a millimetre of skin at the scene's centre

@@ -1,6 +1,7 @@
-# Sourced by scripts/cost-table.sh and scripts/cost-times.sh: their shared options. The caller sets
-# the defaults first (size, scenes; reps and frames only where it takes them), then calls
-# `cost_options NAME "$@"`; sets baseline, baseline_name and probe (this build's sss_cost_probe).
+# Sourced by scripts/cost-table.sh, scripts/cost-times.sh and scripts/profile-cost.sh: their shared
+# options. The caller sets the defaults first (size, scenes; reps, frames and profiles only where it
+# takes them), then calls `cost_options NAME "$@"`; sets baseline, baseline_name and probe (this
+# build's sss_cost_probe). Also `median` (stdin: one number a line) for the wall-time scripts.
 cost_options() {
   local name=$1
   shift
@@ -12,7 +13,7 @@ cost_options() {
       --scenes) scenes=$2; shift 2 ;;
       --baseline) baseline=$2; shift 2 ;;
       --baseline-name) baseline_name=$2; shift 2 ;;
-      --reps | --frames)
+      --reps | --frames | --profiles)
         local variable=${1#--}
         [[ -v $variable ]] || { echo "$name: unknown argument '$1'" >&2; exit 2; }
         printf -v "$variable" '%s' "$2"
@@ -22,3 +23,5 @@ cost_options() {
   done
   probe=build/release/tests/bench/sss_cost_probe
 }
+
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }

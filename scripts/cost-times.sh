@@ -24,7 +24,6 @@ done
 time_of() {  # probe, scene, path: the median of one run's frames, in ms
   "$1" --scene "$2" --size "$size" --path "$3" --frames "$frames" | sed -n 's/.*median \([0-9.]*\) ms.*/\1/p'
 }
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 declare -A runs
 for ((r = 0; r < reps; ++r)); do

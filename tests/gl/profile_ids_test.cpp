@@ -17,7 +17,9 @@
 #include <functional>
 #include <string>
 
+#include "api/profiles.hpp"
 #include "filter_case.hpp"
+#include "math/cpu_separable_filter.hpp"
 #include "host_gl_util.hpp"
 #include "multisample_textures.hpp"
 
@@ -175,6 +177,46 @@ TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAloneOnLinearDepth) {
   linear_depth_ = true;
   const sss_settings profiles[2] = {first_, second_look(first_)};
   expect_each_material_alone(profiles, 1u);
+}
+
+// Against the CPU model of the per-pixel variant (math::cpu_profile_filter): two profiles and two
+// objects in one frame. Tolerance 3e-3 relative, as MatchesCpuModel.* (tests/gl/matches_cpu_model_test.cpp
+// explains it: a few float ulps of difference may flip the RGBA16F intermediate's rounding once, and
+// the output's once more); a wrong tap, weight, profile or index test moves values by 1e-2 or more.
+TEST_F(ProfileIds, MatchesTheCpuModel) {
+  const sss_settings profiles[2] = {first_, second_look(first_)};
+  const auto id = [](int x, int y) { return x < kBoundary ? (y < kH / 2 ? 0u : 0x10u) : (y < 20 ? 1u : 7u); };
+  const std::vector<float> gpu = run_profiles(profiles, 2, id);
+  std::vector<uint16_t> ids(static_cast<std::size_t>(kW) * kH);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) ids[static_cast<std::size_t>(y) * kW + x] = static_cast<uint16_t>(id(x, y));
+  }
+  std::vector<sss::math::PassKernel> kernels;
+  std::vector<sss::math::PassConstants> constants;
+  sss::math::FrameGeometry g;
+  g.texture_width = kW;
+  g.texture_height = kH;
+  g.viewport = {0, 0, kW, kH};
+  for (const sss_settings& s : profiles) {
+    const sss::math::FilterSettings fs = sss::api::to_filter_settings(s);
+    kernels.push_back(sss::math::build_pass_kernel(fs));
+    constants.push_back(sss::math::compute_pass_constants(fs, scene_.projection, g, kernels.back().reach_mm));
+  }
+  const std::vector<float> input = read_rgba(make_rgba16f(kW, kH, scene_.color), kW, kH);
+  sss::math::CpuFilterImage image;
+  image.width = kW;
+  image.height = kH;
+  image.color = input.data();
+  image.depth = scene_.window_depth.data();
+  image.output_is_half = true;  // written back into the RGBA16F colour
+  std::vector<float> cpu(input.size());
+  sss::math::cpu_profile_filter({&kernels[0], &kernels[1]}, constants, ids.data(), image, cpu.data());
+  const float difference = largest_relative_difference(gpu, cpu);
+  std::printf("GPU vs CPU model: largest relative difference %.3g\n", difference);
+  EXPECT_LE(difference, 3e-3f);
+  EXPECT_GT(largest_relative_difference(gpu, input), 0.02f);  // it blurred
+  // Pixels of index 7 (no such profile) kept their value on both.
+  EXPECT_EQ(gpu[(static_cast<std::size_t>(30) * kW + 50) * 4], input[(static_cast<std::size_t>(30) * kW + 50) * 4]);
 }
 
 TEST_F(ProfileIds, EachObjectOfOneMaterialMatchesItsRunAlone) {

@@ -10,6 +10,7 @@
 
 #include "filter_constants.hpp"
 #include "pass_kernel.hpp"
+#include "profile_set.hpp"
 
 namespace sss::math {
 
@@ -36,5 +37,13 @@ struct CpuFilterImage {
 // variance blends taps towards the centre by 1 - exp(-dz²/2v) instead of the ramp.
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
                             float* out);
+
+// Per-pixel profiles (separable_blur.frag's SSS_PROFILE_IDS variant): each pixel runs the one-term
+// kernel kernels[ids[i] & 15] with constants[ids[i] & 15] (their pixels per millimetre and
+// follow-surface numbers; the depth linearisation and clamp are constants[0]'s, which every profile
+// shares); a pixel whose index has no kernel keeps its value, and a tap whose whole index differs
+// from the centre's counts as the centre's colour. `ids`: one value per pixel, row 0 at the bottom.
+void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std::vector<PassConstants>& constants,
+                        const std::uint16_t* ids, const CpuFilterImage& image, float* out);
 
 }  // namespace sss::math
