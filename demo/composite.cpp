@@ -11,7 +11,8 @@ uniform sampler2D u_before;
 uniform sampler2D u_after;
 uniform sampler2D u_specular;
 uniform sampler2D u_heat_map;
-uniform int u_mode;         // 0 final, 1 split, 2 heat map, 3 touched
+uniform usampler2D u_profile;  // R8UI: profile | object << 4
+uniform int u_mode;         // 0 final, 1 split, 2 heat map, 3 touched, 4 profiles
 uniform float u_exposure;
 uniform float u_split_x;    // pixels from the left
 uniform vec2 u_size;        // output size in pixels
@@ -33,8 +34,24 @@ vec3 display(vec3 diffuse, vec3 specular) {
   return srgb_encode(filmic(max(diffuse + specular, vec3(0.0)) * u_exposure));
 }
 
+// Flat false colours (no shading, so each profile/object pair is one colour in the PNG): a hue per
+// profile, darker for each further object of it; the background and opaque pixels dark grey.
+const vec3 kProfileColours[8] = vec3[8](vec3(0.95, 0.55, 0.45), vec3(0.55, 0.75, 0.95), vec3(0.95, 0.85, 0.35),
+                                        vec3(0.55, 0.90, 0.50), vec3(0.80, 0.50, 0.90), vec3(0.40, 0.90, 0.85),
+                                        vec3(0.95, 0.45, 0.70), vec3(0.85, 0.85, 0.85));
+vec3 profile_colour(uint value, float alpha) {
+  if (alpha <= 0.0) return vec3(0.12);
+  uint profile = value & 15u, object = value >> 4;
+  vec3 c = kProfileColours[profile & 7u] * (profile >= 8u ? 0.6 : 1.0);
+  return c * (object <= 1u ? 1.0 : 1.0 - 0.22 * float((object - 1u) % 4u));
+}
+
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
+  if (u_mode == 4) {
+    o_color = vec4(profile_colour(texelFetch(u_profile, p, 0).r, texelFetch(u_before, p, 0).a), 1.0);
+    return;
+  }
   vec3 specular = texelFetch(u_specular, p, 0).rgb;
   if (u_mode == 1) {
     if (abs(gl_FragCoord.x - u_split_x) < 1.0) {  // two pixels wide
@@ -70,6 +87,7 @@ const char *view_mode_name(ViewMode mode) {
     case ViewMode::kSplit: return "split";
     case ViewMode::kHeatMap: return "heatmap";
     case ViewMode::kTouched: return "touched";
+    case ViewMode::kProfiles: return "profiles";
   }
   return "?";
 }
@@ -82,6 +100,7 @@ bool create_composite_pass(CompositePass *pass) {
   glUniform1i(glGetUniformLocation(pass->program, "u_after"), 1);
   glUniform1i(glGetUniformLocation(pass->program, "u_specular"), 2);
   glUniform1i(glGetUniformLocation(pass->program, "u_heat_map"), 3);
+  glUniform1i(glGetUniformLocation(pass->program, "u_profile"), 4);
   glUseProgram(0);
   glGenVertexArrays(1, &pass->vao);
   return check_gl("composite pass setup");
@@ -97,15 +116,15 @@ void run_composite_pass(const CompositePass &pass, const FrameTargets &targets, 
               static_cast<float>(static_cast<int>(in.split * static_cast<float>(targets.width))));
   glUniform2f(glGetUniformLocation(pass.program, "u_size"), static_cast<float>(targets.width),
               static_cast<float>(targets.height));
-  const GLuint textures[4] = {in.before, in.after, in.specular, in.heat_map};
-  for (GLuint unit = 0; unit < 4; ++unit) {
+  const GLuint textures[5] = {in.before, in.after, in.specular, in.heat_map, targets.profile};
+  for (GLuint unit = 0; unit < 5; ++unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, textures[unit]);
   }
   glBindVertexArray(pass.vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  for (GLuint unit = 4; unit-- > 0;) {
+  for (GLuint unit = 5; unit-- > 0;) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, 0);
   }

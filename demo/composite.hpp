@@ -6,6 +6,8 @@
 //   kTouched  which pixels the library changed: orange where after != before (bit for bit),
 //             blue where the pixel is translucent (alpha > 0) but came out unchanged, the rest
 //             the final image in dim grey
+//   kProfiles the G-buffer's profile/object byte in flat false colours: a hue per profile, a shade per
+//             object of it; not translucent (alpha 0) dark grey
 #pragma once
 
 #include "frame_targets.hpp"
@@ -16,9 +18,10 @@
 
 namespace demo {
 
-enum class ViewMode { kFinal, kSplit, kHeatMap, kTouched };
+enum class ViewMode { kFinal, kSplit, kHeatMap, kTouched, kProfiles };
+constexpr int kViewModeCount = 5;
 
-const char *view_mode_name(ViewMode mode);  // "final", "split", "heatmap", "touched"
+const char *view_mode_name(ViewMode mode);  // "final", "split", "heatmap", "touched", "profiles"
 
 struct CompositeInput {
   ViewMode mode = ViewMode::kFinal;

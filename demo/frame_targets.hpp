@@ -14,8 +14,10 @@ struct FrameTargets {
   GLuint specular = 0;       // RGBA16F: linear specular radiance, kept out of the blur
   GLuint depth_stencil = 0;  // DEPTH24_STENCIL8: stencil 1 where a translucent material is the visible surface
   GLuint after = 0;          // RGBA16F: the library's output (sss_apply_frame's output_texture)
+  GLuint profile = 0;        // R8UI: profile | object << 4 per pixel (sss_frame.profile_texture), 0 the background;
+                             // single-sample only (the library refuses a profile texture with MSAA colour)
   GLuint output = 0;         // RGBA8: tone-mapped and sRGB-encoded, what is shown and saved
-  GLuint lighting_framebuffer = 0;  // diffuse + specular + depth_stencil
+  GLuint lighting_framebuffer = 0;  // diffuse + specular + profile + depth_stencil
   GLuint output_framebuffer = 0;    // output
   // MSAA (samples > 0): the lighting pass renders into multisampled copies of diffuse, specular
   // and depth-stencil; the library reads those; diffuse and specular above get their box resolve

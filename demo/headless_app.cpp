@@ -5,6 +5,7 @@
 #include "apps.hpp"
 
 #include "context.hpp"
+#include "dump_output.hpp"
 #include "gl_functions.hpp"
 #include "heat_map.hpp"
 #include "host_gl_util.hpp"
@@ -72,6 +73,7 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   const bool ok = render_frame(renderer, m, small_controls, &small, false, &frame);
   SmallFrame data;
   if (ok) data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+  data.materials = reference_materials(*renderer->scene);
   destroy_frame_targets(&small);
   if (!ok) return false;
 
@@ -131,6 +133,8 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
       {"split", "left: without, right: with subsurface scattering", &frame, ViewMode::kSplit},
       {"heatmap", "error against the exact reference (small frame, scaled up)", &frame, ViewMode::kHeatMap},
       {"touched", "pixels the library changed (orange), translucent but unchanged (blue)", &frame, ViewMode::kTouched},
+      {"profiles", "the G-buffer's profile/object byte in false colours (a hue per profile, a shade per object)",
+       &frame, ViewMode::kProfiles},
   };
   const std::string settings = format_settings(renderer->sss.settings, controls, scene.world_units_per_mm);
   bool ok = true;
@@ -144,6 +148,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
     if (&v == &views[1]) after = image;
     std::string description = std::string(v.title) + ". " + scene.name + ", " + preset_title(preset) + ", " +
                               std::to_string(targets->width) + "x" + std::to_string(targets->height) + ". " + settings;
+    if (v.mode == ViewMode::kProfiles) description += ". " + profile_legend(scene, controls);
     if (v.mode == ViewMode::kHeatMap) {
       char extra[256];
       std::snprintf(extra, sizeof extra,
@@ -171,6 +176,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
                             context.renderer)) &&
        ok;
   glDeleteTextures(1, &heat_texture);
+  if (o.dump) ok = write_frame_dumps(*targets, frame.sss_ran, prefix) && ok;
   return ok && check_gl("the views");
 }
 
@@ -183,7 +189,7 @@ bool write_text(const std::string &path, const std::string &text) {
 }
 
 std::string readme(const Options &o, const Context &context, const DemoScene &scene, const std::string &settings,
-                   const std::vector<PresetReport> &reports) {
+                   const std::vector<PresetReport> &reports, const std::string &profile_note) {
   std::string t =
       "sss_demo --headless: screen-space separable subsurface scattering (Jimenez et al. 2012)\n\n"
       "For each camera preset (close = close-up, mid = mid shot, far = far shot):\n"
@@ -196,12 +202,15 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
       "                      re-render of the same frame at 1/heat-factor of each side, shown scaled up.\n"
       "  PRESET-touched.png  orange: pixels the library changed; blue: translucent but unchanged; grey: the rest\n"
       "  PRESET-zoom.png     before | after, magnified 3x, around the block where they differ most\n"
+      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n"
       "Tone mapping: x exposure, Narkowicz's ACES filmic fit, sRGB.\n\n";
   t += "Scene        " + scene.name + ": " + scene.description + "\n";
   t += "GL_RENDERER  " + context.renderer + "\nGL_VERSION   " + context.version + "\nbackend      " +
        context.backend + " (requested " + o.backend + ")\n";
   t += "size         " + std::to_string(o.width) + "x" + std::to_string(o.height) + "\n";
   t += "settings     " + settings + "\n";
+  t += "materials    " + profile_legend(scene, controls_from_options(o)) + "\n";
+  if (!profile_note.empty()) t += "             " + profile_note + "\n";
   char line[512];
   std::snprintf(line, sizeof line, "exposure %.3g, heat scale %.3g, heat factor %d, %d timed frames per preset\n\n",
                 static_cast<double>(o.exposure), static_cast<double>(o.heat_scale), o.heat_factor, o.repeat);
@@ -268,6 +277,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
                     : stats.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "fragment passes behind a stencil from alpha"
                                                                         : "fragment passes");
       }
+      if (!renderer.sss.profile_note.empty()) std::printf("         note: %s\n", renderer.sss.profile_note.c_str());
       std::printf("         heat map: exact reference at %dx%d in %.2f s; interior miss %.3f (worst channel %.3f; no SSS:"
                   " 1); relative RMSE %.4f with SSS, %.4f without; touched %llu of %llu marked pixels\n",
                   report.small_width, report.small_height, report.reference.seconds, report.heat.miss_interior,
@@ -281,11 +291,11 @@ int run_headless(const Options &o, const DemoScene &scene) {
     const std::string settings =
         format_settings(renderer.sss.settings, controls, scene.world_units_per_mm);
     const std::filesystem::path dir(o.out_dir);
-    ok = write_text((dir / "README.txt").string(), readme(o, context, scene, settings, reports));
+    ok = write_text((dir / "README.txt").string(), readme(o, context, scene, settings, reports, renderer.sss.profile_note));
     if (ok && !scene.attribution.empty())
       ok = write_text((dir / "ATTRIBUTION.txt").string(), "The images in this folder show a model whose licence asks for this attribution:\n" +
                                                               scene.attribution + "\n");
-    if (ok) std::printf("wrote %zu presets x {before,after,split,heatmap,touched,zoom}.png and README.txt into %s\n",
+    if (ok) std::printf("wrote %zu presets x {before,after,split,heatmap,touched,zoom,profiles}.png and README.txt into %s\n",
                         reports.size(), o.out_dir.c_str());
   }
   if (!scene.attribution.empty()) std::printf("%s\n", scene.attribution.c_str());

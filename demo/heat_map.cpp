@@ -7,6 +7,7 @@
 
 #include "math/exact_reference.hpp"
 #include "math/projection.hpp"
+#include "material_terms.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -17,8 +18,6 @@
 
 namespace demo {
 
-namespace {
-
 std::vector<float> read_texture_rgba(GLuint texture, int width, int height) {
   std::vector<float> rgba(static_cast<size_t>(width) * static_cast<size_t>(height) * 4u);
   glBindTexture(GL_TEXTURE_2D, texture);
@@ -27,6 +26,18 @@ std::vector<float> read_texture_rgba(GLuint texture, int width, int height) {
   glBindTexture(GL_TEXTURE_2D, 0);
   return rgba;
 }
+
+std::vector<uint8_t> read_texture_r8ui(GLuint texture, int width, int height) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(width) * static_cast<size_t>(height));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return bytes;
+}
+
+namespace {
 
 sss_bench::RgbImage rgb_of(const std::vector<float> &rgba, int width, int height) {
   return sss_bench::RgbImage::from_rgba(rgba.data(), width, height);
@@ -49,6 +60,7 @@ SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &c
   std::memcpy(f.projection.data(), glm::value_ptr(camera.projection), sizeof(float) * 16);
   f.before = read_texture_rgba(targets.diffuse, f.width, f.height);
   if (sss_ran) f.after = read_texture_rgba(targets.after, f.width, f.height);
+  f.ids = read_texture_r8ui(targets.profile, f.width, f.height);
 
   const size_t n = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
   std::vector<float> depth(n);
@@ -66,6 +78,41 @@ SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &c
   return f;
 }
 
+std::vector<int> reference_materials(const DemoScene &scene) {
+  std::vector<int> materials;
+  if (!uses_profiles(scene)) return materials;
+  for (const SceneProfile &p : scene.profiles) materials.push_back(p.material < 0 ? SSS_PROFILE_SKIN_DEON : p.material);
+  return materials;
+}
+
+namespace {
+
+// Each profile/object byte's pixels with their own profile over their own pixels.
+void per_material_reference(const SmallFrame &frame, const sss::math::ExactInput &base, Reference *r) {
+  std::vector<uint8_t> values;
+  for (size_t i = 0; i < frame.ids.size(); ++i) {
+    if (frame.mask[i] != 0 && std::find(values.begin(), values.end(), frame.ids[i]) == values.end())
+      values.push_back(frame.ids[i]);
+  }
+  std::vector<double> rgb(r->rgb.size());
+  for (uint8_t value : values) {
+    std::vector<uint8_t> mask(frame.mask.size());
+    for (size_t i = 0; i < mask.size(); ++i) mask[i] = frame.mask[i] != 0 && frame.ids[i] == value ? 1 : 0;
+    sss::math::ExactInput input = base;
+    input.mask = mask.data();
+    const size_t profile = value & 15u;
+    const int material = profile < frame.materials.size() ? frame.materials[profile] : SSS_PROFILE_SKIN_DEON;
+    sss::math::ExactSurfaceConvolution(input, sss_bench::material_profile_terms(material))
+        .convolve({0, 0, frame.width, frame.height}, rgb.data());
+    for (size_t i = 0; i < mask.size(); ++i) {
+      if (mask[i] == 0) continue;
+      for (size_t c = 0; c < 3; ++c) r->rgb[i * 3 + c] = rgb[i * 3 + c];
+    }
+  }
+}
+
+}  // namespace
+
 Reference compute_reference(const SmallFrame &frame) {
   const auto start = std::chrono::steady_clock::now();
   sss::math::ExactInput input;
@@ -76,12 +123,20 @@ Reference compute_reference(const SmallFrame &frame) {
   input.mask = frame.mask.data();
   input.projection = frame.projection;
   input.world_units_per_mm = frame.world_units_per_mm;
-  const sss::math::ExactSurfaceConvolution exact(input, sss::math::skin_profile_terms());
   Reference r;
   r.width = frame.width;
   r.height = frame.height;
   r.rgb.resize(static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height) * 3u);
-  exact.convolve({0, 0, frame.width, frame.height}, r.rgb.data());
+  if (!frame.materials.empty()) {
+    // Pixels outside every mask keep their input (the convolution's rule for them).
+    for (size_t i = 0; i < frame.mask.size(); ++i) {
+      for (size_t c = 0; c < 3; ++c) r.rgb[i * 3 + c] = frame.before[i * 4 + c];
+    }
+    per_material_reference(frame, input, &r);
+  } else {
+    const sss::math::ExactSurfaceConvolution exact(input, sss::math::skin_profile_terms());
+    exact.convolve({0, 0, frame.width, frame.height}, r.rgb.data());
+  }
   r.translucent_pixels = static_cast<size_t>(std::count(frame.mask.begin(), frame.mask.end(), 1));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

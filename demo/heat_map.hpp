@@ -34,9 +34,17 @@ struct SmallFrame {
   std::vector<float> after;     // RGBA: the library's output (empty when SSS is off)
   std::vector<float> distance;  // view distance (-z_view) per pixel, world units
   std::vector<uint8_t> mask;    // 1 where translucent (alpha > 0)
+  std::vector<uint8_t> ids;     // the G-buffer's profile | object << 4
+  // The sss_profile of each profile index (the reference convolves each profile/object byte's pixels
+  // with its profile over those pixels only); empty: d'Eon's skin for every pixel, as one surface.
+  std::vector<int> materials;
   std::array<float, 16> projection{};
   double world_units_per_mm = 0.001;
 };
+
+// A texture's level 0 read back, rows bottom-up: RGBA floats; the R8UI profile/object bytes.
+std::vector<float> read_texture_rgba(GLuint texture, int width, int height);
+std::vector<uint8_t> read_texture_r8ui(GLuint texture, int width, int height);
 
 // Reads the small targets back (a current context; `sss_ran`: whether `after` holds the library's output).
 SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
@@ -50,7 +58,13 @@ struct Reference {
   std::size_t translucent_pixels = 0;
 };
 
-// The exact reference of the frame's diffuse (no GL; any thread; uses every core).
+// The scene's profiles as SmallFrame::materials wants them (profile 0, the controls', as skin);
+// empty for a scene of one material and one object.
+std::vector<int> reference_materials(const DemoScene &scene);
+
+// The exact reference of the frame's diffuse (no GL; any thread; uses every core). With materials:
+// per profile/object byte (skin: d'Eon's six Gaussians; a measured material: the library's Gaussian
+// fit of its dipole, tests/bench/material_terms.hpp).
 Reference compute_reference(const SmallFrame &frame);
 
 struct HeatMap {

@@ -54,7 +54,13 @@ uniform mat4 u_light_projection[2];
 uniform int u_transmittance;       // 1: add the light transmitted through thin parts
 uniform float u_sss_width;
 uniform float u_translucency;
+uniform int u_thickness_source;    // 0: the shadow map, 1: the material's baked thickness, 2: the larger
+uniform float u_baked_thickness;   // world units (a host's baked map or attribute would give it per texel)
 uniform float u_shrink[2];         // world units the thickness lookup pulls the point inward
+uniform uint u_profile_byte;       // the material's profile | object << 4 (sss_frame.profile_texture)
+uniform vec3 u_emission;           // unlit radiance (the flame), alpha 0: never scattered
+uniform vec3 u_point_position;     // a point light without shadows (the flame); colour 0: none
+uniform vec3 u_point_colour;
 #ifdef SSS_PREINTEGRATED
 uniform sampler2D u_diffuse_lut;     // sss_lut_create_texture(SSS_LUT_DIFFUSE)
 uniform sampler2D u_shadow_lut;      // sss_lut_create_texture(SSS_LUT_SHADOW), box filter
@@ -66,6 +72,7 @@ uniform float u_shadow_texel_world[2];
 
 layout(location = 0) out vec4 o_diffuse;
 layout(location = 1) out vec4 o_specular;
+layout(location = 2) out uint o_profile;
 
 // PCF: 3x3 taps one texel apart, each a hardware-filtered 2x2 comparison.
 float shadow_factor(sampler2DShadow map, mat4 light_matrix, float texel, vec3 p) {
@@ -137,24 +144,33 @@ void main() {
 #endif
     specular += u_light_irradiance[i] * (shadow * ksk_specular(n, l, v, u_roughness, u_specular_intensity));
     // Transmittance through thin parts (ears, nostrils): the thickness from the same shadow map
-    // read as plain depth, the profile the blur uses (terms uploaded from the library's C API).
+    // read as plain depth, or the material's baked one, or the larger of both; the profile the blur
+    // uses (terms uploaded from the library's C API).
     if (u_transmittance == 1 && u_sss_strength > 0.0) {
-      float thickness = i == 0 ? sss_thickness(u_depth_map0, u_light_view[0], u_light_projection[0], v_position,
-                                               geometric, u_shrink[0])
-                               : sss_thickness(u_depth_map1, u_light_view[1], u_light_projection[1], v_position,
-                                               geometric, u_shrink[1]);
+      float thickness = u_baked_thickness;
+      if (u_thickness_source != 1) {
+        float shadow = i == 0 ? sss_thickness(u_depth_map0, u_light_view[0], u_light_projection[0], v_position,
+                                              geometric, u_shrink[0])
+                              : sss_thickness(u_depth_map1, u_light_view[1], u_light_projection[1], v_position,
+                                              geometric, u_shrink[1]);
+        thickness = u_thickness_source == 0 ? shadow : sss_thickness_combined(u_baked_thickness, shadow);
+      }
       irradiance += u_light_irradiance[i] * sss_transmittance(thickness, u_sss_width, u_translucency, geometric, l);
     }
   }
+  vec3 to_point = u_point_position - v_position;
+  irradiance += u_point_colour * max(dot(n, normalize(to_point)), 0.0) / max(dot(to_point, to_point), 1e-6);
   vec3 albedo = texture(u_albedo, v_texcoord).rgb * u_base_color.rgb;
-  o_diffuse = vec4(albedo * irradiance, u_sss_strength);
+  o_diffuse = vec4(albedo * irradiance + u_emission, u_sss_strength);
+  o_profile = u_profile_byte;
   o_specular = vec4(specular, 0.0);
 }
 )";
 
 struct Uniforms {
-  GLint transmittance, sss_width, translucency, terms, term_count;
+  GLint transmittance, sss_width, translucency, terms, term_count, thickness_source, baked_thickness;
   GLint light_view[kMaxLights], light_projection[kMaxLights], shrink[kMaxLights];
+  GLint profile_byte, emission;
   GLint view_projection, light_count, eye, sky_ambient, ground_ambient, base_color, normal_scale, green_sign,
       sss_strength, specular_intensity, roughness;
   GLint light_matrix[kMaxLights], light_direction[kMaxLights], light_irradiance[kMaxLights],
@@ -165,6 +181,8 @@ Uniforms locate(GLuint p) {
   Uniforms u{};
   u.view_projection = glGetUniformLocation(p, "u_view_projection");
   u.light_count = glGetUniformLocation(p, "u_light_count");
+  u.profile_byte = glGetUniformLocation(p, "u_profile_byte");
+  u.emission = glGetUniformLocation(p, "u_emission");
   u.eye = glGetUniformLocation(p, "u_eye");
   u.sky_ambient = glGetUniformLocation(p, "u_sky_ambient");
   u.ground_ambient = glGetUniformLocation(p, "u_ground_ambient");
@@ -179,6 +197,8 @@ Uniforms locate(GLuint p) {
   u.translucency = glGetUniformLocation(p, "u_translucency");
   u.terms = glGetUniformLocation(p, "sss_transmittance_terms");
   u.term_count = glGetUniformLocation(p, "sss_transmittance_term_count");
+  u.thickness_source = glGetUniformLocation(p, "u_thickness_source");
+  u.baked_thickness = glGetUniformLocation(p, "u_baked_thickness");
   for (int i = 0; i < kMaxLights; ++i) {
     const std::string index = "[" + std::to_string(i) + "]";
     u.light_matrix[i] = glGetUniformLocation(p, ("u_light_matrix" + index).c_str());
@@ -226,7 +246,7 @@ bool create_lighting_pass(LightingPass *pass) {
 
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
                        const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
-                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts) {
+                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts, bool object_ids) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, lighting_target(targets));
   glViewport(0, 0, targets.width, targets.height);
   // Background: alpha 0 (no scattering), no specular; depth 1, stencil 0.
@@ -234,6 +254,8 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, background);
   glClearBufferfv(GL_COLOR, 1, black);
+  const GLuint background_profile[4] = {0, 0, 0, 0};  // profile 0, object 0 (alpha 0 leaves it alone anyway)
+  if (targets.samples == 0) glClearBufferuiv(GL_COLOR, 2, background_profile);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glClearDepth(1.0);
@@ -270,6 +292,8 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glUniform3fv(u.ground_ambient, 1, glm::value_ptr(scene.ground_ambient));
   glUniform1f(u.green_sign, scene.normal_green_sign);
   glUniform1i(u.light_count, shadows.light_count);
+  glUniform3fv(glGetUniformLocation(program, "u_point_position"), 1, glm::value_ptr(scene.point_light.position));
+  glUniform3fv(glGetUniformLocation(program, "u_point_colour"), 1, glm::value_ptr(scene.point_light.colour));
   float terms[SSS_PROFILE_MAX_TERMS * 4] = {};
   int32_t term_count = 0;
   const bool transmit = transmittance.enabled &&
@@ -283,6 +307,7 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glUniform1f(u.sss_width,
               transmittance.world_units_per_profile_mm / sss_world_units_per_mm_from_legacy_width(1.0f));
   glUniform1f(u.translucency, transmittance.translucency);
+  glUniform1i(u.thickness_source, transmittance.thickness_source);
   for (int i = 0; i < shadows.light_count; ++i) {
     const ShadowMap &map = shadows.maps[static_cast<size_t>(i)];
     const Light &light = scene.lights[static_cast<size_t>(i)];
@@ -318,8 +343,11 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
     glUniform4fv(u.base_color, 1, material.base_color);
     glUniform1f(u.normal_scale, material.normal_scale);
     glUniform1f(u.sss_strength, look.sss_strength);
+    glUniform1f(u.baked_thickness, look.baked_thickness > 0.0f ? look.baked_thickness : transmittance.baked_thickness);
     glUniform1f(u.specular_intensity, look.specular_intensity);
     glUniform1f(u.roughness, look.roughness);
+    glUniform1ui(u.profile_byte, profile_byte(look, object_ids));
+    glUniform3fv(u.emission, 1, glm::value_ptr(look.emission));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, gpu.materials[index].albedo);
     glActiveTexture(GL_TEXTURE1);

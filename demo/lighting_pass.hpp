@@ -4,6 +4,7 @@
 //   specular  Kelemen/Szirmay-Kalos specular with a Beckmann lobe (d'Eon & Luebke 2007, as the paper
 //             uses), per light x shadow
 //   depth-stencil  stencil 1 where a translucent material (strength > 0) is the visible surface
+//   profile   R8UI: the material's profile | object << 4 (cleared to 0; not written with MSAA)
 // Normal maps use the glTF tangent frame: bitangent = cross(N, T) * w, green scaled by the scene's
 // normal_green_sign.
 #pragma once
@@ -44,13 +45,20 @@ struct TransmittanceInputs {
   float world_units_per_profile_mm = 0.0f;
   float translucency = 0.8f;   // 0..1
   std::uint32_t profile = 0;   // SSS_PROFILE_*: the blur's profile, whose terms the include evaluates
+  // Where the thickness comes from: 0 the lights' shadow maps (sss_thickness), 1 each translucent
+  // material's baked thickness (MaterialLook::baked_thickness, else baked_thickness: the shape a
+  // host's baked map or attribute gives), 2 the larger of both (sss_thickness_combined).
+  int thickness_source = 0;
+  float baked_thickness = 0.002f;  // world units
 };
 
 bool create_lighting_pass(LightingPass *pass);
-// luts != nullptr: translucent materials are shaded with pre-integrated scattering.
+// luts != nullptr: translucent materials are shaded with pre-integrated scattering. object_ids false:
+// the profile attachment gets the profile alone (object 0 everywhere: light crosses between objects).
 void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, const DemoScene &scene,
                        const GpuScene &gpu, const ShadowPass &shadows, const CameraMatrices &camera,
-                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts = nullptr);
+                       const TransmittanceInputs &transmittance, const PreintegratedLuts *luts = nullptr,
+                       bool object_ids = true);
 void destroy_lighting_pass(LightingPass *pass);
 
 }  // namespace demo

@@ -30,7 +30,10 @@ SssControls controls_from_options(const Options &o) {
   c.path = static_cast<int>(o.path);
   c.translucency = o.translucency;
   c.translucency_amount = o.translucency_amount;
+  c.thickness_source = o.thickness_source;
+  c.baked_thickness_mm = o.baked_thickness_mm;
   c.msaa_samples = o.msaa;
+  c.object_ids = o.object_ids;
   return c;
 }
 
@@ -42,11 +45,19 @@ bool load_scene(const Options &o, DemoScene *scene) {
       *scene = load_gltf_scene(o.gltf_path);
     else if (o.scene == "sphere")
       *scene = make_sphere_scene();
+    else if (o.scene == "mixed")
+      *scene = make_mixed_scene();
+    else if (o.scene == "hand")
+      *scene = make_hand_scene();
     else
       *scene = load_head_scene();
   } catch (const std::exception &e) {
     std::fprintf(stderr, "sss_demo: %s\n", e.what());
     return false;
+  }
+  if (scene->hand_material >= 0) {
+    float *colour = scene->model.materials[static_cast<size_t>(scene->hand_material)].base_color;
+    for (int k = 0; k < 3; ++k) colour[k] = o.hand_colour[k];
   }
   if (o.back_light && !scene->lights.empty()) {
     // Behind the head and a little to the side: the ears and the nostrils' wings stand between it

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
 #include <string>
 
 namespace demo {
@@ -69,7 +70,7 @@ bool parse_size(const char *text, int *width, int *height) {
 }
 
 bool parse_view(const char *text, ViewMode *out) {
-  for (ViewMode m : {ViewMode::kFinal, ViewMode::kSplit, ViewMode::kHeatMap, ViewMode::kTouched}) {
+  for (ViewMode m : {ViewMode::kFinal, ViewMode::kSplit, ViewMode::kHeatMap, ViewMode::kTouched, ViewMode::kProfiles}) {
     if (std::strcmp(text, view_mode_name(m)) == 0) {
       *out = m;
       return true;
@@ -93,7 +94,13 @@ void print_usage(const char *program) {
       "  --headless          no window: render through EGL/OSMesa and write, for each preset,\n"
       "                      PRESET-{before,after,split,heatmap,touched,zoom}.png and README.txt into --out\n"
       "  --backend NAME      headless context: osmesa | egl | egl-device (default egl; falls back to osmesa)\n"
-      "  --scene NAME        head (default) | sphere (a lit sphere and a box's hard shadow)\n"
+      "  --scene NAME        head (default) | sphere (a lit sphere and a box's hard shadow) | mixed (the head,\n"
+      "                      a marble bust and a wax candle: three profiles in one pass pair) | hand (a hand\n"
+      "                      in front of the cheek: the bleeding test scene)\n"
+      "  --no-object-ids     the profile byte without object IDs (light crosses between objects of one profile)\n"
+      "  --hand-colour R,G,B the hand's linear base colour, each in [0, 1] (--scene hand)\n"
+      "  --dump              headless: also PRESET-{before,after}.pfm (linear diffuse, float) and PRESET-ids.pgm\n"
+      "                      (the profile/object byte) for the tests\n"
       "  --size WxH          window / image size (default 1280x720)\n"
       "  --out DIR           folder for PNGs and screenshots (default ./demo-out)\n"
       "  --preset NAME       close | mid | far | all (headless default: all; window: the first view)\n"
@@ -119,12 +126,15 @@ void print_usage(const char *program) {
       "                      (OpenGL 4.3+ compute dispatches, shared-memory rows and columns)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
+      "  --thickness NAME    where the translucency's thickness comes from: shadow (the light's shadow map,\n"
+      "                      default) | baked (each translucent material's baked thickness) | both (the larger)\n"
+      "  --baked-thickness MM  the baked thickness of translucent materials, (0, 100] mm (default 2)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
       "  --repeat N          headless: timed frames per preset, median reported (default 5)\n"
-      "  --view NAME         window: final | split | heatmap | touched (default final)\n"
+      "  --view NAME         window: final | split | heatmap | touched | profiles (default final)\n"
       "  --frames N          window: close after N frames (for tests)\n"
       "  --screenshot-frame K  window: save a screenshot at frame K, as F12 does (for tests)\n"
       "  --help              this text\n\n"
@@ -136,8 +146,9 @@ void print_usage(const char *program) {
 ParseResult parse_options(int argc, char **argv, Options *o) {
   enum {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
+    kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
-    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter
+    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kNoObjectIds, kDump, kHandColourOption
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -170,7 +181,12 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"help", no_argument, nullptr, kHelp},
       {"cross-bilateral", no_argument, nullptr, kCrossBilateral},
       {"translucency", optional_argument, nullptr, kTranslucency},
+      {"thickness", required_argument, nullptr, kThickness},
+      {"baked-thickness", required_argument, nullptr, kBakedThickness},
       {"back-light", no_argument, nullptr, kBackLight},
+      {"no-object-ids", no_argument, nullptr, kNoObjectIds},
+      {"dump", no_argument, nullptr, kDump},
+      {"hand-colour", required_argument, nullptr, kHandColourOption},
       {nullptr, 0, nullptr, 0}};
 
   opterr = 1;
@@ -189,7 +205,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       }
       case kScene:
         o->scene = optarg;
-        ok = o->scene == "head" || o->scene == "sphere" || fail("--scene wants head or sphere", optarg);
+        ok = o->scene == "head" || o->scene == "sphere" || o->scene == "mixed" || o->scene == "hand" ||
+             fail("--scene wants head, sphere, mixed or hand", optarg);
         break;
       case kSize:
         ok = parse_size(optarg, &o->width, &o->height) || fail("--size wants WxH with sides in [64, 8192]", optarg);
@@ -250,7 +267,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
              fail("--repeat wants an integer in [1, 1000]", optarg);
         break;
       case kView:
-        ok = parse_view(optarg, &o->view) || fail("--view wants final, split, heatmap or touched", optarg);
+        ok = parse_view(optarg, &o->view) || fail("--view wants final, split, heatmap, touched or profiles", optarg);
         break;
       case kFrames:
         ok = (parse_int(optarg, &o->frames) && o->frames >= 0) || fail("--frames wants a count >= 0", optarg);
@@ -295,7 +312,27 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         if (ok) o->jitter = v;
         break;
       }
+      case kThickness: {
+        const std::string v = optarg;
+        o->thickness_source = v == "shadow" ? 0 : v == "baked" ? 1 : v == "both" ? 2 : -1;
+        ok = o->thickness_source >= 0 || fail("--thickness wants shadow, baked or both", optarg);
+        break;
+      }
+      case kBakedThickness:
+        ok = (parse_float(optarg, &o->baked_thickness_mm) && o->baked_thickness_mm > 0.0f &&
+              o->baked_thickness_mm <= 100.0f) ||
+             fail("--baked-thickness wants millimetres in (0, 100]", optarg);
+        break;
       case kBackLight: o->back_light = true; break;
+      case kNoObjectIds: o->object_ids = false; break;
+      case kDump: o->dump = true; break;
+      case kHandColourOption: {
+        char tail = '\0';
+        ok = (std::sscanf(optarg, "%f,%f,%f%c", &o->hand_colour[0], &o->hand_colour[1], &o->hand_colour[2], &tail) == 3 &&
+              std::all_of(o->hand_colour, o->hand_colour + 3, [](float v) { return v >= 0.0f && v <= 1.0f; })) ||
+             fail("--hand-colour wants R,G,B in [0, 1]", optarg);
+        break;
+      }
       case kTranslucency: {
         o->translucency = true;
         if (optarg != nullptr) {

@@ -3,6 +3,7 @@
 
 #include "camera.hpp"
 #include "composite.hpp"
+#include "scene.hpp"
 
 #include <string>
 #include <vector>
@@ -12,7 +13,7 @@ namespace demo {
 struct Options {
   bool headless = false;
   std::string backend = "egl";   // headless: osmesa | egl | egl-device
-  std::string scene = "head";    // head | sphere
+  std::string scene = "head";    // head | sphere | mixed | hand
   std::string gltf_path;         // a glTF file instead of the built-in scene
   int width = 1280;
   int height = 720;
@@ -33,7 +34,12 @@ struct Options {
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts
   float translucency_amount = 0.95f;
+  int thickness_source = 0;      // TransmittanceInputs::thickness_source: 0 shadow maps, 1 baked, 2 both (the larger)
+  float baked_thickness_mm = 2.0f;  // the translucent materials' baked thickness (--baked-thickness), mm
   bool back_light = false;       // the second light moves behind the head (ears glow with --translucency)
+  bool object_ids = true;        // the profile byte carries object IDs (--no-object-ids: the profile alone)
+  float hand_colour[3] = {kHandColour[0], kHandColour[1], kHandColour[2]};  // --scene hand
+  bool dump = false;             // headless: linear before/after (PFM) and the profile byte (PGM) per preset
   float scale = 1.0f;            // sss_settings.scale: multiplies the scattering distances (1 = physical size)
   int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
   float exposure = 1.0f;

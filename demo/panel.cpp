@@ -86,6 +86,8 @@ void view_section(WindowState *s) {
   ImGui::RadioButton("heat map", &view, static_cast<int>(ViewMode::kHeatMap));
   ImGui::SameLine();
   ImGui::RadioButton("touched", &view, static_cast<int>(ViewMode::kTouched));
+  ImGui::SameLine();
+  ImGui::RadioButton("profiles", &view, static_cast<int>(ViewMode::kProfiles));
   s->view = static_cast<ViewMode>(view);
   ImGui::SliderFloat("exposure", &s->exposure, 0.1f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
   if (s->view == ViewMode::kSplit) {
@@ -125,6 +127,7 @@ void view_section(WindowState *s) {
   }
   if (s->view == ViewMode::kTouched)
     ImGui::TextWrapped("orange: changed by the library; blue: translucent but unchanged; grey: left alone.");
+  if (s->view == ViewMode::kProfiles) ImGui::TextWrapped("%s", profile_legend(*s->scene, s->controls).c_str());
 }
 
 void timing_section(WindowState *s) {
@@ -184,9 +187,19 @@ void draw_panel(WindowState *s) {
       s->controls.msaa_samples = msaa ? 4 : 0;
     }
   }
+  if (s->scene->profiles.size() > 1 || !s->scene->object_names.empty()) {
+    if (ImGui::CollapsingHeader("Materials and objects", ImGuiTreeNodeFlags_DefaultOpen)) {
+      ImGui::Checkbox("object IDs (no light between objects)", &s->controls.object_ids);
+      ImGui::TextWrapped("%s", profile_legend(*s->scene, s->controls).c_str());
+      ImGui::TextDisabled("  the G-buffer's R8UI byte: profile | object << 4 (the \"profiles\" view)");
+      if (!s->profile_note.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", s->profile_note.c_str());
+    }
+  }
   if (ImGui::CollapsingHeader("Translucency")) {
-    ImGui::Checkbox("translucency (transmittance from the shadow maps)", &s->controls.translucency);
+    ImGui::Checkbox("translucency (transmittance through thin parts)", &s->controls.translucency);
     ImGui::SliderFloat("translucency", &s->controls.translucency_amount, 0.0f, 1.0f, "%.2f");
+    ImGui::Combo("thickness", &s->controls.thickness_source, "shadow maps\0baked\0both (the larger)\0");
+    ImGui::SliderFloat("baked thickness (mm)", &s->controls.baked_thickness_mm, 0.1f, 20.0f, "%.1f");
     ImGui::TextDisabled("  integration/glsl/sss_transmittance.glsl with the blur's profile;\n"
                         "  --back-light puts a light behind the head");
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <vector>
 
 #include "host_gl_util.hpp"
 #include "sss/sss_lut.h"
@@ -152,8 +153,11 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
   transmittance.world_units_per_profile_mm = r->scene->world_units_per_mm * controls.scale;  // as the blur
   transmittance.translucency = controls.translucency_amount;
   transmittance.profile = blur_profile(controls);
+  transmittance.thickness_source = controls.thickness_source;
+  // A thickness is geometry: millimetres of the scene, not scaled with the scattering.
+  transmittance.baked_thickness = controls.baked_thickness_mm * r->scene->world_units_per_mm;
   run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance,
-                    result->preintegrated ? &r->luts : nullptr);
+                    result->preintegrated ? &r->luts : nullptr, controls.object_ids);
   resolve_lighting(*targets);  // MSAA: the single-sample "before", specular and stencil for the composite
   lap(&t.lighting_ms);
   if (!check_gl("the shadow and lighting passes")) return false;
@@ -162,7 +166,8 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     // result goes where the library's output would ("after") and a Lambert lighting pass refills
     // "before"; untimed: a renderer using pre-integrated shading would not draw it.
     copy_diffuse_to_after(*targets);
-    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance, nullptr);
+    run_lighting_pass(r->lighting, *targets, *r->scene, r->gpu, r->shadows, camera, transmittance, nullptr,
+                      controls.object_ids);
     resolve_lighting(*targets);
     result->sss_ran = true;
     double untimed = 0.0;
@@ -181,12 +186,20 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     shape.samples = targets->samples;
     shape.stencil = controls.use_stencil;
     shape.region = has_region;
+    std::vector<int> materials;
+    for (size_t i = 1; i < r->scene->profiles.size(); ++i) materials.push_back(r->scene->profiles[i].material);
+    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm, materials, uses_profiles(*r->scene)))
+      return false;
+    // Several profiles or objects: the G-buffer's byte goes with the frame when the controls allow
+    // per-pixel profiles (else every pixel is profile 0, as before them), single-sample only (the
+    // library refuses a profile texture with MSAA colour).
+    shape.profile_texture = uses_profiles(*r->scene) && targets->samples == 0 && r->sss.per_pixel;
     // After new settings or a resize, sss_prepare builds and allocates what the frame will need,
     // so the frame itself does not (no hitch; a no-op when nothing changed).
-    if (!set_sss_controls(&r->sss, controls, r->scene->world_units_per_mm) || !prepare_sss(&r->sss, shape) ||
+    if (!prepare_sss(&r->sss, shape) ||
         !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
                    targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
-                   has_region ? region : nullptr)) {
+                   has_region ? region : nullptr, shape.profile_texture ? targets->profile : 0u)) {
       return false;
     }
     result->sss_ran = true;

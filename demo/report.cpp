@@ -39,6 +39,24 @@ std::string format_times(const PassTimes &t) {
   return line;
 }
 
+std::string profile_legend(const DemoScene &scene, const SssControls &controls) {
+  // The hues of composite.cpp's kProfileColours, in order.
+  static const char *const kHues[8] = {"pink", "blue", "yellow", "green", "violet", "cyan", "rose", "grey"};
+  std::string t = "profiles (one pass pair):";
+  for (size_t i = 0; i < scene.profiles.size(); ++i) {
+    t += (i == 0 ? " " : ", ") + std::to_string(i) + " " + scene.profiles[i].name + " (" + kHues[i % 8] + ")";
+  }
+  if (scene.object_names.empty()) return t + "; no object IDs (object 0 everywhere)";
+  t += "; objects (a darker shade for each further object of a profile):";
+  for (size_t i = 0; i < scene.object_names.size(); ++i) {
+    t += (i == 0 ? " " : ", ") + std::to_string(i + 1) + " " + scene.object_names[i];
+  }
+  t += controls.object_ids ? "; object IDs on (no light crosses between objects)"
+                           : "; object IDs off (the byte holds the profile alone: light crosses between objects)";
+  if (controls.msaa_samples > 0) t += "; with MSAA the byte is not written (the library refuses it with MSAA colour)";
+  return t;
+}
+
 std::string format_settings(const sss_settings &s, const SssControls &c, float world_units_per_mm) {
   char text[768];
   std::snprintf(text, sizeof text,
@@ -86,6 +104,10 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
     std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",
                   static_cast<double>(c.translucency_amount));
     result += text;
+    std::snprintf(text, sizeof text, "%.1f mm", static_cast<double>(c.baked_thickness_mm));
+    result += c.thickness_source == 0   ? ", thickness from the shadow maps"
+              : c.thickness_source == 1 ? std::string(", thickness baked ") + text
+                                        : std::string(", thickness the larger of baked ") + text + " and the shadow maps";
   }
   return result;
 }

@@ -24,6 +24,10 @@ std::string format_times(const PassTimes &t);
 // world units per millimetre (what the demo sets them to).
 std::string format_settings(const sss_settings &s, const SssControls &controls, float world_units_per_mm);
 
+// The scene's profiles and objects as the profile view colours them, and whether the byte carries
+// object IDs: "profiles (one pass pair): 0 skin (pink), 1 marble (blue) ...; objects: 1 head, 2 bust ...".
+std::string profile_legend(const DemoScene &scene, const SssControls &controls);
+
 // tEXt chunks for an image of the scene: Title, Software, Description, Copyright (the scene's
 // attribution, when it has one), Source (the GL renderer).
 PngText image_text(const DemoScene &scene, const std::string &title, const std::string &description,

@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include "shapes.hpp"
 #include "shared_assets.hpp"
 
 #include <glm/geometric.hpp>
@@ -46,78 +47,6 @@ void portrait_lights(DemoScene *scene) {
   scene->background = glm::vec3(0.012f, 0.014f, 0.018f);
 }
 
-// ---- the procedural sphere scene ----
-
-struct MeshBuilder {
-  gltf_mesh::Model *model;
-
-  uint32_t base() const { return static_cast<uint32_t>(model->vertex_count()); }
-  void vertex(glm::vec3 p, glm::vec3 n, float u, float v, glm::vec3 t) {
-    const float values[gltf_mesh::Model::kFloatsPerVertex] = {p.x, p.y, p.z, n.x, n.y, n.z, u, v, t.x, t.y, t.z, 1.0f};
-    model->vertices.insert(model->vertices.end(), values, values + gltf_mesh::Model::kFloatsPerVertex);
-  }
-  void primitive(uint32_t first_index, int material) {
-    gltf_mesh::Primitive p;
-    p.first_index = first_index;
-    p.index_count = static_cast<uint32_t>(model->indices.size()) - first_index;
-    p.material = material;
-    model->primitives.push_back(p);
-  }
-};
-
-void add_sphere(MeshBuilder *mesh, glm::vec3 centre, float radius, int rings, int segments) {
-  const uint32_t first = mesh->base();
-  for (int r = 0; r <= rings; ++r) {
-    const float theta = glm::pi<float>() * static_cast<float>(r) / static_cast<float>(rings);
-    for (int s = 0; s <= segments; ++s) {
-      const float phi = 2.0f * glm::pi<float>() * static_cast<float>(s) / static_cast<float>(segments);
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-      const glm::vec3 t(-std::sin(phi), 0.0f, std::cos(phi));
-      mesh->vertex(centre + radius * n, n, static_cast<float>(s) / static_cast<float>(segments),
-                   static_cast<float>(r) / static_cast<float>(rings), t);
-    }
-  }
-  const uint32_t stride = static_cast<uint32_t>(segments + 1);
-  for (uint32_t r = 0; r < static_cast<uint32_t>(rings); ++r) {
-    for (uint32_t s = 0; s < static_cast<uint32_t>(segments); ++s) {
-      const uint32_t a = first + r * stride + s;
-      const uint32_t b = a + stride;
-      mesh->model->indices.insert(mesh->model->indices.end(), {a, a + 1, b, a + 1, b + 1, b});  // CCW from outside
-    }
-  }
-}
-
-// One quad: corner + two edge vectors; the normal is cross(u, v).
-void add_quad(MeshBuilder *mesh, glm::vec3 corner, glm::vec3 u, glm::vec3 v) {
-  const uint32_t first = mesh->base();
-  const glm::vec3 n = glm::normalize(glm::cross(u, v));
-  const glm::vec3 t = glm::normalize(u);
-  mesh->vertex(corner, n, 0, 0, t);
-  mesh->vertex(corner + u, n, 1, 0, t);
-  mesh->vertex(corner + u + v, n, 1, 1, t);
-  mesh->vertex(corner + v, n, 0, 1, t);
-  mesh->model->indices.insert(mesh->model->indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
-}
-
-void add_box(MeshBuilder *mesh, glm::vec3 lo, glm::vec3 hi) {
-  const glm::vec3 d = hi - lo;
-  const glm::vec3 x(d.x, 0, 0), y(0, d.y, 0), z(0, 0, d.z);
-  add_quad(mesh, lo, y, x);      // -z
-  add_quad(mesh, lo + z, x, y);  // +z
-  add_quad(mesh, lo, z, y);      // -x
-  add_quad(mesh, lo + x, y, z);  // +x
-  add_quad(mesh, lo, x, z);      // -y
-  add_quad(mesh, lo + y, z, x);  // +y
-}
-
-gltf_mesh::Material flat_material(const char *name, float r, float g, float b) {
-  gltf_mesh::Material m;
-  m.name = name;
-  m.base_color[0] = r;
-  m.base_color[1] = g;
-  m.base_color[2] = b;
-  return m;
-}
 
 }  // namespace
 
@@ -162,27 +91,15 @@ DemoScene make_sphere_scene() {
   model.materials = {flat_material("ground", 0.42f, 0.42f, 0.40f), flat_material("box", 0.30f, 0.36f, 0.48f),
                      flat_material("skin", 0.85f, 0.55f, 0.45f)};
   scene.looks = {MaterialLook{0.0f, 0.03f, 0.5f}, MaterialLook{0.0f, 0.05f, 0.3f}, MaterialLook{1.0f, 1.0f, 0.3f}};
-  MeshBuilder mesh{&model};
-  uint32_t first = 0;
+  MeshBuilder mesh(&model);
   add_quad(&mesh, glm::vec3(-0.6f, 0.0f, -0.6f), glm::vec3(0, 0, 1.2f), glm::vec3(1.2f, 0, 0));
-  mesh.primitive(first, 0);
-  first = static_cast<uint32_t>(model.indices.size());
+  mesh.end_primitive(0);
   add_box(&mesh, glm::vec3(-0.26f, 0.0f, -0.12f), glm::vec3(-0.16f, 0.24f, 0.27f));
-  mesh.primitive(first, 1);
-  first = static_cast<uint32_t>(model.indices.size());
+  mesh.end_primitive(1);
   const glm::vec3 centre(0.0f, 0.1f, 0.0f);
   add_sphere(&mesh, centre, 0.1f, 96, 192);
-  mesh.primitive(first, 2);
-  for (int k = 0; k < 3; ++k) {
-    model.bounds_min[k] = model.vertices[static_cast<size_t>(k)];
-    model.bounds_max[k] = model.vertices[static_cast<size_t>(k)];
-  }
-  for (size_t v = 0; v < model.vertex_count(); ++v)
-    for (size_t k = 0; k < 3; ++k) {
-      const float x = model.vertices[v * gltf_mesh::Model::kFloatsPerVertex + k];
-      model.bounds_min[k] = std::min(model.bounds_min[k], x);
-      model.bounds_max[k] = std::max(model.bounds_max[k], x);
-    }
+  mesh.end_primitive(2);
+  mesh.update_bounds();
   scene.all = model_bounds(model);
   scene.subject.min = centre - glm::vec3(0.1f);
   scene.subject.max = centre + glm::vec3(0.1f);

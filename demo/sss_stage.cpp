@@ -66,7 +66,33 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
   return report(sss_get_settings(stage->context, &stage->settings), "sss_get_settings", stage->context);
 }
 
-bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm) {
+// Profile 0's kernel is one term (eq. (1), guided, artist, or rank 1 of a ranked family) and the
+// mode separable: sss_set_profiles takes several profiles only then.
+bool one_term(const sss_settings &s) {
+  if (s.mode != SSS_MODE_SEPARABLE) return false;
+  if (s.kernel == nullptr) return true;
+  const bool ranked = s.kernel->family == SSS_KERNEL_SUM_OF_GAUSSIANS || s.kernel->family == SSS_KERNEL_SVD ||
+                      s.kernel->family == SSS_KERNEL_PREINTEGRATED;
+  return !ranked || s.kernel->rank == 1;
+}
+
+// The scene's profiles after the controls' (profile 0): the same settings with a measured material's
+// rank-1 pre-integrated kernel each.
+void build_profiles(SssStage *stage, const std::vector<int> &materials) {
+  stage->profile_kernels.assign(materials.size() + 1, stage->kernel);
+  stage->profiles.assign(materials.size() + 1, stage->settings);
+  for (size_t i = 1; i <= materials.size(); ++i) {
+    sss_kernel_desc &k = stage->profile_kernels[i];
+    sss_default_kernel_desc(&k);
+    k.family = SSS_KERNEL_PREINTEGRATED;
+    k.rank = 1;
+    k.profile.profile = materials[i - 1];
+    stage->profiles[i].kernel = &k;
+  }
+}
+
+bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
+                      const std::vector<int> &materials, bool per_pixel) {
   sss_settings s{};
   sss_default_settings(&s);
   s.world_units_per_mm = world_units_per_mm;
@@ -86,11 +112,29 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.kernel = controls.kernel_family == SSS_KERNEL_SEPARABLE ? nullptr : &kernel;
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
-  if (std::memcmp(&s, &stage->settings, sizeof s) == 0) return true;  // unchanged: nothing to validate or rebuild
-  if (!report(sss_set_settings(stage->context, &s), "sss_set_settings", stage->context)) return false;
+  // Unchanged: nothing to validate or rebuild (the scene's other profiles never change).
+  // (The scene, so `materials` and `per_pixel`, is the same for the stage's whole life.)
+  if (std::memcmp(&s, &stage->settings, sizeof s) == 0 && stage->profiles.size() == materials.size() + 1) return true;
+  const std::uint32_t count = one_term(s) ? static_cast<std::uint32_t>(materials.size() + 1) : 1u;
+  sss_settings old = stage->settings;
+  const sss_kernel_desc old_kernel = stage->kernel;
   stage->kernel = kernel;
   stage->settings = s;
   if (s.kernel != nullptr) stage->settings.kernel = &stage->kernel;
+  build_profiles(stage, materials);
+  if (!report(sss_set_profiles(stage->context, stage->profiles.data(), count), "sss_set_profiles", stage->context)) {
+    stage->kernel = old_kernel;  // the library kept the old set
+    if (old.kernel != nullptr) old.kernel = &stage->kernel;
+    stage->settings = old;
+    stage->profiles.clear();
+    return false;
+  }
+  stage->profile_count = count;
+  stage->per_pixel = one_term(s);
+  stage->profile_note = per_pixel && !stage->per_pixel
+                            ? "no per-pixel profiles or object IDs (they need a one-term kernel in the separable "
+                              "mode): every material is filtered with profile 0's, and light crosses between objects"
+                            : "";
   return true;
 }
 
@@ -105,6 +149,7 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   d.samples = shape.samples;
   d.stencil_format = shape.stencil ? 0x88F0u : 0u;
   d.flags = shape.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u;
+  d.profile_format = shape.profile_texture ? 0x8232u : 0u;  // GL_R8UI
   // Settings compare byte for byte, and the kernel they point at (always stage->kernel, so the pointer
   // alone would not show a new family) too: the demo's kernels hold no pointers (no tabulated profile).
   const bool same = stage->prepared && std::memcmp(&d, &stage->prepared_desc, sizeof d) == 0 &&
@@ -120,7 +165,8 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
 }
 
 bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
-               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region) {
+               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region,
+               std::uint32_t profile) {
   if (!report(sss_set_camera(stage.context, glm::value_ptr(projection)), "sss_set_camera", stage.context)) return false;
   sss_stencil stencil{};
   stencil.depth_stencil_texture = depth_stencil;
@@ -132,6 +178,8 @@ bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::ma
   frame.depth_texture = depth_stencil;
   frame.output_texture = after;
   frame.stencil = controls.use_stencil ? &stencil : nullptr;
+  frame.profile_texture = profile;
+  frame.profile_format = profile != 0 ? 0x8232u : 0u;  // GL_R8UI
   if (region != nullptr) {
     frame.flags |= SSS_FRAME_REGION;
     for (int i = 0; i < 4; ++i) frame.region[i] = region[i];

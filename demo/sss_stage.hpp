@@ -8,6 +8,8 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace demo {
 
@@ -39,6 +41,8 @@ struct SssControls {
   // with the profile the blur uses.
   bool translucency = false;
   float translucency_amount = 0.95f;  // the include's `translucency`, 0..1 (1: the most light through)
+  int thickness_source = 0;           // TransmittanceInputs::thickness_source (shadow, baked, both)
+  float baked_thickness_mm = 2.0f;    // translucent materials without their own MaterialLook::baked_thickness
   int msaa_samples = 0;          // 0, or 4: the lighting pass renders 4x MSAA targets and the library gets those
   // How skin scatters: the library's screen-space filter, pre-integrated shading in the lighting
   // pass (no SSS pass), or automatic: pre-integrated once a millimetre of skin at the scene's centre
@@ -50,6 +54,9 @@ struct SssControls {
   // SSS_CREATE_DEBUG_CHECKS: every frame checks the GL (errors, framebuffers, textures). A create
   // flag: toggling it re-creates the library's context (render_frame).
   bool debug_checks = false;
+  // The G-buffer's byte carries object IDs (profile | object << 4); off: the profile alone, so light
+  // crosses between objects of one profile (the bleeding test scene shows the difference).
+  bool object_ids = true;
 };
 
 constexpr int kShadingScreenSpace = 0;
@@ -69,6 +76,16 @@ struct SssStage {
   sss_context *context = nullptr;
   sss_settings settings{};  // as the library holds them after the last successful sss_set_settings
   sss_kernel_desc kernel{};  // what settings.kernel points at (the tools' kernel families)
+  // The scene's other profiles (sss_set_profiles; [0] is `settings`): a measured material each, as a
+  // rank-1 pre-integrated kernel (profile_kernels[i], which profiles[i].kernel points at).
+  // profile_count: how many the library holds; per_pixel: frames may bring the profile texture (the
+  // library takes it, and several profiles, only with a one-term kernel in the separable mode; else
+  // profile_count is 1 and frames come without the texture: every pixel profile 0).
+  std::vector<sss_settings> profiles;
+  std::vector<sss_kernel_desc> profile_kernels;
+  std::uint32_t profile_count = 1;
+  bool per_pixel = true;
+  std::string profile_note;  // why a scene of several profiles or objects runs without them; empty otherwise
   sss_get_proc_address_fn get_proc_address = nullptr;  // as created, for a re-creation
   void *user = nullptr;
   bool debug_checks = false;  // created with SSS_CREATE_DEBUG_CHECKS
@@ -85,6 +102,7 @@ struct SssStage {
 struct SssFrameShape {
   int width = 0, height = 0, samples = 0;
   bool stencil = false, region = false;
+  bool profile_texture = false;  // frames bring an R8UI profile/object texture
 };
 
 // sss_create with the given loader (a GL context must be current), with SSS_CREATE_DEBUG_CHECKS
@@ -97,15 +115,20 @@ bool create_sss_stage(SssStage *stage, sss_get_proc_address_fn get_proc_address,
 // after printing the error.
 bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 
-// sss_set_settings from the controls, at the scene's world units per millimetre of surface
-// (sss_settings.world_units_per_mm) and the controls' scale. Prints the error on failure.
-bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm);
+// sss_set_profiles from the controls (profile 0) and the scene's other profiles (`materials`: an
+// sss_profile per profile index >= 1, each a rank-1 pre-integrated kernel with profile 0's taps,
+// flags, mode, jitter and path), at the scene's world units per millimetre of surface
+// (sss_settings.world_units_per_mm) and the controls' scale. `per_pixel`: the scene's frames would
+// bring a profile texture (profile_note says when the controls rule it out). Prints the error on failure.
+bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
+                      const std::vector<int> &materials = {}, bool per_pixel = false);
 
 // sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,
-// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none.
+// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI
+// profile/object texture (sss_frame.profile_texture), or 0 for none (every pixel profile 0).
 bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
                std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after,
-               const std::int32_t *region = nullptr);
+               const std::int32_t *region = nullptr, std::uint32_t profile = 0);
 
 void destroy_sss_stage(SssStage *stage);
 

@@ -62,7 +62,7 @@ void on_key(GLFWwindow *window, int key, int /*scancode*/, int action, int /*mod
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing into a field
   switch (key) {
     case GLFW_KEY_S: s->controls.enabled = !s->controls.enabled; break;
-    case GLFW_KEY_V: s->view = static_cast<ViewMode>((static_cast<int>(s->view) + 1) % 4); break;
+    case GLFW_KEY_V: s->view = static_cast<ViewMode>((static_cast<int>(s->view) + 1) % kViewModeCount); break;
     case GLFW_KEY_1: s->preset = Preset::kClose; s->preset_requested = true; break;
     case GLFW_KEY_2: s->preset = Preset::kMid; s->preset_requested = true; break;
     case GLFW_KEY_3: s->preset = Preset::kFar; s->preset_requested = true; break;
@@ -142,6 +142,7 @@ class HeatMapper {
     controls.decision_height = s->height;  // choose the shading as the shown frame does
     if (!render_frame(renderer, m, controls, &small_, false, &frame)) return 0;
     SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+    data.materials = reference_materials(*renderer->scene);
 
     // Collect a finished reference; start one when the camera or size moved on.
     if (pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
@@ -334,6 +335,7 @@ int run_window(const Options &o, const DemoScene &scene) {
     s.counts = frame.counts;
     s.preintegrated = frame.preintegrated;
     s.pixels_per_mm = frame.pixels_per_mm;
+    s.profile_note = renderer.sss.profile_note;
     GLuint heat_texture = 0;
     ViewMode mode = s.view;
     if (mode == ViewMode::kHeatMap) {

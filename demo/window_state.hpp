@@ -34,6 +34,7 @@ struct WindowState {
   PixelCounts counts;
   bool preintegrated = false;  // the last frame shaded skin with the pre-integrated LUTs
   float pixels_per_mm = 0.0f;  // a millimetre at the subject, in pixels (the automatic choice)
+  std::string profile_note;    // SssStage::profile_note: why the other materials are left unfiltered
   int width = 0, height = 0;  // framebuffer
   double frame_ms = 0.0;      // wall clock between frames
 

@@ -19,6 +19,16 @@
 // hosts that do not use it. The footprint formula is the cross-bilateral mode's, with the same
 // millimetre: one profile millimetre = (2/3)·width world units = world_units_per_mm · scale.
 //
+// Which to use: sss_transmittance with a thickness (shadow map, baked map or both; see
+// sss_transmittance.glsl) lights each pixel from its own thickness and the light's direction, for
+// any lighting path. This gather needs a back-face pass but no thickness: it spreads the light the
+// back faces actually receive (their shadows and colours included) through the front by the 3D
+// distance between them, so it suits deferred hosts that already render back faces.
+//
+// Bad values in the back-face buffer: a texel whose distance is not a positive finite number (0 for
+// no back face, a negative, NaN or infinity) adds nothing, as sss_transmittance gives no light for a
+// NaN or infinite thickness (an infinite distance would otherwise put NaN into the pixel and the blur).
+//
 // Inputs (view space, world units):
 //   pixel         gl_FragCoord.xy of the front pixel
 //   x_o, n_o      the front point and its unit normal
@@ -64,7 +74,7 @@ vec3 sss_back_transmittance(sampler2D back_irradiance, sampler2D back_normal, ve
     float angle = float(i) * 2.39996322973;
     ivec2 texel = ivec2(clamp(floor(pixel + half_extent * radius * vec2(cos(angle), sin(angle))), lo, hi));
     vec4 back = texelFetch(back_irradiance, texel, 0);
-    if (!(back.a > 0.0)) continue;
+    if (!(back.a > 0.0) || isinf(back.a)) continue;
     vec3 x_t = sss_view_point(vec2(texel) + 0.5, back.a, projection, viewport);
     vec3 n_t = texelFetch(back_normal, texel, 0).xyz;
     float facing = sqrt(max(0.0, -dot(n_t, n_o)));

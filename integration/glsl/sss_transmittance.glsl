@@ -1,5 +1,6 @@
 // sss_transmittance.glsl: light transmitted through thin parts (ears, nostrils), for the host's
-// lighting pass. Paste or #include it after the #version line (GLSL 3.30 core or newer).
+// lighting pass. Paste or #include it after the #version line (GLSL 3.30 core or newer, or GLSL ES
+// 3.00 with highp float as the default precision).
 //
 // Model (Jimenez, Whelan, Sundstedt, Gutierrez 2010, as the separable SSS reference shader does it;
 // DESIGN.md §5): the thickness the light crosses to reach a point is the difference between the
@@ -25,6 +26,27 @@
 //   N, L          world-space unit normal, unit direction from the point to the light.
 // The result multiplies the light's colour, attenuation and the albedo, like diffuse light, and is
 // added to the diffuse irradiance the sss filter blurs.
+//
+// Where the thickness comes from (every source gives world units; sss_transmittance takes any):
+//   sss_thickness, sss_thickness_linear   the light's shadow map: the path along the light to the
+//                 first surface it meets, so another object between them blocks the light. Needs a
+//                 shadow map per light; misses detail below its texel size and reads about 0 near the
+//                 terminator (shrink hides the depth steps there).
+//   sss_thickness_baked, sss_thickness_from_unit   the host's own: a baked "local thickness" texture
+//                 (0..1 × a maximum thickness; ambient occlusion of the inverted normals, as content
+//                 tools bake it) or a vertex attribute. Any light, no shadow map, detail to the
+//                 texel; but it is the object's thickness behind the point, not the path to this
+//                 light: nothing between the light and the object blocks it.
+//   sss_thickness_combined   both: the larger of a host and a shadow-map thickness. The light gets
+//                 through where both say the part is thin: the baked map's detail and no depth-step
+//                 streaks, and no glow where another object (or the rest of the head) stands between
+//                 the light and the ear. The smaller would let a baked ear glow in another object's
+//                 shadow.
+// Bad thickness values, from any source (a NaN or infinite texel or attribute, a degenerate light
+// projection): sss_transmittance returns 0 for a NaN or infinite thickness (no light through, and
+// no NaN into the blur, which would spread it) and counts a negative thickness as 0 (touching
+// surfaces: the most light). (GLSL lets a driver without NaNs leave isnan undefined; Mesa keeps
+// them, tests/gl/thickness_test.cpp checks it there.)
 
 #ifndef SSS_TRANSMITTANCE_MAX_TERMS
 #define SSS_TRANSMITTANCE_MAX_TERMS 8  // = SSS_PROFILE_MAX_TERMS in sss_tools.h
@@ -71,8 +93,43 @@ float sss_thickness_linear(sampler2D light_distance_map, mat4 light_view, mat4 l
   return abs(-inside.z - texture(light_distance_map, uv).r);
 }
 
-// Transmitted light factor (rgb) for a point `thickness` world units behind the lit surface.
+// A host's thickness from a normalised value (a baked map's texel or a vertex attribute, 0..1):
+// value × max_thickness world units, the thickness the map was baked with at 1. A map that stores
+// translucency instead (white where thin) is 1.0 - value. A NaN or infinite value stays so (no
+// light through); negative ones are left for sss_transmittance, which counts them as 0. This is the
+// object's whole thickness: no shrink applies (the shadow-map path pulls the point inward only to
+// hide its depth steps, so at a back face it reads `shrink` less than the geometry).
+float sss_thickness_from_unit(float value, float max_thickness) {
+  return value * max_thickness;
+}
+
+// The same from the red channel of a baked thickness texture at `uv` (the mesh's texture
+// coordinates: the map is baked in the object's UV layout). Any format the host filters: R8 or
+// R16 UNORM, a float format, or the channel of a packed map through sss_thickness_from_unit.
+float sss_thickness_baked(sampler2D thickness_map, vec2 uv, float max_thickness) {
+  return sss_thickness_from_unit(texture(thickness_map, uv).r, max_thickness);
+}
+
+// Does `thickness` carry a value (not NaN, not infinite)?
+bool sss_thickness_known(float thickness) {
+  return !(isnan(thickness) || isinf(thickness));
+}
+
+// A host thickness and a shadow-map thickness (both world units) into the one the light crosses:
+// the larger (see "Where the thickness comes from" above). An unknown one (NaN, infinite) makes the
+// result unknown: no light through.
+float sss_thickness_combined(float host_thickness, float shadow_thickness) {
+  if (!sss_thickness_known(host_thickness)) return host_thickness;
+  if (!sss_thickness_known(shadow_thickness)) return shadow_thickness;
+  return max(host_thickness, shadow_thickness);
+}
+
+// Transmitted light factor (rgb) for a point `thickness` world units behind the lit surface, from
+// any source above. thickness < 0 counts as 0; NaN or infinite: vec3(0.0).
 vec3 sss_transmittance(float thickness, float width, float translucency, vec3 world_normal, vec3 to_light) {
-  float s = thickness * 8.25 * (1.0 - translucency) / width;
+  if (!sss_thickness_known(thickness)) return vec3(0.0);
+  // The scale first: translucency 1 makes it 0, and 0 × a huge thickness is 0 where (huge × 8.25) × 0
+  // would overflow to infinity × 0 = NaN.
+  float s = max(thickness, 0.0) * (8.25 * (1.0 - translucency) / width);
   return sss_transmittance_profile(s) * clamp(0.3 + dot(to_light, -world_normal), 0.0, 1.0);
 }

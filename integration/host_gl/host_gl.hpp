@@ -27,6 +27,7 @@
   X(PFNGLCLEARSTENCILPROC, glClearStencil)                       \
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                     \
   X(PFNGLCLEARBUFFERIVPROC, glClearBufferiv)                     \
+  X(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv)                   \
   X(PFNGLENABLEPROC, glEnable)                                   \
   X(PFNGLDISABLEPROC, glDisable)                                 \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                             \
@@ -103,6 +104,7 @@
   X(PFNGLUSEPROGRAMPROC, glUseProgram)                           \
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)           \
   X(PFNGLUNIFORM1IPROC, glUniform1i)                             \
+  X(PFNGLUNIFORM1UIPROC, glUniform1ui)                           \
   X(PFNGLUNIFORM1FPROC, glUniform1f)                             \
   X(PFNGLUNIFORM2FPROC, glUniform2f)                             \
   X(PFNGLUNIFORM3FVPROC, glUniform3fv)                           \

@@ -67,6 +67,9 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // frame), and with the host's region of translucent pixels.
   // The masked fragment path and the compute path (sss_settings.path) the same two ways, and the
   // automatic choice.
+  // Several materials in one pass pair: one profile against per-pixel profiles, in the same run.
+  configs.push_back({"separable-one-profile", SSS_TAPS_MEDIUM, true});
+  configs.push_back({"separable-profiles", SSS_TAPS_MEDIUM, true});
   for (const char* kind : {"separable-in-place", "separable-region",
                            "separable-masked", "separable-masked-region", "separable-compute",
                            "separable-compute-region", "separable-auto-region"}) {
@@ -82,6 +85,12 @@ std::vector<MethodConfig> method_configs(const Options& o) {
     for (int taps : o.family_taps) configs.push_back({k.name, taps, true});
   }
   if (o.exact_method) configs.push_back({"exact-2d", 0, false});
+  if (!o.methods.empty()) {
+    const auto unwanted = [&o](const MethodConfig& c) {
+      return std::find(o.methods.begin(), o.methods.end(), c.kind) == o.methods.end();
+    };
+    configs.erase(std::remove_if(configs.begin(), configs.end(), unwanted), configs.end());
+  }
   return configs;
 }
 
@@ -113,6 +122,8 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
     return make_separable_method(loader, c.taps, c.follow_surface, SSS_CREATE_NO_STATE_RESTORE);
   }
   if (c.kind == "separable-in-place") return make_in_place_method(loader, c.taps, false);
+  if (c.kind == "separable-one-profile") return make_profiles_method(loader, c.taps, false);
+  if (c.kind == "separable-profiles") return make_profiles_method(loader, c.taps, true);
   if (c.kind == "separable-region") return make_in_place_method(loader, c.taps, true);
   if (c.kind == "separable-masked") return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT_MASKED);
   if (c.kind == "separable-masked-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_FRAGMENT_MASKED);
@@ -310,16 +321,17 @@ int run(const Options& options) {
   for (std::size_t i = 0; i < options.sizes.size(); ++i) {
     for (const std::string& name : scenes_at(i)) jobs.push_back({name, options.sizes[i].first, options.sizes[i].second, 0.0});
   }
+  const std::vector<MethodConfig> configs = method_configs(options);
+  const auto sweep_count = static_cast<std::size_t>(
+      std::count_if(configs.begin(), configs.end(), [&](const MethodConfig& c) { return runs_on_sweep(c, options); }));
   for (const std::string& name : options.sweep_scenes.empty() ? footprint_scene_names() : options.sweep_scenes) {
+    if (sweep_count == 0) break;  // --methods left nothing that runs on the sweep
     for (double f : options.footprints) {
       const int side = sweep_frame_side(f, options.sweep_interior_px, reach_mm);
       jobs.push_back({name, side, side, f});
     }
   }
   info.reach_mm = reach_mm;
-  const std::vector<MethodConfig> configs = method_configs(options);
-  const auto sweep_count = static_cast<std::size_t>(
-      std::count_if(configs.begin(), configs.end(), [&](const MethodConfig& c) { return runs_on_sweep(c, options); }));
   std::size_t total = 0;
   for (const SceneJob& job : jobs) total += (job.footprint_mm > 0.0 ? sweep_count : configs.size()) + 1;
   std::size_t done = 0;
@@ -390,6 +402,12 @@ int run(const Options& options) {
         ++done;
         continue;
       }
+      // The exact 2D filter convolves with one profile (skin): no method for a scene of several
+      // materials, whose reference is per material.
+      if (config.kind == "exact-2d" && !scene.profile.empty()) {
+        ++done;
+        continue;
+      }
       ResultRow row = scene_row;
       std::string path_ran;
       ErrorMetrics e;
@@ -435,6 +453,7 @@ int run(const Options& options) {
         if (!check_gl((tag + " " + config.kind).c_str())) throw std::runtime_error(tag + " " + config.kind + " left a GL error");
         row.method = method->name();
         path_ran = method->path_ran();
+        row.path_ran = path_ran;
         row.taps = method->taps();
         row.follow_surface = method->follow_surface();
         row.passes = method->passes();

@@ -40,12 +40,19 @@ GpuScene upload_scene(const Scene& scene) {
   g.irradiance = upload(GL_RGBA16F, g.width, g.height, GL_RGBA, GL_FLOAT, g.irradiance_half.data());
   g.depth = upload(GL_DEPTH_COMPONENT32F, g.width, g.height, GL_DEPTH_COMPONENT, GL_FLOAT, scene.window_depth.data());
   g.distance = upload(GL_R32F, g.width, g.height, GL_RED, GL_FLOAT, scene.distance.data());
+  std::vector<uint8_t> profile = scene.profile;
+  if (profile.empty()) {
+    profile.resize(scene.mask.size());
+    for (std::size_t i = 0; i < profile.size(); ++i) profile[i] = scene.mask[i] != 0 ? 1u << 4 : 0u;
+  }
+  g.profile = upload(GL_R8UI, g.width, g.height, GL_RED_INTEGER, GL_UNSIGNED_BYTE, profile.data());
+  g.profile_materials = scene.profile_materials.empty() ? std::vector<int>{0} : scene.profile_materials;
   return g;
 }
 
 void destroy_scene(GpuScene* scene) {
-  const GLuint textures[3] = {scene->irradiance, scene->depth, scene->distance};
-  glDeleteTextures(3, textures);
+  const GLuint textures[4] = {scene->irradiance, scene->depth, scene->distance, scene->profile};
+  glDeleteTextures(4, textures);
   *scene = GpuScene{};
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "host_gl.hpp"
@@ -15,6 +16,12 @@ struct GpuScene {
   GLuint irradiance = 0;  // GL_RGBA16F
   GLuint depth = 0;       // GL_DEPTH_COMPONENT32F, hardware depth for `projection`
   GLuint distance = 0;    // GL_R32F, view distance
+  // GL_R8UI, profile | object << 4 per pixel as a host's G-buffer holds it (sss_frame.profile_texture):
+  // the scene's own (Scene::profile), or, for a scene of one material, profile 0 of object 1 on every
+  // translucent pixel and 0 elsewhere. profile_materials: the sss_profile of each profile index (the
+  // scene's; {SSS_PROFILE_SKIN_DEON} for one material).
+  GLuint profile = 0;
+  std::vector<int> profile_materials;
   std::array<float, 16> projection{};
   float world_units_per_mm = 0.001f;
   float nearest_translucent_distance = 0.0f;  // smallest view distance of a translucent pixel

@@ -75,6 +75,10 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // "separable-compute[-region]"; SSS_PATH_AUTO: "separable-auto[...]").
 std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
                                              uint32_t path = SSS_PATH_FRAGMENT);
+// Several materials in one pass pair, in place, 17 taps or `taps`, follow-surface on: one profile and
+// no profile texture ("separable-one-profile"), or several profiles and the scene's profile/object
+// texture ("separable-profiles"); see profiles_method.cpp.
+std::unique_ptr<Method> make_profiles_method(const GlLoader& loader, int taps, bool per_pixel);
 std::unique_ptr<Method> make_exact_method(int receiver_stride = 1, std::pair<int, int> band_rows = {0, 0});
 std::unique_ptr<Method> make_copy_method();
 // The same two copies as compute dispatches ("copy-compute"); nullptr below GL 4.3.

@@ -43,6 +43,8 @@ const char* const kUsage = R"(sss_bench: run time against error for the separabl
                         from 0.05 to 2); "" skips the sweep
   --sweep-scenes a,b,.. the sweep's scenes (default: every plane-* scene)
   --sweep-taps n,n,...  eq. (1) tap counts on the sweep (quick: 5,9,17,33; full: --taps)
+  --methods k,k,...     only these methods (their kinds: separable, separable-profiles, ...; a partial run for
+                        a few rows: the footprint sweep is skipped when none of them runs on it)
   --sweep-reps N        timed frames of each sweep row (quick: 1; full: --reps)
   --sweep-interior N    pixels of the sweep frames' interior side, at least (default 64; and at
                         least 8 mm, so that the 6 mm disk is inside it)
@@ -163,7 +165,7 @@ Options parse_options(int argc, char** argv) {
       {"gpu-preload-ms", required_argument, nullptr, 'P'},
       {"footprints", required_argument, nullptr, 'p'},  {"sweep-scenes", required_argument, nullptr, 'W'},
       {"sweep-interior", required_argument, nullptr, 'I'},  {"sweep-reps", required_argument, nullptr, 'X'},
-      {"sweep-taps", required_argument, nullptr, 'Y'},
+      {"sweep-taps", required_argument, nullptr, 'Y'},  {"methods", required_argument, nullptr, 'm'},
       {"help", no_argument, nullptr, 'h'},        {nullptr, 0, nullptr, 0}};
   int c = 0;
   while ((c = getopt_long(argc, argv, "", long_options, nullptr)) != -1) {
@@ -235,6 +237,7 @@ Options parse_options(int argc, char** argv) {
         if (o.sweep_interior_px < 8 || o.sweep_interior_px > 4096) usage_error("--sweep-interior must be in [8, 4096]");
         break;
       case 'Y': o.sweep_taps = parse_ints(arg, "sweep tap count"); break;
+      case 'm': o.methods = split_names(arg); break;
       case 'X': o.sweep_repetitions = parse_ints(arg, "sweep repetition count")[0]; break;
       case 'h': std::fputs(kUsage, stdout); std::exit(0);
       default: usage_error("unknown option");

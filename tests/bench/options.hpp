@@ -39,6 +39,7 @@ struct Options {
   int sweep_interior_px = 64;
   int sweep_repetitions = 0;                        // timed frames of the sweep's rows; 0: `repetitions`
   std::vector<int> sweep_taps;                      // eq. (1) tap counts on the sweep; empty: separable_taps
+  std::vector<std::string> methods;                 // --methods: only these method kinds; empty: all
   std::string command_line;
 };
 

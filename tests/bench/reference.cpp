@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "math/exact_reference.hpp"
 #include "calibration.hpp"
 #include "method.hpp"
+#include "material_terms.hpp"
 
 namespace sss_bench {
 
@@ -23,6 +25,35 @@ sss::math::ExactInput exact_input(const Scene& scene, const GpuScene& gpu) {
   in.projection = scene.projection;
   in.world_units_per_mm = scene.world_units_per_mm;
   return in;
+}
+
+// Several materials (Scene::profile): each profile/object pair's pixels convolved with its own
+// profile over its own pixels only (no light crosses between materials or objects), CPU, every pixel.
+Reference per_material_reference(const Scene& scene, const GpuScene& gpu) {
+  const int w = scene.width, h = scene.height;
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  Reference r;
+  r.rgba = gpu.irradiance_half;
+  std::vector<uint8_t> values(scene.profile.begin(), scene.profile.end());
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  std::vector<double> rgb(n * 3);
+  for (uint8_t value : values) {
+    if (value == 0) continue;  // the background
+    std::vector<uint8_t> mask(n);
+    for (std::size_t i = 0; i < n; ++i) mask[i] = scene.mask[i] != 0 && scene.profile[i] == value ? 1 : 0;
+    sss::math::ExactInput in = exact_input(scene, gpu);
+    in.mask = mask.data();
+    const std::size_t profile = value & 15u;
+    if (profile >= scene.profile_materials.size()) throw std::runtime_error("reference: a pixel's profile has no material");
+    sss::math::ExactSurfaceConvolution(in, material_profile_terms(scene.profile_materials[profile])).convolve({0, 0, w, h}, rgb.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (mask[i] == 0) continue;
+      for (std::size_t c = 0; c < 3; ++c) r.rgba[i * 4 + c] = static_cast<float>(rgb[i * 3 + c]);
+    }
+  }
+  r.source = "CPU exact per material (double)";
+  return r;
 }
 
 }  // namespace
@@ -46,6 +77,7 @@ Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_p
   Reference r;
   const int w = scene.width, h = scene.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;
+  if (!scene.profile.empty()) return per_material_reference(scene, gpu);
   const sss::math::ExactSurfaceConvolution cpu(exact_input(scene, gpu), sss::math::skin_profile_terms());
   r.rgba = gpu.irradiance_half;
   if (static_cast<long>(n) <= max_cpu_pixels) {

@@ -27,7 +27,10 @@ struct Reference {
 };
 
 // CPU for images of at most `max_cpu_pixels` pixels; otherwise the GL exact filter on the
-// receivers of a `stride` grid, compared with the CPU at `spot_checks` of those receivers.
+// receivers of a `stride` grid, compared with the CPU at `spot_checks` of those receivers. A scene of
+// several materials (Scene::profile): the CPU at every pixel, each profile/object pair's pixels
+// convolved with its own profile over its own pixels (skin: d'Eon's six Gaussians; a measured
+// material: the library's Gaussian fit of its dipole, normalised), so no light crosses between them.
 Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_pixels, int spot_checks, int stride);
 
 // The footprint sweep's planes (scene.footprint_mm > 0): the separable exact reference

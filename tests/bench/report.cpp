@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "profiles_report.hpp"
+
 #include "accuracy_report.hpp"
 #include "timing.hpp"
 
@@ -370,6 +372,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       }
     }
   }
+
+  write_profiles_section(out, rows);
 
   // Light across silhouettes: the follow-surface lerp, no depth test, and the cross-bilateral mode.
   out << "\n## Light across silhouettes (halo energy)\n\nOver the translucent pixels within " << kHaloBand

@@ -54,6 +54,7 @@ struct ResultRow {
   double time_ms = 0.0, time_min_ms = 0.0, time_max_ms = 0.0;
   int samples = 0;
   double time_ratio_to_copy = 0.0;  // time_ms / the two-pass copy's median, same scene and size
+  std::string path_ran;             // how the library ran the last frame (Method::path_ran), for the document only
   double relative_rmse = 0.0, max_abs_error = 0.0, p99_abs_error = 0.0, ssim = 1.0;
   int translucent_pixels = 0;
   int reference_stride = 1;         // errors over every pixel (1) or a 1-in-stride² grid of them

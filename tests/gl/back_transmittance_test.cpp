@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,8 +54,6 @@ struct Slab {
   std::array<float, 3> back_normal;  // view space
 };
 
-using BackTransmittance = GlTest;
-
 // The CPU sum, in float like the shader.
 std::array<float, 3> cpu_sum(const sss::math::Matrix4& m, const std::vector<float>& terms, int count, const Slab& s,
                              int px, int py) {
@@ -91,46 +90,60 @@ std::array<float, 3> cpu_sum(const sss::math::Matrix4& m, const std::vector<floa
   return sum;
 }
 
-TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit) {
-  const auto projection = perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
-  std::vector<float> terms(SSS_PROFILE_MAX_TERMS * 4, 0.0f);
-  int32_t count = 0;
-  ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_MIKKELSEN_2010, terms.data(), SSS_PROFILE_MAX_TERMS, &count),
-            SSS_OK);
-  const std::string fragment = "#version 330 core\n" + read_file(SSS_TRANSMITTANCE_GLSL) +
-                               read_file(SSS_BACK_TRANSMITTANCE_GLSL) + kMain;
-  const GLuint program = build_program("back transmittance test", kFullscreenVertexShader, fragment.c_str());
-  ASSERT_NE(program, 0u);
+class BackTransmittance : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_MIKKELSEN_2010, terms_.data(), SSS_PROFILE_MAX_TERMS, &count_),
+              SSS_OK);
+    const std::string fragment = "#version 330 core\n" + read_file(SSS_TRANSMITTANCE_GLSL) +
+                                 read_file(SSS_BACK_TRANSMITTANCE_GLSL) + kMain;
+    program_ = build_program("back transmittance test", kFullscreenVertexShader, fragment.c_str());
+    ASSERT_NE(program_, 0u);
+  }
+  void TearDown() override {
+    glDeleteProgram(program_);
+    GlTest::TearDown();
+  }
 
-  auto render = [&](const Slab& s) {
+  // The gather over a back-face buffer of the slab's normal whose every texel holds `distance`.
+  std::vector<float> render(float distance, const std::array<float, 3>& back_normal) {
     std::vector<float> back(kSize * kSize * 4), normals(kSize * kSize * 4);
     for (int i = 0; i < kSize * kSize; ++i) {
-      const float values[4] = {1.0f, 0.5f, 0.25f, 1.0f + s.thickness};
+      const float values[4] = {1.0f, 0.5f, 0.25f, distance};
       for (int c = 0; c < 4; ++c) back[static_cast<std::size_t>(i) * 4 + c] = values[c];
-      for (int c = 0; c < 3; ++c) normals[static_cast<std::size_t>(i) * 4 + c] = s.back_normal[static_cast<std::size_t>(c)];
+      for (int c = 0; c < 3; ++c) normals[static_cast<std::size_t>(i) * 4 + c] = back_normal[static_cast<std::size_t>(c)];
     }
     const GLuint back_texture = make_rgba32f(kSize, kSize, back);
     const GLuint normal_texture = make_rgba32f(kSize, kSize, normals);
     const GLuint target = make_rgba32f(kSize, kSize, std::vector<float>(kSize * kSize * 4, 0.0f));
     const DrawTarget draw(target, kSize, kSize);
-    glUseProgram(program);
-    glUniform4fv(glGetUniformLocation(program, "sss_transmittance_terms"), count, terms.data());
-    glUniform1i(glGetUniformLocation(program, "sss_transmittance_term_count"), count);
-    glUniformMatrix4fv(glGetUniformLocation(program, "u_projection"), 1, GL_FALSE, projection.data());
-    glUniform4f(glGetUniformLocation(program, "u_viewport"), 0.0f, 0.0f, kSize, kSize);
-    glUniform1f(glGetUniformLocation(program, "u_width"), kWidth);
-    glUniform1f(glGetUniformLocation(program, "u_r_max"), kRMax);
+    glUseProgram(program_);
+    glUniform4fv(glGetUniformLocation(program_, "sss_transmittance_terms"), count_, terms_.data());
+    glUniform1i(glGetUniformLocation(program_, "sss_transmittance_term_count"), count_);
+    glUniformMatrix4fv(glGetUniformLocation(program_, "u_projection"), 1, GL_FALSE, projection_.data());
+    glUniform4f(glGetUniformLocation(program_, "u_viewport"), 0.0f, 0.0f, kSize, kSize);
+    glUniform1f(glGetUniformLocation(program_, "u_width"), kWidth);
+    glUniform1f(glGetUniformLocation(program_, "u_r_max"), kRMax);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, back_texture);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, normal_texture);
-    glUniform1i(glGetUniformLocation(program, "u_back"), 0);
-    glUniform1i(glGetUniformLocation(program, "u_back_normal"), 1);
+    glUniform1i(glGetUniformLocation(program_, "u_back"), 0);
+    glUniform1i(glGetUniformLocation(program_, "u_back_normal"), 1);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     return read_rgba(target, kSize, kSize);
-  };
+  }
+  std::vector<float> render(const Slab& s) { return render(1.0f + s.thickness, s.back_normal); }
 
+  const sss::math::Matrix4 projection_ = perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
+  std::vector<float> terms_ = std::vector<float>(SSS_PROFILE_MAX_TERMS * 4, 0.0f);
+  int32_t count_ = 0;
+  GLuint program_ = 0;
+};
+
+TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit) {
   const Slab thin{0.04f, {0.0f, 0.0f, -1.0f}};    // 2 mm of profile behind, facing away: opposing planes
   const Slab thick{0.08f, {0.0f, 0.0f, -1.0f}};   // 4 mm
   const Slab same_way{0.04f, {0.0f, 0.0f, 1.0f}};  // a back surface turned towards the camera: no transmission
@@ -139,7 +152,7 @@ TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit
   for (int y = 0; y < kSize; ++y) {
     for (int x = 0; x < kSize; ++x) {
       const std::size_t i = (static_cast<std::size_t>(y) * kSize + x) * 4;
-      const auto expected = cpu_sum(projection, terms, count, thin, x, y);
+      const auto expected = cpu_sum(projection_, terms_, count_, thin, x, y);
       for (int ch = 0; ch < 3; ++ch) {
         worst = std::max(worst, std::fabs(a[i + ch] - expected[static_cast<std::size_t>(ch)]) /
                                     std::max(1e-6f, expected[static_cast<std::size_t>(ch)]));
@@ -152,7 +165,20 @@ TEST_F(BackTransmittance, GatherMatchesTheCpuSumAndOnlyOpposingBackFacesTransmit
   std::printf("back transmittance: largest relative |GPU - CPU| %.3g, centre red %.4g (2 mm) %.4g (4 mm)\n", worst,
               a[(16 * kSize + 16) * 4], b[(16 * kSize + 16) * 4]);
   EXPECT_LE(worst, 1e-5f);
-  glDeleteProgram(program);
+}
+
+// A back-face distance that is not a positive finite number adds nothing, as sss_transmittance
+// gives no light for a NaN or infinite thickness: an infinite one would otherwise turn the
+// view-space point into inf - inf = NaN and the pixel (and the blur after it) NaN.
+TEST_F(BackTransmittance, BackDistancesThatAreNotPositiveFiniteAddNothing) {
+  for (float distance : {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                         -std::numeric_limits<float>::infinity(), -1.0f, 0.0f}) {
+    SCOPED_TRACE(distance);
+    const std::vector<float> out = render(distance, {0.0f, 0.0f, -1.0f});
+    for (std::size_t i = 0; i < out.size(); i += 4) {
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(out[i + static_cast<std::size_t>(c)], 0.0f) << i / 4;
+    }
+  }
 }
 
 }  // namespace

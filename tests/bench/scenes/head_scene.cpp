@@ -342,6 +342,27 @@ void set_vec3(GLuint program, const char* name, const float* v) {
 
 }  // namespace
 
+HeadLights head_lights() {
+  HeadLights l;
+  l.key_direction = kKeyDirection;
+  l.fill_direction = kFillDirection;
+  for (int c = 0; c < 3; ++c) {
+    l.key[c] = kKeyColour[c];
+    l.fill[c] = kFillColour[c];
+    l.ambient[c] = kAmbient[c];
+  }
+  return l;
+}
+
+void head_camera(const HeadView& view, int width, int height, Mat4* projection, Mat4* view_matrix) {
+  *projection = to_double(to_float(perspective(view.fovy_degrees * kPi / 180.0, static_cast<double>(width) / height,
+                                               view.near_plane, view.far_plane)));
+  const double yaw = view.yaw_degrees * kPi / 180.0, pitch = view.pitch_degrees * kPi / 180.0;
+  const Vec3 eye = view.target + Vec3{std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)} *
+                                     view.distance;
+  *view_matrix = look_at(eye, view.target, Vec3{0, 1, 0});
+}
+
 Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view) {
   const HeadAsset& asset = head_asset();  // may throw before any GL call
 
@@ -349,14 +370,9 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
   scene.name = name;
   scene.width = width;
   scene.height = height;
-  const Mat4 projection = to_double(to_float(perspective(view.fovy_degrees * kPi / 180.0,
-                                                         static_cast<double>(width) / height, view.near_plane,
-                                                         view.far_plane)));
+  Mat4 projection{}, view_matrix{};
+  head_camera(view, width, height, &projection, &view_matrix);
   scene.projection = to_float(projection);
-  const double yaw = view.yaw_degrees * kPi / 180.0, pitch = view.pitch_degrees * kPi / 180.0;
-  const Vec3 eye = view.target + Vec3{std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)} *
-                                     view.distance;
-  const Mat4 view_matrix = look_at(eye, view.target, Vec3{0, 1, 0});
 
   // The key light's orthographic frustum around the bounding sphere of the scan.
   const Vec3 lo{asset.bounds_min[0], asset.bounds_min[1], asset.bounds_min[2]};

@@ -23,9 +23,25 @@ struct HeadView {
   bool preintegrated = false;
 };
 
+// The head scenes' lights (world space, towards the light): the key (which throws the shadow map's
+// shadow), the fill and the ambient, linear colours.
+struct HeadLights {
+  Vec3 key_direction, fill_direction;
+  float key[3], fill[3], ambient[3];
+};
+HeadLights head_lights();
+
+// The camera of `view` for a width x height frame: the projection (rounded to float, as the scene
+// stores it) and the world-to-view matrix.
+void head_camera(const HeadView& view, int width, int height, Mat4* projection, Mat4* view_matrix);
+
 // How the normal map's green channel is read (see head_scene.cpp): +1 as stored, -1 inverted.
 extern const float kNormalMapGreenSign;
 
 Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view);
+
+// head-mixed (mixed_scene.cpp): the head of `view` with a marble bust and a wax candle beside it;
+// fills Scene::profile and Scene::profile_materials.
+Scene render_mixed_scene(const std::string& name, int width, int height, const HeadView& view);
 
 }  // namespace sss_bench::detail

@@ -26,6 +26,12 @@ struct Scene {
   // The footprint sweep's planes (plane-*): the millimetres one pixel measures on the plane, which
   // faces the camera, so every pixel's footprint is this square; 0 for every other scene.
   double footprint_mm = 0.0;
+  // Several materials (head-mixed): per pixel profile | object << 4 as a host's R8UI G-buffer byte
+  // holds it (sss_frame.profile_texture), 0 on the background; and the sss_profile of each profile
+  // index (the exact reference convolves each profile's pixels with that profile alone). Both empty
+  // for every other scene (one material: d'Eon's skin).
+  std::vector<uint8_t> profile;
+  std::vector<int> profile_materials;
 };
 
 }  // namespace sss_bench

@@ -26,6 +26,11 @@ detail::HeadView head_view(const std::string& name) {
     v.target = {0.0, 0.075, 0.08};
     frame_height = 0.21;
     v.near_plane = 0.15;
+  } else if (name == "head-mixed") {
+    // The head and the objects beside it (x from -0.44 to 0.37 m) across the frame's width.
+    v.target = {0.0, -0.01, 0.0};
+    frame_height = 0.56;
+    v.near_plane = 0.3;
   } else if (name == "head-mid") {
     v.target = {0.0, 0.0, 0.0};
     frame_height = 1.08;
@@ -45,11 +50,11 @@ detail::HeadView head_view(const std::string& name) {
 
 std::vector<std::string> canonical_scene_names() {
   return {"dot",        "edge-0",   "edge-30",  "edge-45", "sphere",    "depth-step", "tilted-30", "tilted-60",
-          "tilted-80",  "head-close", "head-mid", "head-far", "empty"};
+          "tilted-80",  "head-close", "head-mid", "head-far", "head-mixed", "empty"};
 }
 
 bool scene_needs_gl(const std::string& name) {
-  return name == "head-close" || name == "head-mid" || name == "head-far";
+  return name == "head-close" || name == "head-mid" || name == "head-far" || name == "head-mixed";
 }
 
 Scene make_scene(const std::string& name, int width, int height) {
@@ -64,6 +69,7 @@ Scene make_scene(const std::string& name, int width, int height) {
   if (name == "tilted-30") return detail::make_tilted_plane_scene(name, 30.0, width, height);
   if (name == "tilted-60") return detail::make_tilted_plane_scene(name, 60.0, width, height);
   if (name == "tilted-80") return detail::make_tilted_plane_scene(name, 80.0, width, height);
+  if (name == "head-mixed") return detail::render_mixed_scene(name, width, height, head_view(name));
   if (scene_needs_gl(name)) return detail::render_head_scene(name, width, height, head_view(name));
   if (name == "empty") return detail::make_empty_scene(width, height);
   if (name == "sphere-20mm") return detail::make_small_sphere_scene(name, 0.020, width, height, false);

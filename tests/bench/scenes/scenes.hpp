@@ -11,6 +11,8 @@
 //                0.3 m behind it
 //   head-close/mid/far  the Lee Perry-Smith head scan, lit with a shadowing key light, a fill and
 //                an ambient term, in front of a dark backdrop (needs GL)
+//   head-mixed   the head with a marble bust and a wax candle beside it (the demo's mixed scene):
+//                three profiles and three objects in one frame (Scene::profile), the objects ray-cast
 //   empty        the backdrop alone (nothing translucent)
 //
 // The footprint sweep (footprint_scene_names): a translucent plane facing the camera, filling the

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "math/plane_reference.hpp"
 #include "math/projection.hpp"
 #include "scenes.hpp"
+#include "sss/sss.h"
 
 using namespace host_gl;
 
@@ -105,7 +107,7 @@ class SceneTest : public GlTest {};
 TEST_F(SceneTest, NamesAndErrors) {
   const std::vector<std::string> expected = {"dot",       "edge-0",    "edge-30",    "edge-45",  "sphere",
                                              "depth-step", "tilted-30", "tilted-60", "tilted-80", "head-close",
-                                             "head-mid",  "head-far",  "empty"};
+                                             "head-mid",  "head-far",  "head-mixed", "empty"};
   EXPECT_EQ(sss_bench::canonical_scene_names(), expected);
   for (const std::string& name : expected)
     EXPECT_EQ(sss_bench::scene_needs_gl(name), name.rfind("head-", 0) == 0) << name;
@@ -113,6 +115,23 @@ TEST_F(SceneTest, NamesAndErrors) {
   EXPECT_THROW(sss_bench::make_scene("", kWidth, kHeight), std::invalid_argument);
   EXPECT_THROW(sss_bench::make_scene("dot", 0, kHeight), std::invalid_argument);
   EXPECT_THROW(sss_bench::make_scene("head-close", kWidth, -1), std::invalid_argument);
+}
+
+// head-mixed: three profile/object pairs beside the background, each covering some pixels, the byte
+// non-zero exactly where the mask is, each pair's irradiance from its own albedo; no other scene has
+// a profile byte.
+TEST_F(SceneTest, MixedSceneHoldsThreeMaterials) {
+  const sss_bench::Scene s = sss_bench::make_scene("head-mixed", 320, 180);
+  ASSERT_EQ(s.profile.size(), s.mask.size());
+  EXPECT_EQ(s.profile_materials, (std::vector<int>{SSS_PROFILE_SKIN_DEON, SSS_PROFILE_MARBLE, SSS_PROFILE_CREAM}));
+  std::map<int, int> pixels;
+  for (std::size_t i = 0; i < s.mask.size(); ++i) {
+    EXPECT_EQ(s.profile[i] != 0, s.mask[i] != 0) << "pixel " << i;
+    ++pixels[s.profile[i]];
+  }
+  EXPECT_EQ(pixels.size(), 4u);
+  for (int byte : {0, 0 | 1 << 4, 1 | 2 << 4, 2 | 3 << 4}) EXPECT_GT(pixels[byte], 200) << "byte " << byte;
+  for (const char* name : {"head-close", "sphere"}) EXPECT_TRUE(sss_bench::make_scene(name, 32, 18).profile.empty()) << name;
 }
 
 TEST_F(SceneTest, EveryScenePromisesWhatSceneHppSays) {
