@@ -335,6 +335,16 @@ TEST_F(VersionedStructs, KernelDescsOfEarlierReleasesAreRead) {
   EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->kernel->struct_size = 124"), std::string::npos)
       << sss_last_error(sss_);
+  // The same 0.3 desc on a per-pixel profile other than the first (sss_set_profiles reads each as
+  // sss_set_settings does).
+  // At rank 1: several profiles take one-term kernels.
+  KernelDesc03 old_rank1 = old;
+  old_rank1.rank = 1;
+  sss_settings two[2];
+  sss_default_settings(&two[0]);
+  two[1] = two[0];
+  two[1].kernel = reinterpret_cast<const sss_kernel_desc*>(&old_rank1);
+  EXPECT_EQ(sss_set_profiles(sss_, two, 2), SSS_OK) << sss_last_error(sss_);
   old.profile.struct_size = sizeof(sss_profile_desc);  // 0.3's kernel desc cannot hold today's profile desc
   s.kernel = reinterpret_cast<const sss_kernel_desc*>(&old);
   EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);

@@ -8,6 +8,7 @@
 #include "../gl/texture_query.hpp"
 #include "profiles.hpp"
 #include "validation.hpp"
+#include "versioned_structs.hpp"
 
 namespace {
 
@@ -49,7 +50,11 @@ sss_result build_profile(sss_context* ctx, const sss_settings* profiles, uint32_
                 "profiles[%u].struct_size = %u: expected sizeof(sss_settings) = %u (sss_set_profiles is new in 0.4)",
                 i, s.struct_size, static_cast<unsigned>(sizeof(sss_settings)));
   }
-  sss_result r = sss::api::check_settings(ctx, &s);
+  // A kernel desc of an earlier release's size (a tools build older than the runtime) is read as
+  // today's, as sss_set_settings reads it.
+  sss::api::CurrentSettings current;
+  sss_result r = sss::api::settings_from_caller(ctx, &s, &current);
+  if (r == SSS_OK) r = sss::api::check_settings(ctx, &current.settings);
   if (r != SSS_OK) return for_profile(ctx, r, i);
   if (i > 0) {
     r = check_shared_fields(ctx, profiles[0], s, i);
@@ -59,7 +64,7 @@ sss_result build_profile(sss_context* ctx, const sss_settings* profiles, uint32_
     return fail(ctx, SSS_ERROR_UNSUPPORTED, "profiles[%u].mode = SSS_MODE_CROSS_BILATERAL: several profiles run "
                 "the separable mode (SSS_MODE_SEPARABLE)", i);
   }
-  out->settings = sss::api::to_filter_settings(s);
+  out->settings = sss::api::to_filter_settings(current.settings);
   r = sss::api::build_pass_kernel(ctx, out->settings, &out->kernel);
   if (r != SSS_OK) return for_profile(ctx, r, i);
   if (out->kernel.terms.size() != 1) {
