@@ -152,11 +152,12 @@ class Soak {
     // textures, buffers, framebuffers, renderbuffers, vertex arrays, samplers, programs, shaders:
     // the host's 3 textures; the module's intermediate and two term accumulators (kernels of
     // several terms only: the soak's eq. (1) never makes them), stencil copy, 4 framebuffers,
-    // vertex array, 2 samplers (colour, depth), the copy and stencil-mark programs (the default path,
+    // vertex array, 3 samplers (colour, depth, nearest for the per-pixel profiles' integer copy, made
+    // with the others at create), the copy and stencil-mark programs (the default path,
     // SSS_PATH_AUTO, takes the masked passes on Mesa, which mark translucent pixels in the stencil
     // first) and up to 12 blur variants (the soak's settings: outside x follow-surface x depth kind;
     // 2 shaders each, flagged for deletion).
-    const std::array<int, 8> most = {3 + 3, 0, 4, 1, 1, 2, 14, 28};
+    const std::array<int, 8> most = {3 + 3, 0, 4, 1, 1, 3, 14, 28};
     for (std::size_t k = 0; k < most.size(); ++k) {
       if (live.count[k] - objects_without_module_.count[k] > most[k]) {
         fail("GL objects at the end of context " + std::to_string(contexts_) + ": " + live.describe() +
