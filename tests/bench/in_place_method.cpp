@@ -7,9 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "library_frame_method.hpp"
 #include "math/separable_kernel.hpp"
-#include "method.hpp"
-#include "sss/sss.h"
 
 using namespace host_gl;
 
@@ -17,22 +16,10 @@ namespace sss_bench {
 
 namespace {
 
-class InPlaceMethod : public Method {
+class InPlaceMethod : public LibraryFrameMethod {
  public:
   InPlaceMethod(const GlLoader& loader, int taps, bool region, uint32_t path)
-      : taps_(taps), region_(region), path_(path) {
-    sss_create_desc desc = {};
-    desc.struct_size = sizeof desc;
-    desc.get_proc_address = loader.get_proc_address;
-    desc.get_proc_address_user = loader.user;
-    if (sss_create(&desc, &ctx_) != SSS_OK) throw std::runtime_error(sss_last_error(nullptr));
-    glGenFramebuffers(2, framebuffers_);
-  }
-  ~InPlaceMethod() override {
-    sss_destroy(ctx_);
-    glDeleteFramebuffers(2, framebuffers_);
-    if (work_ != 0) glDeleteTextures(1, &work_);
-  }
+      : LibraryFrameMethod(loader), taps_(taps), region_(region), path_(path) {}
 
   std::string name() const override {
     const std::string base = path_ == SSS_PATH_COMPUTE           ? "separable-compute"
@@ -74,41 +61,12 @@ class InPlaceMethod : public Method {
     return true;
   }
 
-  void after_run(const GpuScene& scene, GLuint output) override { blit(work_, output, scene.width, scene.height); }
-
-  std::string path_ran() const override {
-    sss_stats st = {};
-    st.struct_size = sizeof st;
-    if (sss_get_stats(ctx_, &st) != SSS_OK) return "";
-    return st.last_frame_path == SSS_PATH_COMPUTE           ? "compute"
-           : st.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "masked"
-                                                            : "fragment";
-  }
-
  private:
-  // A float colour texture into another of the same size (GL_NEAREST: texel for texel).
-  void blit(GLuint from, GLuint to, int width, int height) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[0]);
-    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[1]);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  }
-
   // The work texture for this scene's size, and the region a host would pass: the bounding
   // rectangle of the translucent pixels, padded by the kernel's reach in pixels at the nearest
   // translucent pixel (range 2 or 3 mm, at alpha 1), clipped to the frame; empty when none is.
   void prepare(const GpuScene& scene) {
-    if (work_ == 0 || work_width_ != scene.width || work_height_ != scene.height) {
-      if (work_ == 0) glGenTextures(1, &work_);
-      glBindTexture(GL_TEXTURE_2D, work_);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, scene.width, scene.height, 0, GL_RGBA, GL_FLOAT, nullptr);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      work_width_ = scene.width;
-      work_height_ = scene.height;
-    }
+    ensure_work(scene);
     // Recomputed before every frame (untimed): a host would project its meshes' bounds each frame.
     int x0 = scene.width, y0 = scene.height, x1 = -1, y1 = -1;
     for (int y = 0; y < scene.height; ++y) {
@@ -142,10 +100,6 @@ class InPlaceMethod : public Method {
   int taps_;
   bool region_;
   uint32_t path_;
-  sss_context* ctx_ = nullptr;
-  GLuint framebuffers_[2] = {0, 0};
-  GLuint work_ = 0;
-  int work_width_ = 0, work_height_ = 0;
   std::array<int, 4> region_rect_ = {0, 0, 0, 0};
 };
 

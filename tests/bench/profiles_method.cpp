@@ -10,11 +10,9 @@
 //                            everywhere, so the frame runs the selection and the ID test for nothing).
 // Both take the library's default path (SSS_PATH_AUTO: the masked fragment passes on a software
 // rasteriser; a frame with a profile texture never takes the compute path).
-#include <stdexcept>
 #include <vector>
 
-#include "method.hpp"
-#include "sss/sss.h"
+#include "library_frame_method.hpp"
 
 using namespace host_gl;
 
@@ -22,21 +20,10 @@ namespace sss_bench {
 
 namespace {
 
-class ProfilesMethod : public Method {
+class ProfilesMethod : public LibraryFrameMethod {
  public:
-  ProfilesMethod(const GlLoader& loader, int taps, bool per_pixel) : taps_(taps), per_pixel_(per_pixel) {
-    sss_create_desc desc = {};
-    desc.struct_size = sizeof desc;
-    desc.get_proc_address = loader.get_proc_address;
-    desc.get_proc_address_user = loader.user;
-    if (sss_create(&desc, &ctx_) != SSS_OK) throw std::runtime_error(sss_last_error(nullptr));
-    glGenFramebuffers(2, framebuffers_);
-  }
-  ~ProfilesMethod() override {
-    sss_destroy(ctx_);
-    glDeleteFramebuffers(2, framebuffers_);
-    if (work_ != 0) glDeleteTextures(1, &work_);
-  }
+  ProfilesMethod(const GlLoader& loader, int taps, bool per_pixel)
+      : LibraryFrameMethod(loader), taps_(taps), per_pixel_(per_pixel) {}
 
   std::string name() const override { return per_pixel_ ? "separable-profiles" : "separable-one-profile"; }
   int taps() const override { return taps_; }
@@ -44,16 +31,7 @@ class ProfilesMethod : public Method {
   int passes() const override { return 2; }
 
   void before_run(const GpuScene& scene) override {
-    if (work_ == 0 || width_ != scene.width || height_ != scene.height) {
-      if (work_ == 0) glGenTextures(1, &work_);
-      glBindTexture(GL_TEXTURE_2D, work_);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, scene.width, scene.height, 0, GL_RGBA, GL_FLOAT, nullptr);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      width_ = scene.width;
-      height_ = scene.height;
-      set_ = false;
-    }
+    if (ensure_work(scene)) set_ = false;
     if (!set_) set_ = set_profiles(scene);
     blit(scene.irradiance, work_, scene.width, scene.height);
   }
@@ -76,17 +54,6 @@ class ProfilesMethod : public Method {
       return false;
     }
     return true;
-  }
-
-  void after_run(const GpuScene& scene, GLuint output) override { blit(work_, output, scene.width, scene.height); }
-
-  std::string path_ran() const override {
-    sss_stats st = {};
-    st.struct_size = sizeof st;
-    if (sss_get_stats(ctx_, &st) != SSS_OK) return "";
-    return st.last_frame_path == SSS_PATH_COMPUTE           ? "compute"
-           : st.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "masked"
-                                                            : "fragment";
   }
 
  private:
@@ -114,23 +81,10 @@ class ProfilesMethod : public Method {
     return sss_set_profiles(ctx_, profiles.data(), static_cast<uint32_t>(profiles.size())) == SSS_OK;
   }
 
-  void blit(GLuint from, GLuint to, int width, int height) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[0]);
-    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[1]);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  }
-
   int taps_;
   bool per_pixel_;
   bool set_ = false;
-  sss_context* ctx_ = nullptr;
   std::vector<sss_kernel_desc> kernels_;
-  GLuint framebuffers_[2] = {0, 0};
-  GLuint work_ = 0;
-  int width_ = 0, height_ = 0;
 };
 
 }  // namespace
