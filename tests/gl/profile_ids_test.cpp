@@ -356,7 +356,7 @@ TEST_F(ProfileIds, SetProfilesRefusesAndKeepsTheOldSet) {
   expect_refused(17, SSS_ERROR_INVALID_ARGUMENT, "count = 17", profiles);
   expect_refused(2, SSS_ERROR_INVALID_ARGUMENT, "profiles is NULL", nullptr);
   profiles[2].taps = 9;
-  expect_refused(3, SSS_ERROR_INVALID_ARGUMENT, "profiles[2].taps differs from profiles[0].taps", profiles);
+  expect_refused(3, SSS_ERROR_INVALID_ARGUMENT, "profiles[2].taps = 9 differs from profiles[0].taps = 17", profiles);
   profiles[2] = second_look(first_);
   profiles[2].scale = -1.0f;
   expect_refused(3, SSS_ERROR_INVALID_ARGUMENT, "profiles[2]: settings->scale = -1", profiles);

@@ -17,20 +17,32 @@ namespace gl = sss::gl;
 
 // The fields every profile shares (one pass pair runs them all): they must equal profiles[0]'s.
 sss_result check_shared_fields(sss_context* ctx, const sss_settings& first, const sss_settings& s, uint32_t i) {
-  const auto same_float = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
-  const char* field = s.taps != first.taps                          ? "taps"
-                      : s.flags != first.flags                      ? "flags"
-                      : s.mode != first.mode                        ? "mode"
-                      : s.path != first.path                        ? "path"
-                      : !same_float(s.jitter, first.jitter)         ? "jitter"
-                      : s.cbf_taps != first.cbf_taps                ? "cbf_taps"
-                      : !same_float(s.cbf_r_max_mm, first.cbf_r_max_mm) ? "cbf_r_max_mm"
-                      : s.cbf_profile != first.cbf_profile          ? "cbf_profile"
-                                                                    : nullptr;
-  if (field == nullptr) return SSS_OK;
-  return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-              "profiles[%u].%s differs from profiles[0].%s: taps, flags, mode, path, jitter and the cbf_* fields "
-              "are shared by every profile (one pass pair runs them all)", i, field, field);
+  struct Shared {
+    const char* name;
+    double value, expected;
+    bool differs;
+  };
+  const auto bits_differ = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) != 0; };
+  const Shared fields[] = {
+      {"taps", static_cast<double>(s.taps), static_cast<double>(first.taps), s.taps != first.taps},
+      {"flags", static_cast<double>(s.flags), static_cast<double>(first.flags), s.flags != first.flags},
+      {"mode", static_cast<double>(s.mode), static_cast<double>(first.mode), s.mode != first.mode},
+      {"path", static_cast<double>(s.path), static_cast<double>(first.path), s.path != first.path},
+      {"jitter", static_cast<double>(s.jitter), static_cast<double>(first.jitter), bits_differ(s.jitter, first.jitter)},
+      {"cbf_taps", static_cast<double>(s.cbf_taps), static_cast<double>(first.cbf_taps), s.cbf_taps != first.cbf_taps},
+      {"cbf_r_max_mm", static_cast<double>(s.cbf_r_max_mm), static_cast<double>(first.cbf_r_max_mm),
+       bits_differ(s.cbf_r_max_mm, first.cbf_r_max_mm)},
+      {"cbf_profile", static_cast<double>(s.cbf_profile), static_cast<double>(first.cbf_profile),
+       s.cbf_profile != first.cbf_profile},
+  };
+  for (const Shared& f : fields) {
+    if (!f.differs) continue;
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "profiles[%u].%s = %g differs from profiles[0].%s = %g: taps, flags, mode, path, jitter and the "
+                "cbf_* fields are shared by every profile (one pass pair runs them all)",
+                i, f.name, f.value, f.name, f.expected);
+  }
+  return SSS_OK;
 }
 
 // A failure of profiles[i]'s checks, its message (which names settings->field) prefixed with the index.
@@ -41,8 +53,8 @@ sss_result for_profile(sss_context* ctx, sss_result r, uint32_t i) {
   return fail(ctx, r, "profiles[%u]: %s", i, why.c_str());
 }
 
-// One profile of several: valid settings, the separable mode, and a kernel of one term whose depth
-// rule (the follow-surface ramp or the Gaussian correction) is the first profile's.
+// One profile of several: valid settings sharing profiles[0]'s shared fields, the separable mode,
+// and a kernel of one term (sss_set_profiles then checks that every depth rule is the first's).
 sss_result build_profile(sss_context* ctx, const sss_settings* profiles, uint32_t i, sss::math::Profile* out) {
   const sss_settings& s = profiles[i];
   if (s.struct_size != sizeof(sss_settings)) {
