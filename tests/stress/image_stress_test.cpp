@@ -24,6 +24,7 @@ class ImageStress : public StressTest {
     StressTest::SetUp();
     if (HasFatalFailure()) return;
     set_wide_kernel(kCamera, 0.08f, 25);  // taps reach the borders of small images
+    add_second_profile(1.5f);              // for the frames with profile ids
   }
 };
 
@@ -51,9 +52,11 @@ TEST_F(ImageStress, TinyOddAndVeryWideImagesInEveryFormat) {
       f.use_stencil =
           (format == DepthFormat::depth24_stencil8 || format == DepthFormat::depth32f_stencil8) && k % 3 != 0;
       f.separate_output = k % 4 == 1;
+      if (k % 5 == 2) f.profile_ids = banded_ids(size.first, size.second);  // per-pixel profiles and objects
       SCOPED_TRACE(::testing::Message() << size.first << "x" << size.second << " " << depth_format_name(format)
                                         << (f.half_color ? " RGBA16F" : " RGBA32F") << (f.use_stencil ? " stencil" : "")
-                                        << (f.separate_output ? " separate output" : ""));
+                                        << (f.separate_output ? " separate output" : "")
+                                        << (f.profile_ids.empty() ? "" : " profile ids"));
       Expectations e;
       e.flat = size.first == 1 && size.second == 1;  // every tap is the pixel itself
       ASSERT_TRUE(run_and_check(f, e));

@@ -29,6 +29,7 @@ class NonFiniteStress : public StressTest {
     StressTest::SetUp();
     if (HasFatalFailure()) return;
     set_wide_kernel(kCamera, 0.1f, 33);  // taps reach across the whole image
+    add_second_profile(2.0f);            // for the frames with profile ids
   }
 
   // A plane facing the camera at 1.5, one colour everywhere.
@@ -61,10 +62,11 @@ TEST_F(NonFiniteStress, NonFiniteColourOrAlphaNeverSpreads) {
         f.half_color = k % 2 == 0;
         f.separate_output = k % 3 == 0;
         f.use_stencil = f.depth_format == DepthFormat::depth24_stencil8 && k % 4 < 2;
+        if (k % 5 == 1) f.profile_ids = banded_ids(kW, kH);  // per-pixel profiles: a flat plane stays flat
         SCOPED_TRACE(::testing::Message()
                      << v << " in channel " << channel << " at " << p[0] << "," << p[1]
                      << (f.half_color ? " RGBA16F" : " RGBA32F") << (f.separate_output ? " separate" : "")
-                     << (f.use_stencil ? " stencil" : ""));
+                     << (f.use_stencil ? " stencil" : "") << (f.profile_ids.empty() ? "" : " profile ids"));
         ASSERT_TRUE(run_and_check(f, flat));
       }
     }

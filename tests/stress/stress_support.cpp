@@ -96,6 +96,26 @@ void StressTest::set_wide_kernel(const sss::math::Matrix4& camera, float world_u
   ASSERT_EQ(set_settings(s), SSS_OK);
 }
 
+void StressTest::add_second_profile(float scale) {
+  sss_settings profiles[2];
+  profiles[0].struct_size = sizeof profiles[0];
+  ASSERT_EQ(sss_get_settings(sss_, &profiles[0]), SSS_OK);
+  profiles[1] = profiles[0];
+  profiles[1].scale = scale;
+  ASSERT_EQ(sss_set_profiles(sss_, profiles, 2), SSS_OK) << sss_last_error(sss_);
+}
+
+std::vector<uint16_t> StressTest::banded_ids(int width, int height) {
+  std::vector<uint16_t> ids(static_cast<std::size_t>(width) * height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int band = (x / 3 + y / 2) % 3;  // 0: profile 0; 1: profile 1; 2: profile 0, object 1
+      ids[static_cast<std::size_t>(y) * width + x] = static_cast<uint16_t>(band == 0 ? 0 : band == 1 ? 1 : 0x10);
+    }
+  }
+  return ids;
+}
+
 sss_result StressTest::set_settings(const sss_settings& s) {
   const sss_result r = sss_set_settings(sss_, &s);
   EXPECT_EQ(r, SSS_OK) << sss_last_error(sss_);
@@ -185,6 +205,12 @@ StressOutcome StressTest::run(const StressFrame& f) {
   o.input = read_rgba(color, f.width, f.height);
   sss_stencil stencil = {depth, 1, 0xFF};
   sss_frame frame = frame_of(color, depth, output);
+  if (!f.profile_ids.empty()) {
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    frame.profile_texture =
+        make_texture(GL_R16UI, f.width, f.height, GL_RED_INTEGER, GL_UNSIGNED_SHORT, f.profile_ids.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  }
   frame.stencil = f.use_stencil ? &stencil : nullptr;
   std::memcpy(frame.viewport, f.viewport, sizeof frame.viewport);
   frame.flags = f.flags;

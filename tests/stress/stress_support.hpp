@@ -41,6 +41,8 @@ struct StressFrame {
   bool separate_output = false;  // an output texture of the colour's format, pre-filled with kSentinel
   int32_t viewport[4] = {0, 0, 0, 0};
   uint32_t flags = 0;  // SSS_FRAME_*
+  // Per pixel, as an R16UI profile_texture (profile in bits 0-3, object above); empty: none.
+  std::vector<uint16_t> profile_ids;
 };
 
 constexpr float kSentinel = -3.25f;
@@ -98,6 +100,11 @@ class StressTest : public GlTest {
   // For a fixture's SetUp: `camera`, and the default settings at `world_units_per_mm` with every
   // strength 1 and `samples` taps (a wide kernel whose taps reach the image's borders).
   void set_wide_kernel(const sss::math::Matrix4& camera, float world_units_per_mm, int samples);
+  // The current settings as profile 0 and, as profile 1, the same at `scale` (sss_set_profiles):
+  // frames without profile ids are unchanged; with them, index 1 pixels scatter further.
+  void add_second_profile(float scale);
+  // Ids for a frame: profiles 0 and 1 and two objects in bands (so taps cross between indices).
+  static std::vector<uint16_t> banded_ids(int width, int height);
 
   std::string category_ = "uncategorised";
   Tally tally_;
