@@ -13,14 +13,14 @@ namespace demo {
 
 float Bounds::radius() const { return 0.5f * glm::length(max - min); }
 
-namespace {
-
 Bounds model_bounds(const gltf_mesh::Model &model) {
   Bounds b;
   b.min = glm::vec3(model.bounds_min[0], model.bounds_min[1], model.bounds_min[2]);
   b.max = glm::vec3(model.bounds_max[0], model.bounds_max[1], model.bounds_max[2]);
   return b;
 }
+
+namespace {
 
 // Gives every primitive without a material the default one (white, no textures), appended last.
 void add_default_material(gltf_mesh::Model *model) {

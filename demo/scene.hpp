@@ -21,6 +21,9 @@ struct Bounds {
   float radius() const;  // half the diagonal
 };
 
+// The box of a model's vertices (its bounds_min/bounds_max).
+Bounds model_bounds(const gltf_mesh::Model &model);
+
 // A directional light with a shadow map.
 struct Light {
   glm::vec3 direction;   // unit vector from the surface towards the light

@@ -16,13 +16,6 @@ namespace demo {
 
 namespace {
 
-Bounds model_bounds(const gltf_mesh::Model &model) {
-  Bounds b;
-  b.min = glm::vec3(model.bounds_min[0], model.bounds_min[1], model.bounds_min[2]);
-  b.max = glm::vec3(model.bounds_max[0], model.bounds_max[1], model.bounds_max[2]);
-  return b;
-}
-
 // The head of load_head_scene as object 1 of profile 0 (skin).
 DemoScene head_as_object(const char *name) {
   DemoScene scene = load_head_scene();

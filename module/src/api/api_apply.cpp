@@ -323,7 +323,9 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
   run->kernel = &ctx.kernel;
   run->kernel_revision = ctx.kernel_revision;
   run->follow_surface = ctx.settings.follow_surface;
-  run->identity = sss::api::is_identity_settings(ctx.settings);  // nothing drawn unless an output needs the copy
+  // Nothing drawn (unless an output needs the copy) where every profile the frame can use is the identity.
+  run->identity = sss::api::is_identity_settings(ctx.settings) &&
+                  (!run->has_profiles() || sss::api::extra_profiles_are_identity(ctx));
   run->frame = ctx.frames + 1;
   run->path = ctx.settings.path;
   if (run->path == SSS_PATH_AUTO) run->path_key = path_key(ctx, *run, frame.flags);  // only AUTO reads it

@@ -132,11 +132,14 @@ void fill_profiles(const sss_context& ctx, const sss::math::FrameGeometry* geome
     if (geometry == nullptr) continue;
     run->profile_constants[i + 1] =
         sss::math::compute_pass_constants(p.settings, ctx.projection, *geometry, p.kernel.reach_mm);
-    // The whole frame is the identity only where every profile is.
-    if (!is_identity_settings(p.settings) && !(run->region && (run->draw_rect[2] == 0 || run->draw_rect[3] == 0))) {
-      run->identity = false;
-    }
   }
+}
+
+bool extra_profiles_are_identity(const sss_context& ctx) {
+  for (const sss::math::Profile& p : ctx.extra_profiles) {
+    if (!is_identity_settings(p.settings)) return false;
+  }
+  return true;
 }
 
 sss_result check_profile_indices(sss_context* ctx, const gl::FilterRun& run) {

@@ -39,8 +39,8 @@ sss_result ProfileTables::upload(const FilterRun& run, std::string* message) {
     }
     revision_ = 0;
   }
+  if (revision_ == run.profiles_revision) return SSS_OK;  // a steady frame: no GL call here
   f.BindBuffer(UNIFORM_BUFFER, buffer_);
-  if (revision_ == run.profiles_revision) return SSS_OK;
   std::vector<float> block(static_cast<std::size_t>(block_bytes() / static_cast<std::ptrdiff_t>(sizeof(float))), 0.0f);
   for (int axis = 0; axis < 2; ++axis) {
     for (int i = 0; i < run.profile_count && i < capacity_; ++i) {

@@ -20,7 +20,7 @@ class ProfileTables {
   void init(const Functions* gl, bool labels);
   int capacity() const { return capacity_; }
   // The tables of run's profiles in the buffer (made on first use), unless revision
-  // run.profiles_revision is already there. Leaves GL_UNIFORM_BUFFER bound to the buffer.
+  // run.profiles_revision is already there (then no GL call).
   sss_result upload(const FilterRun& run, std::string* message);
   // Binding point 0 on the block of the pass along `axis` (0 horizontal, 1 vertical).
   void bind(int axis) const;
