@@ -98,7 +98,7 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   set_unit(p.program, p.depth, unit::depth);
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
-  set_unit(p.program, p.profile_ids, unit::profile_ids);
+  set_unit(p.program, p.depth_ids, unit::profile_ids);
   if (v.profile_ids) {  // the tables' block on binding point 0 (ProfileTables::bind)
     const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
     if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
@@ -152,7 +152,7 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
-  p.profile_ids = f.GetUniformLocation(p.program, "u_depth_ids");
+  p.depth_ids = f.GetUniformLocation(p.program, "u_depth_ids");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }

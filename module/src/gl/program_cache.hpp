@@ -33,7 +33,7 @@ struct BlurProgram {
         axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint rect = -1;  // compute programs only
-  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only (u_depth_ids, ...)
+  GLint depth_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   bool compute = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;

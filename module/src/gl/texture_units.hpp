@@ -13,7 +13,9 @@ constexpr GLuint depth = 1;        // the host's depth (or the MSAA path's resol
 constexpr GLuint original = 2;     // the host's colour, read by a pass writing a separate output
 constexpr GLuint normals = 3;      // the cross-bilateral mode's host normals
 constexpr GLuint accumulated = 3;  // the earlier terms' sum (separable kernels of several terms)
-constexpr GLuint profile_ids = 4;  // the host's per-pixel profile and object indices (sss_frame.profile_texture)
+// Per-pixel profiles: the host's profile and object indices (sss_frame.profile_texture) in the
+// copy draw (profile_depth.frag), the module's view-distance-and-index copy in the blur passes.
+constexpr GLuint profile_ids = 4;
 // The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;
 
