@@ -32,6 +32,7 @@
   X(PFNGLDISABLEPROC, glDisable)                                 \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                             \
   X(PFNGLDEPTHMASKPROC, glDepthMask)                             \
+  X(PFNGLDEPTHRANGEFPROC, glDepthRangef)                         \
   X(PFNGLCOLORMASKPROC, glColorMask)                             \
   X(PFNGLCULLFACEPROC, glCullFace)                               \
   X(PFNGLFRONTFACEPROC, glFrontFace)                             \

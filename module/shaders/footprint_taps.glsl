@@ -4,7 +4,8 @@
 // table u_cdf. This must compute exactly what sss::math::footprint_taps does
 // (module/src/math/footprint_kernel.cpp).
 //
-// Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_JITTER,
+// Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_HALF_TAPS and
+// SSS_SPACING (when defined: the tap count and spacing as constants instead of uniforms), SSS_JITTER,
 // SSS_FOLLOW_SURFACE, SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). Before this piece the shader includes depth.glsl
 // and jitter.glsl, and defines how its taps are read (GLSL has no function pointers):
 //   struct TapSite      what the shader needs to find this pixel's taps
@@ -41,8 +42,19 @@ uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Ga
 #define SSS_INV_TWO_VARIANCE u_inv_two_variance
 #endif
 #endif
+#ifdef SSS_HALF_TAPS
+// The tap count and the sparse layout's spacing as constants of the variant (the fragment passes:
+// SSS_SPACING is math::footprint_spacing(SSS_HALF_TAPS), written by shader_variants.cpp), so the
+// compiler sees the loop's bound and folds each step's spacing.
+const int kSssHalfTaps = SSS_HALF_TAPS;       // the most taps on either side
+const float kSssSpacing[SSS_HALF_TAPS] = float[](SSS_SPACING);
+#define SSS_SPACING_AT(i) kSssSpacing[i]
+#else
 uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
 uniform int u_half_taps;                      // the most taps on either side
+#define kSssHalfTaps u_half_taps
+#define SSS_SPACING_AT(i) u_spacing[i]
+#endif
 #if SSS_JITTER
 uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
 #endif
@@ -57,7 +69,7 @@ vec3 half_cdf(float x_mm) {
 
 // The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
 float tap_position(int i, float previous, bool dense, float reach_pixels) {
-  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
+  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * SSS_SPACING_AT(i - 1) + 0.5));
 }
 
 // A tap's colour as it enters the sum: a non-finite neighbour (or one past colour_range.glsl's bound)
@@ -93,8 +105,8 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
 vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, float follow_surface,
                    ivec2 pixel, int axis) {
   float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
-  bool dense = reach_pixels <= float(u_half_taps) + 0.5;
-  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : u_half_taps;
+  bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
+  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
 #if SSS_JITTER
   int jitter_from = dense ? count + 1 : u_jitter_from;
   float noise = jitter_noise(pixel, axis);
@@ -113,7 +125,12 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
     below = half_cdf(0.5 * p / step_pixels);
     sum = centre * (2.0 * below + SSS_FOOTPRINT.yzw);
   }
+#ifdef SSS_HALF_TAPS
+  for (int i = 1; i <= SSS_HALF_TAPS; ++i) {  // a constant bound, so the loop can unroll
+    if (i > count) break;
+#else
   for (int i = 1; i <= count; ++i) {
+#endif
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
     vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
     float read = p;

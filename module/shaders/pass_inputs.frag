@@ -18,8 +18,14 @@
 //                      distance (they count as 0 in the distance: 15 fraction bits stay, 3e-5 of
 //                      the distance); 2: an R16UI one, which the passes read per tap instead
 //                      (the distance stays whole)
-//   SSS_FILL_INTERMEDIATE  1: also write the texel into the horizontal pass's target, where a
-//                      stencil keeps that pass from the pixel (the vertical taps read it there)
+//   SSS_MARK_DEPTH     1: mark the pixels the passes may change in the module's depth buffer
+//                      (0 where alpha is above 0, 1 elsewhere), which both passes then test
+//                      against (GL_GREATER at the full-screen triangle's depth), so the rasteriser
+//                      shades translucent pixels only: the paper's stencil culling, without a
+//                      draw of its own (a stencil can only be marked by discarding fragments,
+//                      which this draw must not do). 0: the host's (or the MSAA path's) stencil culls.
+// The texel goes into the horizontal pass's target too: that pass skips the pixels the culling
+// rejects, and the vertical taps read them there.
 #include "colour_range.glsl"
 #include "depth.glsl"
 
@@ -31,9 +37,7 @@ SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R8UI indic
 
 layout(location = 0) out uvec4 o_taps;
 layout(location = 1) out uint o_strength;
-#if SSS_FILL_INTERMEDIATE
 layout(location = 2) out uvec4 o_intermediate;
-#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -48,7 +52,8 @@ void main() {
   }
   o_taps = uvec4(floatBitsToUint(color.rgb), distance);
   o_strength = floatBitsToUint(color.a);
-#if SSS_FILL_INTERMEDIATE
   o_intermediate = o_taps;
+#if SSS_MARK_DEPTH
+  gl_FragDepth = color.a > 0.0 ? 0.0 : 1.0;  // NaN alpha: not marked (the passes leave it alone)
 #endif
 }

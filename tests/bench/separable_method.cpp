@@ -32,7 +32,7 @@ class SeparableMethod : public Method {
   }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return follow_; }
-  int passes() const override { return 2 * terms_; }
+  int passes() const override { return passes_; }
 
   bool run(const GpuScene& scene, GLuint output, std::string* error) override {
     sss_settings s;
@@ -61,13 +61,14 @@ class SeparableMethod : public Method {
     }
     sss_stats stats;
     stats.struct_size = sizeof stats;
-    if (sss_get_stats(ctx_, &stats) == SSS_OK) terms_ = std::max(1, static_cast<int>(stats.last_frame_passes) / 2);
+    // The library's draws: its inputs, a pass pair per term, the copy of the culled pixels.
+    if (sss_get_stats(ctx_, &stats) == SSS_OK) passes_ = static_cast<int>(stats.last_frame_passes);
     return true;
   }
 
  private:
   KernelChoice kernel_;
-  int terms_ = 1;
+  int passes_ = 4;
   int taps_;
   bool follow_;
   bool restores_state_;

@@ -118,6 +118,7 @@ class StateHarness : public GlTest {
     glDepthMask(static_cast<GLboolean>(coin(rng)));
     glPolygonMode(GL_FRONT_AND_BACK, pick<GLenum>(rng, {GL_FILL, GL_LINE, GL_POINT}));
     glDepthFunc(pick<GLenum>(rng, {GL_LESS, GL_GEQUAL, GL_NEVER, GL_ALWAYS}));
+    glDepthRangef(pick<GLfloat>(rng, {0.0f, 0.25f}), pick<GLfloat>(rng, {1.0f, 0.0f, 0.75f}));
     glBlendFunc(pick<GLenum>(rng, {GL_ONE, GL_ZERO, GL_DST_COLOR}), pick<GLenum>(rng, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA}));
     glCullFace(pick<GLenum>(rng, {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK}));
     glFrontFace(pick<GLenum>(rng, {GL_CW, GL_CCW}));
@@ -355,6 +356,7 @@ TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
       {"image unit", g::image_unit},
       {"uniform buffer", g::uniform_buffer},
       {"pack state", g::pack_state},
+      {"depth", g::depth},
   };
   std::atomic<uint32_t>& skip = sss::gl::restore_skip_mask_for_tests();
   for (const auto& [name, group] : groups) {

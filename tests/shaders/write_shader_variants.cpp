@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "gl/shader_constants.hpp"
 #include "gl/shader_variants.hpp"
+#include "sss/sss.h"
 
 namespace {
 
@@ -77,14 +79,24 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {
     const gl::PassInputsVariant v = gl::pass_inputs_variant_at(i);
     out->write(d + "pass_inputs_l" + std::to_string(v.linear_depth ? 1 : 0) + "_p" + std::to_string(v.profile_ids) +
-                   "_f" + std::to_string(v.fill_intermediate ? 1 : 0) + ".frag",
+                   "_m" + std::to_string(v.mark_depth ? 1 : 0) + ".frag",
                gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
+  // Every switch set with the tap count as a uniform (any count but the presets'), and at the
+  // default's 17 taps as a constant; the other presets (their constants differ, the code does not)
+  // on the written-back pair of the default's switches, with and without jitter.
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
-    const gl::BlurVariant v = gl::blur_variant_at(i);
+    gl::BlurVariant v = gl::blur_variant_at(i);
     if (!gl::is_fragment_blur_variant(v)) continue;
-    out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + ".frag",
-               gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+    const bool default_pair = v.follow_surface == 1 && v.profile_ids == 0 && !v.accumulate &&
+                              (v.outside == gl::BlurOutside::discard || v.packed_output);
+    for (const int half_taps : {0, SSS_TAPS_LOW / 2, SSS_TAPS_MEDIUM / 2, SSS_TAPS_HIGH / 2}) {
+      if (half_taps != 0 && half_taps != SSS_TAPS_MEDIUM / 2 && !default_pair) continue;
+      v.half_taps = half_taps;
+      out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + "_t" + std::to_string(half_taps) +
+                     ".frag",
+                 gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+    }
   }
   for (int outside = 0; outside < 3; ++outside) {
     for (int linear = 0; linear < 2; ++linear) {

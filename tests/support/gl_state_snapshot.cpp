@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include <array>
+#include <cstring>
 #include <sstream>
 
 using namespace host_gl;
@@ -108,6 +109,13 @@ Snapshot take_snapshot(bool es) {
   s.boolean("GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK);
   if (!es) s.integer("GL_POLYGON_MODE", GL_POLYGON_MODE, 2);
   s.integer("GL_DEPTH_FUNC", GL_DEPTH_FUNC);
+  {
+    GLfloat range[2] = {0.0f, 0.0f};  // as bits: the snapshot compares integers
+    glGetFloatv(GL_DEPTH_RANGE, range);
+    GLint bits[2];
+    std::memcpy(bits, range, sizeof bits);
+    s.add("GL_DEPTH_RANGE (float bits)", {bits[0], bits[1]});
+  }
   s.integer("GL_BLEND_SRC_RGB", GL_BLEND_SRC_RGB);
   s.integer("GL_BLEND_DST_ALPHA", GL_BLEND_DST_ALPHA);
   s.integer("GL_CULL_FACE_MODE", GL_CULL_FACE_MODE);

@@ -85,7 +85,10 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   gl::StateGuard::Scope scope;
   scope.image_unit = path == SSS_PATH_COMPUTE || path == SSS_PATH_AUTO;
   scope.multisample = msaa;
-  scope.stencil = frame.stencil != nullptr || path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || msaa;
+  scope.stencil = frame.stencil != nullptr || msaa;
+  // The fragment passes without a stencil cull by the module's depth (any separable frame may run
+  // them: the compute path falls back to them).
+  scope.depth = !ctx.settings.cross_bilateral && frame.stencil == nullptr;
   scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1;
   scope.profiles = frame.profile_texture != 0;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;

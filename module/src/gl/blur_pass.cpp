@@ -29,6 +29,7 @@ BlurVariant fragment_blur_variant(const FilterRun& run, std::size_t term, int ax
   v.linear_depth = false;  // pass_inputs.frag linearised
   v.profile_ids = profile_ids_variant(run);
   v.packed_output = axis == 0;
+  v.half_taps = compile_time_half_taps(static_cast<int>(run.kernel->spacing.size()));
   return v;
 }
 
@@ -52,9 +53,10 @@ void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& ru
     f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
     f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
   }
+  // (A fragment variant has its tap count and spacing as constants: no such uniforms.)
   const std::vector<float>& spacing = run.kernel->spacing;
-  if (!spacing.empty()) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
-  f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
+  if (!spacing.empty() && p.spacing >= 0) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
+  if (p.half_taps >= 0) f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
   if (p.jitter_from >= 0) f.Uniform1i(p.jitter_from, run.kernel->jitter_from);
   if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
 }

@@ -3,9 +3,14 @@
 // apart), then one horizontal and one vertical pass per kernel term: the vertical passes of all
 // terms but the last write the running sum into the module's accumulators, the last adds that sum
 // and writes the output. The host's colour is only written by the very last draw, after the inputs
-// draw has read it, so it is never read and written at once. With a stencil, the inputs draw also
-// fills the horizontal pass's target (so the vertical taps find defined values where the stencil
-// keeps the horizontal pass away), and the vertical pass leaves those pixels alone or copies them.
+// draw has read it, so it is never read and written at once.
+// Culling (the paper's stencil culling): the passes shade only the pixels they may change. With a
+// stencil (the host's, or the one the MSAA path marks) that is the stencil test; otherwise the
+// inputs draw marks translucent pixels in the module's depth buffer (gl_FragDepth 0, the rest 1)
+// and the passes draw their triangle at depth 0.5 with GL_GREATER. Either way the inputs draw also
+// fills the horizontal pass's target, so the vertical taps find defined values where the culling
+// kept the horizontal pass away, and the last vertical pass leaves those pixels alone (in place) or
+// copies them (into a separate output).
 #include <array>
 
 #include "blur_pass.hpp"
@@ -33,8 +38,18 @@ sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* 
   return r;
 }
 
-// The stencil (copied from the host's unless the caller marked it) and the targets of the passes,
-// with the stencil on every one of them or on none.
+// Only the pixels the culling lets through (`func` EQUAL) or only the others (NOTEQUAL).
+void set_culling(const Functions& f, const FilterRun& run, GLenum func) {
+  if (run.stencil != nullptr) {
+    set_stencil_test(f, run.stencil, func);
+    return;
+  }
+  f.Enable(DEPTH_TEST);  // the depth the inputs draw marked (the write mask is off by then)
+  f.DepthFunc(func == EQUAL ? GREATER : LEQUAL);
+}
+
+// The stencil (copied from the host's unless the caller marked it) or the culling depth, and the
+// targets of the passes, with that buffer on every one of them.
 sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t terms, std::string* message) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
@@ -42,7 +57,7 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
     const sss_result r = copy_stencil(ctx, run, *run.stencil, message);
     if (r != SSS_OK) return r;
   }
-  const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;
+  const GLuint stencil = t.stencil_buffer;
   sss_result r = attach_stencil(ctx, t.pass_intermediate_framebuffer, stencil, message);
   if (r != SSS_OK) return r;
   if (terms > 1) {
@@ -63,21 +78,21 @@ void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint so
   ++ctx.draws;
 }
 
-// Horizontal: the inputs -> the packed intermediate (the inputs draw filled what the stencil excludes).
+// Horizontal: the inputs -> the packed intermediate (the inputs draw filled what the culling excludes).
 void draw_horizontal(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term, std::size_t terms) {
   DebugGroup group(ctx.gl, ctx.labels, terms > 1 ? "sss horizontal pass (one term)" : "sss horizontal pass");
   ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().pass_intermediate_framebuffer);
-  set_stencil_test(ctx.gl, run.stencil, EQUAL);
+  set_culling(ctx.gl, run, EQUAL);
   draw_blur(ctx, p, run, ctx.targets.names().pass_taps, term, 0);
 }
 
-// Vertical into the running sum (pixels outside the stencil are never read from it).
+// Vertical into the running sum (pixels the culling excludes are never read from it).
 void draw_into_sum(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term) {
   const Targets& t = ctx.targets.names();
   DebugGroup group(ctx.gl, ctx.labels, "sss vertical pass (one term, into the sum)");
   ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
   ctx.gl.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[term % 2], 0);
-  set_stencil_test(ctx.gl, run.stencil, EQUAL);
+  set_culling(ctx.gl, run, EQUAL);
   draw_blur(ctx, p, run, t.pass_intermediate, term, 1);
 }
 
@@ -91,14 +106,14 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, 
   bind_original(ctx, run);
   measure.begin(PassQueries::vertical);
   if (run.writes_back()) f.ColorMask(1, 1, 1, 0);
-  set_stencil_test(f, run.stencil, EQUAL);
+  set_culling(f, run, EQUAL);
   // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
-  // exactly the blurred ones; into a separate output every pixel the stencil lets through.
+  // exactly the blurred ones; into a separate output every pixel the culling lets through.
   measure.begin_pixels();
   draw_blur(ctx, p, run, ctx.targets.names().pass_intermediate, term, 1);
   measure.end_pixels();
-  if (run.stencil != nullptr && !run.writes_back()) {
-    set_stencil_test(f, run.stencil, NOTEQUAL);
+  if (!run.writes_back()) {
+    set_culling(f, run, NOTEQUAL);
     draw_copy(ctx, run.color.name);
   }
   measure.end(PassQueries::vertical);
@@ -130,7 +145,7 @@ PassInputsVariant pass_inputs_variant(const FilterRun& run) {
   PassInputsVariant v;
   v.linear_depth = run.constants.linear_depth;
   v.profile_ids = profile_ids_variant(run);
-  v.fill_intermediate = run.stencil != nullptr;
+  v.mark_depth = run.stencil == nullptr;
   return v;
 }
 
@@ -141,6 +156,10 @@ sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermProgram
   PassInputsProgram* unused = nullptr;
   if (r == SSS_OK) r = ctx.programs.pass_inputs(pass_inputs_variant(run), &unused, message);
   if (r == SSS_OK) r = ctx.targets.ensure_pass_targets(run.color.width, run.color.height, message);
+  if (r == SSS_OK && run.stencil == nullptr) {  // the culling depth (a stencil run copies or marks its own)
+    r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), run.color.width, run.color.height,
+                                          message);
+  }
   if (r == SSS_OK && run.kernel->terms.size() > 1) {
     r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl, run),
                                         message);
@@ -149,17 +168,24 @@ sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermProgram
 }
 
 // The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
-// read outside the stencil too. With a stencil, into the horizontal pass's target as well.
+// read outside the culled pixels too. Without a stencil it marks the culling depth.
 sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message) {
   const Functions& f = ctx.gl;
   PassInputsProgram* p = nullptr;
   const PassInputsVariant v = pass_inputs_variant(run);
-  const sss_result r = ctx.programs.pass_inputs(v, &p, message);
+  sss_result r = ctx.programs.pass_inputs(v, &p, message);
+  if (r != SSS_OK) return r;
+  const Targets& t = ctx.targets.names();
+  r = attach_stencil(ctx, t.pass_inputs_framebuffer, v.mark_depth ? t.stencil_buffer : 0, message, "pass inputs");
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss pass inputs (colour and view distance)");
-  const Targets& t = ctx.targets.names();
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, v.fill_intermediate ? t.pass_fill_framebuffer : t.pass_inputs_framebuffer);
   f.Disable(STENCIL_TEST);
+  if (v.mark_depth) {  // every pixel of the rectangle written (the test always passes)
+    f.Enable(DEPTH_TEST);
+    f.DepthFunc(ALWAYS);
+    f.DepthMask(1);
+    f.set_depth_range(0.0f, 1.0f);  // the passes' triangle at depth 0.5, between the marks
+  }
   f.UseProgram(p->program);
   const math::PassConstants& k = run.constants;
   f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
@@ -169,6 +195,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string*
   if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
+  if (v.mark_depth) f.DepthMask(0);  // the passes only test it
   return SSS_OK;
 }
 }  // namespace

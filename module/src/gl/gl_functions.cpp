@@ -19,6 +19,8 @@ bool load_functions(sss_get_proc_address_fn get_proc_address, void* user, const 
   if (!api.es) {
     SSS_GL_DESKTOP_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
     SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
+  } else {
+    SSS_GL_ES_FUNCTIONS(SSS_GL_LOAD_REQUIRED)
   }
 #undef SSS_GL_LOAD_REQUIRED
 #define SSS_GL_LOAD_OPTIONAL(ret, name, params) \

@@ -35,6 +35,9 @@ using GLubyte = unsigned char;
   X(const GLubyte*, GetStringi, (GLenum name, GLuint index))                                           \
   X(void, GetIntegerv, (GLenum pname, GLint * data))                                                   \
   X(void, GetBooleanv, (GLenum pname, GLboolean * data))                                               \
+  X(void, GetFloatv, (GLenum pname, GLfloat * data))                                                   \
+  X(void, DepthFunc, (GLenum func))                                                                    \
+  X(void, DepthMask, (GLboolean flag))                                                                 \
   X(GLboolean, IsEnabled, (GLenum cap))                                                                \
   X(void, Enable, (GLenum cap))                                                                        \
   X(void, Disable, (GLenum cap))                                                                       \
@@ -146,7 +149,11 @@ using GLubyte = unsigned char;
   X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))                     \
   X(void, TexImage2DMultisample, (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, \
                                   GLsizei height, GLboolean fixedsamplelocations))                     \
-  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))
+  X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))                                           \
+  X(void, DepthRange, (double n, double f))
+
+// OpenGL ES only (desktop GL before 4.1 lacks it; it has glDepthRange with doubles instead).
+#define SSS_GL_ES_FUNCTIONS(X) X(void, DepthRangef, (GLfloat n, GLfloat f))
 
 // glGetTexLevelParameteriv: desktop GL and OpenGL ES 3.1+. On ES 3.0 the frame describes the
 // textures instead (sss_frame's format and size fields).
@@ -174,6 +181,7 @@ struct Functions {
 #define SSS_GL_DECLARE_MEMBER(ret, name, params) ret(SSS_GL_APIENTRY* name) params = nullptr;
   SSS_GL_REQUIRED_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_DESKTOP_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
+  SSS_GL_ES_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_TEXTURE_QUERY_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_ES_TIMER_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
   SSS_GL_DEBUG_FUNCTIONS(SSS_GL_DECLARE_MEMBER)
@@ -192,6 +200,14 @@ struct Functions {
   bool has_multisample_textures() const { return !api.es || api.version() >= 31; }
   // The MSAA path (sampler2DMS shaders, glTexImage2DMultisample, glSampleMaski): desktop GL only.
   bool has_msaa_path() const { return !api.es; }
+  // glDepthRange (desktop) or glDepthRangef (ES).
+  void set_depth_range(GLfloat n, GLfloat f) const {
+    if (api.es) {
+      DepthRangef(n, f);
+    } else {
+      DepthRange(static_cast<double>(n), static_cast<double>(f));
+    }
+  }
 };
 
 // Loads what `api` needs; on failure returns the name of the first missing one ("glFoo"). Optional
@@ -239,6 +255,11 @@ enum : GLenum {
   COLOR_ATTACHMENT2 = 0x8CE2,
   STENCIL = 0x1802,
   ALWAYS = 0x0207,
+  GREATER = 0x0204,
+  LEQUAL = 0x0203,
+  DEPTH_FUNC = 0x0B74,
+  DEPTH_WRITEMASK = 0x0B72,
+  DEPTH_RANGE = 0x0B70,
   REPLACE = 0x1E01,
   TEXTURE_MIN_FILTER = 0x2801,
   TEXTURE_MAG_FILTER = 0x2800,

@@ -1,6 +1,6 @@
-// SSS_PATH_FRAGMENT_MASKED and the stencil both it and the MSAA path mark from alpha: the paper's
-// stencil culling, where the stencil is initialised from the strength mask so that both blur
-// passes run only on translucent pixels.
+// SSS_PATH_FRAGMENT_MASKED, now the fragment passes themselves (they cull by depth), and the
+// stencil the MSAA path marks from alpha: the paper's stencil culling, where the stencil is
+// initialised from the strength mask so that both blur passes run only on translucent pixels.
 #include "debug_label.hpp"
 #include "runners.hpp"
 #include "texture_units.hpp"
@@ -44,21 +44,10 @@ sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuin
 }
 
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
-  // The stencil marked from alpha, then the host-stencil passes with it: only translucent pixels
-  // are shaded by the blur; the rest are copied (horizontal) or left alone (vertical).
-  StencilInput own;  // the module's stencil holds 1 where translucent
-  own.ref = 1;
-  own.mask = 0xFF;
-  FilterRun inner = run;
-  inner.stencil = &own;
-  inner.stencil_ready = true;
-  // Every program and target of the passes first: nothing is built or allocated after the mark's draw.
-  sss_result r = prepare_fragment(ctx, inner, message);
-  if (r != SSS_OK) return r;
-  begin_passes(ctx, run.draw_rect);
-  r = mark_stencil_from_alpha(ctx, run, run.color.name, message);
-  if (r != SSS_OK) return r;
-  return run_fragment(ctx, inner, message);
+  // The fragment passes cull by the depth their inputs draw marks from alpha (fragment_runner.cpp)
+  // whenever no stencil is given: the paper's culling with no draw of its own, which is all this
+  // path used to add to the plain one (a stencil mark, then the plain passes behind it).
+  return run_fragment(ctx, run, message);
 }
 
 }  // namespace sss::gl

@@ -169,6 +169,7 @@ void copy_outside_region(PassContext& ctx, const FilterRun& run) {
   const Functions& f = ctx.gl;
   DebugGroup group(f, ctx.labels, "sss copy of the viewport outside the region");
   f.Disable(STENCIL_TEST);
+  f.Disable(DEPTH_TEST);
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
   draw_copy(ctx, run.color.name);
   f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);

@@ -26,18 +26,6 @@ sss_result prewarm_fragment(PassContext& ctx, const FilterRun& run, std::string*
   return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
 }
 
-// run_masked: the stencil marked from alpha, then the fragment passes behind it.
-sss_result prewarm_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
-  GLuint mark = 0;
-  const sss_result r = stencil_mark_resources(ctx, run.color.width, run.color.height, &mark, message);
-  if (r != SSS_OK) return r;
-  StencilInput own;
-  FilterRun inner = run;
-  inner.stencil = &own;
-  inner.stencil_ready = true;
-  return prewarm_fragment(ctx, inner, message);
-}
-
 // run_compute (compute_runner.cpp): its two dispatches' programs (the vertical one writes the
 // target's image format) and the intermediate.
 sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* message) {
@@ -78,11 +66,9 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   run.target_complete = true;
   const bool compute = (run.path == SSS_PATH_COMPUTE || run.path == SSS_PATH_AUTO) &&
                        *compute_unavailable(*gl_, run) == '\0';
-  const bool masked = (run.path == SSS_PATH_FRAGMENT_MASKED || run.path == SSS_PATH_AUTO) && masked_available(run);
-  const bool fragment = run.path != SSS_PATH_FRAGMENT_MASKED || !masked;
-  sss_result r = SSS_OK;
-  if (fragment) r = prewarm_fragment(ctx, run, message);
-  if (r == SSS_OK && masked) r = prewarm_masked(ctx, run, message);
+  // The masked path is the fragment passes (run_masked): every path but compute alone takes them,
+  // and compute falls back to them.
+  sss_result r = prewarm_fragment(ctx, run, message);
   if (r == SSS_OK && compute) r = prewarm_compute(ctx, run, message);
   if (r == SSS_OK && run.path == SSS_PATH_AUTO) chooser_.prewarm();
   return r;

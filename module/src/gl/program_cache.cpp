@@ -4,6 +4,8 @@
 
 #include "debug_label.hpp"
 #include "program.hpp"
+#include "shader_constants.hpp"
+#include "sss/sss.h"
 #include "texture_units.hpp"
 
 namespace sss::gl {
@@ -30,21 +32,21 @@ sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool lab
   set_unit(copy_, gl_->GetUniformLocation(copy_, "u_source"), unit::source);
   label_object(*gl_, labels_, PROGRAM, copy_, "sss copy");
 
-  // The default settings' fragment passes written back on hardware depth, behind a stencil (the
-  // masked path, which SSS_PATH_AUTO takes on software rasterisers): their inputs, the horizontal
-  // pass (packed) and the vertical one.
+  // The default settings' fragment passes written back on hardware depth, culled by the depth the
+  // inputs draw marks: their inputs, the horizontal pass (packed) and the vertical one.
   BlurProgram* unused = nullptr;
   BlurVariant common;
   common.follow_surface = 1;
   common.packed_output = true;
+  common.half_taps = SSS_TAPS_MEDIUM / 2;  // the default's 17 taps
   sss_result r = blur(common, &unused, message);
   common.outside = Outside::discard;
   common.packed_output = false;
   if (r == SSS_OK) r = blur(common, &unused, message);
   PassInputsProgram* inputs = nullptr;
-  PassInputsVariant masked;
-  masked.fill_intermediate = true;
-  if (r == SSS_OK) r = pass_inputs(masked, &inputs, message);
+  PassInputsVariant culled;
+  culled.mark_depth = true;
+  if (r == SSS_OK) r = pass_inputs(culled, &inputs, message);
   return r;
 }
 
@@ -54,7 +56,7 @@ void ProgramCache::destroy() {
   const auto remove = [&f](GLuint program) {
     if (program != 0) f.DeleteProgram(program);
   };
-  for (const BlurProgram& p : blur_) remove(p.program);
+  for (const auto& entry : blur_) remove(entry.second.program);
   for (const BlurProgram& p : compute_) remove(p.program);
   for (const CbfProgram& p : cbf_) remove(p.program);
   for (const ResolveProgram& p : resolve_) remove(p.program);
@@ -91,7 +93,7 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
 }
 
 sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
-  BlurProgram& p = blur_[static_cast<std::size_t>(blur_variant_index(v))];
+  BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
@@ -99,9 +101,9 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
   std::snprintf(label, sizeof label,
-                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d",
+                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d taps=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.jitter ? 1 : 0, v.accumulate ? 1 : 0,
-                v.profile_ids, v.packed_output ? 1 : 0);
+                v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
   set_unit(p.program, p.source, unit::source);
@@ -266,8 +268,8 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[96];
-  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d fill=%d", v.linear_depth ? 1 : 0,
-                v.profile_ids, v.fill_intermediate ? 1 : 0);
+  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d", v.linear_depth ? 1 : 0,
+                v.profile_ids, v.mark_depth ? 1 : 0);
   finish(p.program, label, "pass inputs");
   const Functions& f = *gl_;
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 
 #include "gl_functions.hpp"
@@ -75,8 +76,8 @@ struct SampleWriteProgram {
 class ProgramCache {
  public:
   // Builds the copy program and the fragment programs every host uses (written back, follow-surface,
-  // hardware depth, behind a stencil: the default settings' masked path), so a driver that cannot
-  // compile them fails at create.
+  // hardware depth, culled by depth: the default settings'), so a driver that cannot compile them
+  // fails at create.
   // `log` (may be empty) gets a DEBUG note per program built; it must outlive the cache.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, const Log* log, std::string* message);
   void destroy();  // deletes the programs (they must exist in the current context), then forget()s
@@ -118,7 +119,9 @@ class ProgramCache {
   int profile_capacity_ = SSS_MAX_PROFILES;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
-  std::array<BlurProgram, kBlurVariantCount> blur_{};
+  // Fragment variants by blur_variant_index and half_taps (std::map: the programs stay put while a
+  // frame holds pointers to them, and only the tap counts a host uses get an entry).
+  std::map<int, BlurProgram> blur_;
   std::array<BlurProgram, kComputeVariantCount> compute_{};
   std::array<CbfProgram, kCbfVariantCount> cbf_{};
   std::array<ResolveProgram, 2> resolve_{};  // index: host depth is linear

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "../math/footprint_kernel.hpp"
 #include "shader_constants.hpp"
 
 namespace sss::gl {
@@ -42,7 +43,20 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
                 "#define SSS_PACKED_OUTPUT %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
                 v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids, profiles, v.packed_output ? 1 : 0);
-  return defines;
+  std::string text = defines;
+  if (v.half_taps > 0) {
+    // The spacing as float literals that read back to the very floats the CPU model uses.
+    text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n#define SSS_SPACING ";
+    const std::vector<float> spacing = math::footprint_spacing(v.half_taps);
+    for (std::size_t i = 0; i < spacing.size(); ++i) {
+      char literal[32];
+      std::snprintf(literal, sizeof literal, "%.9g", static_cast<double>(spacing[i]));
+      text += (i == 0 ? "" : ", ") + std::string(literal);
+      if (std::string(literal).find_first_of(".e") == std::string::npos) text += ".0";  // "1" is an int in GLSL
+    }
+    text += '\n';
+  }
+  return text;
 }
 
 std::string compute_blur_defines(const BlurVariant& v, int image_format) {
@@ -66,12 +80,12 @@ std::string msaa_resolve_defines(bool linear_depth) {
 }
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {
-  return ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.fill_intermediate ? 1 : 0);
+  return ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.mark_depth ? 1 : 0);
 }
 
 PassInputsVariant pass_inputs_variant_at(int index) {
   PassInputsVariant v;
-  v.fill_intermediate = index % 2 != 0;
+  v.mark_depth = index % 2 != 0;
   v.profile_ids = (index / 2) % 3;
   v.linear_depth = index / 6 != 0;
   return v;
@@ -80,8 +94,8 @@ PassInputsVariant pass_inputs_variant_at(int index) {
 std::string pass_inputs_defines(const PassInputsVariant& v) {
   char defines[128];
   std::snprintf(defines, sizeof defines,
-                "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_FILL_INTERMEDIATE %d\n",
-                v.linear_depth ? 1 : 0, v.profile_ids, v.fill_intermediate ? 1 : 0);
+                "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_MARK_DEPTH %d\n",
+                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0);
   return defines;
 }
 

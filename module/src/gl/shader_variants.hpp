@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gl_functions.hpp"
+#include "sss/sss.h"
 #include "glsl_variant.hpp"
 #include "shader_source.hpp"
 
@@ -27,7 +28,21 @@ struct BlurVariant {
   int profile_ids = 0;
   // SSS_PACKED_OUTPUT: the fragment path's horizontal pass, which writes RGBA32UI colour and distance.
   bool packed_output = false;
+  // SSS_HALF_TAPS: the most taps on either side as a constant of the variant (with their spacing:
+  // the fragment passes at a preset tap count, compile_time_half_taps); 0: uniforms (the compute
+  // path, other tap counts). Not part of the index.
+  int half_taps = 0;
 };
+// The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
+// (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll and
+// spacing it can fold; any other count shares the program that reads both as uniforms (0), so a
+// host that varies the count freely builds no program per count.
+inline int compile_time_half_taps(int half_taps) {
+  for (const int preset : {SSS_TAPS_LOW, SSS_TAPS_MEDIUM, SSS_TAPS_HIGH}) {
+    if (half_taps == preset / 2) return half_taps;
+  }
+  return 0;
+}
 inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 3 * 2;
 // A variant's index in [0, kBlurVariantCount), and the variant at an index.
 int blur_variant_index(const BlurVariant& v);
@@ -64,11 +79,11 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
 // The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH.
 std::string msaa_resolve_defines(bool linear_depth);
 // The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
-// BlurVariant::profile_ids) and SSS_FILL_INTERMEDIATE (a stencil keeps the horizontal pass from pixels).
+// BlurVariant::profile_ids) and SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil).
 struct PassInputsVariant {
   bool linear_depth = false;
   int profile_ids = 0;
-  bool fill_intermediate = false;
+  bool mark_depth = false;
 };
 inline constexpr int kPassInputsVariantCount = 2 * 3 * 2;
 int pass_inputs_variant_index(const PassInputsVariant& v);

@@ -59,6 +59,11 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
     gl_.GetIntegerv(PIXEL_PACK_BUFFER_BINDING, &pack_buffer_);
     for (std::size_t i = 0; i < kPackParameters.size(); ++i) gl_.GetIntegerv(kPackParameters[i], &pack_[i]);
   }
+  if (scope_.depth) {
+    gl_.GetIntegerv(DEPTH_FUNC, &depth_func_);
+    gl_.GetBooleanv(DEPTH_WRITEMASK, &depth_mask_);
+    gl_.GetFloatv(DEPTH_RANGE, depth_range_.data());
+  }
   if (!scope_.stencil) return;
   save_stencil_face(STENCIL_FUNC, STENCIL_REF, STENCIL_VALUE_MASK, STENCIL_FAIL, STENCIL_PASS_DEPTH_FAIL,
                     STENCIL_PASS_DEPTH_PASS, STENCIL_WRITEMASK, &front_);
@@ -109,6 +114,11 @@ StateGuard::~StateGuard() {
   if (scope_.stencil && restore(restore_group::stencil)) {
     restore_stencil_face(FRONT, front_);
     restore_stencil_face(BACK, back_);
+  }
+  if (scope_.depth && restore(restore_group::depth)) {
+    gl_.DepthFunc(static_cast<GLenum>(depth_func_));
+    gl_.DepthMask(depth_mask_);
+    gl_.set_depth_range(depth_range_[0], depth_range_[1]);
   }
   if (restore(restore_group::color_mask)) gl_.ColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
   if (gl_.desktop()) {

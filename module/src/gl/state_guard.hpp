@@ -39,7 +39,8 @@ enum : uint32_t {
   image_unit = 1u << 17,         // image unit 0 (the compute path's target), GL 4.3+
   uniform_buffer = 1u << 18,     // uniform buffer binding 0 and the generic one (per-pixel profiles)
   pack_state = 1u << 19,         // pack buffer, alignment, row length, skips (debug checks' readback)
-  all = (1u << 20) - 1u
+  depth = 1u << 20,              // depth func, write mask and range (the fragment passes' culling)
+  all = (1u << 21) - 1u
 };
 }  // namespace restore_group
 #ifdef SSS_STATE_GUARD_TEST_HOOK
@@ -60,6 +61,8 @@ struct GuardScope {
   bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
   bool profiles = true;      // texture unit 4 and uniform buffer binding 0: per-pixel profiles
   bool pack = false;         // the pack state: the debug checks read the profile indices back
+  bool depth = true;         // depth func, write mask and range: the fragment passes' culling
+                             // (pass_inputs.frag marks translucent pixels in the module's depth)
 };
 
 class StateGuard {
@@ -120,6 +123,10 @@ class StateGuard {
   // GL_PIXEL_PACK_BUFFER binding, then alignment, row length, skip rows, skip pixels.
   GLint pack_buffer_ = 0;
   std::array<GLint, 4> pack_{};
+  // Depth func, write mask and range.
+  GLint depth_func_ = 0;
+  GLboolean depth_mask_ = 1;
+  std::array<GLfloat, 2> depth_range_{};
 };
 
 // Sets the fixed-function state the passes need (after a StateGuard saved it): everything that

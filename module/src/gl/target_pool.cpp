@@ -59,7 +59,7 @@ void TargetPool::destroy() {
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
                                  t_.msaa_read_framebuffer,    t_.sample_copy_framebuffer,
                                  t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
-                                 t_.pass_fill_framebuffer,    t_.pass_intermediate_framebuffer};
+                                 t_.pass_intermediate_framebuffer};
   const GLuint textures[] = {t_.intermediate,   t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
                              t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy,
                              t_.strength_source,  t_.pass_taps,         t_.pass_strength,     t_.pass_intermediate};
@@ -310,17 +310,13 @@ sss_result TargetPool::ensure_pass_targets(int width, int height, std::string* m
   pass_height_ = height;
   // The framebuffers once the targets exist: a failed allocation leaves no new object behind.
   ensure_framebuffer(&t_.pass_inputs_framebuffer, "sss pass inputs target");
-  ensure_framebuffer(&t_.pass_fill_framebuffer, "sss pass inputs and intermediate target");
   ensure_framebuffer(&t_.pass_intermediate_framebuffer, "sss horizontal pass target (packed)");
   const Functions& f = *gl_;
   const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
-  for (const GLuint framebuffer : {t_.pass_inputs_framebuffer, t_.pass_fill_framebuffer}) {
-    const bool fill = framebuffer == t_.pass_fill_framebuffer;
-    attach_colour(framebuffer, t_.pass_taps);
-    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.pass_strength, 0);
-    if (fill) f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.pass_intermediate, 0);
-    f.DrawBuffers(fill ? 3 : 2, buffers);
-  }
+  attach_colour(t_.pass_inputs_framebuffer, t_.pass_taps);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.pass_strength, 0);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.pass_intermediate, 0);
+  f.DrawBuffers(3, buffers);
   attach_colour(t_.pass_intermediate_framebuffer, t_.pass_intermediate);
   return SSS_OK;
 }

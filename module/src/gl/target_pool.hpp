@@ -36,11 +36,11 @@ struct Targets {
   GLuint strength_source = 0, strength_framebuffer = 0;
   // The separable fragment passes (pass_inputs.frag): per pixel the colour's and view distance's
   // bits (RGBA32UI pass_taps), the strength's (R32UI pass_strength), and the horizontal pass's
-  // result in the same layout (RGBA32UI pass_intermediate). pass_inputs_framebuffer draws the first
-  // two, pass_fill_framebuffer all three (a stencil keeps the horizontal pass from some pixels);
-  // pass_intermediate_framebuffer is the horizontal pass's (with the stencil when there is one).
+  // result in the same layout (RGBA32UI pass_intermediate). pass_inputs_framebuffer draws all three
+  // (and the culling depth, stencil_buffer, attached per run); pass_intermediate_framebuffer is the
+  // horizontal pass's (with stencil_buffer: the culling).
   GLuint pass_taps = 0, pass_strength = 0, pass_intermediate = 0;
-  GLuint pass_inputs_framebuffer = 0, pass_fill_framebuffer = 0, pass_intermediate_framebuffer = 0;
+  GLuint pass_inputs_framebuffer = 0, pass_intermediate_framebuffer = 0;
 };
 
 class TargetPool {
