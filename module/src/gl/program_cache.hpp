@@ -84,8 +84,9 @@ class ProgramCache {
   void set_profile_capacity(int profiles) { profile_capacity_ = profiles; }
   GLuint copy() const { return copy_; }
   sss_result blur(const BlurVariant& v, BlurProgram** out, std::string* message);
-  // The compute variant of `v` (SSS_ACCUMULATE unset) writing image format `image_format`.
-  sss_result compute(const BlurVariant& v, int image_format, BlurProgram** out, std::string* message);
+  // The compute variant of `v` (no per-pixel profiles) for `pass`, writing image format `image_format`.
+  sss_result compute(const BlurVariant& v, int image_format, ComputePass pass, BlurProgram** out,
+                     std::string* message);
   sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
                              std::string* message);
   sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
@@ -96,7 +97,8 @@ class ProgramCache {
   sss_result profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message);
 
  private:
-  static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
+  static constexpr int kComputeBlurVariants = kBlurVariantCount / 2;  // those without per-pixel profiles
+  static constexpr int kComputeVariantCount = kComputeBlurVariants * kImageFormats * kComputePassCount;
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   // A program from the full-screen vertex shader and the fragment shader file `fragment` with

@@ -17,7 +17,7 @@ namespace sss::gl {
 // nothing (discard: vertical pass writing back), or the host's original colour (separate output).
 enum class BlurOutside : int { write_centre = 0, discard = 1, copy_original = 2 };
 
-// The separable blur's compile-time switches (separable_blur.frag; .comp never accumulates).
+// The separable blur's compile-time switches (separable_blur.frag and .comp).
 struct BlurVariant {
   BlurOutside outside = BlurOutside::write_centre;
   int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
@@ -42,8 +42,13 @@ struct ComputeImageFormat {
 inline constexpr ComputeImageFormat kComputeImageFormats[] = {
     {RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}, {R11F_G11F_B10F, "r11f_g11f_b10f"}};
 inline constexpr int kComputeImageFormatCount = 3;
-// The blur variant's switches, then the compute shader's (segment, apron, image format).
-std::string compute_blur_defines(const BlurVariant& v, int image_format);
+// The compute path's dispatches: the horizontal pass (reading its pixels' strength from the
+// colour, or, `horizontal_marked`, from the target image, which a stencil draw marked first:
+// compute_runner.cpp) and the vertical pass (SSS_AXIS, SSS_MARKED).
+enum class ComputePass : int { horizontal = 0, horizontal_marked = 1, vertical = 2 };
+inline constexpr int kComputePassCount = 3;
+// The blur variant's switches, then the compute shader's (pass, tile, image format).
+std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass);
 
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
