@@ -162,7 +162,8 @@ void main() {
   // This invocation's pixels: colour into the cache, and, where the pixel is blurred, its depth,
   // its step in pixels per profile mm and its reach (as separable_blur.frag's main()).
   float alpha[kPixels], distance[kPixels], step_pixels[kPixels];
-  bool blurred[kPixels], has_depth[kPixels];
+  bool blurred[kPixels];
+  // (No `continue` in these loops: they unroll, and the arrays stay in registers.)
   for (int k = 0; k < kPixels; ++k) {
     ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
     int along = segment_start + tile.y, across = line_start + tile.x;
@@ -170,53 +171,46 @@ void main() {
     distance[k] = 0.0;
     step_pixels[k] = 0.0;
     blurred[k] = false;
-    has_depth[k] = false;
-    if (along >= along_end || across >= across_end) continue;  // no tap reads outside the rectangle
-    ivec2 pixel = kAxis * along + kAcross * across;
-    vec4 colour = texelFetch(u_source, pixel, 0);
+    if (along < along_end && across < across_end) {  // no tap reads outside the rectangle
+      ivec2 pixel = kAxis * along + kAcross * across;
+      vec4 colour = texelFetch(u_source, pixel, 0);
 #if SSS_MARKED
-    colour.a = imageLoad(u_target, pixel).a;
+      colour.a = imageLoad(u_target, pixel).a;
 #endif
-    alpha[k] = colour.a;
-    float raw = 0.0;
-    if (colour.a > 0.0 && sss_in_range(colour)) {
-      raw = texelFetch(u_depth, pixel, 0).r;
-      has_depth[k] = true;
+      alpha[k] = colour.a;
+      float raw = texelFetch(u_depth, pixel, 0).r;
       float centre_distance = view_distance(raw);
       float w = clip_w(centre_distance);
-      if (!(isnan(w) || !(w > 0.0) || isinf(w))) {  // isnan(): see separable_blur.frag
+      // Not translucent, not finite, or behind the camera: as separable_blur.frag (isnan(): see there).
+      if (colour.a > 0.0 && sss_in_range(colour) && !(isnan(w) || !(w > 0.0) || isinf(w))) {
         distance[k] = centre_distance;
         step_pixels[k] = u_pixels_per_mm * min(colour.a, 1.0) / w;
         blurred[k] = true;
         float reach = min(SSS_FOOTPRINT.x * step_pixels[k], 1.0e6) * kReachMargin;
         atomicMax(s_extent, uint(min(ceil(reach) + 1.0, float(SSS_APRON))));
       }
+      s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, raw);
     }
-    s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, raw);
   }
   barrier();
   const int extent = int(s_extent);  // the same in every invocation: the branch below is uniform
 
   if (extent > 0) {
-    // The depth of the tile's other pixels (taps read it), and the apron as far as it is reached.
-    for (int k = 0; k < kPixels; ++k) {
-      ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
-      int along = segment_start + tile.y, across = line_start + tile.x;
-      if (SSS_FOLLOW_SURFACE != 0 && !has_depth[k] && along < along_end && across < across_end) {
-        s_texel[cache_index(tile.x, SSS_APRON + tile.y)].a = tap_depth(kAxis * along + kAcross * across);
-      }
-    }
+    // The apron, as far as it is reached.
     for (int e = thread; e < 2 * extent * SSS_LINES; e += SSS_THREADS) {
-#if SSS_AXIS == 0
+#if SSS_LINES == 1
+      int line = 0, j = e;
+#elif SSS_AXIS == 0
       int line = e / (2 * extent), j = e % (2 * extent);
 #else
       int line = e % SSS_LINES, j = e / SSS_LINES;
 #endif
       int i = j < extent ? SSS_APRON - extent + j : SSS_APRON + SSS_SEGMENT + (j - extent);
       int along = cache_start + i, across = line_start + line;
-      if (along < along_start || along >= along_end || across >= across_end) continue;
-      ivec2 texel = kAxis * along + kAcross * across;
-      s_texel[cache_index(line, i)] = vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
+      if (along >= along_start && along < along_end && across < across_end) {
+        ivec2 texel = kAxis * along + kAcross * across;
+        s_texel[cache_index(line, i)] = vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
+      }
     }
     barrier();
   }
@@ -224,17 +218,18 @@ void main() {
   for (int k = 0; k < kPixels; ++k) {
     ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
     int along = segment_start + tile.y, across = line_start + tile.x;
-    if (along >= along_end || across >= across_end) continue;
-    ivec2 pixel = kAxis * along + kAcross * across;
-    vec4 centre = vec4(s_texel[cache_index(tile.x, SSS_APRON + tile.y)].rgb, alpha[k]);
-    if (!blurred[k]) {  // not translucent, not finite, or behind the camera: as separable_blur.frag
-      write_untouched(pixel, centre);
-      continue;
+    if (along < along_end && across < across_end) {
+      ivec2 pixel = kAxis * along + kAcross * across;
+      vec4 centre = vec4(s_texel[cache_index(tile.x, SSS_APRON + tile.y)].rgb, alpha[k]);
+      if (blurred[k]) {
+        float follow_surface = u_follow_surface / min(centre.a, 1.0);
+        TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
+                               SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across);
+        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k], distance[k], follow_surface, pixel, SSS_AXIS);
+        write_blurred(pixel, sum, centre.a);
+      } else {
+        write_untouched(pixel, centre);
+      }
     }
-    float follow_surface = u_follow_surface / min(centre.a, 1.0);
-    TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
-                           SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across);
-    vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k], distance[k], follow_surface, pixel, SSS_AXIS);
-    write_blurred(pixel, sum, centre.a);
   }
 }
