@@ -9,8 +9,9 @@
 //     than SSS_APRON, for a close-up at a large scale) read the textures, as the fragment shader
 //     does, so any span gives the same image.
 //   - A group none of whose pixels is blurred (no translucent pixel, as most of a frame with a
-//     small subject) writes what the pass leaves there (SSS_OUTSIDE) and returns before it reads
-//     any depth or apron: no taps.
+//     small subject) writes what the pass leaves there (SSS_OUTSIDE) and reads no apron and takes
+//     no taps. (A rasteriser that runs both sides of every branch, as llvmpipe, saves nothing by
+//     this; a GPU, whose work groups take such branches as a whole, does.)
 //   - The vertical pass's tiles are SSS_LINES columns wide and consecutive invocations take
 //     neighbouring columns, so a row of the tile is read as neighbouring texels (the horizontal
 //     pass's rows are so already).
@@ -70,7 +71,7 @@ const float kReachMargin = 1.5;  // the outermost jittered tap may read past the
 const float kReachMargin = 1.0;
 #endif
 
-// rgb: colour; a: raw depth (the pixel's own, as the fragment shader fetches it; 0 without
+// rgb: colour; a: raw depth (as the fragment shader fetches it; in the apron 0 without
 // follow-surface, which reads no tap's depth). One vec4 per texel: a tap's two texels are two
 // 128-bit shared loads.
 shared vec4 s_texel[SSS_LINES * kSpan];
