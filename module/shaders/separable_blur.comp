@@ -165,6 +165,7 @@ void main() {
   float alpha[kPixels], distance[kPixels], step_pixels[kPixels];
   bool blurred[kPixels];
   // (No `continue` in these loops: they unroll, and the arrays stay in registers.)
+  uint reach_of_mine = 0u;  // the widest of this invocation's pixels (one shared atomic, not kPixels)
   for (int k = 0; k < kPixels; ++k) {
     ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
     int along = segment_start + tile.y, across = line_start + tile.x;
@@ -188,11 +189,12 @@ void main() {
         step_pixels[k] = u_pixels_per_mm * min(colour.a, 1.0) / w;
         blurred[k] = true;
         float reach = min(SSS_FOOTPRINT.x * step_pixels[k], 1.0e6) * kReachMargin;
-        atomicMax(s_extent, uint(min(ceil(reach) + 1.0, float(SSS_APRON))));
+        reach_of_mine = max(reach_of_mine, uint(min(ceil(reach) + 1.0, float(SSS_APRON))));
       }
       s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, raw);
     }
   }
+  if (reach_of_mine > 0u) atomicMax(s_extent, reach_of_mine);
   barrier();
   const int extent = int(s_extent);  // the same in every invocation: the branch below is uniform
 
