@@ -358,15 +358,16 @@ TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
 }
 
 // sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
-// alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
-// stencil-rejected pixels, vertical blur + copy, since they write a separate target), and written
+// alpha, then the single-sample passes on the resolved images (their inputs, which also fill the
+// stencil-rejected pixels of the horizontal pass's target, horizontal blur, vertical blur + copy,
+// since they write a separate target), and written
 // back one draw per sample (4 here).
 TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   const GLuint color = ms(GL_RGBA16F, fine.color);
   const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
   const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
-  const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 2 + 4};  // into output, written back
+  const uint32_t expected[2] = {1 + 1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + 2 + 4};  // into output, written back
   const GLuint outputs[2] = {output, 0u};
   for (int i = 0; i < 2; ++i) {
     const sss_frame f = frame(color, depth, outputs[i]);

@@ -88,8 +88,8 @@ sss_result mark_stencil(PassContext& ctx, const FilterRun& run, std::string* mes
   const Functions& f = ctx.gl;
   DebugGroup group(f, ctx.labels, "sss the host's stencil, for the compute passes");
   begin_passes(ctx, run.draw_rect);
-  sss_result r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
-  if (r == SSS_OK) r = attach_intermediate(ctx, ctx.targets.names().stencil_buffer, message, "stencil mark");
+  // The stencil goes on the intermediate's framebuffer, where the mark is drawn.
+  const sss_result r = copy_stencil(ctx, run, *run.stencil, message, ctx.targets.names().intermediate_framebuffer);
   if (r != SSS_OK) return r;
   f.Disable(STENCIL_TEST);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
