@@ -1,69 +1,129 @@
 // One pass of the separable filter as a compute shader (OpenGL 4.3+): the same arithmetic as
-// separable_blur.frag, but a work group first reads its row (or column) segment and an apron on
-// both sides into shared memory, once per texel, and the taps (whole pixels) then read it there
-// instead of each pixel fetching its neighbours from the textures again. Taps that fall outside the cached
-// span (a kernel wider than the apron, for a close-up at a large scale) read the textures, as the
-// fragment shader does, so any footprint gives the same image.
+// separable_blur.frag, but a work group writes a tile of SSS_LINES rows (horizontal pass) or
+// columns (vertical pass) of SSS_SEGMENT pixels, reads each texel of the tile and of an apron
+// along the axis on both ends once into shared memory, and its taps (whole pixels) read them there
+// instead of each pixel fetching its neighbours from the textures again.
+//   - The apron a group fills is as wide as its widest kernel reaches (at most SSS_APRON): each
+//     invocation first reads its own pixels and works out their reach from their depth and
+//     strength, and the group's largest sets the span. Taps past the cached span (a footprint wider
+//     than SSS_APRON, for a close-up at a large scale) read the textures, as the fragment shader
+//     does, so any span gives the same image.
+//   - A group none of whose pixels is blurred (no translucent pixel, as most of a frame with a
+//     small subject) writes what the pass leaves there (SSS_OUTSIDE) and reads no apron and takes
+//     no taps. (A rasteriser that runs both sides of every branch, as llvmpipe, saves nothing by
+//     this; a GPU, whose work groups take such branches as a whole, does.)
+//   - The vertical pass's tiles are SSS_LINES columns wide and consecutive invocations take
+//     neighbouring columns, so a row of the tile is read as neighbouring texels (the horizontal
+//     pass's rows are so already).
 //
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp), as in
 // separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the pixel as it is, 2 copy
-// u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_LINEAR_DEPTH, SSS_CDF_ENTRIES,
-// SSS_MAX_HALF_TAPS (SSS_ACCUMULATE is always 0: the path runs single-term kernels); and
-//   SSS_SEGMENT        pixels one work group writes along the pass's axis (its local size)
-//   SSS_APRON          pixels cached on each side of the segment
-//   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f or rgba32f)
+// u_original), SSS_FOLLOW_SURFACE, SSS_JITTER, SSS_ACCUMULATE (add u_accumulated, the earlier
+// terms' sum, on unit 3), SSS_LINEAR_DEPTH, SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS; and
+//   SSS_AXIS           0 horizontal, 1 vertical
+//   SSS_MARKED         1: the pixel's strength (alpha) is read from the target image, where the
+//                      runner marked it under the host's stencil (0 outside it: such pixels are
+//                      left as the pass leaves a pixel that is not translucent); horizontal only
+//   SSS_THREADS        the work group's invocations
+//   SSS_SEGMENT, SSS_LINES  the tile: SSS_LINES lines of SSS_SEGMENT pixels along the axis
+//   SSS_APRON          the most pixels cached on each end of a line
+//   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f, rgba32f, r11f_g11f_b10f)
 // The header is version_430.glsl. The pieces it includes: nearest_half.glsl (u_round_to_half: set
 // for an rgba16f image), depth.glsl, jitter.glsl and footprint_taps.glsl (the taps and their
 // weights, shared with separable_blur.frag). The target is written with imageStore. Writing back
 // into the host's colour (SSS_OUTSIDE 1), the pixel's alpha is read from the target itself, so the
 // host's exact alpha stays (the fragment path masks alpha off instead); every other pass reads only
-// textures it does not write.
+// textures it does not write, and the marked pass each pixel of its target only before it writes it.
 
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
 #include "depth.glsl"
 #include "jitter.glsl"
 
-layout(local_size_x = SSS_SEGMENT, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x = SSS_THREADS, local_size_y = 1, local_size_z = 1) in;
 
 layout(binding = 0) uniform sampler2D u_source;  // the pass input (host colour, then the intermediate)
 layout(binding = 1) uniform sampler2D u_depth;   // the host's depth
 #if SSS_OUTSIDE == 2
 layout(binding = 2) uniform sampler2D u_original;  // the host's colour (the target is the separate output)
 #endif
-#if SSS_OUTSIDE == 1
+#if SSS_ACCUMULATE
+layout(binding = 3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
+#endif
+#if SSS_OUTSIDE == 1 || SSS_MARKED
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 #else
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
 #endif
 
-uniform ivec2 u_axis;           // (1, 0) or (0, 1)
 uniform ivec4 u_rect;           // the pixels this pass writes: x, y, width, height
 uniform float u_pixels_per_mm;
 uniform float u_follow_surface;
 uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
 
-const int kCached = SSS_SEGMENT + 2 * SSS_APRON;
-// rgb: colour; a: raw depth (the pixel's own, as the fragment shader fetches it). One vec4 per
-// texel: a tap's two texels are two 128-bit shared loads (a vec3 and a float apart were four).
-shared vec4 s_texel[kCached];
+const ivec2 kAxis = ivec2(1 - SSS_AXIS, SSS_AXIS);
+const ivec2 kAcross = ivec2(SSS_AXIS, 1 - SSS_AXIS);
+const int kSpan = SSS_SEGMENT + 2 * SSS_APRON;               // cached texels of one line
+const int kPixels = SSS_SEGMENT * SSS_LINES / SSS_THREADS;  // pixels of the tile per invocation
+#if SSS_JITTER
+const float kReachMargin = 1.5;  // the outermost jittered tap may read past the reach (jitter.glsl)
+#else
+const float kReachMargin = 1.0;
+#endif
 
-// footprint_taps.glsl's tap reads: the work group's cache, or the textures past the apron.
+// rgb: colour; a: raw depth (as the fragment shader fetches it; in the apron 0 without
+// follow-surface, which reads no tap's depth). One vec4 per texel: a tap's two texels are two
+// 128-bit shared loads.
+shared vec4 s_texel[SSS_LINES * kSpan];
+// The group's widest reach in pixels plus one (at most SSS_APRON); 0: no pixel of it is blurred.
+shared uint s_extent;
+
+// Where texel i of a line (i = 0 at SSS_APRON pixels before the segment) is cached: the vertical
+// pass interleaves its columns, so that invocations reading neighbouring columns at one tap use
+// neighbouring words.
+int cache_index(int line, int i) {
+#if SSS_AXIS == 0
+  return line * kSpan + i;
+#else
+  return i * SSS_LINES + line;
+#endif
+}
+
+// The tile's pixel `e` (0 <= e < SSS_SEGMENT * SSS_LINES) as (line, position in the segment):
+// consecutive e along the row of the image in both passes.
+ivec2 tile_pixel(int e) {
+#if SSS_AXIS == 0
+  return ivec2(e / SSS_SEGMENT, e % SSS_SEGMENT);
+#else
+  return ivec2(e % SSS_LINES, e / SSS_LINES);
+#endif
+}
+
+float tap_depth(ivec2 texel) {
+#if SSS_FOLLOW_SURFACE
+  return texelFetch(u_depth, texel, 0).r;
+#else
+  return 0.0;
+#endif
+}
+
+// footprint_taps.glsl's tap reads: the work group's cache, or the textures past the cached span.
 struct TapSite {
   float centre;                // the pixel's centre along the axis
   float clamp_min, clamp_max;  // u_clamp along the axis
-  int cache_start;             // the pixel coordinate of s_texel[0]
+  int cache_start;             // the pixel coordinate of a line's texel 0
+  int first, end;              // the cached texels of the line: [first, end)
+  int line;                    // the pixel's line in the tile
   ivec2 row;                   // the texel coordinate across the axis (the other component 0)
 };
 
 vec4 sss_fetch_tap(TapSite site, float offset) {
-  // Whole pixels: the cached texel, or the textures' where the tap is past the apron.
   float position = clamp(site.centre + offset, site.clamp_min, site.clamp_max);
   int along_tap = int(position);
-  int index = along_tap - site.cache_start;
-  if (index >= 0 && index < kCached) return s_texel[index];
-  ivec2 texel = u_axis * along_tap + site.row;
-  return vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
+  int i = along_tap - site.cache_start;
+  if (i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
+  ivec2 texel = kAxis * along_tap + site.row;
+  return vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
 }
 
 #define SSS_TAP_DISTANCE(a) view_distance(a)  // the cache holds the host's raw depth
@@ -78,50 +138,103 @@ void write_untouched(ivec2 pixel, vec4 centre) {
 #endif
 }
 
-void main() {
-  const int axis_index = u_axis.y;  // 0 horizontal, 1 vertical
-  const int along_start = u_rect[axis_index];
-  const int along_end = along_start + u_rect[2 + axis_index];  // exclusive
-  const int across = u_rect[1 - axis_index] + int(gl_WorkGroupID.y);
-  const int segment_start = along_start + int(gl_WorkGroupID.x) * SSS_SEGMENT;
-  const int cache_start = segment_start - SSS_APRON;  // pixel coordinate of s_texel[0]
-  const ivec2 cross_axis = ivec2(1) - u_axis;
-
-  // Fill the cache: every texel of segment and apron once, clamped into the rectangle (no tap
-  // reads past it: positions are clamped to u_clamp first).
-  for (int i = int(gl_LocalInvocationID.x); i < kCached; i += SSS_SEGMENT) {
-    int along = clamp(cache_start + i, along_start, along_end - 1);
-    ivec2 texel = u_axis * along + cross_axis * across;
-    s_texel[i] = vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
-  }
-  barrier();
-
-  const int along = segment_start + int(gl_LocalInvocationID.x);
-  if (along >= along_end) return;
-  const ivec2 pixel = u_axis * along + cross_axis * across;
-  const int centre_index = along - cache_start;
-  vec4 centre = vec4(s_texel[centre_index].rgb, texelFetch(u_source, pixel, 0).a);
-  if (!(centre.a > 0.0) || !sss_in_range(centre)) {
-    write_untouched(pixel, centre);
-    return;
-  }
-  float strength = min(centre.a, 1.0);
-  float centre_distance = view_distance(s_texel[centre_index].a);
-  float w = clip_w(centre_distance);
-  if (isnan(w) || !(w > 0.0) || isinf(w)) {  // isnan(): see separable_blur.frag
-    write_untouched(pixel, centre);
-    return;
-  }
-  float step_pixels = u_pixels_per_mm * strength / w;
-  float follow_surface = u_follow_surface / strength;
-  TapSite site = TapSite(float(along) + 0.5, u_clamp[axis_index], u_clamp[2 + axis_index], cache_start,
-                         cross_axis * across);
-  vec3 sum = footprint_sum(site, centre.rgb, step_pixels, centre_distance, follow_surface, pixel, axis_index);
+void write_blurred(ivec2 pixel, vec3 sum, float alpha) {
+#if SSS_ACCUMULATE
+  sum += texelFetch(u_accumulated, pixel, 0).rgb;
+#endif
 #if SSS_OUTSIDE == 2
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a)));
 #elif SSS_OUTSIDE == 1
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, imageLoad(u_target, pixel).a)));
 #else
-  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, centre.a)));
+  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, alpha)));
 #endif
+}
+
+void main() {
+  const int along_start = u_rect[SSS_AXIS];
+  const int along_end = along_start + u_rect[2 + SSS_AXIS];  // exclusive
+  const int across_end = u_rect[1 - SSS_AXIS] + u_rect[3 - SSS_AXIS];
+  const int segment_start = along_start + int(gl_WorkGroupID.x) * SSS_SEGMENT;
+  const int line_start = u_rect[1 - SSS_AXIS] + int(gl_WorkGroupID.y) * SSS_LINES;
+  const int cache_start = segment_start - SSS_APRON;
+  const int thread = int(gl_LocalInvocationIndex);
+  if (thread == 0) s_extent = 0u;
+  barrier();
+
+  // This invocation's pixels: colour into the cache, and, where the pixel is blurred, its depth,
+  // its step in pixels per profile mm and its reach (as separable_blur.frag's main()).
+  float alpha[kPixels], distance[kPixels], step_pixels[kPixels];
+  bool blurred[kPixels];
+  // (No `continue` in these loops: they unroll, and the arrays stay in registers.)
+  uint reach_of_mine = 0u;  // the widest of this invocation's pixels (one shared atomic, not kPixels)
+  for (int k = 0; k < kPixels; ++k) {
+    ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
+    int along = segment_start + tile.y, across = line_start + tile.x;
+    alpha[k] = 0.0;
+    distance[k] = 0.0;
+    step_pixels[k] = 0.0;
+    blurred[k] = false;
+    if (along < along_end && across < across_end) {  // no tap reads outside the rectangle
+      ivec2 pixel = kAxis * along + kAcross * across;
+      vec4 colour = texelFetch(u_source, pixel, 0);
+#if SSS_MARKED
+      colour.a = imageLoad(u_target, pixel).a;
+#endif
+      alpha[k] = colour.a;
+      float raw = texelFetch(u_depth, pixel, 0).r;
+      float centre_distance = view_distance(raw);
+      float w = clip_w(centre_distance);
+      // Not translucent, not finite, or behind the camera: as separable_blur.frag (isnan(): see there).
+      if (colour.a > 0.0 && sss_in_range(colour) && !(isnan(w) || !(w > 0.0) || isinf(w))) {
+        distance[k] = centre_distance;
+        step_pixels[k] = u_pixels_per_mm * min(colour.a, 1.0) / w;
+        blurred[k] = true;
+        float reach = min(SSS_FOOTPRINT.x * step_pixels[k], 1.0e6) * kReachMargin;
+        reach_of_mine = max(reach_of_mine, uint(min(ceil(reach) + 1.0, float(SSS_APRON))));
+      }
+      s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, raw);
+    }
+  }
+  if (reach_of_mine > 0u) atomicMax(s_extent, reach_of_mine);
+  barrier();
+  const int extent = int(s_extent);  // the same in every invocation: the branch below is uniform
+
+  if (extent > 0) {
+    // The apron, as far as it is reached.
+    for (int e = thread; e < 2 * extent * SSS_LINES; e += SSS_THREADS) {
+#if SSS_LINES == 1
+      int line = 0, j = e;
+#elif SSS_AXIS == 0
+      int line = e / (2 * extent), j = e % (2 * extent);
+#else
+      int line = e % SSS_LINES, j = e / SSS_LINES;
+#endif
+      int i = j < extent ? SSS_APRON - extent + j : SSS_APRON + SSS_SEGMENT + (j - extent);
+      int along = cache_start + i, across = line_start + line;
+      if (along >= along_start && along < along_end && across < across_end) {
+        ivec2 texel = kAxis * along + kAcross * across;
+        s_texel[cache_index(line, i)] = vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
+      }
+    }
+    barrier();
+  }
+
+  for (int k = 0; k < kPixels; ++k) {
+    ivec2 tile = tile_pixel(thread + k * SSS_THREADS);
+    int along = segment_start + tile.y, across = line_start + tile.x;
+    if (along < along_end && across < across_end) {
+      ivec2 pixel = kAxis * along + kAcross * across;
+      vec4 centre = vec4(s_texel[cache_index(tile.x, SSS_APRON + tile.y)].rgb, alpha[k]);
+      if (blurred[k]) {
+        float follow_surface = u_follow_surface / min(centre.a, 1.0);
+        TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
+                               SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across);
+        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k], distance[k], follow_surface, pixel, SSS_AXIS);
+        write_blurred(pixel, sum, centre.a);
+      } else {
+        write_untouched(pixel, centre);
+      }
+    }
+  }
 }

@@ -9,6 +9,14 @@
 #   bench   sss_bench --backend egl-device with the given arguments; its output folder and
 #           results document (docs/NAME.md, docs/NAME/) packed into $OUT/NAME.tar.gz, its log
 #           in $OUT/NAME.log
+#
+# Issue 24's compute limit (the compute path at 1080p on the close-up at most 1.3 x the two-pass
+# compute copy: the row "close-up on the compute path ... over the two-pass compute copy" of
+# docs/NAME.md, with the renderer and date at its top) in a few minutes of device time:
+#   m=copy,copy-compute,no-scattering,separable-in-place,separable-region,separable-masked
+#   m=$m,separable-masked-region,separable-compute,separable-compute-region,separable-auto-region
+#   scripts/gpu/on-device.sh bench benchmarks-h100 420 -- --size 1920x1080:head-close,head-mid,head-far,empty \
+#     --taps 17 --methods "$m" --warmup 30 --reps 61 --no-heat-maps
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 out=${OUT:-out}

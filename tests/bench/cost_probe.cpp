@@ -10,7 +10,7 @@
 // fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
-//                  [--path default|fragment|masked|auto] [--frames N] [--profiles N]
+//                  [--path default|fragment|masked|auto|compute] [--frames N] [--profiles N]
 //
 // --profiles N (0.4 on): N per-pixel profiles (sss_set_profiles; the others are eq. (1) looks of
 // other strength, falloff and scale) and an R8UI profile texture of index 0 everywhere: the cost of
@@ -66,6 +66,8 @@ bool parse(int argc, char** argv, Options* o) {
         o->path = SSS_PATH_FRAGMENT_MASKED;
       } else if (value == "auto") {
         o->path = SSS_PATH_AUTO;
+      } else if (value == "compute") {
+        o->path = SSS_PATH_COMPUTE;
       } else if (value == "fragment" || value == "default") {
         o->path = SSS_PATH_FRAGMENT;
       } else {
@@ -119,7 +121,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path default|fragment|masked|auto] [--frames N] [--profiles N]\n");
+                         "[--path default|fragment|masked|auto|compute] [--frames N] [--profiles N]\n");
     return 2;
   }
   sss_headless_desc hd = {};

@@ -34,8 +34,8 @@ SyntheticScene relief(int width = 64, int height = 48) {
                            perspective_matrix(40.0f, static_cast<float>(width) / static_cast<float>(height), 0.1f, 10.0f));
 }
 
-// A frame the compute path cannot run, for each reason a test checks: the host's stencil mask, and a
-// kernel of two terms.
+// Frames the compute path used to give to the fragment passes: the host's stencil mask, and
+// kernels of two and three terms (three: the sum of terms ping-pongs between the accumulators).
 FilterCase stencil_case() {
   FilterCase c;
   c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
@@ -43,12 +43,25 @@ FilterCase stencil_case() {
   c.use_stencil = true;
   return c;
 }
-FilterCase two_term_case() {
+FilterCase terms_case(uint32_t terms) {
   FilterCase c;
   c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
   sss_test::kernel_of(c.settings).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
-  sss_test::kernel_of(c.settings).rank = 2;
+  sss_test::kernel_of(c.settings).rank = terms;
   return c;
+}
+
+// The relief scene with alpha 0 (not translucent) outside the rectangle x, y, w, h: most of the
+// compute path's work groups then have no pixel to blur.
+SyntheticScene translucent_only_in(SyntheticScene scene, int x, int y, int w, int h) {
+  for (int py = 0; py < scene.height; ++py) {
+    for (int px = 0; px < scene.width; ++px) {
+      if (px < x || px >= x + w || py < y || py >= y + h) {
+        scene.color[4 * (static_cast<std::size_t>(py) * static_cast<std::size_t>(scene.width) + px) + 3] = 0.0f;
+      }
+    }
+  }
+  return scene;
 }
 
 class ComputePath : public FilterCaseTest {
@@ -164,14 +177,42 @@ TEST_F(ComputePath, EveryVariantOfTheShader) {
 }
 
 TEST_F(ComputePath, AKernelWiderThanTheCachedSpanReadsTheTextures) {
-  // 300 px wide, about 40 px per profile mm: the 17-tap kernel reaches ~80 px each way, past the
-  // 64-pixel apron, so the outer taps take the texture path; the result must not change.
-  FilterCase c;
-  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.9f);
+  // A work group caches a bounded apron on either end of a row or column (shader_constants.hpp
+  // kComputeTiles: today 96 and 56 pixels), and fills only as far as its widest kernel reaches.
+  // 300 px wide at about 40 px per profile mm: the 17-tap kernel reaches ~80 px each way, past the
+  // vertical pass's apron; 600 px at twice the scale ~160 px, past both (and past the 64 pixels
+  // the path cached before): the outer taps read the textures, and the image must not change.
+  struct Wide {
+    int width;
+    float scale;
+  };
+  for (const Wide wide : {Wide{300, 0.9f}, Wide{600, 1.8f}}) {
+    FilterCase c;
+    c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, wide.scale);
+    for (bool separate : {false, true}) {
+      SCOPED_TRACE(std::to_string(wide.width) + (separate ? " px, separate output" : " px, in place"));
+      c.separate_output = separate;
+      expect_paths_agree(relief(wide.width, 40), c, true);
+    }
+  }
+}
+
+TEST_F(ComputePath, GroupsWithoutATranslucentPixelLeaveTheirPixels) {
+  // Translucent pixels in a 60x40 patch of a 400x300 frame: most work groups of both passes have
+  // none, write what the pass leaves there and do no taps; the image is the fragment path's. A
+  // frame with no translucent pixel at all comes back exactly as it went in.
+  const SyntheticScene patch = translucent_only_in(relief(400, 300), 170, 130, 60, 40);
   for (bool separate : {false, true}) {
     SCOPED_TRACE(separate ? "separate output" : "in place");
+    FilterCase c;
+    c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.3f);
     c.separate_output = separate;
-    expect_paths_agree(relief(300, 40), c, true);
+    expect_paths_agree(patch, c, true);
+    c.settings.path = SSS_PATH_COMPUTE;
+    const FilterOutcome o = run_case(translucent_only_in(relief(400, 300), 0, 0, 0, 0), c);
+    ASSERT_EQ(o.result, SSS_OK);
+    EXPECT_EQ(last_path(), has_compute() ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+    EXPECT_EQ(o.gpu, o.input) << "a frame without a translucent pixel changed";
   }
 }
 
@@ -192,14 +233,43 @@ TEST_F(ComputePath, RegionAndViewport) {
   expect_paths_agree(relief(), v, true);
 }
 
-TEST_F(ComputePath, GivesWayToTheFragmentPathWhereItCannotRun) {
-  // A stencil mask and a kernel of several terms: the fragment passes run, with the same result.
-  {
-    SCOPED_TRACE("stencil");
-    expect_paths_agree(relief(), stencil_case(), false);
+TEST_F(ComputePath, TakesTheHostsStencilAndKernelsOfSeveralTerms) {
+  // The host's stencil (marked into the intermediate for the dispatches) and kernels of two and
+  // three terms (their sum in the accumulators, SSS_ACCUMULATE), and both at once, in place and
+  // into an output, with and without a region: the compute path runs them (last_frame_path) and
+  // gives the fragment path's image.
+  for (bool separate : {false, true}) {
+    for (bool region : {false, true}) {
+      SCOPED_TRACE(std::string(separate ? "separate output" : "in place") + (region ? ", region" : ""));
+      FilterCase stencil = stencil_case();
+      FilterCase two = terms_case(2);
+      FilterCase both = stencil_case();
+      both.settings = terms_case(3).settings;
+      for (FilterCase* c : {&stencil, &two, &both}) {
+        c->separate_output = separate;
+        c->use_region = region;
+        c->region = {9, 7, 40, 30};
+      }
+      {
+        SCOPED_TRACE("stencil");
+        expect_paths_agree(relief(), stencil, true);
+      }
+      {
+        SCOPED_TRACE("two terms");
+        expect_paths_agree(relief(), two, true);
+      }
+      SCOPED_TRACE("stencil and three terms");
+      expect_paths_agree(relief(), both, true);
+    }
   }
-  SCOPED_TRACE("two terms");
-  expect_paths_agree(relief(), two_term_case(), false);
+}
+
+TEST_F(ComputePath, GivesWayToTheFragmentPathWhereItCannotRun) {
+  // The cross-bilateral mode runs as fragment passes, with the same result.
+  FilterCase c;
+  c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  c.settings.mode = SSS_MODE_CROSS_BILATERAL;
+  expect_paths_agree(relief(), c, false);
 }
 
 TEST_F(ComputePath, KeepsTheHostsAlphaExactly) {
@@ -448,7 +518,7 @@ TEST_F(MaskedPath, GivesThePlainFragmentResultBitForBit) {
     expect_bit_identical(relief(), r, SSS_PATH_FRAGMENT_MASKED);
   }
   SCOPED_TRACE("two terms");
-  expect_bit_identical(relief(), two_term_case(), SSS_PATH_FRAGMENT_MASKED);
+  expect_bit_identical(relief(), terms_case(2), SSS_PATH_FRAGMENT_MASKED);
 }
 
 TEST_F(MaskedPath, AHostStencilKeepsThePlainPath) {

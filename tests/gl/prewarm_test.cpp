@@ -270,6 +270,12 @@ TEST_F(Prewarm, TheFirstComputeFrameCreatesNothing) {
   expect_no_hitch(Case{"compute, RGBA32F separate output", settings_with(SSS_PATH_COMPUTE), GL_RGBA16F,
                        static_cast<GLenum>(is_gles() ? GL_RGBA16F : GL_RGBA32F)});
   EXPECT_EQ(last_path(), has_compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+  Case stencil{"compute behind the host's stencil", settings_with(SSS_PATH_COMPUTE)};
+  stencil.stencil = true;
+  expect_no_hitch(stencil);
+  EXPECT_EQ(last_path(), has_compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
+  expect_no_hitch(Case{"compute, three terms, separate output", several_terms(SSS_PATH_COMPUTE), GL_RGBA16F, GL_RGBA16F});
+  EXPECT_EQ(last_path(), has_compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
   expect_no_hitch(Case{"automatic path", settings_with(SSS_PATH_AUTO)});
   std::printf("the automatic path's first frame ran path %u\n", last_path());
 }

@@ -147,6 +147,8 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
                         {"host stencil, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true},
                         {"masked path", SSS_PATH_FRAGMENT_MASKED},
                         {"compute path", SSS_PATH_COMPUTE},
+                        {"compute path, host stencil, two kernel terms, separate output", SSS_PATH_COMPUTE,
+                         SSS_MODE_SEPARABLE, true, true, true},
                         {"automatic path", SSS_PATH_AUTO},
                         {"cross-bilateral with a stencil", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, true},
                         {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, true},

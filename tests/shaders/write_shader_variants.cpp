@@ -122,15 +122,20 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
 }
 
-// The compute path's blur (GLSL 4.30): every variant but SSS_ACCUMULATE (single-term kernels only)
-// × every target image format.
+// The compute path's blur (GLSL 4.30): every variant but per-pixel profiles × every target image
+// format × its passes (the horizontal ones never accumulate).
 void write_compute(Writer* out) {
+  const char* const pass_names[gl::kComputePassCount] = {"h", "hm", "v"};
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
-    if (!gl::is_compute_blur_variant(v)) continue;
-    for (int format = 0; format < gl::kComputeImageFormatCount; ++format) {
-      out->write("430_blur_compute_" + blur_name(v) + '_' + gl::kComputeImageFormats[format].qualifier + ".comp",
-                 gl::compute_recipe(gl::compute_blur_defines(v, format)));
+    if (!gl::is_compute_blur_variant(v)) continue;  // per-pixel profiles run on the fragment passes
+    for (int pass = 0; pass < gl::kComputePassCount; ++pass) {
+      if (v.accumulate && pass != static_cast<int>(gl::ComputePass::vertical)) continue;
+      for (int format = 0; format < gl::kComputeImageFormatCount; ++format) {
+        out->write("430_blur_compute_" + blur_name(v) + "_a" + (v.accumulate ? "1_" : "0_") + pass_names[pass] + '_' +
+                       gl::kComputeImageFormats[format].qualifier + ".comp",
+                   gl::compute_recipe(gl::compute_blur_defines(v, format, static_cast<gl::ComputePass>(pass))));
+      }
     }
   }
 }

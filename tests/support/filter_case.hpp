@@ -52,6 +52,7 @@ inline constexpr PathCase kEveryPath[] = {
     {"masked", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false},
     {"compute (the fragment path where the GL has none)", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false},
     {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true},
+    {"compute, two kernel terms", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, true},
     {"cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false},
 };
 

@@ -134,7 +134,7 @@ TEST(ShaderSource, EveryLineOfTheEmbeddedShadersCarriesItsFileAndLine) {
   jittered.follow_surface = 2;
   const std::vector<ShaderRecipe> recipes = {
       stage_recipe(GlslVariant::essl300, "separable_blur.frag", blur_defines(jittered)),
-      compute_recipe(compute_blur_defines(jittered, 0)),
+      compute_recipe(compute_blur_defines(jittered, 0, ComputePass::vertical)),
       stage_recipe(GlslVariant::glsl420, "cbf_blur.frag", cbf_defines(BlurOutside::copy_original, false, true)),
       stage_recipe(GlslVariant::glsl330, "msaa_resolve.frag", msaa_resolve_defines(false)),
       stage_recipe(GlslVariant::glsl330, "lut_generate.frag", lut_defines(1)),
@@ -155,7 +155,7 @@ TEST(ShaderSource, TheBlurShadersShareTheirPieces) {
                                            "footprint_taps.glsl"};
   for (const ShaderRecipe& recipe :
        {stage_recipe(GlslVariant::glsl330, "separable_blur.frag", blur_defines(BlurVariant{})),
-        compute_recipe(compute_blur_defines(BlurVariant{}, 1))}) {
+        compute_recipe(compute_blur_defines(BlurVariant{}, 1, ComputePass::horizontal_marked))}) {
     AssembledShader out;
     ASSERT_TRUE(assemble_shader(recipe, &out, nullptr));
     EXPECT_EQ(std::vector<std::string>(out.files.begin() + 3, out.files.end()), shared) << recipe.top;

@@ -92,7 +92,8 @@ GLuint horizontal_framebuffer(const PassContext& ctx, const FilterRun& run) {
   return run.cross_bilateral ? t.intermediate_framebuffer : t.pass_intermediate_framebuffer;
 }
 
-sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message) {
+sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message,
+                        GLuint framebuffer) {
   const Functions& f = ctx.gl;
   const int width = run.color.width, height = run.color.height;
   sss_result r = ctx.targets.ensure_stencil_buffer(stencil.texture.internal_format, width, height, message);
@@ -101,7 +102,7 @@ sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInp
   f.BindFramebuffer(READ_FRAMEBUFFER, t.stencil_source_framebuffer);
   // A multisampled depth-stencil is resolved by the blit: GL picks one sample's stencil per pixel.
   f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, stencil.texture.target, stencil.texture.name, 0);
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, horizontal_framebuffer(ctx, run));
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer != 0 ? framebuffer : horizontal_framebuffer(ctx, run));
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, t.stencil_buffer);
   if (ctx.check_framebuffers && f.CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
     *message = "the host's depth-stencil texture cannot be read as a framebuffer attachment";

@@ -80,9 +80,10 @@ sss_result check_framebuffer(const PassContext& ctx, const char* which, std::str
 // The framebuffer the horizontal pass of `run` draws into, which the stencil goes on: the packed
 // intermediate's (separable fragment passes) or the intermediate's (cross-bilateral mode).
 GLuint horizontal_framebuffer(const PassContext& ctx, const FilterRun& run);
-// The host's depth-stencil into the module's stencil buffer, which is left on
-// horizontal_framebuffer(run).
-sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message);
+// The host's depth-stencil into the module's stencil buffer, which is left on `framebuffer` (0:
+// horizontal_framebuffer(run); the compute path's mark: the intermediate's).
+sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message,
+                        GLuint framebuffer = 0);
 // Only the pixels whose stencil compares `func` to the host's reference pass (no stencil: all).
 void set_stencil_test(const Functions& gl, const StencilInput* stencil, GLenum func);
 // Puts `stencil_buffer` (0: none) on `framebuffer` (a horizontal_framebuffer) and checks it

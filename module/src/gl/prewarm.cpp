@@ -2,7 +2,7 @@
 // it, so that its run() compiles and allocates nothing (a compile or allocation in the middle of a
 // game is a visible hitch). Each path asks its runner's own prepare_* function (runners.hpp), the
 // very calls the runner makes before its first draw; only what a runner makes as it draws (the
-// stencil mark's program and buffer, the host stencil's copy, the compute path's two programs) is
+// stencil mark's program and buffer, the host stencil's copy) is
 // spelt out here, next to the runner it follows. The prewarm test (tests/gl/prewarm_test.cpp)
 // counts the GL creations of the first frame after it: any drift shows there.
 #include "blur_pass.hpp"
@@ -26,19 +26,10 @@ sss_result prewarm_fragment(PassContext& ctx, const FilterRun& run, std::string*
   return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
 }
 
-// run_compute (compute_runner.cpp): its two dispatches' programs (the vertical one writes the
-// target's image format) and the intermediate.
+// run_compute (compute_runner.cpp): its programs and targets, and the host stencil's copy.
 sss_result prewarm_compute(PassContext& ctx, const FilterRun& run, std::string* message) {
-  BlurProgram* unused = nullptr;
-  sss_result r = ctx.programs.compute(blur_variant(run, 0, 0, Outside::write_centre),
-                                      image_format_index(run.intermediate_format()), &unused, message);
-  if (r == SSS_OK) {
-    const Outside outside = run.writes_back() ? Outside::discard : Outside::copy_original;
-    const int format = image_format_index(run.target().internal_format);
-    r = ctx.programs.compute(blur_variant(run, 0, 1, outside), format, &unused, message);
-  }
-  if (r != SSS_OK) return r;
-  return ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
+  const sss_result r = prepare_compute(ctx, run, message);
+  return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
 }
 
 }  // namespace

@@ -118,25 +118,34 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   return SSS_OK;
 }
 
-sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, BlurProgram** out,
+sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, ComputePass pass, BlurProgram** out,
                                  std::string* message) {
-  const std::size_t index = static_cast<std::size_t>(blur_variant_index(v) * kImageFormats + image_format_slot);
+  // Per-pixel profiles and packed outputs never take the compute path: the variants without them
+  // come first (blur_variant_index's leading factor is 0 for them).
+  const int variant = blur_variant_index(v);
+  if (!is_compute_blur_variant(v) || variant >= kComputeBlurVariants) {
+    *message = "separable blur compute shader: not a compute variant (per-pixel profiles run on the fragment passes)";
+    return SSS_ERROR_SHADER_COMPILE;
+  }
+  const std::size_t index = static_cast<std::size_t>(
+      (variant * kImageFormats + image_format_slot) * kComputePassCount + static_cast<int>(pass));
   BlurProgram& p = compute_[index];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  // The fragment variant's switches (SSS_ACCUMULATE is always 0 here), then the compute ones.
+  // The fragment variant's switches, then the compute ones.
   const ComputeImageFormat& format = kComputeImageFormats[image_format_slot];
-  const std::string defines = compute_blur_defines(v, image_format_slot);
+  const std::string defines = compute_blur_defines(v, image_format_slot, pass);
   std::string log;
   p.program = build_compute_program(*gl_, compute_recipe(defines), &log);
   if (p.program == 0) {
     *message = "separable blur compute shader (" + defines + "): " + log;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  char label[128];
-  std::snprintf(label, sizeof label, "sss compute blur outside=%d follow=%d linear=%d jitter=%d %s",
-                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                format.qualifier);
+  char label[160];
+  std::snprintf(label, sizeof label,
+                "sss compute blur pass=%d outside=%d follow=%d linear=%d jitter=%d accumulate=%d %s",
+                static_cast<int>(pass), static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0,
+                v.jitter ? 1 : 0, v.accumulate ? 1 : 0, format.qualifier);
   finish(p.program, label, "blur", "GLSL 430 core");
   find_blur_uniforms(&p);
   p.compute = true;

@@ -87,8 +87,9 @@ class ProgramCache {
   void set_profile_capacity(int profiles) { profile_capacity_ = profiles; }
   GLuint copy() const { return copy_; }
   sss_result blur(const BlurVariant& v, BlurProgram** out, std::string* message);
-  // The compute variant of `v` (SSS_ACCUMULATE unset) writing image format `image_format`.
-  sss_result compute(const BlurVariant& v, int image_format, BlurProgram** out, std::string* message);
+  // The compute variant of `v` (no per-pixel profiles) for `pass`, writing image format `image_format`.
+  sss_result compute(const BlurVariant& v, int image_format, ComputePass pass, BlurProgram** out,
+                     std::string* message);
   sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
                              std::string* message);
   sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
@@ -99,7 +100,10 @@ class ProgramCache {
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
 
  private:
-  static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
+  // The compute variants (is_compute_blur_variant): blur_variant_index's leading factor (packed
+  // output, profile ids: 6 values) is 0 for them.
+  static constexpr int kComputeBlurVariants = kBlurVariantCount / 6;
+  static constexpr int kComputeVariantCount = kComputeBlurVariants * kImageFormats * kComputePassCount;
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
   // A program from the full-screen vertex shader and the fragment shader file `fragment` with

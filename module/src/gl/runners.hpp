@@ -39,6 +39,9 @@ sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuin
 // SSS_PATH_COMPUTE (compute_runner.cpp, OpenGL 4.3+): "" when `run` can take it, else why not.
 const char* compute_unavailable(const Functions& gl, const FilterRun& run);
 sss_result run_compute(PassContext& ctx, const FilterRun& run, std::string* message);
+// What run_compute builds and allocates before its first draw (every term's two programs, the
+// intermediate, the sum of terms), also for sss_prepare (prewarm.cpp); the host stencil's copy aside.
+sss_result prepare_compute(PassContext& ctx, const FilterRun& run, std::string* message);
 
 // Multisampled colour and depth (msaa_runner.cpp): resolve, the fragment passes on the resolved
 // images, and, in place, the per-sample write-back.

@@ -59,10 +59,15 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
   return text;
 }
 
-std::string compute_blur_defines(const BlurVariant& v, int image_format) {
-  char defines[160];
-  std::snprintf(defines, sizeof defines, "#define SSS_SEGMENT %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n",
-                kComputeSegment, kComputeApron, kComputeImageFormats[image_format].qualifier);
+std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass) {
+  const int axis = pass == ComputePass::vertical ? 1 : 0;
+  const ComputeTile& tile = kComputeTiles[axis];
+  char defines[256];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_AXIS %d\n#define SSS_MARKED %d\n#define SSS_THREADS %d\n#define SSS_SEGMENT %d\n"
+                "#define SSS_LINES %d\n#define SSS_APRON %d\n#define SSS_IMAGE_FORMAT %s\n",
+                axis, pass == ComputePass::horizontal_marked ? 1 : 0, kComputeThreads, tile.segment, tile.lines,
+                tile.apron, kComputeImageFormats[image_format].qualifier);
   return blur_defines(v) + defines;
 }
 

@@ -18,7 +18,7 @@ namespace sss::gl {
 // nothing (discard: vertical pass writing back), or the host's original colour (separate output).
 enum class BlurOutside : int { write_centre = 0, discard = 1, copy_original = 2 };
 
-// The separable blur's compile-time switches (separable_blur.frag; .comp never accumulates).
+// The separable blur's compile-time switches (separable_blur.frag and .comp).
 struct BlurVariant {
   BlurOutside outside = BlurOutside::write_centre;
   int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
@@ -49,13 +49,11 @@ int blur_variant_index(const BlurVariant& v);
 BlurVariant blur_variant_at(int index);
 // The variants the module builds: fragment passes read pass_inputs.frag's view distances (no
 // SSS_LINEAR_DEPTH), and only their horizontal pass (SSS_OUTSIDE 0, no SSS_ACCUMULATE) writes
-// packed; the compute path runs neither per-pixel profiles, several terms nor packed texels.
+// packed; the compute path runs neither per-pixel profiles nor packed texels.
 inline bool is_fragment_blur_variant(const BlurVariant& v) {
   return !v.linear_depth && (!v.packed_output || (v.outside == BlurOutside::write_centre && !v.accumulate));
 }
-inline bool is_compute_blur_variant(const BlurVariant& v) {
-  return !v.accumulate && v.profile_ids == 0 && !v.packed_output;
-}
+inline bool is_compute_blur_variant(const BlurVariant& v) { return v.profile_ids == 0 && !v.packed_output; }
 // `profiles`: SSS_PROFILES, the profiles the per-pixel variant's uniform block holds (the context's
 // ProfileTables::capacity; SSS_MAX_PROFILES where the GL's block size allows).
 std::string blur_defines(const BlurVariant& v, int profiles = SSS_MAX_PROFILES);
@@ -70,8 +68,13 @@ struct ComputeImageFormat {
 inline constexpr ComputeImageFormat kComputeImageFormats[] = {
     {RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}, {R11F_G11F_B10F, "r11f_g11f_b10f"}};
 inline constexpr int kComputeImageFormatCount = 3;
-// The blur variant's switches, then the compute shader's (segment, apron, image format).
-std::string compute_blur_defines(const BlurVariant& v, int image_format);
+// The compute path's dispatches: the horizontal pass (reading its pixels' strength from the
+// colour, or, `horizontal_marked`, from the target image, which a stencil draw marked first:
+// compute_runner.cpp) and the vertical pass (SSS_AXIS, SSS_MARKED).
+enum class ComputePass : int { horizontal = 0, horizontal_marked = 1, vertical = 2 };
+inline constexpr int kComputePassCount = 3;
+// The blur variant's switches, then the compute shader's (pass, tile, image format).
+std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass);
 
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
