@@ -96,7 +96,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
                  gl::stage_recipe(dialect, "msaa_resolve.frag", gl::msaa_resolve_defines(linear != 0)));
     }
     out->write(d + "msaa_mask.frag", gl::stage_recipe(dialect, "msaa_mask.frag"));
-    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag"));
+    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag", gl::msaa_write_defines(dialect)));
   }
   for (int kind = 0; kind < 2; ++kind) {
     out->write(d + "lut_generate_k" + std::to_string(kind) + ".frag",

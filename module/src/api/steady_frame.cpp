@@ -86,7 +86,8 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   scope.image_unit = path == SSS_PATH_COMPUTE || path == SSS_PATH_AUTO;
   scope.multisample = msaa;
   scope.stencil = frame.stencil != nullptr || path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || msaa;
-  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1;
+  // Unit 3: also the MSAA write-back's fourth input (a multisampled colour written back).
+  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0);
   scope.profiles = frame.profile_texture != 0;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;

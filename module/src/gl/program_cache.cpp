@@ -215,6 +215,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, s
   p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.write_back = f.GetUniformLocation(p.program, "u_write_back");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
   return SSS_OK;
@@ -235,15 +236,18 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   SampleWriteProgram& p = sample_write_;
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("msaa_write.frag", "", "MSAA write-back shader", message);
+  const std::string defines = msaa_write_defines(variant_);
+  p.program = link("msaa_write.frag", defines, "MSAA write-back shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, "sss msaa per-sample write", nullptr);
+  p.one_draw = msaa_write_in_one_draw(variant_);
+  finish(p.program, p.one_draw ? "sss msaa write-back" : "sss msaa per-sample write-back", nullptr);
   const Functions& f = *gl_;
   p.sample = f.GetUniformLocation(p.program, "u_sample");
   p.samples = f.GetUniformLocation(p.program, "u_samples");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_lowest"), unit::msaa_lowest);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_blurred);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_resolved);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_translucent"), unit::msaa_translucent);
   return SSS_OK;
 }
 

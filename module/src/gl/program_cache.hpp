@@ -58,7 +58,7 @@ struct StrengthProgram {
 
 struct ResolveProgram {
   GLuint program = 0;
-  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
+  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1, write_back = -1;
 };
 
 struct ProfileDepthProgram {
@@ -68,7 +68,8 @@ struct ProfileDepthProgram {
 
 struct SampleWriteProgram {
   GLuint program = 0;
-  GLint sample = -1, samples = -1;
+  GLint sample = -1, samples = -1;  // `sample`: the per-sample draws' (-1 in the one-draw variant)
+  bool one_draw = false;            // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
 };
 
 class ProgramCache {
