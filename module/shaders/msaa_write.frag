@@ -22,7 +22,7 @@
 SSS_BINDING(0) uniform usampler2D u_lowest;     // resolve: the translucent samples' smallest rgb (float bits), mask (a)
 SSS_BINDING(1) uniform sampler2D u_blurred;     // the vertical pass's single-sample result
 SSS_BINDING(2) uniform sampler2D u_resolved;    // the resolve pass's colour
-SSS_BINDING(3) uniform sampler2D u_translucent; // resolve: the translucent samples' mean rgb, count (a)
+SSS_BINDING(3) uniform sampler2D u_translucent; // resolve: the translucent samples' mean rgb (read where one would go below 0)
 uniform int u_samples;
 #if SSS_SAMPLE_MASK_OUTPUT == 0
 uniform int u_sample;  // the sample this draw writes (the one glSampleMaski lets through)
@@ -30,27 +30,40 @@ uniform int u_sample;  // the sample this draw writes (the one glSampleMaski let
 layout(location = 0, index = 0) out vec4 o_add;    // a (src0)
 layout(location = 0, index = 1) out vec4 o_scale;  // b (src1, the destination's factor)
 
+// No NaN (which fails every comparison) and no infinity.
+bool finite(vec4 v) { return all(lessThanEqual(abs(v), vec4(uintBitsToFloat(0x7f7fffffu)))); }
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 lowest = texelFetch(u_lowest, pixel, 0);
+  uint mask = lowest.a;
 #if SSS_SAMPLE_MASK_OUTPUT
-  if (lowest.a == 0u) discard;
-  gl_SampleMask[0] = int(lowest.a);
+  if (mask == 0u) discard;
+  gl_SampleMask[0] = int(mask);
+  float count = float(bitCount(mask));
 #else
-  if (((lowest.a >> uint(u_sample)) & 1u) == 0u) discard;
+  if (((mask >> uint(u_sample)) & 1u) == 0u) discard;
+  float count = 0.0;
+  for (int i = 0; i < u_samples; ++i) count += float((mask >> uint(i)) & 1u);
 #endif
-  vec3 delta = texelFetch(u_blurred, pixel, 0).rgb - texelFetch(u_resolved, pixel, 0).rgb;
-  if (all(equal(delta, vec3(0.0))) || any(isnan(delta)) || any(isinf(delta))) discard;
-  vec4 translucent = texelFetch(u_translucent, pixel, 0);
-  vec3 x = delta * (float(u_samples) / translucent.a);
+  // Pixels the module's mask left out (msaa_mask.frag's test: alpha > 0, all finite) were not
+  // drawn by the passes: the blurred image holds nothing there (behind the host's stencil, its copy
+  // of the resolved colour). A non-finite resolved colour makes the change non-finite.
+  vec4 resolved = texelFetch(u_resolved, pixel, 0);
+  vec3 delta = texelFetch(u_blurred, pixel, 0).rgb - resolved.rgb;
+  if (!(resolved.a > 0.0 && finite(vec4(delta, resolved.a))) || all(equal(delta, vec3(0.0)))) discard;
+  vec3 x = delta * (float(u_samples) / count);
   vec3 m = uintBitsToFloat(lowest.rgb);
-  vec3 t = translucent.rgb;
+  vec3 add = x, scale = vec3(1.0);
   bvec3 fits = greaterThanEqual(m + x, vec3(0.0));
-  vec3 pulled = clamp((t + x) / max(t - m, vec3(1e-30)), 0.0, 1.0);
-  pulled = mix(floor(pulled * 2048.0) / 2048.0, vec3(0.0), lessThanEqual(t + x, vec3(0.0)));
-  vec3 scale = mix(pulled, vec3(1.0), fits);
-  vec3 add = mix(-(m * pulled), x, fits);
-  if (any(isnan(add)) || any(isinf(add))) discard;  // an overflowing change leaves the pixel as it was
+  if (!all(fits)) {  // rare: the mean is needed only here
+    vec3 t = texelFetch(u_translucent, pixel, 0).rgb;
+    vec3 pulled = clamp((t + x) / max(t - m, vec3(1e-30)), 0.0, 1.0);
+    pulled = mix(floor(pulled * 2048.0) / 2048.0, vec3(0.0), lessThanEqual(t + x, vec3(0.0)));
+    scale = mix(pulled, vec3(1.0), fits);
+    add = mix(-(m * pulled), x, fits);
+  }
+  if (!finite(vec4(add, 0.0))) discard;  // an overflowing change leaves the pixel as it was
   o_add = vec4(add, 0.0);
   o_scale = vec4(scale, 1.0);
 }

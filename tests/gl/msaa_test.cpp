@@ -203,6 +203,35 @@ TEST_F(Msaa, AMultisampledHostStencilLimitsTheFilter) {
   }
   EXPECT_GT(outside, kW * kH / 8);
   EXPECT_GT(changed_inside, inside * 9 / 10);
+
+  // Written back behind the stencil: no sample outside it changes (the write-back reads the blurred
+  // image there too, where the passes copied the resolved colour), and the samples inside resolve to
+  // the filtered output.
+  const auto before = read_samples(color, kW, kH, 4);
+  sss_frame g = frame(color, depth_stencil);
+  g.stencil = &stencil;
+  ASSERT_EQ(sss_apply_frame(sss_, &g), SSS_OK) << sss_last_error(sss_);
+  const auto after = read_samples(color, kW, kH, 4);
+  int outside_changed = 0, inside_checked = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    for (std::size_t i = 0; i < 4; ++i) {
+      const bool same = std::memcmp(&before[i][p * 4], &after[i][p * 4], 4 * sizeof(float)) == 0;
+      if (coarse.stencil[p] == 0) outside_changed += same ? 0 : 1;
+    }
+    if (coarse.stencil[p] == 0 || !(coarse.color[p * 4 + 3] > 0.0f)) continue;
+    bool clamped = false;
+    for (std::size_t i = 0; i < 4; ++i) {
+      for (std::size_t c = 0; c < 3; ++c) clamped = clamped || (after[i][p * 4 + c] == 0.0f && before[i][p * 4 + c] != 0.0f);
+    }
+    if (clamped) continue;
+    ++inside_checked;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float mean = (after[0][p * 4 + c] + after[1][p * 4 + c] + after[2][p * 4 + c] + after[3][p * 4 + c]) / 4.0f;
+      EXPECT_NEAR(mean, filtered[p * 4 + c], 1e-5f * std::fmax(1.0f, std::fabs(filtered[p * 4 + c]))) << "pixel " << p;
+    }
+  }
+  EXPECT_EQ(outside_changed, 0);
+  EXPECT_GT(inside_checked, inside / 2);
 }
 
 TEST_F(Msaa, BadMultisampledInputFailsWithASpecificMessageAndChangesNothing) {
@@ -360,9 +389,10 @@ TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
 
 // sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
 // alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
-// stencil-rejected pixels, vertical blur + copy, since they write a separate target), and written
-// back in one draw (GLSL 4.20: gl_SampleMask picks each pixel's translucent samples) or, on a GL
-// 3.3 context, one draw per sample (4 here).
+// stencil-rejected pixels, vertical blur + copy into a separate output; written back, the vertical
+// pass copies nothing: the write-back reads only the pixels the mask let through), and written back
+// in one draw (GLSL 4.20: gl_SampleMask picks each pixel's translucent samples) or, on a GL 3.3
+// context, one draw per sample (4 here).
 TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   const GLuint color = ms(GL_RGBA16F, fine.color);
@@ -378,7 +408,7 @@ TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
       ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     }
     const uint32_t write_back = gl33 ? 4 : 1;
-    const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 2 + write_back};  // into output, written back
+    const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 1 + write_back};  // into output, written back
     const GLuint outputs[2] = {output, 0u};
     for (int i = 0; i < 2; ++i) {
       const sss_frame f = frame(color, depth, outputs[i]);

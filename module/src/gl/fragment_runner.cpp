@@ -98,7 +98,7 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, 
   measure.begin_pixels();
   draw_blur(ctx, p, run, ctx.targets.names().intermediate, term, 1);
   measure.end_pixels();
-  if (run.stencil != nullptr && !run.writes_back()) {
+  if (run.stencil != nullptr && !run.writes_back() && !run.output_outside_stencil_unread) {
     set_stencil_test(f, run.stencil, NOTEQUAL);
     draw_copy(ctx, run.color.name);
   }

@@ -16,7 +16,8 @@ namespace sss::gl {
 namespace {
 sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** resolve, std::string* message) {
   const bool write_back = run.writes_back();
-  sss_result r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, resolve, message);
+  sss_result r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, !run.identity && write_back, resolve,
+                                           message);
   if (r == SSS_OK && !run.identity && run.stencil == nullptr) {
     GLuint unused = 0;
     r = ctx.programs.stencil_mark(&unused, message);
@@ -50,7 +51,6 @@ sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram&
   const math::PassConstants& k = run.resolve_constants;
   f.UseProgram(p.program);
   f.Uniform1i(p.samples, run.color.samples);
-  f.Uniform1i(p.write_back, write_back ? 1 : 0);
   f.Uniform1i(p.depth_mode, static_cast<GLint>(run.depth_resolve));
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
@@ -88,6 +88,10 @@ FilterRun passes_run(const FilterRun& run, const Targets& t, const StencilInput*
   FilterRun inner = resolved_run(run, t);
   if (!run.identity && run.stencil == nullptr) inner.stencil = own;
   inner.stencil_ready = true;
+  // Behind its own mask the write-back reads the blurred image only where the mask let the passes
+  // draw (msaa_write.frag applies the mask's test to the resolved colour), so the rest needs no copy.
+  // Behind the host's stencil it reads pixels outside it too: there the copy makes the change 0.
+  inner.output_outside_stencil_unread = run.writes_back() && run.stencil == nullptr;
   return inner;
 }
 
@@ -167,7 +171,10 @@ sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message
   // Everything built and allocated before the resolve, the first draw.
   sss_result r = prepare_msaa(ctx, run, message);
   ResolveProgram* resolve_program = nullptr;  // built by prepare_msaa: only looked up here
-  if (r == SSS_OK) r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, &resolve_program, message);
+  if (r == SSS_OK) {
+    r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, run.writes_back() && !run.identity,
+                                  &resolve_program, message);
+  }
   if (r == SSS_OK) r = resolve(ctx, run, *resolve_program, message);
   if (r != SSS_OK) return r;
   StencilInput own;

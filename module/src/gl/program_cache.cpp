@@ -202,20 +202,23 @@ void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
   p.normals = f.GetUniformLocation(p.program, "u_normals");
 }
 
-sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message) {
-  ResolveProgram& p = resolve_[linear_depth ? 1 : 0];
+sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out,
+                                      std::string* message) {
+  const int index = (write_back ? 2 : 0) + (linear_depth ? 1 : 0);
+  ResolveProgram& p = resolve_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = msaa_resolve_defines(linear_depth);
+  const std::string defines = msaa_resolve_defines(linear_depth, write_back);
   p.program = link("msaa_resolve.frag", defines, "MSAA resolve shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, linear_depth ? "sss msaa resolve linear" : "sss msaa resolve", nullptr);
+  static const char* const kLabels[4] = {"sss msaa resolve", "sss msaa resolve linear", "sss msaa resolve for write-back",
+                                         "sss msaa resolve linear for write-back"};
+  finish(p.program, kLabels[index], nullptr);
   const Functions& f = *gl_;
   p.samples = f.GetUniformLocation(p.program, "u_samples");
   p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
-  p.write_back = f.GetUniformLocation(p.program, "u_write_back");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
   return SSS_OK;

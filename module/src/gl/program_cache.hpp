@@ -58,7 +58,7 @@ struct StrengthProgram {
 
 struct ResolveProgram {
   GLuint program = 0;
-  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1, write_back = -1;
+  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
 };
 
 struct ProfileDepthProgram {
@@ -89,7 +89,8 @@ class ProgramCache {
   sss_result compute(const BlurVariant& v, int image_format, BlurProgram** out, std::string* message);
   sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
                              std::string* message);
-  sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
+  // `write_back`: the variant that also keeps the translucent samples' mean, lowest values and mask.
+  sss_result msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out, std::string* message);
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
@@ -120,7 +121,7 @@ class ProgramCache {
   std::array<BlurProgram, kBlurVariantCount> blur_{};
   std::array<BlurProgram, kComputeVariantCount> compute_{};
   std::array<CbfProgram, kCbfVariantCount> cbf_{};
-  std::array<ResolveProgram, 2> resolve_{};  // index: host depth is linear
+  std::array<ResolveProgram, 4> resolve_{};  // index: 2 · writes back + host depth is linear
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
   StrengthProgram strength_combine_;

@@ -57,8 +57,8 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
   return defines;
 }
 
-std::string msaa_resolve_defines(bool linear_depth) {
-  return linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
+std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
+  return profile_depth_defines(linear_depth) + (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n");
 }
 
 std::string lut_defines(int kind) {

@@ -48,8 +48,9 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format);
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
 
-// The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH.
-std::string msaa_resolve_defines(bool linear_depth);
+// The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH × SSS_WRITE_BACK (the translucent
+// samples' outputs for the write-back).
+std::string msaa_resolve_defines(bool linear_depth, bool write_back);
 // The MSAA write-back (msaa_write.frag): SSS_SAMPLE_MASK_OUTPUT, 1 where the dialect has
 // gl_SampleMask (GLSL 4.20 here): one draw; else one draw per sample under glSampleMaski.
 inline bool msaa_write_in_one_draw(GlslVariant v) { return v == GlslVariant::glsl420; }
@@ -57,7 +58,9 @@ inline std::string msaa_write_defines(GlslVariant v) {
   return msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n";
 }
 // Per-pixel profiles' view distance and index (profile_depth.frag): SSS_LINEAR_DEPTH.
-inline std::string profile_depth_defines(bool linear_depth) { return msaa_resolve_defines(linear_depth); }
+inline std::string profile_depth_defines(bool linear_depth) {
+  return linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
+}
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 
