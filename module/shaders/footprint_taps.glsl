@@ -10,7 +10,11 @@
 //   struct TapSite      what the shader needs to find this pixel's taps
 //   vec4 sss_fetch_tap(TapSite site, float offset)
 //                       the pixel `offset` pixels from the centre along the pass's axis, kept in
-//                       u_clamp: rgb its colour, a its raw depth (read only with SSS_FOLLOW_SURFACE)
+//                       u_clamp: rgb its colour, a its depth (read only with SSS_FOLLOW_SURFACE)
+//   SSS_TAP_DISTANCE(a) that depth as a view distance (the fragment passes read view distances
+//                       already; the compute path linearises the host's depth)
+//   SSS_TAPS_SANITISED  1: a tap whose colour is not finite or past colour_range.glsl's bound
+//                       has colour 0 and distance NaN already (the fragment passes' inputs)
 //   bool sss_tap_foreign   (SSS_PROFILE_IDS only) set by sss_fetch_tap: the pixel it read has
 //                       another profile or object index than the centre, and counts as the centre
 
@@ -25,14 +29,12 @@ layout(std140) uniform SssProfileTables {
 int sss_table_base;
 float sss_inv_two_variance;
 #define SSS_CDF(j) u_tables[sss_table_base + (j)]
-#define SSS_TAP_DISTANCE(a) (a)  // the module's copy holds view distances (profile_depth.frag)
 #define SSS_FOOTPRINT u_tables[sss_table_base + SSS_CDF_ENTRIES]
 #define SSS_INV_TWO_VARIANCE sss_inv_two_variance
 #else
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
 uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
 #define SSS_CDF(j) u_cdf[j]
-#define SSS_TAP_DISTANCE(a) view_distance(a)
 #define SSS_FOOTPRINT u_footprint
 #if SSS_FOLLOW_SURFACE == 2
 uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
@@ -64,7 +66,12 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 // follow-surface it is blended back to the centre's as its depth leaves the kernel's reach.
 vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
   vec3 tap = fetched.rgb;
+#if SSS_TAPS_SANITISED && SSS_FOLLOW_SURFACE
+  // The fragment passes' inputs hold such a tap as colour 0 at distance NaN (pass_inputs.frag),
+  // which the blend below turns into the centre exactly (mix(0, centre, 1)): no test per tap.
+#else
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
+#endif
 #if SSS_FOLLOW_SURFACE
   float d = follow_surface * abs(centre_distance - SSS_TAP_DISTANCE(fetched.a));
 #if SSS_FOLLOW_SURFACE == 2

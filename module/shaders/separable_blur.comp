@@ -66,6 +66,8 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
   return vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
 }
 
+#define SSS_TAP_DISTANCE(a) view_distance(a)  // the cache holds the host's raw depth
+#define SSS_TAPS_SANITISED 0                   // and the host's colour as it is
 #include "footprint_taps.glsl"
 
 void write_untouched(ivec2 pixel, vec4 centre) {

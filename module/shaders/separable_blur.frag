@@ -1,14 +1,22 @@
 // One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
-// along `u_axis`, its footprint scaled per pixel by depth and by the strength in alpha, taps blended
-// back to the centre colour as their depth leaves the kernel's reach (follow-surface). A kernel of
-// several separable terms (sum of Gaussians, SVD rank N) runs this pair of passes once per term; the
+// along `u_axis`, its footprint scaled per pixel by depth and by the strength, taps blended back to
+// the centre colour as their depth leaves the kernel's reach (follow-surface). A kernel of several
+// separable terms (sum of Gaussians, SVD rank N) runs this pair of passes once per term; the
 // vertical pass of a later term adds the earlier terms' sum (SSS_ACCUMULATE).
+//
+// Inputs (pass_inputs.frag draws them first): u_source holds per pixel the colour's float bits
+// (rgb) and its view distance's (a) in one RGBA32UI texel: the module's copy of the host's colour
+// for the horizontal pass, the horizontal pass's result for the vertical one. So a tap is one fetch,
+// and no depth is linearised per tap. The strength (the colour's alpha) is read at the centre only.
 //
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp):
 //   SSS_OUTSIDE   what a pixel that is not blurred writes: 0 its own value (horizontal pass, which
 //                 fills the intermediate everywhere), 1 nothing (discard: vertical pass writing back
 //                 into the host's colour), 2 the host's original colour (vertical pass into a
 //                 separate output texture)
+//   SSS_PACKED_OUTPUT  1: the horizontal pass: writes RGBA32UI like its input (the blurred colour's
+//                      bits, rounded to half where u_round_to_half says, and the centre's distance
+//                      word unchanged); 0: a vertical pass, which writes colour
 //   SSS_FOLLOW_SURFACE  0 off; 1 the linear ramp to the kernel's reach; 2 the exact depth correction
 //                       of a Gaussian term (supplementary §E): blend by 1 - exp(-dz² / 2v), dz in
 //                       profile millimetres
@@ -16,21 +24,20 @@
 //                       of their cell chosen by per-pixel integer-hash noise (supplementary Fig.
 //                       S.6-S.7); their weights stay the cells'
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
-//   SSS_LINEAR_DEPTH    0: hardware depth, linearised with the projection; 1: view distance
+//   SSS_LINEAR_DEPTH    unused here (pass_inputs.frag linearises); the compute variant reads it
 //   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
-//   SSS_PROFILE_IDS     1: per-pixel profiles (sss_frame.profile_texture): depth and index come from
-//                       the module's RG32UI copy (profile_depth.frag, unit 4) in one fetch, the
-//                       depth as a view distance already (SSS_TAP_DISTANCE is then the identity); the
-//                       centre's index (value & 15) picks its profile's table (a uniform block of
-//                       SSS_PROFILES) and u_profile[] entry; an index >= u_profile_count leaves the
-//                       pixel alone; taps whose whole value (profile and object) differs count as
-//                       the centre
+//   SSS_PROFILE_IDS     per-pixel profiles (sss_frame.profile_texture): 0 none; 1 an R8UI index,
+//                       which pass_inputs.frag put in the low byte of the distance word; 2 an R16UI
+//                       one, read per tap from the host's texture (unit 4). The centre's index
+//                       (value & 15) picks its profile's table (a uniform block of SSS_PROFILES)
+//                       and u_profile[] entry; an index >= u_profile_count leaves the pixel alone;
+//                       taps whose whole value (profile and object) differs count as the centre
 // and from the dialect's header (version_*.glsl, module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
 // The pieces it includes (the module expands #include, module/src/gl/shader_source.cpp):
 // nearest_half.glsl (sss_nearest_half: the written colour rounded to half float where the target is
-// one, u_round_to_half), depth.glsl (view_distance, clip_w), jitter.glsl and footprint_taps.glsl
+// one, u_round_to_half), depth.glsl (clip_w), jitter.glsl and footprint_taps.glsl
 // (the taps and their weights: footprint_sum, shared with separable_blur.comp).
 
 #include "nearest_half.glsl"
@@ -38,8 +45,8 @@
 #include "depth.glsl"
 #include "jitter.glsl"
 
-SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour, then the intermediate)
-SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
+SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits (pass_inputs.frag)
+SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
 #if SSS_OUTSIDE == 2
 SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
 #endif
@@ -52,14 +59,37 @@ uniform float u_follow_surface;       // 1 / the kernel's reach in world units (
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
 
 #if SSS_PROFILE_IDS
-SSS_BINDING(4) uniform highp usampler2D u_depth_ids;  // per pixel: view distance bits, profile (bits 0-3), object
+#if SSS_PROFILE_IDS == 2
+SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R16UI: profile (bits 0-3), object
+#endif
 uniform vec4 u_profile[SSS_PROFILES];  // per profile: pixels per mm along u_axis, follow-surface factor, 1/(2v)
 uniform int u_profile_count;           // the profiles set (sss_set_profiles)
 uint sss_centre_id;                    // the centre pixel's whole index
 bool sss_tap_foreign;                  // the last tap sss_fetch_tap read has another index
 #endif
 
+#if SSS_PACKED_OUTPUT
+out uvec4 o_packed;
+#else
 out vec4 o_color;
+#endif
+
+// A texel's distance word as a view distance: with R8UI indices its low byte is the index.
+float sss_distance(uint word) {
+#if SSS_PROFILE_IDS == 1
+  return uintBitsToFloat(word & 0xFFFFFF00u);
+#else
+  return uintBitsToFloat(word);
+#endif
+}
+// A texel's profile and object index.
+uint sss_index(uint word, ivec2 texel) {
+#if SSS_PROFILE_IDS == 2
+  return texelFetch(u_profile_ids, texel, 0).r;
+#else
+  return word & 0xFFu;
+#endif
+}
 
 // footprint_taps.glsl's tap reads: straight from the textures, around the fragment.
 struct TapSite {
@@ -69,22 +99,23 @@ struct TapSite {
 vec4 sss_fetch_tap(TapSite site, float offset) {
   vec2 position = clamp(site.centre + u_axis * offset, u_clamp.xy, u_clamp.zw);
   ivec2 texel = ivec2(position);
+  uvec4 t = texelFetch(u_source, texel, 0);
 #if SSS_PROFILE_IDS
-  uvec2 depth_id = texelFetch(u_depth_ids, texel, 0).rg;
-  sss_tap_foreign = depth_id.y != sss_centre_id;
-  return vec4(texelFetch(u_source, texel, 0).rgb, uintBitsToFloat(depth_id.x));  // a view distance already
-#elif SSS_FOLLOW_SURFACE
-  return vec4(texelFetch(u_source, texel, 0).rgb, texelFetch(u_depth, texel, 0).r);
-#else
-  return vec4(texelFetch(u_source, texel, 0).rgb, 0.0);
+  sss_tap_foreign = sss_index(t.a, texel) != sss_centre_id;
 #endif
+  return vec4(uintBitsToFloat(t.rgb), sss_distance(t.a));
 }
 
+#define SSS_TAP_DISTANCE(a) (a)  // sss_fetch_tap returns view distances
+#define SSS_TAPS_SANITISED 1     // pass_inputs.frag: out-of-range colours are 0 at distance NaN
 #include "footprint_taps.glsl"
 
-void leave_untouched(ivec2 pixel, vec4 centre) {
-#if SSS_OUTSIDE == 0
-  o_color = centre;
+// `texel`: the pixel's own input texel.
+void leave_untouched(ivec2 pixel, uvec4 texel) {
+#if SSS_OUTSIDE == 0 && SSS_PACKED_OUTPUT
+  o_packed = texel;
+#elif SSS_OUTSIDE == 0
+  o_color = vec4(uintBitsToFloat(texel.rgb), 0.0);
 #elif SSS_OUTSIDE == 1
   discard;
 #else
@@ -94,33 +125,29 @@ void leave_untouched(ivec2 pixel, vec4 centre) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 centre = texelFetch(u_source, pixel, 0);
+  uvec4 texel = texelFetch(u_source, pixel, 0);
+  vec4 centre = vec4(uintBitsToFloat(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
   // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
   // pixel keeps its own value.
   if (!(centre.a > 0.0) || !sss_in_range(centre)) {
-    leave_untouched(pixel, centre);
+    leave_untouched(pixel, texel);
     return;
   }
   float strength = min(centre.a, 1.0);  // alpha is documented as 0..1; more must not widen the kernel
-#if SSS_PROFILE_IDS
-  uvec2 centre_depth_id = texelFetch(u_depth_ids, pixel, 0).rg;
-  float centre_distance = uintBitsToFloat(centre_depth_id.x);
-#else
-  float centre_distance = view_distance(texelFetch(u_depth, pixel, 0).r);
-#endif
+  float centre_distance = sss_distance(texel.a);
   float w = clip_w(centre_distance);
   // Behind the camera, on an infinite far plane, or NaN. isnan() and not only !(w > 0.0): on
   // NVIDIA's driver (580) the negated comparison behaved as the opposite one, which a NaN passes.
   if (isnan(w) || !(w > 0.0) || isinf(w)) {
-    leave_untouched(pixel, centre);
+    leave_untouched(pixel, texel);
     return;
   }
 
 #if SSS_PROFILE_IDS
-  sss_centre_id = centre_depth_id.y;
+  sss_centre_id = sss_index(texel.a, pixel);
   int profile = int(sss_centre_id & 15u);
   if (profile >= u_profile_count) {  // no profile set for this index: documented as left alone
-    leave_untouched(pixel, centre);
+    leave_untouched(pixel, texel);
     return;
   }
   sss_table_base = profile * (SSS_CDF_ENTRIES + 1);
@@ -137,7 +164,9 @@ void main() {
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif
-#if SSS_OUTSIDE == 2
+#if SSS_PACKED_OUTPUT
+  o_packed = uvec4(floatBitsToUint(sss_nearest_half(vec4(sum, 0.0)).rgb), texel.a);
+#elif SSS_OUTSIDE == 2
   o_color = sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a));
 #else
   o_color = sss_nearest_half(vec4(sum, centre.a));

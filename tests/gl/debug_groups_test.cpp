@@ -59,9 +59,11 @@ TEST_F(DebugGroups, NamedAndBalanced) {
   // still runs under the sanitizers on OSMesa, and everywhere in the release build.
   if (test_backend() != SSS_HEADLESS_OSMESA) GTEST_SKIP() << "LeakSanitizer tracer crash with EGL debug output";
 #endif
-  // The plain fragment path: the two passes.
+  // The plain fragment path: the passes' inputs, then the two passes.
   const std::vector<std::string> plain = {
-      "push sss_apply",          "push sss horizontal pass", "pop sss horizontal pass",
+      "push sss_apply",          "push sss pass inputs (colour and view distance)",
+      "pop sss pass inputs (colour and view distance)",
+      "push sss horizontal pass", "pop sss horizontal pass",
       "push sss vertical pass",  "pop sss vertical pass",    "pop sss_apply"};
   EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT), plain);
   sss_destroy(sss_);
@@ -69,6 +71,7 @@ TEST_F(DebugGroups, NamedAndBalanced) {
   // The masked path (the default's choice on a software rasteriser): the stencil mark first.
   const std::vector<std::string> masked = {
       "push sss_apply",          "push sss stencil from alpha", "pop sss stencil from alpha",
+      "push sss pass inputs (colour and view distance)", "pop sss pass inputs (colour and view distance)",
       "push sss horizontal pass", "pop sss horizontal pass",    "push sss vertical pass",
       "pop sss vertical pass",   "pop sss_apply"};
   EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT_MASKED), masked);

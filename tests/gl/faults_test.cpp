@@ -168,7 +168,8 @@ TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers)
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
   const Textures t = make_scene(20, 16, Depth::linear);  // linear depth: variants create did not build
   faults().break_shader_sources = 1;
-  expect_failure_leaves_nothing(sss_, t, false, SSS_ERROR_SHADER_COMPILE, "separable blur shader", nullptr);
+  // The frame's first program create did not build: its passes' inputs on linear depth.
+  expect_failure_leaves_nothing(sss_, t, false, SSS_ERROR_SHADER_COMPILE, "pass inputs shader", nullptr);
   EXPECT_EQ(faults().shader_sources_broken, 1);
   EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
   const std::vector<float> got = read_rgba(t.color, 20, 16);
@@ -185,7 +186,7 @@ TEST_F(Faults, OutOfMemoryOnTheIntermediateTargetAndRecovery) {
   // First frame: the module has no target yet.
   const Textures first = make_scene(24, 20, Depth::hardware);
   faults().huge_intermediate_targets = 1;
-  expect_failure_leaves_nothing(sss_, first, false, SSS_ERROR_OUT_OF_MEMORY, "intermediate", nullptr);
+  expect_failure_leaves_nothing(sss_, first, false, SSS_ERROR_OUT_OF_MEMORY, "pass input", nullptr);
   const GlObjectCounts without_target = objects();
   EXPECT_EQ(apply(sss_, first, false), SSS_OK) << sss_last_error(sss_);
   std::vector<float> got = read_rgba(first.color, 24, 20);
@@ -197,11 +198,12 @@ TEST_F(Faults, OutOfMemoryOnTheIntermediateTargetAndRecovery) {
   faults().huge_intermediate_targets = 1;
   GlObjectCounts one_fewer = with_target;
   one_fewer.count[0] -= 1;
-  expect_failure_leaves_nothing(sss_, resized, false, SSS_ERROR_OUT_OF_MEMORY, "31x17 RGBA16F intermediate",
+  expect_failure_leaves_nothing(sss_, resized, false, SSS_ERROR_OUT_OF_MEMORY, "31x17 RGBA32UI pass input",
                                 &one_fewer);
   EXPECT_EQ(apply(sss_, resized, false), SSS_OK) << sss_last_error(sss_);
   EXPECT_EQ(objects(), with_target);
-  EXPECT_EQ(without_target.count[0] + 1, with_target.count[0] - 2) << "two host textures were made in between";
+  // The passes' three targets (inputs, strength, intermediate), and two host textures made in between.
+  EXPECT_EQ(without_target.count[0] + 3, with_target.count[0] - 2);
   const int from_driver = faults().out_of_memory_from_driver, injected = faults().out_of_memory_injected;
   EXPECT_EQ(from_driver + injected, 2);
   RecordProperty("out_of_memory_from_driver", from_driver);
@@ -217,10 +219,11 @@ TEST_F(Faults, OutOfMemoryOnTheStencilCopyAndRecovery) {
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
   const Textures t = make_scene(16, 16, Depth::stencil);
   faults().fail_renderbuffer_storage = 1;
-  // The intermediate target was made before the stencil copy failed (it stays, for the next
-  // frame); the renderbuffer is given up.
+  // The passes' three targets and their framebuffers were made before the stencil copy failed
+  // (they stay, for the next frame); the renderbuffer is given up.
   GlObjectCounts with_intermediate = objects();
-  with_intermediate.count[0] += 1;
+  with_intermediate.count[0] += 3;
+  with_intermediate.count[2] += 3;
   expect_failure_leaves_nothing(sss_, t, true, SSS_ERROR_OUT_OF_MEMORY, "stencil copy", &with_intermediate);
   EXPECT_EQ(apply(sss_, t, true), SSS_OK) << sss_last_error(sss_);
   with_intermediate.count[3] += 1;  // and now the stencil copy
@@ -257,17 +260,15 @@ TEST_F(Faults, AGlErrorFromTheDrawsSaysTheTargetMayBePartlyWritten) {
   EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
 }
 
-// Every allocation comes before the first draw: an out-of-memory on the MSAA path (the intermediate
-// target of the single-sample passes, which it used to allocate after its resolve draw) fails with
-// no draw made, the host's samples and state as they were.
+// Every allocation comes before the first draw: an out-of-memory on the MSAA path (the inputs
+// target of the single-sample passes, allocated after the MSAA path's own targets and once used to
+// be allocated after its resolve draw) fails with no draw made, the host's samples and state as they were.
 TEST_F(Faults, TheMsaaPathAllocatesEverythingBeforeItsFirstDraw) {
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (is_gles() || max_samples < 4) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
   const int w = 24, h = 20;
   const SyntheticScene fine = make_relief_scene(2 * w, 2 * h, 3, kCamera);
-  // RGBA32F: its intermediate is too, after the MSAA targets of the colour's format (the resolved
-  // colour and, written back, the blurred image), which the fault lets through.
   const GLuint color = make_multisample_texture(GL_RGBA32F, w, h, 4, fine.color);
   const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, w, h, 4, fine.window_depth);
   textures_.insert(textures_.end(), {color, depth});
@@ -284,13 +285,12 @@ TEST_F(Faults, TheMsaaPathAllocatesEverythingBeforeItsFirstDraw) {
     const Snapshot state = take_snapshot();
     reset_faults();
     faults().huge_intermediate_targets = 1;
-    faults().huge_target_format = GL_RGBA32F;
-    faults().huge_target_skip = in_place ? 2 : 1;
+    faults().huge_target_format = GL_RGBA32UI;
     const sss_frame f = frame_of(color, depth, output);
     EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_OUT_OF_MEMORY) << sss_last_error(sss_);
     EXPECT_EQ(faults().draws, 0) << "drawn before the allocation that failed";
     const std::string message = sss_last_error(sss_);
-    EXPECT_NE(message.find("intermediate"), std::string::npos) << message;
+    EXPECT_NE(message.find("pass input"), std::string::npos) << message;
     EXPECT_EQ(message.find("partly written"), std::string::npos) << message;
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     EXPECT_EQ(describe_differences(state, take_snapshot()), "");

@@ -69,7 +69,7 @@ TEST_F(Variant, FramesLogAllocationsAtDebugAndFailuresAtErrorWithTheLastErrorTex
   c.half_color = true;
   describe_frame(c, 24, 16, &frame);
   ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_OK) << sss_last_error(sss_);
-  EXPECT_TRUE(log.has(SSS_LOG_DEBUG, "allocated the 24x16 RGBA16F intermediate target"));
+  EXPECT_TRUE(log.has(SSS_LOG_DEBUG, "allocated the 24x16 RGBA32UI pass input (colour and view distance)"));
   EXPECT_EQ(log.count(SSS_LOG_ERROR), 0);
   frame.color_texture = 0;
   ASSERT_EQ(sss_apply_frame(sss_, &frame), SSS_ERROR_INVALID_TEXTURE);

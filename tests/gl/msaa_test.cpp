@@ -388,11 +388,11 @@ TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
 }
 
 // sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
-// alpha, then the single-sample passes on the resolved images (horizontal blur + copy of the
-// stencil-rejected pixels, vertical blur + copy into a separate output; written back, the vertical
-// pass copies nothing: the write-back reads only the pixels the mask let through), and written back
-// in one draw (GLSL 4.20: gl_SampleMask picks each pixel's translucent samples) or, on a GL 3.3
-// context, one draw per sample (4 here).
+// alpha, then the single-sample passes on the resolved images (their inputs, which also fill the
+// stencil-rejected pixels of the horizontal pass's target, horizontal blur, vertical blur + copy
+// into a separate output; written back, the vertical pass copies nothing: the write-back reads only
+// the pixels the mask let through), and written back in one draw (GLSL 4.20: gl_SampleMask picks
+// each pixel's translucent samples) or, on a GL 3.3 context, one draw per sample (4 here).
 TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   const GLuint color = ms(GL_RGBA16F, fine.color);
@@ -408,7 +408,7 @@ TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
       ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     }
     const uint32_t write_back = gl33 ? 4 : 1;
-    const uint32_t expected[2] = {1 + 1 + 2 + 2, 1 + 1 + 2 + 1 + write_back};  // into output, written back
+    const uint32_t expected[2] = {1 + 1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + 1 + write_back};  // into output, written back
     const GLuint outputs[2] = {output, 0u};
     for (int i = 0; i < 2; ++i) {
       const sss_frame f = frame(color, depth, outputs[i]);

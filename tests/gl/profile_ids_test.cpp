@@ -6,11 +6,17 @@
 // centre's colour, which is exactly what the follow-surface blend does to a tap beyond the kernel's
 // reach in depth (mix(tap, centre, 1) is the centre, bit for bit). So each material's pixels, run
 // with its neighbours' indices, must equal the same profile run alone on a frame where every other
-// material's pixels are pushed far behind: bit for bit, on every pixel of the material, its border
-// included. Its interior (the pixels the push does not change) must equal the plain single-profile
-// run of the unchanged frame too.
+// material's pixels are pushed far behind: bit for bit with R16UI indices, on every pixel of the
+// material, its border included. Its interior (the pixels the push does not change) must equal the
+// plain single-profile run of the unchanged frame too. With R8UI indices the module carries the
+// index in the low byte of each pixel's view distance (pass_inputs.frag: one fetch per tap), which
+// moves the distance by up to 3e-5 of itself, and the follow-surface blend by about as much: a
+// change far below a half-float step, which can still flip the rounding of the RGBA16F intermediate
+// once and of the output once more. There the results agree to two half-float steps (2^-9 of the
+// value), the precision of the RGBA16F colour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -103,11 +109,12 @@ class ProfileIds : public GlTest {
     f.profile_format = ids != 0 ? ids_format : 0;
     return sss_apply_frame(sss_, &f);
   }
-  std::vector<float> run_profiles(const sss_settings* profiles, uint32_t count, const std::function<unsigned(int, int)>& id) {
+  std::vector<float> run_profiles(const sss_settings* profiles, uint32_t count, const std::function<unsigned(int, int)>& id,
+                                  bool sixteen = false) {
     fresh();
     EXPECT_EQ(sss_set_profiles(sss_, profiles, count), SSS_OK) << sss_last_error(sss_);
     const Inputs in = make_inputs();
-    EXPECT_EQ(apply(in, make_ids(id)), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(apply(in, make_ids(id, sixteen), sixteen ? GL_R16UI : GL_R8UI), SSS_OK) << sss_last_error(sss_);
     return read_rgba(in.color, kW, kH);
   }
   std::vector<float> run_single(const sss_settings& s, const std::function<bool(int, int)>& far = nullptr) {
@@ -120,7 +127,8 @@ class ProfileIds : public GlTest {
 
   // Two materials in one frame (one pass pair), the second's pixels holding `second_value`,
   // against each run alone with the other pushed away (see the top of this file).
-  void expect_each_material_alone(const sss_settings profiles[2], unsigned second_value);
+  // `sixteen`: R16UI indices (bit for bit), else R8UI (to two half-float steps).
+  void expect_each_material_alone(const sss_settings profiles[2], unsigned second_value, bool sixteen);
 
   SyntheticScene scene_;
   sss_settings first_{};
@@ -133,11 +141,21 @@ bool same_rgb(const std::vector<float>& a, const std::vector<float>& b, int x, i
   return std::memcmp(&a[i], &b[i], 3 * sizeof(float)) == 0;
 }
 
-void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsigned second_value) {
+// rgb of pixel (x, y) in a and b at most two half-float steps apart (2^-9 of the larger value).
+bool half_step_rgb(const std::vector<float>& a, const std::vector<float>& b, int x, int y) {
+  const std::size_t i = (static_cast<std::size_t>(y) * kW + x) * 4;
+  for (std::size_t c = i; c < i + 3; ++c) {
+    if (std::fabs(a[c] - b[c]) > std::ldexp(std::max(std::fabs(a[c]), std::fabs(b[c])), -9)) return false;
+  }
+  return true;
+}
+
+void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsigned second_value, bool sixteen) {
   const auto left = [](int x, int) { return x < kBoundary; };
   const auto right = [](int x, int) { return x >= kBoundary; };
+  const auto agree = sixteen ? same_rgb : half_step_rgb;
   const std::vector<float> mixed =
-      run_profiles(profiles, 2, [&](int x, int) { return x < kBoundary ? 0u : second_value; });
+      run_profiles(profiles, 2, [&](int x, int) { return x < kBoundary ? 0u : second_value; }, sixteen);
   const std::vector<float> first_alone = run_single(profiles[0], right);
   const std::vector<float> second_alone = run_single(profiles[1], left);
   const std::vector<float> first_plain = run_single(profiles[0]);
@@ -148,10 +166,10 @@ void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsi
       const bool first = x < kBoundary;
       const std::vector<float>& alone = first ? first_alone : second_alone;
       const std::vector<float>& plain = first ? first_plain : second_plain;
-      if (!same_rgb(mixed, alone, x, y)) ++mismatches;
+      if (!agree(mixed, alone, x, y)) ++mismatches;
       if (same_rgb(alone, plain, x, y)) {  // the other material out of reach: the interior
         ++interior[first ? 0 : 1];
-        if (!same_rgb(mixed, plain, x, y)) ++interior_mismatches;
+        if (!agree(mixed, plain, x, y)) ++interior_mismatches;
       }
     }
   }
@@ -170,13 +188,19 @@ void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsi
 
 TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAlone) {
   const sss_settings profiles[2] = {first_, second_look(first_)};
-  expect_each_material_alone(profiles, 1u);
+  expect_each_material_alone(profiles, 1u, false);
+}
+
+TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAloneBitForBitWithR16UI) {
+  const sss_settings profiles[2] = {first_, second_look(first_)};
+  expect_each_material_alone(profiles, 1u, true);
 }
 
 TEST_F(ProfileIds, EachMaterialMatchesItsProfileRunAloneOnLinearDepth) {
   linear_depth_ = true;
   const sss_settings profiles[2] = {first_, second_look(first_)};
-  expect_each_material_alone(profiles, 1u);
+  expect_each_material_alone(profiles, 1u, false);
+  expect_each_material_alone(profiles, 1u, true);
 }
 
 // Against the CPU model of the per-pixel variant (math::cpu_profile_filter): two profiles and two
@@ -222,7 +246,8 @@ TEST_F(ProfileIds, MatchesTheCpuModel) {
 TEST_F(ProfileIds, EachObjectOfOneMaterialMatchesItsRunAlone) {
   // One profile, two objects (index 0 and 0x10: profile 0, object 1): the object ID alone separates them.
   const sss_settings profiles[2] = {first_, first_};
-  expect_each_material_alone(profiles, 0x10u);
+  expect_each_material_alone(profiles, 0x10u, false);
+  expect_each_material_alone(profiles, 0x10u, true);
 }
 
 TEST_F(ProfileIds, NoLightCrossesBetweenIndicesAtTheSameDepth) {
@@ -290,7 +315,12 @@ TEST_F(ProfileIds, EveryPathAndR16UIGiveTheSameImage) {
   ASSERT_EQ(sss_set_profiles(sss_, profiles, 2), SSS_OK);
   const Inputs in = make_inputs();
   ASSERT_EQ(apply(in, make_ids(id, true), GL_R16UI), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(read_rgba(in.color, kW, kH), fragment) << "R16UI";
+  // R16UI keeps each view distance whole, R8UI drops its low byte for the index (see the top).
+  const std::vector<float> wide = read_rgba(in.color, kW, kH);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) EXPECT_TRUE(half_step_rgb(wide, fragment, x, y)) << "R16UI at " << x << ", " << y;
+  }
+  EXPECT_NE(wide, read_rgba(make_rgba16f(kW, kH, scene_.color), kW, kH)) << "R16UI blurs";
 }
 
 TEST_F(ProfileIds, PixelsOfAnIndexBeyondTheProfilesAreLeftAlone) {

@@ -105,8 +105,8 @@ TEST_F(Stats, CountersAndVariantWithoutTheFlagAndNoMeasurements) {
   ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK);
   st = stats();
   EXPECT_EQ(st.frames, 4u);
-  EXPECT_EQ(st.last_frame_passes, 2u);  // horizontal and vertical blur, no stencil: no copies
-  EXPECT_EQ(st.passes, 8u);
+  EXPECT_EQ(st.last_frame_passes, 3u);  // the inputs, horizontal and vertical blur, no stencil: no copies
+  EXPECT_EQ(st.passes, 12u);
   EXPECT_EQ(st.measured, 0u) << "measurements without SSS_CREATE_STATS";
   EXPECT_EQ(st.measured_frame, 0u);
   // A failed frame counts nothing.

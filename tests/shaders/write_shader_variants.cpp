@@ -9,6 +9,9 @@
 // order of their numbers, to the same name + ".parts".
 // sss_shader_variants --name-log <stage file>: the validator's log (stdin) with its locations named
 // by the module's own gl::name_log_sources, from the stage's .parts.
+// sss_shader_variants --tap-fetches: the texture fetches one tap of a preprocessed blur stage
+// (stdin, glslangValidator -E) makes: those in sss_fetch_tap's body and in the bodies of the
+// functions it calls (for the shaders.tap_fetches test, cmake/SssCountTapFetches.cmake).
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -60,8 +63,8 @@ const char* dialect_prefix(gl::GlslVariant v) {
 
 std::string blur_name(const gl::BlurVariant& v) {
   char name[64];
-  std::snprintf(name, sizeof name, "o%d_f%d_l%d_j%d_p%d", static_cast<int>(v.outside), v.follow_surface,
-                v.linear_depth ? 1 : 0, v.jitter ? 1 : 0, v.profile_ids ? 1 : 0);
+  std::snprintf(name, sizeof name, "o%d_f%d_l%d_j%d_p%d_k%d", static_cast<int>(v.outside), v.follow_surface,
+                v.linear_depth ? 1 : 0, v.jitter ? 1 : 0, v.profile_ids, v.packed_output ? 1 : 0);
   return name;
 }
 
@@ -71,12 +74,15 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   out->write(d + "fullscreen.vert", gl::vertex_recipe(dialect));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
-  for (int linear = 0; linear < 2; ++linear) {
-    out->write(d + "profile_depth_l" + std::to_string(linear) + ".frag",
-               gl::stage_recipe(dialect, "profile_depth.frag", gl::profile_depth_defines(linear != 0)));
+  for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {
+    const gl::PassInputsVariant v = gl::pass_inputs_variant_at(i);
+    out->write(d + "pass_inputs_l" + std::to_string(v.linear_depth ? 1 : 0) + "_p" + std::to_string(v.profile_ids) +
+                   "_f" + std::to_string(v.fill_intermediate ? 1 : 0) + ".frag",
+               gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
+    if (!gl::is_fragment_blur_variant(v)) continue;
     out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + ".frag",
                gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
   }
@@ -112,7 +118,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
 void write_compute(Writer* out) {
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     const gl::BlurVariant v = gl::blur_variant_at(i);
-    if (v.accumulate || v.profile_ids) continue;  // per-pixel profiles run on the fragment passes
+    if (!gl::is_compute_blur_variant(v)) continue;
     for (int format = 0; format < gl::kComputeImageFormatCount; ++format) {
       out->write("430_blur_compute_" + blur_name(v) + '_' + gl::kComputeImageFormats[format].qualifier + ".comp",
                  gl::compute_recipe(gl::compute_blur_defines(v, format)));
@@ -131,10 +137,56 @@ int name_log(const std::string& stage) {
   return files.empty() ? 1 : 0;
 }
 
+// The body of function `name` in `text` (between its definition's braces), or "" where it is not defined.
+std::string function_body(const std::string& text, const std::string& name) {
+  for (std::size_t at = text.find(name + '('); at != std::string::npos; at = text.find(name + '(', at + 1)) {
+    const std::size_t close = text.find(')', at);
+    const std::size_t open = text.find_first_not_of(" \t\n", close + 1);
+    if (close == std::string::npos || open == std::string::npos || text[open] != '{') continue;  // a call
+    int depth = 0;
+    for (std::size_t i = open; i < text.size(); ++i) {
+      if (text[i] == '{') ++depth;
+      if (text[i] == '}' && --depth == 0) return text.substr(open, i - open + 1);
+    }
+  }
+  return "";
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Fetches (texelFetch, texture) of sss_fetch_tap, following the calls it makes one level down into
+// the stage's own sss_* functions.
+int tap_fetches() {
+  std::ostringstream in;
+  in << std::cin.rdbuf();
+  const std::string text = in.str();
+  const std::string body = function_body(text, "sss_fetch_tap");
+  if (body.empty()) return -1;
+  const auto fetches = [](const std::string& b) { return count(b, "texelFetch(") + count(b, "texture("); };
+  int n = fetches(body);
+  for (std::size_t at = body.find("sss_"); at != std::string::npos; at = body.find("sss_", at + 1)) {
+    const std::size_t end = body.find('(', at);
+    if (end == std::string::npos) break;
+    const std::string callee = body.substr(at, end - at);
+    if (callee.find_first_of(" ,;=.)") != std::string::npos || callee == "sss_fetch_tap") continue;
+    n += fetches(function_body(text, callee));
+  }
+  return n;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "--name-log") == 0) return name_log(argv[2]);
+  if (argc == 2 && std::strcmp(argv[1], "--tap-fetches") == 0) {
+    const int n = tap_fetches();
+    std::printf("%d\n", n);
+    return n < 0 ? 1 : 0;
+  }
   if (argc != 2) {
     std::fprintf(stderr, "usage: %s <folder> | --name-log <stage file>\n", argv[0]);
     return 2;

@@ -150,14 +150,15 @@ class Soak {
     glFinish();
     const sss_test::GlObjectCounts live = objects();
     // textures, buffers, framebuffers, renderbuffers, vertex arrays, samplers, programs, shaders:
-    // the host's 3 textures; the module's intermediate and two term accumulators (kernels of
-    // several terms only: the soak's eq. (1) never makes them), stencil copy, 4 framebuffers,
-    // vertex array, 3 samplers (colour, depth, nearest for the per-pixel profiles' integer copy, made
-    // with the others at create), the copy and stencil-mark programs (the default path,
-    // SSS_PATH_AUTO, takes the masked passes on Mesa, which mark translucent pixels in the stencil
-    // first) and up to 12 blur variants (the soak's settings: outside x follow-surface x depth kind;
-    // 2 shaders each, flagged for deletion).
-    const std::array<int, 8> most = {3 + 3, 0, 4, 1, 1, 3, 14, 28};
+    // the host's 3 textures; the module's three pass targets (inputs, strength, intermediate; the
+    // two term accumulators are for kernels of several terms only: the soak's eq. (1) never makes
+    // them), stencil copy, 4 framebuffers made at create and 3 for the pass targets, vertex array,
+    // 3 samplers (colour, depth, nearest for the integer targets, made with the others at create),
+    // the copy and stencil-mark programs (the default path, SSS_PATH_AUTO, takes the masked passes
+    // on Mesa, which mark translucent pixels in the stencil first), up to 4 pass-input variants
+    // (depth kind x stencil) and up to 8 blur variants (the soak's settings: the horizontal pass x
+    // follow-surface, the vertical one x outside x follow-surface); 2 shaders each, flagged for deletion.
+    const std::array<int, 8> most = {3 + 3, 0, 4 + 3, 1, 1, 3, 14, 28};
     for (std::size_t k = 0; k < most.size(); ++k) {
       if (live.count[k] - objects_without_module_.count[k] > most[k]) {
         fail("GL objects at the end of context " + std::to_string(contexts_) + ": " + live.describe() +

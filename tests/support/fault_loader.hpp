@@ -25,7 +25,7 @@ struct Faults {
   // driver takes it, the image is specified again at the size asked for and GL_OUT_OF_MEMORY is
   // injected instead. The first `huge_target_skip` such images are allocated as asked.
   int huge_intermediate_targets = 0;
-  unsigned huge_target_format = 0x881A;  // GL_RGBA16F
+  unsigned huge_target_format = 0x8D70;  // GL_RGBA32UI
   int huge_target_skip = 0;
   // glRenderbufferStorage: the call goes through, then GL_OUT_OF_MEMORY is injected (the stencil copy).
   int fail_renderbuffer_storage = 0;

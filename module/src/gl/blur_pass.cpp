@@ -16,7 +16,19 @@ BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outsi
   v.linear_depth = run.constants.linear_depth;
   v.jitter = run.kernel->jittered();
   v.accumulate = axis == 1 && term > 0;
-  v.profile_ids = run.has_profiles();
+  return v;
+}
+
+int profile_ids_variant(const FilterRun& run) {
+  if (!run.has_profiles()) return 0;
+  return run.profile_ids.internal_format == static_cast<GLint>(R16UI) ? 2 : 1;
+}
+
+BlurVariant fragment_blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) {
+  BlurVariant v = blur_variant(run, term, axis, outside);
+  v.linear_depth = false;  // pass_inputs.frag linearised
+  v.profile_ids = profile_ids_variant(run);
+  v.packed_output = axis == 0;
   return v;
 }
 
@@ -89,9 +101,14 @@ void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {
   bind_texture(ctx, unit::depth, depth, ctx.objects.depth_sampler);
 }
 
-void bind_profile_inputs(PassContext& ctx, int axis) {
-  // An integer texture is incomplete under GL_LINEAR, even for texelFetch: the nearest sampler.
-  bind_texture(ctx, unit::profile_ids, ctx.targets.names().profile_depth, ctx.objects.nearest_sampler);
+// An integer texture is incomplete under GL_LINEAR, even for texelFetch: the nearest sampler.
+void bind_packed_inputs(PassContext& ctx, GLuint source) {
+  bind_texture(ctx, unit::source, source, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::pass_strength, ctx.targets.names().pass_strength, ctx.objects.nearest_sampler);
+}
+
+void bind_profile_inputs(PassContext& ctx, const FilterRun& run, int axis) {
+  if (profile_ids_variant(run) == 2) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
   ctx.profile_tables->bind(axis);
 }
 

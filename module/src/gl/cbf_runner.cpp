@@ -33,17 +33,16 @@ sss_result build(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal
 
 sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizontal, CbfProgram** vertical,
                    std::string* message) {
-  const int width = run.color.width, height = run.color.height;
   sss_result r = build(ctx, run, horizontal, vertical, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
   // The MSAA path marked or copied the stencil already (stencil_ready): copying "its" stencil
   // again would allocate a stencil copy of format 0 and fail.
-  if (run.stencil != nullptr && !run.stencil_ready) r = copy_stencil(ctx, *run.stencil, width, height, message);
+  if (run.stencil != nullptr && !run.stencil_ready) r = copy_stencil(ctx, run, *run.stencil, message);
   if (r != SSS_OK) return r;
   const Targets& t = ctx.targets.names();
   const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;
-  r = attach_intermediate(ctx, stencil, message);
+  r = attach_stencil(ctx, ctx.targets.names().intermediate_framebuffer, stencil, message);
   if (r == SSS_OK && run.stencil != nullptr) {
     ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.masked_framebuffer);
     ctx.gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil);

@@ -1,10 +1,11 @@
-// The separable fragment passes (Jimenez et al. 2012, §3) on single-sample images. One horizontal
-// and one vertical pass per kernel term: the vertical passes of all terms but the last write the
-// running sum into the module's accumulators, the last adds that sum and writes the output. The
-// host's colour is only written by the very last draw, after every horizontal pass has read it,
-// so it is never read and written at once. With a stencil, the pixels it excludes are copied by
-// the horizontal pass (so the vertical taps find defined values there) and left alone or copied by
-// the vertical one.
+// The separable fragment passes (Jimenez et al. 2012, §3) on single-sample images. First one draw
+// of the passes' inputs (pass_inputs.frag: colour and view distance in one texel, the strength
+// apart), then one horizontal and one vertical pass per kernel term: the vertical passes of all
+// terms but the last write the running sum into the module's accumulators, the last adds that sum
+// and writes the output. The host's colour is only written by the very last draw, after the inputs
+// draw has read it, so it is never read and written at once. With a stencil, the inputs draw also
+// fills the horizontal pass's target (so the vertical taps find defined values where the stencil
+// keeps the horizontal pass away), and the vertical pass leaves those pixels alone or copies them.
 #include <array>
 
 #include "blur_pass.hpp"
@@ -23,9 +24,11 @@ sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* 
   const Outside last_outside = run.writes_back() ? Outside::discard : Outside::copy_original;
   sss_result r = SSS_OK;
   for (std::size_t t = 0; t < terms && r == SSS_OK; ++t) {
-    r = ctx.programs.blur(blur_variant(run, t, 0, Outside::write_centre), &(*programs)[2 * t], message);
+    r = ctx.programs.blur(fragment_blur_variant(run, t, 0, Outside::write_centre), &(*programs)[2 * t], message);
     const Outside outside = t + 1 == terms ? last_outside : Outside::write_centre;
-    if (r == SSS_OK) r = ctx.programs.blur(blur_variant(run, t, 1, outside), &(*programs)[2 * t + 1], message);
+    if (r == SSS_OK) {
+      r = ctx.programs.blur(fragment_blur_variant(run, t, 1, outside), &(*programs)[2 * t + 1], message);
+    }
   }
   return r;
 }
@@ -36,11 +39,11 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   if (run.stencil != nullptr && !run.stencil_ready) {
-    const sss_result r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
+    const sss_result r = copy_stencil(ctx, run, *run.stencil, message);
     if (r != SSS_OK) return r;
   }
   const GLuint stencil = run.stencil != nullptr ? t.stencil_buffer : 0;
-  sss_result r = attach_intermediate(ctx, stencil, message);
+  sss_result r = attach_stencil(ctx, t.pass_intermediate_framebuffer, stencil, message);
   if (r != SSS_OK) return r;
   if (terms > 1) {
     f.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
@@ -54,22 +57,18 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
 
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
   set_blur_uniforms(ctx, p, run, term, axis);
-  bind_blur_inputs(ctx, source, run.depth.name);
-  if (run.has_profiles()) bind_profile_inputs(ctx, axis);
+  bind_packed_inputs(ctx, source);
+  if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
   ctx.gl.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
 }
 
-// Horizontal: host colour -> intermediate; pixels the stencil excludes are copied.
+// Horizontal: the inputs -> the packed intermediate (the inputs draw filled what the stencil excludes).
 void draw_horizontal(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::size_t term, std::size_t terms) {
   DebugGroup group(ctx.gl, ctx.labels, terms > 1 ? "sss horizontal pass (one term)" : "sss horizontal pass");
-  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().intermediate_framebuffer);
+  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().pass_intermediate_framebuffer);
   set_stencil_test(ctx.gl, run.stencil, EQUAL);
-  draw_blur(ctx, p, run, run.color.name, term, 0);
-  if (run.stencil != nullptr) {
-    set_stencil_test(ctx.gl, run.stencil, NOTEQUAL);
-    draw_copy(ctx, run.color.name);
-  }
+  draw_blur(ctx, p, run, ctx.targets.names().pass_taps, term, 0);
 }
 
 // Vertical into the running sum (pixels outside the stencil are never read from it).
@@ -79,7 +78,7 @@ void draw_into_sum(PassContext& ctx, const FilterRun& run, BlurProgram& p, std::
   ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, t.accumulator_framebuffer);
   ctx.gl.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t.accumulators[term % 2], 0);
   set_stencil_test(ctx.gl, run.stencil, EQUAL);
-  draw_blur(ctx, p, run, t.intermediate, term, 1);
+  draw_blur(ctx, p, run, t.pass_intermediate, term, 1);
 }
 
 // The last vertical pass: intermediate -> output. Writing back, the host colour is attached here,
@@ -96,7 +95,7 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, 
   // Samples that pass here are the pixels the blur wrote: in place (the untouched discard),
   // exactly the blurred ones; into a separate output every pixel the stencil lets through.
   measure.begin_pixels();
-  draw_blur(ctx, p, run, ctx.targets.names().intermediate, term, 1);
+  draw_blur(ctx, p, run, ctx.targets.names().pass_intermediate, term, 1);
   measure.end_pixels();
   if (run.stencil != nullptr && !run.writes_back() && !run.output_outside_stencil_unread) {
     set_stencil_test(f, run.stencil, NOTEQUAL);
@@ -127,41 +126,47 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
   measure.end_frame();
 }
 
+PassInputsVariant pass_inputs_variant(const FilterRun& run) {
+  PassInputsVariant v;
+  v.linear_depth = run.constants.linear_depth;
+  v.profile_ids = profile_ids_variant(run);
+  v.fill_intermediate = run.stencil != nullptr;
+  return v;
+}
+
 // The programs and targets of the separable passes: everything that can fail but the framebuffer
 // checks, all before the first draw.
 sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
   sss_result r = build_programs(ctx, run, programs, message);
-  if (r == SSS_OK) {
-    r = ctx.targets.ensure_intermediate(run.intermediate_format(), run.color.width, run.color.height, message);
-  }
+  PassInputsProgram* unused = nullptr;
+  if (r == SSS_OK) r = ctx.programs.pass_inputs(pass_inputs_variant(run), &unused, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_pass_targets(run.color.width, run.color.height, message);
   if (r == SSS_OK && run.kernel->terms.size() > 1) {
     r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl, run),
                                         message);
   }
-  if (r == SSS_OK && run.has_profiles()) {
-    ProfileDepthProgram* unused = nullptr;
-    r = ctx.programs.profile_depth(run.constants.linear_depth, &unused, message);
-    if (r == SSS_OK) r = ctx.targets.ensure_profile_depth(run.color.width, run.color.height, message);
-  }
   return r;
 }
 
-// Per-pixel profiles: each pixel's view distance and index into the module's RG32UI copy, over the
-// drawn rectangle (where the taps stay), every pixel of it: the taps read outside the stencil too.
-sss_result draw_profile_depth(PassContext& ctx, const FilterRun& run, std::string* message) {
+// The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
+// read outside the stencil too. With a stencil, into the horizontal pass's target as well.
+sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message) {
   const Functions& f = ctx.gl;
-  ProfileDepthProgram* p = nullptr;
-  const sss_result r = ctx.programs.profile_depth(run.constants.linear_depth, &p, message);
+  PassInputsProgram* p = nullptr;
+  const PassInputsVariant v = pass_inputs_variant(run);
+  const sss_result r = ctx.programs.pass_inputs(v, &p, message);
   if (r != SSS_OK) return r;
-  DebugGroup group(f, ctx.labels, "sss view distance and profile index");
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().profile_depth_framebuffer);
+  DebugGroup group(f, ctx.labels, "sss pass inputs (colour and view distance)");
+  const Targets& t = ctx.targets.names();
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, v.fill_intermediate ? t.pass_fill_framebuffer : t.pass_inputs_framebuffer);
   f.Disable(STENCIL_TEST);
   f.UseProgram(p->program);
   const math::PassConstants& k = run.constants;
   f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p->depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
   bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
-  bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
   return SSS_OK;
@@ -183,7 +188,7 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
   sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  if (run.has_profiles()) r = draw_profile_depth(ctx, run, message);
+  r = draw_pass_inputs(ctx, run, message);
   if (r == SSS_OK) r = attach_targets(ctx, run, terms, message);
   if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
   detach_output(ctx);

@@ -17,12 +17,13 @@ sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuin
   return ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), width, height, message);
 }
 
-sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message) {
+sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuint source, std::string* message) {
   const Functions& f = ctx.gl;
   GLuint program = 0;
-  sss_result r = stencil_mark_resources(ctx, width, height, &program, message);
+  sss_result r = stencil_mark_resources(ctx, run.color.width, run.color.height, &program, message);
   if (r != SSS_OK) return r;
-  r = attach_intermediate(ctx, ctx.targets.names().stencil_buffer, message, "stencil mark");
+  r = attach_stencil(ctx, horizontal_framebuffer(ctx, run), ctx.targets.names().stencil_buffer, message,
+                     "stencil mark");
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss stencil from alpha");
   f.StencilMaskSeparate(FRONT_AND_BACK, 0xFF);
@@ -55,7 +56,7 @@ sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* messa
   sss_result r = prepare_fragment(ctx, inner, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  r = mark_stencil_from_alpha(ctx, run.color.name, run.color.width, run.color.height, message);
+  r = mark_stencil_from_alpha(ctx, run, run.color.name, message);
   if (r != SSS_OK) return r;
   return run_fragment(ctx, inner, message);
 }

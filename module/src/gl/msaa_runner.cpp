@@ -184,9 +184,9 @@ sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message
   if (run.identity) return run_fragment(ctx, inner, message);  // copies the resolved colour into the output
 
   if (run.stencil != nullptr) {
-    r = copy_stencil(ctx, *run.stencil, run.color.width, run.color.height, message);
+    r = copy_stencil(ctx, run, *run.stencil, message);
   } else {
-    r = mark_stencil_from_alpha(ctx, ctx.targets.names().resolved_color, run.color.width, run.color.height, message);
+    r = mark_stencil_from_alpha(ctx, run, ctx.targets.names().resolved_color, message);
   }
   if (r != SSS_OK) return r;
   r = run_fragment(ctx, inner, message);

@@ -87,15 +87,21 @@ sss_result check_framebuffer(const PassContext& ctx, const char* which, std::str
   return ctx.check_framebuffers ? check_framebuffer(ctx.gl, which, message) : SSS_OK;
 }
 
-sss_result copy_stencil(PassContext& ctx, const StencilInput& stencil, int width, int height, std::string* message) {
+GLuint horizontal_framebuffer(const PassContext& ctx, const FilterRun& run) {
+  const Targets& t = ctx.targets.names();
+  return run.cross_bilateral ? t.intermediate_framebuffer : t.pass_intermediate_framebuffer;
+}
+
+sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message) {
   const Functions& f = ctx.gl;
+  const int width = run.color.width, height = run.color.height;
   sss_result r = ctx.targets.ensure_stencil_buffer(stencil.texture.internal_format, width, height, message);
   if (r != SSS_OK) return r;
   const Targets& t = ctx.targets.names();
   f.BindFramebuffer(READ_FRAMEBUFFER, t.stencil_source_framebuffer);
   // A multisampled depth-stencil is resolved by the blit: GL picks one sample's stencil per pixel.
   f.FramebufferTexture2D(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, stencil.texture.target, stencil.texture.name, 0);
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.intermediate_framebuffer);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, horizontal_framebuffer(ctx, run));
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, t.stencil_buffer);
   if (ctx.check_framebuffers && f.CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
     *message = "the host's depth-stencil texture cannot be read as a framebuffer attachment";
@@ -120,8 +126,9 @@ void set_stencil_test(const Functions& f, const StencilInput* stencil, GLenum fu
   f.StencilMaskSeparate(FRONT_AND_BACK, 0);
 }
 
-sss_result attach_intermediate(PassContext& ctx, GLuint stencil_buffer, std::string* message, const char* which) {
-  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().intermediate_framebuffer);
+sss_result attach_stencil(PassContext& ctx, GLuint framebuffer, GLuint stencil_buffer, std::string* message,
+                          const char* which) {
+  ctx.gl.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer);
   ctx.gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer);
   return check_framebuffer(ctx, which, message);
 }

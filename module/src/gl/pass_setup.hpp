@@ -77,15 +77,18 @@ void begin_passes(PassContext& ctx, const std::array<int, 4>& rect);
 sss_result check_framebuffer(const Functions& gl, const char* which, std::string* message);
 // The same, or SSS_OK without asking where the run does not check (ctx.check_framebuffers).
 sss_result check_framebuffer(const PassContext& ctx, const char* which, std::string* message);
-// The host's depth-stencil into the module's stencil buffer, which is left on the intermediate
-// framebuffer.
-sss_result copy_stencil(PassContext& ctx, const StencilInput& stencil, int width, int height, std::string* message);
+// The framebuffer the horizontal pass of `run` draws into, which the stencil goes on: the packed
+// intermediate's (separable fragment passes) or the intermediate's (cross-bilateral mode).
+GLuint horizontal_framebuffer(const PassContext& ctx, const FilterRun& run);
+// The host's depth-stencil into the module's stencil buffer, which is left on
+// horizontal_framebuffer(run).
+sss_result copy_stencil(PassContext& ctx, const FilterRun& run, const StencilInput& stencil, std::string* message);
 // Only the pixels whose stencil compares `func` to the host's reference pass (no stencil: all).
 void set_stencil_test(const Functions& gl, const StencilInput* stencil, GLenum func);
-// Puts `stencil_buffer` (0: none) on the intermediate framebuffer and checks it (`which` names the
-// step in the message).
-sss_result attach_intermediate(PassContext& ctx, GLuint stencil_buffer, std::string* message,
-                               const char* which = "horizontal pass");
+// Puts `stencil_buffer` (0: none) on `framebuffer` (a horizontal_framebuffer) and checks it
+// (`which` names the step in the message).
+sss_result attach_stencil(PassContext& ctx, GLuint framebuffer, GLuint stencil_buffer, std::string* message,
+                          const char* which = "horizontal pass");
 // Puts the host's colour (in place) or output and `stencil_buffer` on the output framebuffer and
 // checks it; with a region and a separate output, copies the viewport's colour there first, so
 // the pixels the region leaves out hold their input.

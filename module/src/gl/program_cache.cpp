@@ -30,12 +30,21 @@ sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool lab
   set_unit(copy_, gl_->GetUniformLocation(copy_, "u_source"), unit::source);
   label_object(*gl_, labels_, PROGRAM, copy_, "sss copy");
 
+  // The default settings' fragment passes written back on hardware depth, behind a stencil (the
+  // masked path, which SSS_PATH_AUTO takes on software rasterisers): their inputs, the horizontal
+  // pass (packed) and the vertical one.
   BlurProgram* unused = nullptr;
   BlurVariant common;
   common.follow_surface = 1;
+  common.packed_output = true;
   sss_result r = blur(common, &unused, message);
   common.outside = Outside::discard;
+  common.packed_output = false;
   if (r == SSS_OK) r = blur(common, &unused, message);
+  PassInputsProgram* inputs = nullptr;
+  PassInputsVariant masked;
+  masked.fill_intermediate = true;
+  if (r == SSS_OK) r = pass_inputs(masked, &inputs, message);
   return r;
 }
 
@@ -53,7 +62,7 @@ void ProgramCache::destroy() {
   remove(stencil_mark_);
   remove(sample_write_.program);
   remove(strength_combine_.program);
-  for (const ProfileDepthProgram& p : profile_depth_) remove(p.program);
+  for (const PassInputsProgram& p : pass_inputs_) remove(p.program);
   forget();
 }
 
@@ -89,17 +98,18 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
-  std::snprintf(label, sizeof label, "sss blur outside=%d follow=%d linear=%d jitter=%d accumulate=%d profiles=%d",
-                static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, v.profile_ids ? 1 : 0);
+  std::snprintf(label, sizeof label,
+                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d",
+                static_cast<int>(v.outside), v.follow_surface, v.jitter ? 1 : 0, v.accumulate ? 1 : 0,
+                v.profile_ids, v.packed_output ? 1 : 0);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
   set_unit(p.program, p.source, unit::source);
-  set_unit(p.program, p.depth, unit::depth);
+  set_unit(p.program, p.strength, unit::pass_strength);
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
-  set_unit(p.program, p.depth_ids, unit::profile_ids);
-  if (v.profile_ids) {  // the tables' block on binding point 0 (ProfileTables::bind)
+  set_unit(p.program, p.profile_ids, unit::profile_ids);
+  if (v.profile_ids != 0) {  // the tables' block on binding point 0 (ProfileTables::bind)
     const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
     if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
   }
@@ -152,7 +162,8 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
-  p.depth_ids = f.GetUniformLocation(p.program, "u_depth_ids");
+  p.strength = f.GetUniformLocation(p.program, "u_strength");
+  p.profile_ids = f.GetUniformLocation(p.program, "u_profile_ids");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }
@@ -254,17 +265,21 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   return SSS_OK;
 }
 
-sss_result ProgramCache::profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message) {
-  ProfileDepthProgram& p = profile_depth_[linear_depth ? 1 : 0];
+sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message) {
+  PassInputsProgram& p = pass_inputs_[static_cast<std::size_t>(pass_inputs_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("profile_depth.frag", profile_depth_defines(linear_depth), "per-pixel profiles' depth and index shader",
-                   message);
+  const std::string defines = pass_inputs_defines(v);
+  p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, "sss view distance and profile index", nullptr);
+  char label[96];
+  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d fill=%d", v.linear_depth ? 1 : 0,
+                v.profile_ids, v.fill_intermediate ? 1 : 0);
+  finish(p.program, label, "pass inputs");
   const Functions& f = *gl_;
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
   return SSS_OK;

@@ -33,7 +33,8 @@ struct BlurProgram {
         axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint rect = -1;  // compute programs only
-  GLint depth_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
+  GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
+  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   bool compute = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
@@ -61,7 +62,7 @@ struct ResolveProgram {
   GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
 };
 
-struct ProfileDepthProgram {
+struct PassInputsProgram {
   GLuint program = 0;
   GLint ndc_from_depth = -1, depth_terms = -1;
 };
@@ -74,8 +75,9 @@ struct SampleWriteProgram {
 
 class ProgramCache {
  public:
-  // Builds the copy program and the blur variants every host uses (write back, follow-surface,
-  // hardware depth: the default kernel's), so a driver that cannot compile them fails at create.
+  // Builds the copy program and the fragment programs every host uses (written back, follow-surface,
+  // hardware depth, behind a stencil: the default settings' masked path), so a driver that cannot
+  // compile them fails at create.
   // `log` (may be empty) gets a DEBUG note per program built; it must outlive the cache.
   sss_result init(const Functions* gl, GlslVariant variant, bool labels, const Log* log, std::string* message);
   void destroy();  // deletes the programs (they must exist in the current context), then forget()s
@@ -94,8 +96,8 @@ class ProgramCache {
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
-  // Per-pixel profiles: each pixel's view distance and index into the module's RG32UI copy.
-  sss_result profile_depth(bool linear_depth, ProfileDepthProgram** out, std::string* message);
+  // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
+  sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
 
  private:
   static constexpr int kComputeVariantCount = kBlurVariantCount * kImageFormats;
@@ -125,7 +127,7 @@ class ProgramCache {
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
   StrengthProgram strength_combine_;
-  std::array<ProfileDepthProgram, 2> profile_depth_{};  // index: host depth is linear
+  std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
 };
 
 }  // namespace sss::gl

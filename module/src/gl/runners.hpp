@@ -31,8 +31,8 @@ sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::stri
 bool masked_available(const FilterRun& run);
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message);
 // The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
-// above 0 (left on the intermediate framebuffer). Draws over the current viewport.
-sss_result mark_stencil_from_alpha(PassContext& ctx, GLuint source, int width, int height, std::string* message);
+// above 0 (left on horizontal_framebuffer(run)). Draws over the current viewport.
+sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuint source, std::string* message);
 // The mark's program and the module's DEPTH24_STENCIL8 stencil buffer at this size.
 sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message);
 

@@ -8,7 +8,8 @@
 namespace sss::gl {
 
 int blur_variant_index(const BlurVariant& v) {
-  int index = (v.profile_ids ? 3 : 0) + static_cast<int>(v.outside);
+  int index = (v.packed_output ? 3 : 0) + v.profile_ids;
+  index = index * 3 + static_cast<int>(v.outside);
   index = index * 3 + v.follow_surface;
   index = index * 2 + (v.linear_depth ? 1 : 0);
   index = index * 2 + (v.jitter ? 1 : 0);
@@ -26,7 +27,9 @@ BlurVariant blur_variant_at(int index) {
   v.follow_surface = index % 3;
   index /= 3;
   v.outside = static_cast<BlurOutside>(index % 3);
-  v.profile_ids = index / 3 != 0;
+  index /= 3;
+  v.profile_ids = index % 3;
+  v.packed_output = index / 3 != 0;
   return v;
 }
 
@@ -35,9 +38,10 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
                 "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
-                "#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS %d\n#define SSS_PROFILES %d\n",
+                "#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS %d\n#define SSS_PROFILES %d\n"
+                "#define SSS_PACKED_OUTPUT %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
-                v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids ? 1 : 0, profiles);
+                v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids, profiles, v.packed_output ? 1 : 0);
   return defines;
 }
 
@@ -58,7 +62,28 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
 }
 
 std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
-  return profile_depth_defines(linear_depth) + (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n");
+  return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
+         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n");
+}
+
+int pass_inputs_variant_index(const PassInputsVariant& v) {
+  return ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.fill_intermediate ? 1 : 0);
+}
+
+PassInputsVariant pass_inputs_variant_at(int index) {
+  PassInputsVariant v;
+  v.fill_intermediate = index % 2 != 0;
+  v.profile_ids = (index / 2) % 3;
+  v.linear_depth = index / 6 != 0;
+  return v;
+}
+
+std::string pass_inputs_defines(const PassInputsVariant& v) {
+  char defines[128];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_FILL_INTERMEDIATE %d\n",
+                v.linear_depth ? 1 : 0, v.profile_ids, v.fill_intermediate ? 1 : 0);
+  return defines;
 }
 
 std::string lut_defines(int kind) {

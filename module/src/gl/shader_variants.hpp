@@ -22,12 +22,25 @@ struct BlurVariant {
   BlurOutside outside = BlurOutside::write_centre;
   int follow_surface = 0;  // 0 off, 1 ramp, 2 Gaussian depth correction
   bool linear_depth = false, jitter = false, accumulate = false;
-  bool profile_ids = false;  // per-pixel profiles (SSS_PROFILE_IDS): fragment passes only
+  // Per-pixel profiles (SSS_PROFILE_IDS), fragment passes only: 0 none, 1 R8UI indices (in the
+  // distance word), 2 R16UI indices (read per tap).
+  int profile_ids = 0;
+  // SSS_PACKED_OUTPUT: the fragment path's horizontal pass, which writes RGBA32UI colour and distance.
+  bool packed_output = false;
 };
-inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 2;
+inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 3 * 2;
 // A variant's index in [0, kBlurVariantCount), and the variant at an index.
 int blur_variant_index(const BlurVariant& v);
 BlurVariant blur_variant_at(int index);
+// The variants the module builds: fragment passes read pass_inputs.frag's view distances (no
+// SSS_LINEAR_DEPTH), and only their horizontal pass (SSS_OUTSIDE 0, no SSS_ACCUMULATE) writes
+// packed; the compute path runs neither per-pixel profiles, several terms nor packed texels.
+inline bool is_fragment_blur_variant(const BlurVariant& v) {
+  return !v.linear_depth && (!v.packed_output || (v.outside == BlurOutside::write_centre && !v.accumulate));
+}
+inline bool is_compute_blur_variant(const BlurVariant& v) {
+  return !v.accumulate && v.profile_ids == 0 && !v.packed_output;
+}
 // `profiles`: SSS_PROFILES, the profiles the per-pixel variant's uniform block holds (the context's
 // ProfileTables::capacity; SSS_MAX_PROFILES where the GL's block size allows).
 std::string blur_defines(const BlurVariant& v, int profiles = SSS_MAX_PROFILES);
@@ -57,10 +70,17 @@ inline bool msaa_write_in_one_draw(GlslVariant v) { return v == GlslVariant::gls
 inline std::string msaa_write_defines(GlslVariant v) {
   return msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n";
 }
-// Per-pixel profiles' view distance and index (profile_depth.frag): SSS_LINEAR_DEPTH.
-inline std::string profile_depth_defines(bool linear_depth) {
-  return linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
-}
+// The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
+// BlurVariant::profile_ids) and SSS_FILL_INTERMEDIATE (a stencil keeps the horizontal pass from pixels).
+struct PassInputsVariant {
+  bool linear_depth = false;
+  int profile_ids = 0;
+  bool fill_intermediate = false;
+};
+inline constexpr int kPassInputsVariantCount = 2 * 3 * 2;
+int pass_inputs_variant_index(const PassInputsVariant& v);
+PassInputsVariant pass_inputs_variant_at(int index);
+std::string pass_inputs_defines(const PassInputsVariant& v);
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 

@@ -57,10 +57,12 @@ void TargetPool::destroy() {
   const Functions& f = *gl_;
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
-                                 t_.sample_write_framebuffer, t_.strength_framebuffer, t_.profile_depth_framebuffer};
-  const GLuint textures[] = {t_.intermediate,      t_.accumulators[0], t_.accumulators[1], t_.masked_source,
-                             t_.resolved_color,    t_.resolved_distance, t_.blurred,       t_.translucent_mean,
-                             t_.translucent_lowest, t_.strength_source, t_.profile_depth};
+                                 t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
+                                 t_.pass_fill_framebuffer,    t_.pass_intermediate_framebuffer};
+  const GLuint textures[] = {t_.intermediate,       t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
+                             t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
+                             t_.translucent_lowest, t_.strength_source,   t_.pass_taps,       t_.pass_strength,
+                             t_.pass_intermediate};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -263,16 +265,37 @@ sss_result TargetPool::ensure_strength_source(GLint format, int width, int heigh
   return SSS_OK;
 }
 
-sss_result TargetPool::ensure_profile_depth(int width, int height, std::string* message) {
-  ensure_framebuffer(&t_.profile_depth_framebuffer, "sss depth and profile index target");
-  if (t_.profile_depth != 0 && profile_depth_width_ == width && profile_depth_height_ == height) return SSS_OK;
-  profile_depth_width_ = profile_depth_height_ = 0;
-  const sss_result r = allocate_target(&t_.profile_depth, RG32UI, UNSIGNED_INT, width, height,
-                                       "RG32UI depth and profile index", message, RG_INTEGER);
+sss_result TargetPool::ensure_pass_targets(int width, int height, std::string* message) {
+  if (t_.pass_intermediate_framebuffer != 0 && pass_width_ == width && pass_height_ == height) return SSS_OK;
+  pass_width_ = pass_height_ = 0;
+  sss_result r = allocate_target(&t_.pass_taps, RGBA32UI, UNSIGNED_INT, width, height,
+                                 "RGBA32UI pass input (colour and view distance)", message, RGBA_INTEGER);
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.pass_strength, R32UI, UNSIGNED_INT, width, height, "R32UI strength", message,
+                        RED_INTEGER);
+  }
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.pass_intermediate, RGBA32UI, UNSIGNED_INT, width, height,
+                        "RGBA32UI intermediate (horizontal pass result and view distance)", message,
+                        RGBA_INTEGER);
+  }
   if (r != SSS_OK) return r;
-  profile_depth_width_ = width;
-  profile_depth_height_ = height;
-  attach_colour(t_.profile_depth_framebuffer, t_.profile_depth);
+  pass_width_ = width;
+  pass_height_ = height;
+  // The framebuffers once the targets exist: a failed allocation leaves no new object behind.
+  ensure_framebuffer(&t_.pass_inputs_framebuffer, "sss pass inputs target");
+  ensure_framebuffer(&t_.pass_fill_framebuffer, "sss pass inputs and intermediate target");
+  ensure_framebuffer(&t_.pass_intermediate_framebuffer, "sss horizontal pass target (packed)");
+  const Functions& f = *gl_;
+  const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
+  for (const GLuint framebuffer : {t_.pass_inputs_framebuffer, t_.pass_fill_framebuffer}) {
+    const bool fill = framebuffer == t_.pass_fill_framebuffer;
+    attach_colour(framebuffer, t_.pass_taps);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.pass_strength, 0);
+    if (fill) f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.pass_intermediate, 0);
+    f.DrawBuffers(fill ? 3 : 2, buffers);
+  }
+  attach_colour(t_.pass_intermediate_framebuffer, t_.pass_intermediate);
   return SSS_OK;
 }
 

@@ -34,8 +34,13 @@ struct Targets {
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, translucent_mean = 0, translucent_lowest = 0;
   // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
   GLuint strength_source = 0, strength_framebuffer = 0;
-  // Per-pixel profiles: each pixel's raw depth bits and profile index (RG32UI, profile_depth.frag).
-  GLuint profile_depth = 0, profile_depth_framebuffer = 0;
+  // The separable fragment passes (pass_inputs.frag): per pixel the colour's and view distance's
+  // bits (RGBA32UI pass_taps), the strength's (R32UI pass_strength), and the horizontal pass's
+  // result in the same layout (RGBA32UI pass_intermediate). pass_inputs_framebuffer draws the first
+  // two, pass_fill_framebuffer all three (a stencil keeps the horizontal pass from some pixels);
+  // pass_intermediate_framebuffer is the horizontal pass's (with the stencil when there is one).
+  GLuint pass_taps = 0, pass_strength = 0, pass_intermediate = 0;
+  GLuint pass_inputs_framebuffer = 0, pass_fill_framebuffer = 0, pass_intermediate_framebuffer = 0;
 };
 
 class TargetPool {
@@ -58,7 +63,8 @@ class TargetPool {
   sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, std::string* message);
   // `format`: RGBA16F or RGBA32F.
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
-  sss_result ensure_profile_depth(int width, int height, std::string* message);
+  // The three pass_* targets and their framebuffers at this size.
+  sss_result ensure_pass_targets(int width, int height, std::string* message);
 
  private:
   // Creates *framebuffer (labelled `label`) when it is 0; nothing attached yet.
@@ -87,7 +93,7 @@ class TargetPool {
   bool has_write_back_targets_ = false;
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
-  int profile_depth_width_ = 0, profile_depth_height_ = 0;
+  int pass_width_ = 0, pass_height_ = 0;
 };
 
 }  // namespace sss::gl

@@ -13,8 +13,11 @@ constexpr GLuint depth = 1;        // the host's depth (or the MSAA path's resol
 constexpr GLuint original = 2;     // the host's colour, read by a pass writing a separate output
 constexpr GLuint normals = 3;      // the cross-bilateral mode's host normals
 constexpr GLuint accumulated = 3;  // the earlier terms' sum (separable kernels of several terms)
-// Per-pixel profiles: the host's profile and object indices (sss_frame.profile_texture) in the
-// copy draw (profile_depth.frag), the module's view-distance-and-index copy in the blur passes.
+// The fragment blur passes' strength (pass_inputs.frag's R32UI target; the source unit holds its
+// colour and distance texels).
+constexpr GLuint pass_strength = 1;
+// Per-pixel profiles: the host's profile and object indices (sss_frame.profile_texture), read by
+// pass_inputs.frag (R8UI) or by the blur passes per tap (R16UI).
 constexpr GLuint profile_ids = 4;
 // The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;

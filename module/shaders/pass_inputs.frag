@@ -1,0 +1,54 @@
+// The separable fragment passes' inputs, drawn once per frame before them: each pixel's colour and
+// view distance in one RGBA32UI texel (rgb the colour's float bits, a the distance's), so that
+// every tap of both passes reads both with one fetch and linearises no depth (issue 24: on
+// llvmpipe a tap's depth fetch was a sixth of the passes' work, its linearisation 1 %). The
+// strength (the colour's alpha) goes to its own R32UI target: only the centre pixel reads it.
+// Unsigned integer targets because they are renderable on OpenGL 3.3 and OpenGL ES 3.0 alike
+// (RGBA32F and R32F are not on ES 3.0), and they keep every bit: the passes get exactly the float
+// view_distance() gives, NaN and infinity included.
+//
+// A colour that is not finite, or past colour_range.glsl's bound, is written as 0 at distance NaN:
+// the follow-surface blend turns such a tap into the centre's colour exactly, as the test per tap
+// it replaces did (footprint_taps.glsl, SSS_TAPS_SANITISED), and a centre with a NaN distance is
+// left alone, as one with such a colour was. The strength is written as it is.
+//
+// Compile-time switches (module/src/gl/shader_variants.cpp):
+//   SSS_LINEAR_DEPTH   0: hardware depth, linearised here; 1: the host's depth is a view distance
+//   SSS_PROFILE_IDS    0: none; 1: an R8UI index texture, its byte put in the low 8 bits of the
+//                      distance (they count as 0 in the distance: 15 fraction bits stay, 3e-5 of
+//                      the distance); 2: an R16UI one, which the passes read per tap instead
+//                      (the distance stays whole)
+//   SSS_FILL_INTERMEDIATE  1: also write the texel into the horizontal pass's target, where a
+//                      stencil keeps that pass from the pixel (the vertical taps read it there)
+#include "colour_range.glsl"
+#include "depth.glsl"
+
+SSS_BINDING(0) uniform sampler2D u_color;       // the host's colour (or the module's copy of it)
+SSS_BINDING(1) uniform highp sampler2D u_depth;  // the host's depth (hardware or linear)
+#if SSS_PROFILE_IDS == 1
+SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R8UI indices
+#endif
+
+layout(location = 0) out uvec4 o_taps;
+layout(location = 1) out uint o_strength;
+#if SSS_FILL_INTERMEDIATE
+layout(location = 2) out uvec4 o_intermediate;
+#endif
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 color = texelFetch(u_color, pixel, 0);
+  uint distance = floatBitsToUint(view_distance(texelFetch(u_depth, pixel, 0).r));
+#if SSS_PROFILE_IDS == 1
+  distance = (distance & 0xFFFFFF00u) | (texelFetch(u_profile_ids, pixel, 0).r & 0xFFu);
+#endif
+  if (!sss_in_range(color.rgb)) {
+    color.rgb = vec3(0.0);
+    distance = 0x7FC00000u | (distance & 0xFFu);  // NaN (with R8UI indices, the index kept)
+  }
+  o_taps = uvec4(floatBitsToUint(color.rgb), distance);
+  o_strength = floatBitsToUint(color.a);
+#if SSS_FILL_INTERMEDIATE
+  o_intermediate = o_taps;
+#endif
+}
