@@ -39,6 +39,8 @@
   X(PFNGLPOLYGONMODEPROC, glPolygonMode)                         \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                     \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                             \
+  X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)             \
+  X(PFNGLBLENDEQUATIONSEPARATEPROC, glBlendEquationSeparate)     \
   X(PFNGLSTENCILFUNCPROC, glStencilFunc)                         \
   X(PFNGLSTENCILOPPROC, glStencilOp)                             \
   X(PFNGLSTENCILMASKPROC, glStencilMask)                         \

@@ -4,9 +4,14 @@
 // background lands far behind both); averaging the samples' view distances gives the distance of
 // the pixel's mean surface, which is what the follow-surface test compares.
 //
-// Compile-time switch (the variant's #define, module/src/gl/shader_variants.cpp): SSS_LINEAR_DEPTH
-// 0: hardware depth, linearised per sample (depth.glsl's view_distance); 1: the host's depth
-// already holds view distance.
+// Writing back into the host's samples (SSS_WRITE_BACK 1), the same loop also keeps what the
+// write-back needs to know about each pixel's translucent samples (msaa_write.frag), so that pass
+// never reads the host's colour, the texture it draws into: which samples they are, their mean
+// colour and their smallest value per channel.
+//
+// Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp):
+// SSS_LINEAR_DEPTH 0: hardware depth, linearised per sample (depth.glsl's view_distance); 1: the
+// host's depth already holds view distance. SSS_WRITE_BACK 1: the translucent samples' outputs too.
 // Desktop GL only: assembled after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
 
 #include "depth.glsl"
@@ -18,14 +23,37 @@ uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out float o_distance;
+#if SSS_WRITE_BACK
+layout(location = 2) out vec4 o_translucent;  // the translucent samples' mean colour (rgb), count (a)
+layout(location = 3) out uvec4 o_lowest;      // their smallest value per channel (float bits, rgb), mask (a)
+
+// A sample the write-back changes: some strength, and nothing infinite or NaN in it (NaN fails
+// every comparison).
+bool translucent(vec4 c) { return c.a > 0.0 && all(lessThanEqual(abs(c), vec4(uintBitsToFloat(0x7f7fffffu)))); }
+#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 color = vec4(0.0);
   float first = view_distance(texelFetch(u_depth, pixel, 0).r);
   float sum = 0.0, nearest = first, farthest = first;
+#if SSS_WRITE_BACK
+  vec3 translucent_sum = vec3(0.0);
+  vec3 lowest = vec3(uintBitsToFloat(0x7f7fffffu));  // the largest finite float: any translucent value is below
+  uint mask = 0u;
+  float count = 0.0;
+#endif
   for (int i = 0; i < u_samples; ++i) {
-    color += texelFetch(u_color, pixel, i);
+    vec4 c = texelFetch(u_color, pixel, i);
+    color += c;
+#if SSS_WRITE_BACK
+    // Selects, not a branch: the samples of neighbouring pixels differ.
+    bool t = translucent(c);
+    translucent_sum += t ? c.rgb : vec3(0.0);
+    lowest = t ? min(lowest, c.rgb) : lowest;
+    mask |= t ? 1u << uint(i) : 0u;
+    count += t ? 1.0 : 0.0;
+#endif
     float d = view_distance(texelFetch(u_depth, pixel, i).r);
     sum += d;
     nearest = min(nearest, d);
@@ -34,4 +62,8 @@ void main() {
   float n = float(u_samples);
   o_color = color / n;
   o_distance = u_depth_mode == 0 ? sum / n : u_depth_mode == 1 ? first : u_depth_mode == 2 ? nearest : farthest;
+#if SSS_WRITE_BACK
+  o_translucent = vec4(count > 0.0 ? translucent_sum / count : vec3(0.0), count);
+  o_lowest = uvec4(floatBitsToUint(lowest), mask);
+#endif
 }

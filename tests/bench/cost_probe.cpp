@@ -10,7 +10,12 @@
 // fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
-//                  [--path default|fragment|masked|auto|compute] [--frames N] [--profiles N]
+//                  [--path default|fragment|masked|auto|compute] [--frames N] [--profiles N] [--msaa 0|4]
+//
+// --msaa 4: the MSAA path written back in place, as the MSAA study's write-back row: the scene made
+// at twice the size, 4 samples per pixel (RGBA16F colour, DEPTH_COMPONENT32F depth, see
+// tests/support/multisample_textures.hpp), filtered at the given size; the same frame with --msaa 0
+// (the default) is the single-sample path on the scene made at that size.
 //
 // --profiles N (0.4 on): N per-pixel profiles (sss_set_profiles; the others are eq. (1) looks of
 // other strength, falloff and scale) and an R8UI profile texture of index 0 everywhere: the cost of
@@ -30,6 +35,7 @@
 
 #include "gpu_scene.hpp"
 #include "host_gl.hpp"
+#include "multisample_textures.hpp"
 #include "scenes/scenes.hpp"
 #include "sss/sss.h"
 #include "sss_headless.h"
@@ -47,6 +53,7 @@ struct Options {
   unsigned path = SSS_PATH_FRAGMENT;
   int frames = 0;  // timed frames after the counted one
   int profiles = 0;  // 0: sss_set_settings and no profile texture; else sss_set_profiles with this many
+  int msaa = 0;      // 4: the MSAA path (multisampled colour and depth, written back)
 };
 
 bool parse(int argc, char** argv, Options* o) {
@@ -77,6 +84,9 @@ bool parse(int argc, char** argv, Options* o) {
       o->frames = std::atoi(value.c_str());
     } else if (key == "--profiles") {
       o->profiles = std::atoi(value.c_str());
+    } else if (key == "--msaa") {
+      o->msaa = std::atoi(value.c_str());
+      if (o->msaa != 0 && o->msaa != 4) return false;
     } else {
       return false;
     }
@@ -84,14 +94,15 @@ bool parse(int argc, char** argv, Options* o) {
   return (argc % 2) == 1;
 }
 
-// The scene's irradiance into the frame's colour texture, texel for texel.
-void refill(GLuint from, GLuint to, int width, int height) {
+// The scene's irradiance into the frame's colour texture, texel for texel (sample for sample:
+// `target` GL_TEXTURE_2D_MULTISAMPLE).
+void refill(GLuint from, GLuint to, int width, int height, GLenum target = GL_TEXTURE_2D) {
   GLuint framebuffers[2] = {0, 0};
   glGenFramebuffers(2, framebuffers);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers[0]);
-  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, from, 0);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, from, 0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers[1]);
-  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, to, 0);
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(2, framebuffers);
@@ -121,7 +132,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path default|fragment|masked|auto|compute] [--frames N] [--profiles N]\n");
+                         "[--path default|fragment|masked|auto|compute] [--frames N] [--profiles N] [--msaa 0|4]\n");
     return 2;
   }
   sss_headless_desc hd = {};
@@ -144,6 +155,23 @@ int main(int argc, char** argv) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, o.width, o.height, 0, GL_RGBA, GL_FLOAT, nullptr);
   glBindTexture(GL_TEXTURE_2D, 0);
+  // --msaa: the scene's samples (kept, refilled from) and the frame's multisampled colour and depth.
+  GLuint samples = 0, depth = scene.depth;
+  GLenum color_target = GL_TEXTURE_2D;
+  if (o.msaa != 0) {
+    const sss_bench::Scene fine = sss_bench::make_scene(o.scene, 2 * o.width, 2 * o.height);
+    samples = sss_test::make_multisample_texture(GL_RGBA16F, o.width, o.height, o.msaa, fine.irradiance);
+    glDeleteTextures(1, &color);
+    color = sss_test::make_multisample_texture(GL_RGBA16F, o.width, o.height, o.msaa, fine.irradiance);
+    depth = sss_test::make_multisample_texture(GL_DEPTH_COMPONENT32F, o.width, o.height, o.msaa, fine.window_depth);
+    glDeleteTextures(1, &scene.irradiance);
+    scene.irradiance = samples;
+    color_target = GL_TEXTURE_2D_MULTISAMPLE;
+    if (samples == 0 || color == 0 || depth == 0) {
+      std::fprintf(stderr, "sss_cost_probe: the context has no %d-sample textures\n", o.msaa);
+      return 1;
+    }
+  }
 
   sss_create_desc desc = {};
   desc.struct_size = sizeof desc;
@@ -155,7 +183,7 @@ int main(int argc, char** argv) {
   sss_frame frame = {};
   frame.struct_size = sizeof frame;
   frame.color_texture = color;
-  frame.depth_texture = scene.depth;
+  frame.depth_texture = depth;
   if (sss_create(&desc, &ctx) != SSS_OK || sss_set_settings(ctx, &s) != SSS_OK ||
       sss_set_camera(ctx, scene.projection.data()) != SSS_OK) {
     std::fprintf(stderr, "sss_cost_probe: %s\n", sss_last_error(ctx));
@@ -194,7 +222,7 @@ int main(int argc, char** argv) {
 #endif
   // One frame first: programs built, targets allocated, as in a steady frame.
   for (int frame_index = 0; frame_index < 2; ++frame_index) {
-    refill(scene.irradiance, color, o.width, o.height);
+    refill(scene.irradiance, color, o.width, o.height, color_target);
     if (frame_index == 1) CALLGRIND_START_INSTRUMENTATION;
     const sss_result r = sss_apply_frame(ctx, &frame);
     glFinish();
@@ -206,7 +234,7 @@ int main(int argc, char** argv) {
   }
   std::vector<double> ms;
   for (int i = 0; i < o.frames; ++i) {
-    refill(scene.irradiance, color, o.width, o.height);
+    refill(scene.irradiance, color, o.width, o.height, color_target);
     const auto start = std::chrono::steady_clock::now();
     const sss_result r = sss_apply_frame(ctx, &frame);
     glFinish();
@@ -216,14 +244,16 @@ int main(int argc, char** argv) {
   sss_stats stats = {};
   stats.struct_size = sizeof stats;
   const unsigned ran = sss_get_stats(ctx, &stats) == SSS_OK ? stats.last_frame_path : 99u;
-  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran, %d per-pixel profiles: frame done\n", o.scene.c_str(),
-              o.width, o.height, o.taps, s.path, o.default_path ? "the default" : "named", ran, o.profiles);
+  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran, %d per-pixel profiles, %d samples: frame done\n",
+              o.scene.c_str(), o.width, o.height, o.taps, s.path, o.default_path ? "the default" : "named", ran,
+              o.profiles, o.msaa);
   if (!ms.empty()) {
     std::sort(ms.begin(), ms.end());
     std::printf("time of %d frames: median %.2f ms, fastest %.2f ms\n", o.frames, ms[ms.size() / 2], ms.front());
   }
   sss_destroy(ctx);
   glDeleteTextures(1, &color);
+  if (depth != scene.depth) glDeleteTextures(1, &depth);
   sss_bench::destroy_scene(&scene);
   sss_headless_destroy(headless);
   return 0;

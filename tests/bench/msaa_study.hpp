@@ -26,7 +26,7 @@ struct MsaaRow {
   double interior_relative_rmse = 0.0;  // vs the single-sample result, pixels whose samples agree
   double time_ms = 0.0;                 // the whole sss_apply_frame (output texture)
   double resolve_share = 0.0;           // (MSAA path - single-sample path) / MSAA path, average row only
-  double write_back_ms = 0.0;           // in-place per-sample write-back, average row only
+  double write_back_ms = 0.0;           // the whole frame written back in place, average row only
   std::string picture;                  // zoomed edge PNG (file name in the out folder), average row only ("-" in CSV)
 };
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "counting_loader.hpp"
 #include "fault_loader.hpp"
 #include "filter_case.hpp"
 #include "gl_state_snapshot.hpp"
@@ -202,6 +203,35 @@ TEST_F(Msaa, AMultisampledHostStencilLimitsTheFilter) {
   }
   EXPECT_GT(outside, kW * kH / 8);
   EXPECT_GT(changed_inside, inside * 9 / 10);
+
+  // Written back behind the stencil: no sample outside it changes (the write-back reads the blurred
+  // image there too, where the passes copied the resolved colour), and the samples inside resolve to
+  // the filtered output.
+  const auto before = read_samples(color, kW, kH, 4);
+  sss_frame g = frame(color, depth_stencil);
+  g.stencil = &stencil;
+  ASSERT_EQ(sss_apply_frame(sss_, &g), SSS_OK) << sss_last_error(sss_);
+  const auto after = read_samples(color, kW, kH, 4);
+  int outside_changed = 0, inside_checked = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    for (std::size_t i = 0; i < 4; ++i) {
+      const bool same = std::memcmp(&before[i][p * 4], &after[i][p * 4], 4 * sizeof(float)) == 0;
+      if (coarse.stencil[p] == 0) outside_changed += same ? 0 : 1;
+    }
+    if (coarse.stencil[p] == 0 || !(coarse.color[p * 4 + 3] > 0.0f)) continue;
+    bool clamped = false;
+    for (std::size_t i = 0; i < 4; ++i) {
+      for (std::size_t c = 0; c < 3; ++c) clamped = clamped || (after[i][p * 4 + c] == 0.0f && before[i][p * 4 + c] != 0.0f);
+    }
+    if (clamped) continue;
+    ++inside_checked;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float mean = (after[0][p * 4 + c] + after[1][p * 4 + c] + after[2][p * 4 + c] + after[3][p * 4 + c]) / 4.0f;
+      EXPECT_NEAR(mean, filtered[p * 4 + c], 1e-5f * std::fmax(1.0f, std::fabs(filtered[p * 4 + c]))) << "pixel " << p;
+    }
+  }
+  EXPECT_EQ(outside_changed, 0);
+  EXPECT_GT(inside_checked, inside / 2);
 }
 
 TEST_F(Msaa, BadMultisampledInputFailsWithASpecificMessageAndChangesNothing) {
@@ -359,25 +389,139 @@ TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
 
 // sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
 // alpha, then the single-sample passes on the resolved images (their inputs, which also fill the
-// stencil-rejected pixels of the horizontal pass's target, horizontal blur, vertical blur + copy,
-// since they write a separate target), and written
-// back one draw per sample (4 here).
+// stencil-rejected pixels of the horizontal pass's target, horizontal blur, vertical blur + copy
+// into a separate output; written back, the vertical pass copies nothing: the write-back reads only
+// the pixels the mask let through), and written back in one draw (GLSL 4.20: gl_SampleMask picks
+// each pixel's translucent samples) or, on a GL 3.3 context, one draw per sample (4 here).
 TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   const GLuint color = ms(GL_RGBA16F, fine.color);
   const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
   const GLuint output = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f));
-  const uint32_t expected[2] = {1 + 1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + 2 + 4};  // into output, written back
-  const GLuint outputs[2] = {output, 0u};
-  for (int i = 0; i < 2; ++i) {
-    const sss_frame f = frame(color, depth, outputs[i]);
-    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-    sss_stats st = {};
-    st.struct_size = sizeof st;
-    ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
-    EXPECT_EQ(st.frames, static_cast<uint64_t>(i + 1));
-    EXPECT_EQ(st.last_frame_passes, expected[i]) << "output " << outputs[i];
+  for (const bool gl33 : {false, true}) {
+    SCOPED_TRACE(gl33 ? "a GL 3.3 context" : "this context");
+    if (gl33) {
+      sss_destroy(sss_);
+      loader_override_ = loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test", sss_headless_get_proc_address);
+      sss_ = create_sss();
+      ASSERT_NE(sss_, nullptr);
+      ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    }
+    const uint32_t write_back = gl33 ? 4 : 1;
+    const uint32_t expected[2] = {1 + 1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + 1 + write_back};  // into output, written back
+    const GLuint outputs[2] = {output, 0u};
+    for (int i = 0; i < 2; ++i) {
+      const sss_frame f = frame(color, depth, outputs[i]);
+      ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+      sss_stats st = {};
+      st.struct_size = sizeof st;
+      ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+      EXPECT_EQ(st.frames, static_cast<uint64_t>(i + 1));
+      EXPECT_EQ(st.last_frame_passes, expected[i]) << "output " << outputs[i];
+      EXPECT_EQ(st.glsl_variant, static_cast<uint32_t>(gl33 ? SSS_GLSL_330_CORE : SSS_GLSL_420_CORE));
+    }
   }
+}
+
+// The write-back never copies the host's samples: the module allocates no multisampled texture
+// (counted through the loader), on a first frame and on later ones.
+TEST_F(Msaa, WritingBackAllocatesNoMultisampledCopy) {
+  sss_destroy(sss_);
+  loader_override_ = counting_loader(sss_headless_get_proc_address);
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 15, kCamera);
+  const GLuint color = ms(GL_RGBA16F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  reset_call_counts();
+  const sss_frame f = frame(color, depth);
+  for (int i = 0; i < 2; ++i) ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  const GlCallCounts n = call_counts();
+  EXPECT_EQ(n.creations.count("glTexImage2DMultisample"), 0u) << n.describe_creations();
+  EXPECT_GT(n.creations.count("glTexImage2D"), 0u) << "the count is real: the resolve targets were allocated";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// A GL 3.3 context (GLSL 3.30: no gl_SampleMask) writes back one draw per sample under
+// glSampleMaski: the samples come out exactly as from the one draw.
+TEST_F(Msaa, WriteBackOnAGl33ContextGivesTheSameSamples) {
+  SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 16, kCamera);
+  for (std::size_t i = 0; i < fine.color.size() / 4; i += 7) fine.color[i * 4 + 3] = 0.0f;  // opaque samples beside translucent ones
+  std::vector<std::vector<float>> after[2];
+  for (int gl33 = 0; gl33 < 2; ++gl33) {
+    if (gl33 != 0) {
+      sss_destroy(sss_);
+      loader_override_ = loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test", sss_headless_get_proc_address);
+      sss_ = create_sss();
+      ASSERT_NE(sss_, nullptr);
+      ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+      sss_settings s;
+      sss_default_settings(&s);
+      s.world_units_per_mm = 0.05f;
+      ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    }
+    const GLuint color = ms(GL_RGBA32F, fine.color);
+    const sss_frame f = frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth));
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    after[gl33] = read_samples(color, kW, kH, 4);
+  }
+  const auto before = read_samples(ms(GL_RGBA32F, fine.color), kW, kH, 4);
+  EXPECT_NE(after[0][0], before[0]) << "the write-back must have changed samples";
+  for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(after[1][s], after[0][s]) << "sample " << s;
+}
+
+// Where adding the pixel's change would take a translucent sample below 0, the pixel's translucent
+// samples are pulled towards their smallest value instead, which lands on exactly 0: no sample is
+// negative, and the written pixel's box resolve is still the blurred pixel (to the rounding of the
+// factor, 2^-11 of the samples' spread), unless the blurred pixel is darker than its opaque
+// samples alone, where every translucent sample becomes 0.
+TEST_F(Msaa, ASampleThatWouldGoNegativeKeepsTheResolveOnTheBlurredPixel) {
+  SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 17, kCamera);
+  // A near-black translucent sample in every third pixel: wherever its pixel darkens, it would go
+  // below 0.
+  for (int y = 0; y < kH; ++y) {
+    for (int x = (y % 3); x < kW; x += 3) {
+      float* c = &fine.color[(static_cast<std::size_t>(2 * y) * 2 * kW + 2 * x) * 4];
+      if (c[3] > 0.0f) c[0] = c[1] = c[2] = 1e-4f;
+    }
+  }
+  const GLuint color = ms(GL_RGBA32F, fine.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+  const std::vector<float> blurred = apply_to_output(frame(color, depth));
+  const auto before = read_samples(color, kW, kH, 4);
+  const sss_frame in_place = frame(color, depth);
+  ASSERT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
+  const auto after = read_samples(color, kW, kH, 4);
+  int pulled = 0, all_black = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      float opaque = 0.0f, lowest = 1e30f, highest = -1e30f, mean = 0.0f;
+      bool went_to_zero = false;
+      for (std::size_t s = 0; s < 4; ++s) {
+        const float b = before[s][p * 4 + c], a = after[s][p * 4 + c];
+        mean += a / 4.0f;
+        if (!(before[s][p * 4 + 3] > 0.0f)) {
+          opaque += b;
+          continue;
+        }
+        ASSERT_GE(a, 0.0f) << "pixel " << p << " sample " << s << " channel " << c;
+        lowest = std::fmin(lowest, b);
+        highest = std::fmax(highest, b);
+        went_to_zero = went_to_zero || (a == 0.0f && b != 0.0f);
+      }
+      if (!went_to_zero) continue;
+      if (4.0f * blurred[p * 4 + c] <= opaque) {
+        ++all_black;
+        continue;
+      }
+      ++pulled;
+      EXPECT_NEAR(mean, blurred[p * 4 + c], (highest - lowest) / 2048.0f + 1e-5f * std::fmax(1.0f, blurred[p * 4 + c]))
+          << "pixel " << p << " channel " << c;
+    }
+  }
+  EXPECT_GT(pulled, 50) << "the scene must have samples that would go negative (" << all_black << " all black)";
 }
 
 // Without a host stencil the path marks its own from the resolved alpha (the paper's multisampling

@@ -14,6 +14,7 @@
 #include "host_gl_util.hpp"
 #include "gl/state_guard.hpp"
 #include "gl_state_snapshot.hpp"
+#include "multisample_textures.hpp"
 #include "sss/sss_lut.h"
 
 using namespace host_gl;
@@ -119,7 +120,10 @@ class StateHarness : public GlTest {
     glPolygonMode(GL_FRONT_AND_BACK, pick<GLenum>(rng, {GL_FILL, GL_LINE, GL_POINT}));
     glDepthFunc(pick<GLenum>(rng, {GL_LESS, GL_GEQUAL, GL_NEVER, GL_ALWAYS}));
     glDepthRangef(pick<GLfloat>(rng, {0.0f, 0.25f}), pick<GLfloat>(rng, {1.0f, 0.0f, 0.75f}));
-    glBlendFunc(pick<GLenum>(rng, {GL_ONE, GL_ZERO, GL_DST_COLOR}), pick<GLenum>(rng, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA}));
+    glBlendFuncSeparate(pick<GLenum>(rng, {GL_ONE, GL_ZERO, GL_DST_COLOR}), pick<GLenum>(rng, {GL_ONE, GL_ONE_MINUS_SRC_ALPHA}),
+                        pick<GLenum>(rng, {GL_ONE, GL_SRC_ALPHA}), pick<GLenum>(rng, {GL_ZERO, GL_DST_ALPHA}));
+    glBlendEquationSeparate(pick<GLenum>(rng, {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_MAX}),
+                            pick<GLenum>(rng, {GL_FUNC_ADD, GL_MIN}));
     glCullFace(pick<GLenum>(rng, {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK}));
     glFrontFace(pick<GLenum>(rng, {GL_CW, GL_CCW}));
     glPixelStorei(GL_UNPACK_ALIGNMENT, pick<GLint>(rng, {1, 2, 4, 8}));
@@ -331,9 +335,9 @@ TEST_F(StateHarness, FailsWhenTheRestoresAreOff) {
 }
 
 // Each group of restores removed alone (through the module's test hook): the harness must notice,
-// for some seed and entry point, that a state was left behind. The two groups only the MSAA
-// write-back touches (GL_SAMPLE_MASK_VALUE and, with them, nothing this harness's single-sample
-// entry points change) are checked by Msaa.StateIsRestored* with fixed state instead.
+// for some seed and entry point, that a state was left behind. The groups only the MSAA write-back
+// touches (GL_SAMPLE_MASK_VALUE, the blend function: nothing this harness's single-sample entry
+// points change) are checked by MsaaWriteBackRestoresAreEachNoticed below.
 TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
   namespace g = sss::gl::restore_group;
   const std::vector<std::pair<const char*, uint32_t>> groups = {
@@ -386,6 +390,51 @@ TEST_F(StateHarness, FailsWhenAnySingleRestoreIsRemoved) {
   }
 }
 
+// The MSAA write-back (in place, desktop GL) sets the blend function, and on a GL 3.3-4.1 context
+// (one draw per sample) the sample mask word: with the host's own values there, leaving out either
+// restore is seen, and with both the state is as it was.
+TEST_F(StateHarness, MsaaWriteBackRestoresAreEachNoticed) {
+  if (is_gles()) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
+  namespace g = sss::gl::restore_group;
+  const SyntheticScene fine = make_relief_scene(2 * kSize, 2 * kSize, 5, perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f));
+  const GLuint color = make_multisample_texture(GL_RGBA16F, kSize, kSize, 4, fine.color);
+  const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, kSize, kSize, 4, fine.window_depth);
+  ASSERT_NE(color, 0u);
+  ASSERT_NE(depth, 0u);
+  std::atomic<uint32_t>& skip = sss::gl::restore_skip_mask_for_tests();
+  const uint32_t kSampleMask = g::sample_mask_value, kBlend = g::blend_function;
+  const std::pair<uint32_t, bool> cases[] = {{0u, false}, {kBlend, false}, {0u, true}, {kSampleMask, true}, {kBlend, true}};
+  for (const auto& [group, gl33] : cases) {
+    SCOPED_TRACE(std::string(gl33 ? "GL 3.3 (a draw per sample)" : "this context (one draw)") + ", restores left out: " +
+                 std::to_string(group));
+    if (sss_ != nullptr) sss_destroy(sss_);
+    loader_override_ =
+        gl33 ? loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test", sss_headless_get_proc_address) : nullptr;
+    prepare(0);
+    glSampleMaski(0, 0x5u);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
+    glBlendEquationSeparate(GL_FUNC_SUBTRACT, GL_MAX);
+    const Snapshot before = take_snapshot();
+    skip = group;
+    EXPECT_EQ(sss_apply(sss_, color, depth, nullptr), SSS_OK) << sss_last_error(sss_);
+    skip = 0;
+    const std::string differences = describe_differences(before, take_snapshot());
+    if (group == 0) {
+      EXPECT_EQ(differences, "");
+    } else {
+      EXPECT_NE(differences.find(group == kSampleMask ? "GL_SAMPLE_MASK_VALUE" : "GL_BLEND_EQUATION_RGB"), std::string::npos)
+          << differences;
+    }
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
+  loader_override_ = nullptr;
+  glSampleMaski(0, ~0u);
+  glBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ONE, GL_ZERO);
+  glBlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
+  const GLuint textures[2] = {color, depth};
+  glDeleteTextures(2, textures);
+}
+
 TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
   // Each line: a state of sss.h's list and a change to it, as a missing restore would leave it.
   const std::vector<std::pair<const char*, std::function<void()>>> changes = {
@@ -410,6 +459,8 @@ TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
       {"GL_POLYGON_MODE", [] { glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); }},
       {"GL_STENCIL_BACK_FUNC", [] { glStencilFuncSeparate(GL_BACK, GL_NEVER, 0, 0xFF); }},
       {"GL_STENCIL_WRITEMASK", [] { glStencilMaskSeparate(GL_FRONT, 0x0F); }},
+      {"GL_BLEND_DST_RGB", [] { glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_COLOR, GL_ONE, GL_ZERO); }},
+      {"GL_BLEND_EQUATION_ALPHA", [] { glBlendEquationSeparate(GL_FUNC_ADD, GL_MAX); }},
   };
   for (const auto& [state, change] : changes) {
     glUseProgram(programs_[0]);
@@ -437,6 +488,8 @@ TEST_F(StateHarness, SeesAChangeOfAnySingleListedState) {
     glDisable(GL_RASTERIZER_DISCARD);
     glDisable(GL_CLIP_DISTANCE5);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ONE, GL_ZERO);
+    glBlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glStencilFuncSeparate(GL_BACK, GL_ALWAYS, 0, 0xFF);
     glStencilMaskSeparate(GL_FRONT, 0xFF);

@@ -110,11 +110,14 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
   if (gl::has_msaa_shaders(dialect)) {
     for (int linear = 0; linear < 2; ++linear) {
-      out->write(d + "msaa_resolve_l" + std::to_string(linear) + ".frag",
-                 gl::stage_recipe(dialect, "msaa_resolve.frag", gl::msaa_resolve_defines(linear != 0)));
+      for (int write_back = 0; write_back < 2; ++write_back) {
+        out->write(d + "msaa_resolve_l" + std::to_string(linear) + "_w" + std::to_string(write_back) + ".frag",
+                   gl::stage_recipe(dialect, "msaa_resolve.frag",
+                                    gl::msaa_resolve_defines(linear != 0, write_back != 0)));
+      }
     }
     out->write(d + "msaa_mask.frag", gl::stage_recipe(dialect, "msaa_mask.frag"));
-    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag"));
+    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag", gl::msaa_write_defines(dialect)));
   }
   for (int kind = 0; kind < 2; ++kind) {
     out->write(d + "lut_generate_k" + std::to_string(kind) + ".frag",

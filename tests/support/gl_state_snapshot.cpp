@@ -117,7 +117,11 @@ Snapshot take_snapshot(bool es) {
     s.add("GL_DEPTH_RANGE (float bits)", {bits[0], bits[1]});
   }
   s.integer("GL_BLEND_SRC_RGB", GL_BLEND_SRC_RGB);
+  s.integer("GL_BLEND_DST_RGB", GL_BLEND_DST_RGB);
+  s.integer("GL_BLEND_SRC_ALPHA", GL_BLEND_SRC_ALPHA);
   s.integer("GL_BLEND_DST_ALPHA", GL_BLEND_DST_ALPHA);
+  s.integer("GL_BLEND_EQUATION_RGB", GL_BLEND_EQUATION_RGB);
+  s.integer("GL_BLEND_EQUATION_ALPHA", GL_BLEND_EQUATION_ALPHA);
   s.integer("GL_CULL_FACE_MODE", GL_CULL_FACE_MODE);
   s.integer("GL_FRONT_FACE", GL_FRONT_FACE);
   s.integer("GL_UNPACK_ALIGNMENT", GL_UNPACK_ALIGNMENT);

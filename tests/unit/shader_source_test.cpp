@@ -136,7 +136,7 @@ TEST(ShaderSource, EveryLineOfTheEmbeddedShadersCarriesItsFileAndLine) {
       stage_recipe(GlslVariant::essl300, "separable_blur.frag", blur_defines(jittered)),
       compute_recipe(compute_blur_defines(jittered, 0, ComputePass::vertical)),
       stage_recipe(GlslVariant::glsl420, "cbf_blur.frag", cbf_defines(BlurOutside::copy_original, false, true)),
-      stage_recipe(GlslVariant::glsl330, "msaa_resolve.frag", msaa_resolve_defines(false)),
+      stage_recipe(GlslVariant::glsl330, "msaa_resolve.frag", msaa_resolve_defines(false, true)),
       stage_recipe(GlslVariant::glsl330, "lut_generate.frag", lut_defines(1)),
       vertex_recipe(GlslVariant::glsl330),
   };

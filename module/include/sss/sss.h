@@ -54,8 +54,8 @@
  * state too under SSS_CREATE_DEBUG_CHECKS); image unit 0; viewport; sample mask word 0; the enables
  * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
  * SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7,
- * MULTISAMPLE; colour mask (buffer 0); polygon mode; front/back stencil state; the depth texture's
- * DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there. Untouched: blend/depth functions, scissor box, clear
+ * MULTISAMPLE; colour mask (buffer 0); blend func/equation (buffer 0; MSAA); polygon mode; front/back stencil;
+ * the depth texture's DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there. Untouched: depth func, scissor box, clear
  * values, other bindings and texture parameters. No transform feedback or conditional render.
  */
 #ifndef SSS_SSS_H

@@ -89,7 +89,8 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   // The fragment passes without a stencil cull by the module's depth (any separable frame may run
   // them: the compute path falls back to them).
   scope.depth = !ctx.settings.cross_bilateral && frame.stencil == nullptr;
-  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1;
+  // Unit 3: also the MSAA write-back's fourth input (a multisampled colour written back).
+  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0);
   scope.profiles = frame.profile_texture != 0;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;

@@ -69,6 +69,9 @@ struct FilterRun {
   math::PassConstants resolve_constants;
   DepthResolve depth_resolve = DepthResolve::average;
   bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
+  // Internal (the MSAA write-back behind its own mask): the output's pixels outside the stencil are
+  // never read, so the last pass leaves them as they are instead of copying the colour there.
+  bool output_outside_stencil_unread = false;
   // sss.h SSS_PATH_*: the compute path is taken (SSS_PATH_COMPUTE), or chosen by timing
   // (SSS_PATH_AUTO, per path_key: the frame's configuration), when compute_unavailable() is "";
   // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.

@@ -112,7 +112,7 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, 
   measure.begin_pixels();
   draw_blur(ctx, p, run, ctx.targets.names().pass_intermediate, term, 1);
   measure.end_pixels();
-  if (!run.writes_back()) {
+  if (!run.writes_back() && !run.output_outside_stencil_unread) {
     set_culling(f, run, NOTEQUAL);
     draw_copy(ctx, run.color.name);
   }

@@ -142,15 +142,17 @@ using GLubyte = unsigned char;
   X(void, Uniform2i, (GLint location, GLint v0, GLint v1))                                             \
   X(void, GetBooleani_v, (GLenum target, GLuint index, GLboolean * data))
 // Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on
-// desktop GL, where they are required; never called on ES. The multisample ones serve the MSAA
-// path, which is desktop GL only (sss.h, sss_frame).
+// desktop GL, where they are required; never called on ES. The multisample and blend ones serve the
+// MSAA path, which is desktop GL only (sss.h, sss_frame): its write-back blends.
 #define SSS_GL_DESKTOP_FUNCTIONS(X)                                                                    \
   X(void, PolygonMode, (GLenum face, GLenum mode))                                                     \
   X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, std::uint64_t * params))                     \
   X(void, TexImage2DMultisample, (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, \
                                   GLsizei height, GLboolean fixedsamplelocations))                     \
   X(void, SampleMaski, (GLuint maskNumber, GLbitfield mask))                                           \
-  X(void, DepthRange, (double n, double f))
+  X(void, DepthRange, (double n, double f))                                                             \
+  X(void, BlendFuncSeparate, (GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha))         \
+  X(void, BlendEquationSeparate, (GLenum modeRGB, GLenum modeAlpha))
 
 // OpenGL ES only (desktop GL before 4.1 lacks it; it has glDepthRange with doubles instead).
 #define SSS_GL_ES_FUNCTIONS(X) X(void, DepthRangef, (GLfloat n, GLfloat f))
@@ -253,6 +255,17 @@ enum : GLenum {
   SAMPLE_MASK_VALUE = 0x8E52,
   COLOR_ATTACHMENT1 = 0x8CE1,
   COLOR_ATTACHMENT2 = 0x8CE2,
+  COLOR_ATTACHMENT3 = 0x8CE3,
+  ZERO = 0,
+  ONE = 1,
+  SRC1_COLOR = 0x88F9,
+  FUNC_ADD = 0x8006,
+  BLEND_SRC_RGB = 0x80C9,
+  BLEND_DST_RGB = 0x80C8,
+  BLEND_SRC_ALPHA = 0x80CB,
+  BLEND_DST_ALPHA = 0x80CA,
+  BLEND_EQUATION_RGB = 0x8009,
+  BLEND_EQUATION_ALPHA = 0x883D,
   STENCIL = 0x1802,
   ALWAYS = 0x0207,
   GREATER = 0x0204,

@@ -2,8 +2,10 @@
 // colour and depth into single-sample colour (box average) and linear view distance (average of
 // the samples' linear depths); the module's stencil is marked from the resolved strength mask
 // unless the host gave its own; the two separable passes run on the resolved images as in the
-// single-sample path; writing back, a last pass adds each pixel's change to the host's
-// translucent samples, one sample per draw.
+// single-sample path; writing back, a last pass blends each pixel's change into the host's
+// translucent samples (msaa_write.frag), in one draw where the shaders have gl_SampleMask (GLSL
+// 4.20) and one draw per sample under glSampleMaski on a GL 3.3-4.1 context. It never reads the
+// host's colour: the resolve kept what it needs of each pixel's translucent samples.
 #include "debug_label.hpp"
 #include "runners.hpp"
 #include "state_guard.hpp"
@@ -14,7 +16,8 @@ namespace sss::gl {
 namespace {
 sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** resolve, std::string* message) {
   const bool write_back = run.writes_back();
-  sss_result r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, resolve, message);
+  sss_result r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, !run.identity && write_back, resolve,
+                                           message);
   if (r == SSS_OK && !run.identity && run.stencil == nullptr) {
     GLuint unused = 0;
     r = ctx.programs.stencil_mark(&unused, message);
@@ -27,7 +30,6 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** reso
   ctx.targets.ensure_msaa_framebuffers();
   r = ctx.targets.ensure_msaa_targets(run.color.internal_format, run.color.width, run.color.height,
                                       !run.identity && write_back, message);
-  if (r == SSS_OK && write_back && !run.identity) r = ctx.targets.ensure_sample_copy(run.color, message);
   if (r != SSS_OK || run.identity) return r;
   // The single-sample passes' stencil copy and targets too: nothing is allocated after the first draw.
   const GLint stencil_format = run.stencil != nullptr ? run.stencil->texture.internal_format
@@ -39,6 +41,10 @@ sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram&
   const Functions& f = ctx.gl;
   begin_passes(ctx, run.viewport);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().resolve_framebuffer);
+  // Writing back, the translucent samples' mean and lowest values too (attachments 2 and 3).
+  const bool write_back = run.writes_back() && !run.identity;
+  const GLenum buffers[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2, COLOR_ATTACHMENT3};
+  f.DrawBuffers(write_back ? 4 : 2, buffers);
   const sss_result r = check_framebuffer(ctx, "MSAA resolve", message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss msaa resolve");
@@ -82,73 +88,70 @@ FilterRun passes_run(const FilterRun& run, const Targets& t, const StencilInput*
   FilterRun inner = resolved_run(run, t);
   if (!run.identity && run.stencil == nullptr) inner.stencil = own;
   inner.stencil_ready = true;
+  // Behind its own mask the write-back reads the blurred image only where the mask let the passes
+  // draw (msaa_write.frag applies the mask's test to the resolved colour), so the rest needs no copy.
+  // Behind the host's stencil it reads pixels outside it too: there the copy makes the change 0.
+  inner.output_outside_stencil_unread = run.writes_back() && run.stencil == nullptr;
   return inner;
 }
 
-// Copies the host's samples: the write pass reads them while the host texture is its target.
-sss_result copy_samples(PassContext& ctx, const FilterRun& run, std::string* message) {
-  const Functions& f = ctx.gl;
-  const Targets& t = ctx.targets.names();
-  const int x0 = run.viewport[0], y0 = run.viewport[1];
-  const int x1 = x0 + run.viewport[2], y1 = y0 + run.viewport[3];
-  f.BindFramebuffer(READ_FRAMEBUFFER, t.msaa_read_framebuffer);
-  f.FramebufferTexture2D(READ_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, run.color.name, 0);
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.sample_copy_framebuffer);
-  sss_result r = SSS_OK;
-  if (ctx.check_framebuffers && f.CheckFramebufferStatus(READ_FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) {
-    *message = "the host's multisampled colour texture cannot be read as a framebuffer attachment";
-    r = SSS_ERROR_FRAMEBUFFER;
-  } else {
-    r = check_framebuffer(ctx, "MSAA sample copy", message);
-  }
-  if (r == SSS_OK) {
-    DebugGroup group(f, ctx.labels, "sss msaa copy of the host's samples");
-    f.BlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, COLOR_BUFFER_BIT, NEAREST);
-  }
-  f.FramebufferTexture2D(READ_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, 0, 0);
-  return r;
+// The write-back's blend (msaa_write.frag): each written sample becomes src0 + sample · src1 in
+// colour; alpha is masked and keeps the host's exact value.
+void set_write_back_state(const Functions& f) {
+  f.Enable(BLEND);
+  f.BlendFuncSeparate(ONE, SRC1_COLOR, ZERO, ONE);
+  f.BlendEquationSeparate(FUNC_ADD, FUNC_ADD);
+  f.ColorMask(1, 1, 1, 0);
 }
 
-// One draw per sample under a one-bit sample mask: works on any GL 3.2+ context (no per-sample
-// shading needed) and each draw reads only its own sample of the copy.
+// One draw where the shader writes gl_SampleMask; else one draw per sample under a one-bit sample
+// mask (GL 3.2+, no per-sample shading needed), each discarding where its sample is opaque.
 void draw_sample_writes(PassContext& ctx, const FilterRun& run, const SampleWriteProgram& p) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
-  DebugGroup group(f, ctx.labels, "sss msaa per-sample write");
+  DebugGroup group(f, ctx.labels, p.one_draw ? "sss msaa write-back" : "sss msaa per-sample write-back");
   set_pass_state(f);
   // With GL_MULTISAMPLE off (a host may switch it off for its own passes) the GL ignores the sample
-  // mask, and each draw would write every sample of its pixels, the opaque ones included. It acts
-  // on multisampled targets alone, so this is the one draw that needs it (and the state guard
-  // saves it with the MSAA path's other state). ES has no such switch: it is always on there.
+  // mask (the shader's and glSampleMaski's), and each draw would write every sample of its pixels,
+  // the opaque ones included. It acts on multisampled targets alone, so this is the one pass that
+  // needs it (and the state guard saves it with the MSAA path's other state). ES has no such
+  // switch: it is always on there.
   f.Enable(MULTISAMPLE);
-  f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value in every sample
+  set_write_back_state(f);
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
   f.UseProgram(p.program);
   f.Uniform1i(p.samples, run.color.samples);
+  // The host's colour, which this pass draws into, stays bound to no unit (the resolve left it on unit 0).
   f.ActiveTexture(TEXTURE0 + unit::msaa_color);
-  f.BindTexture(TEXTURE_2D_MULTISAMPLE, t.sample_copy);
-  bind_texture(ctx, unit::msaa_depth, t.blurred, ctx.objects.sampler);
-  bind_texture(ctx, unit::msaa_extra, t.resolved_color, ctx.objects.sampler);
-  f.Enable(SAMPLE_MASK);
-  for (int i = 0; i < run.color.samples; ++i) {
-    f.SampleMaski(0, 1u << static_cast<unsigned>(i));
-    f.Uniform1i(p.sample, i);
+  f.BindTexture(TEXTURE_2D_MULTISAMPLE, 0);
+  bind_texture(ctx, unit::msaa_lowest, t.translucent_lowest, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::msaa_blurred, t.blurred, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::msaa_resolved, t.resolved_color, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::msaa_translucent, t.translucent_mean, ctx.objects.nearest_sampler);
+  if (p.one_draw) {
     f.DrawArrays(TRIANGLES, 0, 3);
     ++ctx.draws;
+  } else {
+    f.Enable(SAMPLE_MASK);
+    for (int i = 0; i < run.color.samples; ++i) {
+      f.SampleMaski(0, 1u << static_cast<unsigned>(i));
+      f.Uniform1i(p.sample, i);
+      f.DrawArrays(TRIANGLES, 0, 3);
+      ++ctx.draws;
+    }
+    f.Disable(SAMPLE_MASK);
   }
-  f.Disable(SAMPLE_MASK);
+  f.Disable(BLEND);
 }
 
 sss_result write_samples(PassContext& ctx, const FilterRun& run, std::string* message) {
   const Functions& f = ctx.gl;
-  sss_result r = copy_samples(ctx, run, message);
-  if (r != SSS_OK) return r;
   SampleWriteProgram* program = nullptr;
-  r = ctx.programs.sample_write(&program, message);  // built by prepare(): only looked up here
+  sss_result r = ctx.programs.sample_write(&program, message);  // built by prepare(): only looked up here
   if (r != SSS_OK) return r;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().sample_write_framebuffer);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, run.color.name, 0);
-  r = check_framebuffer(ctx, "MSAA per-sample write", message);
+  r = check_framebuffer(ctx, "MSAA write-back", message);
   if (r == SSS_OK) draw_sample_writes(ctx, run, *program);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, 0, 0);
   return r;
@@ -168,7 +171,10 @@ sss_result run_msaa(PassContext& ctx, const FilterRun& run, std::string* message
   // Everything built and allocated before the resolve, the first draw.
   sss_result r = prepare_msaa(ctx, run, message);
   ResolveProgram* resolve_program = nullptr;  // built by prepare_msaa: only looked up here
-  if (r == SSS_OK) r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, &resolve_program, message);
+  if (r == SSS_OK) {
+    r = ctx.programs.msaa_resolve(run.resolve_constants.linear_depth, run.writes_back() && !run.identity,
+                                  &resolve_program, message);
+  }
   if (r == SSS_OK) r = resolve(ctx, run, *resolve_program, message);
   if (r != SSS_OK) return r;
   StencilInput own;

@@ -224,14 +224,18 @@ void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
   p.normals = f.GetUniformLocation(p.program, "u_normals");
 }
 
-sss_result ProgramCache::msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message) {
-  ResolveProgram& p = resolve_[linear_depth ? 1 : 0];
+sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out,
+                                      std::string* message) {
+  const int index = (write_back ? 2 : 0) + (linear_depth ? 1 : 0);
+  ResolveProgram& p = resolve_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = msaa_resolve_defines(linear_depth);
+  const std::string defines = msaa_resolve_defines(linear_depth, write_back);
   p.program = link("msaa_resolve.frag", defines, "MSAA resolve shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, linear_depth ? "sss msaa resolve linear" : "sss msaa resolve", nullptr);
+  static const char* const kLabels[4] = {"sss msaa resolve", "sss msaa resolve linear", "sss msaa resolve for write-back",
+                                         "sss msaa resolve linear for write-back"};
+  finish(p.program, kLabels[index], nullptr);
   const Functions& f = *gl_;
   p.samples = f.GetUniformLocation(p.program, "u_samples");
   p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
@@ -257,15 +261,18 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   SampleWriteProgram& p = sample_write_;
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("msaa_write.frag", "", "MSAA write-back shader", message);
+  const std::string defines = msaa_write_defines(variant_);
+  p.program = link("msaa_write.frag", defines, "MSAA write-back shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, "sss msaa per-sample write", nullptr);
+  p.one_draw = msaa_write_in_one_draw(variant_);
+  finish(p.program, p.one_draw ? "sss msaa write-back" : "sss msaa per-sample write-back", nullptr);
   const Functions& f = *gl_;
   p.sample = f.GetUniformLocation(p.program, "u_sample");
   p.samples = f.GetUniformLocation(p.program, "u_samples");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_copy"), unit::msaa_color);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_depth);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_extra);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_lowest"), unit::msaa_lowest);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_blurred);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_resolved);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_translucent"), unit::msaa_translucent);
   return SSS_OK;
 }
 

@@ -70,7 +70,8 @@ struct PassInputsProgram {
 
 struct SampleWriteProgram {
   GLuint program = 0;
-  GLint sample = -1, samples = -1;
+  GLint sample = -1, samples = -1;  // `sample`: the per-sample draws' (-1 in the one-draw variant)
+  bool one_draw = false;            // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
 };
 
 class ProgramCache {
@@ -92,7 +93,8 @@ class ProgramCache {
                      std::string* message);
   sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
                              std::string* message);
-  sss_result msaa_resolve(bool linear_depth, ResolveProgram** out, std::string* message);
+  // `write_back`: the variant that also keeps the translucent samples' mean, lowest values and mask.
+  sss_result msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out, std::string* message);
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
@@ -128,7 +130,7 @@ class ProgramCache {
   std::map<int, BlurProgram> blur_;
   std::array<BlurProgram, kComputeVariantCount> compute_{};
   std::array<CbfProgram, kCbfVariantCount> cbf_{};
-  std::array<ResolveProgram, 2> resolve_{};  // index: host depth is linear
+  std::array<ResolveProgram, 4> resolve_{};  // index: 2 · writes back + host depth is linear
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
   StrengthProgram strength_combine_;

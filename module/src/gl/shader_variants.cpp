@@ -80,8 +80,9 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
   return defines;
 }
 
-std::string msaa_resolve_defines(bool linear_depth) {
-  return linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n";
+std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
+  return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
+         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n");
 }
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {

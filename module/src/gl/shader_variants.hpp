@@ -79,8 +79,15 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format, Compute
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
 
-// The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH.
-std::string msaa_resolve_defines(bool linear_depth);
+// The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH × SSS_WRITE_BACK (the translucent
+// samples' outputs for the write-back).
+std::string msaa_resolve_defines(bool linear_depth, bool write_back);
+// The MSAA write-back (msaa_write.frag): SSS_SAMPLE_MASK_OUTPUT, 1 where the dialect has
+// gl_SampleMask (GLSL 4.20 here): one draw; else one draw per sample under glSampleMaski.
+inline bool msaa_write_in_one_draw(GlslVariant v) { return v == GlslVariant::glsl420; }
+inline std::string msaa_write_defines(GlslVariant v) {
+  return msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n";
+}
 // The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
 // BlurVariant::profile_ids) and SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil).
 struct PassInputsVariant {

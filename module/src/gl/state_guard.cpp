@@ -28,6 +28,7 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
   if (msaa_write_back_in_scope()) {
     gl_.GetIntegeri_v(SAMPLE_MASK_VALUE, 0, &sample_mask_value_);
     multisample_ = gl_.IsEnabled(MULTISAMPLE);
+    for (std::size_t i = 0; i < kBlendParameters.size(); ++i) gl_.GetIntegerv(kBlendParameters[i], &blend_[i]);
   }
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) capabilities_[i] = gl_.IsEnabled(kCapabilities[i]);
   if (gl_.has_sample_mask()) sample_mask_ = gl_.IsEnabled(SAMPLE_MASK);
@@ -143,6 +144,11 @@ StateGuard::~StateGuard() {
   if (restore(restore_group::viewport)) gl_.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
   if (msaa_write_back_in_scope() && restore(restore_group::sample_mask_value)) {
     gl_.SampleMaski(0, static_cast<GLbitfield>(sample_mask_value_));
+  }
+  if (msaa_write_back_in_scope() && restore(restore_group::blend_function)) {
+    const auto e = [this](std::size_t i) { return static_cast<GLenum>(blend_[i]); };
+    gl_.BlendFuncSeparate(e(0), e(1), e(2), e(3));
+    gl_.BlendEquationSeparate(e(4), e(5));
   }
   for (int unit = 0; unit < units() && restore(restore_group::texture_units); ++unit) {
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));

@@ -40,7 +40,8 @@ enum : uint32_t {
   uniform_buffer = 1u << 18,     // uniform buffer binding 0 and the generic one (per-pixel profiles)
   pack_state = 1u << 19,         // pack buffer, alignment, row length, skips (debug checks' readback)
   depth = 1u << 20,              // depth func, write mask and range (the fragment passes' culling)
-  all = (1u << 21) - 1u
+  blend_function = 1u << 21,     // blend factors and equations (draw buffer 0's): the MSAA write-back only
+  all = (1u << 22) - 1u
 };
 }  // namespace restore_group
 #ifdef SSS_STATE_GUARD_TEST_HOOK
@@ -55,9 +56,9 @@ struct GuardScope {
   bool image_unit = true;    // image unit 0: only the compute path binds it
   bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
                              // masked path's or the MSAA path's)
-  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE and
-                             // GL_MULTISAMPLE: the MSAA path, and the texture query's probe of a
-                             // texture's target
+  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE,
+                             // GL_MULTISAMPLE and the blend function: the MSAA path, and the texture
+                             // query's probe of a texture's target
   bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
   bool profiles = true;      // texture unit 4 and uniform buffer binding 0: per-pixel profiles
   bool pack = false;         // the pack state: the debug checks read the profile indices back
@@ -92,7 +93,8 @@ class StateGuard {
   static constexpr std::array<GLenum, 4> kPackParameters = {PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS,
                                                               PACK_SKIP_PIXELS};
   int units() const { return scope_.profiles ? kUnitCount : scope_.unit3 ? kUnitCount - 1 : kUnitCount - 2; }
-  // GL_SAMPLE_MASK_VALUE and GL_MULTISAMPLE: set by the desktop MSAA write-back only (never on ES).
+  // GL_SAMPLE_MASK_VALUE, GL_MULTISAMPLE and the blend function: set by the desktop MSAA write-back
+  // only (never on ES).
   bool msaa_write_back_in_scope() const { return scope_.multisample && gl_.has_msaa_path(); }
 
   const Functions& gl_;
@@ -104,6 +106,11 @@ class StateGuard {
   std::array<GLint, kUnitCount> multisample_textures_{};  // GL 3.2+ / ES 3.1+ only
   GLint sample_mask_value_ = -1;  // GL_SAMPLE_MASK_VALUE, word 0 (the desktop MSAA write-back sets it)
   GLboolean multisample_ = 1;     // the GL_MULTISAMPLE enable (the desktop MSAA write-back switches it on)
+  // GL_BLEND_SRC_RGB, _DST_RGB, _SRC_ALPHA, _DST_ALPHA, _EQUATION_RGB, _EQUATION_ALPHA: the MSAA
+  // write-back blends its change into the host's samples. Draw buffer 0's; restored on every buffer.
+  static constexpr std::array<GLenum, 6> kBlendParameters = {BLEND_SRC_RGB, BLEND_DST_RGB, BLEND_SRC_ALPHA,
+                                                               BLEND_DST_ALPHA, BLEND_EQUATION_RGB, BLEND_EQUATION_ALPHA};
+  std::array<GLint, 6> blend_{};
   std::array<GLint, 4> viewport_{};
   std::array<GLboolean, kCapabilities.size()> capabilities_{};
   std::array<GLboolean, kDesktopCapabilities.size()> desktop_capabilities_{};

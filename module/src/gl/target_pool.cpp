@@ -57,12 +57,12 @@ void TargetPool::destroy() {
   const Functions& f = *gl_;
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
-                                 t_.msaa_read_framebuffer,    t_.sample_copy_framebuffer,
                                  t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
                                  t_.pass_intermediate_framebuffer};
-  const GLuint textures[] = {t_.intermediate,   t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
-                             t_.resolved_color, t_.resolved_distance, t_.blurred,         t_.sample_copy,
-                             t_.strength_source,  t_.pass_taps,         t_.pass_strength,     t_.pass_intermediate};
+  const GLuint textures[] = {t_.intermediate,       t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
+                             t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
+                             t_.translucent_lowest, t_.strength_source,   t_.pass_taps,       t_.pass_strength,
+                             t_.pass_intermediate};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -185,36 +185,33 @@ sss_result TargetPool::ensure_masked_source(GLint format, int width, int height,
 void TargetPool::ensure_msaa_framebuffers() {
   if (t_.resolve_framebuffer != 0) return;
   const Functions& f = *gl_;
-  GLuint framebuffers[4] = {0, 0, 0, 0};
-  f.GenFramebuffers(4, framebuffers);
+  GLuint framebuffers[2] = {0, 0};
+  f.GenFramebuffers(2, framebuffers);
   t_.resolve_framebuffer = framebuffers[0];
-  t_.msaa_read_framebuffer = framebuffers[1];
-  t_.sample_copy_framebuffer = framebuffers[2];
-  t_.sample_write_framebuffer = framebuffers[3];
+  t_.sample_write_framebuffer = framebuffers[1];
+  // The resolve's draw buffers are set per frame (msaa_runner.cpp): 2, or 4 writing back.
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
-  const GLenum both[2] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1};
-  f.DrawBuffers(2, both);  // colour and view distance in one pass
-  for (int i = 1; i < 4; ++i) f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffers[i]);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.sample_write_framebuffer);
   label_object(f, labels_, FRAMEBUFFER, t_.resolve_framebuffer, "sss msaa resolve target");
-  label_object(f, labels_, FRAMEBUFFER, t_.msaa_read_framebuffer, "sss msaa host colour source");
-  label_object(f, labels_, FRAMEBUFFER, t_.sample_copy_framebuffer, "sss msaa sample copy");
-  label_object(f, labels_, FRAMEBUFFER, t_.sample_write_framebuffer, "sss msaa per-sample write target");
+  label_object(f, labels_, FRAMEBUFFER, t_.sample_write_framebuffer, "sss msaa write-back target");
 }
 
-sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred,
+sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int height, bool write_back,
                                            std::string* message) {
   const Functions& f = *gl_;
   const bool same = t_.resolved_color != 0 && msaa_color_format_ == color_format && msaa_width_ == width &&
                     msaa_height_ == height;
   if (!same) {
     if (t_.resolved_color == 0) {
-      GLuint t[3] = {0, 0, 0};
-      f.GenTextures(3, t);
+      GLuint t[5] = {0, 0, 0, 0, 0};
+      f.GenTextures(5, t);
       t_.resolved_color = t[0];
       t_.resolved_distance = t[1];
       t_.blurred = t[2];
+      t_.translucent_mean = t[3];
+      t_.translucent_lowest = t[4];
     }
-    has_blurred_ = false;
+    has_write_back_targets_ = false;
     specify_2d(f, t_.resolved_color, color_format, RGBA, FLOAT, width, height);
     specify_2d(f, t_.resolved_distance, static_cast<GLint>(R32F), RED, FLOAT, width, height);
     const GLenum error = f.GetError();
@@ -231,43 +228,20 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.resolved_color, 0);
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.resolved_distance, 0);
   }
-  if (need_blurred && !has_blurred_) {
+  if (write_back && !has_write_back_targets_) {
     specify_2d(f, t_.blurred, color_format, RGBA, FLOAT, width, height);
+    specify_2d(f, t_.translucent_mean, static_cast<GLint>(RGBA32F), RGBA, FLOAT, width, height);
+    specify_2d(f, t_.translucent_lowest, static_cast<GLint>(RGBA32UI), RGBA_INTEGER, UNSIGNED_INT, width, height);
     const GLenum error = f.GetError();
-    if (error != NO_ERROR) return allocation_failed(error, "MSAA blurred target", width, height, message);
-    label_object(f, labels_, TEXTURE, t_.blurred, "sss msaa blurred (before the per-sample write)");
-    has_blurred_ = true;
+    if (error != NO_ERROR) return allocation_failed(error, "MSAA write-back targets", width, height, message);
+    label_object(f, labels_, TEXTURE, t_.blurred, "sss msaa blurred (before the write-back)");
+    label_object(f, labels_, TEXTURE, t_.translucent_mean, "sss msaa translucent samples' mean and count");
+    label_object(f, labels_, TEXTURE, t_.translucent_lowest, "sss msaa translucent samples' lowest values and mask");
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.translucent_mean, 0);
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT3, TEXTURE_2D, t_.translucent_lowest, 0);
+    has_write_back_targets_ = true;
   }
-  return SSS_OK;
-}
-
-sss_result TargetPool::ensure_sample_copy(const TextureInfo& color, std::string* message) {
-  if (t_.sample_copy != 0 && copy_format_ == color.internal_format && copy_width_ == color.width &&
-      copy_height_ == color.height && copy_samples_ == color.samples && copy_fixed_ == color.fixed_locations) {
-    return SSS_OK;
-  }
-  const Functions& f = *gl_;
-  // Multisample storage cannot be respecified in place on every driver: make a new texture.
-  if (t_.sample_copy != 0) f.DeleteTextures(1, &t_.sample_copy);
-  f.GenTextures(1, &t_.sample_copy);
-  f.ActiveTexture(TEXTURE0);
-  f.BindTexture(TEXTURE_2D_MULTISAMPLE, t_.sample_copy);
-  f.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, color.samples, static_cast<GLenum>(color.internal_format),
-                          color.width, color.height, color.fixed_locations);
-  const GLenum error = f.GetError();
-  if (error != NO_ERROR) {
-    f.DeleteTextures(1, &t_.sample_copy);
-    t_.sample_copy = 0;
-    return allocation_failed(error, "multisampled colour copy", color.width, color.height, message);
-  }
-  label_object(f, labels_, TEXTURE, t_.sample_copy, "sss msaa copy of the host's samples");
-  copy_format_ = color.internal_format;
-  copy_width_ = color.width;
-  copy_height_ = color.height;
-  copy_samples_ = color.samples;
-  copy_fixed_ = color.fixed_locations;
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.sample_copy_framebuffer);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, t_.sample_copy, 0);
   return SSS_OK;
 }
 

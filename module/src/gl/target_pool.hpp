@@ -27,11 +27,11 @@ struct Targets {
   GLuint stencil_buffer = 0;           // the stencil copy (host's format) or the mask marked from alpha
   // Cross-bilateral mode with a stencil: the colour with alpha 0 outside it (host's format).
   GLuint masked_source = 0, masked_framebuffer = 0;
-  // MSAA path: the resolve's colour (host's format) and view distance (R32F), the blurred result
-  // before the per-sample write, and a copy of the host's samples (the write reads it).
-  GLuint resolve_framebuffer = 0, msaa_read_framebuffer = 0, sample_copy_framebuffer = 0,
-         sample_write_framebuffer = 0;
-  GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, sample_copy = 0;
+  // MSAA path: the resolve's colour (host's format) and view distance (R32F); writing back, the
+  // blurred result and what the resolve keeps of each pixel's translucent samples for the write:
+  // their mean and count (RGBA32F) and their smallest values and mask (RGBA32UI).
+  GLuint resolve_framebuffer = 0, sample_write_framebuffer = 0;
+  GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, translucent_mean = 0, translucent_lowest = 0;
   // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
   GLuint strength_source = 0, strength_framebuffer = 0;
   // The separable fragment passes (pass_inputs.frag): per pixel the colour's and view distance's
@@ -58,8 +58,9 @@ class TargetPool {
   sss_result ensure_stencil_buffer(GLint format, int width, int height, std::string* message);
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
   void ensure_msaa_framebuffers();
-  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool need_blurred, std::string* message);
-  sss_result ensure_sample_copy(const TextureInfo& color, std::string* message);
+  // `write_back`: also the blurred result and the translucent samples' targets (the resolve's
+  // attachments 2 and 3).
+  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, std::string* message);
   // `format`: RGBA16F or RGBA32F.
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
   // The three pass_* targets and their framebuffers at this size.
@@ -89,10 +90,7 @@ class TargetPool {
   int masked_width_ = 0, masked_height_ = 0;
   GLint msaa_color_format_ = 0;
   int msaa_width_ = 0, msaa_height_ = 0;
-  bool has_blurred_ = false;
-  GLint copy_format_ = 0;
-  int copy_width_ = 0, copy_height_ = 0, copy_samples_ = 0;
-  GLboolean copy_fixed_ = 1;
+  bool has_write_back_targets_ = false;
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
   int pass_width_ = 0, pass_height_ = 0;

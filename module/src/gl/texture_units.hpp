@@ -22,9 +22,12 @@ constexpr GLuint profile_ids = 4;
 // The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;
 
-// The MSAA resolve, stencil mark and per-sample write.
-constexpr GLuint msaa_color = 0;  // resolve: the host's samples; write: the copy of them
-constexpr GLuint msaa_depth = 1;  // resolve: the host's depth samples; write: the blurred image
-constexpr GLuint msaa_extra = 2;  // write: the resolved colour
+// The MSAA resolve, stencil mark and write-back (which never reads the host's samples).
+constexpr GLuint msaa_color = 0;        // resolve: the host's samples
+constexpr GLuint msaa_depth = 1;        // resolve: the host's depth samples
+constexpr GLuint msaa_lowest = 0;       // write: the translucent samples' smallest values and mask
+constexpr GLuint msaa_blurred = 1;      // write: the blurred image
+constexpr GLuint msaa_resolved = 2;     // write: the resolved colour
+constexpr GLuint msaa_translucent = 3;  // write: the translucent samples' mean and count
 
 }  // namespace sss::gl::unit
