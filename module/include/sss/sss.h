@@ -55,8 +55,8 @@
  * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
  * SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7,
  * MULTISAMPLE; colour mask (buffer 0); blend func/equation (buffer 0; MSAA); polygon mode; front/back stencil;
- * the depth texture's DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there. Untouched: depth func, scissor box, clear
- * values, other bindings and texture parameters. No transform feedback or conditional render.
+ * depth func, write mask and range; the depth texture's DEPTH_STENCIL_TEXTURE_MODE. On ES what exists there.
+ * Untouched: scissor box, clear values, other bindings, texture parameters. No transform feedback/conditional render.
  */
 #ifndef SSS_SSS_H
 #define SSS_SSS_H
@@ -101,7 +101,7 @@ typedef enum sss_path {
   SSS_PATH_FRAGMENT = 0,       /**< two full-screen fragment passes (every GL) */
   SSS_PATH_COMPUTE = 1,        /**< two compute dispatches (desktop GL 4.3+), else fragment */
   SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy); default */
-  SSS_PATH_FRAGMENT_MASKED = 3 /**< fragment passes behind a stencil marked from alpha */
+  SSS_PATH_FRAGMENT_MASKED = 3 /**< since 0.4: the same as SSS_PATH_FRAGMENT (both cull by alpha) */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */
 #define SSS_SETTINGS_ALL_FLAGS 0x1u
