@@ -39,7 +39,7 @@ renderer=$(build/release/integration/sss_headless_info egl 2>/dev/null | sed -n 
 echo "# Per-pixel profiles against one profile on llvmpipe ($size, in place, 17 taps)"
 echo
 echo "The same frame of each benchmark scene (the default settings at the scene's scale, the default"
-echo "path: \`SSS_PATH_AUTO\`, the masked passes here): once with one profile and no \`profile_texture\`,"
+echo "path: \`SSS_PATH_AUTO\`, the culled fragment passes here): once with one profile and no \`profile_texture\`,"
 echo "once with $profiles profiles set (\`sss_set_profiles\`; the others of other strength, falloff and"
 echo "scale) and an \`R8UI\` index texture (\`sss_cost_probe --profiles $profiles\`). Written by"
 echo "\`scripts/profile-cost.sh\` at $rev on $(date -u '+%Y-%m-%d %H:%M UTC'). Renderer: \`$renderer\`."

@@ -32,7 +32,13 @@ class Msaa : public GlTest {
     if (is_gles()) GTEST_SKIP() << "the MSAA path is desktop OpenGL only (see MsaaOnGles for ES)";
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples_);
     if (max_samples_ < 4) GTEST_SKIP() << "the context offers " << max_samples_ << " samples";
-    sss_ = create_sss();
+    fresh_context();
+  }
+
+  // A new context (created with `flags`) with the tests' camera and settings.
+  void fresh_context(uint32_t flags = 0) {
+    if (sss_ != nullptr) sss_destroy(sss_);
+    sss_ = create_sss(flags);
     ASSERT_NE(sss_, nullptr);
     ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     sss_settings s;
@@ -451,15 +457,9 @@ TEST_F(Msaa, WriteBackOnAGl33ContextGivesTheSameSamples) {
   std::vector<std::vector<float>> after[2];
   for (int gl33 = 0; gl33 < 2; ++gl33) {
     if (gl33 != 0) {
-      sss_destroy(sss_);
       loader_override_ = loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test", sss_headless_get_proc_address);
-      sss_ = create_sss();
-      ASSERT_NE(sss_, nullptr);
-      ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-      sss_settings s;
-      sss_default_settings(&s);
-      s.world_units_per_mm = 0.05f;
-      ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+      fresh_context();
+      if (HasFatalFailure()) return;
     }
     const GLuint color = ms(GL_RGBA32F, fine.color);
     const sss_frame f = frame(color, ms(GL_DEPTH_COMPONENT32F, fine.window_depth));
@@ -528,14 +528,8 @@ TEST_F(Msaa, ASampleThatWouldGoNegativeKeepsTheResolveOnTheBlurredPixel) {
 // path), so the blur passes touch exactly the pixels with a translucent sample: the vertical pass's
 // sample count (SSS_CREATE_STATS, into a separate output) equals that many pixels.
 TEST_F(Msaa, TheStencilBuiltFromTheMaskLimitsThePassesToTranslucentPixels) {
-  sss_destroy(sss_);
-  sss_ = create_sss(SSS_CREATE_STATS);
-  ASSERT_NE(sss_, nullptr);
-  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-  sss_settings s;
-  sss_default_settings(&s);
-  s.world_units_per_mm = 0.05f;
-  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  fresh_context(SSS_CREATE_STATS);
+  if (HasFatalFailure()) return;
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
   uint64_t translucent = 0;
   for (int y = 0; y < kH; ++y) {

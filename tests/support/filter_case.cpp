@@ -194,6 +194,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     }
   }
 
+  if (sss_ != nullptr) sss_destroy(sss_);  // a test may run several cases: each gets a fresh context
   sss_ = create_sss();
   if (sss_ == nullptr) return outcome;
   EXPECT_EQ(sss_set_settings(sss_, &c.settings), SSS_OK) << sss_last_error(sss_);

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Regenerates docs/benchmarks-passes.md (and docs/benchmarks-passes/): the rows issue 24 ("Faster
+# passes") is measured by, alone, on this machine's GL: the default kernel written back in place at
+# 1920x1080 on the head shots and the empty frame, on the plain and masked fragment paths, with and
+# without the host's region, each beside the two-pass copy of the same run (`x copy`). A full
+# scripts/run-benchmark.sh run has the same rows in docs/benchmarks.md ("Skipping what a frame does
+# not need (1920x1080)"); this shorter run is for a loaded machine, where the full sweep takes hours.
+# Installs what is missing first. Extra arguments go to sss_bench.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh test
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build build/release --parallel "$(nproc)" --target sss_bench
+rm -rf docs/benchmarks-passes
+mkdir -p docs/benchmarks-passes
+build/release/tests/bench/sss_bench --full \
+  --methods copy,separable-in-place,separable-region,separable-masked,separable-auto-region \
+  --size 1920x1080:head-close,head-mid,head-far,empty --footprints "" --no-exact \
+  --no-msaa --no-heat-maps \
+  --out docs/benchmarks-passes --doc docs/benchmarks-passes.md "$@"
+rm -f docs/benchmarks-passes/*.dat docs/benchmarks-passes/*.gp
