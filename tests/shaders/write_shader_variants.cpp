@@ -82,16 +82,16 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
                    "_m" + std::to_string(v.mark_depth ? 1 : 0) + ".frag",
                gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
-  // Every switch set with the tap count as a uniform (any count but the presets'), and at the
-  // default's 17 taps as a constant; the other presets (their constants differ, the code does not)
-  // on the written-back pair of the default's switches, with and without jitter.
+  // Every switch set with the tap count as a uniform (any count but the presets'); the presets'
+  // constant counts (the loop and spacing differ, the rest does not) on the written-back pair of
+  // the default's switches, with and without jitter.
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     gl::BlurVariant v = gl::blur_variant_at(i);
     if (!gl::is_fragment_blur_variant(v)) continue;
     const bool default_pair = v.follow_surface == 1 && v.profile_ids == 0 && !v.accumulate &&
                               (v.outside == gl::BlurOutside::discard || v.packed_output);
     for (const int half_taps : {0, SSS_TAPS_LOW / 2, SSS_TAPS_MEDIUM / 2, SSS_TAPS_HIGH / 2}) {
-      if (half_taps != 0 && half_taps != SSS_TAPS_MEDIUM / 2 && !default_pair) continue;
+      if (half_taps != 0 && !default_pair) continue;
       v.half_taps = half_taps;
       out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + "_t" + std::to_string(half_taps) +
                      ".frag",
