@@ -1,13 +1,13 @@
 // SSS_PATH_AUTO: which way of running the passes a frame takes: the plain fragment passes, the
-// fragment passes behind a stencil marked from alpha, or the compute dispatches. Where timer
+// masked ones (since 0.4 the same draws: both cull by the depth their inputs draw marks), or the
+// compute dispatches. Where timer
 // queries are trustworthy, the first frames of a configuration cycle through the paths that can
 // run it, each timed with one GL_TIME_ELAPSED query around the whole frame and read back only once
 // available (never stalling); when each has kTrials results the lowest median wins until the
 // configuration changes. Without a trustworthy timer (Mesa's software rasterisers, where
 // GL_TIME_ELAPSED covers one tile) it takes what the benchmark measured fastest there
-// (docs/benchmarks.md): the masked fragment path, or the plain one when the host's region already
-// leaves out what is not translucent (the mark and its copy then cost more than they save) or the
-// mask cannot be used.
+// (docs/benchmarks.md): reported as the masked fragment path, or the plain one when the host gave
+// its region or the mask cannot be used (the two run the same culled draws since 0.4).
 #pragma once
 
 #include <array>

@@ -24,7 +24,9 @@ struct Targets {
          accumulator_framebuffer = 0;
   GLuint intermediate = 0;             // the horizontal pass's result: RGBA16F, or RGBA32F for RGBA32F colour
   std::array<GLuint, 2> accumulators{};  // the sum of the kernel's earlier terms, ping-ponged
-  GLuint stencil_buffer = 0;           // the stencil copy (host's format) or the mask marked from alpha
+  // The stencil copy (host's format), the MSAA path's mask marked from alpha, or the fragment
+  // passes' culling depth (DEPTH24_STENCIL8, marked by their inputs draw).
+  GLuint stencil_buffer = 0;
   // Cross-bilateral mode with a stencil: the colour with alpha 0 outside it (host's format).
   GLuint masked_source = 0, masked_framebuffer = 0;
   // MSAA path: the resolve's colour (host's format) and view distance (R32F); writing back, the
