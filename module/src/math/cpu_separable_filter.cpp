@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
@@ -125,11 +126,26 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
 }
 
 void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std::vector<PassConstants>& constants,
-                        const std::uint16_t* ids, const CpuFilterImage& image, float* out) {
+                        const std::uint16_t* ids, const CpuFilterImage& image, float* out, bool index_in_distance) {
   const int w = image.width, h = image.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   const Plane color{w, h, 4, image.color};
-  const Plane depth{w, h, 1, image.depth};
+  // With the index in the distance's low byte, the passes read distances without those 8 bits: the
+  // model linearises first and reads the result as linear depth.
+  PassConstants shared = constants.front();
+  std::vector<float> distances;
+  if (index_in_distance) {
+    distances.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      std::uint32_t bits = 0;
+      const float d = linearise_depth(shared, image.depth[i]);
+      std::memcpy(&bits, &d, sizeof bits);
+      bits &= 0xFFFFFF00u;
+      std::memcpy(&distances[i], &bits, sizeof bits);
+    }
+    shared.linear_depth = true;
+  }
+  const Plane depth{w, h, 1, index_in_distance ? distances.data() : image.depth};
   const Indices indices{ids, w};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
@@ -144,8 +160,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
     const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
     const PassTerm& term = kernel.terms.front();
     return filter_pixel(axis == 0 ? term.horizontal : term.vertical, kernel, term.depth_variance_mm2,
-                        constants[static_cast<std::size_t>(p)], constants.front(), source, depth, indices, axis, x, y,
-                        blurred);
+                        constants[static_cast<std::size_t>(p)], shared, source, depth, indices, axis, x, y, blurred);
   };
   cpu_passes::horizontal_into_intermediate(
       image, constants.front(), false, [&](int x, int y, Rgba* blurred) { return pass(0, color, x, y, blurred); },
