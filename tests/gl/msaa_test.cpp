@@ -55,6 +55,25 @@ class Msaa : public GlTest {
 
   sss_frame frame(GLuint color, GLuint depth, GLuint output = 0) const { return frame_of(color, depth, output); }
 
+  // The scene `fine` (made at twice the size) filtered into an output, then written back in place:
+  // the output, and the colour's samples before and after the write-back.
+  struct WriteBack {
+    std::vector<float> blurred;
+    std::vector<std::vector<float>> before, after;
+  };
+  WriteBack write_back(const SyntheticScene& fine) {
+    WriteBack w;
+    const GLuint color = ms(GL_RGBA32F, fine.color);
+    const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
+    w.blurred = apply_to_output(frame(color, depth));
+    w.before = read_samples(color, kW, kH, 4);
+    const sss_frame in_place = frame(color, depth);
+    EXPECT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    w.after = read_samples(color, kW, kH, 4);
+    return w;
+  }
+
   std::vector<float> apply_to_output(const sss_frame& in) {
     sss_frame f = in;
     f.output_texture = make_rgba32f(kW, kH, std::vector<float>(kW * kH * 4, -7.0f));
@@ -138,14 +157,10 @@ TEST_F(Msaa, InteriorPixelsWhoseSamplesAgreeMatchTheSingleSampleResult) {
 
 TEST_F(Msaa, WriteBackChangesOnlyTranslucentSamplesAndResolvesToTheBlurredImage) {
   const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 10, kCamera);
-  const GLuint color = ms(GL_RGBA32F, fine.color);
-  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
-  const std::vector<float> blurred = apply_to_output(frame(color, depth));
-  const auto before = read_samples(color, kW, kH, 4);
-  const sss_frame in_place = frame(color, depth);
-  ASSERT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  const auto after = read_samples(color, kW, kH, 4);
+  const WriteBack w = write_back(fine);
+  const std::vector<float>& blurred = w.blurred;
+  const auto& before = w.before;
+  const auto& after = w.after;
 
   int changed_pixels = 0, checked_pixels = 0;
   for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
@@ -487,13 +502,10 @@ TEST_F(Msaa, ASampleThatWouldGoNegativeKeepsTheResolveOnTheBlurredPixel) {
       if (c[3] > 0.0f) c[0] = c[1] = c[2] = 1e-4f;
     }
   }
-  const GLuint color = ms(GL_RGBA32F, fine.color);
-  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine.window_depth);
-  const std::vector<float> blurred = apply_to_output(frame(color, depth));
-  const auto before = read_samples(color, kW, kH, 4);
-  const sss_frame in_place = frame(color, depth);
-  ASSERT_EQ(sss_apply_frame(sss_, &in_place), SSS_OK) << sss_last_error(sss_);
-  const auto after = read_samples(color, kW, kH, 4);
+  const WriteBack w = write_back(fine);
+  const std::vector<float>& blurred = w.blurred;
+  const auto& before = w.before;
+  const auto& after = w.after;
   int pulled = 0, all_black = 0;
   for (std::size_t p = 0; p < static_cast<std::size_t>(kW * kH); ++p) {
     for (std::size_t c = 0; c < 3; ++c) {
