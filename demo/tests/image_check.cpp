@@ -28,16 +28,12 @@
 #include <string>
 #include <vector>
 
+#include "check_tool.hpp"
+
 namespace {
 
-int g_failures = 0;
-
-void check(bool condition, const std::string &what) {
-  if (!condition) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    ++g_failures;
-  }
-}
+using demo_check::check;
+using demo_check::g_failures;
 
 struct Image {
   int width = 0, height = 0;
@@ -254,13 +250,6 @@ int window(int argc, char **argv) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
-  int status = 2;
-  if (mode == "headless") status = headless(argc, argv);
-  if (mode == "window") status = window(argc, argv);
-  if (status == 2)
-    std::fprintf(stderr, "usage: %s headless DIR ATTRIBUTION PRESET... | window FRAME.png WINDOW.png REFERENCE.png\n", argv[0]);
-  else
-    std::printf("%s\n", status == 0 ? "all checks passed" : "some checks failed");
-  return status;
+  return demo_check::run_mode(argc, argv, {{"headless", headless}, {"window", window}},
+                              "headless DIR ATTRIBUTION PRESET... | window FRAME.png WINDOW.png REFERENCE.png");
 }

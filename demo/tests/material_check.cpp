@@ -30,16 +30,12 @@
 #include <string>
 #include <vector>
 
+#include "check_tool.hpp"
+
 namespace {
 
-int g_failures = 0;
-
-void check(bool condition, const std::string &what) {
-  if (!condition) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    ++g_failures;
-  }
-}
+using demo_check::check;
+using demo_check::g_failures;
 
 std::vector<char> read_file(const std::string &path) {
   std::ifstream in(path, std::ios::binary);
@@ -213,16 +209,6 @@ int bleed(int argc, char **argv) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
-  int status = 2;
-  if (mode == "colours") status = colours(argc, argv);
-  if (mode == "objects") status = objects(argc, argv);
-  if (mode == "bleed") status = bleed(argc, argv);
-  if (status == 2) {
-    std::fprintf(stderr, "usage: %s colours PNG N | objects DIR PRESET N | bleed ON_A ON_B OFF_A OFF_B PRESET FACE HAND\n",
-                 argv[0]);
-  } else {
-    std::printf("%s\n", status == 0 ? "all checks passed" : "some checks failed");
-  }
-  return status;
+  return demo_check::run_mode(argc, argv, {{"colours", colours}, {"objects", objects}, {"bleed", bleed}},
+                              "colours PNG N | objects DIR PRESET N | bleed ON_A ON_B OFF_A OFF_B PRESET FACE HAND");
 }
