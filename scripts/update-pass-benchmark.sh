@@ -9,14 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-scripts/install-deps.sh test
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build/release --parallel "$(nproc)" --target sss_bench
-rm -rf docs/benchmarks-passes
-mkdir -p docs/benchmarks-passes
-build/release/tests/bench/sss_bench --full \
+exec scripts/bench-rows.sh benchmarks-passes --full \
   --methods copy,separable-in-place,separable-region,separable-masked,separable-auto-region \
   --size 1920x1080:head-close,head-mid,head-far,empty --footprints "" --no-exact \
-  --no-msaa --no-heat-maps \
-  --out docs/benchmarks-passes --doc docs/benchmarks-passes.md "$@"
-rm -f docs/benchmarks-passes/*.dat docs/benchmarks-passes/*.gp
+  --no-msaa --no-heat-maps "$@"

@@ -8,13 +8,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-scripts/install-deps.sh test
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build/release --parallel "$(nproc)" --target sss_bench
-rm -rf docs/benchmarks-profiles
-mkdir -p docs/benchmarks-profiles
-build/release/tests/bench/sss_bench --full --methods separable-one-profile,separable-profiles \
+exec scripts/bench-rows.sh benchmarks-profiles --full --methods separable-one-profile,separable-profiles \
   --size 640x360:head-close,head-mid,head-far,head-mixed --size 1920x1080:head-close,head-mid,head-far \
-  --no-msaa --no-heat-maps --warmup 3 --reps 15 \
-  --out docs/benchmarks-profiles --doc docs/benchmarks-profiles.md "$@"
-rm -f docs/benchmarks-profiles/*.dat docs/benchmarks-profiles/*.gp
+  --no-msaa --no-heat-maps --warmup 3 --reps 15 "$@"
