@@ -59,8 +59,8 @@ class IntermediatePrecision : public FilterCaseTest {
     if (path == SSS_PATH_COMPUTE) {
       EXPECT_EQ(stats.last_frame_path, compute ? SSS_PATH_COMPUTE : SSS_PATH_FRAGMENT);
     }
-    if (path == SSS_PATH_FRAGMENT_MASKED) {
-      EXPECT_EQ(stats.last_frame_path, SSS_PATH_FRAGMENT_MASKED);
+    if (path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_HALF_RESOLUTION) {
+      EXPECT_EQ(stats.last_frame_path, path);
     }
   }
 

@@ -1,5 +1,8 @@
 #include "filter_case.hpp"
 
+#include "math/cpu_half_resolution.hpp"
+#include "math/half_resolution.hpp"
+
 #include "kernel_of.hpp"
 
 #include <algorithm>
@@ -267,6 +270,12 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
     sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
                               c.normals.empty() ? nullptr : c.normals.data());
+  } else if (c.settings.path == SSS_PATH_HALF_RESOLUTION && kernel.terms.size() == 1 && !c.use_stencil) {
+    sss::math::CpuHalfResolutionStats stats;
+    sss::math::cpu_half_resolution_filter({&kernel}, {constants}, nullptr, image,
+                                          sss::math::kHalfResolutionMinReachPixels, outcome.cpu.data(), &stats);
+    outcome.upsampled = stats.upsampled;
+    outcome.full_size = stats.full_size;
   } else {
     sss::math::cpu_pass_kernel_filter(kernel, constants, image, outcome.cpu.data());
   }

@@ -31,6 +31,9 @@ struct FilterOutcome {
   std::vector<float> gpu;     // the GL's result
   std::vector<float> cpu;     // the CPU model's result
   sss_result result = SSS_OK;
+  // The half-resolution path's CPU model ran: the pixels it upsampled and those it left to the
+  // full-size passes (-1: another model ran).
+  long long upsampled = -1, full_size = -1;
 };
 
 // Settings whose blur shows clearly on the synthetic scenes: strength .9/.8/.7, falloff 1/.6/.4.
@@ -41,7 +44,8 @@ sss_settings visible_settings(int samples, uint32_t flags, float width);
 sss_settings path_case_settings(sss_settings base, uint32_t path, uint32_t mode, bool two_terms);
 
 // Every way a frame can run, for path_case_settings: each path, a kernel of two terms, and the
-// cross-bilateral mode (the compute path is the fragment path where the GL has no compute shaders).
+// cross-bilateral mode (the compute path is the fragment path where the GL has no compute shaders;
+// run_case's CPU model is the half-resolution one where that path runs).
 struct PathCase {
   const char* name;
   uint32_t path, mode;
@@ -50,6 +54,7 @@ struct PathCase {
 inline constexpr PathCase kEveryPath[] = {
     {"fragment", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false},
     {"masked", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false},
+    {"half resolution", SSS_PATH_HALF_RESOLUTION, SSS_MODE_SEPARABLE, false},
     {"compute (the fragment path where the GL has none)", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false},
     {"two kernel terms", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true},
     {"compute, two kernel terms", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, true},

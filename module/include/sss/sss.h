@@ -96,15 +96,16 @@ typedef enum sss_profile {
 #define SSS_PROFILE_COUNT 16
 
 typedef enum sss_mode { SSS_MODE_SEPARABLE = 0, SSS_MODE_CROSS_BILATERAL = 1 } sss_mode; /**< paper; Mikkelsen 2010 */
-/** How the separable passes run; all give the same image within fp16 rounding. */
+/** How the separable passes run; 0-3 give the same image within fp16 rounding. */
 typedef enum sss_path {
-  SSS_PATH_FRAGMENT = 0,       /**< two full-screen fragment passes (every GL) */
-  SSS_PATH_COMPUTE = 1,        /**< two compute dispatches (desktop GL 4.3+), else fragment */
+  SSS_PATH_FRAGMENT = 0, SSS_PATH_COMPUTE = 1, /**< two full-screen fragment passes; compute (GL 4.3+) else fragment */
   SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy); default */
-  SSS_PATH_FRAGMENT_MASKED = 3 /**< since 0.4: the same as SSS_PATH_FRAGMENT (both cull by alpha) */
+  SSS_PATH_FRAGMENT_MASKED = 3, /**< since 0.4: the same as SSS_PATH_FRAGMENT (both cull by alpha) */
+  SSS_PATH_HALF_RESOLUTION = 4 /**< 0.5: half size where kernels are wide; not the same image (guide §18) */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */
-#define SSS_SETTINGS_ALL_FLAGS 0x1u
+#define SSS_AUTO_HALF_RESOLUTION 0x2u /**< flags: SSS_PATH_AUTO may pick SSS_PATH_HALF_RESOLUTION (timed). Off */
+#define SSS_SETTINGS_ALL_FLAGS 0x3u
 
 struct sss_kernel_desc; /* sss_tools.h */
 /** Filter settings; fill with sss_default_settings. Scene scale: world units per millimetre. */
@@ -116,7 +117,7 @@ typedef struct sss_settings {
   float falloff[3];         /**< [0, 1]: profile radius per channel. Default: the calibrated fit */
   float separable_scale;    /**< (0, 100]: kernel mm per surface mm of eq. (1). Default: calibrated */
   int32_t taps;             /**< odd, [SSS_MIN_TAPS, SSS_MAX_TAPS]: most taps per pass. Default 17 */
-  uint32_t flags;           /**< SSS_FOLLOW_SURFACE */
+  uint32_t flags;           /**< SSS_FOLLOW_SURFACE, SSS_AUTO_HALF_RESOLUTION */
   uint32_t mode;            /**< sss_mode. Default SSS_MODE_SEPARABLE */
   int32_t cbf_taps;         /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
   float cbf_r_max_mm;       /**< (0, 50]: cross-bilateral footprint radius in profile mm. Default 4.5 */
@@ -132,8 +133,7 @@ typedef struct sss_stencil { /* host stencil: translucent where (stencil & mask)
 
 typedef enum sss_frame_flag /* sss_frame.flags */ {
   SSS_FRAME_DEPTH_ZERO_TO_ONE = 0x1, SSS_FRAME_REGION = 0x2, /**< glClipControl 0..1 depth; frame.region is set */
-  SSS_FRAME_TARGET_COMPLETE = 0x4 /**< the written texture is complete (no mipmap filter) */
-} sss_frame_flag;
+  SSS_FRAME_TARGET_COMPLETE = 0x4 /**< the written texture is complete (no mipmap filter) */ } sss_frame_flag;
 #define SSS_FRAME_ALL_FLAGS 0x7u
 /** How MSAA sample depths become one (linear) depth: mean (default), sample 0, nearest, farthest. */
 typedef enum sss_msaa_depth { SSS_MSAA_DEPTH_AVERAGE, SSS_MSAA_DEPTH_SAMPLE0, SSS_MSAA_DEPTH_MIN,

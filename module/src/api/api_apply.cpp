@@ -328,6 +328,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
                   (!run->has_profiles() || sss::api::extra_profiles_are_identity(ctx));
   run->frame = ctx.frames + 1;
   run->path = ctx.settings.path;
+  run->auto_half_resolution = ctx.settings.auto_half_resolution;
   if (run->path == SSS_PATH_AUTO) run->path_key = path_key(ctx, *run, frame.flags);  // only AUTO reads it
   if (ctx.settings.cross_bilateral) {
     run->cross_bilateral = true;

@@ -201,6 +201,7 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   run.kernel_revision = ctx.kernel_revision;
   run.follow_surface = ctx.settings.follow_surface;
   run.path = ctx.settings.path;
+  run.auto_half_resolution = ctx.settings.auto_half_resolution;
   run.cross_bilateral = ctx.settings.cross_bilateral;
   run.cbf_kernel = &ctx.cbf_kernel;
   run.cbf_kernel_revision = ctx.cbf_kernel_revision;

@@ -24,6 +24,7 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   f.falloff = {s.falloff[0], s.falloff[1], s.falloff[2]};
   f.samples = s.taps;
   f.follow_surface = (s.flags & SSS_FOLLOW_SURFACE) != 0;
+  f.auto_half_resolution = (s.flags & SSS_AUTO_HALF_RESOLUTION) != 0;
   f.cross_bilateral = s.mode == SSS_MODE_CROSS_BILATERAL;
   f.cbf_taps = s.cbf_taps;
   f.cbf_r_max_mm = s.cbf_r_max_mm;
@@ -50,7 +51,7 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
     s->falloff[c] = f.falloff[static_cast<std::size_t>(c)];
   }
   s->taps = f.samples;
-  s->flags = f.follow_surface ? SSS_FOLLOW_SURFACE : 0u;
+  s->flags = (f.follow_surface ? SSS_FOLLOW_SURFACE : 0u) | (f.auto_half_resolution ? SSS_AUTO_HALF_RESOLUTION : 0u);
   s->mode = f.cross_bilateral ? SSS_MODE_CROSS_BILATERAL : SSS_MODE_SEPARABLE;
   s->cbf_taps = f.cbf_taps;
   s->cbf_r_max_mm = f.cbf_r_max_mm;

@@ -90,8 +90,11 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   // them: the compute path falls back to them).
   scope.depth = !ctx.settings.cross_bilateral && frame.stencil == nullptr;
   // Unit 3: also the MSAA write-back's fourth input (a multisampled colour written back).
-  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0);
-  scope.profiles = frame.profile_texture != 0;
+  // The half-resolution path's upsample reads units 3 and 4 too.
+  const bool half = path == SSS_PATH_HALF_RESOLUTION || (path == SSS_PATH_AUTO && ctx.settings.auto_half_resolution);
+  scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0) ||
+                half;
+  scope.profiles = frame.profile_texture != 0 || half;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;
 }

@@ -54,10 +54,10 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings->jitter = %g: must be finite and in [0, 1]",
                 static_cast<double>(s->jitter));
   }
-  if (s->path > SSS_PATH_FRAGMENT_MASKED) {
+  if (s->path > SSS_PATH_HALF_RESOLUTION) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                "settings->path = %u: must be SSS_PATH_FRAGMENT (0), SSS_PATH_COMPUTE (1), SSS_PATH_AUTO (2) or "
-                "SSS_PATH_FRAGMENT_MASKED (3)",
+                "settings->path = %u: must be SSS_PATH_FRAGMENT (0), SSS_PATH_COMPUTE (1), SSS_PATH_AUTO (2), "
+                "SSS_PATH_FRAGMENT_MASKED (3) or SSS_PATH_HALF_RESOLUTION (4)",
                 s->path);
   }
   // NULL: eq. (1) from the fields above. A kernel desc is checked whole, whatever its family.

@@ -77,6 +77,8 @@ struct FilterRun {
   // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
   unsigned path = SSS_PATH_FRAGMENT;
   std::uint64_t path_key = 0;
+  // SSS_PATH_AUTO may time the half-resolution path too (sss_settings.flags SSS_AUTO_HALF_RESOLUTION).
+  bool auto_half_resolution = false;
   // Check each framebuffer's completeness. The api layer clears it for a steady frame (the same
   // textures, description and settings as the last successful one: api/steady_frame.hpp), whose
   // framebuffers that frame checked; SeparableFilter::run checks again when the path differs.

@@ -20,6 +20,54 @@
 
 namespace sss::gl {
 
+void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
+  set_blur_uniforms(ctx, p, run, term, axis);
+  bind_packed_inputs(ctx, source);
+  if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
+  ctx.gl.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+}
+
+PassInputsVariant pass_inputs_variant(const FilterRun& run) {
+  PassInputsVariant v;
+  v.linear_depth = run.constants.linear_depth;
+  v.profile_ids = profile_ids_variant(run);
+  v.mark_depth = run.stencil == nullptr;
+  return v;
+}
+
+// The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
+// read outside the culled pixels too. Without a stencil it marks the culling depth.
+sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message) {
+  const Functions& f = ctx.gl;
+  PassInputsProgram* p = nullptr;
+  const PassInputsVariant v = pass_inputs_variant(run);
+  sss_result r = ctx.programs.pass_inputs(v, &p, message);
+  if (r != SSS_OK) return r;
+  const Targets& t = ctx.targets.names();
+  r = attach_stencil(ctx, t.pass_inputs_framebuffer, v.mark_depth ? t.stencil_buffer : 0, message, "pass inputs");
+  if (r != SSS_OK) return r;
+  DebugGroup group(f, ctx.labels, "sss pass inputs (colour and view distance)");
+  f.Disable(STENCIL_TEST);
+  if (v.mark_depth) {  // every pixel of the rectangle written (the test always passes)
+    f.Enable(DEPTH_TEST);
+    f.DepthFunc(ALWAYS);
+    f.DepthMask(1);
+    f.set_depth_range(0.0f, 1.0f);  // the passes' triangle at depth 0.5, between the marks
+  }
+  f.UseProgram(p->program);
+  const math::PassConstants& k = run.constants;
+  f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
+  f.Uniform4f(p->depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
+  bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
+  if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+  if (v.mark_depth) f.DepthMask(0);  // the passes only test it
+  return SSS_OK;
+}
+
 namespace {
 using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;  // [2t]: horizontal, [2t + 1]: vertical
 
@@ -68,14 +116,6 @@ sss_result attach_targets(PassContext& ctx, const FilterRun& run, std::size_t te
     if (r != SSS_OK) return r;
   }
   return attach_output(ctx, run, stencil, message);
-}
-
-void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
-  set_blur_uniforms(ctx, p, run, term, axis);
-  bind_packed_inputs(ctx, source);
-  if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
-  ctx.gl.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
 }
 
 // Horizontal: the inputs -> the packed intermediate (the inputs draw filled what the culling excludes).
@@ -141,14 +181,6 @@ void draw_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& prog
   measure.end_frame();
 }
 
-PassInputsVariant pass_inputs_variant(const FilterRun& run) {
-  PassInputsVariant v;
-  v.linear_depth = run.constants.linear_depth;
-  v.profile_ids = profile_ids_variant(run);
-  v.mark_depth = run.stencil == nullptr;
-  return v;
-}
-
 // The programs and targets of the separable passes: everything that can fail but the framebuffer
 // checks, all before the first draw.
 sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
@@ -167,37 +199,6 @@ sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermProgram
   return r;
 }
 
-// The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
-// read outside the culled pixels too. Without a stencil it marks the culling depth.
-sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message) {
-  const Functions& f = ctx.gl;
-  PassInputsProgram* p = nullptr;
-  const PassInputsVariant v = pass_inputs_variant(run);
-  sss_result r = ctx.programs.pass_inputs(v, &p, message);
-  if (r != SSS_OK) return r;
-  const Targets& t = ctx.targets.names();
-  r = attach_stencil(ctx, t.pass_inputs_framebuffer, v.mark_depth ? t.stencil_buffer : 0, message, "pass inputs");
-  if (r != SSS_OK) return r;
-  DebugGroup group(f, ctx.labels, "sss pass inputs (colour and view distance)");
-  f.Disable(STENCIL_TEST);
-  if (v.mark_depth) {  // every pixel of the rectangle written (the test always passes)
-    f.Enable(DEPTH_TEST);
-    f.DepthFunc(ALWAYS);
-    f.DepthMask(1);
-    f.set_depth_range(0.0f, 1.0f);  // the passes' triangle at depth 0.5, between the marks
-  }
-  f.UseProgram(p->program);
-  const math::PassConstants& k = run.constants;
-  f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
-  f.Uniform4f(p->depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
-  bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
-  bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
-  if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
-  f.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
-  if (v.mark_depth) f.DepthMask(0);  // the passes only test it
-  return SSS_OK;
-}
 }  // namespace
 
 sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {

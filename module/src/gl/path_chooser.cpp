@@ -15,6 +15,7 @@ double median(std::vector<double> v) {
 const char* path_name(int path) {
   switch (path) {
     case PathChooser::masked: return "masked fragment";
+    case PathChooser::half: return "half-resolution";
     case PathChooser::compute: return "compute";
     default: return "fragment";
   }

@@ -7,7 +7,9 @@
 // configuration changes. Without a trustworthy timer (Mesa's software rasterisers, where
 // GL_TIME_ELAPSED covers one tile) it takes what the benchmark measured fastest there
 // (docs/benchmarks.md): reported as the masked fragment path, or the plain one when the host gave
-// its region or the mask cannot be used (the two run the same culled draws since 0.4).
+// its region or the mask cannot be used (the two run the same culled draws since 0.4); never the
+// half-resolution path there, which only a timer can show to be faster for the frames at hand (it
+// costs more than the full-size passes where few pixels' kernels are wide).
 #pragma once
 
 #include <array>
@@ -22,7 +24,7 @@ class PathChooser {
  public:
   static constexpr int kTrials = 3;  // timed frames of each path before deciding
   // The candidates, as bits of choose()'s `available` and values of Choice::path.
-  enum Path : int { fragment = 0, masked = 1, compute = 2, kPaths = 3 };
+  enum Path : int { fragment = 0, masked = 1, compute = 2, half = 3, kPaths = 4 };
 
   // trustworthy_timer: GL_TIME_ELAPSED measures whole passes here (not a software rasteriser, and
   // GL_QUERY_COUNTER_BITS > 0). Query objects are made on first use.

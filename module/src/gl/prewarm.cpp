@@ -59,8 +59,11 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
                        *compute_unavailable(*gl_, run) == '\0';
   // The masked path is the fragment passes (run_masked): every path but compute alone takes them,
   // and compute falls back to them.
+  const bool half = (run.path == SSS_PATH_HALF_RESOLUTION || (run.path == SSS_PATH_AUTO && run.auto_half_resolution)) &&
+                    *half_resolution_unavailable(run) == '\0';
   sss_result r = prewarm_fragment(ctx, run, message);
   if (r == SSS_OK && compute) r = prewarm_compute(ctx, run, message);
+  if (r == SSS_OK && half) r = prepare_half_resolution(ctx, run, message);  // its runner's own prepare
   if (r == SSS_OK && run.path == SSS_PATH_AUTO) chooser_.prewarm();
   return r;
 }

@@ -65,6 +65,8 @@ void ProgramCache::destroy() {
   remove(sample_write_.program);
   remove(strength_combine_.program);
   for (const PassInputsProgram& p : pass_inputs_) remove(p.program);
+  for (const HalfInputsProgram& p : half_inputs_) remove(p.program);
+  for (const HalfUpsampleProgram& p : half_upsample_) remove(p.program);
   forget();
 }
 
@@ -293,6 +295,53 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message) {
+  HalfInputsProgram& p = half_inputs_[static_cast<std::size_t>(half_variant_index(v))];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  const std::string defines = half_inputs_defines(v);
+  p.program = link("half_inputs.frag", defines, "half-size inputs shader (" + defines + ")", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, v.profile_ids != 0 ? "sss half-size inputs profiles=1" : "sss half-size inputs", "half-size inputs");
+  const Functions& f = *gl_;
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
+  p.depth_factor = f.GetUniformLocation(p.program, "u_depth_factor");
+  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
+  p.merge_reach = f.GetUniformLocation(p.program, "u_merge_reach");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message) {
+  HalfUpsampleProgram& p = half_upsample_[static_cast<std::size_t>(half_variant_index(v))];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  const std::string defines = half_upsample_defines(v);
+  p.program = link("half_upsample.frag", defines, "half-size upsample shader (" + defines + ")", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  char label[96];
+  std::snprintf(label, sizeof label, "sss half-size upsample profiles=%d output=%d", v.profile_ids,
+                v.writes_back ? 0 : 1);
+  finish(p.program, label, "half-size upsample");
+  const Functions& f = *gl_;
+  p.looks = f.GetUniformLocation(p.program, "u_looks");
+  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
+  p.half_rect = f.GetUniformLocation(p.program, "u_half_rect");
+  p.min_reach = f.GetUniformLocation(p.program, "u_min_reach");
+  p.min_weight = f.GetUniformLocation(p.program, "u_min_weight");
+  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
+  p.first_spacing = f.GetUniformLocation(p.program, "u_first_spacing");
+  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_half_result"), unit::half_result);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tables"), unit::half_tables);
   return SSS_OK;
 }
 

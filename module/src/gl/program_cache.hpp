@@ -68,6 +68,17 @@ struct PassInputsProgram {
   GLint ndc_from_depth = -1, depth_terms = -1;
 };
 
+// The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
+struct HalfInputsProgram {
+  GLuint program = 0;
+  GLint rect = -1, depth_factor = -1, profile_count = -1, merge_reach = -1;
+};
+struct HalfUpsampleProgram {
+  GLuint program = 0;
+  GLint looks = -1, profile_count = -1, half_rect = -1, min_reach = -1, min_weight = -1, half_taps = -1,
+        first_spacing = -1, depth_terms = -1, round_to_half = -1;
+};
+
 struct SampleWriteProgram {
   GLuint program = 0;
   GLint sample = -1, samples = -1;  // `sample`: the per-sample draws' (-1 in the one-draw variant)
@@ -100,6 +111,8 @@ class ProgramCache {
   sss_result strength_combine(StrengthProgram** out, std::string* message);
   // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
+  sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
+  sss_result half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message);
 
  private:
   // The compute variants (is_compute_blur_variant): blur_variant_index's leading factor (packed
@@ -135,6 +148,8 @@ class ProgramCache {
   SampleWriteProgram sample_write_;
   StrengthProgram strength_combine_;
   std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
+  std::array<HalfInputsProgram, kHalfVariantCount> half_inputs_{};
+  std::array<HalfUpsampleProgram, kHalfVariantCount> half_upsample_{};
 };
 
 }  // namespace sss::gl

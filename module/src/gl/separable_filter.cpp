@@ -66,15 +66,23 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
     case SSS_PATH_COMPUTE: {
       const char* refusal = run.identity ? "" : compute_unavailable(*gl_, run);
       choice.path = !run.identity && *refusal == '\0' ? PathChooser::compute : PathChooser::fragment;
-      note_compute_refusal(refusal);
+      note_refusal(&compute_refusal_, "SSS_PATH_COMPUTE", refusal);
       break;
     }
     case SSS_PATH_FRAGMENT_MASKED:
       choice.path = masked_available(run) ? PathChooser::masked : PathChooser::fragment;
       break;
+    case SSS_PATH_HALF_RESOLUTION: {
+      const char* refusal = half_resolution_unavailable(run);
+      choice.path = *refusal == '\0' ? PathChooser::half : PathChooser::fragment;
+      note_refusal(&half_refusal_, "SSS_PATH_HALF_RESOLUTION", refusal);
+      break;
+    }
     case SSS_PATH_AUTO: {
+      const bool half_ok = run.auto_half_resolution && *half_resolution_unavailable(run) == '\0';
       const unsigned available = (compute_ok() ? 1u << PathChooser::compute : 0u) |
-                                 (masked_available(run) ? 1u << PathChooser::masked : 0u);
+                                 (masked_available(run) ? 1u << PathChooser::masked : 0u) |
+                                 (half_ok ? 1u << PathChooser::half : 0u);
       if (available != 0) {
         choice = chooser_.choose(run.path_key, available, run.region);
         if (*chooser_.decision() != '\0' && log_) {
@@ -88,13 +96,13 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
   return choice;
 }
 
-void SeparableFilter::note_compute_refusal(const char* reason) {
+void SeparableFilter::note_refusal(const char** last, const char* path, const char* reason) {
   // The reasons are string literals: a new one is a different pointer. Logged when it changes, not
   // every frame.
-  if (reason == compute_refusal_) return;
-  compute_refusal_ = reason;
+  if (reason == *last) return;
+  *last = reason;
   if (*reason != '\0' && log_) {
-    log_(SSS_LOG_INFO, std::string("SSS_PATH_COMPUTE: the frame takes the fragment path: ") + reason);
+    log_(SSS_LOG_INFO, std::string(path) + ": the frame takes the fragment path: " + reason);
   }
 }
 
@@ -125,6 +133,7 @@ sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   const PathChooser::Choice choice = choose_path(run);
   const unsigned path = choice.path == PathChooser::compute  ? SSS_PATH_COMPUTE
                         : choice.path == PathChooser::masked ? SSS_PATH_FRAGMENT_MASKED
+                        : choice.path == PathChooser::half   ? SSS_PATH_HALF_RESOLUTION
                                                              : SSS_PATH_FRAGMENT;
   // A steady frame's framebuffers are the last run's only if it took the same path (SSS_PATH_AUTO
   // tries each in turn).
@@ -134,6 +143,7 @@ sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   switch (choice.path) {
     case PathChooser::compute: r = run_compute(ctx, run, message); break;
     case PathChooser::masked: r = run_masked(ctx, run, message); break;
+    case PathChooser::half: r = run_half_resolution(ctx, run, message); break;
     default: r = run_fragment(ctx, run, message); break;
   }
   chooser_.end();

@@ -81,7 +81,8 @@ class SeparableFilter {
   // fragment passes where the one asked for cannot run this frame.
   PathChooser::Choice choose_path(const FilterRun& run);
   // Logs (INFO) why SSS_PATH_COMPUTE gives way to the fragment path, when the reason changes.
-  void note_compute_refusal(const char* reason);
+  // Logs why a path asked for cannot run the frame (INFO), when the reason changes.
+  void note_refusal(const char** last, const char* path, const char* reason);
 
   const Functions* gl_ = nullptr;
   Log log_;
@@ -97,6 +98,7 @@ class SeparableFilter {
   int last_draws_ = 0;
   unsigned last_path_ = SSS_PATH_FRAGMENT;
   const char* compute_refusal_ = "";  // compute_unavailable()'s last answer for SSS_PATH_COMPUTE
+  const char* half_refusal_ = "";     // half_resolution_unavailable()'s for SSS_PATH_HALF_RESOLUTION
 };
 
 }  // namespace sss::gl

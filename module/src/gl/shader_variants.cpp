@@ -105,6 +105,15 @@ std::string pass_inputs_defines(const PassInputsVariant& v) {
   return defines;
 }
 
+std::string half_inputs_defines(const HalfVariant& v) {
+  return "#define SSS_PROFILE_IDS " + std::to_string(v.profile_ids) + "\n";
+}
+
+std::string half_upsample_defines(const HalfVariant& v) {
+  return half_inputs_defines(v) + "#define SSS_OUTSIDE " + (v.writes_back ? "1" : "2") +
+         "\n#define SSS_CDF_ENTRIES " + std::to_string(math::kFootprintEntries) + "\n";
+}
+
 std::string lut_defines(int kind) {
   char defines[128];
   std::snprintf(defines, sizeof defines, "#define SSS_LUT_KIND %d\n#define SSS_MAX_TERMS %d\n#define SSS_GL_ORDER %d\n",

@@ -58,11 +58,13 @@ void TargetPool::destroy() {
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
                                  t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
-                                 t_.pass_intermediate_framebuffer};
+                                 t_.pass_intermediate_framebuffer, t_.half_inputs_framebuffer,
+                                 t_.half_intermediate_framebuffer, t_.half_result_framebuffer};
   const GLuint textures[] = {t_.intermediate,       t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
                              t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
                              t_.translucent_lowest, t_.strength_source,   t_.pass_taps,       t_.pass_strength,
-                             t_.pass_intermediate};
+                             t_.pass_intermediate,  t_.half_taps,         t_.half_strength,   t_.half_intermediate,
+                             t_.half_result,        t_.half_tables};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -292,6 +294,68 @@ sss_result TargetPool::ensure_pass_targets(int width, int height, std::string* m
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.pass_intermediate, 0);
   f.DrawBuffers(3, buffers);
   attach_colour(t_.pass_intermediate_framebuffer, t_.pass_intermediate);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_format, std::string* message) {
+  const int w = (width + 1) / 2, h = (height + 1) / 2;  // math::half_size
+  if (t_.half_result_framebuffer != 0 && half_width_ == w && half_height_ == h && half_result_format_ == result_format) {
+    return SSS_OK;
+  }
+  half_width_ = half_height_ = 0;
+  const bool single = result_format == static_cast<GLint>(RGBA32F);
+  sss_result r = allocate_target(&t_.half_taps, RGBA32UI, UNSIGNED_INT, w, h,
+                                 "half-size RGBA32UI pass input (colour and view distance)", message, RGBA_INTEGER);
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.half_strength, R32UI, UNSIGNED_INT, w, h, "half-size R32UI strength", message,
+                        RED_INTEGER);
+  }
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.half_intermediate, RGBA32UI, UNSIGNED_INT, w, h, "half-size RGBA32UI intermediate",
+                        message, RGBA_INTEGER);
+  }
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.half_result, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT, w, h,
+                        single ? "half-size RGBA32F result" : "half-size RGBA16F result", message);
+  }
+  if (r != SSS_OK) return r;
+  half_width_ = w;
+  half_height_ = h;
+  half_result_format_ = result_format;
+  ensure_framebuffer(&t_.half_inputs_framebuffer, "sss half-size inputs target");
+  ensure_framebuffer(&t_.half_intermediate_framebuffer, "sss half-size horizontal pass target");
+  ensure_framebuffer(&t_.half_result_framebuffer, "sss half-size vertical pass target");
+  const Functions& f = *gl_;
+  const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
+  attach_colour(t_.half_inputs_framebuffer, t_.half_taps);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.half_strength, 0);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.half_intermediate, 0);
+  f.DrawBuffers(3, buffers);
+  attach_colour(t_.half_intermediate_framebuffer, t_.half_intermediate);
+  attach_colour(t_.half_result_framebuffer, t_.half_result);
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
+                                          std::string* message) {
+  if (t_.half_tables != 0 && half_tables_revision_ == revision) return SSS_OK;
+  half_tables_revision_ = 0;
+  const int width = static_cast<int>(texels.size() / 4) / rows;
+  const Functions& f = *gl_;
+  sss_result r = allocate_target(&t_.half_tables, RGBA32F, FLOAT, width, rows, "RGBA32F pass tables", message);
+  if (r != SSS_OK) return r;
+  // The host's unpack parameters would reshape the upload: tight rows, the host's put back after.
+  // (allocate_target left the texture bound on unit 0 and no unpack buffer.)
+  const GLenum params[4] = {UNPACK_ALIGNMENT, UNPACK_ROW_LENGTH, UNPACK_SKIP_ROWS, UNPACK_SKIP_PIXELS};
+  GLint saved[4] = {4, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) f.GetIntegerv(params[i], &saved[i]);
+  f.PixelStorei(UNPACK_ALIGNMENT, 4);
+  for (int i = 1; i < 4; ++i) f.PixelStorei(params[i], 0);
+  f.TexImage2D(TEXTURE_2D, 0, static_cast<GLint>(RGBA32F), width, rows, 0, RGBA, FLOAT, texels.data());
+  for (int i = 0; i < 4; ++i) f.PixelStorei(params[i], saved[i]);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) return allocation_failed(error, "RGBA32F pass tables", width, rows, message);
+  half_tables_revision_ = revision;
   return SSS_OK;
 }
 

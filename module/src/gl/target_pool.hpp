@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <vector>
 #include <string>
 
 #include "gl_functions.hpp"
@@ -43,6 +45,13 @@ struct Targets {
   // horizontal pass's (with stencil_buffer: the culling).
   GLuint pass_taps = 0, pass_strength = 0, pass_intermediate = 0;
   GLuint pass_inputs_framebuffer = 0, pass_intermediate_framebuffer = 0;
+  // The half-resolution path, at half size: half_inputs.frag's texels (RGBA32UI half_taps, R32UI
+  // half_strength, and the horizontal pass's target filled alike: half_intermediate), the vertical
+  // pass's result (half_result: the intermediate format), and every profile's two pass tables
+  // (RGBA32F half_tables, kFootprintEntries + 1 texels a row). half_inputs_framebuffer draws the
+  // three inputs; half_intermediate_framebuffer and half_result_framebuffer are the two passes'.
+  GLuint half_taps = 0, half_strength = 0, half_intermediate = 0, half_result = 0, half_tables = 0;
+  GLuint half_inputs_framebuffer = 0, half_intermediate_framebuffer = 0, half_result_framebuffer = 0;
 };
 
 class TargetPool {
@@ -67,6 +76,13 @@ class TargetPool {
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
   // The three pass_* targets and their framebuffers at this size.
   sss_result ensure_pass_targets(int width, int height, std::string* message);
+  // The half_* targets (not the tables) and their framebuffers for a full-size frame of this size;
+  // `result_format` RGBA16F or RGBA32F (the frame's intermediate format).
+  sss_result ensure_half_targets(int width, int height, GLint result_format, std::string* message);
+  // half_tables holding `rows` rows of `texels` (RGBA floats), uploaded when `revision` differs from
+  // the last upload's (the kernels changed), never otherwise.
+  sss_result ensure_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
+                                std::string* message);
 
  private:
   // Creates *framebuffer (labelled `label`) when it is 0; nothing attached yet.
@@ -96,6 +112,9 @@ class TargetPool {
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
   int pass_width_ = 0, pass_height_ = 0;
+  int half_width_ = 0, half_height_ = 0;
+  GLint half_result_format_ = 0;
+  std::uint64_t half_tables_revision_ = 0;
 };
 
 }  // namespace sss::gl

@@ -23,6 +23,11 @@ constexpr GLuint profile_ids = 4;
 constexpr GLuint strength = 1;
 
 // The MSAA resolve, stencil mark and write-back (which never reads the host's samples).
+// The half-resolution path's upsample (half_upsample.frag): source and pass_strength as above.
+constexpr GLuint half_source = 2;  // half_inputs.frag's texels
+constexpr GLuint half_result = 3;  // the half-size passes' result
+constexpr GLuint half_tables = 4;  // every profile's two pass tables
+
 constexpr GLuint msaa_color = 0;        // resolve: the host's samples
 constexpr GLuint msaa_depth = 1;        // resolve: the host's depth samples
 constexpr GLuint msaa_lowest = 0;       // write: the translucent samples' smallest values and mask

@@ -36,6 +36,7 @@ struct FilterSettings {
   KernelRequest kernel;
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
   unsigned path = 2;  // SSS_PATH_AUTO (SSS_PATH_*: fragment passes, masked ones, compute dispatches, or the fastest)
+  bool auto_half_resolution = false;  // SSS_AUTO_HALF_RESOLUTION: AUTO may time SSS_PATH_HALF_RESOLUTION too
 };
 
 enum class DepthEncoding {

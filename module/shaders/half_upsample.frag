@@ -1,0 +1,111 @@
+// The half-resolution path's upsample (sss.h SSS_PATH_HALF_RESOLUTION; the method and its reasons:
+// module/src/math/half_resolution.hpp): at each translucent full-size pixel whose kernel reaches
+// at least u_min_reach pixels on both axes,
+//   out = B + c · (x − X)
+// B and X the half-size result and input from the four nearest half-size texels (bilinear weights
+// times 1 − the follow-surface blend of their distance to the pixel's, on texels of the pixel's
+// own index only), x the pixel's colour, c the weight both full-size passes keep on the centre.
+// Every other pixel is discarded here, leaving the culling depth at 0, and the full-size passes
+// that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
+// This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
+//
+// Switches: SSS_PROFILE_IDS 0 or 1 (as half_inputs.frag), SSS_CDF_ENTRIES (a table's entries),
+// SSS_OUTSIDE 1 writing back (alpha masked off) or 2 into a separate output (alpha the original's).
+#include "nearest_half.glsl"
+#include "colour_range.glsl"
+#include "depth.glsl"
+
+SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
+SSS_BINDING(1) uniform highp usampler2D u_strength;  // pass_inputs.frag's strength bits (the colour's alpha)
+SSS_BINDING(2) uniform highp usampler2D u_half_source;  // half_inputs.frag's texels
+SSS_BINDING(3) uniform highp sampler2D u_half_result;   // the half-size passes' result (alpha: strength)
+// Each profile's two pass tables (row 2·profile + axis): SSS_CDF_ENTRIES cumulative entries (rgb),
+// then the table's reach in profile mm (r) and centre delta (gba): the passes' u_cdf and u_footprint.
+SSS_BINDING(4) uniform highp sampler2D u_tables;
+uniform vec4 u_looks[16];     // per profile: pixels per mm on x and y (clip w = 1, strength 1), depth factor
+uniform int u_profile_count;
+uniform ivec4 u_half_rect;    // the half-size texels the passes covered: first and last (x0, y0, x1, y1)
+uniform float u_min_reach;    // math::kHalfResolutionMinReachPixels
+uniform float u_min_weight;   // math::kHalfResolutionMinWeight
+uniform int u_half_taps;      // the kernel's most taps per side
+uniform float u_first_spacing;  // its sparse layout's first tap, as a share of the reach
+
+out vec4 o_color;
+
+float sss_distance(uint word) {
+#if SSS_PROFILE_IDS == 1
+  return uintBitsToFloat(word & 0xFFFFFF00u);
+#else
+  return uintBitsToFloat(word);
+#endif
+}
+
+vec4 table(int entry, int row) { return texelFetch(u_tables, ivec2(entry, row), 0); }
+
+// The weight the pass of table row `row` keeps on the centre at `step` pixels per profile mm:
+// footprint_taps.glsl's (the kernel out to the midpoint to the first tap, and the delta).
+vec3 centre_weight(int row, float step) {
+  vec4 footprint = table(SSS_CDF_ENTRIES, row);
+  float reach = min(footprint.x * step, 1.0e6);
+  bool dense = reach <= float(u_half_taps) + 0.5;
+  int count = dense ? max(int(ceil(reach - 0.5)), 0) : u_half_taps;
+  vec3 below = table(SSS_CDF_ENTRIES - 1, row).rgb;
+  if (count > 0) {
+    float first = dense ? 1.0 : max(1.0, floor(reach * u_first_spacing + 0.5));
+    float u = sqrt(min((0.5 * first / step) / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+    int j = min(int(u), SSS_CDF_ENTRIES - 2);
+    float f = u - float(j);
+    below = table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f;
+  }
+  return 2.0 * below + footprint.yzw;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uvec4 texel = texelFetch(u_source, pixel, 0);
+  vec4 centre = vec4(uintBitsToFloat(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
+  // What the passes leave alone goes to them (and they leave it alone).
+  if (!(centre.a > 0.0) || !sss_in_range(centre)) discard;
+  float d = sss_distance(texel.a);
+  float w = clip_w(d);
+  if (isnan(w) || !(w > 0.0) || isinf(w)) discard;
+  int profile = 0;
+#if SSS_PROFILE_IDS == 1
+  profile = int(texel.a & 15u);
+  if (profile >= u_profile_count) discard;
+#endif
+  vec4 look = u_looks[profile];
+  float a = min(centre.a, 1.0);
+  float step_x = look.x * a / w, step_y = look.y * a / w;
+  float reach_x = min(table(SSS_CDF_ENTRIES, 2 * profile).x * step_x, 1.0e6);
+  float reach_y = min(table(SSS_CDF_ENTRIES, 2 * profile + 1).x * step_y, 1.0e6);
+  if (!(min(reach_x, reach_y) >= u_min_reach)) discard;  // narrow: the full-size passes
+
+  float factor = look.z / a;
+  ivec2 base = (pixel - 1) >> 1;  // the lower-left of the four nearest half-size texels
+  vec2 f = vec2((pixel.x & 1) != 0 ? 0.25 : 0.75, (pixel.y & 1) != 0 ? 0.25 : 0.75);
+  float weight = 0.0;
+  vec3 blurred = vec3(0.0), reduced = vec3(0.0);
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      ivec2 q = clamp(base + ivec2(dx, dy), u_half_rect.xy, u_half_rect.zw);
+      uvec4 h = texelFetch(u_half_source, q, 0);
+      vec4 result = texelFetch(u_half_result, q, 0);
+      if (!(result.a > 0.0)) continue;  // not translucent (or left alone by the passes)
+#if SSS_PROFILE_IDS == 1
+      if ((h.a & 0xFFu) != (texel.a & 0xFFu)) continue;
+#endif
+      float s = factor * abs(d - sss_distance(h.a));
+      if (!(s < 1.0)) s = 1.0;
+      float wq = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y) * (1.0 - s);
+      weight += wq;
+      blurred += wq * result.rgb;
+      reduced += wq * uintBitsToFloat(h.rgb);
+    }
+  }
+  if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
+  vec3 c = centre_weight(2 * profile, step_x) * centre_weight(2 * profile + 1, step_y);
+  vec3 result = blurred / weight + c * (centre.rgb - reduced / weight);
+  result = max(result, min(centre.rgb, vec3(0.0)));  // no negative light from positive light
+  o_color = sss_nearest_half(vec4(result, centre.a));
+}

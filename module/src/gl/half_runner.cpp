@@ -1,0 +1,262 @@
+// SSS_PATH_HALF_RESOLUTION: the separable passes at half size where the kernel is wide, the
+// fragment passes at full size elsewhere (the method and its constants: math/half_resolution.hpp).
+// The draws, after pass_inputs.frag's (full size, marking translucent pixels 0 in the culling
+// depth, the rest 1):
+//   1. half_inputs.frag reduces the inputs to half size (the half-size targets, every texel of the
+//      half-size rectangle: no culling there, the passes cost a quarter);
+//   2. the horizontal and vertical passes at half size (the same programs as at full size, at half
+//      the pixels per mm), the vertical one into half_result;
+//   3. into a separate output: the colour copied where the depth is 1 (not translucent);
+//   4. half_upsample.frag over translucent pixels (GL_GREATER at depth 0.5), writing depth 0.5
+//      where it writes the colour and discarding where the full-size passes must run;
+//   5. the full-size horizontal and vertical passes drawn at depth 0.25 (glDepthRange 0..0.5), so
+//      that GL_GREATER lets through exactly the translucent pixels step 4 discarded.
+// The host's colour is written by steps 3-5 only, after step 1's inputs draw has read it.
+#include <string>
+#include <vector>
+
+#include "../math/half_resolution.hpp"
+#include "blur_pass.hpp"
+#include "debug_label.hpp"
+#include "runners.hpp"
+#include "texture_units.hpp"
+
+namespace sss::gl {
+
+namespace {
+
+struct HalfPrograms {
+  BlurProgram* horizontal = nullptr;  // packed output, used at both sizes
+  BlurProgram* half_vertical = nullptr;  // into half_result
+  BlurProgram* vertical = nullptr;     // the full-size vertical pass into the target
+  HalfInputsProgram* inputs = nullptr;
+  HalfUpsampleProgram* upsample = nullptr;
+};
+
+HalfVariant half_variant(const FilterRun& run) {
+  HalfVariant v;
+  v.profile_ids = profile_ids_variant(run);
+  v.writes_back = run.writes_back();
+  return v;
+}
+
+const math::PassKernel& kernel_of(const FilterRun& run, int profile) {
+  return run.has_profiles() ? *run.profile_kernels[static_cast<std::size_t>(profile)] : *run.kernel;
+}
+const math::PassConstants& constants_of(const FilterRun& run, int profile) {
+  return run.has_profiles() ? run.profile_constants[static_cast<std::size_t>(profile)] : run.constants;
+}
+
+// Every profile's two pass tables, a row each (half_upsample.frag's u_tables).
+std::vector<float> table_texels(const FilterRun& run) {
+  constexpr int kWidth = math::kFootprintEntries + 1;
+  std::vector<float> texels(static_cast<std::size_t>(kWidth) * 4 * 2 * static_cast<std::size_t>(run.profile_count),
+                            0.0f);
+  for (int p = 0; p < run.profile_count; ++p) {
+    const math::PassTerm& term = kernel_of(run, p).terms.front();
+    for (int axis = 0; axis < 2; ++axis) {
+      const math::FootprintTable& t = (axis == 0 ? term.horizontal : term.vertical).footprint;
+      float* row = texels.data() + static_cast<std::size_t>(2 * p + axis) * kWidth * 4;
+      for (std::size_t j = 0; j < t.half_cdf.size(); ++j) {
+        for (std::size_t c = 0; c < 3; ++c) row[j * 4 + c] = t.half_cdf[j][c];
+      }
+      row[math::kFootprintEntries * 4] = t.reach_mm;
+      for (std::size_t c = 0; c < 3; ++c) row[math::kFootprintEntries * 4 + 1 + c] = t.delta[c];
+    }
+  }
+  return texels;
+}
+
+// The tables' revision: the kernels' (profiles and the single kernel count apart).
+std::uint64_t tables_revision(const FilterRun& run) {
+  return run.has_profiles() ? run.profiles_revision * 2 + 1 : run.kernel_revision * 2;
+}
+
+sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std::string* message) {
+  const Outside last = run.writes_back() ? Outside::discard : Outside::copy_original;
+  sss_result r = ctx.programs.blur(fragment_blur_variant(run, 0, 0, Outside::write_centre), &p->horizontal, message);
+  if (r == SSS_OK) {
+    r = ctx.programs.blur(fragment_blur_variant(run, 0, 1, Outside::write_centre), &p->half_vertical, message);
+  }
+  if (r == SSS_OK) r = ctx.programs.blur(fragment_blur_variant(run, 0, 1, last), &p->vertical, message);
+  PassInputsProgram* unused = nullptr;
+  if (r == SSS_OK) r = ctx.programs.pass_inputs(pass_inputs_variant(run), &unused, message);
+  if (r == SSS_OK) r = ctx.programs.half_inputs(half_variant(run), &p->inputs, message);
+  if (r == SSS_OK) r = ctx.programs.half_upsample(half_variant(run), &p->upsample, message);
+  const int w = run.color.width, h = run.color.height;
+  if (r == SSS_OK) r = ctx.targets.ensure_pass_targets(w, h, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), w, h, message);
+  if (r == SSS_OK) r = ctx.targets.ensure_half_targets(w, h, run.intermediate_format(), message);
+  if (r == SSS_OK) {
+    r = ctx.targets.ensure_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
+  }
+  return r;
+}
+
+// The run at half size: half the pixels per mm, taps kept in the half-size rectangle.
+FilterRun half_size_run(const FilterRun& run, const std::array<int, 4>& half) {
+  FilterRun h = run;
+  h.constants = math::half_pass_constants(run.constants, half);
+  for (int p = 0; p < run.profile_count; ++p) {
+    const auto i = static_cast<std::size_t>(p);
+    h.profile_constants[i] = math::half_pass_constants(run.profile_constants[i], half);
+  }
+  return h;
+}
+
+void set_viewport(const Functions& f, const std::array<int, 4>& rect) { f.Viewport(rect[0], rect[1], rect[2], rect[3]); }
+
+sss_result draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p, std::string* message) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.half_inputs_framebuffer);
+  const sss_result r = check_framebuffer(ctx, "half-size inputs", message);
+  if (r != SSS_OK) return r;
+  DebugGroup group(f, ctx.labels, "sss half-size inputs");
+  f.UseProgram(p.program);
+  const std::array<int, 4>& d = run.draw_rect;
+  f.Uniform4i(p.rect, d[0], d[1], d[0] + d[2] - 1, d[1] + d[3] - 1);
+  std::array<float, 16> factors{};
+  for (int i = 0; i < run.profile_count; ++i) factors[static_cast<std::size_t>(i)] = constants_of(run, i).follow_surface_factor;
+  f.Uniform1fv(p.depth_factor, 16, factors.data());
+  f.Uniform1i(p.profile_count, run.profile_count);
+  f.Uniform1f(p.merge_reach, math::kHalfResolutionMergeReach);
+  bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+  return SSS_OK;
+}
+
+// One pass at half size: `source` and the half-size strength.
+sss_result draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int axis, std::string* message) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, axis == 0 ? t.half_intermediate_framebuffer : t.half_result_framebuffer);
+  const sss_result r = check_framebuffer(ctx, axis == 0 ? "half-size horizontal pass" : "half-size vertical pass",
+                                         message);
+  if (r != SSS_OK) return r;
+  DebugGroup group(f, ctx.labels, axis == 0 ? "sss half-size horizontal pass" : "sss half-size vertical pass");
+  set_blur_uniforms(ctx, p, half, 0, axis);
+  // The vertical pass writes half_result, in the intermediate's format (not the target's).
+  if (axis == 1) f.Uniform1i(p.round_to_half, half.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  bind_texture(ctx, unit::source, axis == 0 ? t.half_taps : t.half_intermediate, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::pass_strength, t.half_strength, ctx.objects.nearest_sampler);
+  if (half.has_profiles()) bind_profile_inputs(ctx, half, axis);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+  return SSS_OK;
+}
+
+void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& p, const std::array<int, 4>& half) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  DebugGroup group(f, ctx.labels, "sss half-size upsample");
+  f.UseProgram(p.program);
+  std::array<float, 4 * 16> looks{};
+  for (int i = 0; i < run.profile_count; ++i) {
+    const math::PassConstants& k = constants_of(run, i);
+    const auto at = static_cast<std::size_t>(4 * i);
+    looks[at] = k.pixels_per_mm[0];
+    looks[at + 1] = k.pixels_per_mm[1];
+    looks[at + 2] = k.follow_surface_factor;
+  }
+  f.Uniform4fv(p.looks, 16, looks.data());
+  f.Uniform1i(p.profile_count, run.profile_count);
+  f.Uniform4i(p.half_rect, half[0], half[1], half[0] + half[2] - 1, half[1] + half[3] - 1);
+  f.Uniform1f(p.min_reach, math::kHalfResolutionMinReachPixels);
+  f.Uniform1f(p.min_weight, math::kHalfResolutionMinWeight);
+  const std::vector<float>& spacing = run.kernel->spacing;
+  f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
+  f.Uniform1f(p.first_spacing, spacing.empty() ? 0.0f : spacing.front());
+  const math::PassConstants& k = run.constants;
+  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform1i(p.round_to_half, run.target().internal_format == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::half_source, t.half_taps, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::half_result, t.half_result, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::half_tables, t.half_tables, ctx.objects.nearest_sampler);
+  f.DrawArrays(TRIANGLES, 0, 3);
+  ++ctx.draws;
+}
+
+}  // namespace
+
+const char* half_resolution_unavailable(const FilterRun& run) {
+  if (run.identity) return "nothing to blur";
+  if (run.color.multisampled()) return "a multisampled colour";
+  if (run.cross_bilateral) return "the cross-bilateral mode";
+  if (run.stencil != nullptr) return "a host stencil";
+  if (run.kernel->terms.size() > 1) return "a kernel of several terms";
+  if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
+  return "";
+}
+
+sss_result prepare_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
+  HalfPrograms programs;
+  return prepare(ctx, run, &programs, message);
+}
+
+sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
+  HalfPrograms p;
+  sss_result r = prepare(ctx, run, &p, message);
+  if (r != SSS_OK) return r;
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  const std::array<int, 4> half = math::half_rect(run.draw_rect);
+  const FilterRun half_run = half_size_run(run, half);
+  FrameMeasurement measure(ctx.queries, run.frame);
+  measure.begin(PassQueries::horizontal);
+  begin_passes(ctx, run.draw_rect);
+  r = draw_pass_inputs(ctx, run, message);  // marks the culling depth
+  if (r != SSS_OK) return r;
+  f.Disable(DEPTH_TEST);
+  set_viewport(f, half);
+  r = draw_reduction(ctx, run, *p.inputs, message);
+  if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.horizontal, 0, message);
+  if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.half_vertical, 1, message);
+  if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
+  if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);  // leaves it bound
+  if (r != SSS_OK) {
+    detach_output(ctx);
+    return r;
+  }
+  set_viewport(f, run.draw_rect);
+  f.Enable(DEPTH_TEST);
+  if (run.writes_back()) {
+    f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value
+  } else {  // the pixels no pass writes: the colour as it is
+    DebugGroup group(f, ctx.labels, "sss copy (not translucent)");
+    f.DepthFunc(LEQUAL);
+    draw_copy(ctx, run.color.name);
+  }
+  f.DepthFunc(GREATER);
+  f.DepthMask(1);
+  draw_upsample(ctx, run, *p.upsample, half);
+  f.DepthMask(0);
+  // The pixels the upsample left (depth still 0), nearer than the marks' 0.5 and 1.
+  f.set_depth_range(0.0f, 0.5f);
+  {
+    DebugGroup group(f, ctx.labels, "sss horizontal pass (full size, narrow kernels)");
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t.pass_intermediate_framebuffer);
+    draw_blur(ctx, *p.horizontal, run, t.pass_taps, 0, 0);
+  }
+  measure.end(PassQueries::horizontal);
+  {
+    DebugGroup group(f, ctx.labels, "sss vertical pass (full size, narrow kernels)");
+    measure.begin(PassQueries::vertical);
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
+    bind_original(ctx, run);
+    measure.begin_pixels();
+    draw_blur(ctx, *p.vertical, run, t.pass_intermediate, 0, 1);
+    measure.end_pixels();
+    measure.end(PassQueries::vertical);
+  }
+  measure.end_frame();
+  f.set_depth_range(0.0f, 1.0f);
+  detach_output(ctx);
+  return SSS_OK;
+}
+
+}  // namespace sss::gl

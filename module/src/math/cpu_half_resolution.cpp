@@ -1,0 +1,267 @@
+#include "cpu_half_resolution.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include "cpu_filter_passes.hpp"
+#include "half_float.hpp"
+#include "half_resolution.hpp"
+
+namespace sss::math {
+
+namespace {
+
+using cpu_passes::in_colour_range;
+
+std::uint32_t bits_of(float f) {
+  std::uint32_t b = 0;
+  std::memcpy(&b, &f, sizeof b);
+  return b;
+}
+float float_of(std::uint32_t b) {
+  float f = 0.0f;
+  std::memcpy(&f, &b, sizeof f);
+  return f;
+}
+
+// pass_inputs.frag's texel: the colour (0 where out of range), the distance word (the R8UI index in
+// its low byte; NaN where the colour is out of range) and the strength.
+struct InputTexel {
+  std::array<float, 3> colour{};
+  std::uint32_t word = 0;
+  float strength = 0.0f;
+};
+
+struct Frame {
+  int width = 0, height = 0;
+  bool ids = false;  // R8UI indices in the distance words
+  std::vector<InputTexel> texels;
+  const InputTexel& at(int x, int y) const { return texels[static_cast<std::size_t>(y) * width + x]; }
+  float distance(std::uint32_t word) const { return float_of(ids ? word & 0xFFFFFF00u : word); }
+};
+
+Frame full_inputs(const CpuFilterImage& image, const PassConstants& shared, const std::uint16_t* ids) {
+  Frame f;
+  f.width = image.width;
+  f.height = image.height;
+  f.ids = ids != nullptr;
+  f.texels.resize(static_cast<std::size_t>(image.width) * image.height);
+  for (std::size_t i = 0; i < f.texels.size(); ++i) {
+    InputTexel& t = f.texels[i];
+    const float* c = image.color + i * 4;
+    std::uint32_t word = bits_of(linearise_depth(shared, image.depth[i]));
+    if (ids != nullptr) word = (word & 0xFFFFFF00u) | (ids[i] & 0xFFu);
+    t.colour = {c[0], c[1], c[2]};
+    if (!in_colour_range(c, 3)) {
+      t.colour = {0.0f, 0.0f, 0.0f};
+      word = 0x7FC00000u | (word & 0xFFu);
+    }
+    t.word = word;
+    t.strength = c[3];
+  }
+  return f;
+}
+
+// Per profile: pixels per mm on x and y at clip w = 1 and strength 1, and the depth factor
+// (1 / the kernel's reach in world units; 0 without follow-surface).
+struct Look {
+  float x, y, depth_factor;
+};
+
+int profile_of(const Frame& f, std::uint32_t word, std::size_t count) {
+  if (!f.ids) return 0;
+  const auto p = static_cast<std::size_t>(word & kProfileIndexMask);
+  return p < count ? static_cast<int>(p) : -1;
+}
+
+// half_inputs.frag at half-size texel (i, j): `rect` the full-size drawn rectangle.
+InputTexel reduce_block(const Frame& f, const std::vector<Look>& looks, const std::array<int, 4>& rect, int i, int j) {
+  std::array<InputTexel, 4> t;
+  std::array<bool, 4> translucent{};
+  bool any = false;
+  for (int k = 0; k < 4; ++k) {
+    const int x = std::clamp(2 * i + (k & 1), rect[0], rect[0] + rect[2] - 1);
+    const int y = std::clamp(2 * j + (k >> 1), rect[1], rect[1] + rect[3] - 1);
+    t[static_cast<std::size_t>(k)] = f.at(x, y);
+    translucent[static_cast<std::size_t>(k)] =
+        t[static_cast<std::size_t>(k)].strength > 0.0f && !std::isnan(f.distance(t[static_cast<std::size_t>(k)].word));
+    any = any || translucent[static_cast<std::size_t>(k)];
+  }
+  int r = -1;
+  for (int k = 0; k < 4; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (translucent[ku] != any) continue;
+    const float dk = f.distance(t[ku].word);
+    if (r < 0 || std::isnan(f.distance(t[static_cast<std::size_t>(r)].word)) ||
+        dk < f.distance(t[static_cast<std::size_t>(r)].word)) {
+      r = k;
+    }
+  }
+  const InputTexel& ref = t[static_cast<std::size_t>(r)];
+  const float dr = f.distance(ref.word);
+  int p = profile_of(f, ref.word, looks.size());
+  const float factor = looks[static_cast<std::size_t>(p < 0 ? 0 : p)].depth_factor;
+  std::array<float, 3> colour = {0.0f, 0.0f, 0.0f};
+  float strength = 0.0f, n = 0.0f;
+  for (int k = 0; k < 4; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    const bool same = (ref.word & 0xFFu) == (t[ku].word & 0xFFu) || !f.ids;
+    const bool joins = k == r || (translucent[ku] == any && same &&
+                                  factor * std::fabs(f.distance(t[ku].word) - dr) < kHalfResolutionMergeReach);
+    if (!joins) continue;
+    for (std::size_t c = 0; c < 3; ++c) colour[c] += t[ku].colour[c];
+    strength += t[ku].strength;
+    n += 1.0f;
+  }
+  InputTexel out;
+  for (std::size_t c = 0; c < 3; ++c) out.colour[c] = colour[c] / n;
+  out.word = ref.word;
+  out.strength = any ? strength / n : 0.0f;
+  return out;
+}
+
+}  // namespace
+
+void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
+                                const std::vector<PassConstants>& constants, const std::uint16_t* ids,
+                                const CpuFilterImage& image, float min_reach_pixels, float* out,
+                                CpuHalfResolutionStats* stats) {
+  const PassConstants& shared = constants.front();
+  const std::array<int, 4> rect = {static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_min[1]),
+                                   static_cast<int>(shared.clamp_max[0] - shared.clamp_min[0]) + 1,
+                                   static_cast<int>(shared.clamp_max[1] - shared.clamp_min[1]) + 1};
+  const Frame full = full_inputs(image, shared, ids);
+  std::vector<Look> looks;
+  for (const PassConstants& k : constants) looks.push_back({k.pixels_per_mm[0], k.pixels_per_mm[1], k.follow_surface_factor});
+
+  // The reduction, and the passes at half size on it.
+  const std::array<int, 4> hrect = half_rect(rect);
+  Frame half;
+  half.width = half_size(image.width);
+  half.height = half_size(image.height);
+  half.ids = full.ids;
+  half.texels.resize(static_cast<std::size_t>(half.width) * half.height);
+  for (int j = hrect[1]; j < hrect[1] + hrect[3]; ++j) {
+    for (int i = hrect[0]; i < hrect[0] + hrect[2]; ++i) {
+      half.texels[static_cast<std::size_t>(j) * half.width + i] = reduce_block(full, looks, rect, i, j);
+    }
+  }
+  const std::size_t half_count = half.texels.size();
+  std::vector<float> half_colour(half_count * 4), half_depth(half_count), half_result(half_count * 4);
+  std::vector<std::uint16_t> half_ids(ids != nullptr ? half_count : 0);
+  for (std::size_t i = 0; i < half_count; ++i) {
+    const InputTexel& t = half.texels[i];
+    std::copy(t.colour.begin(), t.colour.end(), half_colour.begin() + static_cast<std::ptrdiff_t>(i * 4));
+    half_colour[i * 4 + 3] = t.strength;
+    half_depth[i] = float_of(t.word);  // with indices, cpu_profile_filter drops the low byte
+    if (ids != nullptr) half_ids[i] = static_cast<std::uint16_t>(t.word & 0xFFu);
+  }
+  CpuFilterImage half_image;
+  half_image.width = half.width;
+  half_image.height = half.height;
+  half_image.color = half_colour.data();
+  half_image.depth = half_depth.data();
+  half_image.output_is_half = image.intermediate_is_half;  // the half-size result: the intermediate's format
+  half_image.intermediate_is_half = image.intermediate_is_half;
+  std::vector<PassConstants> half_constants;
+  for (const PassConstants& k : constants) half_constants.push_back(half_pass_constants(k, hrect));
+  if (ids != nullptr) {
+    cpu_profile_filter(kernels, half_constants, half_ids.data(), half_image, half_result.data(), true);
+  } else {
+    cpu_pass_kernel_filter(*kernels.front(), half_constants.front(), half_image, half_result.data());
+  }
+
+  // The half-size texels the passes blurred: the GL's half-size result has alpha above 0 there (the
+  // strength, rounded as the target stores it) and 0 where the pass left the texel alone.
+  std::vector<std::uint8_t> blurred_at_half(half_count, 0);
+  for (std::size_t i = 0; i < half_count; ++i) {
+    const InputTexel& t = half.texels[i];
+    const std::array<float, 4> c = {t.colour[0], t.colour[1], t.colour[2], t.strength};
+    const float w = clip_w(half_constants.front(), half.distance(t.word));
+    const float stored = image.intermediate_is_half ? round_to_half(t.strength) : t.strength;
+    blurred_at_half[i] = t.strength > 0.0f && in_colour_range(c.data(), 4) && !std::isnan(w) && w > 0.0f &&
+                         !std::isinf(w) && profile_of(half, t.word, kernels.size()) >= 0 && stored > 0.0f;
+  }
+
+  // The upsample, where it serves the pixel; the rest go to the full-size passes.
+  const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
+  std::vector<std::uint8_t> full_size(count, 1);
+  std::copy(image.color, image.color + count * 4, out);
+  CpuHalfResolutionStats counted;
+  for (int y = rect[1]; y < rect[1] + rect[3]; ++y) {
+    for (int x = rect[0]; x < rect[0] + rect[2]; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
+      const InputTexel& t = full.at(x, y);
+      const std::array<float, 4> centre = {t.colour[0], t.colour[1], t.colour[2], t.strength};
+      if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) continue;
+      const float d = full.distance(t.word);
+      const float w = clip_w(shared, d);
+      if (std::isnan(w) || !(w > 0.0f) || std::isinf(w)) continue;
+      const int p = profile_of(full, t.word, kernels.size());
+      if (p < 0) continue;
+      const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
+      const PassTerm& term = kernel.terms.front();
+      const Look& look = looks[static_cast<std::size_t>(p)];
+      const float a = std::min(centre[3], 1.0f);
+      const float step_x = look.x * a / w, step_y = look.y * a / w;
+      const float reach_x = std::min(term.horizontal.footprint.reach_mm * step_x, 1.0e6f);
+      const float reach_y = std::min(term.vertical.footprint.reach_mm * step_y, 1.0e6f);
+      ++counted.full_size;
+      if (!(std::min(reach_x, reach_y) >= min_reach_pixels)) continue;
+      const float factor = look.depth_factor / a;
+      const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
+      const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
+      float weight = 0.0f;
+      std::array<float, 3> blurred{}, reduced{};
+      for (int dy = 0; dy < 2; ++dy) {
+        for (int dx = 0; dx < 2; ++dx) {
+          const int qi = std::clamp(i0 + dx, hrect[0], hrect[0] + hrect[2] - 1);
+          const int qj = std::clamp(j0 + dy, hrect[1], hrect[1] + hrect[3] - 1);
+          const InputTexel& q = half.at(qi, qj);
+          if (!blurred_at_half[static_cast<std::size_t>(qj) * half.width + qi]) continue;
+          if (full.ids && (q.word & 0xFFu) != (t.word & 0xFFu)) continue;
+          float s = factor * std::fabs(d - half.distance(q.word));
+          if (!(s < 1.0f)) s = 1.0f;
+          const float wq = (dx == 0 ? 1.0f - fx : fx) * (dy == 0 ? 1.0f - fy : fy) * (1.0f - s);
+          const std::size_t qk = static_cast<std::size_t>(qj) * half.width + qi;
+          weight += wq;
+          for (std::size_t c = 0; c < 3; ++c) {
+            blurred[c] += wq * half_result[qk * 4 + c];
+            reduced[c] += wq * q.colour[c];
+          }
+        }
+      }
+      if (!(weight >= kHalfResolutionMinWeight)) continue;
+      const std::array<float, 3> ch = footprint_centre_weight(term.horizontal.footprint, kernel.spacing, step_x);
+      const std::array<float, 3> cv = footprint_centre_weight(term.vertical.footprint, kernel.spacing, step_y);
+      for (std::size_t c = 0; c < 3; ++c) {
+        float v = blurred[c] / weight + ch[c] * cv[c] * (centre[c] - reduced[c] / weight);
+        v = std::max(v, std::min(centre[c], 0.0f));  // no negative light from positive light
+        out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
+      }
+      full_size[i] = 0;
+      --counted.full_size;
+      ++counted.upsampled;
+    }
+  }
+
+  // The full-size passes on the pixels the upsample left (the others hold their input in the
+  // intermediate, as the GL's culling leaves them).
+  CpuFilterImage rest = image;
+  rest.mask = full_size.data();
+  std::vector<float> passes(count * 4);
+  if (ids != nullptr) {
+    cpu_profile_filter(kernels, constants, ids, rest, passes.data(), true);
+  } else {
+    cpu_pass_kernel_filter(*kernels.front(), constants.front(), rest, passes.data());
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (full_size[i] != 0) std::copy(passes.begin() + static_cast<std::ptrdiff_t>(i * 4),
+                                      passes.begin() + static_cast<std::ptrdiff_t>(i * 4 + 4), out + i * 4);
+  }
+  if (stats != nullptr) *stats = counted;
+}
+
+}  // namespace sss::math
