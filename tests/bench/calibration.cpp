@@ -39,10 +39,11 @@ RegionInput region_input_of(const Scene& scene, double reach_mm) {
   return in;
 }
 
-std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& footprints, int interior_px) {
+std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& footprints, int interior_px,
+                                                    const std::vector<std::string>& scenes) {
   const double reach_mm = profile_reach_mm(sss::math::skin_profile_terms());
   std::vector<CalibrationCase> cases;
-  for (const std::string& name : footprint_scene_names()) {
+  for (const std::string& name : scenes.empty() ? footprint_scene_names() : scenes) {
     for (double f : footprints) {
       const int side = sweep_frame_side(f, interior_px, reach_mm);
       const Scene scene = make_footprint_scene(name, f, side, side);

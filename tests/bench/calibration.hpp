@@ -38,8 +38,10 @@ RegionInput region_input_of(const Scene& scene, double reach_mm);
 // The interior the calibration's frames hold at least (the benchmark's default --sweep-interior).
 inline constexpr int kCalibrationInteriorPx = 64;
 
-// Every sweep scene at every footprint (frames as the benchmark sizes them at `interior_px`).
-std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& footprints, int interior_px);
+// Every sweep scene (or those named in `scenes`, when not empty) at every footprint (frames as the
+// benchmark sizes them at `interior_px`).
+std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& footprints, int interior_px,
+                                                    const std::vector<std::string>& scenes = {});
 
 struct CaseScore {
   std::string scene;

@@ -15,11 +15,16 @@
 #include <string>
 
 #include "filter_case.hpp"
+#include "math/half_resolution.hpp"
 
 namespace sss_test {
 namespace {
 
 constexpr float kTolerance = 3e-3f;
+
+// The scene scales below were chosen for an 8-pixel threshold: scaled with the generated one
+// (kHalfResolutionMinReachPixels), the same share of the relief's kernels reaches it.
+float at_threshold(float width_for_8_pixels) { return width_for_8_pixels * sss::math::kHalfResolutionMinReachPixels / 8.0f; }
 
 SyntheticScene relief() { return make_relief_scene(64, 48, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f)); }
 
@@ -51,7 +56,7 @@ TEST_F(HalfResolution, MatchesTheCpuModel) {
                            Variant{"RGBA16F region in place", true, false, true}}) {
     SCOPED_TRACE(v.name);
     FilterCase c;
-    c.settings = half_settings(0.03f);
+    c.settings = half_settings(at_threshold(0.03f));
     c.half_color = v.half_color;
     c.separate_output = v.separate;
     c.use_region = v.region;
@@ -98,7 +103,7 @@ TEST_F(HalfResolution, AConstantSurfaceStaysConstant) {
       make_flat_scene(64, 48, {0.8f, 0.4f, 0.2f, 1.0f}, 1.0f, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f));
   FilterCase c;
   c.half_color = true;
-  c.settings = half_settings(0.12f);
+  c.settings = half_settings(at_threshold(0.12f));
   const FilterOutcome o = run_case(flat, c);
   ASSERT_EQ(o.result, SSS_OK);
   EXPECT_GT(o.upsampled, 1000);
