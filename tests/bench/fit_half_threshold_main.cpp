@@ -6,7 +6,7 @@
 // candidate at which every case keeps the half path's miss within kHalfResolutionMissMargin of the
 // full-size passes' (half_keeps_margin). Writes
 //   module/src/math/half_resolution_threshold.hpp   kHalfResolutionMinReachPixels
-//   tests/bench/half_threshold_fit.json              the cases bench.half_threshold re-checks
+//   tests/bench/half_threshold_fit.json              the pick and the cases bench.half_threshold re-checks
 //   docs/benchmarks/half-resolution.md (+ a plot)   the report
 // scripts/fit-half-threshold.sh runs it; a change to the path, the kernels or the instrument that
 // moves a miss needs a rerun (bench.half_threshold says so).
@@ -143,22 +143,6 @@ nlohmann::json guard_cases(const Fit& fit) {
   return {{"scenes", scenes}, {"footprints_mm", footprints}};
 }
 
-nlohmann::json scores_json(const Fit& fit) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const HalfCaseScore& s : fit.scores) {
-    nlohmann::json half = nlohmann::json::array();
-    for (std::size_t k = 0; k < fit.candidates.size(); ++k) {
-      half.push_back({{"threshold", fit.candidates[k]},
-                      {"miss", s.half[k].pooled},
-                      {"miss_rgb", s.half[k].channel},
-                      {"upsampled_share", s.upsampled_share[k]}});
-    }
-    out.push_back({{"scene", s.scene}, {"footprint_mm", s.footprint_mm}, {"reach_px", s.reach_px},
-                   {"full_miss", s.full.pooled}, {"full_miss_rgb", s.full.channel}, {"half", half}});
-  }
-  return out;
-}
-
 void write_header(const Fit& fit, const std::string& path) {
   const HalfCaseScore* d = deciding_case(fit);
   std::ofstream h(path);
@@ -188,7 +172,6 @@ void write_expectation(const Fit& fit, const std::string& path) {
   j["kernel_reach_mm"] = fit.reach_mm;
   j["interior_px"] = sss_bench::kCalibrationInteriorPx;
   if (fit.chosen >= 0) j["guard"] = guard_cases(fit);
-  j["scores"] = scores_json(fit);
   std::ofstream(path) << j.dump(1) << "\n";
 }
 
