@@ -1,7 +1,8 @@
 # Sourced by scripts/cost-table.sh, scripts/cost-times.sh and scripts/profile-cost.sh: their shared
 # options. The caller sets the defaults first (size, scenes; reps, frames and profiles only where it
 # takes them), then calls `cost_options NAME "$@"`; sets baseline, baseline_name and probe (this
-# build's sss_cost_probe). Also `median` (stdin: one number a line) for the wall-time scripts.
+# build's sss_cost_probe, under build/release or SSS_BUILD_DIR). Also `median` (stdin: one number a
+# line) for the wall-time scripts.
 cost_options() {
   local name=$1
   shift
@@ -21,7 +22,7 @@ cost_options() {
       *) echo "$name: unknown argument '$1'" >&2; exit 2 ;;
     esac
   done
-  probe=build/release/tests/bench/sss_cost_probe
+  probe=${SSS_BUILD_DIR:-build/release}/tests/bench/sss_cost_probe
 }
 
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }

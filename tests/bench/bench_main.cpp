@@ -70,8 +70,9 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // Several materials in one pass pair: one profile against per-pixel profiles, in the same run.
   configs.push_back({"separable-one-profile", SSS_TAPS_MEDIUM, true});
   configs.push_back({"separable-profiles", SSS_TAPS_MEDIUM, true});
+  // The half-resolution path (SSS_PATH_HALF_RESOLUTION) in place, beside the masked one.
   for (const char* kind : {"separable-in-place", "separable-region",
-                           "separable-masked", "separable-masked-region", "separable-compute",
+                           "separable-masked", "separable-masked-region", "separable-half", "separable-compute",
                            "separable-compute-region", "separable-auto-region"}) {
     configs.push_back({kind, SSS_TAPS_MEDIUM, true});
   }
@@ -127,6 +128,7 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   if (c.kind == "separable-region") return make_in_place_method(loader, c.taps, true);
   if (c.kind == "separable-masked") return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT_MASKED);
   if (c.kind == "separable-masked-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_FRAGMENT_MASKED);
+  if (c.kind == "separable-half") return make_in_place_method(loader, c.taps, false, SSS_PATH_HALF_RESOLUTION);
   if (c.kind == "separable-compute") return make_in_place_method(loader, c.taps, false, SSS_PATH_COMPUTE);
   if (c.kind == "separable-compute-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_COMPUTE);
   if (c.kind == "separable-auto-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_AUTO);

@@ -10,7 +10,7 @@
 // fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
-//                  [--path default|fragment|masked|auto|compute] [--frames N] [--profiles N] [--msaa 0|4]
+//                  [--path default|fragment|masked|auto|compute|half] [--frames N] [--profiles N] [--msaa 0|4]
 //
 // --msaa 4: the MSAA path written back in place, as the MSAA study's write-back row: the scene made
 // at twice the size, 4 samples per pixel (RGBA16F colour, DEPTH_COMPONENT32F depth, see
@@ -21,7 +21,8 @@
 // other strength, falloff and scale) and an R8UI profile texture of index 0 everywhere: the cost of
 // the per-pixel selection on the same frame (the scene is one material).
 //
-// --path default (also without --path) keeps sss_default_settings' path: the frame a host gets.
+// --path default (also without --path) keeps sss_default_settings' path: the frame a host gets;
+// half (0.5 on) is SSS_PATH_HALF_RESOLUTION.
 // Prints the path that ran and "frame done" (the counts come from callgrind).
 #include <valgrind/callgrind.h>
 
@@ -75,6 +76,10 @@ bool parse(int argc, char** argv, Options* o) {
         o->path = SSS_PATH_AUTO;
       } else if (value == "compute") {
         o->path = SSS_PATH_COMPUTE;
+#ifdef SSS_AUTO_HALF_RESOLUTION  // 0.5 on
+      } else if (value == "half") {
+        o->path = SSS_PATH_HALF_RESOLUTION;
+#endif
       } else if (value == "fragment" || value == "default") {
         o->path = SSS_PATH_FRAGMENT;
       } else {
@@ -132,7 +137,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path default|fragment|masked|auto|compute] [--frames N] [--profiles N] [--msaa 0|4]\n");
+                         "[--path default|fragment|masked|auto|compute|half] [--frames N] [--profiles N] [--msaa 0|4]\n");
     return 2;
   }
   sss_headless_desc hd = {};

@@ -25,6 +25,7 @@ class InPlaceMethod : public LibraryFrameMethod {
     const std::string base = path_ == SSS_PATH_COMPUTE           ? "separable-compute"
                              : path_ == SSS_PATH_AUTO            ? "separable-auto"
                              : path_ == SSS_PATH_FRAGMENT_MASKED ? "separable-masked"
+                             : path_ == SSS_PATH_HALF_RESOLUTION ? "separable-half"
                                                                  : "separable";
     if (region_) return base + "-region";
     return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;

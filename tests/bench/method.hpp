@@ -72,7 +72,8 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // whole viewport's).
 // path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-region";
 // SSS_PATH_FRAGMENT_MASKED: "separable-masked[-region]"; SSS_PATH_COMPUTE:
-// "separable-compute[-region]"; SSS_PATH_AUTO: "separable-auto[...]").
+// "separable-compute[-region]"; SSS_PATH_AUTO: "separable-auto[...]"; SSS_PATH_HALF_RESOLUTION:
+// "separable-half").
 std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
                                              uint32_t path = SSS_PATH_FRAGMENT);
 // Several materials in one pass pair, in place, 17 taps or `taps`, follow-surface on: one profile and

@@ -3,6 +3,7 @@
 #include "profiles_report.hpp"
 
 #include "accuracy_report.hpp"
+#include "math/half_resolution.hpp"
 #include "timing.hpp"
 
 #include <algorithm>
@@ -260,8 +261,11 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "host's region (`SSS_FRAME_REGION`: the "
            "translucent pixels' bounding rectangle padded by the kernel's reach, as a host projects its skin "
            "meshes' bounds). `separable-masked` runs them behind a stencil the library marks from alpha "
-           "(`SSS_PATH_FRAGMENT_MASKED`: the blur shades translucent pixels only; no host hint). "
-           "`separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
+           "(`SSS_PATH_FRAGMENT_MASKED`: the blur shades translucent pixels only; no host hint). `separable-half` "
+           "runs the passes at half size, with a depth- and profile-aware upsample, for the pixels whose kernel "
+           "reaches at least " << fmt(sss::math::kHalfResolutionMinReachPixels, "%.0f") << " pixels (`SSS_PATH_HALF_RESOLUTION`; "
+           "the threshold measured on the footprint sweep: docs/benchmarks/half-resolution.md), and the full-size "
+           "passes behind the same stencil elsewhere. `separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
            "each work group caches a tile of rows, then of columns, in shared memory with as much apron as its "
            "widest kernel reaches, and a group with no translucent pixel takes no taps), "
            "alone and with the region; `separable-auto-region` lets the library pick the "
@@ -276,8 +280,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
             << fmt(none->relative_rmse, "%.4f") << " | " << fmt(none->p99_abs_error, "%.4f") << " | "
             << fmt(none->ssim, "%.4f") << " |\n";
       }
-      for (const char* method : {"separable", "separable-in-place", "separable-region",
-                                 "separable-masked", "separable-masked-region", "separable-compute",
+      for (const char* method : {"separable", "separable-in-place", "separable-region", "separable-masked",
+                                 "separable-masked-region", "separable-half", "separable-compute",
                                  "separable-compute-region", "separable-auto-region"}) {
         const ResultRow* r = find(rows, scene, w, h, method, 17, true);
         if (r == nullptr) continue;
@@ -320,8 +324,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
     };
     // The paths side by side: each one's time over the plain fragment path's, same frames.
     out << "\n| scene | masked / fragment, whole viewport | compute / fragment, whole viewport | masked / fragment, "
-           "region | compute / fragment, region |\n"
-           "|---|---:|---:|---:|---:|\n";
+           "region | compute / fragment, region | half / masked, whole viewport |\n"
+           "|---|---:|---:|---:|---:|---:|\n";
     for (const char* scene : {"head-close", "head-mid", "head-far", "empty"}) {
       const auto ratio = [&](const char* compute, const char* fragment) {
         const ResultRow* c = find(rows, scene, w, h, compute, 17, true);
@@ -332,11 +336,12 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       out << "| " << scene << " | " << ratio("separable-masked", "separable-in-place") << " | "
           << ratio("separable-compute", "separable-in-place") << " | "
           << ratio("separable-masked-region", "separable-region") << " | "
-          << ratio("separable-compute-region", "separable-region") << " |\n";
+          << ratio("separable-compute-region", "separable-region") << " | " << ratio("separable-half", "separable-masked")
+          << " |\n";
     }
     // Before and after on the error-against-time plane: the plots hold every method as a series.
-    out << "\nBefore and after on the Pareto plots: `separable-in-place` (before: the whole viewport, no hint) and "
-           "`separable-auto-region` (after) are single points on ";
+    out << "\nBefore and after on the Pareto plots: `separable-in-place` (before: the whole viewport, no hint), "
+           "`separable-auto-region` (after) and `separable-half` are single points on ";
     bool first_plot = true;
     for (const char* scene : {"head-close", "head-mid", "head-far"}) {
       if (find(rows, scene, w, h, best, 17, true) == nullptr) continue;
