@@ -75,6 +75,8 @@ bool parse(int argc, char** argv, Options* o) {
         o->path = SSS_PATH_AUTO;
       } else if (value == "compute") {
         o->path = SSS_PATH_COMPUTE;
+      } else if (value == "half") {
+        o->path = SSS_PATH_HALF_RESOLUTION;
       } else if (value == "fragment" || value == "default") {
         o->path = SSS_PATH_FRAGMENT;
       } else {

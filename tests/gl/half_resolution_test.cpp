@@ -48,12 +48,15 @@ using HalfResolution = FilterCaseTest;
 TEST_F(HalfResolution, MatchesTheCpuModel) {
   struct Variant {
     const char* name;
-    bool half_color, separate, region;
+    bool half_color, separate, region, stencil;
   };
-  for (const Variant& v : {Variant{"RGBA16F in place", true, false, false}, Variant{"RGBA32F in place", false, false, false},
-                           Variant{"RGBA16F into an output", true, true, false},
-                           Variant{"RGBA32F region into an output", false, true, true},
-                           Variant{"RGBA16F region in place", true, false, true}}) {
+  for (const Variant& v : {Variant{"RGBA16F in place", true, false, false, false},
+                           Variant{"RGBA32F in place", false, false, false, false},
+                           Variant{"RGBA16F into an output", true, true, false, false},
+                           Variant{"RGBA32F region into an output", false, true, true, false},
+                           Variant{"RGBA16F region in place", true, false, true, false},
+                           Variant{"RGBA16F behind a host stencil, in place", true, false, false, true},
+                           Variant{"RGBA32F behind a host stencil, into an output", false, true, false, true}}) {
     SCOPED_TRACE(v.name);
     FilterCase c;
     c.settings = half_settings(0.03f);
@@ -61,6 +64,8 @@ TEST_F(HalfResolution, MatchesTheCpuModel) {
     c.separate_output = v.separate;
     c.use_region = v.region;
     c.region = {5, 3, 41, 37};
+    c.use_stencil = v.stencil;
+    if (v.stencil) c.depth = DepthKind::depth24_stencil8;
     const FilterOutcome o = run_case(relief(), c);
     ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
     EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
@@ -115,17 +120,14 @@ TEST_F(HalfResolution, AConstantSurfaceStaysConstant) {
   EXPECT_LE(worst, 1.0f / 1024.0f);
 }
 
-// What the path cannot run (a kernel of two terms, a host stencil) takes the fragment passes: the
-// same image as SSS_PATH_FRAGMENT, and the stats say so.
+// What the path cannot run (a kernel of two terms; the cross-bilateral mode) takes the fragment
+// passes: the same image as SSS_PATH_FRAGMENT, and the stats say so.
 TEST_F(HalfResolution, FramesItCannotRunTakeTheFragmentPasses) {
   for (int which = 0; which < 2; ++which) {
-    SCOPED_TRACE(which == 0 ? "two kernel terms" : "host stencil");
+    SCOPED_TRACE(which == 0 ? "two kernel terms" : "cross-bilateral mode");
     FilterCase c;
-    c.settings = path_case_settings(half_settings(0.12f), SSS_PATH_HALF_RESOLUTION, SSS_MODE_SEPARABLE, which == 0);
-    if (which == 1) {
-      c.depth = DepthKind::depth24_stencil8;
-      c.use_stencil = true;
-    }
+    c.settings = path_case_settings(half_settings(0.12f), SSS_PATH_HALF_RESOLUTION,
+                                    which == 0 ? SSS_MODE_SEPARABLE : SSS_MODE_CROSS_BILATERAL, which == 0);
     const FilterOutcome half = run_case(relief(), c);
     ASSERT_EQ(half.result, SSS_OK);
     EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_FRAGMENT));

@@ -277,11 +277,13 @@ void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
   const Upsample upsample{full, half, result, kernels, looks, shared, hrect, min_reach_pixels, image.output_is_half};
   const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
   std::vector<std::uint8_t> full_size(count, 1);
+  if (image.mask != nullptr) std::copy(image.mask, image.mask + count, full_size.begin());
   std::copy(image.color, image.color + count * 4, out);
   CpuHalfResolutionStats counted;
   for (int y = rect[1]; y < rect[1] + rect[3]; ++y) {
     for (int x = rect[0]; x < rect[0] + rect[2]; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
+      if (full_size[i] == 0) continue;  // outside the host's stencil: neither draw writes it
       if (upsample.pixel(x, y, out + i * 4)) {
         full_size[i] = 0;
         ++counted.upsampled;
