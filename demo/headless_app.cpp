@@ -275,6 +275,7 @@ int run_headless(const Options &o, const DemoScene &scene) {
         std::printf("         passes: %s (sss_stats.last_frame_path)\n",
                     stats.last_frame_path == SSS_PATH_COMPUTE           ? "compute dispatches"
                     : stats.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "fragment passes behind a stencil from alpha"
+                    : stats.last_frame_path == SSS_PATH_HALF_RESOLUTION ? "half size where kernels are wide, an upsample"
                                                                         : "fragment passes");
       }
       if (!renderer.sss.profile_note.empty()) std::printf("         note: %s\n", renderer.sss.profile_note.c_str());

@@ -124,6 +124,8 @@ void print_usage(const char *program) {
       "  --path NAME         how the separable passes run: auto (whichever is fastest here; the library's\n"
       "                      default) | fragment (culled to translucent pixels) | masked (since 0.4 the\n"
       "                      same draws as fragment) | compute (OpenGL 4.3+ dispatches, shared-memory tiles)\n"
+      "                      | half (half size where the kernel spans 8+ pixels, full size elsewhere: faster\n"
+      "                      close-ups, a different image within the benchmark's margin)\n"
       "  --translucency[=F]  light through thin parts (ears, nostrils), translucency F in [0, 1] (default 0.95)\n"
       "  --back-light        put the second light behind the head (for the translucency)\n"
       "  --thickness NAME    where the translucency's thickness comes from: shadow (the light's shadow map,\n"
@@ -300,8 +302,10 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
           o->path = SSS_PATH_AUTO;
         } else if (v == "masked") {
           o->path = SSS_PATH_FRAGMENT_MASKED;
+        } else if (v == "half") {
+          o->path = SSS_PATH_HALF_RESOLUTION;
         } else {
-          ok = fail("--path wants fragment, masked, compute or auto", optarg);
+          ok = fail("--path wants fragment, masked, compute, half or auto", optarg);
         }
         break;
       }

@@ -66,9 +66,10 @@ void sss_section(WindowState *s) {
   }
   ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
   ImGui::Checkbox("region from the head's bounds", &c.region);
-  // Indexed by SSS_PATH_*: fragment 0, compute 1, auto 2, masked 3.
-  const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked"};
-  ImGui::Combo("path", &c.path, paths, 4);
+  // Indexed by SSS_PATH_*: fragment 0, compute 1, auto 2, masked 3, half resolution 4.
+  const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked",
+                               "half resolution (wide kernels)"};
+  ImGui::Combo("path", &c.path, paths, 5);
   ImGui::Checkbox("cross-bilateral (Mikkelsen 2010)", &c.cross_bilateral);
   ImGui::Checkbox("debug checks (SSS_CREATE_DEBUG_CHECKS: re-creates the context)", &c.debug_checks);
   if (c.cross_bilateral) {

@@ -35,7 +35,7 @@ struct SssControls {
   // without a switch.)
   bool region = false;
   // How the separable passes run (sss_settings.path, SSS_PATH_*): fragment passes, behind a
-  // stencil from alpha, compute dispatches, or the fastest of them.
+  // stencil from alpha, compute dispatches, half size where kernels are wide, or the fastest of them.
   int path = 0;
   // Transmittance through thin parts in the lighting pass (integration/glsl/sss_transmittance.glsl),
   // with the profile the blur uses.

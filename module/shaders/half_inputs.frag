@@ -10,6 +10,7 @@
 // representative's profile) are averaged into the texel's colour and strength. This must compute
 // what sss::math::cpu_half_resolution_filter does (module/src/math/cpu_half_resolution.cpp).
 //
+// Like pass_inputs.frag it marks the half-size culling depth: 0 where the texel is translucent.
 // Switches: SSS_PROFILE_IDS 0 none, 1 R8UI indices in the distance's low byte (pass_inputs.frag).
 
 SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
@@ -79,4 +80,5 @@ void main() {
   o_taps = uvec4(floatBitsToUint(colour / n), word);
   o_strength = floatBitsToUint(any_translucent ? strength / n : 0.0);
   o_intermediate = o_taps;
+  gl_FragDepth = any_translucent ? 0.0 : 1.0;  // the half-size passes' culling, as pass_inputs.frag's
 }

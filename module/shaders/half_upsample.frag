@@ -42,22 +42,21 @@ float sss_distance(uint word) {
 
 vec4 table(int entry, int row) { return texelFetch(u_tables, ivec2(entry, row), 0); }
 
-// The weight the pass of table row `row` keeps on the centre at `step` pixels per profile mm:
-// footprint_taps.glsl's (the kernel out to the midpoint to the first tap, and the delta).
-vec3 centre_weight(int row, float step) {
-  vec4 footprint = table(SSS_CDF_ENTRIES, row);
+// The weight the pass of table row `row` (its reach and delta: `footprint`) keeps on the centre at
+// `step` pixels per profile mm: footprint_taps.glsl's (the kernel to the midpoint to the first tap,
+// and the delta).
+vec3 centre_weight(int row, vec4 footprint, float step) {
   float reach = min(footprint.x * step, 1.0e6);
   bool dense = reach <= float(u_half_taps) + 0.5;
   int count = dense ? max(int(ceil(reach - 0.5)), 0) : u_half_taps;
-  vec3 below = table(SSS_CDF_ENTRIES - 1, row).rgb;
-  if (count > 0) {
-    float first = dense ? 1.0 : max(1.0, floor(reach * u_first_spacing + 0.5));
-    float u = sqrt(min((0.5 * first / step) / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
-    int j = min(int(u), SSS_CDF_ENTRIES - 2);
-    float f = u - float(j);
-    below = table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f;
-  }
-  return 2.0 * below + footprint.yzw;
+  // Only a pixel whose kernel fits in it has no taps, and the upsample never serves one (its reach
+  // is at least u_min_reach pixels): the table's total, read there, is not read per pixel.
+  if (count == 0) return 2.0 * table(SSS_CDF_ENTRIES - 1, row).rgb + footprint.yzw;
+  float first = dense ? 1.0 : max(1.0, floor(reach * u_first_spacing + 0.5));
+  float u = sqrt(min((0.5 * first / step) / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  int j = min(int(u), SSS_CDF_ENTRIES - 2);
+  float f = u - float(j);
+  return 2.0 * (table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f) + footprint.yzw;
 }
 
 void main() {
@@ -77,8 +76,9 @@ void main() {
   vec4 look = u_looks[profile];
   float a = min(centre.a, 1.0);
   float step_x = look.x * a / w, step_y = look.y * a / w;
-  float reach_x = min(table(SSS_CDF_ENTRIES, 2 * profile).x * step_x, 1.0e6);
-  float reach_y = min(table(SSS_CDF_ENTRIES, 2 * profile + 1).x * step_y, 1.0e6);
+  vec4 footprint_x = table(SSS_CDF_ENTRIES, 2 * profile), footprint_y = table(SSS_CDF_ENTRIES, 2 * profile + 1);
+  float reach_x = min(footprint_x.x * step_x, 1.0e6);
+  float reach_y = min(footprint_y.x * step_y, 1.0e6);
   if (!(min(reach_x, reach_y) >= u_min_reach)) discard;  // narrow: the full-size passes
 
   float factor = look.z / a;
@@ -104,7 +104,7 @@ void main() {
     }
   }
   if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
-  vec3 c = centre_weight(2 * profile, step_x) * centre_weight(2 * profile + 1, step_y);
+  vec3 c = centre_weight(2 * profile, footprint_x, step_x) * centre_weight(2 * profile + 1, footprint_y, step_y);
   vec3 result = blurred / weight + c * (centre.rgb - reduced / weight);
   result = max(result, min(centre.rgb, vec3(0.0)));  // no negative light from positive light
   o_color = sss_nearest_half(vec4(result, centre.a));

@@ -76,10 +76,8 @@ bool parse(int argc, char** argv, Options* o) {
         o->path = SSS_PATH_AUTO;
       } else if (value == "compute") {
         o->path = SSS_PATH_COMPUTE;
-#ifdef SSS_AUTO_HALF_RESOLUTION  // 0.5 on
       } else if (value == "half") {
         o->path = SSS_PATH_HALF_RESOLUTION;
-#endif
       } else if (value == "fragment" || value == "default") {
         o->path = SSS_PATH_FRAGMENT;
       } else {

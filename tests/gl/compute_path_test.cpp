@@ -479,9 +479,9 @@ TEST_F(ComputePath, AnUnknownPathIsRefusedByName) {
   sss_settings s;
   sss_default_settings(&s);
   EXPECT_EQ(s.path, SSS_PATH_AUTO);  // the default: the fastest path here (sss.h, SSS_PATH_AUTO)
-  s.path = 4;
+  s.path = SSS_PATH_HALF_RESOLUTION + 1;
   EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 4"), std::string::npos) << sss_last_error(sss_);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->path = 5"), std::string::npos) << sss_last_error(sss_);
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);

@@ -112,6 +112,7 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
       {"host stencil", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, 0, false, true},
       {"kernel of two terms (SVD rank 2)", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, 0, false, false, true},
       {"masked fragment path", SSS_PATH_FRAGMENT_MASKED},
+      {"half-resolution path", SSS_PATH_HALF_RESOLUTION},
       {"cross-bilateral mode", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL},
       // A described frame's target counts as incomplete unless SSS_FRAME_TARGET_COMPLETE says
       // otherwise: without the flag this would silently count the fragment path.

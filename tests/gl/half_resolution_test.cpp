@@ -14,8 +14,12 @@
 #include <cstring>
 #include <string>
 
+#include "api/profiles.hpp"
 #include "filter_case.hpp"
+#include "host_gl_util.hpp"
+#include "math/cpu_half_resolution.hpp"
 #include "math/half_resolution.hpp"
+#include "math/pass_kernel.hpp"
 
 namespace sss_test {
 namespace {
@@ -48,12 +52,15 @@ using HalfResolution = FilterCaseTest;
 TEST_F(HalfResolution, MatchesTheCpuModel) {
   struct Variant {
     const char* name;
-    bool half_color, separate, region;
+    bool half_color, separate, region, stencil;
   };
-  for (const Variant& v : {Variant{"RGBA16F in place", true, false, false}, Variant{"RGBA32F in place", false, false, false},
-                           Variant{"RGBA16F into an output", true, true, false},
-                           Variant{"RGBA32F region into an output", false, true, true},
-                           Variant{"RGBA16F region in place", true, false, true}}) {
+  for (const Variant& v : {Variant{"RGBA16F in place", true, false, false, false},
+                           Variant{"RGBA32F in place", false, false, false, false},
+                           Variant{"RGBA16F into an output", true, true, false, false},
+                           Variant{"RGBA32F region into an output", false, true, true, false},
+                           Variant{"RGBA16F region in place", true, false, true, false},
+                           Variant{"RGBA16F behind a host stencil, in place", true, false, false, true},
+                           Variant{"RGBA32F behind a host stencil, into an output", false, true, false, true}}) {
     SCOPED_TRACE(v.name);
     FilterCase c;
     c.settings = half_settings(at_threshold(0.03f));
@@ -61,6 +68,8 @@ TEST_F(HalfResolution, MatchesTheCpuModel) {
     c.separate_output = v.separate;
     c.use_region = v.region;
     c.region = {5, 3, 41, 37};
+    c.use_stencil = v.stencil;
+    if (v.stencil) c.depth = DepthKind::depth24_stencil8;
     const FilterOutcome o = run_case(relief(), c);
     ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
     EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
@@ -115,17 +124,14 @@ TEST_F(HalfResolution, AConstantSurfaceStaysConstant) {
   EXPECT_LE(worst, 1.0f / 1024.0f);
 }
 
-// What the path cannot run (a kernel of two terms, a host stencil) takes the fragment passes: the
-// same image as SSS_PATH_FRAGMENT, and the stats say so.
+// What the path cannot run (a kernel of two terms; the cross-bilateral mode) takes the fragment
+// passes: the same image as SSS_PATH_FRAGMENT, and the stats say so.
 TEST_F(HalfResolution, FramesItCannotRunTakeTheFragmentPasses) {
   for (int which = 0; which < 2; ++which) {
-    SCOPED_TRACE(which == 0 ? "two kernel terms" : "host stencil");
+    SCOPED_TRACE(which == 0 ? "two kernel terms" : "cross-bilateral mode");
     FilterCase c;
-    c.settings = path_case_settings(half_settings(0.12f), SSS_PATH_HALF_RESOLUTION, SSS_MODE_SEPARABLE, which == 0);
-    if (which == 1) {
-      c.depth = DepthKind::depth24_stencil8;
-      c.use_stencil = true;
-    }
+    c.settings = path_case_settings(half_settings(0.12f), SSS_PATH_HALF_RESOLUTION,
+                                    which == 0 ? SSS_MODE_SEPARABLE : SSS_MODE_CROSS_BILATERAL, which == 0);
     const FilterOutcome half = run_case(relief(), c);
     ASSERT_EQ(half.result, SSS_OK);
     EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_FRAGMENT));
@@ -138,6 +144,79 @@ TEST_F(HalfResolution, FramesItCannotRunTakeTheFragmentPasses) {
     TearDown();
     SetUp();
   }
+}
+
+// Per-pixel profiles (R8UI indices, two materials and an object of the first): the reduction and
+// the upsample keep to each pixel's index, and the whole frame matches the CPU model.
+TEST_F(HalfResolution, PerPixelProfilesMatchTheCpuModel) {
+  constexpr int kW = 64, kH = 48;
+  const SyntheticScene scene = relief();
+  sss_settings first = half_settings(at_threshold(0.03f));
+  sss_settings second = first;
+  second.scale = 2.0f;
+  second.strength[0] = 0.5f;
+  second.falloff[2] = 0.2f;
+  const sss_settings profiles[2] = {first, second};
+  const auto id = [](int x, int y) { return x < 30 ? (y < kH / 2 ? 0u : 0x10u) : (y < 20 ? 1u : 7u); };
+  std::vector<uint8_t> ids8(static_cast<std::size_t>(kW) * kH);
+  std::vector<uint16_t> ids(ids8.size());
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      ids[static_cast<std::size_t>(y) * kW + x] = static_cast<uint16_t>(id(x, y));
+      ids8[static_cast<std::size_t>(y) * kW + x] = static_cast<uint8_t>(id(x, y));
+    }
+  }
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
+  ASSERT_EQ(sss_set_profiles(sss_, profiles, 2), SSS_OK) << sss_last_error(sss_);
+  const GLuint color = make_rgba16f(kW, kH, scene.color);
+  const GLuint depth = make_depth32f(kW, kH, scene.window_depth);
+  host_gl::glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const GLuint id_texture = make_texture(GL_R8UI, kW, kH, GL_RED_INTEGER, GL_UNSIGNED_BYTE, ids8.data());
+  host_gl::glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  const std::vector<float> input = read_rgba(color, kW, kH);
+  sss_frame f = frame_of(color, depth);
+  f.texture_width = kW;
+  f.texture_height = kH;
+  f.color_format = GL_RGBA16F;
+  f.depth_format = GL_DEPTH_COMPONENT32F;
+  f.profile_texture = id_texture;
+  f.profile_format = GL_R8UI;
+  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
+  const std::vector<float> gpu = read_rgba(color, kW, kH);
+
+  std::vector<sss::math::PassKernel> kernels;
+  std::vector<sss::math::PassConstants> constants;
+  sss::math::FrameGeometry g;
+  g.texture_width = kW;
+  g.texture_height = kH;
+  g.viewport = {0, 0, kW, kH};
+  for (const sss_settings& s : profiles) {
+    const sss::math::FilterSettings fs = sss::api::to_filter_settings(s);
+    kernels.push_back(sss::math::build_pass_kernel(fs));
+    constants.push_back(sss::math::compute_pass_constants(fs, scene.projection, g, kernels.back().reach_mm));
+  }
+  sss::math::CpuFilterImage image;
+  image.width = kW;
+  image.height = kH;
+  image.color = input.data();
+  image.depth = scene.window_depth.data();
+  image.output_is_half = true;
+  std::vector<float> cpu(input.size());
+  sss::math::CpuHalfResolutionStats stats;
+  sss::math::cpu_half_resolution_filter({&kernels[0], &kernels[1]}, constants, ids.data(), image,
+                                        sss::math::kHalfResolutionMinReachPixels, cpu.data(), &stats);
+  const float difference = largest_relative_difference(gpu, cpu);
+  std::printf("per-pixel profiles: largest relative difference %.3g; %lld upsampled, %lld at full size\n",
+              static_cast<double>(difference), stats.upsampled, stats.full_size);
+  EXPECT_LE(difference, kTolerance);
+  EXPECT_GT(stats.upsampled, 200);
+  EXPECT_GT(stats.full_size, 20);
+  EXPECT_GT(largest_relative_difference(gpu, input), 0.02f);
+  // Index 7 has no profile: left alone.
+  EXPECT_EQ(gpu[(static_cast<std::size_t>(30) * kW + 50) * 4], input[(static_cast<std::size_t>(30) * kW + 50) * 4]);
 }
 
 // SSS_PATH_AUTO takes it only with SSS_AUTO_HALF_RESOLUTION and a trustworthy timer: on a software

@@ -252,6 +252,16 @@ TEST_F(Prewarm, TheFirstMaskedFrameCreatesNothing) {
   expect_no_hitch(Case{"masked, separate output", settings_with(SSS_PATH_FRAGMENT_MASKED), GL_RGBA16F, GL_RGBA16F});
 }
 
+TEST_F(Prewarm, TheFirstHalfResolutionFrameCreatesNothing) {
+  expect_no_hitch(Case{"half resolution, in place", settings_with(SSS_PATH_HALF_RESOLUTION)});
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+  EXPECT_EQ(stats.last_frame_path, static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
+  expect_no_hitch(Case{"half resolution, separate output", settings_with(SSS_PATH_HALF_RESOLUTION), GL_RGBA16F,
+                       GL_RGBA16F});
+}
+
 TEST_F(Prewarm, TheFirstComputeFrameCreatesNothing) {
   // Where the GL has no compute shaders (OpenGL ES, before 4.3) the frame takes the fragment path,
   // which is what sss_prepare then prepares.

@@ -206,7 +206,7 @@ class StateHarness : public GlTest {
          }},
         // The compute path (image unit 0, dispatches, memory barriers): in place, then a region into
         // a separate output (its copy outside the region is a fragment draw).
-        {"sss_apply_frame (compute path: in place; a region into an output; masked fragment path)",
+        {"sss_apply_frame (compute path: in place; a region into an output; masked and half-resolution paths)",
          [this] {
            sss_settings s = harness_settings();
            s.path = SSS_PATH_COMPUTE;
@@ -217,6 +217,10 @@ class StateHarness : public GlTest {
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            // The masked fragment path: its own stencil marked from alpha, then the masked passes.
            s.path = SSS_PATH_FRAGMENT_MASKED;
+           EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+           EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           // The half-resolution path (its depth range, clears and units 2-4), the region into the output.
+           s.path = SSS_PATH_HALF_RESOLUTION;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
            s.path = SSS_PATH_FRAGMENT;

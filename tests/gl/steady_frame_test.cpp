@@ -82,6 +82,8 @@ TEST_F(SteadyFrame, AllocatesNothing) {
        SSS_MODE_SEPARABLE, SSS_FRAME_REGION, output, SSS_PATH_COMPUTE},
       {"automatic path, in place (after its decision)", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_AUTO},
       {"masked fragment path, in place", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, 0u, 0u, SSS_PATH_FRAGMENT_MASKED},
+      {"half-resolution path, a region, separate output", SSS_FOLLOW_SURFACE, SSS_MODE_SEPARABLE, SSS_FRAME_REGION,
+       output, SSS_PATH_HALF_RESOLUTION},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);

@@ -82,6 +82,15 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
                    "_m" + std::to_string(v.mark_depth ? 1 : 0) + ".frag",
                gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
+  for (int i = 0; i < gl::kHalfVariantCount; ++i) {
+    const gl::HalfVariant v = gl::half_variant_at(i);
+    const std::string suffix = "_p" + std::to_string(v.profile_ids) + "_w" + (v.writes_back ? "1" : "0") + ".frag";
+    if (v.writes_back) {  // the reduction does not depend on where the result goes
+      out->write(d + "half_inputs" + suffix, gl::stage_recipe(dialect, "half_inputs.frag", gl::half_inputs_defines(v)));
+    }
+    out->write(d + "half_upsample" + suffix,
+               gl::stage_recipe(dialect, "half_upsample.frag", gl::half_upsample_defines(v)));
+  }
   // Every switch set with the tap count as a uniform (any count but the presets'); the presets'
   // constant counts (the loop and spacing differ, the rest does not) on the written-back pair of
   // the default's switches, with and without jitter.

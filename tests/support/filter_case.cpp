@@ -270,7 +270,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
     sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
                               c.normals.empty() ? nullptr : c.normals.data());
-  } else if (c.settings.path == SSS_PATH_HALF_RESOLUTION && kernel.terms.size() == 1 && !c.use_stencil) {
+  } else if (c.settings.path == SSS_PATH_HALF_RESOLUTION && kernel.terms.size() == 1) {
     sss::math::CpuHalfResolutionStats stats;
     sss::math::cpu_half_resolution_filter({&kernel}, {constants}, nullptr, image,
                                           sss::math::kHalfResolutionMinReachPixels, outcome.cpu.data(), &stats);

@@ -104,8 +104,8 @@ typedef enum sss_path {
   SSS_PATH_HALF_RESOLUTION = 4 /**< 0.5: half size where kernels are wide; not the same image (guide §18) */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */
-#define SSS_AUTO_HALF_RESOLUTION 0x2u /**< flags: SSS_PATH_AUTO may pick SSS_PATH_HALF_RESOLUTION (timed). Off */
-#define SSS_SETTINGS_ALL_FLAGS 0x3u
+#define SSS_AUTO_HALF_RESOLUTION 0x4u /**< flags: SSS_PATH_AUTO may pick SSS_PATH_HALF_RESOLUTION (timed). Off */
+#define SSS_SETTINGS_ALL_FLAGS 0x5u
 
 struct sss_kernel_desc; /* sss_tools.h */
 /** Filter settings; fill with sss_default_settings. Scene scale: world units per millimetre. */

@@ -38,10 +38,10 @@ PassInputsVariant pass_inputs_variant(const FilterRun& run) {
 
 // The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
 // read outside the culled pixels too. Without a stencil it marks the culling depth.
-sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message) {
+sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassInputsVariant& v,
+                            std::string* message) {
   const Functions& f = ctx.gl;
   PassInputsProgram* p = nullptr;
-  const PassInputsVariant v = pass_inputs_variant(run);
   sss_result r = ctx.programs.pass_inputs(v, &p, message);
   if (r != SSS_OK) return r;
   const Targets& t = ctx.targets.names();
@@ -216,7 +216,7 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
   sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  r = draw_pass_inputs(ctx, run, message);
+  r = draw_pass_inputs(ctx, run, pass_inputs_variant(run), message);
   if (r == SSS_OK) r = attach_targets(ctx, run, terms, message);
   if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
   detach_output(ctx);

@@ -129,7 +129,8 @@ using GLubyte = unsigned char;
   X(void, GetInteger64i_v, (GLenum target, GLuint index, std::int64_t * data))                         \
   X(GLuint, GetUniformBlockIndex, (GLuint program, const GLchar* name))                                \
   X(void, UniformBlockBinding, (GLuint program, GLuint block_index, GLuint binding))                   \
-  X(void, Uniform1ui, (GLint location, GLuint v0))
+  X(void, Uniform1ui, (GLint location, GLuint v0))                                                     \
+  X(void, Uniform4i, (GLint location, GLint v0, GLint v1, GLint v2, GLint v3))
 
 // Compute shaders and image load/store (desktop OpenGL 4.3+): the compute path of the separable
 // filter (sss.h SSS_PATH_*). Loaded on desktop GL 4.3+ only; has_compute says they are there.
@@ -138,7 +139,6 @@ using GLubyte = unsigned char;
   X(void, BindImageTexture, (GLuint unit, GLuint texture, GLint level, GLboolean layered, GLint layer, \
                              GLenum access, GLenum format))                                            \
   X(void, MemoryBarrier, (GLbitfield barriers))                                                        \
-  X(void, Uniform4i, (GLint location, GLint v0, GLint v1, GLint v2, GLint v3))                         \
   X(void, Uniform2i, (GLint location, GLint v0, GLint v1))                                             \
   X(void, GetBooleani_v, (GLenum target, GLuint index, GLboolean * data))
 // Desktop OpenGL only (ES 3.0 lacks them; glGetTexLevelParameteriv came back in ES 3.1). Loaded on

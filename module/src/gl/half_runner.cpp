@@ -2,11 +2,12 @@
 // fragment passes at full size elsewhere (the method and its constants: math/half_resolution.hpp).
 // The draws, after pass_inputs.frag's (full size, marking translucent pixels 0 in the culling
 // depth, the rest 1):
-//   1. half_inputs.frag reduces the inputs to half size (the half-size targets, every texel of the
-//      half-size rectangle: no culling there, the passes cost a quarter);
-//   2. the horizontal and vertical passes at half size (the same programs as at full size, at half
-//      the pixels per mm), the vertical one into half_result;
-//   3. into a separate output: the colour copied where the depth is 1 (not translucent);
+//   1. half_inputs.frag reduces the inputs to half size (every texel of the half-size rectangle),
+//      marking translucent texels in the half-size culling depth (0; the rest 1);
+//   2. the horizontal and vertical passes at half size behind that depth (the same programs as at
+//      full size, at half the pixels per mm), the vertical one into half_result, cleared first;
+//   3. into a separate output: the colour copied where the depth is 1 (not translucent) or the host's
+//      stencil fails (with a host stencil, every later draw tests it too);
 //   4. half_upsample.frag over translucent pixels (GL_GREATER at depth 0.5), writing depth 0.5
 //      where it writes the colour and discarding where the full-size passes must run;
 //   5. the full-size horizontal and vertical passes drawn at depth 0.25 (glDepthRange 0..0.5), so
@@ -85,7 +86,10 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std:
   if (r == SSS_OK) r = ctx.programs.half_upsample(half_variant(run), &p->upsample, message);
   const int w = run.color.width, h = run.color.height;
   if (r == SSS_OK) r = ctx.targets.ensure_pass_targets(w, h, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), w, h, message);
+  // The culling depth: with a host stencil, the module's copy of it in the host's format (copy_stencil).
+  const GLint depth_format = run.stencil != nullptr ? run.stencil->texture.internal_format
+                                                    : static_cast<GLint>(DEPTH24_STENCIL8);
+  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(depth_format, w, h, message);
   if (r == SSS_OK) r = ctx.targets.ensure_half_targets(w, h, run.intermediate_format(), message);
   if (r == SSS_OK) {
     r = ctx.targets.ensure_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
@@ -137,6 +141,12 @@ sss_result draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& 
                                          message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, axis == 0 ? "sss half-size horizontal pass" : "sss half-size vertical pass");
+  // The culled texels of the result are read by the upsample as "not translucent": alpha 0, cleared
+  // each frame (what the culling skips would hold an older frame's values).
+  if (axis == 1) {
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    f.ClearBufferfv(COLOR, 0, zero);
+  }
   set_blur_uniforms(ctx, p, half, 0, axis);
   // The vertical pass writes half_result, in the intermediate's format (not the target's).
   if (axis == 1) f.Uniform1i(p.round_to_half, half.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
@@ -181,13 +191,28 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
   ++ctx.draws;
 }
 
+// Into a separate output: the colour as it is where no pass writes (not translucent by alpha, or
+// outside the host's stencil).
+void copy_untouched(PassContext& ctx, const FilterRun& run) {
+  const Functions& f = ctx.gl;
+  DebugGroup group(f, ctx.labels, "sss copy (not translucent)");
+  if (run.stencil != nullptr) {
+    f.Disable(DEPTH_TEST);
+    set_stencil_test(f, run.stencil, NOTEQUAL);
+    draw_copy(ctx, run.color.name);
+    set_stencil_test(f, run.stencil, EQUAL);
+  }
+  f.Enable(DEPTH_TEST);
+  f.DepthFunc(LEQUAL);
+  draw_copy(ctx, run.color.name);
+}
+
 }  // namespace
 
 const char* half_resolution_unavailable(const FilterRun& run) {
   if (run.identity) return "nothing to blur";
   if (run.color.multisampled()) return "a multisampled colour";
   if (run.cross_bilateral) return "the cross-bilateral mode";
-  if (run.stencil != nullptr) return "a host stencil";
   if (run.kernel->terms.size() > 1) return "a kernel of several terms";
   if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
   return "";
@@ -209,13 +234,20 @@ sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::stri
   FrameMeasurement measure(ctx.queries, run.frame);
   measure.begin(PassQueries::horizontal);
   begin_passes(ctx, run.draw_rect);
-  r = draw_pass_inputs(ctx, run, message);  // marks the culling depth
+  if (run.stencil != nullptr) r = copy_stencil(ctx, run, *run.stencil, message, t.pass_inputs_framebuffer);
+  PassInputsVariant inputs = pass_inputs_variant(run);
+  inputs.mark_depth = true;  // with a host stencil too: the half-size passes need alpha's mark
+  if (r == SSS_OK) r = draw_pass_inputs(ctx, run, inputs, message);
   if (r != SSS_OK) return r;
-  f.Disable(DEPTH_TEST);
   set_viewport(f, half);
+  f.DepthFunc(ALWAYS);  // the reduction marks every texel of the half-size rectangle
+  f.DepthMask(1);
   r = draw_reduction(ctx, run, *p.inputs, message);
+  f.DepthMask(0);
+  f.DepthFunc(GREATER);  // the half-size passes: translucent texels only
   if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.horizontal, 0, message);
   if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.half_vertical, 1, message);
+  f.Disable(DEPTH_TEST);
   if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
   if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);  // leaves it bound
   if (r != SSS_OK) {
@@ -223,14 +255,13 @@ sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::stri
     return r;
   }
   set_viewport(f, run.draw_rect);
-  f.Enable(DEPTH_TEST);
   if (run.writes_back()) {
     f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value
-  } else {  // the pixels no pass writes: the colour as it is
-    DebugGroup group(f, ctx.labels, "sss copy (not translucent)");
-    f.DepthFunc(LEQUAL);
-    draw_copy(ctx, run.color.name);
+  } else {
+    copy_untouched(ctx, run);
   }
+  f.Enable(DEPTH_TEST);
+  set_stencil_test(f, run.stencil, EQUAL);  // the host's stencil culls too (no stencil: the test is off)
   f.DepthFunc(GREATER);
   f.DepthMask(1);
   draw_upsample(ctx, run, *p.upsample, half);

@@ -23,10 +23,10 @@ sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string*
 sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 // What the fragment passes and the half-resolution ones share (fragment_runner.cpp):
 // pass_inputs.frag's variant for `run` (it marks the culling depth unless a stencil culls), its draw
-// over the drawn rectangle (leaving the depth test on, func ALWAYS, write mask off), and one blur
-// pass of `p` reading `source` (pass_inputs.frag's layout) with the strength on its unit.
+// of variant `v` over the drawn rectangle (leaving the depth test on, func ALWAYS, write mask off),
+// and one blur pass of `p` reading `source` (pass_inputs.frag's layout) with the strength on its unit.
 PassInputsVariant pass_inputs_variant(const FilterRun& run);
-sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassInputsVariant& v, std::string* message);
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.
 sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* message);
@@ -44,7 +44,8 @@ sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuin
 sss_result stencil_mark_resources(PassContext& ctx, int width, int height, GLuint* program, std::string* message);
 
 // SSS_PATH_HALF_RESOLUTION (half_runner.cpp; the method: math/half_resolution.hpp): "" when `run`
-// can take it, else why not (it then runs the fragment passes).
+// can take it, else why not (it then runs the fragment passes). A host stencil culls alongside the
+// depth its inputs draw marks from alpha.
 const char* half_resolution_unavailable(const FilterRun& run);
 sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message);
 // Every program and target run_half_resolution needs, also for sss_prepare (prewarm.cpp).

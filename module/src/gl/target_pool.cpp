@@ -69,6 +69,7 @@ void TargetPool::destroy() {
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
   if (t_.stencil_buffer != 0) f.DeleteRenderbuffers(1, &t_.stencil_buffer);
+  if (t_.half_depth != 0) f.DeleteRenderbuffers(1, &t_.half_depth);
   forget();
 }
 
@@ -319,13 +320,23 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
                         single ? "half-size RGBA32F result" : "half-size RGBA16F result", message);
   }
   if (r != SSS_OK) return r;
+  const Functions& f = *gl_;
+  if (t_.half_depth == 0) f.GenRenderbuffers(1, &t_.half_depth);
+  f.BindRenderbuffer(RENDERBUFFER, t_.half_depth);
+  f.RenderbufferStorage(RENDERBUFFER, DEPTH24_STENCIL8, w, h);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) {
+    f.DeleteRenderbuffers(1, &t_.half_depth);
+    t_.half_depth = 0;
+    return allocation_failed(error, "half-size DEPTH24_STENCIL8 culling depth", w, h, message);
+  }
+  label_object(f, labels_, RENDERBUFFER, t_.half_depth, "sss half-size culling depth");
   half_width_ = w;
   half_height_ = h;
   half_result_format_ = result_format;
   ensure_framebuffer(&t_.half_inputs_framebuffer, "sss half-size inputs target");
   ensure_framebuffer(&t_.half_intermediate_framebuffer, "sss half-size horizontal pass target");
   ensure_framebuffer(&t_.half_result_framebuffer, "sss half-size vertical pass target");
-  const Functions& f = *gl_;
   const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
   attach_colour(t_.half_inputs_framebuffer, t_.half_taps);
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.half_strength, 0);
@@ -333,6 +344,10 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
   f.DrawBuffers(3, buffers);
   attach_colour(t_.half_intermediate_framebuffer, t_.half_intermediate);
   attach_colour(t_.half_result_framebuffer, t_.half_result);
+  for (const GLuint framebuffer : {t_.half_inputs_framebuffer, t_.half_intermediate_framebuffer, t_.half_result_framebuffer}) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer);
+    f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, t_.half_depth);
+  }
   return SSS_OK;
 }
 

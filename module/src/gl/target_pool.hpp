@@ -50,7 +50,8 @@ struct Targets {
   // pass's result (half_result: the intermediate format), and every profile's two pass tables
   // (RGBA32F half_tables, kFootprintEntries + 1 texels a row). half_inputs_framebuffer draws the
   // three inputs; half_intermediate_framebuffer and half_result_framebuffer are the two passes'.
-  GLuint half_taps = 0, half_strength = 0, half_intermediate = 0, half_result = 0, half_tables = 0;
+  // half_depth (DEPTH24_STENCIL8, on all three) holds the reduction's culling marks.
+  GLuint half_taps = 0, half_strength = 0, half_intermediate = 0, half_result = 0, half_tables = 0, half_depth = 0;
   GLuint half_inputs_framebuffer = 0, half_intermediate_framebuffer = 0, half_result_framebuffer = 0;
 };
 

@@ -122,25 +122,18 @@ InputTexel reduce_block(const Frame& f, const std::vector<Look>& looks, const st
   return out;
 }
 
-}  // namespace
+// The full-size rectangle the constants clamp to (x, y, width, height).
+std::array<int, 4> drawn_rect(const PassConstants& k) {
+  return {static_cast<int>(k.clamp_min[0]), static_cast<int>(k.clamp_min[1]),
+          static_cast<int>(k.clamp_max[0] - k.clamp_min[0]) + 1, static_cast<int>(k.clamp_max[1] - k.clamp_min[1]) + 1};
+}
 
-void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
-                                const std::vector<PassConstants>& constants, const std::uint16_t* ids,
-                                const CpuFilterImage& image, float min_reach_pixels, float* out,
-                                CpuHalfResolutionStats* stats) {
-  const PassConstants& shared = constants.front();
-  const std::array<int, 4> rect = {static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_min[1]),
-                                   static_cast<int>(shared.clamp_max[0] - shared.clamp_min[0]) + 1,
-                                   static_cast<int>(shared.clamp_max[1] - shared.clamp_min[1]) + 1};
-  const Frame full = full_inputs(image, shared, ids);
-  std::vector<Look> looks;
-  for (const PassConstants& k : constants) looks.push_back({k.pixels_per_mm[0], k.pixels_per_mm[1], k.follow_surface_factor});
-
-  // The reduction, and the passes at half size on it.
-  const std::array<int, 4> hrect = half_rect(rect);
+// The half-size frame: half_inputs.frag over the half-size rectangle.
+Frame reduce(const Frame& full, const std::vector<Look>& looks, const std::array<int, 4>& rect,
+             const std::array<int, 4>& hrect) {
   Frame half;
-  half.width = half_size(image.width);
-  half.height = half_size(image.height);
+  half.width = half_size(full.width);
+  half.height = half_size(full.height);
   half.ids = full.ids;
   half.texels.resize(static_cast<std::size_t>(half.width) * half.height);
   for (int j = hrect[1]; j < hrect[1] + hrect[3]; ++j) {
@@ -148,107 +141,157 @@ void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
       half.texels[static_cast<std::size_t>(j) * half.width + i] = reduce_block(full, looks, rect, i, j);
     }
   }
-  const std::size_t half_count = half.texels.size();
-  std::vector<float> half_colour(half_count * 4), half_depth(half_count), half_result(half_count * 4);
-  std::vector<std::uint16_t> half_ids(ids != nullptr ? half_count : 0);
-  for (std::size_t i = 0; i < half_count; ++i) {
+  return half;
+}
+
+// What the upsample reads at half size: the passes' result (RGBA) and where they blurred (the GL's
+// result has alpha above 0 there, the strength as the target stores it, and 0 where the pass left
+// the texel alone).
+struct HalfResult {
+  std::vector<float> rgba;
+  std::vector<std::uint8_t> blurred;
+};
+
+HalfResult half_passes(const Frame& half, const std::vector<const PassKernel*>& kernels,
+                       const std::vector<PassConstants>& half_constants, bool intermediate_is_half) {
+  const std::size_t count = half.texels.size();
+  std::vector<float> colour(count * 4), depth(count);
+  std::vector<std::uint16_t> ids(half.ids ? count : 0);
+  HalfResult r;
+  r.rgba.resize(count * 4);
+  r.blurred.assign(count, 0);
+  for (std::size_t i = 0; i < count; ++i) {
     const InputTexel& t = half.texels[i];
-    std::copy(t.colour.begin(), t.colour.end(), half_colour.begin() + static_cast<std::ptrdiff_t>(i * 4));
-    half_colour[i * 4 + 3] = t.strength;
-    half_depth[i] = float_of(t.word);  // with indices, cpu_profile_filter drops the low byte
-    if (ids != nullptr) half_ids[i] = static_cast<std::uint16_t>(t.word & 0xFFu);
+    std::copy(t.colour.begin(), t.colour.end(), colour.begin() + static_cast<std::ptrdiff_t>(i * 4));
+    colour[i * 4 + 3] = t.strength;
+    depth[i] = float_of(t.word);  // with indices, cpu_profile_filter drops the low byte
+    if (half.ids) ids[i] = static_cast<std::uint16_t>(t.word & 0xFFu);
+    const float w = clip_w(half_constants.front(), half.distance(t.word));
+    const float stored = intermediate_is_half ? round_to_half(t.strength) : t.strength;
+    r.blurred[i] = t.strength > 0.0f && in_colour_range(colour.data() + i * 4, 4) && !std::isnan(w) && w > 0.0f &&
+                   !std::isinf(w) && profile_of(half, t.word, kernels.size()) >= 0 && stored > 0.0f;
   }
-  CpuFilterImage half_image;
-  half_image.width = half.width;
-  half_image.height = half.height;
-  half_image.color = half_colour.data();
-  half_image.depth = half_depth.data();
-  half_image.output_is_half = image.intermediate_is_half;  // the half-size result: the intermediate's format
-  half_image.intermediate_is_half = image.intermediate_is_half;
+  CpuFilterImage image;
+  image.width = half.width;
+  image.height = half.height;
+  image.color = colour.data();
+  image.depth = depth.data();
+  image.output_is_half = intermediate_is_half;  // the half-size result: the intermediate's format
+  image.intermediate_is_half = intermediate_is_half;
+  if (half.ids) {
+    cpu_profile_filter(kernels, half_constants, ids.data(), image, r.rgba.data(), true);
+  } else {
+    cpu_pass_kernel_filter(*kernels.front(), half_constants.front(), image, r.rgba.data());
+  }
+  return r;
+}
+
+struct Upsample {
+  const Frame& full;
+  const Frame& half;
+  const HalfResult& result;
+  const std::vector<const PassKernel*>& kernels;
+  const std::vector<Look>& looks;
+  const PassConstants& shared;
+  std::array<int, 4> hrect;
+  float min_reach;
+  bool output_is_half;
+
+  // half_upsample.frag at (x, y) into `out` (RGBA); false where it discards (the full-size passes' pixel).
+  bool pixel(int x, int y, float* out) const {
+    const InputTexel& t = full.at(x, y);
+    const std::array<float, 4> centre = {t.colour[0], t.colour[1], t.colour[2], t.strength};
+    if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) return false;
+    const float d = full.distance(t.word);
+    const float w = clip_w(shared, d);
+    if (std::isnan(w) || !(w > 0.0f) || std::isinf(w)) return false;
+    const int p = profile_of(full, t.word, kernels.size());
+    if (p < 0) return false;
+    const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
+    const PassTerm& term = kernel.terms.front();
+    const Look& look = looks[static_cast<std::size_t>(p)];
+    const float a = std::min(centre[3], 1.0f);
+    const float step_x = look.x * a / w, step_y = look.y * a / w;
+    const float reach_x = std::min(term.horizontal.footprint.reach_mm * step_x, 1.0e6f);
+    const float reach_y = std::min(term.vertical.footprint.reach_mm * step_y, 1.0e6f);
+    if (!(std::min(reach_x, reach_y) >= min_reach)) return false;
+    float weight = 0.0f;
+    std::array<float, 3> blurred{}, reduced{};
+    neighbours(x, y, t.word, d, look.depth_factor / a, &weight, &blurred, &reduced);
+    if (!(weight >= kHalfResolutionMinWeight)) return false;
+    const std::array<float, 3> ch = footprint_centre_weight(term.horizontal.footprint, kernel.spacing, step_x);
+    const std::array<float, 3> cv = footprint_centre_weight(term.vertical.footprint, kernel.spacing, step_y);
+    for (std::size_t c = 0; c < 3; ++c) {
+      float v = blurred[c] / weight + ch[c] * cv[c] * (centre[c] - reduced[c] / weight);
+      v = std::max(v, std::min(centre[c], 0.0f));  // no negative light from positive light
+      out[c] = output_is_half ? round_to_half(v) : v;
+    }
+    return true;
+  }
+
+  // The four nearest half-size texels: bilinear weight times the depth weight, on the pixel's index.
+  void neighbours(int x, int y, std::uint32_t word, float d, float factor, float* weight,
+                  std::array<float, 3>* blurred, std::array<float, 3>* reduced) const {
+    const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
+    const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
+    for (int dy = 0; dy < 2; ++dy) {
+      for (int dx = 0; dx < 2; ++dx) {
+        const int qi = std::clamp(i0 + dx, hrect[0], hrect[0] + hrect[2] - 1);
+        const int qj = std::clamp(j0 + dy, hrect[1], hrect[1] + hrect[3] - 1);
+        const std::size_t qk = static_cast<std::size_t>(qj) * half.width + qi;
+        if (result.blurred[qk] == 0) continue;
+        const InputTexel& q = half.texels[qk];
+        if (full.ids && (q.word & 0xFFu) != (word & 0xFFu)) continue;
+        float s = factor * std::fabs(d - half.distance(q.word));
+        if (!(s < 1.0f)) s = 1.0f;
+        const float wq = (dx == 0 ? 1.0f - fx : fx) * (dy == 0 ? 1.0f - fy : fy) * (1.0f - s);
+        *weight += wq;
+        for (std::size_t c = 0; c < 3; ++c) {
+          (*blurred)[c] += wq * result.rgba[qk * 4 + c];
+          (*reduced)[c] += wq * q.colour[c];
+        }
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
+                                const std::vector<PassConstants>& constants, const std::uint16_t* ids,
+                                const CpuFilterImage& image, float min_reach_pixels, float* out,
+                                CpuHalfResolutionStats* stats) {
+  const PassConstants& shared = constants.front();
+  const std::array<int, 4> rect = drawn_rect(shared);
+  const Frame full = full_inputs(image, shared, ids);
+  std::vector<Look> looks;
+  for (const PassConstants& k : constants) looks.push_back({k.pixels_per_mm[0], k.pixels_per_mm[1], k.follow_surface_factor});
+  const std::array<int, 4> hrect = half_rect(rect);
   std::vector<PassConstants> half_constants;
   for (const PassConstants& k : constants) half_constants.push_back(half_pass_constants(k, hrect));
-  if (ids != nullptr) {
-    cpu_profile_filter(kernels, half_constants, half_ids.data(), half_image, half_result.data(), true);
-  } else {
-    cpu_pass_kernel_filter(*kernels.front(), half_constants.front(), half_image, half_result.data());
-  }
+  const Frame half = reduce(full, looks, rect, hrect);
+  const HalfResult result = half_passes(half, kernels, half_constants, image.intermediate_is_half);
 
-  // The half-size texels the passes blurred: the GL's half-size result has alpha above 0 there (the
-  // strength, rounded as the target stores it) and 0 where the pass left the texel alone.
-  std::vector<std::uint8_t> blurred_at_half(half_count, 0);
-  for (std::size_t i = 0; i < half_count; ++i) {
-    const InputTexel& t = half.texels[i];
-    const std::array<float, 4> c = {t.colour[0], t.colour[1], t.colour[2], t.strength};
-    const float w = clip_w(half_constants.front(), half.distance(t.word));
-    const float stored = image.intermediate_is_half ? round_to_half(t.strength) : t.strength;
-    blurred_at_half[i] = t.strength > 0.0f && in_colour_range(c.data(), 4) && !std::isnan(w) && w > 0.0f &&
-                         !std::isinf(w) && profile_of(half, t.word, kernels.size()) >= 0 && stored > 0.0f;
-  }
-
-  // The upsample, where it serves the pixel; the rest go to the full-size passes.
+  // The upsample where it serves the pixel; the full-size passes on the rest (the others hold
+  // their input in the intermediate, as the GL's culling leaves them).
+  const Upsample upsample{full, half, result, kernels, looks, shared, hrect, min_reach_pixels, image.output_is_half};
   const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
   std::vector<std::uint8_t> full_size(count, 1);
+  if (image.mask != nullptr) std::copy(image.mask, image.mask + count, full_size.begin());
   std::copy(image.color, image.color + count * 4, out);
   CpuHalfResolutionStats counted;
   for (int y = rect[1]; y < rect[1] + rect[3]; ++y) {
     for (int x = rect[0]; x < rect[0] + rect[2]; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
-      const InputTexel& t = full.at(x, y);
-      const std::array<float, 4> centre = {t.colour[0], t.colour[1], t.colour[2], t.strength};
-      if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) continue;
-      const float d = full.distance(t.word);
-      const float w = clip_w(shared, d);
-      if (std::isnan(w) || !(w > 0.0f) || std::isinf(w)) continue;
-      const int p = profile_of(full, t.word, kernels.size());
-      if (p < 0) continue;
-      const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
-      const PassTerm& term = kernel.terms.front();
-      const Look& look = looks[static_cast<std::size_t>(p)];
-      const float a = std::min(centre[3], 1.0f);
-      const float step_x = look.x * a / w, step_y = look.y * a / w;
-      const float reach_x = std::min(term.horizontal.footprint.reach_mm * step_x, 1.0e6f);
-      const float reach_y = std::min(term.vertical.footprint.reach_mm * step_y, 1.0e6f);
-      ++counted.full_size;
-      if (!(std::min(reach_x, reach_y) >= min_reach_pixels)) continue;
-      const float factor = look.depth_factor / a;
-      const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
-      const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
-      float weight = 0.0f;
-      std::array<float, 3> blurred{}, reduced{};
-      for (int dy = 0; dy < 2; ++dy) {
-        for (int dx = 0; dx < 2; ++dx) {
-          const int qi = std::clamp(i0 + dx, hrect[0], hrect[0] + hrect[2] - 1);
-          const int qj = std::clamp(j0 + dy, hrect[1], hrect[1] + hrect[3] - 1);
-          const InputTexel& q = half.at(qi, qj);
-          if (!blurred_at_half[static_cast<std::size_t>(qj) * half.width + qi]) continue;
-          if (full.ids && (q.word & 0xFFu) != (t.word & 0xFFu)) continue;
-          float s = factor * std::fabs(d - half.distance(q.word));
-          if (!(s < 1.0f)) s = 1.0f;
-          const float wq = (dx == 0 ? 1.0f - fx : fx) * (dy == 0 ? 1.0f - fy : fy) * (1.0f - s);
-          const std::size_t qk = static_cast<std::size_t>(qj) * half.width + qi;
-          weight += wq;
-          for (std::size_t c = 0; c < 3; ++c) {
-            blurred[c] += wq * half_result[qk * 4 + c];
-            reduced[c] += wq * q.colour[c];
-          }
-        }
+      if (full_size[i] == 0) continue;  // outside the host's stencil: neither draw writes it
+      if (upsample.pixel(x, y, out + i * 4)) {
+        full_size[i] = 0;
+        ++counted.upsampled;
+      } else if (full.texels[i].strength > 0.0f) {
+        ++counted.full_size;
       }
-      if (!(weight >= kHalfResolutionMinWeight)) continue;
-      const std::array<float, 3> ch = footprint_centre_weight(term.horizontal.footprint, kernel.spacing, step_x);
-      const std::array<float, 3> cv = footprint_centre_weight(term.vertical.footprint, kernel.spacing, step_y);
-      for (std::size_t c = 0; c < 3; ++c) {
-        float v = blurred[c] / weight + ch[c] * cv[c] * (centre[c] - reduced[c] / weight);
-        v = std::max(v, std::min(centre[c], 0.0f));  // no negative light from positive light
-        out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
-      }
-      full_size[i] = 0;
-      --counted.full_size;
-      ++counted.upsampled;
     }
   }
-
-  // The full-size passes on the pixels the upsample left (the others hold their input in the
-  // intermediate, as the GL's culling leaves them).
   CpuFilterImage rest = image;
   rest.mask = full_size.data();
   std::vector<float> passes(count * 4);
@@ -258,8 +301,10 @@ void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
     cpu_pass_kernel_filter(*kernels.front(), constants.front(), rest, passes.data());
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (full_size[i] != 0) std::copy(passes.begin() + static_cast<std::ptrdiff_t>(i * 4),
-                                      passes.begin() + static_cast<std::ptrdiff_t>(i * 4 + 4), out + i * 4);
+    if (full_size[i] != 0) {
+      std::copy(passes.begin() + static_cast<std::ptrdiff_t>(i * 4), passes.begin() + static_cast<std::ptrdiff_t>(i * 4 + 4),
+                out + i * 4);
+    }
   }
   if (stats != nullptr) *stats = counted;
 }

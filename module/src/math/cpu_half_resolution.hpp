@@ -21,7 +21,8 @@ struct CpuHalfResolutionStats {
 // cpu_profile_filter; `ids` nullptr (one profile: kernels[0]) or R8UI indices (carried in the
 // distances' low byte, as the GL does). `min_reach_pixels`: kHalfResolutionMinReachPixels, or another
 // value for the benchmark's study. `result_is_half`: the half-size result target is RGBA16F (the
-// intermediate's format: image.intermediate_is_half). Writes every pixel of `out` (RGBA).
+// intermediate's format: image.intermediate_is_half). image.mask (a host stencil) limits the pixels
+// either step writes; the reduction reads alpha alone, as the GL's does. Writes every pixel of `out`.
 void cpu_half_resolution_filter(const std::vector<const PassKernel*>& kernels,
                                 const std::vector<PassConstants>& constants, const std::uint16_t* ids,
                                 const CpuFilterImage& image, float min_reach_pixels, float* out,
