@@ -263,6 +263,10 @@ void write_report(const Fit& fit, const std::string& path) {
   for (std::size_t k = 0; k < fit.candidates.size(); ++k) md << (k == 0 ? "" : ", ") << fixed(fit.candidates[k], 0);
   md << " pixels (0: every translucent pixel with a half-size neighbour on its surface is upsampled).\n\n";
   write_result(fit, md);
+  md << "What it costs: instructions per frame on llvmpipe against the masked passes in "
+        "[half-resolution-cost.md](half-resolution-cost.md) (scripts/half-cost.sh); time against a two-pass copy, "
+        "the `separable-half` rows of [benchmarks-passes.md](../benchmarks-passes.md) "
+        "(scripts/update-pass-benchmark.sh).\n\n";
   md << "## Per footprint\n\nMedians over the " << fit.scores.size() / rows.size() << " scenes; the largest difference "
      << "names its scene; the upsampled share is the mean share of translucent pixels the upsample wrote (the work moved "
      << "to half size).\n\n"

@@ -27,6 +27,7 @@ std::string LibraryFrameMethod::path_ran() const {
   if (sss_get_stats(ctx_, &st) != SSS_OK) return "";
   return st.last_frame_path == SSS_PATH_COMPUTE           ? "compute"
          : st.last_frame_path == SSS_PATH_FRAGMENT_MASKED ? "masked"
+         : st.last_frame_path == SSS_PATH_HALF_RESOLUTION ? "half"
                                                           : "fragment";
 }
 
