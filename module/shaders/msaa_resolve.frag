@@ -14,6 +14,8 @@
 // host's depth already holds view distance. SSS_WRITE_BACK 1: the translucent samples' outputs too.
 // Desktop GL only: assembled after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
 
+#include "nearest_half.glsl"
+#include "colour_range.glsl"
 #include "depth.glsl"
 
 SSS_BINDING(0) uniform sampler2DMS u_color;
@@ -23,6 +25,13 @@ uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out float o_distance;
+// The fragment passes' inputs, as pass_inputs.frag writes them from a single-sample frame (its
+// comment says why this layout): the resolved colour's and distance's bits, the strength's, and the
+// horizontal pass's target filled alike. So the passes on the resolved images draw no inputs of
+// their own, and the distance is linearised once.
+layout(location = 4) out uvec4 o_taps;
+layout(location = 5) out uint o_strength;
+layout(location = 6) out uvec4 o_intermediate;
 #if SSS_WRITE_BACK
 layout(location = 2) out vec4 o_translucent;  // the translucent samples' mean colour (rgb), count (a)
 layout(location = 3) out uvec4 o_lowest;      // their smallest value per channel (float bits, rgb), mask (a)
@@ -60,8 +69,17 @@ void main() {
     farthest = max(farthest, d);
   }
   float n = float(u_samples);
-  o_color = color / n;
+  o_color = sss_nearest_half(color / n);  // what the resolved colour stores, exactly
   o_distance = u_depth_mode == 0 ? sum / n : u_depth_mode == 1 ? first : u_depth_mode == 2 ? nearest : farthest;
+  uint distance = floatBitsToUint(o_distance);
+  vec3 rgb = o_color.rgb;
+  if (!sss_in_range(rgb)) {  // as pass_inputs.frag: colour 0 at distance NaN
+    rgb = vec3(0.0);
+    distance = 0x7FC00000u;
+  }
+  o_taps = uvec4(floatBitsToUint(rgb), distance);
+  o_strength = floatBitsToUint(o_color.a);
+  o_intermediate = o_taps;
 #if SSS_WRITE_BACK
   o_translucent = vec4(count > 0.0 ? translucent_sum / count : vec3(0.0), count);
   o_lowest = uvec4(floatBitsToUint(lowest), mask);

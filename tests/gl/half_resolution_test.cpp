@@ -187,17 +187,7 @@ TEST_F(HalfResolution, PerPixelProfilesMatchTheCpuModel) {
   EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
   const std::vector<float> gpu = read_rgba(color, kW, kH);
 
-  std::vector<sss::math::PassKernel> kernels;
-  std::vector<sss::math::PassConstants> constants;
-  sss::math::FrameGeometry g;
-  g.texture_width = kW;
-  g.texture_height = kH;
-  g.viewport = {0, 0, kW, kH};
-  for (const sss_settings& s : profiles) {
-    const sss::math::FilterSettings fs = sss::api::to_filter_settings(s);
-    kernels.push_back(sss::math::build_pass_kernel(fs));
-    constants.push_back(sss::math::compute_pass_constants(fs, scene.projection, g, kernels.back().reach_mm));
-  }
+  const ProfileModels models = profile_models(profiles, 2, scene.projection, kW, kH);
   sss::math::CpuFilterImage image;
   image.width = kW;
   image.height = kH;
@@ -206,7 +196,7 @@ TEST_F(HalfResolution, PerPixelProfilesMatchTheCpuModel) {
   image.output_is_half = true;
   std::vector<float> cpu(input.size());
   sss::math::CpuHalfResolutionStats stats;
-  sss::math::cpu_half_resolution_filter({&kernels[0], &kernels[1]}, constants, ids.data(), image,
+  sss::math::cpu_half_resolution_filter(models.kernel_pointers(), models.constants, ids.data(), image,
                                         sss::math::kHalfResolutionMinReachPixels, cpu.data(), &stats);
   const float difference = largest_relative_difference(gpu, cpu);
   std::printf("per-pixel profiles: largest relative difference %.3g; %lld upsampled, %lld at full size\n",

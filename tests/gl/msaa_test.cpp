@@ -408,9 +408,10 @@ TEST_F(Msaa, WriteBackIsTheSameForAHostThatDisabledMultisampling) {
   for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(after[1][s], after[0][s]) << "sample " << s;
 }
 
-// sss_get_stats counts every full-screen draw of the MSAA path: the resolve, the stencil mark from
-// alpha, then the single-sample passes on the resolved images (their inputs, which also fill the
-// stencil-rejected pixels of the horizontal pass's target, horizontal blur, vertical blur + copy
+// sss_get_stats counts every full-screen draw of the MSAA path: the resolve (which also writes the
+// passes' inputs and fills the stencil-rejected pixels of the horizontal pass's target: no inputs
+// draw of their own since issue 24), the stencil mark from alpha, then the single-sample passes on
+// the resolved images (horizontal blur, vertical blur + copy
 // into a separate output; written back, the vertical pass copies nothing: the write-back reads only
 // the pixels the mask let through), and written back in one draw (GLSL 4.20: gl_SampleMask picks
 // each pixel's translucent samples) or, on a GL 3.3 context, one draw per sample (4 here).
@@ -429,7 +430,7 @@ TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
       ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
     }
     const uint32_t write_back = gl33 ? 4 : 1;
-    const uint32_t expected[2] = {1 + 1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + 1 + write_back};  // into output, written back
+    const uint32_t expected[2] = {1 + 1 + 1 + 2, 1 + 1 + 1 + 1 + write_back};  // into output, written back
     const GLuint outputs[2] = {output, 0u};
     for (int i = 0; i < 2; ++i) {
       const sss_frame f = frame(color, depth, outputs[i]);

@@ -215,17 +215,7 @@ TEST_F(ProfileIds, MatchesTheCpuModel) {
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) ids[static_cast<std::size_t>(y) * kW + x] = static_cast<uint16_t>(id(x, y));
   }
-  std::vector<sss::math::PassKernel> kernels;
-  std::vector<sss::math::PassConstants> constants;
-  sss::math::FrameGeometry g;
-  g.texture_width = kW;
-  g.texture_height = kH;
-  g.viewport = {0, 0, kW, kH};
-  for (const sss_settings& s : profiles) {
-    const sss::math::FilterSettings fs = sss::api::to_filter_settings(s);
-    kernels.push_back(sss::math::build_pass_kernel(fs));
-    constants.push_back(sss::math::compute_pass_constants(fs, scene_.projection, g, kernels.back().reach_mm));
-  }
+  const ProfileModels models = profile_models(profiles, 2, scene_.projection, kW, kH);
   const std::vector<float> input = read_rgba(make_rgba16f(kW, kH, scene_.color), kW, kH);
   sss::math::CpuFilterImage image;
   image.width = kW;
@@ -235,7 +225,7 @@ TEST_F(ProfileIds, MatchesTheCpuModel) {
   image.output_is_half = true;  // written back into the RGBA16F colour
   std::vector<float> cpu(input.size());
   // R8UI indices: the model drops the distances' low byte as the passes' inputs do.
-  sss::math::cpu_profile_filter({&kernels[0], &kernels[1]}, constants, ids.data(), image, cpu.data(), true);
+  sss::math::cpu_profile_filter(models.kernel_pointers(), models.constants, ids.data(), image, cpu.data(), true);
   const float difference = largest_relative_difference(gpu, cpu);
   std::printf("GPU vs CPU model: largest relative difference %.3g\n", difference);
   EXPECT_LE(difference, 3e-3f);

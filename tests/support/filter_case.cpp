@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "api/profiles.hpp"
 #include "api/validation.hpp"
 #include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
@@ -292,6 +293,28 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     }
   }
   return outcome;
+}
+
+std::vector<const sss::math::PassKernel*> ProfileModels::kernel_pointers() const {
+  std::vector<const sss::math::PassKernel*> out;
+  for (const sss::math::PassKernel& k : kernels) out.push_back(&k);
+  return out;
+}
+
+ProfileModels profile_models(const sss_settings* profiles, std::size_t count, const sss::math::Matrix4& projection,
+                             int width, int height) {
+  ProfileModels m;
+  sss::math::FrameGeometry g;
+  g.texture_width = width;
+  g.texture_height = height;
+  g.viewport = {0, 0, width, height};
+  m.kernels.reserve(count);  // kernel_pointers() points into it
+  for (std::size_t i = 0; i < count; ++i) {
+    const sss::math::FilterSettings fs = sss::api::to_filter_settings(profiles[i]);
+    m.kernels.push_back(sss::math::build_pass_kernel(fs));
+    m.constants.push_back(sss::math::compute_pass_constants(fs, projection, g, m.kernels.back().reach_mm));
+  }
+  return m;
 }
 
 }  // namespace sss_test

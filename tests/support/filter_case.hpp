@@ -8,6 +8,7 @@
 #include "gl_fixture.hpp"
 #include "math/filter_constants.hpp"
 #include "math/kernel_plan.hpp"
+#include "math/pass_kernel.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sss_test {
@@ -88,6 +89,17 @@ sss::math::KernelPlan plan_for(const sss_settings& settings);
 // Fills the frame's texture description (formats and size) for the textures run_case makes; run_case
 // does it on OpenGL ES, which cannot be asked.
 void describe_frame(const FilterCase& c, int width, int height, sss_frame* frame);
+
+// Per-pixel profiles' CPU models: each profile's kernel and per-frame constants as sss_set_profiles
+// and sss_apply_frame build them, for a width x height frame (viewport: all of it) seen through
+// `projection`.
+struct ProfileModels {
+  std::vector<sss::math::PassKernel> kernels;
+  std::vector<sss::math::PassConstants> constants;
+  std::vector<const sss::math::PassKernel*> kernel_pointers() const;
+};
+ProfileModels profile_models(const sss_settings* profiles, std::size_t count, const sss::math::Matrix4& projection,
+                             int width, int height);
 
 class FilterCaseTest : public GlTest {
  protected:

@@ -101,7 +101,7 @@ typedef enum sss_path {
   SSS_PATH_FRAGMENT = 0, SSS_PATH_COMPUTE = 1, /**< two full-screen fragment passes; compute (GL 4.3+) else fragment */
   SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy); default */
   SSS_PATH_FRAGMENT_MASKED = 3, /**< since 0.4: the same as SSS_PATH_FRAGMENT (both cull by alpha) */
-  SSS_PATH_HALF_RESOLUTION = 4 /**< 0.5: half size where kernels are wide; not the same image (guide §18) */
+  SSS_PATH_HALF_RESOLUTION = 4 /**< 0.4: half size where kernels are wide; not the same image (guide §18) */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */
 #define SSS_AUTO_HALF_RESOLUTION 0x4u /**< flags: SSS_PATH_AUTO may pick SSS_PATH_HALF_RESOLUTION (timed). Off */

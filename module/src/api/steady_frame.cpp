@@ -86,12 +86,12 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   scope.image_unit = path == SSS_PATH_COMPUTE || path == SSS_PATH_AUTO;
   scope.multisample = msaa;
   scope.stencil = frame.stencil != nullptr || msaa;
+  // The half-resolution path: the culling depth (with a host stencil too) and units 3 and 4.
+  const bool half = path == SSS_PATH_HALF_RESOLUTION || (path == SSS_PATH_AUTO && ctx.settings.auto_half_resolution);
   // The fragment passes without a stencil cull by the module's depth (any separable frame may run
   // them: the compute path falls back to them).
-  scope.depth = !ctx.settings.cross_bilateral && frame.stencil == nullptr;
+  scope.depth = !ctx.settings.cross_bilateral && (frame.stencil == nullptr || half);
   // Unit 3: also the MSAA write-back's fourth input (a multisampled colour written back).
-  // The half-resolution path's upsample reads units 3 and 4 too.
-  const bool half = path == SSS_PATH_HALF_RESOLUTION || (path == SSS_PATH_AUTO && ctx.settings.auto_half_resolution);
   scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0) ||
                 half;
   scope.profiles = frame.profile_texture != 0 || half;

@@ -69,6 +69,9 @@ struct FilterRun {
   math::PassConstants resolve_constants;
   DepthResolve depth_resolve = DepthResolve::average;
   bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
+  // Internal (the MSAA path): its resolve wrote the fragment passes' inputs (pass_inputs.frag's
+  // layout) along with the resolved images, so the passes skip their inputs draw.
+  bool inputs_ready = false;
   // Internal (the MSAA write-back behind its own mask): the output's pixels outside the stencil are
   // never read, so the last pass leaves them as they are instead of copying the colour there.
   bool output_outside_stencil_unread = false;

@@ -216,7 +216,7 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
   sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  r = draw_pass_inputs(ctx, run, pass_inputs_variant(run), message);
+  if (!run.inputs_ready) r = draw_pass_inputs(ctx, run, pass_inputs_variant(run), message);
   if (r == SSS_OK) r = attach_targets(ctx, run, terms, message);
   if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
   detach_output(ctx);

@@ -14,6 +14,7 @@
 //      that GL_GREATER lets through exactly the translucent pixels step 4 discarded.
 // The host's colour is written by steps 3-5 only, after step 1's inputs draw has read it.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../math/half_resolution.hpp"
@@ -110,12 +111,26 @@ FilterRun half_size_run(const FilterRun& run, const std::array<int, 4>& half) {
 
 void set_viewport(const Functions& f, const std::array<int, 4>& rect) { f.Viewport(rect[0], rect[1], rect[2], rect[3]); }
 
-sss_result draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p, std::string* message) {
+// The three half-size framebuffers, checked before the first draw (the draws do not check).
+sss_result check_half_size_framebuffers(PassContext& ctx, std::string* message) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
+  const std::array<std::pair<GLuint, const char*>, 3> framebuffers = {
+      {{t.half_inputs_framebuffer, "half-size inputs"},
+       {t.half_intermediate_framebuffer, "half-size horizontal pass"},
+       {t.half_result_framebuffer, "half-size vertical pass"}}};
+  for (const auto& [framebuffer, which] : framebuffers) {
+    f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer);
+    const sss_result r = check_framebuffer(ctx, which, message);
+    if (r != SSS_OK) return r;
+  }
+  return SSS_OK;
+}
+
+void draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.half_inputs_framebuffer);
-  const sss_result r = check_framebuffer(ctx, "half-size inputs", message);
-  if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss half-size inputs");
   f.UseProgram(p.program);
   const std::array<int, 4>& d = run.draw_rect;
@@ -129,17 +144,13 @@ sss_result draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProg
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
-  return SSS_OK;
 }
 
 // One pass at half size: `source` and the half-size strength.
-sss_result draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int axis, std::string* message) {
+void draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int axis) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   f.BindFramebuffer(DRAW_FRAMEBUFFER, axis == 0 ? t.half_intermediate_framebuffer : t.half_result_framebuffer);
-  const sss_result r = check_framebuffer(ctx, axis == 0 ? "half-size horizontal pass" : "half-size vertical pass",
-                                         message);
-  if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, axis == 0 ? "sss half-size horizontal pass" : "sss half-size vertical pass");
   // The culled texels of the result are read by the upsample as "not translucent": alpha 0, cleared
   // each frame (what the culling skips would hold an older frame's values).
@@ -155,7 +166,6 @@ sss_result draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& 
   if (half.has_profiles()) bind_profile_inputs(ctx, half, axis);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
-  return SSS_OK;
 }
 
 void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& p, const std::array<int, 4>& half) {
@@ -207,54 +217,45 @@ void copy_untouched(PassContext& ctx, const FilterRun& run) {
   draw_copy(ctx, run.color.name);
 }
 
-}  // namespace
-
-const char* half_resolution_unavailable(const FilterRun& run) {
-  if (run.identity) return "nothing to blur";
-  if (run.color.multisampled()) return "a multisampled colour";
-  if (run.cross_bilateral) return "the cross-bilateral mode";
-  if (run.kernel->terms.size() > 1) return "a kernel of several terms";
-  if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
-  return "";
-}
-
-sss_result prepare_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
-  HalfPrograms programs;
-  return prepare(ctx, run, &programs, message);
-}
-
-sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
-  HalfPrograms p;
-  sss_result r = prepare(ctx, run, &p, message);
-  if (r != SSS_OK) return r;
-  const Functions& f = ctx.gl;
+// Every check, and the draws that write only the module's targets: the host stencil's copy, the
+// inputs (marking the culling depth), the framebuffers; the output attached (with a region into a
+// separate output, the viewport's colour copied there first). Nothing is measured yet.
+sss_result begin_frame(PassContext& ctx, const FilterRun& run, std::string* message) {
   const Targets& t = ctx.targets.names();
-  const std::array<int, 4> half = math::half_rect(run.draw_rect);
-  const FilterRun half_run = half_size_run(run, half);
-  FrameMeasurement measure(ctx.queries, run.frame);
-  measure.begin(PassQueries::horizontal);
   begin_passes(ctx, run.draw_rect);
+  sss_result r = SSS_OK;
   if (run.stencil != nullptr) r = copy_stencil(ctx, run, *run.stencil, message, t.pass_inputs_framebuffer);
   PassInputsVariant inputs = pass_inputs_variant(run);
   inputs.mark_depth = true;  // with a host stencil too: the half-size passes need alpha's mark
   if (r == SSS_OK) r = draw_pass_inputs(ctx, run, inputs, message);
-  if (r != SSS_OK) return r;
+  if (r == SSS_OK) r = check_half_size_framebuffers(ctx, message);
+  if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
+  if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);
+  return r;
+}
+
+// Steps 1 and 2 of the file's comment: the reduction and the passes at half size.
+void draw_half_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& p, const std::array<int, 4>& half) {
+  const Functions& f = ctx.gl;
   set_viewport(f, half);
+  f.Enable(DEPTH_TEST);
   f.DepthFunc(ALWAYS);  // the reduction marks every texel of the half-size rectangle
   f.DepthMask(1);
-  r = draw_reduction(ctx, run, *p.inputs, message);
+  draw_reduction(ctx, run, *p.inputs);
   f.DepthMask(0);
   f.DepthFunc(GREATER);  // the half-size passes: translucent texels only
-  if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.horizontal, 0, message);
-  if (r == SSS_OK) r = draw_half_pass(ctx, half_run, *p.half_vertical, 1, message);
-  f.Disable(DEPTH_TEST);
-  if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
-  if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);  // leaves it bound
-  if (r != SSS_OK) {
-    detach_output(ctx);
-    return r;
-  }
+  const FilterRun half_run = half_size_run(run, half);
+  draw_half_pass(ctx, half_run, *p.horizontal, 0);
+  draw_half_pass(ctx, half_run, *p.half_vertical, 1);
+}
+
+// Steps 3 to 5: full size, into the host's colour or output.
+void draw_full_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& p, const std::array<int, 4>& half,
+                    FrameMeasurement& measure) {
+  const Functions& f = ctx.gl;
+  const Targets& t = ctx.targets.names();
   set_viewport(f, run.draw_rect);
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
   if (run.writes_back()) {
     f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value
   } else {
@@ -284,8 +285,41 @@ sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::stri
     measure.end_pixels();
     measure.end(PassQueries::vertical);
   }
-  measure.end_frame();
   f.set_depth_range(0.0f, 1.0f);
+}
+
+}  // namespace
+
+const char* half_resolution_unavailable(const FilterRun& run) {
+  if (run.identity) return "nothing to blur";
+  if (run.color.multisampled()) return "a multisampled colour";
+  if (run.cross_bilateral) return "the cross-bilateral mode";
+  if (run.kernel->terms.size() > 1) return "a kernel of several terms";
+  if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
+  return "";
+}
+
+sss_result prepare_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
+  HalfPrograms programs;
+  return prepare(ctx, run, &programs, message);
+}
+
+// gpu_time_ms[0] spans the half-size draws, the upsample and the full-size horizontal pass; [1]
+// the full-size vertical pass (as on the fragment path, the inputs draw is not measured).
+sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
+  HalfPrograms p;
+  sss_result r = prepare(ctx, run, &p, message);
+  if (r == SSS_OK) r = begin_frame(ctx, run, message);
+  if (r != SSS_OK) {
+    detach_output(ctx);
+    return r;
+  }
+  const std::array<int, 4> half = math::half_rect(run.draw_rect);
+  FrameMeasurement measure(ctx.queries, run.frame);
+  measure.begin(PassQueries::horizontal);
+  draw_half_size(ctx, run, p, half);
+  draw_full_size(ctx, run, p, half, measure);
+  measure.end_frame();
   detach_output(ctx);
   return SSS_OK;
 }

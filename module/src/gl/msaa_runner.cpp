@@ -40,11 +40,21 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** reso
 sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram& p, std::string* message) {
   const Functions& f = ctx.gl;
   begin_passes(ctx, run.viewport);
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().resolve_framebuffer);
-  // Writing back, the translucent samples' mean and lowest values too (attachments 2 and 3).
+  const Targets& t = ctx.targets.names();
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.resolve_framebuffer);
+  // Writing back, the translucent samples' mean and lowest values too (attachments 2 and 3); unless
+  // nothing is blurred, the fragment passes' inputs (attachments 4-6: pass_inputs.frag's targets,
+  // so that the passes need no inputs draw of their own: the linear depth computed once).
   const bool write_back = run.writes_back() && !run.identity;
-  const GLenum buffers[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2, COLOR_ATTACHMENT3};
-  f.DrawBuffers(write_back ? 4 : 2, buffers);
+  const GLenum buffers[7] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, write_back ? COLOR_ATTACHMENT2 : NONE,
+                             write_back ? COLOR_ATTACHMENT3 : NONE, COLOR_ATTACHMENT4, COLOR_ATTACHMENT5,
+                             COLOR_ATTACHMENT6};
+  const GLuint inputs[3] = {t.pass_taps, t.pass_strength, t.pass_intermediate};
+  for (int i = 0; i < 3; ++i) {
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, static_cast<GLenum>(COLOR_ATTACHMENT4 + i), TEXTURE_2D,
+                           run.identity ? 0 : inputs[i], 0);
+  }
+  f.DrawBuffers(run.identity ? (write_back ? 4 : 2) : 7, buffers);
   const sss_result r = check_framebuffer(ctx, "MSAA resolve", message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss msaa resolve");
@@ -54,6 +64,9 @@ sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram&
   f.Uniform1i(p.depth_mode, static_cast<GLint>(run.depth_resolve));
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  // The resolved colour rounded to nearest where it is RGBA16F, so that it and the inputs' copy of
+  // it hold the same value whatever the driver's conversion does.
+  f.Uniform1i(p.round_to_half, run.color.internal_format == static_cast<GLint>(RGBA16F) ? 1 : 0);
   f.ActiveTexture(TEXTURE0 + unit::msaa_color);
   f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.color.name);
   f.ActiveTexture(TEXTURE0 + unit::msaa_depth);
@@ -88,6 +101,7 @@ FilterRun passes_run(const FilterRun& run, const Targets& t, const StencilInput*
   FilterRun inner = resolved_run(run, t);
   if (!run.identity && run.stencil == nullptr) inner.stencil = own;
   inner.stencil_ready = true;
+  inner.inputs_ready = !run.identity;  // the resolve wrote them (resolve())
   // Behind its own mask the write-back reads the blurred image only where the mask let the passes
   // draw (msaa_write.frag applies the mask's test to the resolved colour), so the rest needs no copy.
   // Behind the host's stencil it reads pixels outside it too: there the copy makes the change 0.

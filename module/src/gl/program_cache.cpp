@@ -241,6 +241,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, Resolv
   const Functions& f = *gl_;
   p.samples = f.GetUniformLocation(p.program, "u_samples");
   p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
+  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);

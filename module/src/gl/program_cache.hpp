@@ -60,7 +60,7 @@ struct StrengthProgram {
 
 struct ResolveProgram {
   GLuint program = 0;
-  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1;
+  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1, round_to_half = -1;
 };
 
 struct PassInputsProgram {

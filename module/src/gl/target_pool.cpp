@@ -268,32 +268,45 @@ sss_result TargetPool::ensure_strength_source(GLint format, int width, int heigh
   return SSS_OK;
 }
 
+sss_result TargetPool::allocate_inputs(const PackedInputs& inputs, int width, int height, const char* size,
+                                       std::string* message) {
+  const std::string prefix = size;
+  sss_result r = allocate_target(inputs.taps, RGBA32UI, UNSIGNED_INT, width, height,
+                                 (prefix + "RGBA32UI pass input (colour and view distance)").c_str(), message,
+                                 RGBA_INTEGER);
+  if (r == SSS_OK) {
+    r = allocate_target(inputs.strength, R32UI, UNSIGNED_INT, width, height, (prefix + "R32UI strength").c_str(),
+                        message, RED_INTEGER);
+  }
+  if (r == SSS_OK) {
+    r = allocate_target(inputs.intermediate, RGBA32UI, UNSIGNED_INT, width, height,
+                        (prefix + "RGBA32UI intermediate (horizontal pass result and view distance)").c_str(),
+                        message, RGBA_INTEGER);
+  }
+  return r;
+}
+
+void TargetPool::attach_inputs(GLuint framebuffer, const PackedInputs& inputs) {
+  const Functions& f = *gl_;
+  const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
+  attach_colour(framebuffer, *inputs.taps);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, *inputs.strength, 0);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, *inputs.intermediate, 0);
+  f.DrawBuffers(3, buffers);
+}
+
 sss_result TargetPool::ensure_pass_targets(int width, int height, std::string* message) {
   if (t_.pass_intermediate_framebuffer != 0 && pass_width_ == width && pass_height_ == height) return SSS_OK;
   pass_width_ = pass_height_ = 0;
-  sss_result r = allocate_target(&t_.pass_taps, RGBA32UI, UNSIGNED_INT, width, height,
-                                 "RGBA32UI pass input (colour and view distance)", message, RGBA_INTEGER);
-  if (r == SSS_OK) {
-    r = allocate_target(&t_.pass_strength, R32UI, UNSIGNED_INT, width, height, "R32UI strength", message,
-                        RED_INTEGER);
-  }
-  if (r == SSS_OK) {
-    r = allocate_target(&t_.pass_intermediate, RGBA32UI, UNSIGNED_INT, width, height,
-                        "RGBA32UI intermediate (horizontal pass result and view distance)", message,
-                        RGBA_INTEGER);
-  }
+  const PackedInputs inputs{&t_.pass_taps, &t_.pass_strength, &t_.pass_intermediate};
+  const sss_result r = allocate_inputs(inputs, width, height, "", message);
   if (r != SSS_OK) return r;
   pass_width_ = width;
   pass_height_ = height;
   // The framebuffers once the targets exist: a failed allocation leaves no new object behind.
   ensure_framebuffer(&t_.pass_inputs_framebuffer, "sss pass inputs target");
   ensure_framebuffer(&t_.pass_intermediate_framebuffer, "sss horizontal pass target (packed)");
-  const Functions& f = *gl_;
-  const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
-  attach_colour(t_.pass_inputs_framebuffer, t_.pass_taps);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.pass_strength, 0);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.pass_intermediate, 0);
-  f.DrawBuffers(3, buffers);
+  attach_inputs(t_.pass_inputs_framebuffer, inputs);
   attach_colour(t_.pass_intermediate_framebuffer, t_.pass_intermediate);
   return SSS_OK;
 }
@@ -305,16 +318,8 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
   }
   half_width_ = half_height_ = 0;
   const bool single = result_format == static_cast<GLint>(RGBA32F);
-  sss_result r = allocate_target(&t_.half_taps, RGBA32UI, UNSIGNED_INT, w, h,
-                                 "half-size RGBA32UI pass input (colour and view distance)", message, RGBA_INTEGER);
-  if (r == SSS_OK) {
-    r = allocate_target(&t_.half_strength, R32UI, UNSIGNED_INT, w, h, "half-size R32UI strength", message,
-                        RED_INTEGER);
-  }
-  if (r == SSS_OK) {
-    r = allocate_target(&t_.half_intermediate, RGBA32UI, UNSIGNED_INT, w, h, "half-size RGBA32UI intermediate",
-                        message, RGBA_INTEGER);
-  }
+  const PackedInputs inputs{&t_.half_taps, &t_.half_strength, &t_.half_intermediate};
+  sss_result r = allocate_inputs(inputs, w, h, "half-size ", message);
   if (r == SSS_OK) {
     r = allocate_target(&t_.half_result, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT, w, h,
                         single ? "half-size RGBA32F result" : "half-size RGBA16F result", message);
@@ -337,11 +342,7 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
   ensure_framebuffer(&t_.half_inputs_framebuffer, "sss half-size inputs target");
   ensure_framebuffer(&t_.half_intermediate_framebuffer, "sss half-size horizontal pass target");
   ensure_framebuffer(&t_.half_result_framebuffer, "sss half-size vertical pass target");
-  const GLenum buffers[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, COLOR_ATTACHMENT2};
-  attach_colour(t_.half_inputs_framebuffer, t_.half_taps);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.half_strength, 0);
-  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT2, TEXTURE_2D, t_.half_intermediate, 0);
-  f.DrawBuffers(3, buffers);
+  attach_inputs(t_.half_inputs_framebuffer, inputs);
   attach_colour(t_.half_intermediate_framebuffer, t_.half_intermediate);
   attach_colour(t_.half_result_framebuffer, t_.half_result);
   for (const GLuint framebuffer : {t_.half_inputs_framebuffer, t_.half_intermediate_framebuffer, t_.half_result_framebuffer}) {

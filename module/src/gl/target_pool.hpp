@@ -90,6 +90,14 @@ class TargetPool {
   void ensure_framebuffer(GLuint* framebuffer, const char* label);
   // `texture` as colour attachment 0 of `framebuffer` (left bound as the draw framebuffer).
   void attach_colour(GLuint framebuffer, GLuint texture);
+  // pass_inputs.frag's three targets (or the half-size ones): where their names live.
+  struct PackedInputs {
+    GLuint *taps, *strength, *intermediate;
+  };
+  // The three, (re)allocated at this size (`size` prefixes their labels: "" or "half-size "), and
+  // attached as colour attachments 0-2 of `framebuffer` with three draw buffers.
+  sss_result allocate_inputs(const PackedInputs& inputs, int width, int height, const char* size, std::string* message);
+  void attach_inputs(GLuint framebuffer, const PackedInputs& inputs);
   // A colour texture the module owns, (re)allocated at this size and format.
   sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
                              const char* what, std::string* message, GLenum pixel_format = RGBA);
