@@ -4,9 +4,9 @@
 //   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X
 // B and X the half-size result and input from the four nearest half-size texels (bilinear weights
 // times 1 − the follow-surface blend of their distance to the pixel's, on texels of the pixel's
-// own index only); q the pixel and its eight neighbours, x_q as the full-size passes take it, W_q
-// the product of the two full-size passes' weights at offsets 0 and ±1 (the near field at full
-// size; why: module/src/math/half_resolution.hpp).
+// own index only); q the pixel and its four neighbours along the axes, x_q as the full-size passes
+// take it, W_q the product of the two full-size passes' weights at offsets 0 and ±1 (the near
+// field at full size; why: module/src/math/half_resolution.hpp).
 // Every other pixel is discarded here, leaving the culling depth at 0, and the full-size passes
 // that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
 // This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
@@ -73,6 +73,26 @@ vec3 near_weights(int row, vec4 footprint, float step, out vec3 beside) {
   return 2.0 * below + footprint.yzw;
 }
 
+// One pixel of the near field: its colour as the full-size passes take it (blended towards the
+// centre's by the follow-surface rule; the centre's where its index differs), times `w`.
+struct NearSite {
+  ivec2 pixel;
+  uint word;      // the centre's distance word (its R8UI index in the low byte)
+  vec3 colour;
+  float distance;
+  float factor;   // the follow-surface factor at the centre's strength
+};
+void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 mass) {
+  uvec4 q = texelFetch(u_source, clamp(site.pixel + offset, u_rect.xy, u_rect.zw), 0);
+  float s = site.factor * abs(site.distance - sss_distance(q.a));
+  if (!(s < 1.0)) s = 1.0;
+#if SSS_PROFILE_IDS == 1
+  if ((q.a & 0xFFu) != (site.word & 0xFFu)) s = 1.0;
+#endif
+  near += w * (uintBitsToFloat(q.rgb) * (1.0 - s) + site.colour * s);
+  mass += w;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 texel = texelFetch(u_source, pixel, 0);
@@ -118,24 +138,20 @@ void main() {
     }
   }
   if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
-  // The near field at full size: the pixel and its eight neighbours as the passes take them.
+  // The near field at full size: the pixel and its four neighbours along the axes as the passes
+  // take them (not the diagonals: module/src/math/half_resolution.hpp).
   vec3 beside_x, beside_y;
   vec3 centre_x = near_weights(2 * profile, footprint_x, step_x, beside_x);
   vec3 centre_y = near_weights(2 * profile + 1, footprint_y, step_y, beside_y);
+  // In the CPU model's order (dy, then dx, from -1), written out: no loop for a SIMD rasteriser to
+  // run with masked lanes.
   vec3 near = vec3(0.0), mass = vec3(0.0);
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      uvec4 q = texelFetch(u_source, clamp(pixel + ivec2(dx, dy), u_rect.xy, u_rect.zw), 0);
-      float s = factor * abs(d - sss_distance(q.a));
-      if (!(s < 1.0)) s = 1.0;
-#if SSS_PROFILE_IDS == 1
-      if ((q.a & 0xFFu) != (texel.a & 0xFFu)) s = 1.0;  // another index: the centre's colour
-#endif
-      vec3 w = (dx == 0 ? centre_x : beside_x) * (dy == 0 ? centre_y : beside_y);
-      near += w * (uintBitsToFloat(q.rgb) * (1.0 - s) + centre.rgb * s);
-      mass += w;
-    }
-  }
+  NearSite site = NearSite(pixel, texel.a, centre.rgb, d, factor);
+  near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass);
+  near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass);
+  near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass);
+  near_tap(site, ivec2(1, 0), beside_x * centre_y, near, mass);
+  near_tap(site, ivec2(0, 1), centre_x * beside_y, near, mass);
   vec3 result = blurred / weight + near - mass * (reduced / weight);
   result = max(result, min(centre.rgb, vec3(0.0)));  // no negative light from positive light
   o_color = sss_nearest_half(vec4(result, centre.a));

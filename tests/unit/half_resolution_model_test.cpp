@@ -163,11 +163,12 @@ TEST(HalfResolutionModel, TheNearFieldPutsBackTheDetailTheHalfSizePassesLose) {
     plain += std::pow(0.5 - full[i], 2.0);
   }
   std::printf("checker: squared error with the near field %.4g, plain upsample %.4g\n", with_detail, plain);
-  // On a plane facing the camera the full-size passes' taps beyond the first ring see the checker
+  // On a plane facing the camera the full-size passes' taps beyond the first ones see the checker
   // nearly as the half-size ones do (its mean), so the near field accounts for most of it:
-  // measured 0.016 of the plain upsample's error. With the centre alone it was 0.13; without the
-  // term it is 1.
-  EXPECT_LT(with_detail, 0.03 * plain);
+  // measured 0.037 of the plain upsample's error (0.016 with the diagonals too, which the path
+  // leaves out for the edges' sake: half_resolution.hpp). With the centre alone it was 0.13;
+  // without the term it is 1.
+  EXPECT_LT(with_detail, 0.06 * plain);
 }
 
 }  // namespace

@@ -231,12 +231,13 @@ struct Upsample {
     return true;
   }
 
-  // The full-size passes' near field at (x, y): its 3x3 pixels as their taps take them, weighed by
-  // the product of the two passes' weights, and that weight's sum.
+  // The full-size passes' near field at (x, y): the pixel and its four neighbours along the axes as
+  // their taps take them, weighed by the product of the two passes' weights, and that weight's sum.
   void near_field(int x, int y, const InputTexel& t, float d, float factor, const NearWeights& h,
                   const NearWeights& v, std::array<float, 3>* near, std::array<float, 3>* mass) const {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
+        if (dx != 0 && dy != 0) continue;  // the diagonals: half_resolution.hpp says why not
         const int qx = std::clamp(x + dx, static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_max[0]));
         const int qy = std::clamp(y + dy, static_cast<int>(shared.clamp_min[1]), static_cast<int>(shared.clamp_max[1]));
         const InputTexel& q = full.at(qx, qy);

@@ -9,14 +9,16 @@
 // where B and X are the half-size result and input at the pixel, taken from the four nearest
 // half-size texels with bilinear weights times a depth weight (1 − the follow-surface blend of
 // their distance to the pixel's) on texels of the pixel's own profile and object; q runs over the
-// pixel and its eight neighbours, x_q is a neighbour's colour as the full-size passes take it
-// (blended towards the pixel's own by the follow-surface rule, the pixel's own where its index
-// differs) and W_q the weight the full-size passes give it (the product of the two passes'
-// weights at offsets 0 and ±1: footprint_near_weights). The half-size passes see only 2x2 means,
-// so the kernel's near field (the centre and the first ring, which holds skin's narrow peak and
-// eq. (1)'s unscattered light) is taken at full size instead and its half-size stand-in, that mass
-// times X, taken out. With the centre alone (q = the pixel) the footprint sweep needed kernels of
-// 48 pixels to keep the margin below; with the ring, 12 (docs/benchmarks/half-resolution.md).
+// pixel and its four neighbours along the axes, x_q is a neighbour's colour as the full-size
+// passes take it (blended towards the pixel's own by the follow-surface rule, the pixel's own where
+// its index differs) and W_q the weight the full-size passes give it (the product of the two
+// passes' weights at offsets 0 and ±1: footprint_near_weights). The half-size passes see only 2x2
+// means, so the kernel's near field (the centre and the first taps, which hold skin's narrow peak
+// and eq. (1)'s unscattered light) is taken at full size instead and its half-size stand-in, that
+// mass times X, taken out. Measured on the footprint sweep's CPU model, as the smallest kernel
+// reach that keeps the margin below: 48 pixels with the centre alone (q = the pixel), 12 with the
+// whole 3x3 ring, 8 with the centre and the four axis neighbours (the diagonals' tiny product
+// weights put more mass on X's 2x2 means than their detail is worth); docs/benchmarks/half-resolution.md.
 // Pixels whose kernel reaches fewer than kHalfResolutionMinReachPixels on either axis, and those
 // with no such neighbour, run the full-size passes instead (they are cheap there: few taps).
 #pragma once
