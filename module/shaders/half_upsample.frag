@@ -1,10 +1,12 @@
 // The half-resolution path's upsample (sss.h SSS_PATH_HALF_RESOLUTION; the method and its reasons:
 // module/src/math/half_resolution.hpp): at each translucent full-size pixel whose kernel reaches
 // at least u_min_reach pixels on both axes,
-//   out = B + c · (x − X)
+//   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X
 // B and X the half-size result and input from the four nearest half-size texels (bilinear weights
 // times 1 − the follow-surface blend of their distance to the pixel's, on texels of the pixel's
-// own index only), x the pixel's colour, c the weight both full-size passes keep on the centre.
+// own index only); q the pixel and its four neighbours along the axes, x_q as the full-size passes
+// take it, W_q the product of the two full-size passes' weights at offsets 0 and ±1 (the near
+// field at full size; why: module/src/math/half_resolution.hpp).
 // Every other pixel is discarded here, leaving the culling depth at 0, and the full-size passes
 // that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
 // This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
@@ -27,8 +29,9 @@ uniform int u_profile_count;
 uniform ivec4 u_half_rect;    // the half-size texels the passes covered: first and last (x0, y0, x1, y1)
 uniform float u_min_reach;    // math::kHalfResolutionMinReachPixels
 uniform float u_min_weight;   // math::kHalfResolutionMinWeight
+uniform ivec4 u_rect;         // the drawn rectangle's first and last pixel (x0, y0, x1, y1)
 uniform int u_half_taps;      // the kernel's most taps per side
-uniform float u_first_spacing;  // its sparse layout's first tap, as a share of the reach
+uniform vec2 u_spacing;       // its sparse layout's first two taps, as shares of the reach
 
 out vec4 o_color;
 
@@ -42,21 +45,52 @@ float sss_distance(uint word) {
 
 vec4 table(int entry, int row) { return texelFetch(u_tables, ivec2(entry, row), 0); }
 
-// The weight the pass of table row `row` (its reach and delta: `footprint`) keeps on the centre at
-// `step` pixels per profile mm: footprint_taps.glsl's (the kernel to the midpoint to the first tap,
-// and the delta).
-vec3 centre_weight(int row, vec4 footprint, float step) {
+// The weights the pass of table row `row` (its reach and delta: `footprint`) gives, at `step`
+// pixels per profile mm, to the centre (returned) and to each pixel beside it (*beside; 0 where its
+// first tap is farther out): footprint_taps.glsl's, as math::footprint_near_weights.
+vec3 half_cdf_at(int row, vec4 footprint, float x_mm) {
+  float u = sqrt(min(x_mm / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+  int j = min(int(u), SSS_CDF_ENTRIES - 2);
+  float f = u - float(j);
+  return table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f;
+}
+vec3 near_weights(int row, vec4 footprint, float step, out vec3 beside) {
   float reach = min(footprint.x * step, 1.0e6);
   bool dense = reach <= float(u_half_taps) + 0.5;
   int count = dense ? max(int(ceil(reach - 0.5)), 0) : u_half_taps;
+  beside = vec3(0.0);
   // Only a pixel whose kernel fits in it has no taps, and the upsample never serves one (its reach
-  // is at least u_min_reach pixels): the table's total, read there, is not read per pixel.
+  // is at least u_min_reach pixels): the table's total is not read per pixel.
   if (count == 0) return 2.0 * table(SSS_CDF_ENTRIES - 1, row).rgb + footprint.yzw;
-  float first = dense ? 1.0 : max(1.0, floor(reach * u_first_spacing + 0.5));
-  float u = sqrt(min((0.5 * first / step) / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
-  int j = min(int(u), SSS_CDF_ENTRIES - 2);
-  float f = u - float(j);
-  return 2.0 * (table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f) + footprint.yzw;
+  float first = dense ? 1.0 : max(1.0, floor(reach * u_spacing.x + 0.5));
+  vec3 below = half_cdf_at(row, footprint, 0.5 * first / step);
+  if (first == 1.0) {
+    float second = dense ? 2.0 : max(2.0, floor(reach * u_spacing.y + 0.5));
+    vec3 upto = count > 1 ? half_cdf_at(row, footprint, 0.5 * (first + second) / step)
+                          : table(SSS_CDF_ENTRIES - 1, row).rgb;
+    beside = upto - below;
+  }
+  return 2.0 * below + footprint.yzw;
+}
+
+// One pixel of the near field: its colour as the full-size passes take it (blended towards the
+// centre's by the follow-surface rule; the centre's where its index differs), times `w`.
+struct NearSite {
+  ivec2 pixel;
+  uint word;      // the centre's distance word (its R8UI index in the low byte)
+  vec3 colour;
+  float distance;
+  float factor;   // the follow-surface factor at the centre's strength
+};
+void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 mass) {
+  uvec4 q = texelFetch(u_source, clamp(site.pixel + offset, u_rect.xy, u_rect.zw), 0);
+  float s = site.factor * abs(site.distance - sss_distance(q.a));
+  if (!(s < 1.0)) s = 1.0;
+#if SSS_PROFILE_IDS == 1
+  if ((q.a & 0xFFu) != (site.word & 0xFFu)) s = 1.0;
+#endif
+  near += w * (uintBitsToFloat(q.rgb) * (1.0 - s) + site.colour * s);
+  mass += w;
 }
 
 void main() {
@@ -104,8 +138,21 @@ void main() {
     }
   }
   if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
-  vec3 c = centre_weight(2 * profile, footprint_x, step_x) * centre_weight(2 * profile + 1, footprint_y, step_y);
-  vec3 result = blurred / weight + c * (centre.rgb - reduced / weight);
+  // The near field at full size: the pixel and its four neighbours along the axes as the passes
+  // take them (not the diagonals: module/src/math/half_resolution.hpp).
+  vec3 beside_x, beside_y;
+  vec3 centre_x = near_weights(2 * profile, footprint_x, step_x, beside_x);
+  vec3 centre_y = near_weights(2 * profile + 1, footprint_y, step_y, beside_y);
+  // In the CPU model's order (dy, then dx, from -1), written out: no loop for a SIMD rasteriser to
+  // run with masked lanes.
+  vec3 near = vec3(0.0), mass = vec3(0.0);
+  NearSite site = NearSite(pixel, texel.a, centre.rgb, d, factor);
+  near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass);
+  near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass);
+  near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass);
+  near_tap(site, ivec2(1, 0), beside_x * centre_y, near, mass);
+  near_tap(site, ivec2(0, 1), centre_x * beside_y, near, mass);
+  vec3 result = blurred / weight + near - mass * (reduced / weight);
   result = max(result, min(centre.rgb, vec3(0.0)));  // no negative light from positive light
   o_color = sss_nearest_half(vec4(result, centre.a));
 }

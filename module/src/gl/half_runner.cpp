@@ -188,7 +188,9 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
   f.Uniform1f(p.min_weight, math::kHalfResolutionMinWeight);
   const std::vector<float>& spacing = run.kernel->spacing;
   f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
-  f.Uniform1f(p.first_spacing, spacing.empty() ? 0.0f : spacing.front());
+  f.Uniform2f(p.spacing, spacing.empty() ? 0.0f : spacing[0], spacing.size() < 2 ? 0.0f : spacing[1]);
+  const std::array<int, 4>& d = run.draw_rect;
+  f.Uniform4i(p.rect, d[0], d[1], d[0] + d[2] - 1, d[1] + d[3] - 1);
   const math::PassConstants& k = run.constants;
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform1i(p.round_to_half, run.target().internal_format == static_cast<GLint>(RGBA16F) ? 1 : 0);

@@ -335,7 +335,8 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   p.min_reach = f.GetUniformLocation(p.program, "u_min_reach");
   p.min_weight = f.GetUniformLocation(p.program, "u_min_weight");
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
-  p.first_spacing = f.GetUniformLocation(p.program, "u_first_spacing");
+  p.spacing = f.GetUniformLocation(p.program, "u_spacing");
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);

@@ -75,8 +75,8 @@ struct HalfInputsProgram {
 };
 struct HalfUpsampleProgram {
   GLuint program = 0;
-  GLint looks = -1, profile_count = -1, half_rect = -1, min_reach = -1, min_weight = -1, half_taps = -1,
-        first_spacing = -1, depth_terms = -1, round_to_half = -1;
+  GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, min_reach = -1, min_weight = -1, half_taps = -1,
+        spacing = -1, depth_terms = -1, round_to_half = -1;
 };
 
 struct SampleWriteProgram {

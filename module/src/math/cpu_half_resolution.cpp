@@ -219,14 +219,39 @@ struct Upsample {
     std::array<float, 3> blurred{}, reduced{};
     neighbours(x, y, t.word, d, look.depth_factor / a, &weight, &blurred, &reduced);
     if (!(weight >= kHalfResolutionMinWeight)) return false;
-    const std::array<float, 3> ch = footprint_centre_weight(term.horizontal.footprint, kernel.spacing, step_x);
-    const std::array<float, 3> cv = footprint_centre_weight(term.vertical.footprint, kernel.spacing, step_y);
+    std::array<float, 3> near{}, mass{};
+    near_field(x, y, t, d, look.depth_factor / a,
+               footprint_near_weights(term.horizontal.footprint, kernel.spacing, step_x),
+               footprint_near_weights(term.vertical.footprint, kernel.spacing, step_y), &near, &mass);
     for (std::size_t c = 0; c < 3; ++c) {
-      float v = blurred[c] / weight + ch[c] * cv[c] * (centre[c] - reduced[c] / weight);
+      float v = blurred[c] / weight + near[c] - mass[c] * (reduced[c] / weight);
       v = std::max(v, std::min(centre[c], 0.0f));  // no negative light from positive light
       out[c] = output_is_half ? round_to_half(v) : v;
     }
     return true;
+  }
+
+  // The full-size passes' near field at (x, y): the pixel and its four neighbours along the axes as
+  // their taps take them, weighed by the product of the two passes' weights, and that weight's sum.
+  void near_field(int x, int y, const InputTexel& t, float d, float factor, const NearWeights& h,
+                  const NearWeights& v, std::array<float, 3>* near, std::array<float, 3>* mass) const {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx != 0 && dy != 0) continue;  // the diagonals: half_resolution.hpp says why not
+        const int qx = std::clamp(x + dx, static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_max[0]));
+        const int qy = std::clamp(y + dy, static_cast<int>(shared.clamp_min[1]), static_cast<int>(shared.clamp_max[1]));
+        const InputTexel& q = full.at(qx, qy);
+        float s = factor * std::fabs(d - full.distance(q.word));
+        if (!(s < 1.0f)) s = 1.0f;
+        if (full.ids && (q.word & 0xFFu) != (t.word & 0xFFu)) s = 1.0f;  // another index: the centre's colour
+        for (std::size_t c = 0; c < 3; ++c) {
+          const float wx = dx == 0 ? h.centre[c] : h.beside[c], wy = dy == 0 ? v.centre[c] : v.beside[c];
+          const float w = wx * wy;
+          (*near)[c] += w * (q.colour[c] * (1.0f - s) + t.colour[c] * s);
+          (*mass)[c] += w;
+        }
+      }
+    }
   }
 
   // The four nearest half-size texels: bilinear weight times the depth weight, on the pixel's index.

@@ -16,10 +16,16 @@ PassConstants half_pass_constants(const PassConstants& full, const std::array<in
   return k;
 }
 
-std::array<float, 3> footprint_centre_weight(const FootprintTable& table, const std::vector<float>& spacing,
-                                             float step) {
-  if (table.empty()) return table.delta;
-  return footprint_taps(table, spacing, step, kNoJitter, 0.0f).weight[0];
+NearWeights footprint_near_weights(const FootprintTable& table, const std::vector<float>& spacing, float step) {
+  NearWeights w;
+  if (table.empty()) {
+    w.centre = table.delta;
+    return w;
+  }
+  const FootprintTaps taps = footprint_taps(table, spacing, step, kNoJitter, 0.0f);
+  w.centre = taps.weight[0];
+  if (taps.count > 0 && taps.position[0] == 1) w.beside = taps.weight[1];
+  return w;
 }
 
 }  // namespace sss::math

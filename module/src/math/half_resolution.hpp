@@ -5,13 +5,20 @@
 // translucent pixel and those of its pixels on the same surface and profile, averaged), the two
 // passes run there with the kernel at half the pixels per millimetre, and an upsample puts the
 // result back at full size for the pixels whose kernel is wide enough:
-//   out = B + c · (x − X)
+//   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X
 // where B and X are the half-size result and input at the pixel, taken from the four nearest
 // half-size texels with bilinear weights times a depth weight (1 − the follow-surface blend of
-// their distance to the pixel's) on texels of the pixel's own profile and object, x the pixel's own
-// colour and c the centre weight the full-size passes would have kept on it (both passes' products).
-// The half-size result has lost the detail finer than its texels; the centre weight puts back the
-// share of that detail the kernel leaves in place (eq. (1)'s unscattered light among it).
+// their distance to the pixel's) on texels of the pixel's own profile and object; q runs over the
+// pixel and its four neighbours along the axes, x_q is a neighbour's colour as the full-size
+// passes take it (blended towards the pixel's own by the follow-surface rule, the pixel's own where
+// its index differs) and W_q the weight the full-size passes give it (the product of the two
+// passes' weights at offsets 0 and ±1: footprint_near_weights). The half-size passes see only 2x2
+// means, so the kernel's near field (the centre and the first taps, which hold skin's narrow peak
+// and eq. (1)'s unscattered light) is taken at full size instead and its half-size stand-in, that
+// mass times X, taken out. Measured on the footprint sweep's CPU model, as the smallest kernel
+// reach that keeps the margin below: 48 pixels with the centre alone (q = the pixel), 12 with the
+// whole 3x3 ring, 8 with the centre and the four axis neighbours (the diagonals' tiny product
+// weights put more mass on X's 2x2 means than their detail is worth); docs/benchmarks/half-resolution.md.
 // Pixels whose kernel reaches fewer than kHalfResolutionMinReachPixels on either axis, and those
 // with no such neighbour, run the full-size passes instead (they are cheap there: few taps).
 #pragma once
@@ -50,9 +57,12 @@ inline int half_size(int size) { return (size + 1) / 2; }
 // (half_rect of the run's drawn rectangle), distances read as they are (linear).
 PassConstants half_pass_constants(const PassConstants& full, const std::array<int, 4>& half);
 
-// The weight the pass with `table` and `spacing` keeps on the centre pixel at `step` pixels per
-// profile millimetre (footprint_taps' weight[0], as footprint_taps.glsl computes it).
-std::array<float, 3> footprint_centre_weight(const FootprintTable& table, const std::vector<float>& spacing,
-                                             float step);
+// The weights the pass with `table` and `spacing` gives, at `step` pixels per profile millimetre,
+// to the centre pixel and to each pixel beside it (footprint_taps' weight[0], and weight[1] where
+// its first tap is the neighbouring pixel, else 0), as footprint_taps.glsl computes them.
+struct NearWeights {
+  std::array<float, 3> centre{}, beside{};
+};
+NearWeights footprint_near_weights(const FootprintTable& table, const std::vector<float>& spacing, float step);
 
 }  // namespace sss::math
