@@ -3,13 +3,13 @@
 // smallest candidate at which the half-resolution path's interior miss stays within
 // kHalfResolutionMissMargin of the full-size passes' on every scene and footprint
 // (docs/benchmarks/half-resolution.md; the cases in tests/bench/half_threshold_fit.json).
-// The candidate below it, 32, upsamples plane-edge-45 at 0.145 mm per pixel
-// (a 32.1-pixel reach): miss 0.162 against the full-size passes' 0.111.
+// The candidate below it, 6, upsamples plane-disk at 0.776 mm per pixel
+// (a 6.0-pixel reach): miss 0.156 against the full-size passes' 0.099.
 #pragma once
 
 namespace sss::math {
 
 // The smallest kernel reach (full-size pixels, on both axes) the upsample serves.
-inline constexpr float kHalfResolutionMinReachPixels = 48.0f;
+inline constexpr float kHalfResolutionMinReachPixels = 8.0f;
 
 }  // namespace sss::math
