@@ -38,7 +38,7 @@
 namespace sss::math {
 
 // What the half-resolution path may add to the full-size passes' interior miss (the benchmark's
-// and the tests' bound): a hundredth of the change the frame needs.
+// and the tests' bound): five hundredths of the change the frame needs.
 inline constexpr double kHalfResolutionMissMargin = 0.05;
 // The least sum of the upsample's weights: below it the pixel has no half-size neighbour on its
 // surface (a thin sliver, a depth step) and runs at full size.
