@@ -92,8 +92,9 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std:
                                                     : static_cast<GLint>(DEPTH24_STENCIL8);
   if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(depth_format, w, h, message);
   if (r == SSS_OK) r = ctx.targets.ensure_half_targets(w, h, run.intermediate_format(), message);
-  if (r == SSS_OK) {
-    r = ctx.targets.ensure_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
+  // The tables only when the kernels changed: a steady frame allocates nothing.
+  if (r == SSS_OK && !ctx.targets.half_tables_hold(tables_revision(run))) {
+    r = ctx.targets.upload_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
   }
   return r;
 }

@@ -352,9 +352,8 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
   return SSS_OK;
 }
 
-sss_result TargetPool::ensure_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
+sss_result TargetPool::upload_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
                                           std::string* message) {
-  if (t_.half_tables != 0 && half_tables_revision_ == revision) return SSS_OK;
   half_tables_revision_ = 0;
   const int width = static_cast<int>(texels.size() / 4) / rows;
   const Functions& f = *gl_;

@@ -80,9 +80,12 @@ class TargetPool {
   // The half_* targets (not the tables) and their framebuffers for a full-size frame of this size;
   // `result_format` RGBA16F or RGBA32F (the frame's intermediate format).
   sss_result ensure_half_targets(int width, int height, GLint result_format, std::string* message);
-  // half_tables holding `rows` rows of `texels` (RGBA floats), uploaded when `revision` differs from
-  // the last upload's (the kernels changed), never otherwise.
-  sss_result ensure_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
+  // Whether half_tables holds the kernels of `revision` (then a steady frame builds no texels).
+  bool half_tables_hold(std::uint64_t revision) const {
+    return t_.half_tables != 0 && half_tables_revision_ == revision;
+  }
+  // half_tables (re)specified with `rows` rows of `texels` (RGBA floats) for kernel `revision`.
+  sss_result upload_half_tables(std::uint64_t revision, int rows, const std::vector<float>& texels,
                                 std::string* message);
 
  private:
