@@ -12,7 +12,7 @@
 //      where it writes the colour and discarding where the full-size passes must run;
 //   5. the full-size horizontal and vertical passes drawn at depth 0.25 (glDepthRange 0..0.5), so
 //      that GL_GREATER lets through exactly the translucent pixels step 4 discarded.
-// The host's colour is written by steps 3-5 only, after step 1's inputs draw has read it.
+// The host's colour is written by steps 3-5 only, after the inputs draw has read it.
 #include <string>
 #include <utility>
 #include <vector>
