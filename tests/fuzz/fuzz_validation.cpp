@@ -41,7 +41,7 @@ bool settings_valid(const sss_settings& s) {
   }
   if (!unit(s.jitter)) return false;
   // SSS_PATH_FRAGMENT, _COMPUTE, _AUTO, _FRAGMENT_MASKED.
-  if (s.path > 3u) return false;
+  if (s.path > SSS_PATH_HALF_RESOLUTION) return false;
   // The kernel desc: NULL, or every field but taps, strength and falloff, whatever the family.
   if (s.kernel == nullptr) return true;
   const sss_kernel_desc& k = *s.kernel;
@@ -77,6 +77,7 @@ bool same_settings(const sss::math::FilterSettings& a, const sss::math::FilterSe
          bits(a.separable_scale, b.separable_scale) && a.strength == b.strength && a.falloff == b.falloff && a.samples == b.samples &&
          a.follow_surface == b.follow_surface && a.cross_bilateral == b.cross_bilateral && a.cbf_taps == b.cbf_taps &&
          bits(a.cbf_r_max_mm, b.cbf_r_max_mm) && a.cbf_profile == b.cbf_profile && a.path == b.path &&
+         a.auto_half_resolution == b.auto_half_resolution &&
          sss::math::same_pass_kernel_inputs(a, b);
 }
 
