@@ -68,26 +68,34 @@ std::vector<CalibrationCase> make_calibration_cases(const std::vector<double>& f
   return cases;
 }
 
+sss::math::PassConstants case_constants(const sss::math::FilterSettings& settings, const sss::math::PassKernel& kernel,
+                                        const CalibrationCase& c) {
+  sss::math::FrameGeometry g;
+  g.texture_width = c.width;
+  g.texture_height = c.height;
+  g.viewport = {0, 0, c.width, c.height};
+  sss::math::FilterSettings s = settings;
+  s.world_units_per_mm = c.world_units_per_mm;
+  return sss::math::compute_pass_constants(s, c.projection, g, kernel.reach_mm);
+}
+
+sss::math::CpuFilterImage case_image(const CalibrationCase& c) {
+  sss::math::CpuFilterImage image;
+  image.width = c.width;
+  image.height = c.height;
+  image.color = c.input_rgba.data();
+  image.depth = c.window_depth.data();
+  return image;
+}
+
 std::vector<CaseScore> score_settings(const sss::math::FilterSettings& settings,
                                       const std::vector<CalibrationCase>& cases) {
   const sss::math::PassKernel kernel = sss::math::build_pass_kernel(settings);
   std::vector<CaseScore> scores(cases.size());
   auto score = [&](std::size_t i) {
     const CalibrationCase& c = cases[i];
-    sss::math::FrameGeometry g;
-    g.texture_width = c.width;
-    g.texture_height = c.height;
-    g.viewport = {0, 0, c.width, c.height};
-    sss::math::FilterSettings s = settings;
-    s.world_units_per_mm = c.world_units_per_mm;
-    const auto constants = sss::math::compute_pass_constants(s, c.projection, g, kernel.reach_mm);
-    sss::math::CpuFilterImage image;
-    image.width = c.width;
-    image.height = c.height;
-    image.color = c.input_rgba.data();
-    image.depth = c.window_depth.data();
     std::vector<float> out(c.input_rgba.size());
-    sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
+    sss::math::cpu_pass_kernel_filter(kernel, case_constants(settings, kernel, c), case_image(c), out.data());
     scores[i] = {c.scene, c.footprint_mm, miss_share(RgbImage::from_rgba(out.data(), c.width, c.height), c.reference,
                                                      c.input, c.interior.data())};
   };

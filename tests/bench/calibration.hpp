@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "math/cpu_separable_filter.hpp"
 #include "math/filter_constants.hpp"
+#include "math/pass_kernel.hpp"
 #include "metrics.hpp"
 #include "regions.hpp"
 #include "scene.hpp"
@@ -50,6 +52,12 @@ struct CaseScore {
 };
 
 // The CPU model of `settings` on every case (on all cores), scored.
+// A case's per-frame constants for `settings` at the case's world units per mm, and its frame as
+// the CPU models read it (the case's input colour and window depth).
+sss::math::PassConstants case_constants(const sss::math::FilterSettings& settings, const sss::math::PassKernel& kernel,
+                                        const CalibrationCase& c);
+sss::math::CpuFilterImage case_image(const CalibrationCase& c);
+
 std::vector<CaseScore> score_settings(const sss::math::FilterSettings& settings,
                                       const std::vector<CalibrationCase>& cases);
 

@@ -34,18 +34,8 @@ namespace {
 
 void score_case(const sss::math::FilterSettings& settings, const sss::math::PassKernel& kernel,
                 const CalibrationCase& c, const std::vector<float>& thresholds, HalfCaseScore* out) {
-  sss::math::FrameGeometry g;
-  g.texture_width = c.width;
-  g.texture_height = c.height;
-  g.viewport = {0, 0, c.width, c.height};
-  sss::math::FilterSettings s = settings;
-  s.world_units_per_mm = c.world_units_per_mm;
-  const auto constants = sss::math::compute_pass_constants(s, c.projection, g, kernel.reach_mm);
-  sss::math::CpuFilterImage image;
-  image.width = c.width;
-  image.height = c.height;
-  image.color = c.input_rgba.data();
-  image.depth = c.window_depth.data();
+  const sss::math::PassConstants constants = case_constants(settings, kernel, c);
+  const sss::math::CpuFilterImage image = case_image(c);
   std::vector<float> result(c.input_rgba.size());
   auto score = [&] { return miss_share(RgbImage::from_rgba(result.data(), c.width, c.height), c.reference, c.input, c.interior.data()); };
   out->scene = c.scene;
