@@ -11,8 +11,8 @@
 // that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
 // This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
 //
-// Switches: SSS_PROFILE_IDS 0 or 1 (as half_inputs.frag), SSS_CDF_ENTRIES (a table's entries),
-// SSS_OUTSIDE 1 writing back (alpha masked off) or 2 into a separate output (alpha the original's).
+// Switches: SSS_PROFILE_IDS 0 or 1 (as half_inputs.frag), SSS_CDF_ENTRIES (a table's entries). It
+// writes alpha as the colour's own (the strength's bits); writing back, the runner masks it off.
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
 #include "depth.glsl"

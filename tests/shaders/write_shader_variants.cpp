@@ -84,10 +84,8 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
   for (int i = 0; i < gl::kHalfVariantCount; ++i) {
     const gl::HalfVariant v = gl::half_variant_at(i);
-    const std::string suffix = "_p" + std::to_string(v.profile_ids) + "_w" + (v.writes_back ? "1" : "0") + ".frag";
-    if (v.writes_back) {  // the reduction does not depend on where the result goes
-      out->write(d + "half_inputs" + suffix, gl::stage_recipe(dialect, "half_inputs.frag", gl::half_inputs_defines(v)));
-    }
+    const std::string suffix = "_p" + std::to_string(v.profile_ids) + ".frag";
+    out->write(d + "half_inputs" + suffix, gl::stage_recipe(dialect, "half_inputs.frag", gl::half_inputs_defines(v)));
     out->write(d + "half_upsample" + suffix,
                gl::stage_recipe(dialect, "half_upsample.frag", gl::half_upsample_defines(v)));
   }

@@ -38,7 +38,6 @@ struct HalfPrograms {
 HalfVariant half_variant(const FilterRun& run) {
   HalfVariant v;
   v.profile_ids = profile_ids_variant(run);
-  v.writes_back = run.writes_back();
   return v;
 }
 

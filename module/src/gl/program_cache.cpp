@@ -324,10 +324,8 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   const std::string defines = half_upsample_defines(v);
   p.program = link("half_upsample.frag", defines, "half-size upsample shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  char label[96];
-  std::snprintf(label, sizeof label, "sss half-size upsample profiles=%d output=%d", v.profile_ids,
-                v.writes_back ? 0 : 1);
-  finish(p.program, label, "half-size upsample");
+  finish(p.program, v.profile_ids != 0 ? "sss half-size upsample profiles=1" : "sss half-size upsample",
+         "half-size upsample");
   const Functions& f = *gl_;
   p.looks = f.GetUniformLocation(p.program, "u_looks");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");

@@ -111,8 +111,8 @@ std::string half_inputs_defines(const HalfVariant& v) {
 
 std::string half_upsample_defines(const HalfVariant& v) {
   // SSS_LINEAR_DEPTH 1: depth.glsl's clip_w only (the upsample reads view distances).
-  return half_inputs_defines(v) + "#define SSS_LINEAR_DEPTH 1\n#define SSS_OUTSIDE " + (v.writes_back ? "1" : "2") +
-         "\n#define SSS_CDF_ENTRIES " + std::to_string(math::kFootprintEntries) + "\n";
+  return half_inputs_defines(v) + "#define SSS_LINEAR_DEPTH 1\n#define SSS_CDF_ENTRIES " +
+         std::to_string(math::kFootprintEntries) + "\n";
 }
 
 std::string lut_defines(int kind) {

@@ -100,14 +100,14 @@ int pass_inputs_variant_index(const PassInputsVariant& v);
 PassInputsVariant pass_inputs_variant_at(int index);
 std::string pass_inputs_defines(const PassInputsVariant& v);
 // The half-resolution path (half_inputs.frag, half_upsample.frag): SSS_PROFILE_IDS 0 or 1 (R16UI
-// indices run at full size), and for the upsample SSS_OUTSIDE 1 (writing back) or 2 (an output).
+// indices run at full size). Where the upsample writes changes nothing in it (the runner masks
+// alpha off when writing back).
 struct HalfVariant {
   int profile_ids = 0;
-  bool writes_back = true;
 };
-inline constexpr int kHalfVariantCount = 2 * 2;
-inline int half_variant_index(const HalfVariant& v) { return v.profile_ids * 2 + (v.writes_back ? 1 : 0); }
-inline HalfVariant half_variant_at(int index) { return HalfVariant{index / 2, index % 2 != 0}; }
+inline constexpr int kHalfVariantCount = 2;
+inline int half_variant_index(const HalfVariant& v) { return v.profile_ids; }
+inline HalfVariant half_variant_at(int index) { return HalfVariant{index}; }
 std::string half_inputs_defines(const HalfVariant& v);
 std::string half_upsample_defines(const HalfVariant& v);
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
