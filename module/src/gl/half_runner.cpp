@@ -139,7 +139,6 @@ void draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p
   for (int i = 0; i < run.profile_count; ++i) factors[static_cast<std::size_t>(i)] = constants_of(run, i).follow_surface_factor;
   f.Uniform1fv(p.depth_factor, 16, factors.data());
   f.Uniform1i(p.profile_count, run.profile_count);
-  f.Uniform1f(p.merge_reach, math::kHalfResolutionMergeReach);
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
   f.DrawArrays(TRIANGLES, 0, 3);
@@ -184,8 +183,6 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
   f.Uniform4fv(p.looks, 16, looks.data());
   f.Uniform1i(p.profile_count, run.profile_count);
   f.Uniform4i(p.half_rect, half[0], half[1], half[0] + half[2] - 1, half[1] + half[3] - 1);
-  f.Uniform1f(p.min_reach, math::kHalfResolutionMinReachPixels);
-  f.Uniform1f(p.min_weight, math::kHalfResolutionMinWeight);
   const std::vector<float>& spacing = run.kernel->spacing;
   f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
   f.Uniform2f(p.spacing, spacing.empty() ? 0.0f : spacing[0], spacing.size() < 2 ? 0.0f : spacing[1]);

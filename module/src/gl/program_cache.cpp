@@ -1,5 +1,7 @@
 #include "program_cache.hpp"
 
+#include "../math/half_resolution.hpp"
+
 #include <cstdio>
 
 #include "debug_label.hpp"
@@ -311,7 +313,9 @@ sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** o
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.depth_factor = f.GetUniformLocation(p.program, "u_depth_factor");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
-  p.merge_reach = f.GetUniformLocation(p.program, "u_merge_reach");
+  // A constant of the method: set once, here, not per frame.
+  f.UseProgram(p.program);
+  f.Uniform1f(f.GetUniformLocation(p.program, "u_merge_reach"), math::kHalfResolutionMergeReach);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
   return SSS_OK;
@@ -330,8 +334,10 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   p.looks = f.GetUniformLocation(p.program, "u_looks");
   p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
   p.half_rect = f.GetUniformLocation(p.program, "u_half_rect");
-  p.min_reach = f.GetUniformLocation(p.program, "u_min_reach");
-  p.min_weight = f.GetUniformLocation(p.program, "u_min_weight");
+  // The method's constants: set once, here, not per frame.
+  f.UseProgram(p.program);
+  f.Uniform1f(f.GetUniformLocation(p.program, "u_min_reach"), math::kHalfResolutionMinReachPixels);
+  f.Uniform1f(f.GetUniformLocation(p.program, "u_min_weight"), math::kHalfResolutionMinWeight);
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   p.rect = f.GetUniformLocation(p.program, "u_rect");

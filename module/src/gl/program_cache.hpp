@@ -71,12 +71,12 @@ struct PassInputsProgram {
 // The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
 struct HalfInputsProgram {
   GLuint program = 0;
-  GLint rect = -1, depth_factor = -1, profile_count = -1, merge_reach = -1;
+  GLint rect = -1, depth_factor = -1, profile_count = -1;
 };
 struct HalfUpsampleProgram {
   GLuint program = 0;
-  GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, min_reach = -1, min_weight = -1, half_taps = -1,
-        spacing = -1, depth_terms = -1, round_to_half = -1;
+  GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, half_taps = -1, spacing = -1, depth_terms = -1,
+        round_to_half = -1;
 };
 
 struct SampleWriteProgram {
