@@ -40,8 +40,8 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, ResolveProgram** reso
 sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram& p, std::string* message) {
   const Functions& f = ctx.gl;
   begin_passes(ctx, run.viewport);
-  const Targets& t = ctx.targets.names();
-  f.BindFramebuffer(DRAW_FRAMEBUFFER, t.resolve_framebuffer);
+  if (!run.identity) ctx.targets.attach_resolve_inputs();
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().resolve_framebuffer);
   // Writing back, the translucent samples' mean and lowest values too (attachments 2 and 3); unless
   // nothing is blurred, the fragment passes' inputs (attachments 4-6: pass_inputs.frag's targets,
   // so that the passes need no inputs draw of their own: the linear depth computed once).
@@ -49,11 +49,6 @@ sss_result resolve(PassContext& ctx, const FilterRun& run, const ResolveProgram&
   const GLenum buffers[7] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, write_back ? COLOR_ATTACHMENT2 : NONE,
                              write_back ? COLOR_ATTACHMENT3 : NONE, COLOR_ATTACHMENT4, COLOR_ATTACHMENT5,
                              COLOR_ATTACHMENT6};
-  const GLuint inputs[3] = {t.pass_taps, t.pass_strength, t.pass_intermediate};
-  for (int i = 0; i < 3; ++i) {
-    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, static_cast<GLenum>(COLOR_ATTACHMENT4 + i), TEXTURE_2D,
-                           run.identity ? 0 : inputs[i], 0);
-  }
   f.DrawBuffers(run.identity ? (write_back ? 4 : 2) : 7, buffers);
   const sss_result r = check_framebuffer(ctx, "MSAA resolve", message);
   if (r != SSS_OK) return r;

@@ -192,7 +192,9 @@ void TargetPool::ensure_msaa_framebuffers() {
   f.GenFramebuffers(2, framebuffers);
   t_.resolve_framebuffer = framebuffers[0];
   t_.sample_write_framebuffer = framebuffers[1];
-  // The resolve's draw buffers are set per frame (msaa_runner.cpp): 2, or 4 writing back.
+  // The resolve's draw buffers are set per frame (msaa_runner.cpp): 2, or 4 writing back, and 7
+  // with the passes' inputs (attach_resolve_inputs).
+  resolve_inputs_attached_ = false;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.sample_write_framebuffer);
   label_object(f, labels_, FRAMEBUFFER, t_.resolve_framebuffer, "sss msaa resolve target");
@@ -295,10 +297,22 @@ void TargetPool::attach_inputs(GLuint framebuffer, const PackedInputs& inputs) {
   f.DrawBuffers(3, buffers);
 }
 
+void TargetPool::attach_resolve_inputs() {
+  if (resolve_inputs_attached_ || t_.resolve_framebuffer == 0 || t_.pass_taps == 0) return;
+  const Functions& f = *gl_;
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
+  const GLuint inputs[3] = {t_.pass_taps, t_.pass_strength, t_.pass_intermediate};
+  for (int i = 0; i < 3; ++i) {
+    f.FramebufferTexture2D(DRAW_FRAMEBUFFER, static_cast<GLenum>(COLOR_ATTACHMENT4 + i), TEXTURE_2D, inputs[i], 0);
+  }
+  resolve_inputs_attached_ = true;
+}
+
 sss_result TargetPool::ensure_pass_targets(int width, int height, std::string* message) {
   if (t_.pass_intermediate_framebuffer != 0 && pass_width_ == width && pass_height_ == height) return SSS_OK;
   pass_width_ = pass_height_ = 0;
   const PackedInputs inputs{&t_.pass_taps, &t_.pass_strength, &t_.pass_intermediate};
+  resolve_inputs_attached_ = false;  // a failed allocation may leave new names behind
   const sss_result r = allocate_inputs(inputs, width, height, "", message);
   if (r != SSS_OK) return r;
   pass_width_ = width;

@@ -75,6 +75,10 @@ class TargetPool {
   sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, std::string* message);
   // `format`: RGBA16F or RGBA32F.
   sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
+  // The fragment passes' inputs (pass_taps, pass_strength, pass_intermediate) as colour attachments
+  // 4-6 of resolve_framebuffer, which the MSAA resolve writes: attached once, again only after
+  // either was (re)made. Leaves resolve_framebuffer bound where it attaches.
+  void attach_resolve_inputs();
   // The three pass_* targets and their framebuffers at this size.
   sss_result ensure_pass_targets(int width, int height, std::string* message);
   // The half_* targets (not the tables) and their framebuffers for a full-size frame of this size;
@@ -124,6 +128,7 @@ class TargetPool {
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
   int pass_width_ = 0, pass_height_ = 0;
+  bool resolve_inputs_attached_ = false;
   int half_width_ = 0, half_height_ = 0;
   GLint half_result_format_ = 0;
   std::uint64_t half_tables_revision_ = 0;
