@@ -68,9 +68,11 @@ TEST_F(DebugGroups, NamedAndBalanced) {
   EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT), plain);
   sss_destroy(sss_);
   sss_ = nullptr;
-  // The masked path (the default's choice on a software rasteriser): the same draws (the inputs
-  // draw marks the culling; it has no mark draw of its own any more).
-  EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT_MASKED), plain);
+  // The masked path (the default's choice on a software rasteriser): the tile marks first (one
+  // group for their two draws), then the same draws kept to the tiles.
+  std::vector<std::string> masked = plain;
+  masked.insert(masked.begin() + 1, {"push sss tile marks (masked path)", "pop sss tile marks (masked path)"});
+  EXPECT_EQ(apply_and_record(0, SSS_PATH_FRAGMENT_MASKED), masked);
 }
 
 TEST_F(DebugGroups, NoneWhenTheHostTurnsThemOff) {

@@ -246,7 +246,8 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
 
   // The default path, SSS_PATH_AUTO, may take the compute path (image unit 0, where the context has
   // compute shaders), so it reads the image unit's name, level, layer, access and format and whether
-  // it is layered. (The masked path no longer marks a stencil: it culls by depth, as the plain one.)
+  // it is layered; and the masked path, whose tile marks go on texture unit 5 (its texture and
+  // sampler). (The masked path marks no stencil: it culls by depth, as the plain one.)
   sss_settings s = settings_;
   s.path = SSS_PATH_AUTO;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
@@ -259,6 +260,7 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
   }
   const GlCallCounts a = steady_counts(f);
   std::map<std::string, long> expected_auto = expected_guard_reads(is_gles(), es_minor);
+  expected_auto["glGetIntegerv"] += 2;  // unit 5: GL_TEXTURE_BINDING_2D and GL_SAMPLER_BINDING
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);

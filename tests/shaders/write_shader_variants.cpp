@@ -74,6 +74,13 @@ std::string blur_name(const gl::BlurVariant& v) {
 void write_dialect(Writer* out, gl::GlslVariant dialect) {
   const std::string d = std::string(dialect_prefix(dialect)) + '_';
   out->write(d + "fullscreen.vert", gl::vertex_recipe(dialect));
+  // The masked path's: the vertex stage with its bands of tiles (the passes', the inputs'), the marks.
+  out->write(d + "fullscreen_spans_passes.vert", gl::vertex_recipe(dialect, gl::TileSpans::passes));
+  out->write(d + "fullscreen_spans_inputs.vert", gl::vertex_recipe(dialect, gl::TileSpans::inputs));
+  for (const bool columns : {false, true}) {
+    out->write(d + (columns ? "tile_mark_columns.frag" : "tile_mark.frag"),
+               gl::stage_recipe(dialect, "tile_mark.frag", gl::tile_mark_defines(columns)));
+  }
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
   for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {

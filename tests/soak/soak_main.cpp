@@ -153,12 +153,14 @@ class Soak {
     // the host's 3 textures; the module's three pass targets (inputs, strength, intermediate; the
     // two term accumulators are for kernels of several terms only: the soak's eq. (1) never makes
     // them); the culling depth-stencil renderbuffer; 4 framebuffers made at create and 2 for the
-    // pass targets; the vertex array; 3 samplers (colour, depth, nearest for the integer targets,
-    // made at create); the copy program, up to 2 pass-input variants (hardware or linear depth) and
-    // up to 36 blur variants (the horizontal pass x 3 follow-surface modes, the vertical one x 2
-    // outside modes x 3 follow-surface modes, each for the three preset tap counts and for any
-    // other count: 12 x 3 = 36); 2 shaders each, flagged for deletion.
-    const std::array<int, 8> most = {3 + 3, 0, 4 + 2, 1, 1, 3, 1 + 2 + 36, 2 * (1 + 2 + 36)};
+    // pass targets; the masked path's (the default's choice on a software rasteriser) two tile-mark
+    // textures, their 2 framebuffers and 2 programs; the vertex array; 3 samplers (colour, depth,
+    // nearest for the integer targets, made at create); the copy program, up to 2 pass-input
+    // variants (hardware or linear depth) and up to 36 blur variants (the horizontal pass x 3
+    // follow-surface modes, the vertical one x 2 outside modes x 3 follow-surface modes, each for
+    // the three preset tap counts and for any other count: 12 x 3 = 36); 2 shaders each, flagged
+    // for deletion.
+    const std::array<int, 8> most = {3 + 3 + 2, 0, 4 + 2 + 2, 1, 1, 3, 1 + 2 + 2 + 36, 2 * (1 + 2 + 2 + 36)};
     for (std::size_t k = 0; k < most.size(); ++k) {
       if (live.count[k] - objects_without_module_.count[k] > most[k]) {
         fail("GL objects at the end of context " + std::to_string(contexts_) + ": " + live.describe() +

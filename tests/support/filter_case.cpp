@@ -213,6 +213,16 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     for (int i = 0; i < 4; ++i) frame.region[i] = c.region[static_cast<std::size_t>(i)];
   }
   if (is_gles()) describe_frame(c, w, h, &frame);  // ES 3.0 cannot be asked for formats and sizes
+  if (c.stale_frame_first) {
+    std::vector<float> other(scene.color.size());
+    for (std::size_t i = 0; i < other.size(); ++i) other[i] = i % 4 == 3 ? 1.0f : 3.0f - scene.color[i];
+    const GLuint other_color = c.half_color ? make_rgba16f(w, h, other) : make_rgba32f(w, h, other);
+    const GLuint other_output = c.separate_output ? make_rgba32f(w, h, other) : 0;
+    sss_frame before = frame;
+    before.color_texture = other_color;
+    before.output_texture = other_output;
+    EXPECT_EQ(sss_apply_frame(sss_, &before), SSS_OK) << sss_last_error(sss_);
+  }
   outcome.result = sss_apply_frame(sss_, &frame);
   EXPECT_EQ(outcome.result, SSS_OK) << sss_last_error(sss_);
   outcome.gpu = read_rgba(output != 0 ? output : color, w, h);

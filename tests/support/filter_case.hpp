@@ -25,6 +25,9 @@ struct FilterCase {
   std::vector<float> normals;  // RGBA32F view-space normals for sss_frame.normal_texture; empty: none
   bool use_region = false;     // SSS_FRAME_REGION with `region` (x, y, width, height)
   std::array<int32_t, 4> region = {0, 0, 0, 0};
+  // Before the frame, the same context applies another one of the same size, every pixel
+  // translucent and of other colours: what the module's targets hold from it must not show.
+  bool stale_frame_first = false;
 };
 
 struct FilterOutcome {

@@ -49,7 +49,7 @@
  *
  * GL state (SSS_STATE_LIST; docs/integration.md details it): a call that draws restores what it changed
  * (unless SSS_CREATE_NO_STATE_RESTORE) and leaves no GL error: program, vertex array, draw and read
- * framebuffers, renderbuffer, active texture; on units 0-4 the 2D and 2D-multisample texture and sampler;
+ * framebuffers, renderbuffer, active texture; on units 0-5 the 2D and 2D-multisample texture and sampler;
  * uniform buffer binding 0 and the generic one; the unpack buffer and alignment/row length/skips (pack
  * state too under SSS_CREATE_DEBUG_CHECKS); image unit 0; viewport; sample mask word 0; the enables
  * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
@@ -100,7 +100,7 @@ typedef enum sss_mode { SSS_MODE_SEPARABLE = 0, SSS_MODE_CROSS_BILATERAL = 1 } s
 typedef enum sss_path {
   SSS_PATH_FRAGMENT = 0, SSS_PATH_COMPUTE = 1, /**< two full-screen fragment passes; compute (GL 4.3+) else fragment */
   SSS_PATH_AUTO = 2,           /**< the fastest that can run the frame (timed where timers are trustworthy); default */
-  SSS_PATH_FRAGMENT_MASKED = 3, /**< since 0.4: the same as SSS_PATH_FRAGMENT (both cull by alpha) */
+  SSS_PATH_FRAGMENT_MASKED = 3, /**< fragment, its draws kept to 16x16 tiles holding alpha > 0 (cheap on sparse) */
   SSS_PATH_HALF_RESOLUTION = 4 /**< 0.4: half size where kernels are wide; not the same image (guide §18) */
 } sss_path;
 #define SSS_FOLLOW_SURFACE 0x1u /**< sss_settings.flags: fade taps across depth steps (§3.2). Default on */

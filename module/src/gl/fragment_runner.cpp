@@ -24,8 +24,7 @@ void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint so
   set_blur_uniforms(ctx, p, run, term, axis);
   bind_packed_inputs(ctx, source);
   if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
-  ctx.gl.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
+  draw_cover(ctx, p.tile_grid);
 }
 
 PassInputsVariant pass_inputs_variant(const FilterRun& run) {
@@ -54,6 +53,13 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassIn
     f.DepthFunc(ALWAYS);
     f.DepthMask(1);
     f.set_depth_range(0.0f, 1.0f);  // the passes' triangle at depth 0.5, between the marks
+    // The bands of tiles leave pixels out. The passes draw none of them (their bands are inside
+    // these), but the copy into a separate output tests every pixel: there they must count as not
+    // translucent.
+    if (ctx.tile_bands > 0 && !run.writes_back()) {
+      const GLfloat far = 1.0f;
+      f.ClearBufferfv(DEPTH, 0, &far);  // glClearBuffer leaves the host's clear values alone
+    }
   }
   f.UseProgram(p->program);
   const math::PassConstants& k = run.constants;
@@ -62,8 +68,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassIn
   bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
   bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
   if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
-  f.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
+  draw_cover(ctx, p->tile_grid);
   if (v.mark_depth) f.DepthMask(0);  // the passes only test it
   return SSS_OK;
 }
@@ -209,16 +214,23 @@ sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string*
 }
 
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
+  return run_separable(ctx, run, false, message);
+}
+
+sss_result run_separable(PassContext& ctx, const FilterRun& run, bool tiles, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
   const std::size_t terms = run.kernel->terms.size();
   TermPrograms programs{};
   sss_result r = prepare_separable(ctx, run, &programs, message);
+  if (r == SSS_OK && tiles) r = prepare_tile_culling(ctx, run, message);
   if (r != SSS_OK) return r;
   begin_passes(ctx, run.draw_rect);
-  if (!run.inputs_ready) r = draw_pass_inputs(ctx, run, pass_inputs_variant(run), message);
+  if (tiles) r = mark_tiles(ctx, run, message);
+  if (r == SSS_OK && !run.inputs_ready) r = draw_pass_inputs(ctx, run, pass_inputs_variant(run), message);
   if (r == SSS_OK) r = attach_targets(ctx, run, terms, message);
   if (r == SSS_OK) draw_terms(ctx, run, programs, terms);
+  ctx.tile_bands = 0;
   detach_output(ctx);
   return r;
 }

@@ -100,6 +100,7 @@ using GLubyte = unsigned char;
   X(void, BindVertexArray, (GLuint array))                                                             \
   X(GLboolean, IsVertexArray, (GLuint array))                                                          \
   X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                                       \
+  X(void, DrawArraysInstanced, (GLenum mode, GLint first, GLsizei count, GLsizei instancecount))        \
   X(void, Viewport, (GLint x, GLint y, GLsizei width, GLsizei height))                                 \
   X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a))                             \
   X(void, StencilFuncSeparate, (GLenum face, GLenum func, GLint ref, GLuint mask))                     \
@@ -352,9 +353,11 @@ enum : GLenum {
   PIXEL_UNPACK_BUFFER = 0x88EC,
   PIXEL_UNPACK_BUFFER_BINDING = 0x88EF,
   TRIANGLES = 0x0004,
+  TRIANGLE_STRIP = 0x0005,
   VIEWPORT = 0x0BA2,
   SCISSOR_TEST = 0x0C11,
   DEPTH_TEST = 0x0B71,
+  DEPTH = 0x1801,
   STENCIL_TEST = 0x0B90,
   BLEND = 0x0BE2,
   CULL_FACE = 0x0B44,

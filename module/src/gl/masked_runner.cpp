@@ -1,5 +1,6 @@
-// SSS_PATH_FRAGMENT_MASKED, now the fragment passes themselves (they cull by depth), and the
-// stencil the MSAA path marks from alpha: the paper's stencil culling, where the stencil is
+// SSS_PATH_FRAGMENT_MASKED: the fragment passes (which cull by the depth their inputs draw marks
+// from alpha) with their draws kept to the tiles that hold translucent pixels (tile_culling.cpp);
+// and the stencil the MSAA path marks from alpha: the paper's stencil culling, where the stencil is
 // initialised from the strength mask so that both blur passes run only on translucent pixels.
 #include "debug_label.hpp"
 #include "runners.hpp"
@@ -45,9 +46,9 @@ sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuin
 
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message) {
   // The fragment passes cull by the depth their inputs draw marks from alpha (fragment_runner.cpp)
-  // whenever no stencil is given: the paper's culling with no draw of its own, which is all this
-  // path used to add to the plain one (a stencil mark, then the plain passes behind it).
-  return run_fragment(ctx, run, message);
+  // whenever no stencil is given; the tiles add what that culling cannot: the rasteriser skips the
+  // rest of the frame instead of testing every pixel of it in every draw.
+  return run_separable(ctx, run, masked_available(run), message);
 }
 
 }  // namespace sss::gl

@@ -166,6 +166,16 @@ void draw_copy(PassContext& ctx, GLuint source) {
   ++ctx.draws;
 }
 
+void draw_cover(PassContext& ctx, GLint tile_grid) {
+  if (ctx.tile_bands > 0) {
+    ctx.gl.Uniform4fv(tile_grid, 1, ctx.tile_grid.data());
+    ctx.gl.DrawArraysInstanced(TRIANGLE_STRIP, 3, 4, ctx.tile_bands);  // fullscreen.vert's vertices 3-6
+  } else {
+    ctx.gl.DrawArrays(TRIANGLES, 0, 3);
+  }
+  ++ctx.draws;
+}
+
 void copy_outside_region(PassContext& ctx, const FilterRun& run) {
   const Functions& f = ctx.gl;
   DebugGroup group(f, ctx.labels, "sss copy of the viewport outside the region");

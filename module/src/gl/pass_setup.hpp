@@ -44,6 +44,10 @@ struct PassContext {
   // off only where an earlier successful run checked the same attachments).
   bool check_framebuffers = true;
   ProfileTables* profile_tables = nullptr;  // the per-pixel profiles' uniform buffer
+  // The masked path's tile culling (tile_culling.cpp), while its draws run: the bands of tiles over
+  // the drawn rectangle (0: the draws cover it with one triangle) and the programs' u_tile_grid.
+  int tile_bands = 0;
+  std::array<GLfloat, 4> tile_grid{};
 };
 
 // The measurement of one frame's passes (sss_get_stats): every call is a no-op when the run is not
@@ -102,6 +106,9 @@ void bind_texture(PassContext& ctx, GLuint unit, GLuint texture, GLuint sampler)
 // (the host's colour is then the target, and a texture must not be read and written at once).
 void bind_original(PassContext& ctx, const FilterRun& run);
 void draw_copy(PassContext& ctx, GLuint source);
+// The bound program's draw over the viewport: one triangle, or with the masked path's tile culling
+// on (ctx.tile_bands) its bands of tiles, `tile_grid` (the program's u_tile_grid) set first.
+void draw_cover(PassContext& ctx, GLint tile_grid);
 // With a region and a separate output: the viewport's colour into the bound draw framebuffer.
 void copy_outside_region(PassContext& ctx, const FilterRun& run);
 

@@ -94,9 +94,6 @@ PathChooser::Choice PathChooser::choose(std::uint64_t key, unsigned available, b
     return {chosen_, false};
   }
   collect();
-  // The masked and plain fragment paths run the same draws since 0.4: timing both would spend
-  // kTrials frames to learn nothing. The plain one stands for both.
-  available &= ~(1u << masked);
   int candidates[kPaths];
   int count = 0;
   for (int p = 0; p < kPaths; ++p) {

@@ -1,16 +1,15 @@
 // SSS_PATH_AUTO: which way of running the passes a frame takes: the plain fragment passes, the
-// masked ones (since 0.4 the same draws: both cull by the depth their inputs draw marks), the
-// compute dispatches, or (with SSS_AUTO_HALF_RESOLUTION) the half-resolution passes. Where timer
-// queries are trustworthy, the first frames of a configuration cycle through the paths that can
-// run it (the plain fragment path standing for the masked one, which runs the same draws), each
-// timed with one GL_TIME_ELAPSED query around the whole frame and read back only once available
-// (never stalling); when each has kTrials results the lowest median wins until the configuration
-// changes. Without a trustworthy timer (Mesa's software rasterisers, where GL_TIME_ELAPSED covers
-// one tile) it takes what the benchmark measured fastest there (docs/benchmarks.md): reported as
-// the masked fragment path, or the plain one when the host gave its region or the mask cannot be
-// used (the two run the same culled draws since 0.4); never the half-resolution path there, which
-// only a timer can show to be faster for the frames at hand (it costs more than the full-size
-// passes where few pixels' kernels are wide).
+// masked ones (the same passes with every draw kept to the tiles holding translucent pixels, after
+// two small draws that find them), the compute dispatches, or (with SSS_AUTO_HALF_RESOLUTION) the
+// half-resolution passes. Where timer queries are trustworthy, the first frames of a configuration
+// cycle through the paths that can run it, each timed with one GL_TIME_ELAPSED query around the
+// whole frame and read back only once available (never stalling); when each has kTrials results
+// the lowest median wins until the configuration changes. Without a trustworthy timer (Mesa's
+// software rasterisers, where GL_TIME_ELAPSED covers one tile) it takes what the benchmark
+// measured fastest there (docs/benchmarks-passes.md): the masked fragment path, or the plain one
+// when the host gave its region (which already keeps the draws to the skin) or the mask cannot be
+// used; never the half-resolution path there, which only a timer can show to be faster for the
+// frames at hand (it costs more than the full-size passes where few pixels' kernels are wide).
 #pragma once
 
 #include <array>

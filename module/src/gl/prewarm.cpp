@@ -22,7 +22,10 @@ sss_result host_stencil_resources(PassContext& ctx, const FilterRun& run, std::s
 
 // run_fragment: the separable passes of every term, or the cross-bilateral mode's two passes.
 sss_result prewarm_fragment(PassContext& ctx, const FilterRun& run, std::string* message) {
-  const sss_result r = prepare_fragment(ctx, run, message);
+  sss_result r = prepare_fragment(ctx, run, message);
+  // The masked path's tile marks: where it is asked for, or AUTO may take it.
+  const bool masked = run.path == SSS_PATH_FRAGMENT_MASKED || run.path == SSS_PATH_AUTO;
+  if (r == SSS_OK && masked && masked_available(run)) r = prepare_tile_culling(ctx, run, message);
   return r == SSS_OK ? host_stencil_resources(ctx, run, message) : r;
 }
 
@@ -57,8 +60,8 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   run.target_complete = true;
   const bool compute = (run.path == SSS_PATH_COMPUTE || run.path == SSS_PATH_AUTO) &&
                        *compute_unavailable(*gl_, run) == '\0';
-  // The masked path is the fragment passes (run_masked): every path but compute alone takes them,
-  // and compute falls back to them.
+  // The masked path is the fragment passes (run_masked) and its tile marks: every path but compute
+  // alone takes the passes, and compute falls back to them.
   const bool half = (run.path == SSS_PATH_HALF_RESOLUTION || (run.path == SSS_PATH_AUTO && run.auto_half_resolution)) &&
                     *half_resolution_unavailable(run) == '\0';
   sss_result r = prewarm_fragment(ctx, run, message);

@@ -69,15 +69,17 @@ void ProgramCache::destroy() {
   for (const PassInputsProgram& p : pass_inputs_) remove(p.program);
   for (const HalfInputsProgram& p : half_inputs_) remove(p.program);
   for (const HalfUpsampleProgram& p : half_upsample_) remove(p.program);
+  for (const TileMarkProgram& p : tile_mark_) remove(p.program);
   forget();
 }
 
 void ProgramCache::forget() { *this = ProgramCache{}; }
 
 GLuint ProgramCache::link(const char* fragment, const std::string& defines, const std::string& what,
-                          std::string* message) {
+                          std::string* message, TileSpans spans) {
   std::string log;
-  const GLuint program = build_program(*gl_, vertex_recipe(variant_), stage_recipe(variant_, fragment, defines), &log);
+  const GLuint program =
+      build_program(*gl_, vertex_recipe(variant_, spans), stage_recipe(variant_, fragment, defines), &log);
   if (program == 0) *message = what + ": " + log;
   return program;
 }
@@ -101,7 +103,8 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
-  p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message);
+  p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message,
+                   TileSpans::passes);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
   std::snprintf(label, sizeof label,
@@ -115,6 +118,8 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
   set_unit(p.program, p.profile_ids, unit::profile_ids);
+  p.tile_grid = gl_->GetUniformLocation(p.program, "u_tile_grid");
+  set_unit(p.program, gl_->GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   if (v.profile_ids != 0) {  // the tables' block on binding point 0 (ProfileTables::bind)
     const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
     if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
@@ -286,7 +291,7 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = pass_inputs_defines(v);
-  p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message);
+  p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message, TileSpans::inputs);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[96];
   std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d", v.linear_depth ? 1 : 0,
@@ -298,6 +303,23 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
+  p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::tile_mark(bool columns, TileMarkProgram** out, std::string* message) {
+  TileMarkProgram& p = tile_mark_[columns ? 1 : 0];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  p.program = link("tile_mark.frag", tile_mark_defines(columns), columns ? "tile columns shader" : "tile marks shader", message);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  finish(p.program, columns ? "sss tile columns" : "sss tile marks", columns ? "tile columns" : "tile marks");
+  const Functions& f = *gl_;
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   return SSS_OK;
 }
 

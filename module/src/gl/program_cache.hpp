@@ -36,6 +36,7 @@ struct BlurProgram {
   GLint rect = -1;  // compute programs only
   GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
+  GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
   bool compute = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
@@ -65,7 +66,13 @@ struct ResolveProgram {
 
 struct PassInputsProgram {
   GLuint program = 0;
-  GLint ndc_from_depth = -1, depth_terms = -1;
+  GLint ndc_from_depth = -1, depth_terms = -1, tile_grid = -1;
+};
+
+// The masked path's tile marks (tile_mark.frag): per tile, or per column of tiles.
+struct TileMarkProgram {
+  GLuint program = 0;
+  GLint rect = -1;
 };
 
 // The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
@@ -113,6 +120,8 @@ class ProgramCache {
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
   sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
   sss_result half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message);
+  // `columns`: the marks of the columns of tiles (SSS_TILE_COLUMNS), else of the tiles.
+  sss_result tile_mark(bool columns, TileMarkProgram** out, std::string* message);
 
  private:
   // The compute variants (is_compute_blur_variant): blur_variant_index's leading factor (packed
@@ -121,9 +130,11 @@ class ProgramCache {
   static constexpr int kComputeVariantCount = kComputeBlurVariants * kImageFormats * kComputePassCount;
   static constexpr int kCbfVariantCount = 3 * 2 * 2;
 
-  // A program from the full-screen vertex shader and the fragment shader file `fragment` with
-  // `defines`, in the context's dialect; 0 with *message ("<what>: <driver log>") on failure.
-  GLuint link(const char* fragment, const std::string& defines, const std::string& what, std::string* message);
+  // A program from the full-screen vertex shader (with the tile spans `spans`) and the fragment
+  // shader file `fragment` with `defines`, in the context's dialect; 0 with *message ("<what>:
+  // <driver log>") on failure.
+  GLuint link(const char* fragment, const std::string& defines, const std::string& what, std::string* message,
+              TileSpans spans = TileSpans::none);
   void find_blur_uniforms(BlurProgram* p) const;
   void find_cbf_uniforms(CbfProgram* p) const;
   // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
@@ -150,6 +161,7 @@ class ProgramCache {
   std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
   std::array<HalfInputsProgram, kHalfVariantCount> half_inputs_{};
   std::array<HalfUpsampleProgram, kHalfVariantCount> half_upsample_{};
+  std::array<TileMarkProgram, 2> tile_mark_{};  // index: columns
 };
 
 }  // namespace sss::gl

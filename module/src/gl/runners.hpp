@@ -15,6 +15,8 @@ namespace sss::gl {
 // vertical pass per kernel term, behind the host's stencil (or the module's, run.stencil_ready)
 // when there is one; the cross-bilateral mode (cbf_runner.cpp) and the identity copy go from here.
 sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
+// The same, with the masked path's tile culling (`tiles`, tile_culling.cpp) where a run has no stencil.
+sss_result run_separable(PassContext& ctx, const FilterRun& run, bool tiles, std::string* message);
 // What run_fragment (and the cross-bilateral runner) build and allocate before they draw: the
 // runners that draw before they call run_fragment (masked, MSAA) call it first, so that no program
 // build or allocation fails after the first draw (sss.h: only a GL error the draws raised does);
@@ -33,10 +35,16 @@ sss_result run_identity(PassContext& ctx, const FilterRun& run, std::string* mes
 // The cross-bilateral mode (Mikkelsen 2010) in two fragment passes (cbf_runner.cpp).
 sss_result run_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 
-// SSS_PATH_FRAGMENT_MASKED (masked_runner.cpp): the fragment passes behind a stencil marked from
-// the colour's alpha, so only translucent pixels run the blur.
+// SSS_PATH_FRAGMENT_MASKED (masked_runner.cpp): the fragment passes culled to the translucent
+// pixels by the depth their inputs draw marks from alpha, and every draw kept to the bands of tiles
+// that hold such pixels (tile_culling.cpp), so the rest of the frame costs two small draws.
 bool masked_available(const FilterRun& run);
 sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* message);
+// The tile marks' programs and targets (also for sss_prepare), and their draws: the marks, left on
+// their units, and ctx.tile_bands and tile_grid set for the span draws; the viewport back on the
+// drawn rectangle.
+sss_result prepare_tile_culling(PassContext& ctx, const FilterRun& run, std::string* message);
+sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* message);
 // The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
 // above 0 (left on horizontal_framebuffer(run)). Draws over the current viewport.
 sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuint source, std::string* message);

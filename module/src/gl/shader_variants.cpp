@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "../math/footprint_kernel.hpp"
+#include "../math/tile_culling.hpp"
 #include "shader_constants.hpp"
 
 namespace sss::gl {
@@ -128,6 +129,15 @@ ShaderRecipe stage_recipe(GlslVariant v, const char* file, std::string defines) 
 
 ShaderRecipe compute_recipe(std::string defines) {
   return ShaderRecipe{"version_430.glsl", std::move(defines), "separable_blur.comp"};
+}
+
+std::string tile_mark_defines(bool columns) { return std::string("#define SSS_TILE_COLUMNS ") + (columns ? "1\n" : "0\n"); }
+
+ShaderRecipe vertex_recipe(GlslVariant v, TileSpans spans) {
+  if (spans == TileSpans::none) return stage_recipe(v, "fullscreen.vert");
+  return stage_recipe(v, "fullscreen.vert",
+                      "#define SSS_TILE_SPANS " + std::to_string(static_cast<int>(spans)) +
+                          "\n#define SSS_TILE_BAND " + std::to_string(math::kTileBand) + "\n");
 }
 
 }  // namespace sss::gl

@@ -113,6 +113,9 @@ std::string half_upsample_defines(const HalfVariant& v);
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 
+// The masked path's tile marks (tile_mark.frag): SSS_TILE_COLUMNS 1 the columns' marks, 0 the tiles'.
+std::string tile_mark_defines(bool columns);
+
 // The LUT generator (lut_generate.frag): SSS_LUT_KIND 0 diffuse, 1 shadow, and its array sizes.
 std::string lut_defines(int kind);
 
@@ -120,7 +123,9 @@ std::string lut_defines(int kind);
 ShaderRecipe stage_recipe(GlslVariant v, const char* file, std::string defines = "");
 // The compute path's blur: GLSL 4.30 (version_430.glsl), `defines` (compute_blur_defines).
 ShaderRecipe compute_recipe(std::string defines);
-// The vertex stage of every program: the full-screen triangle.
-inline ShaderRecipe vertex_recipe(GlslVariant v) { return stage_recipe(v, "fullscreen.vert"); }
+// The vertex stage of every program: the full-screen triangle; `spans` 1 or 2 adds the masked
+// path's rows of tiles (fullscreen.vert's SSS_TILE_SPANS: 1 the blur passes', 2 the inputs draw's).
+enum class TileSpans { none = 0, passes = 1, inputs = 2 };
+ShaderRecipe vertex_recipe(GlslVariant v, TileSpans spans = TileSpans::none);
 
 }  // namespace sss::gl

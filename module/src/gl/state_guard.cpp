@@ -15,7 +15,8 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
   gl_.GetIntegerv(RENDERBUFFER_BINDING, &renderbuffer_);
   gl_.GetIntegerv(PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
   gl_.GetIntegerv(ACTIVE_TEXTURE, &active_texture_);
-  for (int unit = 0; unit < units(); ++unit) {
+  for (int unit = 0; unit < kUnitCount; ++unit) {
+    if (!saves_unit(unit)) continue;
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.GetIntegerv(TEXTURE_BINDING_2D, &textures_[static_cast<std::size_t>(unit)]);
     if (scope_.multisample) {
@@ -150,7 +151,8 @@ StateGuard::~StateGuard() {
     gl_.BlendFuncSeparate(e(0), e(1), e(2), e(3));
     gl_.BlendEquationSeparate(e(4), e(5));
   }
-  for (int unit = 0; unit < units() && restore(restore_group::texture_units); ++unit) {
+  for (int unit = 0; unit < kUnitCount && restore(restore_group::texture_units); ++unit) {
+    if (!saves_unit(unit)) continue;
     gl_.ActiveTexture(TEXTURE0 + static_cast<GLenum>(unit));
     gl_.BindTexture(TEXTURE_2D, static_cast<GLuint>(textures_[static_cast<std::size_t>(unit)]));
     if (scope_.multisample) {

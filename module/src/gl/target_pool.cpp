@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "../math/tile_culling.hpp"
 #include "debug_label.hpp"
 
 namespace sss::gl {
@@ -59,12 +60,13 @@ void TargetPool::destroy() {
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
                                  t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
                                  t_.pass_intermediate_framebuffer, t_.half_inputs_framebuffer,
-                                 t_.half_intermediate_framebuffer, t_.half_result_framebuffer};
+                                 t_.half_intermediate_framebuffer, t_.half_result_framebuffer,
+                                 t_.tiles_framebuffer,        t_.tile_columns_framebuffer};
   const GLuint textures[] = {t_.intermediate,       t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
                              t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
                              t_.translucent_lowest, t_.strength_source,   t_.pass_taps,       t_.pass_strength,
                              t_.pass_intermediate,  t_.half_taps,         t_.half_strength,   t_.half_intermediate,
-                             t_.half_result,        t_.half_tables};
+                             t_.half_result,        t_.half_tables,       t_.tiles,           t_.tile_columns};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -363,6 +365,24 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
     f.BindFramebuffer(DRAW_FRAMEBUFFER, framebuffer);
     f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, t_.half_depth);
   }
+  return SSS_OK;
+}
+
+sss_result TargetPool::ensure_tile_targets(int width, int height, std::string* message) {
+  const int across = math::tiles_across(width), down = math::tiles_across(height);
+  if (t_.tile_columns_framebuffer != 0 && tiles_across_ == across && tiles_down_ == down) return SSS_OK;
+  tiles_across_ = tiles_down_ = 0;
+  sss_result r = allocate_target(&t_.tiles, R8, UNSIGNED_BYTE, across, down, "R8 tile marks", message, RED);
+  if (r == SSS_OK) {
+    r = allocate_target(&t_.tile_columns, R8, UNSIGNED_BYTE, across, 1, "R8 tile column marks", message, RED);
+  }
+  if (r != SSS_OK) return r;
+  tiles_across_ = across;
+  tiles_down_ = down;
+  ensure_framebuffer(&t_.tiles_framebuffer, "sss tile marks target");
+  ensure_framebuffer(&t_.tile_columns_framebuffer, "sss tile column marks target");
+  attach_colour(t_.tiles_framebuffer, t_.tiles);
+  attach_colour(t_.tile_columns_framebuffer, t_.tile_columns);
   return SSS_OK;
 }
 

@@ -53,6 +53,10 @@ struct Targets {
   // half_depth (DEPTH24_STENCIL8, on all three) holds the reduction's culling marks.
   GLuint half_taps = 0, half_strength = 0, half_intermediate = 0, half_result = 0, half_tables = 0, half_depth = 0;
   GLuint half_inputs_framebuffer = 0, half_intermediate_framebuffer = 0, half_result_framebuffer = 0;
+  // The masked path's tile culling (tile_culling.cpp): per 16x16 tile of the frame whether it holds
+  // a translucent pixel (R8 tiles), and per column of tiles whether any of its tiles does (R8
+  // tile_columns, one row); each drawn by its own framebuffer.
+  GLuint tiles = 0, tile_columns = 0, tiles_framebuffer = 0, tile_columns_framebuffer = 0;
 };
 
 class TargetPool {
@@ -84,6 +88,9 @@ class TargetPool {
   // The half_* targets (not the tables) and their framebuffers for a full-size frame of this size;
   // `result_format` RGBA16F or RGBA32F (the frame's intermediate format).
   sss_result ensure_half_targets(int width, int height, GLint result_format, std::string* message);
+  // tiles and tile_columns for a frame of this size (math::kTileSize pixels a tile), and their
+  // framebuffers.
+  sss_result ensure_tile_targets(int width, int height, std::string* message);
   // Whether half_tables holds the kernels of `revision` (then a steady frame builds no texels).
   bool half_tables_hold(std::uint64_t revision) const {
     return t_.half_tables != 0 && half_tables_revision_ == revision;
@@ -132,6 +139,7 @@ class TargetPool {
   int half_width_ = 0, half_height_ = 0;
   GLint half_result_format_ = 0;
   std::uint64_t half_tables_revision_ = 0;
+  int tiles_across_ = 0, tiles_down_ = 0;
 };
 
 }  // namespace sss::gl

@@ -1,6 +1,6 @@
 // The texture units the module's programs read from. They are fixed per program (set once after
 // linking, or by layout(binding) in GLSL 4.20: module/shaders/*), so a frame binds textures and
-// never changes a sampler uniform. Units 0-4 are in the StateGuard's list (sss.h).
+// never changes a sampler uniform. Units 0-5 are in the StateGuard's list (sss.h).
 #pragma once
 
 #include "gl_functions.hpp"
@@ -21,6 +21,12 @@ constexpr GLuint pass_strength = 1;
 constexpr GLuint profile_ids = 4;
 // The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;
+
+// The masked path's tile culling (tile_culling.cpp): the tiles' marks, read by the span vertex
+// stage of its inputs draw and blur passes (fullscreen.vert, SSS_TILE_SPANS) and by the columns'
+// draw; the columns' marks, read by the inputs draw's vertex stage only (which reads no original).
+constexpr GLuint tiles = 5;
+constexpr GLuint tile_columns = 2;
 
 // The MSAA resolve, stencil mark and write-back (which never reads the host's samples).
 // The half-resolution path's upsample (half_upsample.frag): source and pass_strength as above.
