@@ -6,6 +6,10 @@
 // centre's colour. The CPU model's bound is the same (cpu_passes::kColourLimit, cpu_filter_passes.hpp).
 // isnan() as well as the comparison: see separable_blur.frag on NVIDIA's negated comparisons.
 const float kSssColourLimit = 4.2535296e37;  // 2^125
+// What the passes' inputs hold for such a colour (pass_inputs.frag, msaa_resolve.frag), at distance
+// NaN: finite, so that no sum it might enter turns NaN, and past the bound, so that a pass without
+// follow-surface (which reads no distance) still finds it out of range and takes the centre.
+const float kSssUnusableColour = -8.507059e37;  // -2^126
 
 bool sss_in_range(vec4 c) {
   return !any(isnan(c)) && !any(isinf(c)) && all(lessThanEqual(abs(c), vec4(kSssColourLimit)));

@@ -15,7 +15,8 @@
 //   SSS_TAP_DISTANCE(a) that depth as a view distance (the fragment passes read view distances
 //                       already; the compute path linearises the host's depth)
 //   SSS_TAPS_SANITISED  1: a tap whose colour is not finite or past colour_range.glsl's bound
-//                       has colour 0 and distance NaN already (the fragment passes' inputs)
+//                       has colour kSssUnusableColour and distance NaN already (the fragment
+//                       passes' inputs)
 //   bool sss_tap_foreign   (SSS_PROFILE_IDS only) set by sss_fetch_tap: the pixel it read has
 //                       another profile or object index than the centre, and counts as the centre
 
@@ -79,8 +80,9 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
   vec3 tap = fetched.rgb;
 #if SSS_TAPS_SANITISED && SSS_FOLLOW_SURFACE
-  // The fragment passes' inputs hold such a tap as colour 0 at distance NaN (pass_inputs.frag),
-  // which the blend below turns into the centre exactly (mix(0, centre, 1)): no test per tap.
+  // The fragment passes' inputs hold such a tap at distance NaN (pass_inputs.frag), which the
+  // blend below turns into the centre exactly: no test per tap. (Without follow-surface the test
+  // below finds its colour, kSssUnusableColour, out of range.)
 #else
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #endif
@@ -91,8 +93,9 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
 #else
   float s = d;
 #endif
-  if (isnan(s) || !(s < 1.0)) s = 1.0;  // also when the tap's distance is not finite
-  tap = mix(tap, centre, s);
+  // Past the reach (also when the tap's distance is not finite): the centre itself, not mix(tap,
+  // centre, 1), which a driver may compute as tap + (centre - tap), inexact for a large tap.
+  tap = isnan(s) || !(s < 1.0) ? centre : mix(tap, centre, s);
 #endif
   return tap;
 }

@@ -1,7 +1,7 @@
 // The half-resolution path's upsample (sss.h SSS_PATH_HALF_RESOLUTION; the method and its reasons:
 // module/src/math/half_resolution.hpp): at each translucent full-size pixel whose kernel reaches
 // at least u_min_reach pixels on both axes,
-//   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X
+//   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X, kept within the range of the B texels and x_q it combined
 // B and X the half-size result and input from the four nearest half-size texels (bilinear weights
 // times 1 − the follow-surface blend of their distance to the pixel's, on texels of the pixel's
 // own index only); q the pixel and its four neighbours along the axes, x_q as the full-size passes
@@ -82,15 +82,20 @@ struct NearSite {
   float distance;
   float factor;   // the follow-surface factor at the centre's strength
 };
-void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 mass) {
+// `lowest` and `highest`: the range of the values the upsample combines, which bounds its result.
+void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 mass, inout vec3 lowest,
+              inout vec3 highest) {
   uvec4 q = texelFetch(u_source, clamp(site.pixel + offset, u_rect.xy, u_rect.zw), 0);
   float s = site.factor * abs(site.distance - sss_distance(q.a));
-  if (!(s < 1.0)) s = 1.0;
+  if (!(s < 1.0)) s = 1.0;  // also NaN: the inputs' unusable colours (pass_inputs.frag) never enter
 #if SSS_PROFILE_IDS == 1
   if ((q.a & 0xFFu) != (site.word & 0xFFu)) s = 1.0;
 #endif
-  near += w * (uintBitsToFloat(q.rgb) * (1.0 - s) + site.colour * s);
+  vec3 taken = s < 1.0 ? uintBitsToFloat(q.rgb) * (1.0 - s) + site.colour * s : site.colour;
+  near += w * taken;
   mass += w;
+  lowest = min(lowest, taken);
+  highest = max(highest, taken);
 }
 
 void main() {
@@ -120,6 +125,7 @@ void main() {
   vec2 f = vec2((pixel.x & 1) != 0 ? 0.25 : 0.75, (pixel.y & 1) != 0 ? 0.25 : 0.75);
   float weight = 0.0;
   vec3 blurred = vec3(0.0), reduced = vec3(0.0);
+  vec3 lowest = vec3(3.4e38), highest = vec3(-3.4e38);  // nothing yet (finite: ES may not make infinities)
   for (int dy = 0; dy < 2; ++dy) {
     for (int dx = 0; dx < 2; ++dx) {
       ivec2 q = clamp(base + ivec2(dx, dy), u_half_rect.xy, u_half_rect.zw);
@@ -135,6 +141,10 @@ void main() {
       weight += wq;
       blurred += wq * result.rgb;
       reduced += wq * uintBitsToFloat(h.rgb);
+      if (wq > 0.0) {
+        lowest = min(lowest, result.rgb);
+        highest = max(highest, result.rgb);
+      }
     }
   }
   if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
@@ -147,12 +157,13 @@ void main() {
   // run with masked lanes.
   vec3 near = vec3(0.0), mass = vec3(0.0);
   NearSite site = NearSite(pixel, texel.a, centre.rgb, d, factor);
-  near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass);
-  near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass);
-  near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass);
-  near_tap(site, ivec2(1, 0), beside_x * centre_y, near, mass);
-  near_tap(site, ivec2(0, 1), centre_x * beside_y, near, mass);
-  vec3 result = blurred / weight + near - mass * (reduced / weight);
-  result = max(result, min(centre.rgb, vec3(0.0)));  // no negative light from positive light
+  near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(1, 0), beside_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(0, 1), centre_x * beside_y, near, mass, lowest, highest);
+  // Not a convex sum (the near field minus its half-size stand-in): at a strong edge it could leave
+  // the range of what it combined, which the result never should (it is a blur of those values).
+  vec3 result = clamp(blurred / weight + near - mass * (reduced / weight), lowest, highest);
   o_color = sss_nearest_half(vec4(result, centre.a));
 }

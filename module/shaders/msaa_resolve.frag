@@ -73,8 +73,8 @@ void main() {
   o_distance = u_depth_mode == 0 ? sum / n : u_depth_mode == 1 ? first : u_depth_mode == 2 ? nearest : farthest;
   uint distance = floatBitsToUint(o_distance);
   vec3 rgb = o_color.rgb;
-  if (!sss_in_range(rgb)) {  // as pass_inputs.frag: colour 0 at distance NaN
-    rgb = vec3(0.0);
+  if (!sss_in_range(rgb)) {  // as pass_inputs.frag: kSssUnusableColour at distance NaN
+    rgb = vec3(kSssUnusableColour);
     distance = 0x7FC00000u;
   }
   o_taps = uvec4(floatBitsToUint(rgb), distance);

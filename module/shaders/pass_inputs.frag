@@ -7,10 +7,11 @@
 // (RGBA32F and R32F are not on ES 3.0), and they keep every bit: the passes get exactly the float
 // view_distance() gives, NaN and infinity included.
 //
-// A colour that is not finite, or past colour_range.glsl's bound, is written as 0 at distance NaN:
-// the follow-surface blend turns such a tap into the centre's colour exactly, as the test per tap
-// it replaces did (footprint_taps.glsl, SSS_TAPS_SANITISED), and a centre with a NaN distance is
-// left alone, as one with such a colour was. The strength is written as it is.
+// A colour that is not finite, or past colour_range.glsl's bound, is written as kSssUnusableColour
+// at distance NaN: the follow-surface blend turns such a tap into the centre's colour exactly, as
+// the test per tap it replaces did (footprint_taps.glsl, SSS_TAPS_SANITISED); a pass without
+// follow-surface finds the colour out of range, as it found the original; and a centre with a NaN
+// distance is left alone, as one with such a colour was. The strength is written as it is.
 //
 // Compile-time switches (module/src/gl/shader_variants.cpp):
 //   SSS_LINEAR_DEPTH   0: hardware depth, linearised here; 1: the host's depth is a view distance
@@ -47,7 +48,7 @@ void main() {
   distance = (distance & 0xFFFFFF00u) | (texelFetch(u_profile_ids, pixel, 0).r & 0xFFu);
 #endif
   if (!sss_in_range(color.rgb)) {
-    color.rgb = vec3(0.0);
+    color.rgb = vec3(kSssUnusableColour);
     distance = 0x7FC00000u | (distance & 0xFFu);  // NaN (with R8UI indices, the index kept)
   }
   o_taps = uvec4(floatBitsToUint(color.rgb), distance);

@@ -32,6 +32,9 @@ struct Plane {
 // (module/shaders/colour_range.glsl: past it the float arithmetic could overflow). A colour outside
 // keeps its value, and as a tap counts as the centre's colour.
 constexpr float kColourLimit = 0x1p125f;
+// What the fragment passes' inputs hold for a colour past the limit (colour_range.glsl's
+// kSssUnusableColour): finite and past the limit.
+constexpr float kUnusableColour = -0x1p126f;
 
 inline bool in_colour_range(const float* v, int n) {
   for (int i = 0; i < n; ++i) {

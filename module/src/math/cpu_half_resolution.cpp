@@ -14,6 +14,7 @@ namespace sss::math {
 namespace {
 
 using cpu_passes::in_colour_range;
+using cpu_passes::kUnusableColour;
 
 std::uint32_t bits_of(float f) {
   std::uint32_t b = 0;
@@ -54,8 +55,8 @@ Frame full_inputs(const CpuFilterImage& image, const PassConstants& shared, cons
     std::uint32_t word = bits_of(linearise_depth(shared, image.depth[i]));
     if (ids != nullptr) word = (word & 0xFFFFFF00u) | (ids[i] & 0xFFu);
     t.colour = {c[0], c[1], c[2]};
-    if (!in_colour_range(c, 3)) {
-      t.colour = {0.0f, 0.0f, 0.0f};
+    if (!in_colour_range(c, 3)) {  // pass_inputs.frag: kSssUnusableColour at distance NaN
+      t.colour = {kUnusableColour, kUnusableColour, kUnusableColour};
       word = 0x7FC00000u | (word & 0xFFu);
     }
     t.word = word;
@@ -217,24 +218,35 @@ struct Upsample {
     if (!(std::min(reach_x, reach_y) >= min_reach)) return false;
     float weight = 0.0f;
     std::array<float, 3> blurred{}, reduced{};
-    neighbours(x, y, t.word, d, look.depth_factor / a, &weight, &blurred, &reduced);
+    Range range;
+    neighbours(x, y, t.word, d, look.depth_factor / a, &weight, &blurred, &reduced, &range);
     if (!(weight >= kHalfResolutionMinWeight)) return false;
     std::array<float, 3> near{}, mass{};
     near_field(x, y, t, d, look.depth_factor / a,
                footprint_near_weights(term.horizontal.footprint, kernel.spacing, step_x),
-               footprint_near_weights(term.vertical.footprint, kernel.spacing, step_y), &near, &mass);
+               footprint_near_weights(term.vertical.footprint, kernel.spacing, step_y), &near, &mass, &range);
     for (std::size_t c = 0; c < 3; ++c) {
       float v = blurred[c] / weight + near[c] - mass[c] * (reduced[c] / weight);
-      v = std::max(v, std::min(centre[c], 0.0f));  // no negative light from positive light
+      v = std::min(std::max(v, range.lowest[c]), range.highest[c]);  // within what it combined
       out[c] = output_is_half ? round_to_half(v) : v;
     }
     return true;
   }
 
+  // The range of the values a pixel's upsample combines (half_upsample.frag's lowest, highest):
+  // the half-size results it weighs and its near field's pixels as taken.
+  struct Range {
+    std::array<float, 3> lowest = {3.4e38f, 3.4e38f, 3.4e38f}, highest = {-3.4e38f, -3.4e38f, -3.4e38f};
+    void add(std::size_t c, float v) {
+      lowest[c] = std::min(lowest[c], v);
+      highest[c] = std::max(highest[c], v);
+    }
+  };
+
   // The full-size passes' near field at (x, y): the pixel and its four neighbours along the axes as
   // their taps take them, weighed by the product of the two passes' weights, and that weight's sum.
   void near_field(int x, int y, const InputTexel& t, float d, float factor, const NearWeights& h,
-                  const NearWeights& v, std::array<float, 3>* near, std::array<float, 3>* mass) const {
+                  const NearWeights& v, std::array<float, 3>* near, std::array<float, 3>* mass, Range* range) const {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if (dx != 0 && dy != 0) continue;  // the diagonals: half_resolution.hpp says why not
@@ -247,8 +259,10 @@ struct Upsample {
         for (std::size_t c = 0; c < 3; ++c) {
           const float wx = dx == 0 ? h.centre[c] : h.beside[c], wy = dy == 0 ? v.centre[c] : v.beside[c];
           const float w = wx * wy;
-          (*near)[c] += w * (q.colour[c] * (1.0f - s) + t.colour[c] * s);
+          const float taken = s < 1.0f ? q.colour[c] * (1.0f - s) + t.colour[c] * s : t.colour[c];
+          (*near)[c] += w * taken;
           (*mass)[c] += w;
+          range->add(c, taken);
         }
       }
     }
@@ -256,7 +270,7 @@ struct Upsample {
 
   // The four nearest half-size texels: bilinear weight times the depth weight, on the pixel's index.
   void neighbours(int x, int y, std::uint32_t word, float d, float factor, float* weight,
-                  std::array<float, 3>* blurred, std::array<float, 3>* reduced) const {
+                  std::array<float, 3>* blurred, std::array<float, 3>* reduced, Range* range) const {
     const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
     const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
     for (int dy = 0; dy < 2; ++dy) {
@@ -274,6 +288,7 @@ struct Upsample {
         for (std::size_t c = 0; c < 3; ++c) {
           (*blurred)[c] += wq * result.rgba[qk * 4 + c];
           (*reduced)[c] += wq * q.colour[c];
+          if (wq > 0.0f) range->add(c, result.rgba[qk * 4 + c]);
         }
       }
     }

@@ -15,7 +15,10 @@
 // passes' weights at offsets 0 and ±1: footprint_near_weights). The half-size passes see only 2x2
 // means, so the kernel's near field (the centre and the first taps, which hold skin's narrow peak
 // and eq. (1)'s unscattered light) is taken at full size instead and its half-size stand-in, that
-// mass times X, taken out. Measured on the footprint sweep's CPU model, as the smallest kernel
+// mass times X, taken out. That is not a convex sum, so at a strong edge it could leave the range of
+// the values it combined (the B texels it weighs and the x_q), where a blur of them cannot be: the
+// result is clamped to that range per channel (which also keeps positive light from turning
+// negative). Measured on the footprint sweep's CPU model, as the smallest kernel
 // reach that keeps the margin below: 48 pixels with the centre alone (q = the pixel), 12 with the
 // whole 3x3 ring, 8 with the centre and the four axis neighbours (the diagonals' tiny product
 // weights put more mass on X's 2x2 means than their detail is worth); docs/benchmarks/half-resolution.md.
