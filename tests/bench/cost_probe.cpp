@@ -10,7 +10,11 @@
 // fastest: two builds' probes run in turn on one machine give the two times of "the same run".
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
-//                  [--path default|fragment|masked|auto|compute|half] [--frames N] [--profiles N] [--msaa 0|4]
+//                  [--path default|fragment|masked|auto|compute|half|copy] [--frames N] [--profiles N] [--msaa 0|4]
+//
+// --path copy: not the library but the benchmark's yardstick, its two-pass full-screen copy
+// (copy_method.cpp) of the scene into the frame's colour: the `× copy` of the benchmark's times in
+// instructions, which repeat where the copy's wall time moves by a fifth from run to run.
 //
 // --msaa 4: the MSAA path written back in place, as the MSAA study's write-back row: the scene made
 // at twice the size, 4 samples per pixel (RGBA16F colour, DEPTH_COMPONENT32F depth, see
@@ -35,6 +39,7 @@
 #include <vector>
 
 #include "gpu_scene.hpp"
+#include "method.hpp"
 #include "host_gl.hpp"
 #include "multisample_textures.hpp"
 #include "scenes/scenes.hpp"
@@ -55,7 +60,26 @@ struct Options {
   int frames = 0;  // timed frames after the counted one
   int profiles = 0;  // 0: sss_set_settings and no profile texture; else sss_set_profiles with this many
   int msaa = 0;      // 4: the MSAA path (multisampled colour and depth, written back)
+  bool copy = false;  // the benchmark's two-pass copy instead of the library
 };
+
+// --path copy: the benchmark's copy, once to build and allocate, then once counted.
+int count_copy(const sss_bench::GpuScene& scene, GLuint color) {
+  const std::unique_ptr<sss_bench::Method> copy = sss_bench::make_copy_method();
+  std::string error;
+  for (int frame_index = 0; frame_index < 2; ++frame_index) {
+    if (frame_index == 1) CALLGRIND_START_INSTRUMENTATION;
+    const bool ok = copy->run(scene, color, &error);
+    glFinish();
+    if (frame_index == 1) CALLGRIND_STOP_INSTRUMENTATION;
+    if (!ok) {
+      std::fprintf(stderr, "sss_cost_probe: the copy: %s\n", error.c_str());
+      return 1;
+    }
+  }
+  std::printf("%dx%d two-pass copy: frame done\n", scene.width, scene.height);
+  return 0;
+}
 
 bool parse(int argc, char** argv, Options* o) {
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -80,6 +104,8 @@ bool parse(int argc, char** argv, Options* o) {
         o->path = SSS_PATH_HALF_RESOLUTION;
       } else if (value == "fragment" || value == "default") {
         o->path = SSS_PATH_FRAGMENT;
+      } else if (value == "copy") {
+        o->copy = true;
       } else {
         return false;
       }
@@ -174,6 +200,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "sss_cost_probe: the context has no %d-sample textures\n", o.msaa);
       return 1;
     }
+  }
+
+  if (o.copy) {
+    const int r = count_copy(scene, color);
+    glDeleteTextures(1, &color);
+    sss_bench::destroy_scene(&scene);
+    sss_headless_destroy(headless);
+    return r;
   }
 
   sss_create_desc desc = {};
