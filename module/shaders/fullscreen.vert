@@ -16,7 +16,7 @@
 #ifdef SSS_TILE_SPANS
 SSS_BINDING(5) uniform highp sampler2D u_tiles;         // r: 1 for a tile holding a translucent pixel
 #if SSS_TILE_SPANS == 2
-SSS_BINDING(3) uniform highp sampler2D u_tile_columns;  // r: 1 for a column of tiles holding one
+SSS_BINDING(2) uniform highp sampler2D u_tile_columns;  // r: 1 for a column of tiles holding one
 #endif
 uniform vec4 u_tile_grid;  // xy: the tiles across and down the rectangle, zw: a tile's size in NDC
 

@@ -14,7 +14,7 @@
 # compute copy: the row "close-up on the compute path ... over the two-pass compute copy" of
 # docs/NAME.md, with the renderer and date at its top) in a few minutes of device time:
 #   m=copy,copy-compute,no-scattering,separable-in-place,separable-region,separable-masked
-#   m=$m,separable-masked-region,separable-compute,separable-compute-region,separable-auto-region
+#   m=$m,separable-masked-region,separable-half,separable-compute,separable-compute-region,separable-auto-region
 #   scripts/gpu/on-device.sh bench benchmarks-h100 420 -- --size 1920x1080:head-close,head-mid,head-far,empty \
 #     --taps 17 --methods "$m" --warmup 30 --reps 61 --no-heat-maps
 set -uo pipefail

@@ -25,7 +25,9 @@ namespace sss_test {
 namespace {
 
 constexpr float kTolerance = 3e-3f;
-constexpr int kWidth = 150, kHeight = 130;  // 10 x 9 tiles, the last of each partial; 3 bands, the last partial
+// 10 x 17 tiles, the last of each partial; 5 bands of 4 rows of tiles, the last partial. Bands 1 and
+// 3 hold no translucent pixel: the inputs draw reaches them only through the columns' marks.
+constexpr int kWidth = 150, kHeight = 260;
 
 // The relief scene (colours and depths everywhere, so the taps read real neighbours) with alpha 0
 // but at a few sparse places.
@@ -36,12 +38,12 @@ SyntheticScene sparse_scene() {
   const auto translucent = [&s](int x, int y, float alpha) {
     s.color[(static_cast<std::size_t>(y) * kWidth + x) * 4 + 3] = alpha;
   };
-  translucent(16, 16, 1.0f);          // the first pixel of a tile (band 0's second row of tiles)
-  translucent(15, 63, 0.8f);          // the last pixel of a tile, in band 0's last row of tiles
-  translucent(kWidth - 1, 70, 1.0f);  // the last, partial column of tiles
-  translucent(40, kHeight - 1, 0.6f);  // the last, partial row (and band)
-  for (int y = 96; y < 100; ++y) {
-    for (int x = 100; x < 104; ++x) translucent(x, y, 0.9f);  // a cluster
+  translucent(16, 16, 1.0f);           // the first pixel of a tile (band 0's second row of tiles)
+  translucent(15, 63, 0.8f);           // the last pixel of a tile, next to band 1 (empty)
+  translucent(kWidth - 1, 150, 1.0f);  // the last, partial column of tiles (band 2)
+  translucent(40, kHeight - 1, 0.6f);  // the last, partial row of tiles (band 4, partial)
+  for (int y = 128; y < 132; ++y) {
+    for (int x = 100; x < 104; ++x) translucent(x, y, 0.9f);  // a cluster at band 2's first row
   }
   return s;
 }
@@ -97,7 +99,7 @@ TEST_F(TileCulling, SparsePixelsAfterAFullFrameGiveThePlainResultBitForBit) {
     c.separate_output = v.separate;
     c.depth = v.depth;
     c.use_region = v.region;
-    c.region = {3, 5, 139, 121};  // odd offsets: the tiles start at the region's corner
+    c.region = {3, 5, 139, 251};  // odd offsets: the tiles start at the region's corner
     std::vector<float> results[2];
     for (int masked = 0; masked < 2; ++masked) {
       c.settings = wide(masked ? SSS_PATH_FRAGMENT_MASKED : SSS_PATH_FRAGMENT);

@@ -5,7 +5,9 @@
 // Two small draws first mark which 16x16 tiles hold a translucent pixel (tile_mark.frag: one
 // fragment per tile, stopping at the first such pixel) and which columns of tiles do; the inputs
 // draw and the blur passes then draw bands of tiles (fullscreen.vert's SSS_TILE_SPANS) instead of
-// one triangle, and pixels outside them keep the cleared culling depth (not translucent).
+// one triangle. The passes' bands lie inside the inputs draw's, so they never test a pixel whose
+// culling depth that draw did not write; into a separate output, whose copy of the untouched
+// pixels tests every pixel, the inputs draw clears the culling depth first (not translucent).
 #include "debug_label.hpp"
 #include "runners.hpp"
 #include "texture_units.hpp"
