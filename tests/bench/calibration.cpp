@@ -80,12 +80,7 @@ sss::math::PassConstants case_constants(const sss::math::FilterSettings& setting
 }
 
 sss::math::CpuFilterImage case_image(const CalibrationCase& c) {
-  sss::math::CpuFilterImage image;
-  image.width = c.width;
-  image.height = c.height;
-  image.color = c.input_rgba.data();
-  image.depth = c.window_depth.data();
-  return image;
+  return sss::math::cpu_filter_image(c.width, c.height, c.input_rgba.data(), c.window_depth.data());
 }
 
 std::vector<CaseScore> score_settings(const sss::math::FilterSettings& settings,

@@ -41,11 +41,8 @@ Model model_for(const SyntheticScene& scene, float world_units_per_mm) {
 }
 
 sss::math::CpuFilterImage image_of(const SyntheticScene& scene) {
-  sss::math::CpuFilterImage image;
-  image.width = scene.width;
-  image.height = scene.height;
-  image.color = scene.color.data();
-  image.depth = scene.window_depth.data();
+  sss::math::CpuFilterImage image =
+      sss::math::cpu_filter_image(scene.width, scene.height, scene.color.data(), scene.window_depth.data());
   image.intermediate_is_half = false;
   return image;
 }

@@ -26,6 +26,16 @@ struct CpuFilterImage {
   bool intermediate_is_half = true;
 };
 
+// An image of `width` x `height` pixels with these colour and depth planes, the rest as above.
+inline CpuFilterImage cpu_filter_image(int width, int height, const float* color, const float* depth) {
+  CpuFilterImage image;
+  image.width = width;
+  image.height = height;
+  image.color = color;
+  image.depth = depth;
+  return image;
+}
+
 // Runs both passes of every term of `kernel` (pass_kernel.hpp) into `out` (RGBA, width·height·4
 // floats; may not alias color). Pixels that are outside the mask, have alpha <= 0 (after the
 // intermediate's rounding), a non-finite colour or alpha (or one past +-2^125: kColourLimit), or an
