@@ -45,11 +45,11 @@ uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Ga
 #endif
 #ifdef SSS_HALF_TAPS
 // The tap count and the sparse layout's spacing as constants of the variant (the fragment passes:
-// SSS_SPACING is math::footprint_spacing(SSS_HALF_TAPS), written by shader_variants.cpp), so the
-// compiler sees the loop's bound and folds each step's spacing.
+// SSS_SPACING(i) selects math::footprint_spacing(SSS_HALF_TAPS)[i], written by shader_variants.cpp
+// as a chain of selects, not an array: see there), so the compiler sees the loop's bound and folds
+// each step's spacing.
 const int kSssHalfTaps = SSS_HALF_TAPS;       // the most taps on either side
-const float kSssSpacing[SSS_HALF_TAPS] = float[](SSS_SPACING);
-#define SSS_SPACING_AT(i) kSssSpacing[i]
+#define SSS_SPACING_AT(i) SSS_SPACING(i)
 #else
 uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
 uniform int u_half_taps;                      // the most taps on either side

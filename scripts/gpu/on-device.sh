@@ -5,7 +5,8 @@
 #
 #   scripts/gpu/on-device.sh [tests SECONDS] [bench NAME SECONDS -- SSS_BENCH_ARGS...]...
 #
-#   tests   the GL suites on the NVIDIA EGL device (egl-device): $OUT/gl-tests.log
+#   tests   the GL suites on the NVIDIA EGL device (egl-device): $OUT/gl-tests.log (failures in full,
+#           passing tests not listed: --gtest_brief)
 #   bench   sss_bench --backend egl-device with the given arguments; its output folder and
 #           results document (docs/NAME.md, docs/NAME/) packed into $OUT/NAME.tar.gz, its log
 #           in $OUT/NAME.log
@@ -46,7 +47,7 @@ while [[ $# -gt 0 ]]; do
   case "$step" in
     tests)
       for suite in sss_gl_tests sss_gl_state_tests sss_gl_stress_tests; do
-        timeout "$limit" "build-gpu/tests/$suite" --sss-backend=egl-device 2>&1 | tail -n 400 >>"$out/gl-tests.log"
+        timeout "$limit" "build-gpu/tests/$suite" --sss-backend=egl-device --gtest_brief=1 2>&1 | tail -n 2000 >>"$out/gl-tests.log"
         rc=${PIPESTATUS[0]}
         echo "$suite: exit $rc" | tee -a "$out/gl-tests.log"
         [[ $rc -eq 0 ]] || status=1
