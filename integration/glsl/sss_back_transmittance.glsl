@@ -74,7 +74,8 @@ vec3 sss_back_transmittance(sampler2D back_irradiance, sampler2D back_normal, ve
     float angle = float(i) * 2.39996322973;
     ivec2 texel = ivec2(clamp(floor(pixel + half_extent * radius * vec2(cos(angle), sin(angle))), lo, hi));
     vec4 back = texelFetch(back_irradiance, texel, 0);
-    if (!(back.a > 0.0) || isinf(back.a)) continue;
+    // isnan() spelt out: NVIDIA's compiler takes !(a > 0.0) for a <= 0.0, which NaN fails.
+    if (isnan(back.a) || !(back.a > 0.0) || isinf(back.a)) continue;
     vec3 x_t = sss_view_point(vec2(texel) + 0.5, back.a, projection, viewport);
     vec3 n_t = texelFetch(back_normal, texel, 0).xyz;
     float facing = sqrt(max(0.0, -dot(n_t, n_o)));

@@ -87,7 +87,9 @@ void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 m
               inout vec3 highest) {
   uvec4 q = texelFetch(u_source, clamp(site.pixel + offset, u_rect.xy, u_rect.zw), 0);
   float s = site.factor * abs(site.distance - sss_distance(q.a));
-  if (!(s < 1.0)) s = 1.0;  // also NaN: the inputs' unusable colours (pass_inputs.frag) never enter
+  // Also NaN (isnan() spelt out: NVIDIA's compiler takes !(s < 1.0) for s >= 1.0, which NaN fails):
+  // the inputs' unusable colours (pass_inputs.frag) never enter.
+  if (isnan(s) || !(s < 1.0)) s = 1.0;
 #if SSS_PROFILE_IDS == 1
   if ((q.a & 0xFFu) != (site.word & 0xFFu)) s = 1.0;
 #endif
@@ -118,7 +120,8 @@ void main() {
   vec4 footprint_x = table(SSS_CDF_ENTRIES, 2 * profile), footprint_y = table(SSS_CDF_ENTRIES, 2 * profile + 1);
   float reach_x = min(footprint_x.x * step_x, 1.0e6);
   float reach_y = min(footprint_y.x * step_y, 1.0e6);
-  if (!(min(reach_x, reach_y) >= u_min_reach)) discard;  // narrow: the full-size passes
+  float reach = min(reach_x, reach_y);
+  if (isnan(reach) || !(reach >= u_min_reach)) discard;  // narrow: the full-size passes
 
   float factor = look.z / a;
   ivec2 base = (pixel - 1) >> 1;  // the lower-left of the four nearest half-size texels
@@ -131,12 +134,12 @@ void main() {
       ivec2 q = clamp(base + ivec2(dx, dy), u_half_rect.xy, u_half_rect.zw);
       uvec4 h = texelFetch(u_half_source, q, 0);
       vec4 result = texelFetch(u_half_result, q, 0);
-      if (!(result.a > 0.0)) continue;  // not translucent (or left alone by the passes)
+      if (isnan(result.a) || !(result.a > 0.0)) continue;  // not translucent (or left alone by the passes)
 #if SSS_PROFILE_IDS == 1
       if ((h.a & 0xFFu) != (texel.a & 0xFFu)) continue;
 #endif
       float s = factor * abs(d - sss_distance(h.a));
-      if (!(s < 1.0)) s = 1.0;
+      if (isnan(s) || !(s < 1.0)) s = 1.0;
       float wq = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y) * (1.0 - s);
       weight += wq;
       blurred += wq * result.rgb;
@@ -147,7 +150,7 @@ void main() {
       }
     }
   }
-  if (!(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
+  if (isnan(weight) || !(weight >= u_min_weight)) discard;  // no neighbour on this surface: the full-size passes
   // The near field at full size: the pixel and its four neighbours along the axes as the passes
   // take them (not the diagonals: module/src/math/half_resolution.hpp).
   vec3 beside_x, beside_y;

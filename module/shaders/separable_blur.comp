@@ -12,9 +12,9 @@
 //     small subject) writes what the pass leaves there (SSS_OUTSIDE) and reads no apron and takes
 //     no taps. (A rasteriser that runs both sides of every branch, as llvmpipe, saves nothing by
 //     this; a GPU, whose work groups take such branches as a whole, does.)
-//   - The vertical pass's tiles are SSS_LINES columns wide and consecutive invocations take
-//     neighbouring columns, so a row of the tile is read as neighbouring texels (the horizontal
-//     pass's rows are so already).
+//   - With SSS_LINES > 1 the vertical pass's tiles are that many columns wide and consecutive
+//     invocations take neighbouring columns, so a row of the tile is read as neighbouring texels
+//     (the module's tiles are one line: module/src/gl/shader_constants.hpp says why).
 //
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp), as in
 // separable_blur.frag: SSS_OUTSIDE (0 write the centre, 1 leave the pixel as it is, 2 copy

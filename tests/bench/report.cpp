@@ -267,7 +267,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "reaches at least " << fmt(sss::math::kHalfResolutionMinReachPixels, "%.0f") << " pixels (`SSS_PATH_HALF_RESOLUTION`; "
            "the threshold measured on the footprint sweep: docs/benchmarks/half-resolution.md), and the full-size "
            "passes behind the same culling elsewhere. `separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
-           "each work group caches a tile of rows, then of columns, in shared memory with as much apron as its "
+           "each work group caches a segment of a row, then of a column, in shared memory with as much apron as its "
            "widest kernel reaches, and a group with no translucent pixel takes no taps), "
            "alone and with the region; `separable-auto-region` lets the library pick the "
            "fastest path (`SSS_PATH_AUTO`: timed on GPUs, the masked fragment path on software rasterisers). `% of "

@@ -178,10 +178,10 @@ TEST_F(ComputePath, EveryVariantOfTheShader) {
 
 TEST_F(ComputePath, AKernelWiderThanTheCachedSpanReadsTheTextures) {
   // A work group caches a bounded apron on either end of a row or column (shader_constants.hpp
-  // kComputeTiles: today 96 and 56 pixels), and fills only as far as its widest kernel reaches.
-  // 300 px wide at about 40 px per profile mm: the 17-tap kernel reaches ~80 px each way, past the
-  // vertical pass's apron; 600 px at twice the scale ~160 px, past both (and past the 64 pixels
-  // the path cached before): the outer taps read the textures, and the image must not change.
+  // kComputeTiles: today 64 pixels in both passes), and fills only as far as its widest kernel
+  // reaches. 300 px wide at about 40 px per profile mm: the 17-tap kernel reaches ~80 px each way,
+  // past the apron; 600 px at twice the scale ~160 px, past any apron the path has had (96 at
+  // most): the outer taps read the textures, and the image must not change.
   struct Wide {
     int width;
     float scale;

@@ -143,25 +143,34 @@ TEST_F(Invariants, NonFinitePixelsDoNotSpread) {
   scene.color[bad[2]] = nan;  // alpha
   // With and without follow-surface: the passes' inputs hold such a pixel as a tap that must count
   // as the centre either way (without follow-surface no depth test stands in for the colour's).
-  for (const uint32_t flags : {uint32_t{SSS_FOLLOW_SURFACE}, 0u}) {
-    SCOPED_TRACE(flags != 0 ? "follow-surface" : "no follow-surface");
-    FilterCase c;
-    c.settings = wide_settings();
-    c.settings.flags = flags;
-    const FilterOutcome o = run_case(scene, c);
-    ASSERT_EQ(o.result, SSS_OK);
-    for (std::size_t i = 0; i < o.gpu.size(); i += 4) {
-      const bool is_bad = i == bad[0] || i + 1 == bad[1] || i + 3 == bad[2];
-      if (is_bad) {
-        ASSERT_EQ(0, std::memcmp(&o.gpu[i], &o.input[i], 16)) << "pixel " << i / 4;
-        continue;
+  // And through the half-resolution upsample, whose surface weights must treat a NaN distance as
+  // off the surface (on NVIDIA, !(s < 1.0) alone let it through).
+  for (const uint32_t path : {uint32_t{SSS_PATH_AUTO}, uint32_t{SSS_PATH_HALF_RESOLUTION}}) {
+    for (const uint32_t flags : {uint32_t{SSS_FOLLOW_SURFACE}, 0u}) {
+      SCOPED_TRACE(flags != 0 ? "follow-surface" : "no follow-surface");
+      SCOPED_TRACE(path == SSS_PATH_AUTO ? "automatic path" : "half resolution");
+      FilterCase c;
+      c.settings = wide_settings();
+      c.settings.flags = flags;
+      c.settings.path = path;
+      const FilterOutcome o = run_case(scene, c);
+      ASSERT_EQ(o.result, SSS_OK);
+      for (std::size_t i = 0; i < o.gpu.size(); i += 4) {
+        const bool is_bad = i == bad[0] || i + 1 == bad[1] || i + 3 == bad[2];
+        if (is_bad) {
+          ASSERT_EQ(0, std::memcmp(&o.gpu[i], &o.input[i], 16)) << "pixel " << i / 4;
+          continue;
+        }
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+          ASSERT_TRUE(std::isfinite(o.gpu[i + ch])) << "pixel " << i / 4;
+          EXPECT_NEAR(o.gpu[i + ch], o.input[i + ch], kHalfUlp * o.input[i + ch] + 1e-6f) << "pixel " << i / 4;
+        }
       }
-      for (std::size_t ch = 0; ch < 3; ++ch) {
-        ASSERT_TRUE(std::isfinite(o.gpu[i + ch])) << "pixel " << i / 4;
-        EXPECT_NEAR(o.gpu[i + ch], o.input[i + ch], kHalfUlp * o.input[i + ch] + 1e-6f) << "pixel " << i / 4;
+      // (The half path is not the CPU model's image; on this flat plane the check above holds it.)
+      if (path != SSS_PATH_HALF_RESOLUTION) {
+        EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), 3e-3f);
       }
     }
-    EXPECT_LE(largest_relative_difference(o.gpu, o.cpu), 3e-3f);
   }
 }
 

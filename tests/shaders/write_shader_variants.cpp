@@ -155,6 +155,18 @@ void write_compute(Writer* out) {
       }
     }
   }
+  // Tiles of several lines (SSS_LINES > 1, several pixels per invocation), which the shader keeps
+  // for hardware that prefers them (shader_constants.hpp), on the default's switches.
+  constexpr gl::ComputeTile lines{128, 8, 56};
+  static_assert(gl::compute_shared_bytes(lines) <= 32768);
+  for (int pass = 0; pass < gl::kComputePassCount; ++pass) {
+    gl::BlurVariant v;
+    v.follow_surface = 1;
+    v.outside = pass == static_cast<int>(gl::ComputePass::vertical) ? gl::BlurOutside::discard
+                                                                    : gl::BlurOutside::write_centre;
+    out->write(std::string("430_blur_compute_lines8_") + pass_names[pass] + ".comp",
+               gl::compute_recipe(gl::compute_blur_defines(v, 0, static_cast<gl::ComputePass>(pass), &lines)));
+  }
 }
 
 // Prints stdin with the locations named after `stage`'s parts.

@@ -18,15 +18,19 @@ inline constexpr int kMaxHalfTaps = math::kMaxFootprintHalfTaps;
 // `lines` rows (horizontal pass) or columns (vertical pass) of `segment` pixels each, and cache the
 // tile with up to `apron` pixels on both ends of each line in shared memory (SSS_THREADS,
 // SSS_SEGMENT, SSS_LINES, SSS_APRON). A group fills only as much of the apron as its widest kernel
-// reaches (taps past the cached span read the textures, so any apron gives the same image). The
-// vertical pass's tiles are 8 columns wide so that the invocations that read one row of the tile
-// read 8 neighbouring texels (64 bytes of RGBA16F: two whole 32-byte sectors) instead of one
-// column's texels a row apart.
+// reaches (taps past the cached span read the textures, so any apron gives the same image).
+// One line of 128 pixels and one pixel per invocation, in both passes: on an NVIDIA H200 (1080p
+// head close-up, 17 taps, docs/benchmarks-gpu-passes.md) that pair took 0.105 ms, against 0.180 ms
+// for vertical tiles of 8 columns with four pixels per invocation (whose rows read 64 contiguous
+// bytes, which did not make up for a quarter of the invocations running four tap loops each),
+// 0.109-0.119 ms for the other one-pixel-per-invocation tiles tried (256 or 512 pixels, 2 or 4
+// columns) and 0.22 ms for 64-pixel groups. SSS_LINES > 1 stays supported (shaders.glslang builds
+// such a variant) for hardware that prefers it.
 struct ComputeTile {
   int segment, lines, apron;
 };
-inline constexpr int kComputeThreads = 256;
-inline constexpr ComputeTile kComputeTiles[2] = {{256, 1, 96}, {128, 8, 56}};  // horizontal, vertical
+inline constexpr int kComputeThreads = 128;
+inline constexpr ComputeTile kComputeTiles[2] = {{128, 1, 64}, {128, 1, 64}};  // horizontal, vertical
 // Shared memory: a vec4 per cached texel and one uint, within GL 4.3's minimum of 32768 bytes.
 inline constexpr int compute_shared_bytes(const ComputeTile& t) { return 16 * t.lines * (t.segment + 2 * t.apron) + 16; }
 static_assert(compute_shared_bytes(kComputeTiles[0]) <= 32768 && compute_shared_bytes(kComputeTiles[1]) <= 32768);

@@ -65,9 +65,10 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
   return text;
 }
 
-std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass) {
+std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass,
+                                 const ComputeTile* shape) {
   const int axis = pass == ComputePass::vertical ? 1 : 0;
-  const ComputeTile& tile = kComputeTiles[axis];
+  const ComputeTile& tile = shape != nullptr ? *shape : kComputeTiles[axis];
   char defines[256];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_AXIS %d\n#define SSS_MARKED %d\n#define SSS_THREADS %d\n#define SSS_SEGMENT %d\n"

@@ -73,8 +73,11 @@ inline constexpr int kComputeImageFormatCount = 3;
 // compute_runner.cpp) and the vertical pass (SSS_AXIS, SSS_MARKED).
 enum class ComputePass : int { horizontal = 0, horizontal_marked = 1, vertical = 2 };
 inline constexpr int kComputePassCount = 3;
-// The blur variant's switches, then the compute shader's (pass, tile, image format).
-std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass);
+struct ComputeTile;  // shader_constants.hpp
+// The blur variant's switches, then the compute shader's (pass, tile, image format). `tile`:
+// kComputeTiles[the pass's axis] unless given (shaders.glslang also builds another shape).
+std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass,
+                                 const ComputeTile* tile = nullptr);
 
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
