@@ -11,9 +11,8 @@
 //   struct TapSite      what the shader needs to find this pixel's taps
 //   vec4 sss_fetch_tap(TapSite site, float offset)
 //                       the pixel `offset` pixels from the centre along the pass's axis, kept in
-//                       u_clamp: rgb its colour, a its depth (read only with SSS_FOLLOW_SURFACE)
-//   SSS_TAP_DISTANCE(a) that depth as a view distance (the fragment passes read view distances
-//                       already; the compute path linearises the host's depth)
+//                       u_clamp: rgb its colour, a its view distance (read only with
+//                       SSS_FOLLOW_SURFACE)
 //   SSS_TAPS_SANITISED  1: a tap whose colour is not finite or past colour_range.glsl's bound
 //                       has colour kSssUnusableColour and distance NaN already (the fragment
 //                       passes' inputs)
@@ -87,7 +86,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #endif
 #if SSS_FOLLOW_SURFACE
-  float d = follow_surface * abs(centre_distance - SSS_TAP_DISTANCE(fetched.a));
+  float d = follow_surface * abs(centre_distance - fetched.a);
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else

@@ -71,9 +71,10 @@ const float kReachMargin = 1.5;  // the outermost jittered tap may read past the
 const float kReachMargin = 1.0;
 #endif
 
-// rgb: colour; a: raw depth (as the fragment shader fetches it; in the apron 0 without
-// follow-surface, which reads no tap's depth). One vec4 per texel: a tap's two texels are two
-// 128-bit shared loads.
+// rgb: colour; a: view distance (depth.glsl's view_distance of the host's depth, worked out once
+// per texel as it is cached rather than once per tap that reads it, as the fragment passes' inputs
+// draw does; in the apron 0 without follow-surface, which reads no tap's distance). One vec4 per
+// texel: a tap's two texels are two 128-bit shared loads.
 shared vec4 s_texel[SSS_LINES * kSpan];
 // The group's widest reach in pixels plus one (at most SSS_APRON); 0: no pixel of it is blurred.
 shared uint s_extent;
@@ -99,9 +100,9 @@ ivec2 tile_pixel(int e) {
 #endif
 }
 
-float tap_depth(ivec2 texel) {
+float tap_distance(ivec2 texel) {
 #if SSS_FOLLOW_SURFACE
-  return texelFetch(u_depth, texel, 0).r;
+  return view_distance(texelFetch(u_depth, texel, 0).r);
 #else
   return 0.0;
 #endif
@@ -123,10 +124,9 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
   int i = along_tap - site.cache_start;
   if (i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
   ivec2 texel = kAxis * along_tap + site.row;
-  return vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
+  return vec4(texelFetch(u_source, texel, 0).rgb, tap_distance(texel));
 }
 
-#define SSS_TAP_DISTANCE(a) view_distance(a)  // the cache holds the host's raw depth
 #define SSS_TAPS_SANITISED 0                   // and the host's colour as it is
 #include "footprint_taps.glsl"
 
@@ -193,7 +193,7 @@ void main() {
         float reach = min(SSS_FOOTPRINT.x * step_pixels[k], 1.0e6) * kReachMargin;
         reach_of_mine = max(reach_of_mine, uint(min(ceil(reach) + 1.0, float(SSS_APRON))));
       }
-      s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, raw);
+      s_texel[cache_index(tile.x, SSS_APRON + tile.y)] = vec4(colour.rgb, centre_distance);
     }
   }
   if (reach_of_mine > 0u) atomicMax(s_extent, reach_of_mine);
@@ -214,7 +214,7 @@ void main() {
       int along = cache_start + i, across = line_start + line;
       if (along >= along_start && along < along_end && across < across_end) {
         ivec2 texel = kAxis * along + kAcross * across;
-        s_texel[cache_index(line, i)] = vec4(texelFetch(u_source, texel, 0).rgb, tap_depth(texel));
+        s_texel[cache_index(line, i)] = vec4(texelFetch(u_source, texel, 0).rgb, tap_distance(texel));
       }
     }
     barrier();
