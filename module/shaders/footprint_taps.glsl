@@ -12,10 +12,9 @@
 //   vec4 sss_fetch_tap(TapSite site, float offset)
 //                       the pixel `offset` pixels from the centre along the pass's axis, kept in
 //                       u_clamp: rgb its colour, a its view distance (read only with
-//                       SSS_FOLLOW_SURFACE)
-//   SSS_TAPS_SANITISED  1: a tap whose colour is not finite or past colour_range.glsl's bound
-//                       has colour kSssUnusableColour and distance NaN already (the fragment
-//                       passes' inputs)
+//                       SSS_FOLLOW_SURFACE); a colour that is not finite or past colour_range.glsl's
+//                       bound as kSssUnusableColour at distance NaN (the fragment passes' inputs
+//                       draw and the compute path's cache sanitise once per texel)
 //   bool sss_tap_foreign   (SSS_PROFILE_IDS only) set by sss_fetch_tap: the pixel it read has
 //                       another profile or object index than the centre, and counts as the centre
 
@@ -78,11 +77,9 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 // follow-surface it is blended back to the centre's as its depth leaves the kernel's reach.
 vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
   vec3 tap = fetched.rgb;
-#if SSS_TAPS_SANITISED && SSS_FOLLOW_SURFACE
-  // The fragment passes' inputs hold such a tap at distance NaN (pass_inputs.frag), which the
-  // blend below turns into the centre exactly: no test per tap. (Without follow-surface the test
-  // below finds its colour, kSssUnusableColour, out of range.)
-#else
+#if !SSS_FOLLOW_SURFACE
+  // With follow-surface such a tap's distance, NaN, makes the blend below the centre exactly: no
+  // test per tap. Without, its colour, kSssUnusableColour, is found out of range here.
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #endif
 #if SSS_FOLLOW_SURFACE

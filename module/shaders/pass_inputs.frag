@@ -9,9 +9,10 @@
 //
 // A colour that is not finite, or past colour_range.glsl's bound, is written as kSssUnusableColour
 // at distance NaN: the follow-surface blend turns such a tap into the centre's colour exactly, as
-// the test per tap it replaces did (footprint_taps.glsl, SSS_TAPS_SANITISED); a pass without
-// follow-surface finds the colour out of range, as it found the original; and a centre with a NaN
-// distance is left alone, as one with such a colour was. The strength is written as it is.
+// the test per tap it replaces did (footprint_taps.glsl; the compute path sanitises its cache the
+// same way); a pass without follow-surface finds the colour out of range, as it found the
+// original; and a centre with a NaN distance is left alone, as one with such a colour was. The
+// strength is written as it is.
 //
 // Compile-time switches (module/src/gl/shader_variants.cpp):
 //   SSS_LINEAR_DEPTH   0: hardware depth, linearised here; 1: the host's depth is a view distance

@@ -106,7 +106,6 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
   return vec4(uintBitsToFloat(t.rgb), sss_distance(t.a));
 }
 
-#define SSS_TAPS_SANITISED 1     // pass_inputs.frag: out-of-range colours are 0 at distance NaN
 #include "footprint_taps.glsl"
 
 // `texel`: the pixel's own input texel.

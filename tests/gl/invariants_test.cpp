@@ -144,11 +144,13 @@ TEST_F(Invariants, NonFinitePixelsDoNotSpread) {
   // With and without follow-surface: the passes' inputs hold such a pixel as a tap that must count
   // as the centre either way (without follow-surface no depth test stands in for the colour's).
   // And through the half-resolution upsample, whose surface weights must treat a NaN distance as
-  // off the surface (on NVIDIA, !(s < 1.0) alone let it through).
-  for (const uint32_t path : {uint32_t{SSS_PATH_AUTO}, uint32_t{SSS_PATH_HALF_RESOLUTION}}) {
+  // off the surface (on NVIDIA, !(s < 1.0) alone let it through), and the compute path, whose cache
+  // holds such a pixel as the inputs draw does (where there is no compute, the fragment passes).
+  for (const uint32_t path :
+       {uint32_t{SSS_PATH_AUTO}, uint32_t{SSS_PATH_HALF_RESOLUTION}, uint32_t{SSS_PATH_COMPUTE}}) {
     for (const uint32_t flags : {uint32_t{SSS_FOLLOW_SURFACE}, 0u}) {
       SCOPED_TRACE(flags != 0 ? "follow-surface" : "no follow-surface");
-      SCOPED_TRACE(path == SSS_PATH_AUTO ? "automatic path" : "half resolution");
+      SCOPED_TRACE(path == SSS_PATH_AUTO ? "automatic path" : path == SSS_PATH_COMPUTE ? "compute" : "half resolution");
       FilterCase c;
       c.settings = wide_settings();
       c.settings.flags = flags;
