@@ -20,7 +20,8 @@ inline constexpr int kMaxHalfTaps = math::kMaxFootprintHalfTaps;
 // SSS_SEGMENT, SSS_LINES, SSS_APRON). A group fills only as much of the apron as its widest kernel
 // reaches (taps past the cached span read the textures, so any apron gives the same image).
 // One line of 128 pixels and one pixel per invocation, in both passes: on an NVIDIA H200 (1080p
-// head close-up, 17 taps, docs/benchmarks-gpu-passes.md) that pair took 0.105 ms, against 0.180 ms
+// head close-up, 17 taps; before the cache's sanitising, which took it to 0.085 ms:
+// docs/benchmarks-gpu-passes.md) that pair took 0.105 ms, against 0.180 ms
 // for vertical tiles of 8 columns with four pixels per invocation (whose rows read 64 contiguous
 // bytes, which did not make up for a quarter of the invocations running four tap loops each),
 // 0.109-0.119 ms for the other one-pixel-per-invocation tiles tried (256 or 512 pixels, 2 or 4
