@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <string>
 
@@ -126,20 +127,70 @@ TEST_F(TileCulling, SparsePixelsAfterAFullFrameGiveThePlainResultBitForBit) {
   }
 }
 
-// A frame with no translucent pixel at all after a full one: nothing drawn, nothing changed (in
-// place the colour keeps every bit; into an output it is copied).
-TEST_F(TileCulling, AnEmptyFrameAfterAFullOneChangesNothing) {
+// The half-resolution path keeps the same bands (module/src/gl/half_runner.cpp), and its reduction
+// and half-size passes the same tiles at 8 texels a side, wherever the rectangle starts on even
+// coordinates. The same sparse frame after a full one must be its CPU model's within
+// HalfResolution.MatchesTheCpuModel's tolerance (3e-3), with pixels upsampled and pixels left to
+// the full-size passes; a region at odd offsets takes the whole-rectangle draws, a region at even
+// ones the bands.
+TEST_F(TileCulling, TheHalfResolutionPathOnSparsePixelsAfterAFullFrameMatchesItsCpuModel) {
   SyntheticScene scene = sparse_scene();
-  for (std::size_t i = 3; i < scene.color.size(); i += 4) scene.color[i] = 0.0f;
-  for (const bool separate : {false, true}) {
-    SCOPED_TRACE(separate ? "into an output" : "in place");
+  for (int x = 60; x < 63; ++x) {  // kernels of a few pixels: the full-size passes take them
+    scene.color[(static_cast<std::size_t>(200) * kWidth + x) * 4 + 3] = 0.003f;
+  }
+  struct Variant {
+    const char* name;
+    bool half_color, separate, region;
+    std::array<int32_t, 4> region_rect;
+  };
+  for (const Variant& v : {Variant{"RGBA32F in place", false, false, false, {}},
+                           Variant{"RGBA16F in place", true, false, false, {}},
+                           Variant{"RGBA32F into an output", false, true, false, {}},
+                           Variant{"RGBA16F region at even offsets into an output", true, true, true, {4, 6, 140, 250}},
+                           Variant{"RGBA32F region at even offsets in place", false, false, true, {2, 0, 146, 259}},
+                           Variant{"RGBA16F region at odd offsets in place", true, false, true, {3, 5, 139, 251}}}) {
+    SCOPED_TRACE(v.name);
     FilterCase c;
-    c.settings = wide(SSS_PATH_FRAGMENT_MASKED);
-    c.separate_output = separate;
+    c.settings = wide(SSS_PATH_HALF_RESOLUTION);
+    c.half_color = v.half_color;
+    c.separate_output = v.separate;
+    c.use_region = v.region;
+    c.region = v.region_rect;
     c.stale_frame_first = true;
     const FilterOutcome o = run_case(scene, c);
     ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
-    EXPECT_EQ(o.gpu, o.input);
+    sss_stats stats = {};
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    EXPECT_EQ(stats.last_frame_path, uint32_t{SSS_PATH_HALF_RESOLUTION});
+    const float difference = largest_relative_difference(o.gpu, o.cpu);
+    std::printf("half resolution, %s, after a full frame: GPU vs CPU model %.3g; %lld pixels upsampled, %lld at full "
+                "size\n",
+                v.name, static_cast<double>(difference), o.upsampled, o.full_size);
+    EXPECT_LE(difference, kTolerance);
+    EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f);  // it blurred
+    EXPECT_GT(o.upsampled, 10);  // the half-size draws served pixels
+    EXPECT_GT(o.full_size, 0);   // and the full-size passes others
+  }
+}
+
+// A frame with no translucent pixel at all after a full one: nothing drawn, nothing changed (in
+// place the colour keeps every bit; into an output it is copied), on the masked and half paths.
+TEST_F(TileCulling, AnEmptyFrameAfterAFullOneChangesNothing) {
+  SyntheticScene scene = sparse_scene();
+  for (std::size_t i = 3; i < scene.color.size(); i += 4) scene.color[i] = 0.0f;
+  for (const uint32_t path : {uint32_t{SSS_PATH_FRAGMENT_MASKED}, uint32_t{SSS_PATH_HALF_RESOLUTION}}) {
+    for (const bool separate : {false, true}) {
+      SCOPED_TRACE(separate ? "into an output" : "in place");
+      SCOPED_TRACE(path == SSS_PATH_HALF_RESOLUTION ? "half resolution" : "masked");
+      FilterCase c;
+      c.settings = wide(path);
+      c.separate_output = separate;
+      c.stale_frame_first = true;
+      const FilterOutcome o = run_case(scene, c);
+      ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
+      EXPECT_EQ(o.gpu, o.input);
+    }
   }
 }
 

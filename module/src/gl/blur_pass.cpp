@@ -53,7 +53,7 @@ void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& ru
     f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
     f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
   }
-  // (A fragment variant has its tap count and spacing as constants: no such uniforms.)
+  // (A fragment variant at a preset count has its tap count as a constant: no u_half_taps.)
   const std::vector<float>& spacing = run.kernel->spacing;
   if (!spacing.empty() && p.spacing >= 0) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
   if (p.half_taps >= 0) f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));

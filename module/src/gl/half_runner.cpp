@@ -13,11 +13,21 @@
 //   5. the full-size horizontal and vertical passes drawn at depth 0.25 (glDepthRange 0..0.5), so
 //      that GL_GREATER lets through exactly the translucent pixels step 4 discarded.
 // The host's colour is written by steps 3-5 only, after the inputs draw has read it.
+// Without a host stencil, and where the rectangle starts on even coordinates (so that each 2x2
+// block lies inside one 16x16 tile), every draw but the copy keeps to the masked path's bands of
+// tiles (tile_culling.cpp), at full size and, for the reduction and the half-size passes, at half
+// size (8 texels a tile). The reasons the bands are enough are the masked path's: a translucent
+// pixel's taps stay in its row or column, which the inputs' bands hold whole, at either size; the
+// upsample's near field is its row and column too, and of its half-size texels it reads only those
+// the half-size passes wrote (half_result, cleared each frame, holds alpha 0 elsewhere), which lie
+// in marked tiles. The half-size culling depth needs no clear: the half-size passes test it only
+// in their bands, which lie inside the reduction's.
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "../math/half_resolution.hpp"
+#include "../math/tile_culling.hpp"
 #include "blur_pass.hpp"
 #include "debug_label.hpp"
 #include "runners.hpp"
@@ -73,6 +83,12 @@ std::uint64_t tables_revision(const FilterRun& run) {
   return run.has_profiles() ? run.profiles_revision * 2 + 1 : run.kernel_revision * 2;
 }
 
+// The bands of tiles (the file's comment): no host stencil (whose test the bands would not know),
+// and 2x2 blocks that do not straddle tiles.
+bool uses_tiles(const FilterRun& run) {
+  return run.stencil == nullptr && run.draw_rect[0] % 2 == 0 && run.draw_rect[1] % 2 == 0;
+}
+
 sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std::string* message) {
   const Outside last = run.writes_back() ? Outside::discard : Outside::copy_original;
   sss_result r = ctx.programs.blur(fragment_blur_variant(run, 0, 0, Outside::write_centre), &p->horizontal, message);
@@ -91,6 +107,7 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std:
                                                     : static_cast<GLint>(DEPTH24_STENCIL8);
   if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(depth_format, w, h, message);
   if (r == SSS_OK) r = ctx.targets.ensure_half_targets(w, h, run.intermediate_format(), message);
+  if (r == SSS_OK && uses_tiles(run)) r = prepare_tile_culling(ctx, run, message);
   // The tables only when the kernels changed: a steady frame allocates nothing.
   if (r == SSS_OK && !ctx.targets.half_tables_hold(tables_revision(run))) {
     r = ctx.targets.upload_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
@@ -141,8 +158,7 @@ void draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p
   f.Uniform1i(p.profile_count, run.profile_count);
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
-  f.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
+  draw_cover(ctx, p.tile_grid);
 }
 
 // One pass at half size: `source` and the half-size strength.
@@ -163,8 +179,7 @@ void draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int
   bind_texture(ctx, unit::source, axis == 0 ? t.half_taps : t.half_intermediate, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.half_strength, ctx.objects.nearest_sampler);
   if (half.has_profiles()) bind_profile_inputs(ctx, half, axis);
-  f.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
+  draw_cover(ctx, p.tile_grid);
 }
 
 void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& p, const std::array<int, 4>& half) {
@@ -196,8 +211,7 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
   bind_texture(ctx, unit::half_source, t.half_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::half_result, t.half_result, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::half_tables, t.half_tables, ctx.objects.nearest_sampler);
-  f.DrawArrays(TRIANGLES, 0, 3);
-  ++ctx.draws;
+  draw_cover(ctx, p.tile_grid);
 }
 
 // Into a separate output: the colour as it is where no pass writes (not translucent by alpha, or
@@ -224,6 +238,7 @@ sss_result begin_frame(PassContext& ctx, const FilterRun& run, std::string* mess
   begin_passes(ctx, run.draw_rect);
   sss_result r = SSS_OK;
   if (run.stencil != nullptr) r = copy_stencil(ctx, run, *run.stencil, message, t.pass_inputs_framebuffer);
+  if (r == SSS_OK && uses_tiles(run)) r = mark_tiles(ctx, run, message);
   PassInputsVariant inputs = pass_inputs_variant(run);
   inputs.mark_depth = true;  // with a host stencil too: the half-size passes need alpha's mark
   if (r == SSS_OK) r = draw_pass_inputs(ctx, run, inputs, message);
@@ -237,8 +252,13 @@ sss_result begin_frame(PassContext& ctx, const FilterRun& run, std::string* mess
 void draw_half_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& p, const std::array<int, 4>& half) {
   const Functions& f = ctx.gl;
   set_viewport(f, half);
+  // The bands at half size: the same tiles, 8 texels a side (uses_tiles: blocks never straddle them).
+  const std::array<GLfloat, 4> full_grid = ctx.tile_grid;
+  constexpr GLfloat kHalfTile = static_cast<GLfloat>(math::kTileSize / 2);
+  ctx.tile_grid[2] = 2.0f * kHalfTile / static_cast<GLfloat>(half[2]);
+  ctx.tile_grid[3] = 2.0f * kHalfTile / static_cast<GLfloat>(half[3]);
   f.Enable(DEPTH_TEST);
-  f.DepthFunc(ALWAYS);  // the reduction marks every texel of the half-size rectangle
+  f.DepthFunc(ALWAYS);  // the reduction marks every texel it draws
   f.DepthMask(1);
   draw_reduction(ctx, run, *p.inputs);
   f.DepthMask(0);
@@ -246,6 +266,7 @@ void draw_half_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& 
   const FilterRun half_run = half_size_run(run, half);
   draw_half_pass(ctx, half_run, *p.horizontal, 0);
   draw_half_pass(ctx, half_run, *p.half_vertical, 1);
+  ctx.tile_grid = full_grid;
 }
 
 // Steps 3 to 5: full size, into the host's colour or output.
@@ -310,6 +331,7 @@ sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::stri
   sss_result r = prepare(ctx, run, &p, message);
   if (r == SSS_OK) r = begin_frame(ctx, run, message);
   if (r != SSS_OK) {
+    ctx.tile_bands = 0;
     detach_output(ctx);
     return r;
   }
@@ -319,6 +341,7 @@ sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::stri
   draw_half_size(ctx, run, p, half);
   draw_full_size(ctx, run, p, half, measure);
   measure.end_frame();
+  ctx.tile_bands = 0;
   detach_output(ctx);
   return SSS_OK;
 }

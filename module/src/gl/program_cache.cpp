@@ -328,7 +328,8 @@ sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** o
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = half_inputs_defines(v);
-  p.program = link("half_inputs.frag", defines, "half-size inputs shader (" + defines + ")", message);
+  p.program = link("half_inputs.frag", defines, "half-size inputs shader (" + defines + ")", message,
+                   TileSpans::inputs);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, v.profile_ids != 0 ? "sss half-size inputs profiles=1" : "sss half-size inputs", "half-size inputs");
   const Functions& f = *gl_;
@@ -340,6 +341,9 @@ sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** o
   f.Uniform1f(f.GetUniformLocation(p.program, "u_merge_reach"), math::kHalfResolutionMergeReach);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
+  p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
   return SSS_OK;
 }
 
@@ -348,7 +352,8 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = half_upsample_defines(v);
-  p.program = link("half_upsample.frag", defines, "half-size upsample shader (" + defines + ")", message);
+  p.program = link("half_upsample.frag", defines, "half-size upsample shader (" + defines + ")", message,
+                   TileSpans::passes);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, v.profile_ids != 0 ? "sss half-size upsample profiles=1" : "sss half-size upsample",
          "half-size upsample");
@@ -370,6 +375,8 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_result"), unit::half_result);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tables"), unit::half_tables);
+  p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   return SSS_OK;
 }
 

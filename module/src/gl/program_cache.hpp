@@ -79,11 +79,13 @@ struct TileMarkProgram {
 struct HalfInputsProgram {
   GLuint program = 0;
   GLint rect = -1, depth_factor = -1, profile_count = -1;
+  GLint tile_grid = -1;  // the tiles' bands at half size (fullscreen.vert, the inputs' spans)
 };
 struct HalfUpsampleProgram {
   GLuint program = 0;
   GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, half_taps = -1, spacing = -1, depth_terms = -1,
         round_to_half = -1;
+  GLint tile_grid = -1;  // the tiles' bands (fullscreen.vert, the passes' spans)
 };
 
 struct SampleWriteProgram {

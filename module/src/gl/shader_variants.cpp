@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <utility>
 
-#include "../math/footprint_kernel.hpp"
 #include "../math/tile_culling.hpp"
 #include "shader_constants.hpp"
 
@@ -45,23 +44,7 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
                 v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids, profiles, v.packed_output ? 1 : 0);
   std::string text = defines;
-  if (v.half_taps > 0) {
-    // The spacing as float literals that read back to the very floats the CPU model uses, in a
-    // chain of selects on the index rather than a const array: NVIDIA's compiler refuses a
-    // constant index past the end of an array even in code that never runs, and the loop's
-    // last step, once unrolled, looks one tap ahead (footprint_taps.glsl). The chain's last
-    // value stands for every index past it; unrolled, each step folds to one literal.
-    text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n#define SSS_SPACING(i) (";
-    const std::vector<float> spacing = math::footprint_spacing(v.half_taps);
-    for (std::size_t i = 0; i < spacing.size(); ++i) {
-      char literal[32];
-      std::snprintf(literal, sizeof literal, "%.9g", static_cast<double>(spacing[i]));
-      std::string value = literal;
-      if (value.find_first_of(".e") == std::string::npos) value += ".0";  // "1" is an int in GLSL
-      text += i + 1 < spacing.size() ? "(i) <= " + std::to_string(i) + " ? " + value + " : " : value;
-    }
-    text += ")\n";
-  }
+  if (v.half_taps > 0) text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n";
   return text;
 }
 

@@ -28,15 +28,15 @@ struct BlurVariant {
   int profile_ids = 0;
   // SSS_PACKED_OUTPUT: the fragment path's horizontal pass, which writes RGBA32UI colour and distance.
   bool packed_output = false;
-  // SSS_HALF_TAPS: the most taps on either side as a constant of the variant (with their spacing:
-  // the fragment passes at a preset tap count, compile_time_half_taps); 0: uniforms (the compute
-  // path, other tap counts). Not part of the index.
+  // SSS_HALF_TAPS: the most taps on either side as a constant of the variant (the fragment passes
+  // at a preset tap count, compile_time_half_taps); 0: a uniform (the compute path, whose loop
+  // measured slower unrolled on an NVIDIA H200, and other tap counts). Not part of the index.
   int half_taps = 0;
 };
 // The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
-// (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll and
-// spacing it can fold; any other count shares the program that reads both as uniforms (0), so a
-// host that varies the count freely builds no program per count.
+// (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll; any
+// other count shares the program that reads it as a uniform (0), so a host that varies the count
+// freely builds no program per count.
 inline int compile_time_half_taps(int half_taps) {
   for (const int preset : {SSS_TAPS_LOW, SSS_TAPS_MEDIUM, SSS_TAPS_HIGH}) {
     if (half_taps == preset / 2) return half_taps;
