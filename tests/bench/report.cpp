@@ -266,7 +266,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "runs the passes at half size, with a depth- and profile-aware upsample, for the pixels whose kernel "
            "reaches at least " << fmt(sss::math::kHalfResolutionMinReachPixels, "%.0f") << " pixels (`SSS_PATH_HALF_RESOLUTION`; "
            "the threshold measured on the footprint sweep: docs/benchmarks/half-resolution.md), and the full-size "
-           "passes behind the same culling elsewhere. `separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
+           "passes elsewhere, every draw kept to the same tiles. `separable-compute` runs the same frames as compute dispatches (`SSS_PATH_COMPUTE`: "
            "each work group caches a segment of a row, then of a column, in shared memory with as much apron as its "
            "widest kernel reaches, and a group with no translucent pixel takes no taps), "
            "alone and with the region; `separable-auto-region` lets the library pick the "
