@@ -219,10 +219,13 @@ class StateHarness : public GlTest {
            s.path = SSS_PATH_FRAGMENT_MASKED;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-           // The half-resolution path (its depth range, clears and units 2-4), the region into the output.
+           // The half-resolution path (its depth range, clears and units 2-4), the region into the output
+           // (at odd offsets: whole-rectangle draws), then the whole frame in place (its tiles, unit 5).
            s.path = SSS_PATH_HALF_RESOLUTION;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
            EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+           const sss_frame whole = frame_of(color_, depth_);
+           EXPECT_EQ(sss_apply_frame(sss_, &whole), SSS_OK) << sss_last_error(sss_);
            s.path = SSS_PATH_FRAGMENT;
            EXPECT_EQ(sss_set_settings(sss_, &s), SSS_OK);
          }},

@@ -21,7 +21,7 @@ class StateRestore : public FilterCaseTest {
  protected:
   // Host objects bound while the module runs; deleted in the test's TearDown via textures_ or here.
   GLuint program_ = 0, vao_ = 0, fbo_draw_ = 0, fbo_read_ = 0, renderbuffer_ = 0, buffers_[3] = {0, 0, 0};
-  GLuint samplers_[4] = {0, 0, 0, 0};
+  GLuint samplers_[6] = {0, 0, 0, 0, 0, 0};
 
   void set_unusual_state() {
     program_ = make_host_program(false);
@@ -41,8 +41,8 @@ class StateRestore : public FilterCaseTest {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_read_);
     glGenRenderbuffers(1, &renderbuffer_);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
-    glGenSamplers(4, samplers_);
-    for (GLenum unit = 0; unit < 4; ++unit) {
+    glGenSamplers(6, samplers_);
+    for (GLenum unit = 0; unit < 6; ++unit) {  // every unit of the restored list (sss.h)
       glActiveTexture(GL_TEXTURE0 + unit);
       glBindTexture(GL_TEXTURE_2D, make_rgba16f(2, 2, std::vector<float>(16, 1.0f)));
       glBindSampler(unit, samplers_[unit]);

@@ -95,8 +95,9 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0) ||
                 half;
   scope.profiles = frame.profile_texture != 0 || half;
-  // The masked path's tile marks (the path AUTO takes untimed, and may time).
-  scope.tiles = path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO;
+  // The tile marks of the masked path (the path AUTO takes untimed, and may time) and of the
+  // half-resolution path.
+  scope.tiles = path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || half;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;
 }
