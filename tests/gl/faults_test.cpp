@@ -5,6 +5,7 @@
 // loader (support/fault_loader.hpp), so the library carries no test hook.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -131,7 +132,7 @@ class Faults : public GlTest {
 };
 
 TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
-  int failures = 0;
+  int failures = 0, stand_ins = 0;
   for (int k = 0; k < 32; ++k) {
     reset_faults();
     faults().skip_shader_sources = k;
@@ -139,14 +140,27 @@ TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
     const GlObjectCounts before = objects();
     const Snapshot state = take_snapshot();
     sss_context* ctx = reinterpret_cast<sss_context*>(0x1);
-    const sss_result r = create_faulty(&ctx);
+    std::string log;
+    const sss_result r = create_faulty(&ctx, &log);
     if (faults().shader_sources_broken == 0) {  // create compiles fewer shaders than k: done
       EXPECT_EQ(r, SSS_OK) << sss_last_error(nullptr);
       sss_destroy(ctx);
       break;
     }
-    ++failures;
     SCOPED_TRACE("shader source " + std::to_string(k));
+    if (r == SSS_OK) {
+      // Either stage of a preset tap count's blur program: the program with the count as a uniform
+      // stands in, and says so (next test); no other program may be refused quietly.
+      EXPECT_NE(log.find("stands in"), std::string::npos) << log;
+      const std::string& source = faults().last_broken_source;
+      EXPECT_TRUE(source.find("#define SSS_HALF_TAPS") != std::string::npos ||
+                  source.find("#define SSS_TILE_SPANS 1") != std::string::npos)
+          << source.substr(0, 400);
+      ++stand_ins;
+      sss_destroy(ctx);
+      continue;
+    }
+    ++failures;
     EXPECT_EQ(r, SSS_ERROR_SHADER_COMPILE);
     EXPECT_EQ(ctx, nullptr);
     const std::string message = sss_last_error(nullptr);
@@ -156,11 +170,42 @@ TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
     EXPECT_EQ(describe_differences(state, take_snapshot()), "");
     EXPECT_EQ(objects(), before) << "before: " << before.describe() << "\nafter:  " << objects().describe();
   }
-  EXPECT_GE(failures, 6) << "create compiles the copy program and two blur variants";
+  // Create builds the copy program and the default's two blur programs, of the preset count (two
+  // stages each, refused in turn: stand-ins), then what else its prewarm needs.
+  std::printf("create: %d shaders whose failure fails it, %d whose program has a stand-in\n", failures, stand_ins);
+  EXPECT_GE(failures, 4);
+  EXPECT_EQ(stand_ins, 4);
   reset_faults();
   sss_context* ctx = nullptr;
   EXPECT_EQ(create_faulty(&ctx), SSS_OK);  // and the next create works
   sss_destroy(ctx);
+}
+
+// A driver that refuses the blur program of a preset tap count (SSS_HALF_TAPS: NVIDIA once did)
+// gets the program that reads the count as a uniform instead: the frame succeeds with the same
+// image as a context whose driver built both, one warning says so, and the refused program is not
+// tried again in later frames.
+TEST_F(Faults, ARefusedPresetTapCountFallsBackToTheUniformCount) {
+  const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
+  faults().break_sources_with = "#define SSS_HALF_TAPS";
+  std::string log;
+  ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(20, 16, Depth::hardware);
+  ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  const int refused = faults().shader_sources_broken;
+  EXPECT_GT(refused, 0);
+  EXPECT_NE(log.find("17 taps as a constant"), std::string::npos) << log;
+  const std::vector<float> got = read_rgba(t.color, 20, 16);
+  const float difference = largest_relative_difference(got, expected);
+  std::printf("uniform tap count against the preset count's program: largest relative difference %.3g\n",
+              static_cast<double>(difference));
+  EXPECT_LE(difference, 1e-6f);
+  for (int frame = 0; frame < 2; ++frame) EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(faults().shader_sources_broken, refused) << "a refused program was built again";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
 TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers) {

@@ -28,11 +28,21 @@ PFNGLGETTEXPARAMETERIVPROC real_get_tex_parameteriv = nullptr;
 const char* const kBrokenSource = "#version 330 core\nthis line is a fault injected by the test;\n";
 
 void APIENTRY shader_source(GLuint shader, GLsizei count, const GLchar* const* strings, const GLint* lengths) {
+  std::string text;
+  for (GLsizei i = 0; i < count; ++i) {
+    text += lengths != nullptr && lengths[i] >= 0 ? std::string(strings[i], static_cast<std::size_t>(lengths[i]))
+                                                  : std::string(strings[i]);
+  }
+  bool broken = !g_faults.break_sources_with.empty() && text.find(g_faults.break_sources_with) != std::string::npos;
   if (g_faults.skip_shader_sources > 0) {
     --g_faults.skip_shader_sources;
   } else if (g_faults.break_shader_sources > 0) {
     --g_faults.break_shader_sources;
+    broken = true;
+  }
+  if (broken) {
     ++g_faults.shader_sources_broken;
+    g_faults.last_broken_source = text;
     real_shader_source(shader, 1, &kBrokenSource, nullptr);
     return;
   }

@@ -19,6 +19,8 @@ struct Faults {
   // with text that does not compile (the driver's own compile error, with its log).
   int skip_shader_sources = 0;
   int break_shader_sources = 0;
+  // glShaderSource: every source holding this text (when not empty) fails too.
+  std::string break_sources_with;
   // glTexImage2D of a `huge_target_format` image without data (RGBA16F: the module's intermediate
   // target for every colour but RGBA32F): ask the driver for GL_MAX_TEXTURE_SIZE squared instead, a
   // real GL_OUT_OF_MEMORY on llvmpipe (it refuses images over 1 GiB without allocating). Where the
@@ -46,6 +48,7 @@ struct Faults {
   int draws = 0;                        // glDrawArrays and glDispatchCompute calls
   int texture_parameter_queries = 0;    // glGetTexParameteriv calls
   int shader_sources_broken = 0;
+  std::string last_broken_source;  // the text the last broken source would have had
   int out_of_memory_from_driver = 0;
   int out_of_memory_injected = 0;
 };

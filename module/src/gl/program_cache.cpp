@@ -100,11 +100,28 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
 
 sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
   BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
+  BlurVariant with_uniform_count = v;
+  with_uniform_count.half_taps = 0;
+  if (p.refused) return blur(with_uniform_count, out, message);
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
   p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message,
                    TileSpans::passes);
+  if (p.program == 0 && v.half_taps > 0) {
+    // The preset count's variant only lets the compiler unroll the loop; the one that reads the
+    // count as a uniform gives the same image. A driver that refuses the first (NVIDIA's refused a
+    // look-ahead index in the unrolled loop once) still gets the filter, and says so once.
+    if (log_ != nullptr && *log_) {
+      (*log_)(SSS_LOG_WARNING, "the driver refused the separable blur program for " +
+                                   std::to_string(2 * v.half_taps + 1) +
+                                   " taps as a constant; the one that reads the count as a uniform stands in (" +
+                                   *message + ")");
+    }
+    p.refused = true;
+    message->clear();
+    return blur(with_uniform_count, out, message);
+  }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
   std::snprintf(label, sizeof label,

@@ -38,6 +38,9 @@ struct BlurProgram {
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
   bool compute = false;
+  // A preset tap count's variant (SSS_HALF_TAPS) the driver would not build: the variant with the
+  // count as a uniform stands in for it (ProgramCache::blur), without another attempt per frame.
+  bool refused = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
   std::size_t uploaded_term = 0;
