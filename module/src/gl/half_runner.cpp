@@ -2,8 +2,9 @@
 // fragment passes at full size elsewhere (the method and its constants: math/half_resolution.hpp).
 // The draws, after pass_inputs.frag's (full size, marking translucent pixels 0 in the culling
 // depth, the rest 1):
-//   1. half_inputs.frag reduces the inputs to half size (every texel of the half-size rectangle),
-//      marking translucent texels in the half-size culling depth (0; the rest 1);
+//   1. half_inputs.frag reduces the inputs to half size (every texel of the half-size rectangle,
+//      or of its bands of tiles: below), marking translucent texels in the half-size culling depth
+//      (0; the rest 1);
 //   2. the horizontal and vertical passes at half size behind that depth (the same programs as at
 //      full size, at half the pixels per mm), the vertical one into half_result, cleared first;
 //   3. into a separate output: the colour copied where the depth is 1 (not translucent) or the host's
