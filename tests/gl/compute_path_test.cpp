@@ -76,12 +76,6 @@ class ComputePath : public FilterCaseTest {
     s.path = path;
     return sss_set_settings(sss_, &s) == SSS_OK && sss_set_camera(sss_, scene.projection.data()) == SSS_OK;
   }
-  uint32_t last_path() {
-    sss_stats stats = {};
-    stats.struct_size = sizeof stats;
-    EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
-    return stats.last_frame_path;
-  }
   // Runs `c` on the plain fragment path and on `path`; checks both against the CPU model, which path
   // ran (`expected` for the second: `path`, or SSS_PATH_FRAGMENT where it cannot run), and the two
   // results against each other: within kTolerance, or bit for bit when `exact`.

@@ -38,13 +38,6 @@ sss_settings half_settings(float width, uint32_t path = SSS_PATH_HALF_RESOLUTION
   return s;
 }
 
-uint32_t last_path(sss_context* sss) {
-  sss_stats stats = {};
-  stats.struct_size = sizeof stats;
-  EXPECT_EQ(sss_get_stats(sss, &stats), SSS_OK);
-  return stats.last_frame_path;
-}
-
 using HalfResolution = FilterCaseTest;
 
 // Both kinds of pixel occur (0.12 world units per mm: kernels from a few to some twenty pixels on
@@ -72,7 +65,7 @@ TEST_F(HalfResolution, MatchesTheCpuModel) {
     if (v.stencil) c.depth = DepthKind::depth24_stencil8;
     const FilterOutcome o = run_case(relief(), c);
     ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
-    EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
+    EXPECT_EQ(last_path(), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
     const float difference = largest_relative_difference(o.gpu, o.cpu);
     std::printf("%s: GPU vs CPU model: largest relative difference %.3g; %lld pixels upsampled, %lld at full size\n",
                 v.name, static_cast<double>(difference), o.upsampled, o.full_size);
@@ -134,7 +127,7 @@ TEST_F(HalfResolution, FramesItCannotRunTakeTheFragmentPasses) {
                                     which == 0 ? SSS_MODE_SEPARABLE : SSS_MODE_CROSS_BILATERAL, which == 0);
     const FilterOutcome half = run_case(relief(), c);
     ASSERT_EQ(half.result, SSS_OK);
-    EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_FRAGMENT));
+    EXPECT_EQ(last_path(), static_cast<uint32_t>(SSS_PATH_FRAGMENT));
     TearDown();
     SetUp();
     c.settings.path = SSS_PATH_FRAGMENT;
@@ -184,7 +177,7 @@ TEST_F(HalfResolution, PerPixelProfilesMatchTheCpuModel) {
   f.profile_texture = id_texture;
   f.profile_format = GL_R8UI;
   ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
+  EXPECT_EQ(last_path(), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
   const std::vector<float> gpu = read_rgba(color, kW, kH);
 
   const ProfileModels models = profile_models(profiles, 2, scene.projection, kW, kH);
@@ -217,7 +210,7 @@ TEST_F(HalfResolution, AutoDoesNotPickItWithoutATimer) {
   c.settings.flags |= SSS_AUTO_HALF_RESOLUTION;
   const FilterOutcome o = run_case(relief(), c);
   ASSERT_EQ(o.result, SSS_OK);
-  EXPECT_NE(last_path(sss_), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
+  EXPECT_NE(last_path(), static_cast<uint32_t>(SSS_PATH_HALF_RESOLUTION));
   sss_settings back;
   back.struct_size = sizeof back;
   ASSERT_EQ(sss_get_settings(sss_, &back), SSS_OK);

@@ -59,6 +59,7 @@ TEST_F(ImGuiClient, DrawsTheSamePixelsAfterSssApply) {
   if (test_backend() == SSS_HEADLESS_OSMESA) GTEST_SKIP() << "ImGui's loader reaches GL through glvnd (EGL) only";
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the directory the test runs in
   ASSERT_TRUE(ImGui_ImplOpenGL3_Init("#version 330 core"));
   const SyntheticScene scene = make_relief_scene(kWidth, kHeight, 3, perspective_matrix(40.0f, 4.0f / 3.0f, 0.1f, 10.0f));
   const GLuint color = make_rgba16f(kWidth, kHeight, scene.color);

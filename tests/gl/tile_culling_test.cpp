@@ -112,10 +112,7 @@ TEST_F(TileCulling, SparsePixelsAfterAFullFrameGiveThePlainResultBitForBit) {
       c.stale_frame_first = masked != 0;
       const FilterOutcome o = run_case(scene, c);
       ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
-      sss_stats stats = {};
-      stats.struct_size = sizeof stats;
-      ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
-      EXPECT_EQ(stats.last_frame_path, masked ? uint32_t{SSS_PATH_FRAGMENT_MASKED} : uint32_t{SSS_PATH_FRAGMENT});
+      EXPECT_EQ(last_path(), masked ? uint32_t{SSS_PATH_FRAGMENT_MASKED} : uint32_t{SSS_PATH_FRAGMENT});
       const float difference = largest_relative_difference(o.gpu, o.cpu);
       std::printf("%s, %s: GPU vs CPU model %.3g\n", v.name, masked ? "masked after a full frame" : "plain",
                   static_cast<double>(difference));
@@ -159,10 +156,7 @@ TEST_F(TileCulling, TheHalfResolutionPathOnSparsePixelsAfterAFullFrameMatchesIts
     c.stale_frame_first = true;
     const FilterOutcome o = run_case(scene, c);
     ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
-    sss_stats stats = {};
-    stats.struct_size = sizeof stats;
-    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
-    EXPECT_EQ(stats.last_frame_path, uint32_t{SSS_PATH_HALF_RESOLUTION});
+    EXPECT_EQ(last_path(), uint32_t{SSS_PATH_HALF_RESOLUTION});
     const float difference = largest_relative_difference(o.gpu, o.cpu);
     std::printf("half resolution, %s, after a full frame: GPU vs CPU model %.3g; %lld pixels upsampled, %lld at full "
                 "size\n",

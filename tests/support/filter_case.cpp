@@ -163,6 +163,13 @@ sss::math::KernelPlan plan_for(const sss_settings& settings) {
   return plan;
 }
 
+uint32_t FilterCaseTest::last_path() {
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  EXPECT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+  return stats.last_frame_path;
+}
+
 FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const FilterCase& c) {
   FilterOutcome outcome;
   const int w = scene.width, h = scene.height;

@@ -107,6 +107,8 @@ ProfileModels profile_models(const sss_settings* profiles, std::size_t count, co
 class FilterCaseTest : public GlTest {
  protected:
   FilterOutcome run_case(const SyntheticScene& scene, const FilterCase& c);
+  // The sss_path the last frame of sss_ took (sss_stats.last_frame_path).
+  uint32_t last_path();
 };
 
 }  // namespace sss_test

@@ -100,9 +100,12 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
 
 sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
   BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
-  BlurVariant with_uniform_count = v;
-  with_uniform_count.half_taps = 0;
-  if (p.refused) return blur(with_uniform_count, out, message);
+  const auto with_uniform_count = [&v] {
+    BlurVariant u = v;
+    u.half_taps = 0;
+    return u;
+  };
+  if (p.refused) return blur(with_uniform_count(), out, message);
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
@@ -120,7 +123,7 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
     }
     p.refused = true;
     message->clear();
-    return blur(with_uniform_count, out, message);
+    return blur(with_uniform_count(), out, message);
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[128];
