@@ -3,8 +3,9 @@
 # warnings as errors, runs every ctest suite (GL tests once on OSMesa and once on EGL surfaceless),
 # builds and runs the consumer projects against static and shared installs (check-consumers.sh),
 # runs a bounded selection under valgrind memcheck (run-valgrind.sh), then builds again with
-# AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again (its benchmark run reduced,
-# its report checks and the shader validation left to the release suite: tests/bench/CMakeLists.txt,
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite again (at -O1 -g1,
+# cmake/SssSanitizers.cmake; its benchmark run reduced, its report checks, the shader validation, the
+# offline tools and the programs no test runs left to the release suite: tests/bench/CMakeLists.txt,
 # tests/CMakeLists.txt), and runs each libFuzzer target for 20 s (run-fuzz.sh; needs clang).
 # --no-sanitizers skips the last three. Valgrind's runs and the fuzz targets go side by side, one
 # per core.
@@ -45,7 +46,7 @@ if [[ $sanitizers -eq 1 ]]; then
   # halt_on_error: UBSan is built without recovery; ASan stops at the first report anyway.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  run_suite "asan+ubsan" build/sanitize -DSSS_SANITIZE=ON -DSSS_BUILD_DEMO=OFF
+  run_suite "asan+ubsan" build/sanitize -DSSS_SANITIZE=ON -DSSS_BUILD_DEMO=OFF -DSSS_BUILD_TOOLS=OFF
   echo "== libFuzzer targets, 20 s each (skipped without clang)"
   scripts/run-fuzz.sh --seconds 20
 fi
