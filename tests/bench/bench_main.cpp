@@ -414,6 +414,7 @@ int run(const Options& options) {
       std::string path_ran;
       ErrorMetrics e;
       Timing t;
+      Timing beside_copy;  // the copy timed right before this method (none for the exact filter)
       const bool exact = config.kind == "exact-2d";
       if (exact && reference.source.rfind("GL", 0) == 0) {
         // The reference was this filter, so its error is zero by definition. Its time: the
@@ -446,6 +447,17 @@ int run(const Options& options) {
         }
         // The exact filter is slow on a software rasteriser: one frame (after one that compiles
         // its shaders) is its measurement.
+        // The copy again, timed as above right before this method's frames, so that its ratio sets
+        // two times taken moments apart: llvmpipe's 1080p copy moved between 16 and 26 ms within
+        // one run of this machine, and with one copy per scene the last method's ratio used a copy
+        // timed minutes before it. (Not interleaved frame by frame: a copy right after a method's
+        // frame, even after an untimed copy, took 18.5-19 ms against 16-17 back to back, as the
+        // method left the caches, which would have flattered every ratio by 15 %.) The exact
+        // filter's one frame keeps the scene's copy.
+        if (!exact) {
+          beside_copy = time_frames(clock, options.warmup, options.repetitions,
+                                    [&] { return copy_method->run(gpu, output, &message); });
+        }
         t = time_frames(
             clock, exact ? 1 : options.warmup,
             exact ? 1 : (sweep && options.sweep_repetitions > 0 ? options.sweep_repetitions : options.repetitions),
@@ -475,7 +487,8 @@ int run(const Options& options) {
       row.time_min_ms = t.min_ms;
       row.time_max_ms = t.max_ms;
       row.samples = t.samples;
-      row.time_ratio_to_copy = copy.median_ms > 0.0 ? t.median_ms / copy.median_ms : 0.0;
+      const double copy_ms = beside_copy.samples > 0 ? beside_copy.median_ms : copy.median_ms;
+      row.time_ratio_to_copy = copy_ms > 0.0 ? t.median_ms / copy_ms : 0.0;
       set_error_metrics(e, &row);
       rows.push_back(row);
       std::printf("[%zu/%zu] %s %s: %.3f ms (%.2f x copy), miss interior %s (no scattering: 1), rel. RMSE %.4g, "

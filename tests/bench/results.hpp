@@ -53,7 +53,7 @@ struct ResultRow {
   int passes = 0;
   double time_ms = 0.0, time_min_ms = 0.0, time_max_ms = 0.0;
   int samples = 0;
-  double time_ratio_to_copy = 0.0;  // time_ms / the two-pass copy's median, same scene and size
+  double time_ratio_to_copy = 0.0;  // time_ms / the two-pass copy's median, timed right before it
   std::string path_ran;             // how the library ran the last frame (Method::path_ran), for the document only
   double relative_rmse = 0.0, max_abs_error = 0.0, p99_abs_error = 0.0, ssim = 1.0;
   int translucent_pixels = 0;
