@@ -2,9 +2,9 @@
 # findings abort (no recovery) so that ctest sees them as failures.
 #
 # At -O1 with line tables only (-g1): the level AddressSanitizer's documentation suggests, and its
-# reports name file and line all the same. On the 2-core CI machine the build of this tree at the
+# reports name file and line all the same. On a 2-core machine like CI's the build of this tree at the
 # build type's -O2 -g took 8.3 minutes against the release build's 3.6 (instrumented template-heavy
-# test code: GoogleTest, Eigen, nlohmann-json); these flags compile each file about 2.2 times
+# test code: GoogleTest, Eigen, nlohmann-json); these flags compile each file 2.0-2.3 times
 # faster. They come after the build type's flags, and GCC and Clang take the last -O and -g given.
 if(SSS_SANITIZE)
   if(MSVC)
