@@ -445,19 +445,19 @@ int run(const Options& options) {
           ++done;
           continue;
         }
-        // The exact filter is slow on a software rasteriser: one frame (after one that compiles
-        // its shaders) is its measurement.
-        // The copy again, timed as above right before this method's frames, so that its ratio sets
-        // two times taken moments apart: llvmpipe's 1080p copy moved between 16 and 26 ms within
-        // one run of this machine, and with one copy per scene the last method's ratio used a copy
-        // timed minutes before it. (Not interleaved frame by frame: a copy right after a method's
-        // frame, even after an untimed copy, took 18.5-19 ms against 16-17 back to back, as the
-        // method left the caches, which would have flattered every ratio by 15 %.) The exact
-        // filter's one frame keeps the scene's copy.
+        // The copy again, timed as the scene's above, right before this method's frames, so that
+        // its ratio sets two times taken moments apart: llvmpipe's 1080p copy moved between 13 and
+        // 26 ms within one run of this machine, and with one copy per scene the last method's ratio
+        // used a copy timed minutes before it. (Not interleaved frame by frame: a copy right after a
+        // method's frame, even after an untimed copy, took 18.5-19 ms against 16-17 back to back,
+        // as the method left the caches, which would have flattered every ratio by 15 %.) The
+        // exact filter's one frame keeps the scene's copy.
         if (!exact) {
           beside_copy = time_frames(clock, options.warmup, options.repetitions,
                                     [&] { return copy_method->run(gpu, output, &message); });
         }
+        // The exact filter is slow on a software rasteriser: one frame (after one that compiles
+        // its shaders) is its measurement.
         t = time_frames(
             clock, exact ? 1 : options.warmup,
             exact ? 1 : (sweep && options.sweep_repetitions > 0 ? options.sweep_repetitions : options.repetitions),

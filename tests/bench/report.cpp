@@ -140,7 +140,7 @@ void write_results_document(const std::string& path, const std::string& out_dir,
          "resolution rows around the middle of the translucent region holding 1/stride² of its pixels, scaled by "
          "the pixel count (labelled so in the tables). Every time is also given as a multiple of a two-pass "
          "full-screen copy (`× copy`), which makes numbers from different machines comparable: the copy is timed "
-         "again right before each method (its warm-up and timed frames as the method's), so that both see the machine "
+         "again right before each method (with the scene copy's warm-up and timed frames), so that both see the machine "
          "alike even where its speed drifts during the run (tests/bench/bench_main.cpp).\n"
       << "- Error: against the " << info.reference
       << ": the share of the needed change a method misses (`miss`, per region and channel; next section), and over "
