@@ -450,7 +450,7 @@ int run(const Options& options) {
         // 26 ms within one run of this machine, and with one copy per scene the last method's ratio
         // used a copy timed minutes before it. (Not interleaved frame by frame: a copy right after a
         // method's frame, even after an untimed copy, took 18.5-19 ms against 16-17 back to back,
-        // as the method left the caches, which would have flattered every ratio by 15 %.) The
+        // most likely as the method left the caches, which would flatter every ratio by 15 %.) The
         // exact filter's one frame keeps the scene's copy.
         if (!exact) {
           beside_copy = time_frames(clock, options.warmup, options.repetitions,
