@@ -70,11 +70,14 @@ stress_run=("$tests/sss_gl_stress_tests" --sss-backend=osmesa
 # The GL runs natively, once, to fill the shader cache (their results are the valgrind runs').
 shader_cache="$(cd "$logs" && pwd)/mesa-shader-cache"
 rm -rf "$shader_cache"
-for native in gl_run soak_run stress_run; do
-  declare -n command="$native"
-  MESA_SHADER_CACHE_DIR="$shader_cache" "${command[@]}" >"$logs/warm-$native.log" 2>&1 || true
-  unset -n command
-done
+warm() {  # name, command...
+  local name=$1
+  shift
+  MESA_SHADER_CACHE_DIR="$shader_cache" "$@" >"$logs/warm-$name.log" 2>&1 || true
+}
+warm gl "${gl_run[@]}"
+warm soak "${soak_run[@]}"
+warm stress "${stress_run[@]}"
 
 # The longest first, so the shorter ones fill whichever core frees up first.
 run gl-osmesa "${gl_run[@]}"

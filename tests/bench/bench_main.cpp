@@ -359,8 +359,12 @@ int run(const Options& options) {
               : make_reference(scene, gpu, options.cpu_reference_max_pixels, options.cpu_spot_checks, stride);
     if (reference.check.checked > 0) checks.push_back(reference.check);
     std::string message;
-    const Timing copy = time_frames(clock, options.warmup, options.repetitions,
-                                    [&] { return copy_method->run(gpu, output, &message); });
+    // The yardstick: the two-pass copy of this scene, timed here and again before each method.
+    const auto time_copy = [&] {
+      return time_frames(clock, options.warmup, options.repetitions,
+                         [&] { return copy_method->run(gpu, output, &message); });
+    };
+    const Timing copy = time_copy();
     ++done;
     std::printf("[%zu/%zu] %s%s: reference %s, copy %.3f ms\n", done, total, tag.c_str(),
                 sweep ? (" (" + std::to_string(job.footprint_mm).substr(0, 6) + " mm/px)").c_str() : "",
@@ -445,17 +449,14 @@ int run(const Options& options) {
           ++done;
           continue;
         }
-        // The copy again, timed as the scene's above, right before this method's frames, so that
+        // The copy again, as the scene's above, right before this method's frames, so that
         // its ratio sets two times taken moments apart: llvmpipe's 1080p copy moved between 13 and
         // 26 ms within one run of this machine, and with one copy per scene the last method's ratio
         // used a copy timed minutes before it. (Not interleaved frame by frame: a copy right after a
         // method's frame, even after an untimed copy, took 18.5-19 ms against 16-17 back to back,
         // most likely as the method left the caches, which would flatter every ratio by 15 %.) The
         // exact filter's one frame keeps the scene's copy.
-        if (!exact) {
-          beside_copy = time_frames(clock, options.warmup, options.repetitions,
-                                    [&] { return copy_method->run(gpu, output, &message); });
-        }
+        if (!exact) beside_copy = time_copy();
         // The exact filter is slow on a software rasteriser: one frame (after one that compiles
         // its shaders) is its measurement.
         t = time_frames(
