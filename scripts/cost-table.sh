@@ -4,7 +4,12 @@
 # the repeatable counterpart of the benchmark's llvmpipe times.
 #
 #   scripts/cost-table.sh [--size WxH] [--scenes a,b,...] [--baseline PROBE --baseline-name NAME] > FILE.md
+#   scripts/cost-table.sh [--size WxH] [--scenes a,b,...] --baseline-counts OLD.md > FILE.md
 #
+# --baseline-counts: the baseline column of an earlier table of this script (same size, scenes and
+# paths), carried over instead of counted again; the counts repeat, so this skips a second build of
+# an old release (0.1's probe needs its sources patched) and half of the time. The header names the
+# table it came from.
 # PROBE: another checkout's build/release/tests/bench/sss_cost_probe (tests/bench/cost_probe.cpp
 # builds against sss 0.1 too: copy it and its CMake lines there). Default size 640x360 (about 15 s
 # a count; 1920x1080 about 2.5 min); default scenes head-close, head-mid, head-far and empty. The
@@ -15,8 +20,33 @@ cd "$(dirname "$0")/.."
 
 size=640x360
 scenes=head-close,head-mid,head-far,empty
+baseline_counts=""
+args=()
+while [[ $# -gt 0 ]]; do
+  if [[ $1 == --baseline-counts ]]; then
+    baseline_counts=$2
+    shift 2
+  else
+    args+=("$1")
+    shift
+  fi
+done
 source scripts/cost-options.sh
-cost_options cost-table.sh "$@"
+cost_options cost-table.sh "${args[@]}"
+if [[ -n $baseline_counts ]]; then
+  [[ -z $baseline ]] || { echo "cost-table.sh: --baseline and --baseline-counts exclude each other" >&2; exit 2; }
+  grep -q "^# Instructions per frame on llvmpipe ($size," "$baseline_counts" ||
+    { echo "cost-table.sh: $baseline_counts is not a table at $size" >&2; exit 2; }
+  # Its header row's third column is the baseline's name.
+  baseline_name=$(awk -F' [|] ' '/^[|] scene [|] path [|]/ { print $3; exit }' "$baseline_counts")
+  [[ -n $baseline_name ]] || { echo "cost-table.sh: $baseline_counts has no baseline column" >&2; exit 2; }
+fi
+carried() {  # scene, path: the baseline's count in $baseline_counts
+  local n
+  n=$(awk -F' *[|] *' -v s="$1" -v p="$2" '$2 == s && $3 == p { print $4; exit }' "$baseline_counts")
+  [[ -n $n ]] || { echo "cost-table.sh: $baseline_counts has no row for $1 $2" >&2; exit 2; }
+  echo "$n"
+}
 count() {  # probe, scene, path
   scripts/cost-probe.sh "$1" -- --scene "$2" --size "$size" --path "$3" | awk '{print $NF}'
 }
@@ -33,8 +63,13 @@ copy=$(count "$probe" head-close copy)
 echo "\`× copy\`: this build's count over the benchmark's two-pass full-screen copy (\`--path copy\`, $copy"
 echo "instructions here): the benchmark's \`× copy\` in work, not time (the copy is bound by memory, which a"
 echo "count does not see, so it reads higher than the times' ratio)."
+if [[ -n $baseline_counts ]]; then
+  written=$(grep -o 'cost-table.sh` at [0-9a-f]* on [0-9-]* [0-9:]* UTC' "$baseline_counts" | head -1 | cut -d' ' -f2-)
+  echo "The $baseline_name counts are carried over from the table this one replaces (written $written;"
+  echo "\`--baseline-counts\`): a count repeats, so they were not counted again."
+fi
 echo
-if [[ -n $baseline ]]; then
+if [[ -n $baseline || -n $baseline_counts ]]; then
   echo "| scene | path | $baseline_name | this build ($rev) | ratio | × copy |"
   echo "|---|---|---:|---:|---:|---:|"
 else
@@ -45,8 +80,12 @@ for path in default fragment masked; do
   for scene in ${scenes//,/ }; do
     now=$(count "$probe" "$scene" "$path")
     over_copy=$(awk -v a="$now" -v b="$copy" 'BEGIN { printf "%.2f", a / b }')
-    if [[ -n $baseline ]]; then
-      before=$(count "$baseline" "$scene" "$path")
+    if [[ -n $baseline || -n $baseline_counts ]]; then
+      if [[ -n $baseline ]]; then
+        before=$(count "$baseline" "$scene" "$path")
+      else
+        before=$(carried "$scene" "$path")
+      fi
       ratio=$(awk -v a="$now" -v b="$before" 'BEGIN { printf "%.3f", a / b }')
       echo "| $scene | $path | $before | $now | $ratio | $over_copy |"
     else

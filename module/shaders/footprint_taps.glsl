@@ -58,9 +58,12 @@ uniform int u_half_taps;                      // the most taps on either side
 uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
 #endif
 
-// The pass's kernel integrated from 0 to x_mm, as sss::math::footprint_half_cdf.
-vec3 half_cdf(float x_mm) {
-  float u = sqrt(min(x_mm / SSS_FOOTPRINT.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+// The pass's kernel integrated from 0 to `fraction` of its reach, as
+// sss::math::footprint_half_cdf_at_fraction. The taps pass the sum of two positions times
+// footprint_sum's midpoint scale: one division per pixel, not two per tap (llvmpipe's tap loop
+// waited on them).
+vec3 half_cdf(float fraction) {
+  float u = sqrt(min(fraction, 1.0)) * float(SSS_CDF_ENTRIES - 1);
   int j = min(int(u), SSS_CDF_ENTRIES - 2);
   float f = u - float(j);
   return SSS_CDF(j).rgb * (1.0 - f) + SSS_CDF(j + 1).rgb * f;
@@ -119,9 +122,12 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
   vec3 sum = centre * (2.0 * total + SSS_FOOTPRINT.yzw);
   vec3 below = total;
   float p = 0.0;
+  // Two positions' sum times this: the fraction of the reach at their midpoint, in profile mm over
+  // the reach (sss::math::footprint_midpoint_scale). Not the clamped reach_pixels: the same product.
+  float midpoint_scale = 0.5 / (SSS_FOOTPRINT.x * step_pixels);
   if (count > 0) {
     p = tap_position(1, 0.0, dense, reach_pixels);
-    below = half_cdf(0.5 * p / step_pixels);
+    below = half_cdf(p * midpoint_scale);
     sum = centre * (2.0 * below + SSS_FOOTPRINT.yzw);
   }
 #ifdef SSS_HALF_TAPS
@@ -131,7 +137,7 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
   for (int i = 1; i <= count; ++i) {
 #endif
     float next = i < count ? tap_position(i + 1, p, dense, reach_pixels) : 0.0;
-    vec3 upto = i < count ? half_cdf(0.5 * (p + next) / step_pixels) : total;
+    vec3 upto = i < count ? half_cdf((p + next) * midpoint_scale) : total;
     float read = p;
 #if SSS_JITTER
     if (i >= jitter_from) read = jittered_position(inner, p, next, i == count, noise);

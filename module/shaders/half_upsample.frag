@@ -48,8 +48,8 @@ vec4 table(int entry, int row) { return texelFetch(u_tables, ivec2(entry, row), 
 // The weights the pass of table row `row` (its reach and delta: `footprint`) gives, at `step`
 // pixels per profile mm, to the centre (returned) and to each pixel beside it (*beside; 0 where its
 // first tap is farther out): footprint_taps.glsl's, as math::footprint_near_weights.
-vec3 half_cdf_at(int row, vec4 footprint, float x_mm) {
-  float u = sqrt(min(x_mm / footprint.x, 1.0)) * float(SSS_CDF_ENTRIES - 1);
+vec3 half_cdf_at(int row, float fraction) {  // fraction: of the row's reach
+  float u = sqrt(min(fraction, 1.0)) * float(SSS_CDF_ENTRIES - 1);
   int j = min(int(u), SSS_CDF_ENTRIES - 2);
   float f = u - float(j);
   return table(j, row).rgb * (1.0 - f) + table(j + 1, row).rgb * f;
@@ -63,10 +63,11 @@ vec3 near_weights(int row, vec4 footprint, float step, out vec3 beside) {
   // is at least u_min_reach pixels): the table's total is not read per pixel.
   if (count == 0) return 2.0 * table(SSS_CDF_ENTRIES - 1, row).rgb + footprint.yzw;
   float first = dense ? 1.0 : max(1.0, floor(reach * u_spacing.x + 0.5));
-  vec3 below = half_cdf_at(row, footprint, 0.5 * first / step);
+  float midpoint_scale = 0.5 / (footprint.x * step);  // as footprint_taps.glsl's
+  vec3 below = half_cdf_at(row, first * midpoint_scale);
   if (first == 1.0) {
     float second = dense ? 2.0 : max(2.0, floor(reach * u_spacing.y + 0.5));
-    vec3 upto = count > 1 ? half_cdf_at(row, footprint, 0.5 * (first + second) / step)
+    vec3 upto = count > 1 ? half_cdf_at(row, (first + second) * midpoint_scale)
                           : table(SSS_CDF_ENTRIES - 1, row).rgb;
     beside = upto - below;
   }

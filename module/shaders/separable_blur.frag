@@ -1,5 +1,5 @@
 // One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
-// along `u_axis`, its footprint scaled per pixel by depth and by the strength, taps blended back to
+// along the pass's axis (horizontal: the SSS_PACKED_OUTPUT pass; vertical: the other), its footprint scaled per pixel by depth and by the strength, taps blended back to
 // the centre colour as their depth leaves the kernel's reach (follow-surface). A kernel of several
 // separable terms (sum of Gaussians, SVD rank N) runs this pair of passes once per term; the
 // vertical pass of a later term adds the earlier terms' sum (SSS_ACCUMULATE).
@@ -26,6 +26,11 @@
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    unused here (pass_inputs.frag linearises); the compute variant reads it
 //   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
+//   SSS_IMAGE_TAPS      1: the taps read u_source's texture through image unit 0 (imageLoad), where
+//                       the context has image units (desktop GL 4.3+, GLSL 4.20): on llvmpipe a
+//                       texelFetch calls a sampling function that works out a mip level per lane,
+//                       and the tap loop spills its registers around each call (the 1080p close-up
+//                       took 13 % longer); the centre's own texel still comes from the sampler
 //   SSS_PROFILE_IDS     per-pixel profiles (sss_frame.profile_texture): 0 none; 1 an R8UI index,
 //                       which pass_inputs.frag put in the low byte of the distance word; 2 an R16UI
 //                       one, read per tap from the host's texture (unit 4). The centre's index
@@ -47,14 +52,19 @@
 
 SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits (pass_inputs.frag)
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
+#if SSS_IMAGE_TAPS
+layout(binding = 0, rgba32ui) readonly uniform highp uimage2D u_source_taps;  // u_source's texture
+#define sss_tap_texel(texel) imageLoad(u_source_taps, texel)
+#else
+#define sss_tap_texel(texel) texelFetch(u_source, texel, 0)
+#endif
 #if SSS_OUTSIDE == 2
 SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
 #endif
 #if SSS_ACCUMULATE
 SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
 #endif
-uniform vec2 u_axis;                  // (1, 0) or (0, 1)
-uniform float u_pixels_per_mm;        // along u_axis, at clip w = 1 and strength 1
+uniform float u_pixels_per_mm;        // along the axis, at clip w = 1 and strength 1
 uniform float u_follow_surface;       // 1 / the kernel's reach in world units (SSS_FOLLOW_SURFACE 2: 1 / world units per mm)
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
 
@@ -62,7 +72,7 @@ uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, 
 #if SSS_PROFILE_IDS == 2
 SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R16UI: profile (bits 0-3), object
 #endif
-uniform vec4 u_profile[SSS_PROFILES];  // per profile: pixels per mm along u_axis, follow-surface factor, 1/(2v)
+uniform vec4 u_profile[SSS_PROFILES];  // per profile: pixels per mm along the axis, follow-surface factor, 1/(2v)
 uniform int u_profile_count;           // the profiles set (sss_set_profiles)
 uint sss_centre_id;                    // the centre pixel's whole index
 bool sss_tap_foreign;                  // the last tap sss_fetch_tap read has another index
@@ -70,8 +80,10 @@ bool sss_tap_foreign;                  // the last tap sss_fetch_tap read has an
 
 #if SSS_PACKED_OUTPUT
 out uvec4 o_packed;
+const int kSssAxis = 0;  // the horizontal pass is the one that writes the packed intermediate
 #else
 out vec4 o_color;
+const int kSssAxis = 1;
 #endif
 
 // A texel's distance word as a view distance: with R8UI indices its low byte is the index.
@@ -91,15 +103,26 @@ uint sss_index(uint word, ivec2 texel) {
 #endif
 }
 
-// footprint_taps.glsl's tap reads: straight from the textures, around the fragment.
+// footprint_taps.glsl's tap reads: straight from the textures, along the axis from the fragment.
+// u_clamp is read once per pixel, into the site, and only its bounds along the axis reach the taps:
+// llvmpipe loaded all four of its components again for every tap (a per-lane load each, since the
+// loop's texel fetches may write memory as far as LLVM knows), a tenth of the tap loop's work.
 struct TapSite {
-  vec2 centre;  // gl_FragCoord.xy
+  float along;                 // gl_FragCoord along the axis
+  float clamp_min, clamp_max;  // u_clamp along the axis
+  int across;                  // the taps' texel coordinate across the axis (the centre's, clamped)
 };
 
+TapSite sss_tap_site() {
+  vec4 box = u_clamp;
+  return TapSite(gl_FragCoord[kSssAxis], box[kSssAxis], box[2 + kSssAxis],
+                 int(clamp(gl_FragCoord[1 - kSssAxis], box[1 - kSssAxis], box[3 - kSssAxis])));
+}
+
 vec4 sss_fetch_tap(TapSite site, float offset) {
-  vec2 position = clamp(site.centre + u_axis * offset, u_clamp.xy, u_clamp.zw);
-  ivec2 texel = ivec2(position);
-  uvec4 t = texelFetch(u_source, texel, 0);
+  int along = int(clamp(site.along + offset, site.clamp_min, site.clamp_max));
+  ivec2 texel = kSssAxis == 0 ? ivec2(along, site.across) : ivec2(site.across, along);
+  uvec4 t = sss_tap_texel(texel);
 #if SSS_PROFILE_IDS
   sss_tap_foreign = sss_index(t.a, texel) != sss_centre_id;
 #endif
@@ -157,8 +180,7 @@ void main() {
   float step_pixels = u_pixels_per_mm * strength / w;
   float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
 #endif
-  vec3 sum = footprint_sum(TapSite(gl_FragCoord.xy), centre.rgb, step_pixels, centre_distance, follow_surface,
-                           pixel, u_axis.y > 0.5 ? 1 : 0);
+  vec3 sum = footprint_sum(sss_tap_site(), centre.rgb, step_pixels, centre_distance, follow_surface, pixel, kSssAxis);
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif

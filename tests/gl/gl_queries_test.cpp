@@ -206,12 +206,14 @@ TEST_F(GlQueries, ASteadyFrameWithAStrengthTextureMakesNone) {
 }
 
 // What the state guard reads in a steady in-place frame of the plain fragment path with one kernel
-// term and no stencil, on this context: the list in sss.h less what that frame cannot change (image
-// unit 0: only the compute path; stencil func, ref, masks and ops: only a stencil mask; the
-// multisample bindings, GL_SAMPLE_MASK_VALUE and GL_MULTISAMPLE: only the MSAA path, whose
-// write-back alone draws into a multisampled target; texture unit 3: only normals and kernels of
-// several terms), with the host's program 0 (a current one adds its glIsProgram).
-std::map<std::string, long> expected_guard_reads(bool es, int es_minor) {
+// term and no stencil, on this context: the list in sss.h less what that frame cannot change (stencil
+// func, ref, masks and ops: only a stencil mask; the multisample bindings, GL_SAMPLE_MASK_VALUE and
+// GL_MULTISAMPLE: only the MSAA path, whose write-back alone draws into a multisampled target;
+// texture unit 3: only normals and kernels of several terms), with the host's program 0 (a current
+// one adds its glIsProgram). `image_units`: the context has them (desktop GL 4.3+), where the
+// fragment passes read their taps through image unit 0, so its name, level, layer, access and
+// format and whether it is layered are read too.
+std::map<std::string, long> expected_guard_reads(bool es, int es_minor, bool image_units) {
   long integers = 7;   // program, vertex array, draw and read framebuffer, renderbuffer, unpack buffer, active texture
   integers += 3 * 2;   // units 0-2: GL_TEXTURE_BINDING_2D and GL_SAMPLER_BINDING
   integers += 1;       // GL_VIEWPORT
@@ -224,7 +226,13 @@ std::map<std::string, long> expected_guard_reads(bool es, int es_minor) {
   }
   integers += 1;       // GL_DEPTH_FUNC: the fragment passes cull by the module's depth (issue 24)
   // GL_COLOR_WRITEMASK and GL_DEPTH_WRITEMASK; GL_DEPTH_RANGE.
-  return {{"glGetBooleanv", 2}, {"glGetFloatv", 1}, {"glGetIntegerv", integers}, {"glIsEnabled", enables}};
+  std::map<std::string, long> reads = {
+      {"glGetBooleanv", 2}, {"glGetFloatv", 1}, {"glGetIntegerv", integers}, {"glIsEnabled", enables}};
+  if (image_units) {
+    reads["glGetIntegeri_v"] = 5;
+    reads["glGetBooleani_v"] = 1;
+  }
+  return reads;
 }
 
 TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanChange) {
@@ -232,7 +240,11 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
   if (HasFatalFailure()) return;
   const GlCallCounts n = steady_counts(described_frame());
   const int es_minor = is_gles() ? std::atoi(reinterpret_cast<const char*>(glGetString(GL_VERSION)) + 12) : 0;
-  std::map<std::string, long> expected = expected_guard_reads(is_gles(), es_minor);
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  const bool image_units = !is_gles() && major * 10 + minor >= 43;
+  std::map<std::string, long> expected = expected_guard_reads(is_gles(), es_minor, image_units);
   long per_frame_total = 0;
   for (auto& [name, count] : expected) {
     per_frame_total += count;
@@ -244,10 +256,9 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
                                  << per_frame(expected, kSteadyFrames) << " (" << per_frame_total << ")";
   EXPECT_EQ(n.total_creations(), 0) << n.describe_creations();
 
-  // The default path, SSS_PATH_AUTO, may take the compute path (image unit 0, where the context has
-  // compute shaders), so it reads the image unit's name, level, layer, access and format and whether
-  // it is layered; and the masked path, whose tile marks go on texture unit 5 (its texture and
-  // sampler). (The masked path marks no stencil: it culls by depth, as the plain one.)
+  // The default path, SSS_PATH_AUTO, may take the masked path too, whose tile marks go on texture
+  // unit 5 (its texture and sampler). (The masked path marks no stencil: it culls by depth, as the
+  // plain one; image unit 0 is read for both, as for the compute path.)
   sss_settings s = settings_;
   s.path = SSS_PATH_AUTO;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
@@ -259,15 +270,8 @@ TEST_F(GlQueries, ADescribedSteadyFrameWithStateRestoreReadsOnlyTheStateItCanCha
     glFinish();
   }
   const GlCallCounts a = steady_counts(f);
-  std::map<std::string, long> expected_auto = expected_guard_reads(is_gles(), es_minor);
+  std::map<std::string, long> expected_auto = expected_guard_reads(is_gles(), es_minor, image_units);
   expected_auto["glGetIntegerv"] += 2;  // unit 5: GL_TEXTURE_BINDING_2D and GL_SAMPLER_BINDING
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (!is_gles() && major * 10 + minor >= 43) {
-    expected_auto["glGetIntegeri_v"] = 5;
-    expected_auto["glGetBooleani_v"] = 1;
-  }
   per_frame_total = 0;
   for (auto& [name, count] : expected_auto) {
     per_frame_total += count;

@@ -9,7 +9,7 @@
 // order of their numbers, to the same name + ".parts".
 // sss_shader_variants --name-log <stage file>: the validator's log (stdin) with its locations named
 // by the module's own gl::name_log_sources, from the stage's .parts.
-// sss_shader_variants --tap-fetches: the texture fetches one tap of a preprocessed blur stage
+// sss_shader_variants --tap-fetches: the texture fetches and image loads one tap of a preprocessed blur stage
 // (stdin, glslangValidator -E) makes: those in sss_fetch_tap's body and in the bodies of the
 // functions it calls (for the shaders.tap_fetches test, cmake/SssCountTapFetches.cmake).
 #include <cstdio>
@@ -98,18 +98,25 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
   // Every switch set with the tap count as a uniform (any count but the presets'); the presets'
   // constant counts (the loop and spacing differ, the rest does not) on the written-back pair of
-  // the default's switches, with and without jitter.
+  // the default's switches, with and without jitter. GLSL 4.20: every one with its taps read
+  // through the image unit (what a GL 4.3+ context builds, ProgramCache::blur), and the default pair
+  // also through the sampler (a GL 4.2 context; the other dialects always read them so).
   for (int i = 0; i < gl::kBlurVariantCount; ++i) {
     gl::BlurVariant v = gl::blur_variant_at(i);
     if (!gl::is_fragment_blur_variant(v)) continue;
     const bool default_pair = v.follow_surface == 1 && v.profile_ids == 0 && !v.accumulate &&
                               (v.outside == gl::BlurOutside::discard || v.packed_output);
-    for (const int half_taps : {0, SSS_TAPS_LOW / 2, SSS_TAPS_MEDIUM / 2, SSS_TAPS_HIGH / 2}) {
-      if (half_taps != 0 && !default_pair) continue;
-      v.half_taps = half_taps;
-      out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + "_t" + std::to_string(half_taps) +
-                     ".frag",
-                 gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+    const bool glsl420 = dialect == gl::GlslVariant::glsl420;
+    for (const bool image_taps : {false, true}) {
+      if (image_taps ? !glsl420 : glsl420 && !default_pair) continue;
+      v.image_taps = image_taps;
+      for (const int half_taps : {0, SSS_TAPS_LOW / 2, SSS_TAPS_MEDIUM / 2, SSS_TAPS_HIGH / 2}) {
+        if (half_taps != 0 && !default_pair) continue;
+        v.half_taps = half_taps;
+        out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + "_t" + std::to_string(half_taps) +
+                       (image_taps ? "_i" : "") + ".frag",
+                   gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+      }
     }
   }
   for (int outside = 0; outside < 3; ++outside) {
@@ -209,7 +216,9 @@ int tap_fetches() {
   const std::string text = in.str();
   const std::string body = function_body(text, "sss_fetch_tap");
   if (body.empty()) return -1;
-  const auto fetches = [](const std::string& b) { return count(b, "texelFetch(") + count(b, "texture("); };
+  const auto fetches = [](const std::string& b) {
+    return count(b, "texelFetch(") + count(b, "texture(") + count(b, "imageLoad(");
+  };
   int n = fetches(body);
   for (std::size_t at = body.find("sss_"); at != std::string::npos; at = body.find("sss_", at + 1)) {
     const std::size_t end = body.find('(', at);

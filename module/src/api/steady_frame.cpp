@@ -83,7 +83,10 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   const unsigned path = ctx.settings.path;
   const bool msaa = !steady || ctx.steady.color.multisampled();
   gl::StateGuard::Scope scope;
-  scope.image_unit = path == SSS_PATH_COMPUTE || path == SSS_PATH_AUTO;
+  // Image unit 0: the compute path's target, and on GL 4.3+ the fragment passes' taps
+  // (BlurVariant::image_taps), which every separable frame may run (the compute path falls back to
+  // them). The guard keeps it only where the context has image units.
+  scope.image_unit = !ctx.settings.cross_bilateral;
   scope.multisample = msaa;
   scope.stencil = frame.stencil != nullptr || msaa;
   // The half-resolution path: the culling depth (with a host stencil too) and units 3 and 4.

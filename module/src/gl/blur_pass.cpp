@@ -104,9 +104,17 @@ void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {
 }
 
 // An integer texture is incomplete under GL_LINEAR, even for texelFetch: the nearest sampler.
-void bind_packed_inputs(PassContext& ctx, GLuint source) {
+void bind_packed_inputs(PassContext& ctx, const BlurProgram& program, GLuint source, GLuint strength) {
   bind_texture(ctx, unit::source, source, ctx.objects.nearest_sampler);
-  bind_texture(ctx, unit::pass_strength, ctx.targets.names().pass_strength, ctx.objects.nearest_sampler);
+  bind_texture(ctx, unit::pass_strength, strength, ctx.objects.nearest_sampler);
+  if (program.image_taps) {
+    // `source` was last written as a render target (the inputs draw, or the horizontal pass), which
+    // is not one of the incoherent shader writes glMemoryBarrier is for; the barrier costs llvmpipe
+    // nothing measurable and keeps a driver that caches image reads apart from its render targets
+    // from serving an older frame's texels.
+    ctx.gl.MemoryBarrier(SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    ctx.gl.BindImageTexture(0, source, 0, 0, 0, READ_ONLY, RGBA32UI);
+  }
 }
 
 void bind_profile_inputs(PassContext& ctx, const FilterRun& run, int axis) {

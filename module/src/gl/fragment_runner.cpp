@@ -22,7 +22,7 @@ namespace sss::gl {
 
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis) {
   set_blur_uniforms(ctx, p, run, term, axis);
-  bind_packed_inputs(ctx, source);
+  bind_packed_inputs(ctx, p, source, ctx.targets.names().pass_strength);
   if (run.has_profiles()) bind_profile_inputs(ctx, run, axis);
   draw_cover(ctx, p.tile_grid);
 }

@@ -177,8 +177,7 @@ void draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int
   set_blur_uniforms(ctx, p, half, 0, axis);
   // The vertical pass writes half_result, in the intermediate's format (not the target's).
   if (axis == 1) f.Uniform1i(p.round_to_half, half.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
-  bind_texture(ctx, unit::source, axis == 0 ? t.half_taps : t.half_intermediate, ctx.objects.nearest_sampler);
-  bind_texture(ctx, unit::pass_strength, t.half_strength, ctx.objects.nearest_sampler);
+  bind_packed_inputs(ctx, p, axis == 0 ? t.half_taps : t.half_intermediate, t.half_strength);
   if (half.has_profiles()) bind_profile_inputs(ctx, half, axis);
   draw_cover(ctx, p.tile_grid);
 }

@@ -98,7 +98,11 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
   }
 }
 
-sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
+sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, std::string* message) {
+  // Image loads for the taps where the context has them (BlurVariant::image_taps): GLSL 4.20's
+  // layout(binding) names the unit, and glBindImageTexture is loaded on GL 4.3+.
+  BlurVariant v = requested;
+  v.image_taps = variant_ == GlslVariant::glsl420 && gl_->has_compute;
   BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
   const auto with_uniform_count = [&v] {
     BlurVariant u = v;
@@ -126,13 +130,14 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
     return blur(with_uniform_count(), out, message);
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  char label[128];
+  char label[144];
   std::snprintf(label, sizeof label,
-                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d taps=%d",
+                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d taps=%d image=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.jitter ? 1 : 0, v.accumulate ? 1 : 0,
-                v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1);
+                v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1, v.image_taps ? 1 : 0);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
+  p.image_taps = v.image_taps;
   set_unit(p.program, p.source, unit::source);
   set_unit(p.program, p.strength, unit::pass_strength);
   set_unit(p.program, p.original, unit::original);

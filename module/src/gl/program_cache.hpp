@@ -38,6 +38,8 @@ struct BlurProgram {
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
   bool compute = false;
+  // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_tap_image binds the source there.
+  bool image_taps = false;
   // A preset tap count's variant (SSS_HALF_TAPS) the driver would not build: the variant with the
   // count as a uniform stands in for it (ProgramCache::blur), without another attempt per frame.
   bool refused = false;

@@ -32,6 +32,12 @@ struct BlurVariant {
   // at a preset tap count, compile_time_half_taps); 0: a uniform (the compute path, whose loop
   // measured slower unrolled on an NVIDIA H200, and other tap counts). Not part of the index.
   int half_taps = 0;
+  // SSS_IMAGE_TAPS: the fragment passes read their taps through image unit 0 (imageLoad) instead of
+  // a sampler. Set by the program cache on desktop GL 4.3+ (where the module loads
+  // glBindImageTexture) with the GLSL 4.20 dialect; a property of the context, not of the frame, so
+  // not part of the index. On llvmpipe a texelFetch is a call to a sampling function that works out
+  // a mip level per lane, around which the tap loop spills its registers; imageLoad is inlined.
+  bool image_taps = false;
 };
 // The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
 // (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll; any

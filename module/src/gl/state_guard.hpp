@@ -36,7 +36,7 @@ enum : uint32_t {
   draw_framebuffer = 1u << 14,
   vertex_array = 1u << 15,
   program = 1u << 16,
-  image_unit = 1u << 17,         // image unit 0 (the compute path's target), GL 4.3+
+  image_unit = 1u << 17,         // image unit 0 (the compute path's target, the fragment taps), GL 4.3+
   uniform_buffer = 1u << 18,     // uniform buffer binding 0 and the generic one (per-pixel profiles)
   pack_state = 1u << 19,         // pack buffer, alignment, row length, skips (debug checks' readback)
   depth = 1u << 20,              // depth func, write mask and range (the fragment passes' culling)
@@ -54,7 +54,7 @@ constexpr int kUnitCount = 6;
 
 // The parts of the list a call may change; everything else is saved always. The default is all.
 struct GuardScope {
-  bool image_unit = true;    // image unit 0: only the compute path binds it
+  bool image_unit = true;    // image unit 0: the compute path's target, the fragment passes' taps (GL 4.3+)
   bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
                              // masked path's or the MSAA path's)
   bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE,
@@ -125,7 +125,8 @@ class StateGuard {
   std::array<GLboolean, 4> color_mask_{};
   std::array<GLint, 2> polygon_mode_{};
   StencilFace front_{}, back_{};
-  // Image unit 0 (GL 4.3+: has_compute), which the compute path binds its target to.
+  // Image unit 0 (GL 4.3+: has_compute): the compute path binds its target there, the fragment
+  // passes their taps' texture.
   struct ImageUnit {
     GLint name = 0, level = 0, layer = 0, access = 0, format = 0;
     GLboolean layered = 0;

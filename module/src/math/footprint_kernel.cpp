@@ -116,9 +116,15 @@ FootprintTable footprint_table_gaussians(const std::vector<LineGaussian>& mixtur
 }
 
 std::array<float, 3> footprint_half_cdf(const FootprintTable& table, float x_mm) {
+  return footprint_half_cdf_at_fraction(table, x_mm / table.reach_mm);
+}
+
+float footprint_midpoint_scale(const FootprintTable& table, float step) { return 0.5f / (table.reach_mm * step); }
+
+std::array<float, 3> footprint_half_cdf_at_fraction(const FootprintTable& table, float fraction) {
   const int last = kFootprintEntries - 1;
   // As the shaders: u = sqrt(min(x / reach, 1)) · (N − 1), linear between the two entries around u.
-  const float u = std::sqrt(std::min(x_mm / table.reach_mm, 1.0f)) * static_cast<float>(last);
+  const float u = std::sqrt(std::min(fraction, 1.0f)) * static_cast<float>(last);
   const int j = std::min(static_cast<int>(u), last - 1);
   const float f = u - static_cast<float>(j);
   const auto& a = table.half_cdf[idx(j)];
@@ -162,13 +168,17 @@ FootprintTaps footprint_taps(const FootprintTable& table, const std::vector<floa
     }
   }
   const std::array<float, 3>& total = table.half_cdf.back();
+  // The centre's cell ends at the midpoint between it (position 0) and the first tap; each tap's at
+  // the midpoint to the next.
+  const float scale = out.count > 0 ? footprint_midpoint_scale(table, step) : 0.0f;
   std::array<float, 3> below =
-      out.count > 0 ? footprint_half_cdf(table, 0.5f * static_cast<float>(out.position[0]) / step) : total;
+      out.count > 0 ? footprint_half_cdf_at_fraction(table, static_cast<float>(out.position[0]) * scale) : total;
   for (std::size_t c = 0; c < 3; ++c) out.weight[0][c] = 2.0f * below[c] + table.delta[c];
   for (int i = 0; i < out.count; ++i) {
     const std::array<float, 3> upto =
         i + 1 < out.count
-            ? footprint_half_cdf(table, 0.5f * static_cast<float>(out.position[idx(i)] + out.position[idx(i + 1)]) / step)
+            ? footprint_half_cdf_at_fraction(
+                  table, static_cast<float>(out.position[idx(i)] + out.position[idx(i + 1)]) * scale)
             : total;
     for (std::size_t c = 0; c < 3; ++c) out.weight[idx(i + 1)][c] = upto[c] - below[c];
     below = upto;

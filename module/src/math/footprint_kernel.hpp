@@ -66,6 +66,14 @@ FootprintTable footprint_table_gaussians(const std::vector<LineGaussian>& mixtur
 
 // C(x) by the table, in float as the shaders interpolate it.
 std::array<float, 3> footprint_half_cdf(const FootprintTable& table, float x_mm);
+// The same at x = `fraction` of the table's reach: the form the taps use, with the fraction a sum of
+// two tap positions times footprint_midpoint_scale (the shaders' half_cdf).
+std::array<float, 3> footprint_half_cdf_at_fraction(const FootprintTable& table, float fraction);
+// What turns the sum of two tap positions (pixels) into the fraction of the reach at their midpoint,
+// at `step` pixels per profile mm: 0.5 / (reach · step). One division per pixel, where dividing each
+// midpoint by the step and then by the reach put two in every tap: on llvmpipe the tap loop waited on
+// them, 3-4 % of the close-up's time.
+float footprint_midpoint_scale(const FootprintTable& table, float step);
 
 // The most taps on each side of the centre (the filter's `samples` is 2·this + 1).
 inline constexpr int kMaxFootprintHalfTaps = 32;
