@@ -14,6 +14,7 @@
 #include "filter_case.hpp"
 #include "gl_objects.hpp"
 #include "gl_state_snapshot.hpp"
+#include "host_gl_util.hpp"
 #include "multisample_textures.hpp"
 
 using namespace host_gl;
@@ -205,6 +206,32 @@ TEST_F(Faults, ARefusedPresetTapCountFallsBackToTheUniformCount) {
   EXPECT_LE(difference, 1e-6f);
   for (int frame = 0; frame < 2; ++frame) EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
   EXPECT_EQ(faults().shader_sources_broken, refused) << "a refused program was built again";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// A driver that refuses image loads in the blur programs (SSS_IMAGE_TAPS, desktop GL 4.3+; none has
+// so far) gets programs that read their taps through the sampler: the frame succeeds with the image
+// of a context whose driver built them, one warning says so, and no program tries image loads again.
+TEST_F(Faults, ARefusedImageTapProgramFallsBackToTheSampler) {
+  if (is_gles() || !host_gl::has_compute_shaders()) GTEST_SKIP() << "no image units: the taps use the sampler";
+  const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
+  faults().break_sources_with = "#define SSS_IMAGE_TAPS 1";
+  std::string log;
+  ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
+  EXPECT_EQ(faults().shader_sources_broken, 1) << "refused once, then no program asked for image loads";
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(20, 16, Depth::hardware);
+  for (int frame = 0; frame < 3; ++frame) ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(faults().shader_sources_broken, 1) << "a frame built an image-tap program again";
+  EXPECT_NE(log.find("through a sampler stands in"), std::string::npos) << log;
+  // Three frames in place: compare the first frame's result, on a fresh scene.
+  const Textures once = make_scene(20, 16, Depth::hardware);
+  ASSERT_EQ(apply(sss_, once, false), SSS_OK) << sss_last_error(sss_);
+  const std::vector<float> got = read_rgba(once.color, 20, 16);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)))
+      << "the sampler's taps read the same bits as the image unit's";
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 

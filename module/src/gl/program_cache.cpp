@@ -102,7 +102,7 @@ sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, s
   // Image loads for the taps where the context has them (BlurVariant::image_taps): GLSL 4.20's
   // layout(binding) names the unit, and glBindImageTexture is loaded on GL 4.3+.
   BlurVariant v = requested;
-  v.image_taps = variant_ == GlslVariant::glsl420 && gl_->has_compute;
+  v.image_taps = variant_ == GlslVariant::glsl420 && gl_->has_compute && !image_taps_refused_;
   BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
   const auto with_uniform_count = [&v] {
     BlurVariant u = v;
@@ -115,6 +115,19 @@ sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, s
   const std::string defines = blur_defines(v, profile_capacity_);
   p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message,
                    TileSpans::passes);
+  if (p.program == 0 && v.image_taps) {
+    // Insurance, as for the preset counts below (no driver has refused this so far): the taps read
+    // through the sampler give the same image, for this program and every one after it.
+    if (log_ != nullptr && *log_) {
+      (*log_)(SSS_LOG_WARNING,
+              "the driver refused the separable blur program that reads its taps through an image unit; the one "
+              "that reads them through a sampler stands in (" +
+                  *message + ")");
+    }
+    image_taps_refused_ = true;
+    message->clear();
+    return blur(requested, out, message);
+  }
   if (p.program == 0 && v.half_taps > 0) {
     // The preset count's variant only lets the compiler unroll the loop; the one that reads the
     // count as a uniform gives the same image. A driver that refuses the first (NVIDIA's refused a

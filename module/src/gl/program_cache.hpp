@@ -154,6 +154,9 @@ class ProgramCache {
   GlslVariant variant_ = GlslVariant::glsl330;
   bool labels_ = false;
   int profile_capacity_ = SSS_MAX_PROFILES;
+  // The driver refused a blur program that reads its taps through the image unit: every blur
+  // program from then on reads them through the sampler (BlurVariant::image_taps).
+  bool image_taps_refused_ = false;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
   // Fragment variants by blur_variant_index and half_taps (std::map: the programs stay put while a
