@@ -1,6 +1,7 @@
 // One pass of the separable subsurface-scattering filter (Jimenez et al. 2012, §3): the 1D kernel
-// along the pass's axis (horizontal: the SSS_PACKED_OUTPUT pass; vertical: the other), its footprint scaled per pixel by depth and by the strength, taps blended back to
-// the centre colour as their depth leaves the kernel's reach (follow-surface). A kernel of several
+// along the pass's axis (horizontal: the SSS_PACKED_OUTPUT pass; vertical: the other), its
+// footprint scaled per pixel by depth and by the strength, taps blended back to the centre colour
+// as their depth leaves the kernel's reach (follow-surface). A kernel of several
 // separable terms (sum of Gaussians, SVD rank N) runs this pair of passes once per term; the
 // vertical pass of a later term adds the earlier terms' sum (SSS_ACCUMULATE).
 //

@@ -73,11 +73,8 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
     p.uploaded_term = term;
     p.uploaded_axis = axis;
   }
-  if (p.compute) {
-    f.Uniform2i(p.axis, axis == 0 ? 1 : 0, axis == 0 ? 0 : 1);
-  } else {
-    f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
-  }
+  // (No axis uniform: the compute variants have SSS_AXIS, and a fragment variant's axis follows
+  // from SSS_PACKED_OUTPUT.)
   f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
   // The Gaussian depth correction measures depth in profile millimetres; the ramp in reaches.
   f.Uniform1f(p.follow_surface, p.inv_two_variance >= 0 ? k.mm_per_world : k.follow_surface_factor);

@@ -208,7 +208,6 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
   p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
-  p.axis = f.GetUniformLocation(p.program, "u_axis");
   p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
   p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");

@@ -31,14 +31,14 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 struct BlurProgram {
   GLuint program = 0;
   GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
-        axis = -1, pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
+        pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint rect = -1;  // compute programs only
   GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
   bool compute = false;
-  // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_tap_image binds the source there.
+  // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_packed_inputs binds the source there.
   bool image_taps = false;
   // A preset tap count's variant (SSS_HALF_TAPS) the driver would not build: the variant with the
   // count as a uniform stands in for it (ProgramCache::blur), without another attempt per frame.
