@@ -27,11 +27,11 @@
 //   SSS_ACCUMULATE      1: add the earlier terms' sum (u_accumulated, unit 3) to the result
 //   SSS_LINEAR_DEPTH    unused here (pass_inputs.frag linearises); the compute variant reads it
 //   SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS  the sizes of u_cdf and u_spacing
-//   SSS_IMAGE_TAPS      1: the taps read u_source's texture through image unit 0 (imageLoad), where
-//                       the context has image units (desktop GL 4.3+, GLSL 4.20): on llvmpipe a
-//                       texelFetch calls a sampling function that works out a mip level per lane,
-//                       and the tap loop spills its registers around each call (the 1080p close-up
-//                       took 13 % longer); the centre's own texel still comes from the sampler
+//   SSS_IMAGE_TAPS      1: the taps and the centre read u_source's texture through image unit 0
+//                       (imageLoad), where the context has image units (desktop GL 4.3+, GLSL
+//                       4.20): on llvmpipe a texelFetch calls a sampling function that works out a
+//                       mip level per lane, and the tap loop spills its registers around each call
+//                       (the 1080p close-up took 13 % longer); the strength keeps its sampler
 //   SSS_PROFILE_IDS     per-pixel profiles (sss_frame.profile_texture): 0 none; 1 an R8UI index,
 //                       which pass_inputs.frag put in the low byte of the distance word; 2 an R16UI
 //                       one, read per tap from the host's texture (unit 4). The centre's index
@@ -55,7 +55,7 @@ SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits 
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
 #if SSS_IMAGE_TAPS
 layout(binding = 0, rgba32ui) readonly uniform highp uimage2D u_source_taps;  // u_source's texture
-#define sss_tap_texel(texel) imageLoad(u_source_taps, texel)
+#define sss_tap_texel(texel) imageLoad(u_source_taps, texel)  // (u_source itself is then unused)
 #else
 #define sss_tap_texel(texel) texelFetch(u_source, texel, 0)
 #endif
@@ -147,7 +147,7 @@ void leave_untouched(ivec2 pixel, uvec4 texel) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  uvec4 texel = texelFetch(u_source, pixel, 0);
+  uvec4 texel = sss_tap_texel(pixel);
   vec4 centre = vec4(uintBitsToFloat(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
   // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
   // pixel keeps its own value.
