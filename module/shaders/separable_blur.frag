@@ -55,9 +55,6 @@ SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits 
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
 #if SSS_IMAGE_TAPS
 layout(binding = 0, rgba32ui) readonly uniform highp uimage2D u_source_taps;  // u_source's texture
-#define sss_tap_texel(texel) imageLoad(u_source_taps, texel)  // (u_source itself is then unused)
-#else
-#define sss_tap_texel(texel) texelFetch(u_source, texel, 0)
 #endif
 #if SSS_OUTSIDE == 2
 SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
@@ -86,6 +83,16 @@ const int kSssAxis = 0;  // the horizontal pass is the one that writes the packe
 out vec4 o_color;
 const int kSssAxis = 1;
 #endif
+
+// One texel of u_source's texture: through the image unit where the variant has it (u_source itself
+// is then unused), else the sampler.
+uvec4 sss_tap_texel(ivec2 texel) {
+#if SSS_IMAGE_TAPS
+  return imageLoad(u_source_taps, texel);
+#else
+  return texelFetch(u_source, texel, 0);
+#endif
+}
 
 // A texel's distance word as a view distance: with R8UI indices its low byte is the index.
 float sss_distance(uint word) {
