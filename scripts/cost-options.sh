@@ -1,6 +1,6 @@
 # Sourced by scripts/cost-table.sh, scripts/cost-times.sh and scripts/profile-cost.sh: their shared
-# options. The caller sets the defaults first (size, scenes; reps, frames and profiles only where it
-# takes them), then calls `cost_options NAME "$@"`; sets baseline, baseline_name and probe (this
+# options. The caller sets the defaults first (size, scenes; reps, frames, profiles and
+# baseline_counts only where it takes them), then calls `cost_options NAME "$@"`; sets baseline, baseline_name and probe (this
 # build's sss_cost_probe, under build/release or SSS_BUILD_DIR). Also `median` (stdin: one number a
 # line) for the wall-time scripts.
 cost_options() {
@@ -14,8 +14,9 @@ cost_options() {
       --scenes) scenes=$2; shift 2 ;;
       --baseline) baseline=$2; shift 2 ;;
       --baseline-name) baseline_name=$2; shift 2 ;;
-      --reps | --frames | --profiles)
+      --reps | --frames | --profiles | --baseline-counts)
         local variable=${1#--}
+        variable=${variable//-/_}
         [[ -v $variable ]] || { echo "$name: unknown argument '$1'" >&2; exit 2; }
         printf -v "$variable" '%s' "$2"
         shift 2 ;;

@@ -21,18 +21,8 @@ cd "$(dirname "$0")/.."
 size=640x360
 scenes=head-close,head-mid,head-far,empty
 baseline_counts=""
-args=()
-while [[ $# -gt 0 ]]; do
-  if [[ $1 == --baseline-counts ]]; then
-    baseline_counts=$2
-    shift 2
-  else
-    args+=("$1")
-    shift
-  fi
-done
 source scripts/cost-options.sh
-cost_options cost-table.sh "${args[@]}"
+cost_options cost-table.sh "$@"
 if [[ -n $baseline_counts ]]; then
   [[ -z $baseline ]] || { echo "cost-table.sh: --baseline and --baseline-counts exclude each other" >&2; exit 2; }
   grep -q "^# Instructions per frame on llvmpipe ($size," "$baseline_counts" ||
@@ -41,14 +31,18 @@ if [[ -n $baseline_counts ]]; then
   baseline_name=$(awk -F' [|] ' '/^[|] scene [|] path [|]/ { print $3; exit }' "$baseline_counts")
   [[ -n $baseline_name ]] || { echo "cost-table.sh: $baseline_counts has no baseline column" >&2; exit 2; }
 fi
-carried() {  # scene, path: the baseline's count in $baseline_counts
+count() {  # probe, scene, path
+  scripts/cost-probe.sh "$1" -- --scene "$2" --size "$size" --path "$3" | awk '{print $NF}'
+}
+baseline_count() {  # scene, path: counted with the baseline's probe, or carried over from $baseline_counts
+  if [[ -n $baseline ]]; then
+    count "$baseline" "$1" "$2"
+    return
+  fi
   local n
   n=$(awk -F' *[|] *' -v s="$1" -v p="$2" '$2 == s && $3 == p { print $4; exit }' "$baseline_counts")
   [[ -n $n ]] || { echo "cost-table.sh: $baseline_counts has no row for $1 $2" >&2; exit 2; }
   echo "$n"
-}
-count() {  # probe, scene, path
-  scripts/cost-probe.sh "$1" -- --scene "$2" --size "$size" --path "$3" | awk '{print $NF}'
 }
 
 rev=$(git rev-parse --short HEAD)
@@ -81,11 +75,7 @@ for path in default fragment masked; do
     now=$(count "$probe" "$scene" "$path")
     over_copy=$(awk -v a="$now" -v b="$copy" 'BEGIN { printf "%.2f", a / b }')
     if [[ -n $baseline || -n $baseline_counts ]]; then
-      if [[ -n $baseline ]]; then
-        before=$(count "$baseline" "$scene" "$path")
-      else
-        before=$(carried "$scene" "$path")
-      fi
+      before=$(baseline_count "$scene" "$path")
       ratio=$(awk -v a="$now" -v b="$before" 'BEGIN { printf "%.3f", a / b }')
       echo "| $scene | $path | $before | $now | $ratio | $over_copy |"
     else
