@@ -26,12 +26,21 @@
 //                      shades translucent pixels only: the paper's stencil culling, without a
 //                      draw of its own (a stencil can only be marked by discarding fragments,
 //                      which this draw must not do). 0: the host's (or the MSAA path's) stencil culls.
+//   SSS_COLOR_IMAGE    1: the colour is read through image unit 0 (imageLoad, its format
+//                      SSS_COLOR_IMAGE_FORMAT), where the context has image units (desktop GL 4.3+,
+//                      GLSL 4.20) and the colour texture is complete: on llvmpipe a texelFetch from
+//                      any texture but an 8-bit one calls a sampling function, which made the colour's
+//                      read a sixth of this draw's time (1080p); 0: the sampler on unit 0
 // The texel goes into the horizontal pass's target too: that pass skips the pixels the culling
 // rejects, and the vertical taps read them there.
 #include "colour_range.glsl"
 #include "depth.glsl"
 
+#if SSS_COLOR_IMAGE
+layout(binding = 0, SSS_COLOR_IMAGE_FORMAT) readonly uniform highp image2D u_color;  // as below, complete
+#else
 SSS_BINDING(0) uniform sampler2D u_color;       // the host's colour (or the module's copy of it)
+#endif
 SSS_BINDING(1) uniform highp sampler2D u_depth;  // the host's depth (hardware or linear)
 #if SSS_PROFILE_IDS == 1
 SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R8UI indices
@@ -43,7 +52,11 @@ layout(location = 2) out uvec4 o_intermediate;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+#if SSS_COLOR_IMAGE
+  vec4 color = imageLoad(u_color, pixel);
+#else
   vec4 color = texelFetch(u_color, pixel, 0);
+#endif
   uint distance = floatBitsToUint(view_distance(texelFetch(u_depth, pixel, 0).r));
 #if SSS_PROFILE_IDS == 1
   distance = (distance & 0xFFFFFF00u) | (texelFetch(u_profile_ids, pixel, 0).r & 0xFFu);

@@ -38,6 +38,7 @@ sss_result host_texture_params(sss_context* ctx, const sss_frame& frame, gl::Fil
   if (r != SSS_OK) return r;
   if ((frame.flags & SSS_FRAME_TARGET_COMPLETE) != 0) {
     run->target_complete = true;
+    run->color_complete = run->writes_back();  // in place, the target is the colour
     return SSS_OK;
   }
   // Asked only where completeness is all that keeps the frame off the compute path.
@@ -45,6 +46,12 @@ sss_result host_texture_params(sss_context* ctx, const sss_frame& frame, gl::Fil
   run->target_complete = true;
   const bool only_completeness = wants_compute && !run->identity && *gl::compute_unavailable(ctx->gl, *run) == '\0';
   run->target_complete = only_completeness && !described && gl::query_image_complete(ctx->gl, run->target());
+  // The colour, where the passes' inputs could read it through an image unit (one answer serves
+  // both in place, when the target's was asked).
+  if (!described && gl::may_read_color_image(ctx->gl, *run)) {
+    run->color_complete = run->writes_back() && only_completeness ? run->target_complete
+                                                                   : gl::query_image_complete(ctx->gl, run->color);
+  }
   return SSS_OK;
 }
 

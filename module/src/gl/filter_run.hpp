@@ -91,6 +91,12 @@ struct FilterRun {
   // (gl/host_texture_state.hpp). False, the compute path is not taken: image stores to an incomplete
   // texture are undefined, a silent no-op on some drivers.
   bool target_complete = false;
+  // The colour (single-sample) is complete too, so the passes' inputs draw may read it through an
+  // image unit (PassInputsVariant::color_image; image loads from an incomplete texture read 0): in
+  // place with SSS_FRAME_TARGET_COMPLETE, the GL's answer for an undescribed frame on GL 4.3+, or
+  // the module's copy of a colour with a strength texture. False: the inputs read it through the
+  // sampler, which gives the same image.
+  bool color_complete = false;
 
   bool writes_back() const { return output.name == 0; }
   // The texture the last pass writes: the host's colour (in place) or the separate output.

@@ -32,7 +32,16 @@ PassInputsVariant pass_inputs_variant(const FilterRun& run) {
   v.linear_depth = run.constants.linear_depth;
   v.profile_ids = profile_ids_variant(run);
   v.mark_depth = run.stencil == nullptr;
+  const int image_format = run.color_complete && !run.color.multisampled()
+                               ? image_format_index(run.color.internal_format) : -1;
+  if (image_format < kPassInputsColorImageFormats) v.color_image = image_format;
   return v;
+}
+
+bool may_read_color_image(const Functions& gl, const FilterRun& run) {
+  const int format = image_format_index(run.color.internal_format);
+  return gl.has_compute && !run.identity && !run.cross_bilateral && !run.color.multisampled() &&
+         run.strength.name == 0 && format >= 0 && format < kPassInputsColorImageFormats;
 }
 
 // The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
@@ -65,10 +74,19 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassIn
   const math::PassConstants& k = run.constants;
   f.Uniform2f(p->ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p->depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
-  bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
+  if (p->color_image >= 0) {
+    // As bind_packed_inputs' image taps: the colour was last written as a render target.
+    f.MemoryBarrier(SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    f.BindImageTexture(0, run.color.name, 0, 0, 0, READ_ONLY, kComputeImageFormats[p->color_image].internal_format);
+  } else {
+    bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
+  }
   bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
   if (v.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
   draw_cover(ctx, p->tile_grid);
+  // The host's colour leaves the image unit: the next binding there is the module's (or, without
+  // the state restore, none).
+  if (p->color_image >= 0) f.BindImageTexture(0, 0, 0, 0, 0, READ_ONLY, RGBA16F);
   if (v.mark_depth) f.DepthMask(0);  // the passes only test it
   return SSS_OK;
 }

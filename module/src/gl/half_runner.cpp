@@ -52,6 +52,14 @@ HalfVariant half_variant(const FilterRun& run) {
   return v;
 }
 
+// The full-size inputs draw's variant: it marks the culling depth with a host stencil too (the
+// half-size passes need alpha's mark).
+PassInputsVariant full_size_inputs_variant(const FilterRun& run) {
+  PassInputsVariant v = pass_inputs_variant(run);
+  v.mark_depth = true;
+  return v;
+}
+
 const math::PassKernel& kernel_of(const FilterRun& run, int profile) {
   return run.has_profiles() ? *run.profile_kernels[static_cast<std::size_t>(profile)] : *run.kernel;
 }
@@ -98,7 +106,7 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std:
   }
   if (r == SSS_OK) r = ctx.programs.blur(fragment_blur_variant(run, 0, 1, last), &p->vertical, message);
   PassInputsProgram* unused = nullptr;
-  if (r == SSS_OK) r = ctx.programs.pass_inputs(pass_inputs_variant(run), &unused, message);
+  if (r == SSS_OK) r = ctx.programs.pass_inputs(full_size_inputs_variant(run), &unused, message);
   if (r == SSS_OK) r = ctx.programs.half_inputs(half_variant(run), &p->inputs, message);
   if (r == SSS_OK) r = ctx.programs.half_upsample(half_variant(run), &p->upsample, message);
   const int w = run.color.width, h = run.color.height;
@@ -239,9 +247,7 @@ sss_result begin_frame(PassContext& ctx, const FilterRun& run, std::string* mess
   sss_result r = SSS_OK;
   if (run.stencil != nullptr) r = copy_stencil(ctx, run, *run.stencil, message, t.pass_inputs_framebuffer);
   if (r == SSS_OK && uses_tiles(run)) r = mark_tiles(ctx, run, message);
-  PassInputsVariant inputs = pass_inputs_variant(run);
-  inputs.mark_depth = true;  // with a host stencil too: the half-size passes need alpha's mark
-  if (r == SSS_OK) r = draw_pass_inputs(ctx, run, inputs, message);
+  if (r == SSS_OK) r = draw_pass_inputs(ctx, run, full_size_inputs_variant(run), message);
   if (r == SSS_OK) r = check_half_size_framebuffers(ctx, message);
   if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
   if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);

@@ -64,9 +64,16 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   // alone takes the passes, and compute falls back to them.
   const bool half = (run.path == SSS_PATH_HALF_RESOLUTION || (run.path == SSS_PATH_AUTO && run.auto_half_resolution)) &&
                     *half_resolution_unavailable(run) == '\0';
-  sss_result r = prewarm_fragment(ctx, run, message);
+  // Whether the colour is complete is each frame's to say too (FilterRun::color_complete): the
+  // passes' inputs draw reads it through the image unit where it is, through the sampler where it
+  // is not (or the context has no image units: the two runs then ask for the same programs).
+  sss_result r = SSS_OK;
+  for (const bool color_complete : {true, false}) {
+    run.color_complete = color_complete;
+    if (r == SSS_OK) r = prewarm_fragment(ctx, run, message);
+    if (r == SSS_OK && half) r = prepare_half_resolution(ctx, run, message);  // its runner's own prepare
+  }
   if (r == SSS_OK && compute) r = prewarm_compute(ctx, run, message);
-  if (r == SSS_OK && half) r = prepare_half_resolution(ctx, run, message);  // its runner's own prepare
   if (r == SSS_OK && run.path == SSS_PATH_AUTO) chooser_.prewarm();
   return r;
 }

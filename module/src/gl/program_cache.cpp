@@ -48,6 +48,7 @@ sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool lab
   PassInputsProgram* inputs = nullptr;
   PassInputsVariant culled;
   culled.mark_depth = true;
+  culled.color_image = 0;  // an RGBA16F colour that is complete, through the image unit where there is one
   if (r == SSS_OK) r = pass_inputs(culled, &inputs, message);
   return r;
 }
@@ -323,17 +324,34 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   return SSS_OK;
 }
 
-sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message) {
+sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInputsProgram** out,
+                                     std::string* message) {
+  // Image loads where the context has them (as ProgramCache::blur's taps).
+  PassInputsVariant v = requested;
+  if (!(variant_ == GlslVariant::glsl420 && gl_->has_compute) || image_inputs_refused_) v.color_image = -1;
   PassInputsProgram& p = pass_inputs_[static_cast<std::size_t>(pass_inputs_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = pass_inputs_defines(v);
   p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message, TileSpans::inputs);
+  if (p.program == 0 && v.color_image >= 0) {
+    // Insurance, as for the blur's image taps: the sampler's read gives the same image.
+    if (log_ != nullptr && *log_) {
+      (*log_)(SSS_LOG_WARNING,
+              "the driver refused the pass inputs program that reads the colour through an image unit; the one "
+              "that reads it through a sampler stands in (" +
+                  *message + ")");
+    }
+    image_inputs_refused_ = true;
+    message->clear();
+    return pass_inputs(requested, out, message);
+  }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  char label[96];
-  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d", v.linear_depth ? 1 : 0,
-                v.profile_ids, v.mark_depth ? 1 : 0);
+  char label[112];
+  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d image=%s", v.linear_depth ? 1 : 0,
+                v.profile_ids, v.mark_depth ? 1 : 0, v.color_image >= 0 ? kComputeImageFormats[v.color_image].qualifier : "none");
   finish(p.program, label, "pass inputs");
+  p.color_image = v.color_image;
   const Functions& f = *gl_;
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");

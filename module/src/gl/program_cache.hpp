@@ -72,6 +72,9 @@ struct ResolveProgram {
 struct PassInputsProgram {
   GLuint program = 0;
   GLint ndc_from_depth = -1, depth_terms = -1, tile_grid = -1;
+  // Reads the colour through image unit 0 in kComputeImageFormats[color_image] (SSS_COLOR_IMAGE);
+  // -1: through the sampler on unit 0.
+  int color_image = -1;
 };
 
 // The masked path's tile marks (tile_mark.frag): per tile, or per column of tiles.
@@ -123,7 +126,9 @@ class ProgramCache {
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
-  // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
+  // The fragment passes' inputs: colour and view distance (and R8UI indices), strength. A variant
+  // asking for the colour through an image unit gets the sampler's where the context has no image
+  // units or its driver refused such a program (*out's color_image says which was built).
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
   sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
   sss_result half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message);
@@ -157,6 +162,9 @@ class ProgramCache {
   // The driver refused a blur program that reads its taps through the image unit: every blur
   // program from then on reads them through the sampler (BlurVariant::image_taps).
   bool image_taps_refused_ = false;
+  // The same for the passes' inputs reading the colour through the image unit
+  // (PassInputsVariant::color_image).
+  bool image_inputs_refused_ = false;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
   // Fragment variants by blur_variant_index and half_taps (std::map: the programs stay put while a

@@ -28,6 +28,11 @@ sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::
 // of variant `v` over the drawn rectangle (leaving the depth test on, func ALWAYS, write mask off),
 // and one blur pass of `p` reading `source` (pass_inputs.frag's layout) with the strength on its unit.
 PassInputsVariant pass_inputs_variant(const FilterRun& run);
+// Whether that draw could read the colour of `run` through an image unit, were it complete
+// (FilterRun::color_complete): the context has image units, the frame runs the separable passes
+// on a single-sample RGBA16F or RGBA32F colour of the host's. Where this is false, the api layer
+// does not ask the GL whether the colour is complete.
+bool may_read_color_image(const Functions& gl, const FilterRun& run);
 sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const PassInputsVariant& v, std::string* message);
 void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint source, std::size_t term, int axis);
 // Nothing to blur: in place nothing changes; a separate output gets the colour copied.

@@ -77,11 +77,14 @@ std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
 }
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {
-  return ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.mark_depth ? 1 : 0);
+  const int sampler_variant = ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.mark_depth ? 1 : 0);
+  return sampler_variant * (1 + kPassInputsColorImageFormats) + v.color_image + 1;
 }
 
 PassInputsVariant pass_inputs_variant_at(int index) {
   PassInputsVariant v;
+  v.color_image = index % (1 + kPassInputsColorImageFormats) - 1;
+  index /= 1 + kPassInputsColorImageFormats;
   v.mark_depth = index % 2 != 0;
   v.profile_ids = (index / 2) % 3;
   v.linear_depth = index / 6 != 0;
@@ -89,11 +92,16 @@ PassInputsVariant pass_inputs_variant_at(int index) {
 }
 
 std::string pass_inputs_defines(const PassInputsVariant& v) {
-  char defines[128];
+  char defines[192];
   std::snprintf(defines, sizeof defines,
-                "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_MARK_DEPTH %d\n",
-                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0);
-  return defines;
+                "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_MARK_DEPTH %d\n"
+                "#define SSS_COLOR_IMAGE %d\n",
+                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0, v.color_image >= 0 ? 1 : 0);
+  std::string text = defines;
+  if (v.color_image >= 0) {
+    text += std::string("#define SSS_COLOR_IMAGE_FORMAT ") + kComputeImageFormats[v.color_image].qualifier + "\n";
+  }
+  return text;
 }
 
 std::string half_inputs_defines(const HalfVariant& v) {

@@ -98,13 +98,18 @@ inline std::string msaa_write_defines(GlslVariant v) {
   return msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n";
 }
 // The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
-// BlurVariant::profile_ids) and SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil).
+// BlurVariant::profile_ids), SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil)
+// and SSS_COLOR_IMAGE: `color_image` -1 reads the colour through the sampler, 0 or 1 through image
+// unit 0 in kComputeImageFormats[color_image] (RGBA16F, RGBA32F: the colours the passes read, a
+// strength texture's R11F_G11F_B10F colour being read from the module's RGBA16F copy).
 struct PassInputsVariant {
   bool linear_depth = false;
   int profile_ids = 0;
   bool mark_depth = false;
+  int color_image = -1;
 };
-inline constexpr int kPassInputsVariantCount = 2 * 3 * 2;
+inline constexpr int kPassInputsColorImageFormats = 2;
+inline constexpr int kPassInputsVariantCount = 2 * 3 * 2 * (1 + kPassInputsColorImageFormats);
 int pass_inputs_variant_index(const PassInputsVariant& v);
 PassInputsVariant pass_inputs_variant_at(int index);
 std::string pass_inputs_defines(const PassInputsVariant& v);

@@ -50,6 +50,7 @@ FilterRun with_strength_source(const FilterRun& run, const Targets& targets) {
   if (run.writes_back()) passes.output = run.color;
   passes.color.name = targets.strength_source;
   passes.color.internal_format = copy_format(run);
+  passes.color_complete = true;  // one level (TargetPool)
   passes.strength = TextureInfo{};
   return passes;
 }
