@@ -98,6 +98,10 @@ class Faults : public GlTest {
     return sss_apply(ctx, t.color, t.depth, stencil ? &s : nullptr);
   }
 
+  // The passes' inputs read the colour through an image unit (desktop GL 4.3+), with a sampler
+  // program standing in where the driver refuses that one.
+  bool image_inputs() const { return !is_gles() && host_gl::has_compute_shaders(); }
+
   // The image a context that never saw a fault makes from the same input.
   std::vector<float> reference(int width, int height, Depth kind, bool stencil) {
     const Textures t = make_scene(width, height, kind);
@@ -151,11 +155,14 @@ TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
     SCOPED_TRACE("shader source " + std::to_string(k));
     if (r == SSS_OK) {
       // Either stage of a preset tap count's blur program: the program with the count as a uniform
-      // stands in, and says so (next test); no other program may be refused quietly.
+      // stands in, and says so (next test); either stage of the passes' inputs reading the colour
+      // through the image unit: the sampler's stands in. No other program may be refused quietly.
       EXPECT_NE(log.find("stands in"), std::string::npos) << log;
       const std::string& source = faults().last_broken_source;
       EXPECT_TRUE(source.find("#define SSS_HALF_TAPS") != std::string::npos ||
-                  source.find("#define SSS_TILE_SPANS 1") != std::string::npos)
+                  source.find("#define SSS_TILE_SPANS 1") != std::string::npos ||
+                  (image_inputs() && (source.find("#define SSS_COLOR_IMAGE 1") != std::string::npos ||
+                                      source.find("#define SSS_TILE_SPANS 2") != std::string::npos)))
           << source.substr(0, 400);
       ++stand_ins;
       sss_destroy(ctx);
@@ -172,10 +179,11 @@ TEST_F(Faults, EveryShaderFailingAtCreateGivesShaderCompileAndLeavesNothing) {
     EXPECT_EQ(objects(), before) << "before: " << before.describe() << "\nafter:  " << objects().describe();
   }
   // Create builds the copy program and the default's two blur programs, of the preset count (two
-  // stages each, refused in turn: stand-ins), then what else its prewarm needs.
+  // stages each, refused in turn: stand-ins), then the passes' inputs (with image units: through
+  // the image unit, two more stand-ins), then what else its prewarm needs.
   std::printf("create: %d shaders whose failure fails it, %d whose program has a stand-in\n", failures, stand_ins);
-  EXPECT_GE(failures, 4);
-  EXPECT_EQ(stand_ins, 4);
+  EXPECT_GE(failures, image_inputs() ? 2 : 4);
+  EXPECT_EQ(stand_ins, image_inputs() ? 6 : 4);
   reset_faults();
   sss_context* ctx = nullptr;
   EXPECT_EQ(create_faulty(&ctx), SSS_OK);  // and the next create works
@@ -235,6 +243,29 @@ TEST_F(Faults, ARefusedImageTapProgramFallsBackToTheSampler) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// The same for the passes' inputs reading the colour through the image unit
+// (PassInputsVariant::color_image): the sampler's read stands in, with the same image.
+TEST_F(Faults, ARefusedImageInputsProgramFallsBackToTheSampler) {
+  if (!image_inputs()) GTEST_SKIP() << "no image units: the inputs read the colour through the sampler";
+  const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
+  faults().break_sources_with = "#define SSS_COLOR_IMAGE 1";
+  std::string log;
+  ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
+  EXPECT_EQ(faults().shader_sources_broken, 1) << "refused once, then no program asked for image loads";
+  const sss_settings s = wide_settings();
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const Textures t = make_scene(20, 16, Depth::hardware);
+  ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  const std::vector<float> got = read_rgba(t.color, 20, 16);
+  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)))
+      << "the sampler's colour reads the same bits as the image unit's";
+  for (int frame = 0; frame < 2; ++frame) ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(faults().shader_sources_broken, 1) << "a frame built an image inputs program again";
+  EXPECT_NE(log.find("reads it through a sampler stands in"), std::string::npos) << log;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers) {
   const std::vector<float> expected = reference(20, 16, Depth::linear, false);
   ASSERT_EQ(create_faulty(&sss_), SSS_OK);
@@ -242,10 +273,13 @@ TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers)
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
   const Textures t = make_scene(20, 16, Depth::linear);  // linear depth: variants create did not build
-  faults().break_shader_sources = 1;
-  // The frame's first program create did not build: its passes' inputs on linear depth.
+  // The frame's first program create did not build: its passes' inputs on linear depth (where
+  // there are image units, the one reading the colour through the image unit, then the sampler's
+  // stand-in).
+  faults().break_sources_with = "#define SSS_MARK_DEPTH";
   expect_failure_leaves_nothing(sss_, t, false, SSS_ERROR_SHADER_COMPILE, "pass inputs shader", nullptr);
-  EXPECT_EQ(faults().shader_sources_broken, 1);
+  EXPECT_EQ(faults().shader_sources_broken, image_inputs() ? 2 : 1);
+  faults().break_sources_with.clear();
   EXPECT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
   const std::vector<float> got = read_rgba(t.color, 20, 16);
   EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)));

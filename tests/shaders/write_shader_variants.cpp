@@ -83,10 +83,15 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
+  // The inputs: every switch set with the colour read through the sampler; GLSL 4.20 also through
+  // the image unit in each image format (what a GL 4.3+ context builds for a complete colour).
   for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {
     const gl::PassInputsVariant v = gl::pass_inputs_variant_at(i);
+    if (v.color_image >= 0 && dialect != gl::GlslVariant::glsl420) continue;
     out->write(d + "pass_inputs_l" + std::to_string(v.linear_depth ? 1 : 0) + "_p" + std::to_string(v.profile_ids) +
-                   "_m" + std::to_string(v.mark_depth ? 1 : 0) + ".frag",
+                   "_m" + std::to_string(v.mark_depth ? 1 : 0) +
+                   (v.color_image >= 0 ? std::string("_") + gl::kComputeImageFormats[v.color_image].qualifier : "") +
+                   ".frag",
                gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
   for (int i = 0; i < gl::kHalfVariantCount; ++i) {

@@ -22,6 +22,7 @@ PFNGLGETERRORPROC real_get_error = nullptr;
 PFNGLGETINTEGERVPROC real_get_integerv = nullptr;
 PFNGLGETTEXLEVELPARAMETERIVPROC real_get_tex_level_parameteriv = nullptr;
 PFNGLDRAWARRAYSPROC real_draw_arrays = nullptr;
+PFNGLBINDIMAGETEXTUREPROC real_bind_image_texture = nullptr;
 PFNGLDISPATCHCOMPUTEPROC real_dispatch_compute = nullptr;
 PFNGLGETTEXPARAMETERIVPROC real_get_tex_parameteriv = nullptr;
 
@@ -111,6 +112,12 @@ void APIENTRY dispatch_compute(GLuint x, GLuint y, GLuint z) {
   ++g_faults.draws;
 }
 
+void APIENTRY bind_image_texture(GLuint unit, GLuint texture, GLint level, GLboolean layered, GLint layer,
+                                 GLenum access, GLenum format) {
+  if (texture != 0 && texture == g_faults.watched_image_texture) ++g_faults.watched_image_bindings;
+  real_bind_image_texture(unit, texture, level, layered, layer, access, format);
+}
+
 void APIENTRY get_tex_parameteriv(GLenum target, GLenum pname, GLint* params) {
   ++g_faults.texture_parameter_queries;
   real_get_tex_parameteriv(target, pname, params);
@@ -158,6 +165,7 @@ void* fault_get_proc_address(const char* name, void* user) {
   load(&real_draw_arrays, "glDrawArrays", user);
   load(&real_dispatch_compute, "glDispatchCompute", user);
   load(&real_get_tex_parameteriv, "glGetTexParameteriv", user);
+  load(&real_bind_image_texture, "glBindImageTexture", user);
   if (std::strcmp(name, "glShaderSource") == 0) return as_address(&shader_source);
   if (std::strcmp(name, "glTexImage2D") == 0) return as_address(&tex_image_2d);
   if (std::strcmp(name, "glRenderbufferStorage") == 0) return as_address(&renderbuffer_storage);
@@ -166,6 +174,9 @@ void* fault_get_proc_address(const char* name, void* user) {
   if (std::strcmp(name, "glDrawArrays") == 0) return as_address(&draw_arrays);
   if (std::strcmp(name, "glDispatchCompute") == 0) return as_address(&dispatch_compute);
   if (std::strcmp(name, "glGetTexParameteriv") == 0) return as_address(&get_tex_parameteriv);
+  if (std::strcmp(name, "glBindImageTexture") == 0 && real_bind_image_texture != nullptr) {
+    return as_address(&bind_image_texture);
+  }
   return sss_headless_get_proc_address(name, user);
 }
 

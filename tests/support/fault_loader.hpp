@@ -47,6 +47,9 @@ struct Faults {
   // What fired, and what the module called.
   int draws = 0;                        // glDrawArrays and glDispatchCompute calls
   int texture_parameter_queries = 0;    // glGetTexParameteriv calls
+  // glBindImageTexture calls that bound this texture (when not 0) to an image unit.
+  unsigned watched_image_texture = 0;
+  int watched_image_bindings = 0;
   int shader_sources_broken = 0;
   std::string last_broken_source;  // the text the last broken source would have had
   int out_of_memory_from_driver = 0;

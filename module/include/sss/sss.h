@@ -133,7 +133,7 @@ typedef struct sss_stencil { /* host stencil: translucent where (stencil & mask)
 
 typedef enum sss_frame_flag /* sss_frame.flags */ {
   SSS_FRAME_DEPTH_ZERO_TO_ONE = 0x1, SSS_FRAME_REGION = 0x2, /**< glClipControl 0..1 depth; frame.region is set */
-  SSS_FRAME_TARGET_COMPLETE = 0x4 /**< the written texture is complete (no mipmap filter) */ } sss_frame_flag;
+  SSS_FRAME_TARGET_COMPLETE = 0x4 /**< written texture is complete (no mipmap filter): GL 4.3+ binds it as an image */ } sss_frame_flag;
 #define SSS_FRAME_ALL_FLAGS 0x7u
 /** How MSAA sample depths become one (linear) depth: mean (default), sample 0, nearest, farthest. */
 typedef enum sss_msaa_depth { SSS_MSAA_DEPTH_AVERAGE, SSS_MSAA_DEPTH_SAMPLE0, SSS_MSAA_DEPTH_MIN,
