@@ -31,9 +31,12 @@
 // The header is version_430.glsl. The pieces it includes: nearest_half.glsl (u_round_to_half: set
 // for an rgba16f image), depth.glsl, jitter.glsl and footprint_taps.glsl (the taps and their
 // weights, shared with separable_blur.frag). The target is written with imageStore. Writing back
-// into the host's colour (SSS_OUTSIDE 1), the pixel's alpha is read from the target itself, so the
-// host's exact alpha stays (the fragment path masks alpha off instead); every other pass reads only
-// textures it does not write, and the marked pass each pixel of its target only before it writes it.
+// into the host's colour (SSS_OUTSIDE 1), the alpha written is the intermediate's, which holds the
+// host's own alpha exactly wherever the pass blurs (the horizontal pass copied it, in the colour's
+// precision: RGBA16F into RGBA16F, RGBA32F into RGBA32F; under a host stencil the mark copied it),
+// so the host's exact alpha stays without a read of the target (the fragment path masks alpha off
+// instead); the marked pass reads each pixel of its target only before it writes it, and every
+// other pass reads only textures it does not write.
 
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
@@ -50,7 +53,7 @@ layout(binding = 2) uniform sampler2D u_original;  // the host's colour (the tar
 #if SSS_ACCUMULATE
 layout(binding = 3) uniform sampler2D u_accumulated;  // the earlier terms' vertical sums (the module's own target)
 #endif
-#if SSS_OUTSIDE == 1 || SSS_MARKED
+#if SSS_MARKED
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 #else
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
@@ -150,9 +153,8 @@ void write_blurred(ivec2 pixel, vec3 sum, float alpha) {
 #endif
 #if SSS_OUTSIDE == 2
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a)));
-#elif SSS_OUTSIDE == 1
-  imageStore(u_target, pixel, sss_nearest_half(vec4(sum, imageLoad(u_target, pixel).a)));
 #else
+  // Written back (SSS_OUTSIDE 1), `alpha` is the host's own (the file's comment).
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, alpha)));
 #endif
 }

@@ -147,7 +147,7 @@ void dispatch_terms(PassContext& ctx, const FilterRun& run, const TermPrograms& 
     measure.begin(PassQueries::vertical);
     bind_original(ctx, run);
     dispatch_blur(ctx, *programs[2 * term + 1], run, t.intermediate, term, 1, run.target().name,
-                  image_format_index(run.target().internal_format), run.writes_back() ? READ_WRITE : WRITE_ONLY);
+                  image_format_index(run.target().internal_format), WRITE_ONLY);
     measure.end(PassQueries::vertical);
   }
   measure.end_frame();
