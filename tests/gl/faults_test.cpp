@@ -98,9 +98,32 @@ class Faults : public GlTest {
     return sss_apply(ctx, t.color, t.depth, stencil ? &s : nullptr);
   }
 
-  // The passes' inputs read the colour through an image unit (desktop GL 4.3+), with a sampler
-  // program standing in where the driver refuses that one.
+  // The blur passes' taps and the passes' inputs' colour are read through an image unit (desktop GL
+  // 4.3+), with a sampler program standing in where the driver refuses such a program.
   bool image_inputs() const { return !is_gles() && host_gl::has_compute_shaders(); }
+
+  // A driver that refuses every program whose source holds `define` (a read through an image unit):
+  // create and three frames succeed, the first with the image of a context whose driver built
+  // them, such a program is refused once and not asked for again, and the log says `warning`.
+  void expect_the_sampler_stands_in(const std::string& define, const std::string& warning) {
+    const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
+    faults().break_sources_with = define;
+    std::string log;
+    ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
+    EXPECT_EQ(faults().shader_sources_broken, 1) << "refused once, then no program asked for image loads";
+    const sss_settings s = wide_settings();
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+    ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+    const Textures t = make_scene(20, 16, Depth::hardware);
+    ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+    const std::vector<float> got = read_rgba(t.color, 20, 16);
+    EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)))
+        << "the sampler reads the same bits as the image unit";
+    for (int frame = 0; frame < 2; ++frame) ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(faults().shader_sources_broken, 1) << "a frame built a refused program again";
+    EXPECT_NE(log.find(warning), std::string::npos) << log;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
 
   // The image a context that never saw a fault makes from the same input.
   std::vector<float> reference(int width, int height, Depth kind, bool stencil) {
@@ -221,49 +244,15 @@ TEST_F(Faults, ARefusedPresetTapCountFallsBackToTheUniformCount) {
 // so far) gets programs that read their taps through the sampler: the frame succeeds with the image
 // of a context whose driver built them, one warning says so, and no program tries image loads again.
 TEST_F(Faults, ARefusedImageTapProgramFallsBackToTheSampler) {
-  if (is_gles() || !host_gl::has_compute_shaders()) GTEST_SKIP() << "no image units: the taps use the sampler";
-  const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
-  faults().break_sources_with = "#define SSS_IMAGE_TAPS 1";
-  std::string log;
-  ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
-  EXPECT_EQ(faults().shader_sources_broken, 1) << "refused once, then no program asked for image loads";
-  const sss_settings s = wide_settings();
-  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
-  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-  const Textures t = make_scene(20, 16, Depth::hardware);
-  for (int frame = 0; frame < 3; ++frame) ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(faults().shader_sources_broken, 1) << "a frame built an image-tap program again";
-  EXPECT_NE(log.find("through a sampler stands in"), std::string::npos) << log;
-  // Three frames in place: compare the first frame's result, on a fresh scene.
-  const Textures once = make_scene(20, 16, Depth::hardware);
-  ASSERT_EQ(apply(sss_, once, false), SSS_OK) << sss_last_error(sss_);
-  const std::vector<float> got = read_rgba(once.color, 20, 16);
-  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)))
-      << "the sampler's taps read the same bits as the image unit's";
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  if (!image_inputs()) GTEST_SKIP() << "no image units: the taps use the sampler";
+  expect_the_sampler_stands_in("#define SSS_IMAGE_TAPS 1", "through a sampler stands in");
 }
 
 // The same for the passes' inputs reading the colour through the image unit
-// (PassInputsVariant::color_image): the sampler's read stands in, with the same image.
+// (PassInputsVariant::color_image).
 TEST_F(Faults, ARefusedImageInputsProgramFallsBackToTheSampler) {
   if (!image_inputs()) GTEST_SKIP() << "no image units: the inputs read the colour through the sampler";
-  const std::vector<float> expected = reference(20, 16, Depth::hardware, false);
-  faults().break_sources_with = "#define SSS_COLOR_IMAGE 1";
-  std::string log;
-  ASSERT_EQ(create_faulty(&sss_, &log), SSS_OK) << sss_last_error(nullptr);
-  EXPECT_EQ(faults().shader_sources_broken, 1) << "refused once, then no program asked for image loads";
-  const sss_settings s = wide_settings();
-  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
-  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
-  const Textures t = make_scene(20, 16, Depth::hardware);
-  ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
-  const std::vector<float> got = read_rgba(t.color, 20, 16);
-  EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), got.size() * sizeof(float)))
-      << "the sampler's colour reads the same bits as the image unit's";
-  for (int frame = 0; frame < 2; ++frame) ASSERT_EQ(apply(sss_, t, false), SSS_OK) << sss_last_error(sss_);
-  EXPECT_EQ(faults().shader_sources_broken, 1) << "a frame built an image inputs program again";
-  EXPECT_NE(log.find("reads it through a sampler stands in"), std::string::npos) << log;
-  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  expect_the_sampler_stands_in("#define SSS_COLOR_IMAGE 1", "reads it through a sampler stands in");
 }
 
 TEST_F(Faults, AVariantFailingInAFrameGivesShaderCompileAndTheNextFrameRecovers) {

@@ -91,6 +91,13 @@ void ProgramCache::set_unit(GLuint program, GLint location, GLuint unit) const {
   gl_->Uniform1i(location, static_cast<GLint>(unit));
 }
 
+void ProgramCache::stand_in(const std::string& refused, const std::string& instead, std::string* message) const {
+  if (log_ != nullptr && *log_) {
+    (*log_)(SSS_LOG_WARNING, "the driver refused " + refused + "; " + instead + " stands in (" + *message + ")");
+  }
+  message->clear();
+}
+
 void ProgramCache::finish(GLuint program, const char* label, const char* built, const char* dialect) {
   label_object(*gl_, labels_, PROGRAM, program, label);
   if (built != nullptr && log_ != nullptr && *log_) {
@@ -119,28 +126,18 @@ sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, s
   if (p.program == 0 && v.image_taps) {
     // Insurance, as for the preset counts below (no driver has refused this so far): the taps read
     // through the sampler give the same image, for this program and every one after it.
-    if (log_ != nullptr && *log_) {
-      (*log_)(SSS_LOG_WARNING,
-              "the driver refused the separable blur program that reads its taps through an image unit; the one "
-              "that reads them through a sampler stands in (" +
-                  *message + ")");
-    }
+    stand_in("the separable blur program that reads its taps through an image unit",
+             "the one that reads them through a sampler", message);
     image_taps_refused_ = true;
-    message->clear();
     return blur(requested, out, message);
   }
   if (p.program == 0 && v.half_taps > 0) {
     // The preset count's variant only lets the compiler unroll the loop; the one that reads the
     // count as a uniform gives the same image. A driver that refuses the first (NVIDIA's refused a
     // look-ahead index in the unrolled loop once) still gets the filter, and says so once.
-    if (log_ != nullptr && *log_) {
-      (*log_)(SSS_LOG_WARNING, "the driver refused the separable blur program for " +
-                                   std::to_string(2 * v.half_taps + 1) +
-                                   " taps as a constant; the one that reads the count as a uniform stands in (" +
-                                   *message + ")");
-    }
+    stand_in("the separable blur program for " + std::to_string(2 * v.half_taps + 1) + " taps as a constant",
+             "the one that reads the count as a uniform", message);
     p.refused = true;
-    message->clear();
     return blur(with_uniform_count(), out, message);
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
@@ -336,20 +333,16 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInp
   p.program = link("pass_inputs.frag", defines, "pass inputs shader (" + defines + ")", message, TileSpans::inputs);
   if (p.program == 0 && v.color_image >= 0) {
     // Insurance, as for the blur's image taps: the sampler's read gives the same image.
-    if (log_ != nullptr && *log_) {
-      (*log_)(SSS_LOG_WARNING,
-              "the driver refused the pass inputs program that reads the colour through an image unit; the one "
-              "that reads it through a sampler stands in (" +
-                  *message + ")");
-    }
+    stand_in("the pass inputs program that reads the colour through an image unit",
+             "the one that reads it through a sampler", message);
     image_inputs_refused_ = true;
-    message->clear();
     return pass_inputs(requested, out, message);
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[112];
+  const char* image = v.color_image >= 0 ? kComputeImageFormats[v.color_image].qualifier : "none";
   std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d image=%s", v.linear_depth ? 1 : 0,
-                v.profile_ids, v.mark_depth ? 1 : 0, v.color_image >= 0 ? kComputeImageFormats[v.color_image].qualifier : "none");
+                v.profile_ids, v.mark_depth ? 1 : 0, image);
   finish(p.program, label, "pass inputs");
   p.color_image = v.color_image;
   const Functions& f = *gl_;

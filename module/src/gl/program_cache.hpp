@@ -151,6 +151,9 @@ class ProgramCache {
   void find_cbf_uniforms(CbfProgram* p) const;
   // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
   void set_unit(GLuint program, GLint location, GLuint unit) const;
+  // A program the driver refused (`refused`, its log in *message) where another gives the same
+  // image: one SSS_LOG_WARNING naming both, and *message cleared for the one `instead`.
+  void stand_in(const std::string& refused, const std::string& instead, std::string* message) const;
   // Labels a new program and, where `built` names its kind, notes it (DEBUG) with its dialect
   // (nullptr: the context's).
   void finish(GLuint program, const char* label, const char* built, const char* dialect = nullptr);
