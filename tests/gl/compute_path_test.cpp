@@ -427,13 +427,7 @@ TEST_F(ComputePath, AnIncompleteTargetTakesTheFragmentPath) {
       const GLuint output = separate ? texture(blank, complete) : 0u;
       sss_frame f = frame_of(color, depth, output);
       f.flags = flags;
-      if (describe) {
-        f.color_format = GL_RGBA32F;
-        f.output_format = separate ? GL_RGBA32F : 0u;
-        f.depth_format = GL_DEPTH_COMPONENT32F;
-        f.texture_width = w;
-        f.texture_height = h;
-      }
+      if (describe) describe_frame(&f, GL_RGBA32F, GL_RGBA32F, GL_DEPTH_COMPONENT32F, w, h);
       reset_faults();
       EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));

@@ -56,13 +56,7 @@ class ImageInputs : public GlTest {
     EXPECT_EQ(sss_set_camera(ctx, scene.projection.data()), SSS_OK);
     sss_frame f = frame_of(color, depth, output);
     f.flags = flags;
-    if (describe) {
-      f.color_format = format;
-      f.output_format = separate ? GL_RGBA32F : 0u;
-      f.depth_format = GL_DEPTH_COMPONENT32F;
-      f.texture_width = w;
-      f.texture_height = h;
-    }
+    if (describe) describe_frame(&f, format, GL_RGBA32F, GL_DEPTH_COMPONENT32F, w, h);
     reset_faults();
     faults().watched_image_texture = color;
     EXPECT_EQ(sss_apply_frame(ctx, &f), SSS_OK) << sss_last_error(ctx);

@@ -113,6 +113,15 @@ sss_frame frame_of(GLuint color, GLuint depth, GLuint output) {
   return f;
 }
 
+void describe_frame(sss_frame* f, uint32_t color_format, uint32_t output_format, uint32_t depth_format, int width,
+                    int height) {
+  f->color_format = color_format;
+  f->output_format = f->output_texture != 0 ? output_format : 0u;
+  f->depth_format = depth_format;
+  f->texture_width = width;
+  f->texture_height = height;
+}
+
 void* es30_get_proc_address(const char* name, void* user) {
   // llvmpipe gives OpenGL ES 3.2 for a 3.0 request; hiding the one ES 3.1 function the module
   // would use (the texture level query) makes it run exactly its ES 3.0 path.

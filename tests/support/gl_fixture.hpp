@@ -74,6 +74,10 @@ GLuint make_host_program(bool es);
 
 // A frame of these textures (output 0: write back), every other field zero.
 sss_frame frame_of(GLuint color, GLuint depth, GLuint output = 0);
+// Describes *f (sss.h: a described frame asks the GL nothing about its textures): the formats,
+// the output's only where it has an output texture, and the size.
+void describe_frame(sss_frame* f, uint32_t color_format, uint32_t output_format, uint32_t depth_format, int width,
+                    int height);
 
 // sss_headless_get_proc_address without glGetTexLevelParameteriv (ES 3.1+): an ES 3.2 context then
 // looks like ES 3.0 to the module. `user` is the sss_headless.

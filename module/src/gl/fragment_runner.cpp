@@ -27,21 +27,27 @@ void draw_blur(PassContext& ctx, BlurProgram& p, const FilterRun& run, GLuint so
   draw_cover(ctx, p.tile_grid);
 }
 
+namespace {
+// The colour's image format for the inputs draw (PassInputsVariant::color_image): single-sample
+// RGBA16F or RGBA32F; -1 for any other colour.
+int color_image_format(const FilterRun& run) {
+  const int format = image_format_index(run.color.internal_format);
+  return !run.color.multisampled() && format >= 0 && format < kPassInputsColorImageFormats ? format : -1;
+}
+}  // namespace
+
 PassInputsVariant pass_inputs_variant(const FilterRun& run) {
   PassInputsVariant v;
   v.linear_depth = run.constants.linear_depth;
   v.profile_ids = profile_ids_variant(run);
   v.mark_depth = run.stencil == nullptr;
-  const int image_format = run.color_complete && !run.color.multisampled()
-                               ? image_format_index(run.color.internal_format) : -1;
-  if (image_format < kPassInputsColorImageFormats) v.color_image = image_format;
+  if (run.color_complete) v.color_image = color_image_format(run);
   return v;
 }
 
 bool may_read_color_image(const Functions& gl, const FilterRun& run) {
-  const int format = image_format_index(run.color.internal_format);
-  return gl.has_compute && !run.identity && !run.cross_bilateral && !run.color.multisampled() &&
-         run.strength.name == 0 && format >= 0 && format < kPassInputsColorImageFormats;
+  return gl.has_compute && !run.identity && !run.cross_bilateral && run.strength.name == 0 &&
+         color_image_format(run) >= 0;
 }
 
 // The passes' inputs over the drawn rectangle (where the taps stay), every pixel of it: the taps
