@@ -6,11 +6,13 @@
 //
 // Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_HALF_TAPS (when
 // defined: the tap count as a constant instead of a uniform), SSS_JITTER,
-// SSS_FOLLOW_SURFACE, SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). Before this piece the shader includes depth.glsl
-// and jitter.glsl, and defines how its taps are read (GLSL has no function pointers):
+// SSS_FOLLOW_SURFACE, SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). Before this piece
+// the shader includes depth.glsl and jitter.glsl, and defines how its taps are read (GLSL has no
+// function pointers):
 //   struct TapSite      what the shader needs to find this pixel's taps
 //   vec4 sss_fetch_tap(TapSite site, float offset)
-//                       the pixel `offset` pixels from the centre along the pass's axis, kept in
+//                       the pixel `offset` steps from the centre along the pass's line (the
+//                       vertical pass's sheared: pass_surface.glsl), kept in
 //                       u_clamp: rgb its colour, a its view distance (read only with
 //                       SSS_FOLLOW_SURFACE); a colour that is not finite or past colour_range.glsl's
 //                       bound as kSssUnusableColour at distance NaN (the fragment passes' inputs
@@ -77,8 +79,10 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 // A tap's colour as it enters the sum: a non-finite neighbour (or one past colour_range.glsl's bound)
 // must not spread, so it counts as the
 // centre's colour (its weight goes to the centre), like a tap across a depth step; with
-// follow-surface it is blended back to the centre's as its depth leaves the kernel's reach.
-vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_surface) {
+// follow-surface it is blended back to the centre's as it leaves the surface: by its distance off
+// the centre's tangent line (pass_surface.glsl), `offset` steps along the pass's line, with
+// follow = (α, λ) times the follow-surface factor, so that a slope is not taken for a step.
+vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, vec2 follow, float offset) {
   vec3 tap = fetched.rgb;
 #if !SSS_FOLLOW_SURFACE
   // With follow-surface such a tap's distance, NaN, makes the blend below the centre exactly: no
@@ -86,7 +90,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #endif
 #if SSS_FOLLOW_SURFACE
-  float d = follow_surface * abs(centre_distance - fetched.a);
+  float d = abs(follow.x * (fetched.a - centre_distance) + offset * follow.y * clip_w(fetched.a));
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
@@ -100,11 +104,12 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, float follow_
 }
 
 // The pass's weighted sum at one pixel (centre colour `centre`, taps step_pixels apart per profile
-// mm; `pixel` and `axis` (0 horizontal, 1 vertical) seed the jitter). Taps on whole pixels: every
+// mm; `follow`: settled_tap's off-line coefficients; `pixel` and `axis` (0 horizontal, 1 vertical)
+// seed the jitter). Taps on whole pixels (of the pass's line: pass_surface.glsl): every
 // pixel out to the reach where the kernel spans at most u_half_taps on a side, else u_half_taps
 // spread denser at the centre (never two on one pixel). A tap's weight is the kernel over the
 // pixels between the midpoints to its neighbours; the last one takes the tail.
-vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, float follow_surface,
+vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, vec2 follow,
                    ivec2 pixel, int axis) {
   float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
@@ -146,7 +151,7 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
       float offset = side == 0 ? read : -read;
-      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, centre_distance, follow_surface);
+      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, centre_distance, follow, offset);
 #if SSS_PROFILE_IDS
       if (sss_tap_foreign) tap = centre;  // another material or object: its weight stays on the centre
 #endif

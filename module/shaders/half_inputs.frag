@@ -11,7 +11,8 @@
 // what sss::math::cpu_half_resolution_filter does (module/src/math/cpu_half_resolution.cpp).
 //
 // Like pass_inputs.frag it marks the half-size culling depth: 0 where the texel is translucent.
-// Switches: SSS_PROFILE_IDS 0 none, 1 R8UI indices in the distance's low byte (pass_inputs.frag).
+// Switches: SSS_PROFILE_IDS 0 none, 1 R8UI indices in the blue colour word's low byte
+// (pass_inputs.frag), which the texel takes from its representative.
 
 SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // pass_inputs.frag's strength bits
@@ -24,12 +25,13 @@ layout(location = 0) out uvec4 o_taps;
 layout(location = 1) out uint o_strength;
 layout(location = 2) out uvec4 o_intermediate;
 
-float sss_distance(uint word) {
+float sss_distance(uint word) { return uintBitsToFloat(word); }
+// A texel's colour: with R8UI indices the blue word's low byte is the index.
+vec3 sss_colour(uvec3 bits) {
 #if SSS_PROFILE_IDS == 1
-  return uintBitsToFloat(word & 0xFFFFFF00u);
-#else
-  return uintBitsToFloat(word);
+  bits.b &= 0xFFFFFF00u;
 #endif
+  return uintBitsToFloat(bits);
 }
 
 void main() {
@@ -56,9 +58,10 @@ void main() {
     }
   }
   uint word = t[r].a;
+  uint index = t[r].b & 0xFFu;
   int profile = 0;
 #if SSS_PROFILE_IDS == 1
-  profile = int(word & 15u);
+  profile = int(index & 15u);
   if (profile >= u_profile_count) profile = 0;
 #endif
   float factor = u_depth_factor[profile];
@@ -66,18 +69,22 @@ void main() {
   float strength = 0.0, n = 0.0;
   for (int k = 0; k < 4; ++k) {
 #if SSS_PROFILE_IDS == 1
-    bool same = (t[k].a & 0xFFu) == (word & 0xFFu);
+    bool same = (t[k].b & 0xFFu) == index;
 #else
     bool same = true;
 #endif
     bool joins = k == r || (translucent[k] == any_translucent && same &&
                             factor * abs(sss_distance(t[k].a) - nearest) < u_merge_reach);
     if (!joins) continue;
-    colour += uintBitsToFloat(t[k].rgb);
+    colour += sss_colour(t[k].rgb);
     strength += s[k];
     n += 1.0;
   }
-  o_taps = uvec4(floatBitsToUint(colour / n), word);
+  uvec3 bits = floatBitsToUint(colour / n);
+#if SSS_PROFILE_IDS == 1
+  bits.b = (bits.b & 0xFFFFFF00u) | index;
+#endif
+  o_taps = uvec4(bits, word);
   o_strength = floatBitsToUint(any_translucent ? strength / n : 0.0);
   o_intermediate = o_taps;
   gl_FragDepth = any_translucent ? 0.0 : 1.0;  // the half-size passes' culling, as pass_inputs.frag's

@@ -35,12 +35,13 @@ uniform vec2 u_spacing;       // its sparse layout's first two taps, as shares o
 
 out vec4 o_color;
 
-float sss_distance(uint word) {
+float sss_distance(uint word) { return uintBitsToFloat(word); }
+// A texel's colour: with R8UI indices the blue word's low byte is the index (pass_inputs.frag).
+vec3 sss_colour(uvec3 bits) {
 #if SSS_PROFILE_IDS == 1
-  return uintBitsToFloat(word & 0xFFFFFF00u);
-#else
-  return uintBitsToFloat(word);
+  bits.b &= 0xFFFFFF00u;
 #endif
+  return uintBitsToFloat(bits);
 }
 
 vec4 table(int entry, int row) { return texelFetch(u_tables, ivec2(entry, row), 0); }
@@ -78,7 +79,7 @@ vec3 near_weights(int row, vec4 footprint, float step, out vec3 beside) {
 // centre's by the follow-surface rule; the centre's where its index differs), times `w`.
 struct NearSite {
   ivec2 pixel;
-  uint word;      // the centre's distance word (its R8UI index in the low byte)
+  uint index;     // the centre's R8UI index (the low byte of its blue colour word)
   vec3 colour;
   float distance;
   float factor;   // the follow-surface factor at the centre's strength
@@ -92,9 +93,9 @@ void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 m
   // the inputs' unusable colours (pass_inputs.frag) never enter.
   if (isnan(s) || !(s < 1.0)) s = 1.0;
 #if SSS_PROFILE_IDS == 1
-  if ((q.a & 0xFFu) != (site.word & 0xFFu)) s = 1.0;
+  if ((q.b & 0xFFu) != site.index) s = 1.0;
 #endif
-  vec3 taken = s < 1.0 ? uintBitsToFloat(q.rgb) * (1.0 - s) + site.colour * s : site.colour;
+  vec3 taken = s < 1.0 ? sss_colour(q.rgb) * (1.0 - s) + site.colour * s : site.colour;
   near += w * taken;
   mass += w;
   lowest = min(lowest, taken);
@@ -104,7 +105,7 @@ void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 m
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 texel = texelFetch(u_source, pixel, 0);
-  vec4 centre = vec4(uintBitsToFloat(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
+  vec4 centre = vec4(sss_colour(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
   // What the passes leave alone goes to them (and they leave it alone).
   if (!(centre.a > 0.0) || !sss_in_range(centre)) discard;
   float d = sss_distance(texel.a);
@@ -112,7 +113,7 @@ void main() {
   if (isnan(w) || !(w > 0.0) || isinf(w)) discard;
   int profile = 0;
 #if SSS_PROFILE_IDS == 1
-  profile = int(texel.a & 15u);
+  profile = int(texel.b & 15u);
   if (profile >= u_profile_count) discard;
 #endif
   vec4 look = u_looks[profile];
@@ -137,14 +138,14 @@ void main() {
       vec4 result = texelFetch(u_half_result, q, 0);
       if (isnan(result.a) || !(result.a > 0.0)) continue;  // not translucent (or left alone by the passes)
 #if SSS_PROFILE_IDS == 1
-      if ((h.a & 0xFFu) != (texel.a & 0xFFu)) continue;
+      if ((h.b & 0xFFu) != (texel.b & 0xFFu)) continue;
 #endif
       float s = factor * abs(d - sss_distance(h.a));
       if (isnan(s) || !(s < 1.0)) s = 1.0;
       float wq = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y) * (1.0 - s);
       weight += wq;
       blurred += wq * result.rgb;
-      reduced += wq * uintBitsToFloat(h.rgb);
+      reduced += wq * sss_colour(h.rgb);
       if (wq > 0.0) {
         lowest = min(lowest, result.rgb);
         highest = max(highest, result.rgb);
@@ -160,7 +161,7 @@ void main() {
   // In the CPU model's order (dy, then dx, from -1), written out: no loop for a SIMD rasteriser to
   // run with masked lanes.
   vec3 near = vec3(0.0), mass = vec3(0.0);
-  NearSite site = NearSite(pixel, texel.a, centre.rgb, d, factor);
+  NearSite site = NearSite(pixel, texel.b & 0xFFu, centre.rgb, d, factor);
   near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass, lowest, highest);
   near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass, lowest, highest);
   near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass, lowest, highest);

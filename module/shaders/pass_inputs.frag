@@ -17,9 +17,10 @@
 // Compile-time switches (module/src/gl/shader_variants.cpp):
 //   SSS_LINEAR_DEPTH   0: hardware depth, linearised here; 1: the host's depth is a view distance
 //   SSS_PROFILE_IDS    0: none; 1: an R8UI index texture, its byte put in the low 8 bits of the
-//                      distance (they count as 0 in the distance: 15 fraction bits stay, 3e-5 of
-//                      the distance); 2: an R16UI one, which the passes read per tap instead
-//                      (the distance stays whole)
+//                      blue colour word (they count as 0 in the colour: an RGBA16F or
+//                      R11F_G11F_B10F colour has none there, an RGBA32F one keeps 15 fraction bits,
+//                      3e-5 of its blue), so the distance, from which the passes take the surface's
+//                      tangents, stays whole; 2: an R16UI one, which the passes read per tap instead
 //   SSS_MARK_DEPTH     1: mark the pixels the passes may change in the module's depth buffer
 //                      (0 where alpha is above 0, 1 elsewhere), which both passes then test
 //                      against (GL_GREATER at the full-screen triangle's depth), so the rasteriser
@@ -58,14 +59,15 @@ void main() {
   vec4 color = texelFetch(u_color, pixel, 0);
 #endif
   uint distance = floatBitsToUint(view_distance(texelFetch(u_depth, pixel, 0).r));
-#if SSS_PROFILE_IDS == 1
-  distance = (distance & 0xFFFFFF00u) | (texelFetch(u_profile_ids, pixel, 0).r & 0xFFu);
-#endif
   if (!sss_in_range(color.rgb)) {
     color.rgb = vec3(kSssUnusableColour);
-    distance = 0x7FC00000u | (distance & 0xFFu);  // NaN (with R8UI indices, the index kept)
+    distance = 0x7FC00000u;  // NaN
   }
-  o_taps = uvec4(floatBitsToUint(color.rgb), distance);
+  uvec3 bits = floatBitsToUint(color.rgb);
+#if SSS_PROFILE_IDS == 1
+  bits.b = (bits.b & 0xFFFFFF00u) | (texelFetch(u_profile_ids, pixel, 0).r & 0xFFu);
+#endif
+  o_taps = uvec4(bits, distance);
   o_strength = floatBitsToUint(color.a);
   o_intermediate = o_taps;
 #if SSS_MARK_DEPTH

@@ -42,6 +42,7 @@
 #include "colour_range.glsl"
 #include "depth.glsl"
 #include "jitter.glsl"
+#include "pass_surface.glsl"
 
 layout(local_size_x = SSS_THREADS, local_size_y = 1, local_size_z = 1) in;
 
@@ -74,8 +75,8 @@ const float kReachMargin = 1.5;  // the outermost jittered tap may read past the
 const float kReachMargin = 1.0;
 #endif
 
-// rgb: colour; a: view distance (depth.glsl's view_distance of the host's depth; in the apron 0
-// without follow-surface, which reads no tap's distance). Both are worked out once per texel as it
+// rgb: colour; a: view distance (depth.glsl's view_distance of the host's depth: the taps' depth
+// test and the surface's tangent read it). Both are worked out once per texel as it
 // is cached rather than once per tap that reads it, as the fragment passes' inputs draw does, and
 // as there a colour that is not usable (colour_range.glsl) is held as kSssUnusableColour at
 // distance NaN (sss_cached): the taps then need no range test of their own (footprint_taps.glsl),
@@ -110,15 +111,13 @@ vec4 sss_cached(vec3 colour, float distance) {
   return sss_in_range(colour) ? vec4(colour, distance) : vec4(vec3(kSssUnusableColour), uintBitsToFloat(0x7FC00000u));
 }
 
-float tap_distance(ivec2 texel) {
-#if SSS_FOLLOW_SURFACE
-  return view_distance(texelFetch(u_depth, texel, 0).r);
-#else
-  return 0.0;
-#endif
-}
+float tap_distance(ivec2 texel) { return view_distance(texelFetch(u_depth, texel, 0).r); }
 
-// footprint_taps.glsl's tap reads: the work group's cache, or the textures past the cached span.
+// A texel as the cache would hold it, read from the textures.
+vec4 sss_texel(ivec2 texel) { return sss_cached(texelFetch(u_source, texel, 0).rgb, tap_distance(texel)); }
+
+// footprint_taps.glsl's tap reads: the work group's cache, or the textures past the cached span
+// and, in the vertical pass, off the pixel's own column (its line is sheared: pass_surface.glsl).
 struct TapSite {
   float centre;                // the pixel's centre along the axis
   float clamp_min, clamp_max;  // u_clamp along the axis
@@ -126,15 +125,57 @@ struct TapSite {
   int first, end;              // the cached texels of the line: [first, end)
   int line;                    // the pixel's line in the tile
   ivec2 row;                   // the texel coordinate across the axis (the other component 0)
+  float across;                // the pixel's centre across the axis
+  float shear;                 // the vertical pass's columns per row (0 in the horizontal pass)
 };
 
 vec4 sss_fetch_tap(TapSite site, float offset) {
   float position = clamp(site.centre + offset, site.clamp_min, site.clamp_max);
   int along_tap = int(position);
   int i = along_tap - site.cache_start;
+  ivec2 row = site.row;
+#if SSS_AXIS == 1
+  int column = int(clamp(site.across + site.shear * offset, u_clamp.x, u_clamp.z));
+  if (column == row.x && i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
+  row.x = column;
+#else
   if (i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
-  ivec2 texel = kAxis * along_tap + site.row;
-  return sss_cached(texelFetch(u_source, texel, 0).rgb, tap_distance(texel));
+#endif
+  return sss_texel(kAxis * along_tap + row);
+}
+
+// The view distance of the neighbour `o` of `pixel` and whether it may serve the surface's tangent
+// (separable_blur.frag's sss_neighbour_distance): from the cache along the axis, from the textures
+// across it.
+float sss_neighbour_distance(ivec2 pixel, ivec2 o, int line, int cache_i, out bool usable) {
+  vec2 window = vec2(pixel + o) + 0.5;
+  bool inside = all(greaterThanEqual(window, u_clamp.xy)) && all(lessThanEqual(window, u_clamp.zw));
+  float d;
+  if (o[SSS_AXIS] != 0) {
+    d = s_texel[cache_index(line, inside ? cache_i + o[SSS_AXIS] : cache_i)].a;
+  } else {
+    d = sss_texel(inside ? pixel + o : pixel).a;
+  }
+  usable = inside && sss_usable_distance(d);
+  return d;
+}
+
+// The pass's walk over the surface at `pixel` (separable_blur.frag's sss_walk), `cache_i` its texel
+// in its line's cache.
+SssWalk sss_walk(ivec2 pixel, float d0, int line, int cache_i) {
+  vec2 g = sss_ray_slope(vec2(pixel) + 0.5);
+  bool um, up;
+  float dm = sss_neighbour_distance(pixel, ivec2(-1, 0), line, cache_i, um);
+  float dp = sss_neighbour_distance(pixel, ivec2(1, 0), line, cache_i, up);
+  vec3 tx = sss_surface_tangent(g, vec2(1.0, 0.0), u_pixel_span.x, d0, dm, um, dp, up);
+#if SSS_AXIS == 0
+  return sss_horizontal_walk(g, d0, tx);
+#else
+  dm = sss_neighbour_distance(pixel, ivec2(0, -1), line, cache_i, um);
+  dp = sss_neighbour_distance(pixel, ivec2(0, 1), line, cache_i, up);
+  vec3 ty = sss_surface_tangent(g, vec2(0.0, 1.0), u_pixel_span.y, d0, dm, um, dp, up);
+  return sss_vertical_walk(g, d0, tx, ty);
+#endif
 }
 
 #include "footprint_taps.glsl"
@@ -198,6 +239,9 @@ void main() {
       // Not translucent, not finite, or behind the camera: as separable_blur.frag (isnan(): see there).
       if (colour.a > 0.0 && sss_in_range(colour) && !(isnan(w) || !(w > 0.0) || isinf(w))) {
         distance[k] = centre_distance;
+        // The step of a surface facing the camera: the walk (below, once the cache holds the
+        // neighbours) multiplies it by its ratio, which is at most about 1, so the apron this sizes
+        // holds the taps; a tap past it reads the textures.
         step_pixels[k] = u_pixels_per_mm * min(colour.a, 1.0) / w;
         blurred[k] = true;
         float reach = min(SSS_FOOTPRINT.x * step_pixels[k], 1.0e6) * kReachMargin;
@@ -224,8 +268,7 @@ void main() {
       int i = j < extent ? SSS_APRON - extent + j : SSS_APRON + SSS_SEGMENT + (j - extent);
       int along = cache_start + i, across = line_start + line;
       if (along >= along_start && along < along_end && across < across_end) {
-        ivec2 texel = kAxis * along + kAcross * across;
-        s_texel[cache_index(line, i)] = sss_cached(texelFetch(u_source, texel, 0).rgb, tap_distance(texel));
+        s_texel[cache_index(line, i)] = sss_texel(kAxis * along + kAcross * across);
       }
     }
     barrier();
@@ -239,9 +282,12 @@ void main() {
       vec4 centre = vec4(own[k], alpha[k]);
       if (blurred[k]) {
         float follow_surface = u_follow_surface / min(centre.a, 1.0);
+        SssWalk walk = sss_walk(pixel, distance[k], tile.x, SSS_APRON + tile.y);
+        vec2 follow = vec2(walk.off_depth * follow_surface, walk.off_step * follow_surface);
         TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
-                               SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across);
-        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k], distance[k], follow_surface, pixel, SSS_AXIS);
+                               SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across,
+                               float(across) + 0.5, walk.shear);
+        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k] * walk.ratio, distance[k], follow, pixel, SSS_AXIS);
         write_blurred(pixel, sum, centre.a);
       } else {
         write_untouched(pixel, centre);

@@ -9,6 +9,9 @@
 // (rgb) and its view distance's (a) in one RGBA32UI texel: the module's copy of the host's colour
 // for the horizontal pass, the horizontal pass's result for the vertical one. So a tap is one fetch,
 // and no depth is linearised per tap. The strength (the colour's alpha) is read at the centre only.
+// Each pass walks the surface by its own pixel's footprint along its line (pass_surface.glsl): the
+// horizontal pass along the row, the vertical one up the column sheared so that its steps are
+// perpendicular to the row's on the surface; the neighbours' distances give the tangents.
 //
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp):
 //   SSS_OUTSIDE   what a pixel that is not blurred writes: 0 its own value (horizontal pass, which
@@ -33,8 +36,9 @@
 //                       mip level per lane, and the tap loop spills its registers around each call
 //                       (the 1080p close-up took 13 % longer); the strength keeps its sampler
 //   SSS_PROFILE_IDS     per-pixel profiles (sss_frame.profile_texture): 0 none; 1 an R8UI index,
-//                       which pass_inputs.frag put in the low byte of the distance word; 2 an R16UI
-//                       one, read per tap from the host's texture (unit 4). The centre's index
+//                       which pass_inputs.frag put in the low byte of the blue colour word (the
+//                       horizontal pass carries it on); 2 an R16UI one, read per tap from the
+//                       host's texture (unit 4). The centre's index
 //                       (value & 15) picks its profile's table (a uniform block of SSS_PROFILES)
 //                       and u_profile[] entry; an index >= u_profile_count leaves the pixel alone;
 //                       taps whose whole value (profile and object) differs count as the centre
@@ -50,6 +54,7 @@
 #include "colour_range.glsl"
 #include "depth.glsl"
 #include "jitter.glsl"
+#include "pass_surface.glsl"
 
 SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits (pass_inputs.frag)
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
@@ -94,20 +99,21 @@ uvec4 sss_tap_texel(ivec2 texel) {
 #endif
 }
 
-// A texel's distance word as a view distance: with R8UI indices its low byte is the index.
-float sss_distance(uint word) {
+// A texel's colour: with R8UI indices the blue word's low byte is the index (pass_inputs.frag).
+vec3 sss_colour(uvec3 bits) {
 #if SSS_PROFILE_IDS == 1
-  return uintBitsToFloat(word & 0xFFFFFF00u);
-#else
-  return uintBitsToFloat(word);
+  bits.b &= 0xFFFFFF00u;
 #endif
+  return uintBitsToFloat(bits);
 }
+// A texel's view distance.
+float sss_distance(uint word) { return uintBitsToFloat(word); }
 // A texel's profile and object index.
-uint sss_index(uint word, ivec2 texel) {
+uint sss_index(uvec4 t, ivec2 texel) {
 #if SSS_PROFILE_IDS == 2
   return texelFetch(u_profile_ids, texel, 0).r;
 #else
-  return word & 0xFFu;
+  return t.b & 0xFFu;
 #endif
 }
 
@@ -115,36 +121,86 @@ uint sss_index(uint word, ivec2 texel) {
 // u_clamp is read once per pixel, into the site, and only its bounds along the axis reach the taps:
 // llvmpipe loaded all four of its components again for every tap (a per-lane load each, since the
 // loop's texel fetches may write memory as far as LLVM knows), a tenth of the tap loop's work.
+// The vertical pass steps along its sheared line (pass_surface.glsl): the column of tap `offset`
+// is floor(x + shear · offset), x the centre's window position, kept in u_clamp.
 struct TapSite {
   float along;                 // gl_FragCoord along the axis
   float clamp_min, clamp_max;  // u_clamp along the axis
-  int across;                  // the taps' texel coordinate across the axis (the centre's, clamped)
+#if SSS_PACKED_OUTPUT
+  int across;                  // the taps' row (the centre's, clamped)
+#else
+  float across;                // the centre's window x
+  float shear;                 // columns per row
+  float across_min, across_max;  // u_clamp across the axis
+#endif
 };
 
-TapSite sss_tap_site() {
+TapSite sss_tap_site(float shear) {
   vec4 box = u_clamp;
-  return TapSite(gl_FragCoord[kSssAxis], box[kSssAxis], box[2 + kSssAxis],
-                 int(clamp(gl_FragCoord[1 - kSssAxis], box[1 - kSssAxis], box[3 - kSssAxis])));
+#if SSS_PACKED_OUTPUT
+  return TapSite(gl_FragCoord.x, box.x, box.z, int(clamp(gl_FragCoord.y, box.y, box.w)));
+#else
+  return TapSite(gl_FragCoord.y, box.y, box.w, gl_FragCoord.x, shear, box.x, box.z);
+#endif
 }
 
 vec4 sss_fetch_tap(TapSite site, float offset) {
   int along = int(clamp(site.along + offset, site.clamp_min, site.clamp_max));
-  ivec2 texel = kSssAxis == 0 ? ivec2(along, site.across) : ivec2(site.across, along);
+#if SSS_PACKED_OUTPUT
+  ivec2 texel = ivec2(along, site.across);
+#else
+  ivec2 texel = ivec2(int(clamp(site.across + site.shear * offset, site.across_min, site.across_max)), along);
+#endif
   uvec4 t = sss_tap_texel(texel);
 #if SSS_PROFILE_IDS
-  sss_tap_foreign = sss_index(t.a, texel) != sss_centre_id;
+  sss_tap_foreign = sss_index(t, texel) != sss_centre_id;
 #endif
-  return vec4(uintBitsToFloat(t.rgb), sss_distance(t.a));
+  return vec4(sss_colour(t.rgb), sss_distance(t.a));
 }
 
 #include "footprint_taps.glsl"
+
+// The view distance of the pixel `o` from `pixel`, and whether it may serve the surface's tangent
+// (inside u_clamp, a finite distance in front of the camera, and with per-pixel profiles the
+// centre's profile and object: another object is another surface): read where it lies inside the
+// texture even when it does not serve.
+float sss_neighbour_distance(ivec2 pixel, ivec2 o, out bool usable) {
+  vec2 window = gl_FragCoord.xy + vec2(o);
+  bool inside = all(greaterThanEqual(window, u_clamp.xy)) && all(lessThanEqual(window, u_clamp.zw));
+  ivec2 texel = inside ? pixel + o : pixel;
+  uvec4 t = sss_tap_texel(texel);
+  float d = sss_distance(t.a);
+  usable = inside && sss_usable_distance(d);
+#if SSS_PROFILE_IDS
+  usable = usable && sss_index(t, texel) == sss_centre_id;
+#endif
+  return d;
+}
+
+// The pass's walk over the surface at this pixel (pass_surface.glsl): the horizontal pass needs T_x,
+// the vertical one T_x and T_y.
+SssWalk sss_walk(ivec2 pixel, float d0) {
+  vec2 g = sss_ray_slope(gl_FragCoord.xy);
+  bool um, up;
+  float dm = sss_neighbour_distance(pixel, ivec2(-1, 0), um);
+  float dp = sss_neighbour_distance(pixel, ivec2(1, 0), up);
+  vec3 tx = sss_surface_tangent(g, vec2(1.0, 0.0), u_pixel_span.x, d0, dm, um, dp, up);
+#if SSS_PACKED_OUTPUT
+  return sss_horizontal_walk(g, d0, tx);
+#else
+  dm = sss_neighbour_distance(pixel, ivec2(0, -1), um);
+  dp = sss_neighbour_distance(pixel, ivec2(0, 1), up);
+  vec3 ty = sss_surface_tangent(g, vec2(0.0, 1.0), u_pixel_span.y, d0, dm, um, dp, up);
+  return sss_vertical_walk(g, d0, tx, ty);
+#endif
+}
 
 // `texel`: the pixel's own input texel.
 void leave_untouched(ivec2 pixel, uvec4 texel) {
 #if SSS_OUTSIDE == 0 && SSS_PACKED_OUTPUT
   o_packed = texel;
 #elif SSS_OUTSIDE == 0
-  o_color = vec4(uintBitsToFloat(texel.rgb), 0.0);
+  o_color = vec4(sss_colour(texel.rgb), 0.0);
 #elif SSS_OUTSIDE == 1
   discard;
 #else
@@ -155,7 +211,7 @@ void leave_untouched(ivec2 pixel, uvec4 texel) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 texel = sss_tap_texel(pixel);
-  vec4 centre = vec4(uintBitsToFloat(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
+  vec4 centre = vec4(sss_colour(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
   // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
   // pixel keeps its own value.
   if (!(centre.a > 0.0) || !sss_in_range(centre)) {
@@ -173,7 +229,7 @@ void main() {
   }
 
 #if SSS_PROFILE_IDS
-  sss_centre_id = sss_index(texel.a, pixel);
+  sss_centre_id = sss_index(texel, pixel);
   int profile = int(sss_centre_id & 15u);
   if (profile >= u_profile_count) {  // no profile set for this index: documented as left alone
     leave_untouched(pixel, texel);
@@ -182,18 +238,25 @@ void main() {
   sss_table_base = profile * (SSS_CDF_ENTRIES + 1);
   vec4 look = u_profile[profile];
   sss_inv_two_variance = look.z;
-  float step_pixels = look.x * strength / w;
+  float pixels_per_mm = look.x;
   float follow_surface = look.y / strength;
 #else
-  float step_pixels = u_pixels_per_mm * strength / w;
+  float pixels_per_mm = u_pixels_per_mm;
   float follow_surface = u_follow_surface / strength;  // the reach scales with alpha like the taps
 #endif
-  vec3 sum = footprint_sum(sss_tap_site(), centre.rgb, step_pixels, centre_distance, follow_surface, pixel, kSssAxis);
+  SssWalk walk = sss_walk(pixel, centre_distance);
+  float step_pixels = pixels_per_mm * strength / w * walk.ratio;
+  vec2 follow = vec2(walk.off_depth * follow_surface, walk.off_step * follow_surface);
+  vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels, centre_distance, follow, pixel, kSssAxis);
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif
 #if SSS_PACKED_OUTPUT
-  o_packed = uvec4(floatBitsToUint(sss_nearest_half(vec4(sum, 0.0)).rgb), texel.a);
+  uvec3 bits = floatBitsToUint(sss_nearest_half(vec4(sum, 0.0)).rgb);
+#if SSS_PROFILE_IDS == 1
+  bits.b = (bits.b & 0xFFFFFF00u) | (texel.b & 0xFFu);  // the index rides on for the vertical taps
+#endif
+  o_packed = uvec4(bits, texel.a);
 #elif SSS_OUTSIDE == 2
   o_color = sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a));
 #else

@@ -6,14 +6,15 @@
 // centre's colour, which is exactly what the follow-surface blend does to a tap beyond the kernel's
 // reach in depth (mix(tap, centre, 1) is the centre, bit for bit). So each material's pixels, run
 // with its neighbours' indices, must equal the same profile run alone on a frame where every other
-// material's pixels are pushed far behind: bit for bit with R16UI indices, on every pixel of the
-// material, its border included. Its interior (the pixels the push does not change) must equal the
+// material's pixels are pushed far behind: bit for bit, on every pixel of the material, its border
+// included (a neighbour of another index does not serve the surface's tangent either, as a pushed
+// one does not: pass_surface.hpp). Its interior (the pixels the push does not change) must equal the
 // plain single-profile run of the unchanged frame too. With R8UI indices the module carries the
-// index in the low byte of each pixel's view distance (pass_inputs.frag: one fetch per tap), which
-// moves the distance by up to 3e-5 of itself, and the follow-surface blend by about as much: a
-// change far below a half-float step, which can still flip the rounding of the RGBA16F intermediate
-// once and of the output once more. There the results agree to two half-float steps (2^-9 of the
-// value), the precision of the RGBA16F colour.
+// index in the low byte of each pixel's blue colour word (pass_inputs.frag: one fetch per tap),
+// which an RGBA16F colour leaves at 0 (its float bits end in 13 zeros), so R8UI and R16UI indices
+// give the same image bit for bit too: the distances, and with them the surface's tangents, stay
+// whole. (Until 2026-11 the index rode in the distance's low byte, which cost it 3e-5 of itself;
+// once the tangents came from the distances, that moved sheared taps by a column.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -127,7 +128,7 @@ class ProfileIds : public GlTest {
 
   // Two materials in one frame (one pass pair), the second's pixels holding `second_value`,
   // against each run alone with the other pushed away (see the top of this file).
-  // `sixteen`: R16UI indices (bit for bit), else R8UI (to two half-float steps).
+  // `sixteen`: R16UI indices, else R8UI (both bit for bit).
   void expect_each_material_alone(const sss_settings profiles[2], unsigned second_value, bool sixteen);
 
   SyntheticScene scene_;
@@ -141,19 +142,10 @@ bool same_rgb(const std::vector<float>& a, const std::vector<float>& b, int x, i
   return std::memcmp(&a[i], &b[i], 3 * sizeof(float)) == 0;
 }
 
-// rgb of pixel (x, y) in a and b at most two half-float steps apart (2^-9 of the larger value).
-bool half_step_rgb(const std::vector<float>& a, const std::vector<float>& b, int x, int y) {
-  const std::size_t i = (static_cast<std::size_t>(y) * kW + x) * 4;
-  for (std::size_t c = i; c < i + 3; ++c) {
-    if (std::fabs(a[c] - b[c]) > std::ldexp(std::max(std::fabs(a[c]), std::fabs(b[c])), -9)) return false;
-  }
-  return true;
-}
-
 void ProfileIds::expect_each_material_alone(const sss_settings profiles[2], unsigned second_value, bool sixteen) {
   const auto left = [](int x, int) { return x < kBoundary; };
   const auto right = [](int x, int) { return x >= kBoundary; };
-  const auto agree = sixteen ? same_rgb : half_step_rgb;
+  const auto agree = same_rgb;
   const std::vector<float> mixed =
       run_profiles(profiles, 2, [&](int x, int) { return x < kBoundary ? 0u : second_value; }, sixteen);
   const std::vector<float> first_alone = run_single(profiles[0], right);
@@ -224,7 +216,7 @@ TEST_F(ProfileIds, MatchesTheCpuModel) {
   image.depth = scene_.window_depth.data();
   image.output_is_half = true;  // written back into the RGBA16F colour
   std::vector<float> cpu(input.size());
-  // R8UI indices: the model drops the distances' low byte as the passes' inputs do.
+  // R8UI indices: the model reads the blue colour word's low byte as 0, as the passes do.
   sss::math::cpu_profile_filter(models.kernel_pointers(), models.constants, ids.data(), image, cpu.data(), true);
   const float difference = largest_relative_difference(gpu, cpu);
   std::printf("GPU vs CPU model: largest relative difference %.3g\n", difference);
@@ -306,10 +298,10 @@ TEST_F(ProfileIds, EveryPathAndR16UIGiveTheSameImage) {
   ASSERT_EQ(sss_set_profiles(sss_, profiles, 2), SSS_OK);
   const Inputs in = make_inputs();
   ASSERT_EQ(apply(in, make_ids(id, true), GL_R16UI), SSS_OK) << sss_last_error(sss_);
-  // R16UI keeps each view distance whole, R8UI drops its low byte for the index (see the top).
+  // R16UI and R8UI indices give the same image bit for bit (see the top).
   const std::vector<float> wide = read_rgba(in.color, kW, kH);
   for (int y = 0; y < kH; ++y) {
-    for (int x = 0; x < kW; ++x) EXPECT_TRUE(half_step_rgb(wide, fragment, x, y)) << "R16UI at " << x << ", " << y;
+    for (int x = 0; x < kW; ++x) EXPECT_TRUE(same_rgb(wide, fragment, x, y)) << "R16UI at " << x << ", " << y;
   }
   EXPECT_NE(wide, read_rgba(make_rgba16f(kW, kH, scene_.color), kW, kH)) << "R16UI blurs";
 }

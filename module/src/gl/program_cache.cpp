@@ -211,6 +211,8 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.clamp = f.GetUniformLocation(p.program, "u_clamp");
+  p.pixel_span = f.GetUniformLocation(p.program, "u_pixel_span");
+  p.ray_slope = f.GetUniformLocation(p.program, "u_ray_slope");
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
   p.footprint = f.GetUniformLocation(p.program, "u_footprint");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");

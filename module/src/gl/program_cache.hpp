@@ -33,6 +33,7 @@ struct BlurProgram {
   GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
         pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
+  GLint pixel_span = -1, ray_slope = -1;  // pass_surface.glsl's view offsets
   GLint rect = -1;  // compute programs only
   GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only

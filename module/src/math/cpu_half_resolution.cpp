@@ -27,20 +27,25 @@ float float_of(std::uint32_t b) {
   return f;
 }
 
-// pass_inputs.frag's texel: the colour (0 where out of range), the distance word (the R8UI index in
-// its low byte; NaN where the colour is out of range) and the strength.
+// pass_inputs.frag's texel: the colour (kUnusableColour where out of range; with R8UI indices its
+// blue word's low byte, which holds the index there, read as 0), the distance word (NaN where the
+// colour is out of range), the R8UI index and the strength.
 struct InputTexel {
   std::array<float, 3> colour{};
   std::uint32_t word = 0;
+  std::uint32_t index = 0;
   float strength = 0.0f;
 };
 
+// The blue colour word as the passes read it with R8UI indices in its low byte.
+float without_index(float blue) { return float_of(bits_of(blue) & 0xFFFFFF00u); }
+
 struct Frame {
   int width = 0, height = 0;
-  bool ids = false;  // R8UI indices in the distance words
+  bool ids = false;  // R8UI indices in the blue colour words
   std::vector<InputTexel> texels;
   const InputTexel& at(int x, int y) const { return texels[static_cast<std::size_t>(y) * width + x]; }
-  float distance(std::uint32_t word) const { return float_of(ids ? word & 0xFFFFFF00u : word); }
+  float distance(std::uint32_t word) const { return float_of(word); }
 };
 
 Frame full_inputs(const CpuFilterImage& image, const PassConstants& shared, const std::uint16_t* ids) {
@@ -53,11 +58,14 @@ Frame full_inputs(const CpuFilterImage& image, const PassConstants& shared, cons
     InputTexel& t = f.texels[i];
     const float* c = image.color + i * 4;
     std::uint32_t word = bits_of(linearise_depth(shared, image.depth[i]));
-    if (ids != nullptr) word = (word & 0xFFFFFF00u) | (ids[i] & 0xFFu);
     t.colour = {c[0], c[1], c[2]};
     if (!in_colour_range(c, 3)) {  // pass_inputs.frag: kSssUnusableColour at distance NaN
       t.colour = {kUnusableColour, kUnusableColour, kUnusableColour};
-      word = 0x7FC00000u | (word & 0xFFu);
+      word = 0x7FC00000u;
+    }
+    if (ids != nullptr) {
+      t.colour[2] = without_index(t.colour[2]);
+      t.index = ids[i] & 0xFFu;
     }
     t.word = word;
     t.strength = c[3];
@@ -71,9 +79,9 @@ struct Look {
   float x, y, depth_factor;
 };
 
-int profile_of(const Frame& f, std::uint32_t word, std::size_t count) {
+int profile_of(const Frame& f, std::uint32_t index, std::size_t count) {
   if (!f.ids) return 0;
-  const auto p = static_cast<std::size_t>(word & kProfileIndexMask);
+  const auto p = static_cast<std::size_t>(index & kProfileIndexMask);
   return p < count ? static_cast<int>(p) : -1;
 }
 
@@ -102,13 +110,13 @@ InputTexel reduce_block(const Frame& f, const std::vector<Look>& looks, const st
   }
   const InputTexel& ref = t[static_cast<std::size_t>(r)];
   const float dr = f.distance(ref.word);
-  int p = profile_of(f, ref.word, looks.size());
+  int p = profile_of(f, ref.index, looks.size());
   const float factor = looks[static_cast<std::size_t>(p < 0 ? 0 : p)].depth_factor;
   std::array<float, 3> colour = {0.0f, 0.0f, 0.0f};
   float strength = 0.0f, n = 0.0f;
   for (int k = 0; k < 4; ++k) {
     const auto ku = static_cast<std::size_t>(k);
-    const bool same = (ref.word & 0xFFu) == (t[ku].word & 0xFFu) || !f.ids;
+    const bool same = ref.index == t[ku].index || !f.ids;
     const bool joins = k == r || (translucent[ku] == any && same &&
                                   factor * std::fabs(f.distance(t[ku].word) - dr) < kHalfResolutionMergeReach);
     if (!joins) continue;
@@ -118,7 +126,9 @@ InputTexel reduce_block(const Frame& f, const std::vector<Look>& looks, const st
   }
   InputTexel out;
   for (std::size_t c = 0; c < 3; ++c) out.colour[c] = colour[c] / n;
+  if (f.ids) out.colour[2] = without_index(out.colour[2]);  // the representative's index rides there
   out.word = ref.word;
+  out.index = ref.index;
   out.strength = any ? strength / n : 0.0f;
   return out;
 }
@@ -165,12 +175,12 @@ HalfResult half_passes(const Frame& half, const std::vector<const PassKernel*>& 
     const InputTexel& t = half.texels[i];
     std::copy(t.colour.begin(), t.colour.end(), colour.begin() + static_cast<std::ptrdiff_t>(i * 4));
     colour[i * 4 + 3] = t.strength;
-    depth[i] = float_of(t.word);  // with indices, cpu_profile_filter drops the low byte
-    if (half.ids) ids[i] = static_cast<std::uint16_t>(t.word & 0xFFu);
+    depth[i] = float_of(t.word);
+    if (half.ids) ids[i] = static_cast<std::uint16_t>(t.index);
     const float w = clip_w(half_constants.front(), half.distance(t.word));
     const float stored = intermediate_is_half ? round_to_half(t.strength) : t.strength;
     r.blurred[i] = t.strength > 0.0f && in_colour_range(colour.data() + i * 4, 4) && !std::isnan(w) && w > 0.0f &&
-                   !std::isinf(w) && profile_of(half, t.word, kernels.size()) >= 0 && stored > 0.0f;
+                   !std::isinf(w) && profile_of(half, t.index, kernels.size()) >= 0 && stored > 0.0f;
   }
   CpuFilterImage image;
   image.width = half.width;
@@ -206,7 +216,7 @@ struct Upsample {
     const float d = full.distance(t.word);
     const float w = clip_w(shared, d);
     if (std::isnan(w) || !(w > 0.0f) || std::isinf(w)) return false;
-    const int p = profile_of(full, t.word, kernels.size());
+    const int p = profile_of(full, t.index, kernels.size());
     if (p < 0) return false;
     const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
     const PassTerm& term = kernel.terms.front();
@@ -219,7 +229,7 @@ struct Upsample {
     float weight = 0.0f;
     std::array<float, 3> blurred{}, reduced{};
     Range range;
-    neighbours(x, y, t.word, d, look.depth_factor / a, &weight, &blurred, &reduced, &range);
+    neighbours(x, y, t.index, d, look.depth_factor / a, &weight, &blurred, &reduced, &range);
     if (!(weight >= kHalfResolutionMinWeight)) return false;
     std::array<float, 3> near{}, mass{};
     near_field(x, y, t, d, look.depth_factor / a,
@@ -255,7 +265,7 @@ struct Upsample {
         const InputTexel& q = full.at(qx, qy);
         float s = factor * std::fabs(d - full.distance(q.word));
         if (!(s < 1.0f)) s = 1.0f;
-        if (full.ids && (q.word & 0xFFu) != (t.word & 0xFFu)) s = 1.0f;  // another index: the centre's colour
+        if (full.ids && q.index != t.index) s = 1.0f;  // another index: the centre's colour
         for (std::size_t c = 0; c < 3; ++c) {
           const float wx = dx == 0 ? h.centre[c] : h.beside[c], wy = dy == 0 ? v.centre[c] : v.beside[c];
           const float w = wx * wy;
@@ -269,7 +279,7 @@ struct Upsample {
   }
 
   // The four nearest half-size texels: bilinear weight times the depth weight, on the pixel's index.
-  void neighbours(int x, int y, std::uint32_t word, float d, float factor, float* weight,
+  void neighbours(int x, int y, std::uint32_t index, float d, float factor, float* weight,
                   std::array<float, 3>* blurred, std::array<float, 3>* reduced, Range* range) const {
     const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
     const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
@@ -280,7 +290,7 @@ struct Upsample {
         const std::size_t qk = static_cast<std::size_t>(qj) * half.width + qi;
         if (result.blurred[qk] == 0) continue;
         const InputTexel& q = half.texels[qk];
-        if (full.ids && (q.word & 0xFFu) != (word & 0xFFu)) continue;
+        if (full.ids && q.index != index) continue;
         float s = factor * std::fabs(d - half.distance(q.word));
         if (!(s < 1.0f)) s = 1.0f;
         const float wq = (dx == 0 ? 1.0f - fx : fx) * (dy == 0 ? 1.0f - fy : fy) * (1.0f - s);

@@ -4,9 +4,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
+#include "pass_surface.hpp"
 
 namespace sss::math {
 
@@ -31,21 +33,54 @@ struct Indices {
   std::uint16_t at(int x, int y) const { return ids[static_cast<std::size_t>(y) * width + x]; }
 };
 
-// One pass at pixel (x, y) along axis `axis` (0: x, 1: y), with the look `k` (pixels per mm and the
-// follow-surface numbers) and the frame's `shared` constants (depth linearisation, clamp). Returns
-// false when the pixel is left as it is (not translucent or no usable depth).
+// A neighbour of (x, y) for the surface's tangent (pass_surface.hpp): inside the clamp rectangle,
+// with the view distance the passes' inputs hold (NaN for a colour they do not blur), in front of
+// the camera.
+// The neighbour (x + ox, y + oy) of (x, y) for the surface's tangent (pass_surface.hpp): inside the
+// clamp rectangle, with the view distance the passes' inputs hold (NaN for a colour they do not
+// blur), in front of the camera, and with per-pixel profiles the centre's whole index (another
+// object is another surface).
+Neighbour neighbour_at(const PassConstants& shared, const Plane& distance, const Indices& indices, int x, int y,
+                       int ox, int oy) {
+  Neighbour n;
+  if (!cpu_passes::inside(shared, x + ox, y + oy)) return n;
+  n.distance = distance.at(x + ox, y + oy, 0);
+  const float w = clip_w(shared, n.distance);
+  n.usable = w > 0.0f && std::isfinite(w);  // false for a NaN distance too
+  if (indices.ids != nullptr && indices.at(x + ox, y + oy) != indices.at(x, y)) n.usable = false;
+  return n;
+}
+
+// The pass's walk over the surface at (x, y) (pass_surface.hpp), from the distances of its four
+// neighbours (the vertical pass needs both tangents; the horizontal one only T_x).
+PassGeometry pass_geometry(const PassConstants& shared, const Plane& distance, const Indices& indices, int axis, int x,
+                           int y, float d0) {
+  const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
+  const std::array<float, 2> g = ray_slope(shared, cx, cy);
+  const auto neighbour = [&](int ox, int oy) { return neighbour_at(shared, distance, indices, x, y, ox, oy); };
+  const Float3 tx = surface_tangent(shared, g, 0, d0, neighbour(-1, 0), neighbour(1, 0));
+  if (axis == 0) return horizontal_geometry(shared, g, d0, tx);
+  const Float3 ty = surface_tangent(shared, g, 1, d0, neighbour(0, -1), neighbour(0, 1));
+  return vertical_geometry(shared, g, d0, tx, ty);
+}
+
+// One pass at pixel (x, y) along axis `axis` (0: x, 1: y, sheared: pass_surface.hpp), with the look
+// `k` (pixels per mm and the follow-surface numbers) and the frame's `shared` constants (depth
+// linearisation, clamp, view offsets). `distance`: the view distance per pixel as the passes'
+// inputs hold it. Returns false when the pixel is left as it is (not translucent or no usable depth).
 bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
-                  const PassConstants& shared, const Plane& source, const Plane& depth, const Indices& indices,
+                  const PassConstants& shared, const Plane& source, const Plane& distance, const Indices& indices,
                   int axis, int x, int y, Rgba* result) {
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = source.rgba(x, y);
   if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) return false;
   const float strength = std::min(centre[3], 1.0f);
-  const float centre_distance = linearise_depth(shared, depth.at(x, y, 0));
+  const float centre_distance = distance.at(x, y, 0);
   const float w = clip_w(shared, centre_distance);
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
-  const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w;
+  const PassGeometry walk = pass_geometry(shared, distance, indices, axis, x, y, centre_distance);
+  const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w * walk.ratio;
   const bool gaussian_depth = depth_variance_mm2 > 0.0f;
   const float follow_surface = (gaussian_depth ? k.mm_per_world : k.follow_surface_factor) / strength;
   const float inv_two_variance = gaussian_depth ? 0.5f / depth_variance_mm2 : 0.0f;
@@ -60,15 +95,22 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
     const float p = static_cast<float>(taps.position[static_cast<std::size_t>(i)]);
     std::array<float, 3> pair = {0.0f, 0.0f, 0.0f};
     for (int side = 0; side < 2; ++side) {
+      const float offset = side == 0 ? p : -p;
       float px = cx, py = cy;
-      (axis == 0 ? px : py) += side == 0 ? p : -p;
+      if (axis == 0) {
+        px += offset;
+      } else {
+        py += offset;
+        px += walk.shear * offset;
+      }
       px = std::clamp(px, shared.clamp_min[0], shared.clamp_max[0]);
       py = std::clamp(py, shared.clamp_min[1], shared.clamp_max[1]);
       const int tx = static_cast<int>(px), ty = static_cast<int>(py);
       std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
       if (!in_colour_range(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
       if (k.follow_surface_factor > 0.0f) {
-        const float d = follow_surface * std::fabs(centre_distance - linearise_depth(shared, depth.at(tx, ty, 0)));
+        const float d =
+            off_line_distance(shared, walk, follow_surface, offset, distance.at(tx, ty, 0), centre_distance);
         follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
       }
       if (indices.ids != nullptr && indices.at(tx, ty) != indices.at(x, y)) tap = {centre[0], centre[1], centre[2]};
@@ -80,6 +122,27 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   return true;
 }
 
+// A blue colour word as the passes read it where its low byte holds an R8UI index: that byte as 0.
+float without_index_byte(float blue) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &blue, sizeof bits);
+  bits &= 0xFFFFFF00u;
+  std::memcpy(&blue, &bits, sizeof bits);
+  return blue;
+}
+
+// The view distance of every pixel as the fragment passes' inputs hold it (pass_inputs.frag): NaN
+// where the colour is not one the passes blur.
+std::vector<float> pass_distances(const PassConstants& shared, const CpuFilterImage& image, const float* depth) {
+  const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
+  std::vector<float> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const bool usable = in_colour_range(image.color + i * 4, 3);
+    out[i] = usable ? linearise_depth(shared, depth[i]) : std::numeric_limits<float>::quiet_NaN();
+  }
+  return out;
+}
+
 }  // namespace
 
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
@@ -87,7 +150,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   const int w = image.width, h = image.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   const Plane color{w, h, 4, image.color};
-  const Plane depth{w, h, 1, image.depth};
+  const std::vector<float> distances = pass_distances(constants, image, image.depth);
+  const Plane distance{w, h, 1, distances.data()};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
   std::vector<float> accumulated(count * 3, 0.0f);  // the earlier terms' vertical sums
@@ -99,7 +163,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
     cpu_passes::horizontal_into_intermediate(
         image, constants, false,
         [&](int x, int y, Rgba* blurred) {
-          return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, constants, color, depth,
+          return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, constants, color, distance,
                               Indices{}, 0, x, y, blurred);
         },
         intermediate.data());
@@ -109,7 +173,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
     cpu_passes::vertical(
         image, constants,
         [&](int x, int y, Rgba* blurred) {
-          return filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, constants, half_plane, depth,
+          return filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, constants, half_plane, distance,
                               Indices{}, 1, x, y, blurred);
         },
         [&](std::size_t i, const Rgba& blurred) {
@@ -126,26 +190,19 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
 }
 
 void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std::vector<PassConstants>& constants,
-                        const std::uint16_t* ids, const CpuFilterImage& image, float* out, bool index_in_distance) {
+                        const std::uint16_t* ids, const CpuFilterImage& image, float* out, bool index_in_blue) {
   const int w = image.width, h = image.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
-  const Plane color{w, h, 4, image.color};
-  // With the index in the distance's low byte, the passes read distances without those 8 bits: the
-  // model linearises first and reads the result as linear depth.
-  PassConstants shared = constants.front();
-  std::vector<float> distances;
-  if (index_in_distance) {
-    distances.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-      std::uint32_t bits = 0;
-      const float d = linearise_depth(shared, image.depth[i]);
-      std::memcpy(&bits, &d, sizeof bits);
-      bits &= 0xFFFFFF00u;
-      std::memcpy(&distances[i], &bits, sizeof bits);
-    }
-    shared.linear_depth = true;
+  // With R8UI ids the passes' inputs carry each index in the low byte of the blue colour word, which
+  // the passes read as 0 (and the horizontal pass's result carries on the same way).
+  std::vector<float> colours(image.color, image.color + count * 4);
+  if (index_in_blue) {
+    for (std::size_t i = 0; i < count; ++i) colours[i * 4 + 2] = without_index_byte(colours[i * 4 + 2]);
   }
-  const Plane depth{w, h, 1, index_in_distance ? distances.data() : image.depth};
+  const Plane color{w, h, 4, colours.data()};
+  const PassConstants& shared = constants.front();
+  const std::vector<float> distances = pass_distances(shared, image, image.depth);
+  const Plane distance{w, h, 1, distances.data()};
   const Indices indices{ids, w};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
@@ -160,11 +217,14 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
     const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
     const PassTerm& term = kernel.terms.front();
     return filter_pixel(axis == 0 ? term.horizontal : term.vertical, kernel, term.depth_variance_mm2,
-                        constants[static_cast<std::size_t>(p)], shared, source, depth, indices, axis, x, y, blurred);
+                        constants[static_cast<std::size_t>(p)], shared, source, distance, indices, axis, x, y, blurred);
   };
   cpu_passes::horizontal_into_intermediate(
       image, constants.front(), false, [&](int x, int y, Rgba* blurred) { return pass(0, color, x, y, blurred); },
       intermediate.data());
+  if (index_in_blue) {
+    for (std::size_t i = 0; i < count; ++i) intermediate[i * 4 + 2] = without_index_byte(intermediate[i * 4 + 2]);
+  }
   const Plane half_plane{w, h, 4, intermediate.data()};
   cpu_passes::vertical(
       image, constants.front(), [&](int x, int y, Rgba* blurred) { return pass(1, half_plane, x, y, blurred); },

@@ -53,10 +53,11 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
 // follow-surface numbers; the depth linearisation and clamp are constants[0]'s, which every profile
 // shares); a pixel whose index has no kernel keeps its value, and a tap whose whole index differs
 // from the centre's counts as the centre's colour. `ids`: one value per pixel, row 0 at the bottom.
-// `index_in_distance`: the ids came from an R8UI texture, which the GL carries in the low byte of
-// each pixel's view distance (module/shaders/pass_inputs.frag): the distances lose those 8 bits.
+// `index_in_blue`: the ids came from an R8UI texture, which the GL carries in the low byte of each
+// pixel's blue colour word (module/shaders/pass_inputs.frag): the passes read that byte as 0 (no
+// change for an RGBA16F colour, whose float bits end in 13 zeros).
 void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std::vector<PassConstants>& constants,
                         const std::uint16_t* ids, const CpuFilterImage& image, float* out,
-                        bool index_in_distance = false);
+                        bool index_in_blue = false);
 
 }  // namespace sss::math

@@ -51,9 +51,25 @@ PassConstants compute_pass_constants(const FilterSettings& settings, const Matri
     k.ndc_bias = 0.0f;
   }
   k.depth_terms = {projection[10], projection[11], projection[14], projection[15]};
+  set_view_offsets(&k, projection, geometry.viewport);
 
   clamp_to_rect(&k, geometry.viewport);
   return k;
+}
+
+void set_view_offsets(PassConstants* k, const Matrix4& projection, const std::array<int, 4>& viewport) {
+  const double m11 = projection[11];
+  for (std::size_t a = 0; a < 2; ++a) {
+    const double scale = projection[a == 0 ? 0 : 5];  // m[0], m[5]
+    const double skew = projection[a == 0 ? 8 : 9];   // m[8], m[9]
+    const double size = viewport[2 + a], origin = viewport[a];
+    const double span = 2.0 / (scale * size);
+    const double bias = (skew + m11 * (1.0 + 2.0 * origin / size)) / scale;
+    const bool finite = std::isfinite(span) && std::isfinite(bias) && std::isfinite(-m11 * span);
+    k->pixel_span[a] = finite ? static_cast<float>(span) : 0.0f;
+    k->slope_scale[a] = finite ? static_cast<float>(-m11 * span) : 0.0f;
+    k->slope_bias[a] = finite ? static_cast<float>(bias) : 0.0f;
+  }
 }
 
 void clamp_to_rect(PassConstants* k, const std::array<int, 4>& rect) {

@@ -69,6 +69,13 @@ struct PassConstants {
   // read outside the viewport.
   std::array<float, 2> clamp_min = {0.0f, 0.0f}, clamp_max = {0.0f, 0.0f};
   bool linear_depth = false;
+  // The view-space offsets between pixels (pass_surface.hpp), x then y: the world width of one
+  // window pixel per unit of clip w, s = 2 / (m[0] · viewport width) and 2 / (m[5] · height), signed
+  // as the projection is; and the view ray's lateral slope at window position p, p · slope_scale +
+  // slope_bias (slope_scale = -m11 · s; slope_bias = (m[8] + m11 · (1 + 2 · viewport x / width)) /
+  // m[0], likewise for y). Zero where the projection scale is not finite or zero.
+  std::array<float, 2> pixel_span = {0.0f, 0.0f};
+  std::array<float, 2> slope_scale = {0.0f, 0.0f}, slope_bias = {0.0f, 0.0f};
 };
 
 // World units per profile millimetre: world_units_per_mm · scale.
@@ -79,6 +86,11 @@ double world_units_per_profile_mm(const FilterSettings& settings);
 // surface millimetres (its kernel range over separable_scale).
 PassConstants compute_pass_constants(const FilterSettings& settings, const Matrix4& projection,
                                      const FrameGeometry& geometry, double reach_mm = -1.0);
+
+// The view offsets of PassConstants (pixel_span, slope_scale, slope_bias) for `projection` and a
+// viewport (x, y, width, height in pixels; not empty). compute_pass_constants sets them; the
+// half-resolution passes set their own for the half-size grid.
+void set_view_offsets(PassConstants* k, const Matrix4& projection, const std::array<int, 4>& viewport);
 
 // Keeps tap positions (and the pixels the CPU model filters) inside `rect` (x, y, width, height in
 // pixels; not empty): texel centres from rect.xy + 0.5 to rect.xy + size - 0.5. compute_pass_constants

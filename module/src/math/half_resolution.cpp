@@ -11,6 +11,13 @@ std::array<int, 4> half_rect(const std::array<int, 4>& rect) {
 PassConstants half_pass_constants(const PassConstants& full, const std::array<int, 4>& half) {
   PassConstants k = full;
   k.pixels_per_mm = {0.5f * full.pixels_per_mm[0], 0.5f * full.pixels_per_mm[1]};
+  // Half-size texel (i, j) stands for the full-size pixels 2i..2i+1: its centre is full-size window
+  // position 2 · (i + ½), so a half-size pixel spans twice the width and the ray's slope changes
+  // twice as fast per pixel (pass_surface.hpp's view offsets).
+  for (std::size_t a = 0; a < 2; ++a) {
+    k.pixel_span[a] = 2.0f * full.pixel_span[a];
+    k.slope_scale[a] = 2.0f * full.slope_scale[a];
+  }
   k.linear_depth = true;
   clamp_to_rect(&k, half);
   return k;

@@ -1,0 +1,123 @@
+// How one pass of the separable filter walks the surface at a pixel: how many millimetres of surface
+// one step of the pass spans there, along which screen line it steps, and how far a tap lies off the
+// surface's tangent line. Math layer: no GL. The shaders (module/shaders/pass_surface.glsl) compute
+// the same numbers in the same float operations; these functions are their model.
+//
+// Why
+// ---
+// A pass that steps through the screen by the centre's depth alone treats every surface as if it
+// faced the camera. Where skin turns away (a cheek, the side of the nose, the neck: 45-80 degrees
+// on most of a face) one pixel spans 1/cos(turn) times more surface along the turn, so such a pass
+// spreads light several times too far there, and its depth test (the raw depth difference of a
+// tap) fades taps on the slope as if they lay across a step.
+//
+// The surface around a pixel
+// --------------------------
+// View-space positions follow from a pixel's window position and view distance d (surface.hpp's
+// formulas). Between the centre (window p, distance d0, clip w0) and a point at window p + o with
+// distance d (clip w = -m11 d + m15) the offset is exactly
+//
+//   ΔP = (s_x · o_x · w + Δd · g_x,  s_y · o_y · w + Δd · g_y,  -Δd),   Δd = d - d0,
+//
+// where s_a = 2 / (m[0] · viewport width) (resp. m[5], height) is the world width of a window pixel
+// per unit of clip w, and g_a = (m[8] - m11 · ndc_x) / m[0] (resp. m[9], ndc_y, m[5]) is the view
+// ray's lateral slope at p (0 for an orthographic camera that looks down -Z): no cancellation of
+// large view-space coordinates, so a float difference of neighbours stays accurate.
+//
+// The tangents T_x, T_y (world units per pixel) come from the two neighbours on the axis, where
+// usable (finite distance, w > 0, inside the clamp rectangle, and with per-pixel profiles the same
+// index), as a blend a·T+ + (1 - a)·T- of the one-sided differences T+ = P(+1) - P and
+// T- = P - P(-1):
+//   - where the surface is smooth, the depth's second difference at most a facing pixel's width
+//     (the smoothness test of the reference's rule, surface.hpp's central_where_smooth): a = ½, the
+//     central difference, exact on a plane at any turn;
+//   - past twice that (a step, a fold): the side with the smaller depth change, a = 0 or 1, where
+//     the two sides' depth changes differ by a facing pixel's width or more (so one side of a step
+//     does not take the other surface's slope), and linearly towards ½ as they come closer;
+//   - between the two a linear blend; with one usable neighbour its side; with none a facing
+//     plane's tangent.
+// The reference switches between central and one-sided at the threshold; a pass cannot: a depth
+// quantised by a 24-bit buffer, or by the R8UI index's 8 bits, moves the second difference across
+// it from pixel to pixel, and the switch changes the tangent by up to half a pixel's depth change.
+// The blend is continuous in the distances. Measured against the reference's own rule and against
+// always taking the smaller step: docs/surface-turns.md.
+//
+// The two passes
+// --------------
+// An isotropic kernel on the surface is separable along any two perpendicular surface directions,
+// so the passes step along two screen lines whose surface images are perpendicular:
+//   - the horizontal pass along screen x, one pixel at a time: T_x, |T_x| mm per step;
+//   - the vertical pass one row at a time, shifted `shear` = -(T_x·T_y)/(T_x·T_x) columns per row,
+//     so that its step T_t = T_y + shear·T_x is perpendicular to T_x on the surface: |T_t| mm per
+//     step, which is the pixel's area over |T_x|. Its taps read the whole pixel nearest to the line
+//     (column floor(x + ½ + shear · k)).
+// On a plane under an orthographic camera this is exactly the 2D reference's own model of the pixel
+// (exact_reference.hpp: a rectangle |T_x| by area/|T_x| along T_x, rows shifted along it), so a
+// sum of Gaussians is exact there at any turn about any axis, the sheared columns rounded to whole
+// pixels; facing the camera, T_x·T_y = 0 and the passes are the screen's rows and columns as before.
+// The step each pass reports is `ratio` = (a facing pixel's width at w0) / (the surface length of one
+// step), which multiplies the facing-plane step pixels_per_mm · strength / w0.
+//
+// The depth test
+// --------------
+// Follow-surface measures how far a tap lies off the centre's tangent line within the slice of
+// space the pass's screen line sees (the plane through that line and the centre's view ray): on a
+// plane every tap lies on it (distance 0, at any turn), across a step a tap lies off it by about the
+// step. For a tap `k` steps along the line with view distance d it is
+//
+//   h = α · (d - d0) + k · λ · w(d),
+//
+// α = |A⊥| and λ = (A⊥/|A⊥|) · L, with A = (g_x, g_y, -1) the centre ray's derivative, A⊥ its part
+// perpendicular to the line's tangent T, and L = (s_x · δx, s_y · δy, 0) the window step (δx, δy) =
+// (1, 0) or (shear, 1) per unit of w: a fused multiply-add or two per tap, as the raw depth
+// difference was. Where the tangent is parallel to the ray (α = 0: the surface seen edge-on) it falls
+// back to the raw depth difference (α = 1, λ = 0).
+#pragma once
+
+#include <array>
+
+#include "filter_constants.hpp"
+
+namespace sss::math {
+
+struct Float3 {
+  float x = 0.0f, y = 0.0f, z = 0.0f;
+};
+
+// A neighbour's view distance along the pass's axis, and whether it may serve the tangent (finite,
+// in front of the camera, inside the clamp rectangle).
+struct Neighbour {
+  float distance = 0.0f;
+  bool usable = false;
+};
+
+// The view ray's lateral slope g (x, y) at window position (wx, wy).
+std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy);
+
+// The offset from the centre (distance d0, ray slope g) to the point at window offset (ox, oy) with
+// view distance d: ΔP above.
+Float3 view_offset(const PassConstants& k, const std::array<float, 2>& g, float ox, float oy, float d, float d0);
+
+// The surface tangent along `axis` (0 x, 1 y) at the centre from its two neighbours on that axis (at
+// window offsets -1 and +1), by the rule above.
+Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, int axis, float d0, const Neighbour& minus,
+                       const Neighbour& plus);
+
+struct PassGeometry {
+  float ratio = 1.0f;       // facing pixel width at w0 over the surface length of one step
+  float shear = 0.0f;       // columns per row (vertical pass); 0 along x
+  float off_depth = 1.0f;   // α of the off-line distance
+  float off_step = 0.0f;    // λ of the off-line distance
+};
+
+// The horizontal pass's geometry from T_x; the vertical pass's from T_x and T_y.
+PassGeometry horizontal_geometry(const PassConstants& k, const std::array<float, 2>& g, float d0, const Float3& tx);
+PassGeometry vertical_geometry(const PassConstants& k, const std::array<float, 2>& g, float d0, const Float3& tx,
+                               const Float3& ty);
+
+// h above for a tap `offset` steps along the line (either sign) at view distance d, times `factor`
+// (the follow-surface factor): in the shaders' order, factor folded into α and λ once per pixel.
+float off_line_distance(const PassConstants& k, const PassGeometry& geometry, float factor, float offset, float d,
+                        float d0);
+
+}  // namespace sss::math
