@@ -80,9 +80,9 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 // must not spread, so it counts as the
 // centre's colour (its weight goes to the centre), like a tap across a depth step; with
 // follow-surface it is blended back to the centre's as it leaves the surface: by its distance off
-// the centre's tangent line (pass_surface.glsl), `offset` steps along the pass's line, with
-// follow = (α, λ) times the follow-surface factor, so that a slope is not taken for a step.
-vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, vec2 follow, float offset) {
+// the centre's tangent line (pass_surface.glsl), |d · line.x + line.y| times the follow-surface
+// factor for its distance d (sss_off_line), so that a slope is not taken for a step.
+vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line) {
   vec3 tap = fetched.rgb;
 #if !SSS_FOLLOW_SURFACE
   // With follow-surface such a tap's distance, NaN, makes the blend below the centre exactly: no
@@ -90,7 +90,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, vec2 follow, 
   if (!sss_in_range(tap)) tap = centre;  // colour_range.glsl
 #endif
 #if SSS_FOLLOW_SURFACE
-  float d = abs(follow.x * (fetched.a - centre_distance) + offset * follow.y * clip_w(fetched.a));
+  float d = abs(fetched.a * line.x + line.y);
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
@@ -104,13 +104,12 @@ vec3 settled_tap(vec4 fetched, vec3 centre, float centre_distance, vec2 follow, 
 }
 
 // The pass's weighted sum at one pixel (centre colour `centre`, taps step_pixels apart per profile
-// mm; `follow`: settled_tap's off-line coefficients; `pixel` and `axis` (0 horizontal, 1 vertical)
+// mm; `follow`: the off-line coefficients, sss_follow; `pixel` and `axis` (0 horizontal, 1 vertical)
 // seed the jitter). Taps on whole pixels (of the pass's line: pass_surface.glsl): every
 // pixel out to the reach where the kernel spans at most u_half_taps on a side, else u_half_taps
 // spread denser at the centre (never two on one pixel). A tap's weight is the kernel over the
 // pixels between the midpoints to its neighbours; the last one takes the tail.
-vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_distance, vec2 follow,
-                   ivec2 pixel, int axis) {
+vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, vec3 follow, ivec2 pixel, int axis) {
   float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
   int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
@@ -151,7 +150,7 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, float centre_di
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
       float offset = side == 0 ? read : -read;
-      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, centre_distance, follow, offset);
+      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, sss_off_line(follow, offset));
 #if SSS_PROFILE_IDS
       if (sss_tap_foreign) tap = centre;  // another material or object: its weight stays on the centre
 #endif

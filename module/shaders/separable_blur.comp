@@ -144,37 +144,41 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
   return sss_texel(kAxis * along_tap + row);
 }
 
-// The view distance of the neighbour `o` of `pixel` and whether it may serve the surface's tangent
-// (separable_blur.frag's sss_neighbour_distance): from the cache along the axis, from the textures
-// across it.
-float sss_neighbour_distance(ivec2 pixel, ivec2 o, int line, int cache_i, out bool usable) {
-  vec2 window = vec2(pixel + o) + 0.5;
-  bool inside = all(greaterThanEqual(window, u_clamp.xy)) && all(lessThanEqual(window, u_clamp.zw));
+// The view distance of the neighbour `step` (-1 or +1) pixels from `pixel` along `axis` and whether
+// it may serve the surface's tangent (separable_blur.frag's sss_neighbour_distance): from the cache
+// along the pass's axis, from the textures across it.
+float sss_neighbour_distance(ivec2 pixel, int axis, int step, int line, int cache_i, out bool usable) {
+  float along = float(pixel[axis]) + 0.5 + float(step);
+  bool inside = along >= u_clamp[axis] && along <= u_clamp[2 + axis];
   float d;
-  if (o[SSS_AXIS] != 0) {
-    d = s_texel[cache_index(line, inside ? cache_i + o[SSS_AXIS] : cache_i)].a;
+  if (axis == SSS_AXIS) {
+    d = s_texel[cache_index(line, inside ? cache_i + step : cache_i)].a;
   } else {
-    d = sss_texel(inside ? pixel + o : pixel).a;
+    ivec2 texel = pixel;
+    texel[axis] += inside ? step : 0;
+    d = sss_texel(texel).a;
   }
   usable = inside && sss_usable_distance(d);
   return d;
+}
+
+// The tangent along `axis` from the pixel's two neighbours on it.
+vec3 sss_tangent(ivec2 pixel, vec2 g, int axis, float d0, int line, int cache_i) {
+  bool um, up;
+  float dm = sss_neighbour_distance(pixel, axis, -1, line, cache_i, um);
+  float dp = sss_neighbour_distance(pixel, axis, 1, line, cache_i, up);
+  return sss_surface_tangent(g, axis, d0, dm, um, dp, up);
 }
 
 // The pass's walk over the surface at `pixel` (separable_blur.frag's sss_walk), `cache_i` its texel
 // in its line's cache.
 SssWalk sss_walk(ivec2 pixel, float d0, int line, int cache_i) {
   vec2 g = sss_ray_slope(vec2(pixel) + 0.5);
-  bool um, up;
-  float dm = sss_neighbour_distance(pixel, ivec2(-1, 0), line, cache_i, um);
-  float dp = sss_neighbour_distance(pixel, ivec2(1, 0), line, cache_i, up);
-  vec3 tx = sss_surface_tangent(g, vec2(1.0, 0.0), u_pixel_span.x, d0, dm, um, dp, up);
+  vec3 tx = sss_tangent(pixel, g, 0, d0, line, cache_i);
 #if SSS_AXIS == 0
   return sss_horizontal_walk(g, d0, tx);
 #else
-  dm = sss_neighbour_distance(pixel, ivec2(0, -1), line, cache_i, um);
-  dp = sss_neighbour_distance(pixel, ivec2(0, 1), line, cache_i, up);
-  vec3 ty = sss_surface_tangent(g, vec2(0.0, 1.0), u_pixel_span.y, d0, dm, um, dp, up);
-  return sss_vertical_walk(g, d0, tx, ty);
+  return sss_vertical_walk(g, d0, tx, sss_tangent(pixel, g, 1, d0, line, cache_i));
 #endif
 }
 
@@ -283,11 +287,11 @@ void main() {
       if (blurred[k]) {
         float follow_surface = u_follow_surface / min(centre.a, 1.0);
         SssWalk walk = sss_walk(pixel, distance[k], tile.x, SSS_APRON + tile.y);
-        vec2 follow = vec2(walk.off_depth * follow_surface, walk.off_step * follow_surface);
         TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
                                SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across,
                                float(across) + 0.5, walk.shear);
-        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k] * walk.ratio, distance[k], follow, pixel, SSS_AXIS);
+        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k] * walk.ratio,
+                                 sss_follow(walk, follow_surface, distance[k]), pixel, SSS_AXIS);
         write_blurred(pixel, sum, centre.a);
       } else {
         write_untouched(pixel, centre);

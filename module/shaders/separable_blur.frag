@@ -34,7 +34,7 @@
 //                       (imageLoad), where the context has image units (desktop GL 4.3+, GLSL
 //                       4.20): on llvmpipe a texelFetch calls a sampling function that works out a
 //                       mip level per lane, and the tap loop spills its registers around each call
-//                       (the 1080p close-up took 13 % longer); the strength keeps its sampler
+//                       (the 1080p close-up took 13 % longer); the strength likewise through unit 1
 //   SSS_PROFILE_IDS     per-pixel profiles (sss_frame.profile_texture): 0 none; 1 an R8UI index,
 //                       which pass_inputs.frag put in the low byte of the blue colour word (the
 //                       horizontal pass carries it on); 2 an R16UI one, read per tap from the
@@ -60,6 +60,7 @@ SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits 
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
 #if SSS_IMAGE_TAPS
 layout(binding = 0, rgba32ui) readonly uniform highp uimage2D u_source_taps;  // u_source's texture
+layout(binding = 1, r32ui) readonly uniform highp uimage2D u_strength_image;  // u_strength's texture
 #endif
 #if SSS_OUTSIDE == 2
 SSS_BINDING(2) uniform sampler2D u_original;  // the host's colour, never attached to the target of this pass
@@ -96,6 +97,17 @@ uvec4 sss_tap_texel(ivec2 texel) {
   return imageLoad(u_source_taps, texel);
 #else
   return texelFetch(u_source, texel, 0);
+#endif
+}
+
+// The pixel's strength (pass_inputs.frag's copy of the colour's alpha): through image unit 1 where
+// the taps are read through unit 0 (on llvmpipe a texelFetch from the R32UI texture is a call to a
+// sampling function; the imageLoad is inlined: 2.3e7 instructions of the 1080p close-up's 1.3e9).
+float sss_strength(ivec2 pixel) {
+#if SSS_IMAGE_TAPS
+  return uintBitsToFloat(imageLoad(u_strength_image, pixel).r);
+#else
+  return uintBitsToFloat(texelFetch(u_strength, pixel, 0).r);
 #endif
 }
 
@@ -160,14 +172,15 @@ vec4 sss_fetch_tap(TapSite site, float offset) {
 
 #include "footprint_taps.glsl"
 
-// The view distance of the pixel `o` from `pixel`, and whether it may serve the surface's tangent
-// (inside u_clamp, a finite distance in front of the camera, and with per-pixel profiles the
-// centre's profile and object: another object is another surface): read where it lies inside the
-// texture even when it does not serve.
-float sss_neighbour_distance(ivec2 pixel, ivec2 o, out bool usable) {
-  vec2 window = gl_FragCoord.xy + vec2(o);
-  bool inside = all(greaterThanEqual(window, u_clamp.xy)) && all(lessThanEqual(window, u_clamp.zw));
-  ivec2 texel = inside ? pixel + o : pixel;
+// The view distance of the neighbour `step` (-1 or +1) pixels from `pixel` along `axis`, and whether
+// it may serve the surface's tangent (inside u_clamp, a finite distance in front of the camera, and
+// with per-pixel profiles the centre's profile and object: another object is another surface). A
+// neighbour outside u_clamp reads the pixel itself (a texel inside the texture) and does not serve.
+float sss_neighbour_distance(ivec2 pixel, int axis, float step, out bool usable) {
+  float along = gl_FragCoord[axis] + step;
+  bool inside = along >= u_clamp[axis] && along <= u_clamp[2 + axis];
+  ivec2 texel = pixel;
+  texel[axis] = int(inside ? along : gl_FragCoord[axis]);
   uvec4 t = sss_tap_texel(texel);
   float d = sss_distance(t.a);
   usable = inside && sss_usable_distance(d);
@@ -177,21 +190,23 @@ float sss_neighbour_distance(ivec2 pixel, ivec2 o, out bool usable) {
   return d;
 }
 
+// The tangent along `axis` from this pixel's two neighbours on it.
+vec3 sss_tangent(ivec2 pixel, vec2 g, int axis, float d0) {
+  bool um, up;
+  float dm = sss_neighbour_distance(pixel, axis, -1.0, um);
+  float dp = sss_neighbour_distance(pixel, axis, 1.0, up);
+  return sss_surface_tangent(g, axis, d0, dm, um, dp, up);
+}
+
 // The pass's walk over the surface at this pixel (pass_surface.glsl): the horizontal pass needs T_x,
 // the vertical one T_x and T_y.
 SssWalk sss_walk(ivec2 pixel, float d0) {
   vec2 g = sss_ray_slope(gl_FragCoord.xy);
-  bool um, up;
-  float dm = sss_neighbour_distance(pixel, ivec2(-1, 0), um);
-  float dp = sss_neighbour_distance(pixel, ivec2(1, 0), up);
-  vec3 tx = sss_surface_tangent(g, vec2(1.0, 0.0), u_pixel_span.x, d0, dm, um, dp, up);
+  vec3 tx = sss_tangent(pixel, g, 0, d0);
 #if SSS_PACKED_OUTPUT
   return sss_horizontal_walk(g, d0, tx);
 #else
-  dm = sss_neighbour_distance(pixel, ivec2(0, -1), um);
-  dp = sss_neighbour_distance(pixel, ivec2(0, 1), up);
-  vec3 ty = sss_surface_tangent(g, vec2(0.0, 1.0), u_pixel_span.y, d0, dm, um, dp, up);
-  return sss_vertical_walk(g, d0, tx, ty);
+  return sss_vertical_walk(g, d0, tx, sss_tangent(pixel, g, 1, d0));
 #endif
 }
 
@@ -211,7 +226,7 @@ void leave_untouched(ivec2 pixel, uvec4 texel) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 texel = sss_tap_texel(pixel);
-  vec4 centre = vec4(sss_colour(texel.rgb), uintBitsToFloat(texelFetch(u_strength, pixel, 0).r));
+  vec4 centre = vec4(sss_colour(texel.rgb), sss_strength(pixel));
   // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
   // pixel keeps its own value.
   if (!(centre.a > 0.0) || !sss_in_range(centre)) {
@@ -246,8 +261,8 @@ void main() {
 #endif
   SssWalk walk = sss_walk(pixel, centre_distance);
   float step_pixels = pixels_per_mm * strength / w * walk.ratio;
-  vec2 follow = vec2(walk.off_depth * follow_surface, walk.off_step * follow_surface);
-  vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels, centre_distance, follow, pixel, kSssAxis);
+  vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels,
+                           sss_follow(walk, follow_surface, centre_distance), pixel, kSssAxis);
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif

@@ -228,9 +228,9 @@ std::map<std::string, long> expected_guard_reads(bool es, int es_minor, bool ima
   // GL_COLOR_WRITEMASK and GL_DEPTH_WRITEMASK; GL_DEPTH_RANGE.
   std::map<std::string, long> reads = {
       {"glGetBooleanv", 2}, {"glGetFloatv", 1}, {"glGetIntegerv", integers}, {"glIsEnabled", enables}};
-  if (image_units) {
-    reads["glGetIntegeri_v"] = 5;
-    reads["glGetBooleani_v"] = 1;
+  if (image_units) {  // image units 0 (the taps) and 1 (the strength): name, level, layer, access, format; layered
+    reads["glGetIntegeri_v"] = 2 * 5;
+    reads["glGetBooleani_v"] = 2 * 1;
   }
   return reads;
 }

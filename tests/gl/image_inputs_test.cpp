@@ -1,5 +1,6 @@
-// The passes' inputs draw (pass_inputs.frag) reads the colour through image unit 0 on desktop GL
-// 4.3+ when the colour texture is complete (PassInputsVariant::color_image): image loads from an
+// The passes' inputs draw (pass_inputs.frag), and on the masked path the tile marks
+// (tile_mark.frag), read the colour through image unit 0 on desktop GL 4.3+ when the colour texture
+// is complete (PassInputsVariant::color_image, TileMarkProgram::color_image): image loads from an
 // incomplete texture read 0, where the sampler's fetch, under the module's own sampler object,
 // reads the texel. Whether it is complete: the host's promise in place (SSS_FRAME_TARGET_COMPLETE),
 // else the GL's answer for an undescribed frame (its min filter and base level), else not.
@@ -33,10 +34,10 @@ class ImageInputs : public GlTest {
     int queries = 0;         // glGetTexParameteriv
   };
 
-  // One frame of the relief scene on the plain fragment path, with a fresh context: the colour in
-  // `format`, complete (GL_NEAREST) or on the default filter with level 0 alone; in place or into
-  // a separate output; described (with `flags`) or not.
-  Result run(GLenum format, bool complete, bool separate, bool describe, uint32_t flags) {
+  // One frame of the relief scene on the fragment path `path` (plain or masked), with a fresh
+  // context: the colour in `format`, complete (GL_NEAREST) or on the default filter with level 0
+  // alone; in place or into a separate output; described (with `flags`) or not.
+  Result run(GLenum format, bool complete, bool separate, bool describe, uint32_t flags, uint32_t path) {
     const SyntheticScene scene = make_relief_scene(48, 32, 7, perspective_matrix(40.0f, 1.5f, 0.1f, 10.0f));
     const int w = scene.width, h = scene.height;
     const GLuint color = make_texture(format, w, h, GL_RGBA, GL_FLOAT, scene.color.data());
@@ -51,7 +52,7 @@ class ImageInputs : public GlTest {
     Result result;
     if (ctx == nullptr) return result;
     sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
-    s.path = SSS_PATH_FRAGMENT;
+    s.path = path;
     EXPECT_EQ(sss_set_settings(ctx, &s), SSS_OK);
     EXPECT_EQ(sss_set_camera(ctx, scene.projection.data()), SSS_OK);
     sss_frame f = frame_of(color, depth, output);
@@ -71,32 +72,34 @@ class ImageInputs : public GlTest {
 };
 
 TEST_F(ImageInputs, OnlyAColourKnownToBeCompleteIsReadThroughTheImageUnit) {
-  const int image = image_units() ? 1 : 0;           // the colour's bindings where it is read so
   const int completeness = image_units() ? 2 : 0;  // min filter and base level, asked once
+  for (const uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED})
   for (const GLenum format : {static_cast<GLenum>(GL_RGBA16F), static_cast<GLenum>(GL_RGBA32F)}) {
     for (const bool separate : {false, true}) {
-      SCOPED_TRACE(std::string(format == GL_RGBA16F ? "RGBA16F" : "RGBA32F") +
-                   (separate ? ", into a separate output" : ", in place"));
+      SCOPED_TRACE(std::string(path == SSS_PATH_FRAGMENT ? "plain, " : "masked, ") +
+                   (format == GL_RGBA16F ? "RGBA16F" : "RGBA32F") + (separate ? ", into a separate output" : ", in place"));
+      // The colour's bindings where it is read so: the inputs draw's, and the masked path's tile marks'.
+      const int image = image_units() ? (path == SSS_PATH_FRAGMENT ? 1 : 2) : 0;
       if (is_gles()) {  // frames are described on ES; no image units there
-        const Result described = run(format, true, separate, true, SSS_FRAME_TARGET_COMPLETE);
+        const Result described = run(format, true, separate, true, SSS_FRAME_TARGET_COMPLETE, path);
         EXPECT_EQ(described.image_bindings, 0);
         EXPECT_EQ(described.queries, 0);
         continue;
       }
       // The GL's answer for an undescribed frame.
-      const Result asked = run(format, true, separate, false, 0);
+      const Result asked = run(format, true, separate, false, 0, path);
       EXPECT_EQ(asked.image_bindings, image);
       EXPECT_EQ(asked.queries, completeness);
-      const Result incomplete = run(format, false, separate, false, 0);
+      const Result incomplete = run(format, false, separate, false, 0, path);
       EXPECT_EQ(incomplete.image_bindings, 0);
       EXPECT_EQ(incomplete.queries, completeness + (image_units() ? 2 : 0))
           << "a mipmap filter: also its max level and whether it is immutable";
       // The host's promise covers the colour in place only (it names the written texture).
-      const Result promised = run(format, true, separate, true, SSS_FRAME_TARGET_COMPLETE);
+      const Result promised = run(format, true, separate, true, SSS_FRAME_TARGET_COMPLETE, path);
       EXPECT_EQ(promised.image_bindings, separate ? 0 : image);
       EXPECT_EQ(promised.queries, 0);
       // A described frame without the promise: the default filter is assumed, nothing asked.
-      const Result assumed = run(format, true, separate, true, 0);
+      const Result assumed = run(format, true, separate, true, 0, path);
       EXPECT_EQ(assumed.image_bindings, 0);
       EXPECT_EQ(assumed.queries, 0);
       // The same bits through either read.

@@ -101,8 +101,8 @@ class StateHarness : public GlTest {
       glBindSampler(u, pick<GLuint>(rng, {0, samplers_[0], samplers_[1]}));
     }
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit(rng)));
-    if (has_image_units()) {
-      glBindImageTexture(0, pick<GLuint>(rng, {0, host_textures_[0], host_textures_[1]}), 0, GL_FALSE, 0,
+    for (GLuint image = 0; image < 2 && has_image_units(); ++image) {  // the module binds units 0 and 1
+      glBindImageTexture(image, pick<GLuint>(rng, {0, host_textures_[0], host_textures_[1]}), 0, GL_FALSE, 0,
                          pick<GLenum>(rng, {GL_READ_ONLY, GL_WRITE_ONLY, GL_READ_WRITE}),
                          pick<GLenum>(rng, {GL_RGBA16F, GL_RG32F, GL_RGBA16UI}));
     }
@@ -166,7 +166,8 @@ class StateHarness : public GlTest {
     return f;
   }
 
-  // Image load/store (desktop GL 4.3+): the compute path binds image unit 0.
+  // Image load/store (desktop GL 4.3+): the compute path binds image unit 0, the fragment passes
+  // units 0 and 1.
   bool has_image_units() { return host_gl::has_compute_shaders(); }
 
   // The entry points that call GL, each as the harness runs it.

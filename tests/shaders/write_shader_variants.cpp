@@ -81,6 +81,11 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
     out->write(d + (columns ? "tile_mark_columns.frag" : "tile_mark.frag"),
                gl::stage_recipe(dialect, "tile_mark.frag", gl::tile_mark_defines(columns)));
   }
+  // The tiles' marks reading the colour through the image unit (GLSL 4.20, as the inputs below).
+  for (int image = 0; dialect == gl::GlslVariant::glsl420 && image < gl::kPassInputsColorImageFormats; ++image) {
+    out->write(d + "tile_mark_" + gl::kComputeImageFormats[image].qualifier + ".frag",
+               gl::stage_recipe(dialect, "tile_mark.frag", gl::tile_mark_defines(false, image)));
+  }
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
   // The inputs: every switch set with the colour read through the sampler; GLSL 4.20 also through

@@ -59,17 +59,18 @@ Snapshot take_snapshot(bool es) {
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (!es && major * 10 + minor >= 43) {  // image unit 0: the compute path's target
+  // Image units 0 (the compute path's target, the fragment taps) and 1 (the fragment passes' strength).
+  for (GLuint index = 0; !es && major * 10 + minor >= 43 && index < 2; ++index) {
     std::vector<GLint> unit(6, -1);
-    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &unit[0]);
-    glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &unit[1]);
+    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, index, &unit[0]);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, index, &unit[1]);
     GLboolean layered = 2;
-    glGetBooleani_v(GL_IMAGE_BINDING_LAYERED, 0, &layered);
+    glGetBooleani_v(GL_IMAGE_BINDING_LAYERED, index, &layered);
     unit[2] = layered;
-    glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, 0, &unit[3]);
-    glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &unit[4]);
-    glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 0, &unit[5]);
-    s.add("GL_IMAGE_BINDING_* unit 0 (name, level, layered, layer, access, format)", unit);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, index, &unit[3]);
+    glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, index, &unit[4]);
+    glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, index, &unit[5]);
+    s.add("GL_IMAGE_BINDING_* unit " + std::to_string(index) + " (name, level, layered, layer, access, format)", unit);
   }
   s.integer("GL_VIEWPORT", GL_VIEWPORT, 4);
   s.integer("GL_SCISSOR_BOX", GL_SCISSOR_BOX, 4);

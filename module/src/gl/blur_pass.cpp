@@ -113,6 +113,7 @@ void bind_packed_inputs(PassContext& ctx, const BlurProgram& program, GLuint sou
     // from serving an older frame's texels.
     ctx.gl.MemoryBarrier(SHADER_IMAGE_ACCESS_BARRIER_BIT);
     ctx.gl.BindImageTexture(0, source, 0, 0, 0, READ_ONLY, RGBA32UI);
+    ctx.gl.BindImageTexture(1, strength, 0, 0, 0, READ_ONLY, R32UI);
   }
 }
 

@@ -35,8 +35,8 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& program, const FilterRun& 
 // The compute pass's input and the host's depth on their units, with the module's samplers.
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth);
 // The fragment pass's inputs (RGBA32UI colour and distance, R32UI strength: pass_inputs.frag, or
-// the half-size ones) for `program`: on their texture units, and the colour also on image unit 0
-// where the program reads its taps there (BlurProgram::image_taps).
+// the half-size ones) for `program`: on their texture units, and also on image units 0 (colour) and
+// 1 (strength) where the program reads them there (BlurProgram::image_taps).
 void bind_packed_inputs(PassContext& ctx, const BlurProgram& program, GLuint source, GLuint strength);
 // Per-pixel profiles: the tables of the pass along `axis` on uniform buffer binding point 0
 // (ProfileTables::upload ran) and, for R16UI indices, the host's index texture on its unit.

@@ -36,12 +36,14 @@ int color_image_format(const FilterRun& run) {
 }
 }  // namespace
 
+int readable_color_image(const FilterRun& run) { return run.color_complete ? color_image_format(run) : -1; }
+
 PassInputsVariant pass_inputs_variant(const FilterRun& run) {
   PassInputsVariant v;
   v.linear_depth = run.constants.linear_depth;
   v.profile_ids = profile_ids_variant(run);
   v.mark_depth = run.stencil == nullptr;
-  if (run.color_complete) v.color_image = color_image_format(run);
+  v.color_image = readable_color_image(run);
   return v;
 }
 

@@ -359,13 +359,27 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInp
   return SSS_OK;
 }
 
-sss_result ProgramCache::tile_mark(bool columns, TileMarkProgram** out, std::string* message) {
-  TileMarkProgram& p = tile_mark_[columns ? 1 : 0];
+sss_result ProgramCache::tile_mark(bool columns, int color_image, TileMarkProgram** out, std::string* message) {
+  // Image loads where the context has them (as ProgramCache::pass_inputs).
+  int image = columns ? -1 : color_image;
+  if (!(variant_ == GlslVariant::glsl420 && gl_->has_compute) || image_inputs_refused_) image = -1;
+  TileMarkProgram& p = tile_mark_[columns ? 0 : static_cast<std::size_t>(image + 2)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("tile_mark.frag", tile_mark_defines(columns), columns ? "tile columns shader" : "tile marks shader", message);
+  const std::string defines = tile_mark_defines(columns, image);
+  p.program = link("tile_mark.frag", defines, columns ? "tile columns shader" : "tile marks shader (" + defines + ")", message);
+  if (p.program == 0 && image >= 0) {
+    // Insurance, as for the passes' inputs: the sampler's read gives the same marks.
+    stand_in("the tile marks program that reads the colour through an image unit",
+             "the one that reads it through a sampler", message);
+    image_inputs_refused_ = true;
+    return tile_mark(columns, -1, out, message);
+  }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, columns ? "sss tile columns" : "sss tile marks", columns ? "tile columns" : "tile marks");
+  char label[64];
+  std::snprintf(label, sizeof label, "sss tile marks image=%s", image >= 0 ? kComputeImageFormats[image].qualifier : "none");
+  finish(p.program, columns ? "sss tile columns" : label, columns ? "tile columns" : "tile marks");
+  p.color_image = image;
   const Functions& f = *gl_;
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);

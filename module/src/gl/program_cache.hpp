@@ -82,6 +82,9 @@ struct PassInputsProgram {
 struct TileMarkProgram {
   GLuint program = 0;
   GLint rect = -1;
+  // The tiles' marks read the colour through image unit 0 in kComputeImageFormats[color_image]
+  // (SSS_COLOR_IMAGE); -1: through the sampler on unit 0 (and the columns' marks read no colour).
+  int color_image = -1;
 };
 
 // The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
@@ -134,7 +137,10 @@ class ProgramCache {
   sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
   sss_result half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message);
   // `columns`: the marks of the columns of tiles (SSS_TILE_COLUMNS), else of the tiles.
-  sss_result tile_mark(bool columns, TileMarkProgram** out, std::string* message);
+  // `color_image`: the colour's image format for the tiles' marks (ignored for the columns'), -1 for
+  // the sampler; a context without image units, or a driver that refused such a read
+  // (image_inputs_refused_), gets the sampler's.
+  sss_result tile_mark(bool columns, int color_image, TileMarkProgram** out, std::string* message);
 
  private:
   // The compute variants (is_compute_blur_variant): blur_variant_index's leading factor (packed
@@ -166,8 +172,8 @@ class ProgramCache {
   // The driver refused a blur program that reads its taps through the image unit: every blur
   // program from then on reads them through the sampler (BlurVariant::image_taps).
   bool image_taps_refused_ = false;
-  // The same for the passes' inputs reading the colour through the image unit
-  // (PassInputsVariant::color_image).
+  // The same for the passes' inputs and the tile marks reading the colour through the image unit
+  // (PassInputsVariant::color_image, TileMarkProgram::color_image).
   bool image_inputs_refused_ = false;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
@@ -183,7 +189,8 @@ class ProgramCache {
   std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
   std::array<HalfInputsProgram, kHalfVariantCount> half_inputs_{};
   std::array<HalfUpsampleProgram, kHalfVariantCount> half_upsample_{};
-  std::array<TileMarkProgram, 2> tile_mark_{};  // index: columns
+  // [0]: the columns' marks; [1 + color_image + 1]: the tiles' (sampler, then each image format).
+  std::array<TileMarkProgram, 2 + kPassInputsColorImageFormats> tile_mark_{};
 };
 
 }  // namespace sss::gl

@@ -24,6 +24,10 @@ sss_result run_separable(PassContext& ctx, const FilterRun& run, bool tiles, std
 sss_result prepare_fragment(PassContext& ctx, const FilterRun& run, std::string* message);
 sss_result prepare_cross_bilateral(PassContext& ctx, const FilterRun& run, std::string* message);
 // What the fragment passes and the half-resolution ones share (fragment_runner.cpp):
+// The colour's image format (kComputeImageFormats) for a draw that may read it through image unit
+// 0, where it is known complete (FilterRun::color_complete) and single-sample RGBA16F or RGBA32F;
+// else -1 (the sampler). Whether the context has image units is the program cache's to check.
+int readable_color_image(const FilterRun& run);
 // pass_inputs.frag's variant for `run` (it marks the culling depth unless a stencil culls), its draw
 // of variant `v` over the drawn rectangle (leaving the depth test on, func ALWAYS, write mask off),
 // and one blur pass of `p` reading `source` (pass_inputs.frag's layout) with the strength on its unit.

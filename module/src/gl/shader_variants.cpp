@@ -129,7 +129,14 @@ ShaderRecipe compute_recipe(std::string defines) {
   return ShaderRecipe{"version_430.glsl", std::move(defines), "separable_blur.comp"};
 }
 
-std::string tile_mark_defines(bool columns) { return std::string("#define SSS_TILE_COLUMNS ") + (columns ? "1\n" : "0\n"); }
+std::string tile_mark_defines(bool columns, int color_image) {
+  std::string text = std::string("#define SSS_TILE_COLUMNS ") + (columns ? "1\n" : "0\n") +
+                     "#define SSS_COLOR_IMAGE " + (color_image >= 0 ? "1\n" : "0\n");
+  if (color_image >= 0) {
+    text += std::string("#define SSS_COLOR_IMAGE_FORMAT ") + kComputeImageFormats[color_image].qualifier + "\n";
+  }
+  return text;
+}
 
 ShaderRecipe vertex_recipe(GlslVariant v, TileSpans spans) {
   if (spans == TileSpans::none) return stage_recipe(v, "fullscreen.vert");

@@ -127,8 +127,10 @@ std::string half_upsample_defines(const HalfVariant& v);
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 
-// The masked path's tile marks (tile_mark.frag): SSS_TILE_COLUMNS 1 the columns' marks, 0 the tiles'.
-std::string tile_mark_defines(bool columns);
+// The masked path's tile marks (tile_mark.frag): SSS_TILE_COLUMNS 1 the columns' marks, 0 the tiles',
+// which read the colour's alpha through image unit 0 in kComputeImageFormats[color_image]
+// (SSS_COLOR_IMAGE, as PassInputsVariant::color_image), or through the sampler for -1.
+std::string tile_mark_defines(bool columns, int color_image = -1);
 
 // The LUT generator (lut_generate.frag): SSS_LUT_KIND 0 diffuse, 1 shadow, and its array sizes.
 std::string lut_defines(int kind);

@@ -44,12 +44,15 @@ StateGuard::StateGuard(const Functions& gl, bool enabled, const Scope& scope)
   }
   gl_.GetBooleanv(COLOR_WRITEMASK, color_mask_.data());
   if (scope_.image_unit) {
-    gl_.GetIntegeri_v(IMAGE_BINDING_NAME, 0, &image_unit_.name);
-    gl_.GetIntegeri_v(IMAGE_BINDING_LEVEL, 0, &image_unit_.level);
-    gl_.GetBooleani_v(IMAGE_BINDING_LAYERED, 0, &image_unit_.layered);
-    gl_.GetIntegeri_v(IMAGE_BINDING_LAYER, 0, &image_unit_.layer);
-    gl_.GetIntegeri_v(IMAGE_BINDING_ACCESS, 0, &image_unit_.access);
-    gl_.GetIntegeri_v(IMAGE_BINDING_FORMAT, 0, &image_unit_.format);
+    for (GLuint unit = 0; unit < kImageUnits; ++unit) {
+      ImageUnit& u = image_units_[unit];
+      gl_.GetIntegeri_v(IMAGE_BINDING_NAME, unit, &u.name);
+      gl_.GetIntegeri_v(IMAGE_BINDING_LEVEL, unit, &u.level);
+      gl_.GetBooleani_v(IMAGE_BINDING_LAYERED, unit, &u.layered);
+      gl_.GetIntegeri_v(IMAGE_BINDING_LAYER, unit, &u.layer);
+      gl_.GetIntegeri_v(IMAGE_BINDING_ACCESS, unit, &u.access);
+      gl_.GetIntegeri_v(IMAGE_BINDING_FORMAT, unit, &u.format);
+    }
   }
   if (scope_.profiles) {
     gl_.GetIntegerv(UNIFORM_BUFFER_BINDING, &uniform_buffer_);
@@ -170,14 +173,7 @@ StateGuard::~StateGuard() {
   if (restore(restore_group::draw_framebuffer)) {
     gl_.BindFramebuffer(DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
   }
-  if (scope_.image_unit && restore(restore_group::image_unit)) {
-    // A texture the host deleted meanwhile left the unit by itself (glDeleteTextures unbinds it),
-    // so a name that is no texture any more restores as 0.
-    const GLuint name = static_cast<GLuint>(image_unit_.name);
-    gl_.BindImageTexture(0, name != 0 && gl_.IsTexture(name) ? name : 0, image_unit_.level, image_unit_.layered,
-                         image_unit_.layer, static_cast<GLenum>(image_unit_.access),
-                         static_cast<GLenum>(image_unit_.format));
-  }
+  if (scope_.image_unit && restore(restore_group::image_unit)) restore_image_units();
   if (scope_.profiles && restore(restore_group::uniform_buffer)) restore_uniform_buffer();
   if (scope_.pack && restore(restore_group::pack_state)) {
     gl_.BindBuffer(PIXEL_PACK_BUFFER, static_cast<GLuint>(pack_buffer_));
@@ -189,6 +185,17 @@ StateGuard::~StateGuard() {
   // what the host's own next glUseProgram would have found then.
   const GLuint program = static_cast<GLuint>(program_);
   if (restore(restore_group::program)) gl_.UseProgram(program != 0 && gl_.IsProgram(program) ? program : 0);
+}
+
+void StateGuard::restore_image_units() const {
+  for (GLuint unit = 0; unit < kImageUnits; ++unit) {
+    // A texture the host deleted meanwhile left the unit by itself (glDeleteTextures unbinds it),
+    // so a name that is no texture any more restores as 0.
+    const ImageUnit& u = image_units_[unit];
+    const GLuint name = static_cast<GLuint>(u.name);
+    gl_.BindImageTexture(unit, name != 0 && gl_.IsTexture(name) ? name : 0, u.level, u.layered, u.layer,
+                         static_cast<GLenum>(u.access), static_cast<GLenum>(u.format));
+  }
 }
 
 void StateGuard::restore_uniform_buffer() const {

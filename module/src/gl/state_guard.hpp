@@ -36,7 +36,7 @@ enum : uint32_t {
   draw_framebuffer = 1u << 14,
   vertex_array = 1u << 15,
   program = 1u << 16,
-  image_unit = 1u << 17,         // image unit 0 (the compute path's target, the fragment taps), GL 4.3+
+  image_unit = 1u << 17,         // image units 0 and 1 (the compute path's target, the fragment taps and strength), GL 4.3+
   uniform_buffer = 1u << 18,     // uniform buffer binding 0 and the generic one (per-pixel profiles)
   pack_state = 1u << 19,         // pack buffer, alignment, row length, skips (debug checks' readback)
   depth = 1u << 20,              // depth func, write mask and range (the fragment passes' culling)
@@ -54,7 +54,8 @@ constexpr int kUnitCount = 6;
 
 // The parts of the list a call may change; everything else is saved always. The default is all.
 struct GuardScope {
-  bool image_unit = true;    // image unit 0: the compute path's target, the fragment passes' taps (GL 4.3+)
+  bool image_unit = true;    // image units 0 and 1: the compute path's target, the fragment passes' taps
+                             // and strength (GL 4.3+)
   bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
                              // masked path's or the MSAA path's)
   bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE,
@@ -92,6 +93,7 @@ class StateGuard {
                          GLenum depth_pass, GLenum write_mask, StencilFace* face) const;
   void restore_stencil_face(GLenum face_enum, const StencilFace& face) const;
   void restore_uniform_buffer() const;
+  void restore_image_units() const;
   static constexpr std::array<GLenum, 4> kPackParameters = {PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS,
                                                               PACK_SKIP_PIXELS};
   // The units saved: 0-2 always, 3 and 4 as the scope says (4 implies 3: the list grew so), 5 for the tiles.
@@ -125,12 +127,14 @@ class StateGuard {
   std::array<GLboolean, 4> color_mask_{};
   std::array<GLint, 2> polygon_mode_{};
   StencilFace front_{}, back_{};
-  // Image unit 0 (GL 4.3+: has_compute): the compute path binds its target there, the fragment
-  // passes their taps' texture.
+  // Image units 0 and 1 (GL 4.3+: has_compute): the compute path binds its target to 0, the fragment
+  // passes their taps' texture to 0 and their strength's to 1.
   struct ImageUnit {
     GLint name = 0, level = 0, layer = 0, access = 0, format = 0;
     GLboolean layered = 0;
-  } image_unit_;
+  };
+  static constexpr GLuint kImageUnits = 2;
+  std::array<ImageUnit, kImageUnits> image_units_{};
   // Uniform buffer binding point 0 (name, range) and the generic GL_UNIFORM_BUFFER binding.
   GLint uniform_buffer_ = 0, uniform_buffer0_ = 0;
   std::int64_t uniform_buffer0_start_ = 0, uniform_buffer0_size_ = 0;

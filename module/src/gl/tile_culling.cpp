@@ -18,8 +18,8 @@ namespace sss::gl {
 
 sss_result prepare_tile_culling(PassContext& ctx, const FilterRun& run, std::string* message) {
   TileMarkProgram* unused = nullptr;
-  sss_result r = ctx.programs.tile_mark(false, &unused, message);
-  if (r == SSS_OK) r = ctx.programs.tile_mark(true, &unused, message);
+  sss_result r = ctx.programs.tile_mark(false, readable_color_image(run), &unused, message);
+  if (r == SSS_OK) r = ctx.programs.tile_mark(true, -1, &unused, message);
   if (r == SSS_OK) r = ctx.targets.ensure_tile_targets(run.color.width, run.color.height, message);
   return r;
 }
@@ -31,8 +31,9 @@ sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* messa
   const int across = math::tiles_across(rect[2]), down = math::tiles_across(rect[3]);
   TileMarkProgram* tiles = nullptr;
   TileMarkProgram* columns = nullptr;
-  sss_result r = ctx.programs.tile_mark(false, &tiles, message);  // built by prepare_tile_culling
-  if (r == SSS_OK) r = ctx.programs.tile_mark(true, &columns, message);
+  // Built by prepare_tile_culling.
+  sss_result r = ctx.programs.tile_mark(false, readable_color_image(run), &tiles, message);
+  if (r == SSS_OK) r = ctx.programs.tile_mark(true, -1, &columns, message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss tile marks (masked path)");
   f.Disable(DEPTH_TEST);
@@ -41,8 +42,15 @@ sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* messa
   f.Viewport(0, 0, across, down);
   f.UseProgram(tiles->program);
   f.Uniform4i(tiles->rect, rect[0], rect[1], rect[2], rect[3]);
-  bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
+  if (tiles->color_image >= 0) {
+    // As the passes' inputs draw (draw_pass_inputs): the colour through image unit 0, then off it.
+    f.MemoryBarrier(SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    f.BindImageTexture(0, run.color.name, 0, 0, 0, READ_ONLY, kComputeImageFormats[tiles->color_image].internal_format);
+  } else {
+    bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
+  }
   f.DrawArrays(TRIANGLES, 0, 3);
+  if (tiles->color_image >= 0) f.BindImageTexture(0, 0, 0, 0, 0, READ_ONLY, RGBA16F);
   ++ctx.draws;
   // The columns read the tiles' marks, which stay on their unit for the span draws' vertex stage.
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.tile_columns_framebuffer);

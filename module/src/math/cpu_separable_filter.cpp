@@ -46,7 +46,7 @@ Neighbour neighbour_at(const PassConstants& shared, const Plane& distance, const
   if (!cpu_passes::inside(shared, x + ox, y + oy)) return n;
   n.distance = distance.at(x + ox, y + oy, 0);
   const float w = clip_w(shared, n.distance);
-  n.usable = w > 0.0f && std::isfinite(w);  // false for a NaN distance too
+  n.usable = w > 0.0f && w < 1e30f;  // false for a NaN distance too (pass_surface.glsl)
   if (indices.ids != nullptr && indices.at(x + ox, y + oy) != indices.at(x, y)) n.usable = false;
   return n;
 }

@@ -94,10 +94,6 @@ struct Neighbour {
 // The view ray's lateral slope g (x, y) at window position (wx, wy).
 std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy);
 
-// The offset from the centre (distance d0, ray slope g) to the point at window offset (ox, oy) with
-// view distance d: ΔP above.
-Float3 view_offset(const PassConstants& k, const std::array<float, 2>& g, float ox, float oy, float d, float d0);
-
 // The surface tangent along `axis` (0 x, 1 y) at the centre from its two neighbours on that axis (at
 // window offsets -1 and +1), by the rule above.
 Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, int axis, float d0, const Neighbour& minus,
