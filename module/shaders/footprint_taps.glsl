@@ -10,9 +10,10 @@
 // the shader includes depth.glsl and jitter.glsl, and defines how its taps are read (GLSL has no
 // function pointers):
 //   struct TapSite      what the shader needs to find this pixel's taps
-//   vec4 sss_fetch_tap(TapSite site, float offset)
+//   vec4 sss_fetch_tap(TapSite site, float offset, out vec2 moved)
 //                       the pixel `offset` steps from the centre along the pass's line (the
-//                       vertical pass's sheared: pass_surface.glsl), kept in
+//                       vertical pass's sheared: pass_surface.glsl; `moved`: its centre's window
+//                       offset from the centre's, where the read really is), kept in
 //                       u_clamp: rgb its colour, a its view distance (read only with
 //                       SSS_FOLLOW_SURFACE); a colour that is not finite or past colour_range.glsl's
 //                       bound as kSssUnusableColour at distance NaN (the fragment passes' inputs
@@ -80,9 +81,10 @@ float tap_position(int i, float previous, bool dense, float reach_pixels) {
 // must not spread, so it counts as the
 // centre's colour (its weight goes to the centre), like a tap across a depth step; with
 // follow-surface it is blended back to the centre's as it leaves the surface: by its distance off
-// the centre's tangent line (pass_surface.glsl), |d · line.x + line.y| times the follow-surface
-// factor for its distance d (sss_off_line), so that a slope is not taken for a step.
-vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line) {
+// the centre's surface (pass_surface.glsl), |d · line.x + line.y| times the follow-surface factor
+// for its distance d (sss_off_surface), so that a slope is not taken for a step; the ramp less the
+// tap's `slack` (a bend of the skin is not a step either).
+vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line, float slack) {
   vec3 tap = fetched.rgb;
 #if !SSS_FOLLOW_SURFACE
   // With follow-surface such a tap's distance, NaN, makes the blend below the centre exactly: no
@@ -94,7 +96,7 @@ vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line) {
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
-  float s = d;
+  float s = d - slack < 0.0 ? 0.0 : d - slack;  // not max(): a NaN (an unusable tap) must stay NaN
 #endif
   // Past the reach (also when the tap's distance is not finite): the centre itself, not mix(tap,
   // centre, 1), which a driver may compute as tap + (centre - tap), inexact for a large tap.
@@ -104,12 +106,13 @@ vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line) {
 }
 
 // The pass's weighted sum at one pixel (centre colour `centre`, taps step_pixels apart per profile
-// mm; `follow`: the off-line coefficients, sss_follow; `pixel` and `axis` (0 horizontal, 1 vertical)
+// mm; `follow` and `slack`: the off-surface coefficients and the slack per step, sss_follow and
+// sss_follow_slack; `pixel` and `axis` (0 horizontal, 1 vertical)
 // seed the jitter). Taps on whole pixels (of the pass's line: pass_surface.glsl): every
 // pixel out to the reach where the kernel spans at most u_half_taps on a side, else u_half_taps
 // spread denser at the centre (never two on one pixel). A tap's weight is the kernel over the
 // pixels between the midpoints to its neighbours; the last one takes the tail.
-vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, vec3 follow, ivec2 pixel, int axis) {
+vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, vec4 follow, float slack, ivec2 pixel, int axis) {
   float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
   bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
   int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
@@ -150,7 +153,9 @@ vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, vec3 follow, iv
     vec3 pair = vec3(0.0);
     for (int side = 0; side < 2; ++side) {
       float offset = side == 0 ? read : -read;
-      vec3 tap = settled_tap(sss_fetch_tap(site, offset), centre, sss_off_line(follow, offset));
+      vec2 moved;
+      vec4 fetched = sss_fetch_tap(site, offset, moved);
+      vec3 tap = settled_tap(fetched, centre, sss_off_surface(follow, moved), read * slack);
 #if SSS_PROFILE_IDS
       if (sss_tap_foreign) tap = centre;  // another material or object: its weight stays on the centre
 #endif

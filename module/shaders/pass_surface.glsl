@@ -12,13 +12,16 @@ uniform vec4 u_ray_slope;   // the view ray's lateral slope at window position p
 struct SssWalk {
   float ratio;      // a facing pixel's width over the surface length of one step
   float shear;      // columns per row (the vertical pass); 0 along x
-  float off_depth;  // α: the off-line distance per unit of (d - d0)
-  float off_step;   // λ: the off-line distance per step along the line per unit of clip w
+  float off_depth;  // α: the off-surface distance per unit of (d - d0)
+  vec2 off_lateral; // β: the off-surface distance per window pixel of the tap's offset per unit of clip w
+  float slack;      // kSssFollowSurfaceSlack times the surface length of one step
 };
 
 // The largest shear, columns per row, and the degenerate lengths (pass_surface.cpp says why).
 const float kSssMaxShear = 8.0;
 const float kSssTiny = 1e-30;
+// math::kFollowSurfaceSlack: the share of a tap's distance along the line that the ramp leaves unfaded.
+const float kSssFollowSurfaceSlack = 0.25;
 
 vec2 sss_ray_slope(vec2 window) { return u_ray_slope.xy * window + u_ray_slope.zw; }
 
@@ -54,43 +57,60 @@ vec3 sss_surface_tangent(vec2 g, int axis, float d0, float dm, bool um, float dp
   return t;
 }
 
-// The ratio, α and λ for a line whose step is `t` on the surface and `line` per unit of w on the
-// screen, at a centre with ray slope g and clip w0; `span` a facing pixel's width along the line.
-SssWalk sss_walk_along(vec2 g, float w0, float span, vec3 t, vec3 line, float shear) {
-  float tt = dot(t, t);
-  float inv_length = 1.0 / sqrt(tt);
-  float ratio = abs(span) * w0 * inv_length;
-  vec3 ray = vec3(g, -1.0);
-  float along = dot(ray, t) / tt;
-  float alpha2 = dot(ray, ray) - along * dot(ray, t);
-  float alpha = sqrt(max(alpha2, 0.0));
-  float lambda = (dot(ray, line) - along * dot(t, line)) / alpha;
-  bool usable = alpha > 1e-6 && abs(lambda) < 1.0 / kSssTiny;
-  return SssWalk(ratio > 0.0 && ratio < 1.0 / kSssTiny ? ratio : 1.0, shear, usable ? alpha : 1.0,
-                 usable ? lambda : 0.0);
+// The step's ratio and slack for a line whose step is `t` on the surface, at a centre with clip w0;
+// `span` a facing pixel's width along the line (α and β: the raw depth difference until set).
+SssWalk sss_step_along(float w0, float span, vec3 t, float shear) {
+  float ratio = abs(span) * w0 / sqrt(dot(t, t));
+  ratio = ratio > 0.0 && ratio < 1.0 / kSssTiny ? ratio : 1.0;
+  return SssWalk(ratio, shear, 1.0, vec2(0.0), kSssFollowSurfaceSlack * abs(span) * w0 / ratio);
+}
+
+// α and β for the unit normal n, turned to face along the ray's derivative A; the raw depth
+// difference where n is degenerate or the surface is seen edge-on.
+void sss_set_off_surface(vec3 ray, vec3 n, inout SssWalk walk) {
+  float alpha = dot(n, ray);
+  bool usable = abs(alpha) > 1e-6 && abs(alpha) < 1.0 / kSssTiny;
+  float sign = alpha < 0.0 ? -1.0 : 1.0;
+  walk.off_depth = usable ? sign * alpha : 1.0;
+  walk.off_lateral = usable ? sign * n.xy * u_pixel_span : vec2(0.0);
 }
 
 SssWalk sss_horizontal_walk(vec2 g, float d0, vec3 tx) {
-  return sss_walk_along(g, clip_w(d0), u_pixel_span.x, tx, vec3(u_pixel_span.x, 0.0, 0.0), 0.0);
+  SssWalk walk = sss_step_along(clip_w(d0), u_pixel_span.x, tx, 0.0);
+  // The line's normal within the slice: A's part perpendicular to T_x, normalised.
+  vec3 ray = vec3(g, -1.0);
+  float along = dot(ray, tx) / dot(tx, tx);
+  vec3 perp = ray - along * tx;
+  perp = perp * (1.0 / sqrt(dot(perp, perp)));
+  sss_set_off_surface(ray, perp, walk);
+  walk.off_lateral.y = 0.0;  // the row's taps move along x only
+  return walk;
 }
 
 SssWalk sss_vertical_walk(vec2 g, float d0, vec3 tx, vec3 ty) {
   float shear = -dot(tx, ty) / dot(tx, tx);
   shear = abs(shear) < 1.0 / kSssTiny ? clamp(shear, -kSssMaxShear, kSssMaxShear) : 0.0;  // also NaN
-  vec3 tt = ty + shear * tx;
-  return sss_walk_along(g, clip_w(d0), u_pixel_span.y, tt, vec3(u_pixel_span.x * shear, u_pixel_span.y, 0.0), shear);
+  SssWalk walk = sss_step_along(clip_w(d0), u_pixel_span.y, ty + shear * tx, shear);
+  // The tangent plane's normal.
+  vec3 n = cross(tx, ty);
+  n = n * (1.0 / sqrt(dot(n, n)));
+  sss_set_off_surface(vec3(g, -1.0), n, walk);
+  return walk;
 }
 
-// The follow-surface factor times the off-line distance of a tap `offset` steps along the line is
-// |d · x + y| for its distance d (pass_surface.cpp's off_line_distance): (x, y) from `follow` =
-// (α, λ, -α d0) times the factor, once per tap pair and side.
-vec2 sss_off_line(vec3 follow, float offset) {
-  float lambda = offset * follow.y;
-  return vec2(follow.x - lambda * u_depth_terms.y, lambda * u_depth_terms.w + follow.z);
+// The follow-surface factor times the off-surface distance of a tap whose pixel centre sits
+// `moved` window pixels from the centre's is |d · x + y| for its distance d (pass_surface.cpp's
+// off_surface_distance), (x, y) from `follow` = (α, β_x, β_y, -α d0) times the factor; the ramp
+// takes the tap's slack off it (sss_follow_slack).
+vec2 sss_off_surface(vec4 follow, vec2 moved) {
+  float lateral = moved.x * follow.y + moved.y * follow.z;
+  return vec2(follow.x - lateral * u_depth_terms.y, lateral * u_depth_terms.w + follow.w);
 }
 
 // `follow` above for a pixel at distance d0 whose follow-surface factor is `factor`.
-vec3 sss_follow(SssWalk walk, float factor, float d0) {
+vec4 sss_follow(SssWalk walk, float factor, float d0) {
   float alpha = walk.off_depth * factor;
-  return vec3(alpha, walk.off_step * factor, -alpha * d0);
+  return vec4(alpha, walk.off_lateral * factor, -alpha * d0);
 }
+// The slack per step along the line, times the factor.
+float sss_follow_slack(SssWalk walk, float factor) { return walk.slack * factor; }

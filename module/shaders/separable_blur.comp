@@ -129,16 +129,18 @@ struct TapSite {
   float shear;                 // the vertical pass's columns per row (0 in the horizontal pass)
 };
 
-vec4 sss_fetch_tap(TapSite site, float offset) {
+vec4 sss_fetch_tap(TapSite site, float offset, out vec2 moved) {
   float position = clamp(site.centre + offset, site.clamp_min, site.clamp_max);
   int along_tap = int(position);
   int i = along_tap - site.cache_start;
   ivec2 row = site.row;
 #if SSS_AXIS == 1
   int column = int(clamp(site.across + site.shear * offset, u_clamp.x, u_clamp.z));
+  moved = vec2(float(column) + 0.5 - site.across, float(along_tap) + 0.5 - site.centre);
   if (column == row.x && i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
   row.x = column;
 #else
+  moved = vec2(float(along_tap) + 0.5 - site.centre, 0.0);
   if (i >= site.first && i < site.end) return s_texel[cache_index(site.line, i)];
 #endif
   return sss_texel(kAxis * along_tap + row);
@@ -290,8 +292,8 @@ void main() {
         TapSite site = TapSite(float(along) + 0.5, u_clamp[SSS_AXIS], u_clamp[2 + SSS_AXIS], cache_start,
                                SSS_APRON - extent, SSS_APRON + SSS_SEGMENT + extent, tile.x, kAcross * across,
                                float(across) + 0.5, walk.shear);
-        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k] * walk.ratio,
-                                 sss_follow(walk, follow_surface, distance[k]), pixel, SSS_AXIS);
+        vec3 sum = footprint_sum(site, centre.rgb, step_pixels[k] * walk.ratio, sss_follow(walk, follow_surface, distance[k]),
+                                 sss_follow_slack(walk, follow_surface), pixel, SSS_AXIS);
         write_blurred(pixel, sum, centre.a);
       } else {
         write_untouched(pixel, centre);

@@ -156,13 +156,14 @@ TapSite sss_tap_site(float shear) {
 #endif
 }
 
-vec4 sss_fetch_tap(TapSite site, float offset) {
+vec4 sss_fetch_tap(TapSite site, float offset, out vec2 moved) {
   int along = int(clamp(site.along + offset, site.clamp_min, site.clamp_max));
 #if SSS_PACKED_OUTPUT
   ivec2 texel = ivec2(along, site.across);
 #else
   ivec2 texel = ivec2(int(clamp(site.across + site.shear * offset, site.across_min, site.across_max)), along);
 #endif
+  moved = vec2(texel) + 0.5 - gl_FragCoord.xy;
   uvec4 t = sss_tap_texel(texel);
 #if SSS_PROFILE_IDS
   sss_tap_foreign = sss_index(t, texel) != sss_centre_id;
@@ -261,8 +262,8 @@ void main() {
 #endif
   SssWalk walk = sss_walk(pixel, centre_distance);
   float step_pixels = pixels_per_mm * strength / w * walk.ratio;
-  vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels,
-                           sss_follow(walk, follow_surface, centre_distance), pixel, kSssAxis);
+  vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels, sss_follow(walk, follow_surface, centre_distance),
+                           sss_follow_slack(walk, follow_surface), pixel, kSssAxis);
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif

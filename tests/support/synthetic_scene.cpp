@@ -51,6 +51,48 @@ SyntheticScene sized_scene(int width, int height, const sss::math::Matrix4& proj
 }
 }  // namespace
 
+SyntheticScene make_turned_plane_scene(int width, int height, double turn_degrees, double axis_degrees,
+                                       double distance, const sss::math::Matrix4& projection, unsigned seed,
+                                       std::vector<double>* distance_f64) {
+  SyntheticScene s = sized_scene(width, height, projection);
+  if (distance_f64 != nullptr) distance_f64->assign(s.distance.size(), 0.0);
+  const double pi = 3.14159265358979323846;
+  const double turn = turn_degrees * pi / 180.0, axis = axis_degrees * pi / 180.0;
+  // The axis a, the normal n = (0, 0, 1) turned about it, and the in-plane direction across the
+  // axis e = n × a (the light changes along e).
+  const double ax = std::cos(axis), ay = std::sin(axis);
+  const double nx = ay * std::sin(turn), ny = -ax * std::sin(turn), nz = std::cos(turn);
+  const double ex = -nz * ay, ey = nz * ax, ez = nx * ay - ny * ax;
+  const auto& m = projection;
+  const bool orthographic = m[11] == 0.0f;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> albedo(0.4f, 1.0f);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      const double ndc_x = 2.0 * (x + 0.5) / width - 1.0, ndc_y = 2.0 * (y + 0.5) / height - 1.0;
+      // The ray's point at view distance d: P = d · (rx, ry, -1) + (ox, oy, 0); on the plane
+      // n · (P - (0, 0, -distance)) = 0.
+      const double rx = orthographic ? m[8] / m[0] : (ndc_x + m[8]) / m[0];
+      const double ry = orthographic ? m[9] / m[5] : (ndc_y + m[9]) / m[5];
+      const double ox = orthographic ? (ndc_x - m[12]) / m[0] : 0.0;
+      const double oy = orthographic ? (ndc_y - m[13]) / m[5] : 0.0;
+      const double d = (-nz * distance - nx * ox - ny * oy) / (nx * rx + ny * ry - nz);
+      const double px = d * rx + ox, py = d * ry + oy, pz = -d + distance;  // relative to the centre point
+      const double across_mm = 1000.0 * (px * ex + py * ey + pz * ez);
+      const float light = across_mm < 0.0 ? 1.0f : 0.05f;
+      const float a = albedo(rng);
+      for (int c = 0; c < 3; ++c) s.color[i * 4 + static_cast<std::size_t>(c)] = light * a;
+      s.color[i * 4 + 3] = 1.0f;
+      s.distance[i] = static_cast<float>(d);
+      if (distance_f64 != nullptr) (*distance_f64)[i] = d;
+      s.stencil[i] = 1;
+    }
+  }
+  compute_window_depth(&s);
+  return s;
+}
+
 SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection) {
   SyntheticScene s = sized_scene(width, height, projection);
   std::mt19937 rng(seed);

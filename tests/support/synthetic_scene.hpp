@@ -27,6 +27,18 @@ sss::math::Matrix4 orthographic_matrix(float half_width, float half_height, floa
 // the stencil excludes the right quarter.
 SyntheticScene make_relief_scene(int width, int height, unsigned seed, const sss::math::Matrix4& projection);
 
+// A plane filling the frame, its normal turned `turn_degrees` away from the view about the axis in
+// the screen plane at `axis_degrees` from screen x, through the point `distance` metres in front of
+// the camera at the image centre; seen through `projection` (orthographic or perspective). Its
+// light, in surface millimetres about that point: a shadow edge along the turn's axis (1.0 on one
+// side, 0.05 on the other, so the light changes along the turned, foreshortened direction) times a
+// per-pixel albedo in [0.4, 1) from `seed`. Alpha 1 everywhere; every pixel translucent. Scene units
+// are metres (a millimetre is 0.001). The exact distance of each pixel's ray, in double, goes to
+// `distance_f64` when given (an exact reference needs depth without float rounding).
+SyntheticScene make_turned_plane_scene(int width, int height, double turn_degrees, double axis_degrees,
+                                       double distance, const sss::math::Matrix4& projection, unsigned seed,
+                                       std::vector<double>* distance_f64 = nullptr);
+
 // Uniform colour and alpha on a plane facing the camera at `distance`.
 SyntheticScene make_flat_scene(int width, int height, std::array<float, 4> rgba, float distance,
                                const sss::math::Matrix4& projection);

@@ -109,8 +109,11 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
       std::array<float, 3> tap = {source.at(tx, ty, 0), source.at(tx, ty, 1), source.at(tx, ty, 2)};
       if (!in_colour_range(tap.data(), 3)) tap = {centre[0], centre[1], centre[2]};
       if (k.follow_surface_factor > 0.0f) {
-        const float d =
-            off_line_distance(shared, walk, follow_surface, offset, distance.at(tx, ty, 0), centre_distance);
+        // Measured where the tap reads: its pixel's centre (rounded to the sheared line, kept in the
+        // viewport).
+        const float ox = static_cast<float>(tx) + 0.5f - cx, oy = static_cast<float>(ty) + 0.5f - cy;
+        const float d = off_surface_distance(shared, walk, follow_surface, offset, ox, oy, distance.at(tx, ty, 0),
+                                             centre_distance, !gaussian_depth);
         follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
       }
       if (indices.ids != nullptr && indices.at(tx, ty) != indices.at(x, y)) tap = {centre[0], centre[1], centre[2]};

@@ -28,27 +28,30 @@ float plus_share(float limit, float dm, float dp) {
   return 0.5f + sharp * (toward_plus - 0.5f);
 }
 
-// The ratio, α and λ for a line whose step is `t` on the surface and `line` per unit of w on the
-// screen, at a centre with ray slope g (A = (g, -1)) and clip w0; `span` the facing pixel's width
-// per unit of w along the line.
-PassGeometry walk_along(const std::array<float, 2>& g, float w0, float span, const Float3& t, const Float3& line,
-                        float shear) {
+Float3 cross3(const Float3& a, const Float3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// The step's ratio and slack for a line whose step is `t` on the surface, at a centre with clip w0;
+// `span` the facing pixel's width per unit of w along the line.
+PassGeometry step_along(float w0, float span, const Float3& t, float shear) {
   PassGeometry out;
   out.shear = shear;
-  const float tt = dot3(t, t);
-  const float inv_length = 1.0f / std::sqrt(tt);
-  const float ratio = std::fabs(span) * w0 * inv_length;
+  const float ratio = std::fabs(span) * w0 / std::sqrt(dot3(t, t));
   out.ratio = ratio > 0.0f && ratio < 1.0f / kTiny ? ratio : 1.0f;
-  const Float3 ray = {g[0], g[1], -1.0f};
-  const float along = dot3(ray, t) / tt;  // A's part along t, per unit of t
-  const float alpha2 = dot3(ray, ray) - along * dot3(ray, t);
-  const float alpha = std::sqrt(std::max(alpha2, 0.0f));
-  const float lambda = (dot3(ray, line) - along * dot3(t, line)) / alpha;
-  if (alpha > 1e-6f && std::fabs(lambda) < 1.0f / kTiny) {
-    out.off_depth = alpha;
-    out.off_step = lambda;
-  }  // else the tangent along the ray (or not finite): the raw depth difference (1, 0)
+  out.slack = kFollowSurfaceSlack * std::fabs(span) * w0 / out.ratio;  // the slack per step of |T|
   return out;
+}
+
+// α and β for the unit normal n (ray: the centre ray's derivative A): the raw depth difference
+// where n is degenerate or the surface is seen edge-on.
+void set_off_surface(const PassConstants& k, const Float3& ray, const Float3& n, PassGeometry* out) {
+  const float alpha = dot3(n, ray);
+  if (std::fabs(alpha) > 1e-6f && std::fabs(alpha) < 1.0f / kTiny) {
+    const float sign = alpha < 0.0f ? -1.0f : 1.0f;  // n turned to face along A
+    out->off_depth = sign * alpha;
+    out->off_lateral = {sign * n.x * k.pixel_span[0], sign * n.y * k.pixel_span[1]};
+  }
 }
 
 }  // namespace
@@ -76,7 +79,16 @@ Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, in
 }
 
 PassGeometry horizontal_geometry(const PassConstants& k, const std::array<float, 2>& g, float d0, const Float3& tx) {
-  return walk_along(g, clip_w(k, d0), k.pixel_span[0], tx, {k.pixel_span[0], 0.0f, 0.0f}, 0.0f);
+  PassGeometry out = step_along(clip_w(k, d0), k.pixel_span[0], tx, 0.0f);
+  // The line's normal within the slice: A's part perpendicular to T_x, normalised.
+  const Float3 ray = {g[0], g[1], -1.0f};
+  const float along = dot3(ray, tx) / dot3(tx, tx);
+  Float3 perp = {ray.x - along * tx.x, ray.y - along * tx.y, ray.z - along * tx.z};
+  const float inv = 1.0f / std::sqrt(dot3(perp, perp));
+  perp = {perp.x * inv, perp.y * inv, perp.z * inv};
+  set_off_surface(k, ray, perp, &out);
+  out.off_lateral[1] = 0.0f;  // the row's taps move along x only
+  return out;
 }
 
 PassGeometry vertical_geometry(const PassConstants& k, const std::array<float, 2>& g, float d0, const Float3& tx,
@@ -84,18 +96,25 @@ PassGeometry vertical_geometry(const PassConstants& k, const std::array<float, 2
   float shear = -dot3(tx, ty) / dot3(tx, tx);
   shear = std::fabs(shear) < 1.0f / kTiny ? std::clamp(shear, -kMaxShear, kMaxShear) : 0.0f;  // also NaN
   const Float3 tt = {ty.x + shear * tx.x, ty.y + shear * tx.y, ty.z + shear * tx.z};
-  return walk_along(g, clip_w(k, d0), k.pixel_span[1], tt, {k.pixel_span[0] * shear, k.pixel_span[1], 0.0f}, shear);
+  PassGeometry out = step_along(clip_w(k, d0), k.pixel_span[1], tt, shear);
+  // The tangent plane's normal.
+  Float3 n = cross3(tx, ty);
+  const float inv = 1.0f / std::sqrt(dot3(n, n));
+  n = {n.x * inv, n.y * inv, n.z * inv};
+  set_off_surface(k, {g[0], g[1], -1.0f}, n, &out);
+  return out;
 }
 
-float off_line_distance(const PassConstants& k, const PassGeometry& geometry, float factor, float offset, float d,
-                        float d0) {
-  // h = α (d - d0) + offset λ w(d) = d · (α - offset λ m11) + (offset λ m15 - α d0), the form the
-  // shaders take per tap (two fused multiply-adds per pair of taps, one per tap).
+float off_surface_distance(const PassConstants& k, const PassGeometry& geometry, float factor, float offset, float ox,
+                           float oy, float d, float d0, bool slack) {
+  // h = α (d - d0) + w(d) Λ with Λ = ox β_x + oy β_y, as the shaders take it per tap:
+  // d · (α - Λ m11) + (Λ m15 - α d0).
   const float alpha = geometry.off_depth * factor;
-  const float lambda = offset * (geometry.off_step * factor);
-  const float slope = alpha - lambda * k.depth_terms[1];
-  const float base = lambda * k.depth_terms[3] + -alpha * d0;
-  return std::fabs(d * slope + base);
+  const float lateral = ox * (geometry.off_lateral[0] * factor) + oy * (geometry.off_lateral[1] * factor);
+  const float slope = alpha - lateral * k.depth_terms[1];
+  const float base = lateral * k.depth_terms[3] + -alpha * d0;
+  const float h = std::fabs(d * slope + base);
+  return slack ? std::max(h - std::fabs(offset) * (geometry.slack * factor), 0.0f) : h;
 }
 
 }  // namespace sss::math

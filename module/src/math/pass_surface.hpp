@@ -60,18 +60,34 @@
 //
 // The depth test
 // --------------
-// Follow-surface measures how far a tap lies off the centre's tangent line within the slice of
-// space the pass's screen line sees (the plane through that line and the centre's view ray): on a
-// plane every tap lies on it (distance 0, at any turn), across a step a tap lies off it by about the
-// step. For a tap `k` steps along the line with view distance d it is
+// Follow-surface measures how far a tap lies off the surface through the centre: on a plane every
+// tap lies on it (distance 0, at any turn), across a step a tap lies off it by about the step.
+//   - The horizontal pass knows T_x alone: it measures the distance off the tangent line within the
+//     slice of space its row sees (the plane through the row and the centre's view ray), with
+//     A⊥ the part of the ray's derivative A = (g_x, g_y, -1) perpendicular to T_x: the unit normal
+//     n = A⊥ / |A⊥| of the line in the slice.
+//   - The vertical pass knows both tangents: it measures the distance off the tangent plane, with
+//     n the plane's unit normal (T_x × T_y, turned to face the ray). Its taps read the pixel
+//     nearest to the sheared line, whose centre lies off the line but on the plane.
+// For a tap whose pixel centre sits (ox, oy) window pixels from the centre's, at view distance d
+// (clip w(d) = -m11 d + m15), ΔP above gives
 //
-//   h = α · (d - d0) + k · λ · w(d),
+//   h = α · (d - d0) + w(d) · (ox · β_x + oy · β_y),   α = n · A,  β_x = n_x s_x,  β_y = n_y s_y,
 //
-// α = |A⊥| and λ = (A⊥/|A⊥|) · L, with A = (g_x, g_y, -1) the centre ray's derivative, A⊥ its part
-// perpendicular to the line's tangent T, and L = (s_x · δx, s_y · δy, 0) the window step (δx, δy) =
-// (1, 0) or (shear, 1) per unit of w: a fused multiply-add or two per tap, as the raw depth
-// difference was. Where the tangent is parallel to the ray (α = 0: the surface seen edge-on) it falls
-// back to the raw depth difference (α = 1, λ = 0).
+// a few fused multiply-adds per tap, as the raw depth difference was (the taps' actual offsets, so
+// a tap kept inside the viewport measures where it reads). Where the surface is seen edge-on
+// (α about 0) it falls back to the raw depth difference (α = 1, β = 0).
+//
+// Skin bends: over a few millimetres a cheek, a jaw or a facet of a scanned mesh leaves its tangent
+// line by a fair share of the distance, and the follow-surface ramp faded such taps as if they lay
+// across a step. So the ramp (SSS_FOLLOW_SURFACE 1) gives every tap a slack of kFollowSurfaceSlack
+// times its distance along the line, |k| · |T| (the ramp then measures h - slack, at least 0): a
+// bend of up to 14 degrees between the centre and the tap, or a curvature radius down to twice the
+// tap's distance, while a step (nose over cheek, ear over neck) lies off the line by far more than
+// that. The Gaussian depth correction (SSS_FOLLOW_SURFACE 2) is the profile's own law in the
+// third dimension, exp(-h²/2v), and keeps no slack. On the head close-up against the energy-
+// conserving reference, the default's interior miss falls from 0.142 to 0.124 with it
+// (docs/surface-turns.md).
 #pragma once
 
 #include <array>
@@ -99,11 +115,15 @@ std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy);
 Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, int axis, float d0, const Neighbour& minus,
                        const Neighbour& plus);
 
+// The share of a tap's distance along the line that follow-surface's ramp leaves unfaded (above).
+inline constexpr float kFollowSurfaceSlack = 0.25f;
+
 struct PassGeometry {
   float ratio = 1.0f;       // facing pixel width at w0 over the surface length of one step
   float shear = 0.0f;       // columns per row (vertical pass); 0 along x
-  float off_depth = 1.0f;   // α of the off-line distance
-  float off_step = 0.0f;    // λ of the off-line distance
+  float off_depth = 1.0f;   // α of the off-surface distance
+  std::array<float, 2> off_lateral = {0.0f, 0.0f};  // β_x, β_y of the off-surface distance
+  float slack = 0.0f;       // kFollowSurfaceSlack times the surface length of one step (world units)
 };
 
 // The horizontal pass's geometry from T_x; the vertical pass's from T_x and T_y.
@@ -111,9 +131,11 @@ PassGeometry horizontal_geometry(const PassConstants& k, const std::array<float,
 PassGeometry vertical_geometry(const PassConstants& k, const std::array<float, 2>& g, float d0, const Float3& tx,
                                const Float3& ty);
 
-// h above for a tap `offset` steps along the line (either sign) at view distance d, times `factor`
-// (the follow-surface factor): in the shaders' order, factor folded into α and λ once per pixel.
-float off_line_distance(const PassConstants& k, const PassGeometry& geometry, float factor, float offset, float d,
-                        float d0);
+// |h| above, times `factor` (the follow-surface factor), for a tap `offset` steps along the line
+// (either sign) whose pixel centre sits (ox, oy) window pixels from the centre's, at view distance d:
+// in the shaders' order, factor folded into α and β once per pixel. `slack`: less the tap's slack
+// (the ramp's), |offset| steps' worth, at least 0.
+float off_surface_distance(const PassConstants& k, const PassGeometry& geometry, float factor, float offset, float ox,
+                           float oy, float d, float d0, bool slack);
 
 }  // namespace sss::math
