@@ -4,9 +4,8 @@
 // table u_cdf. This must compute exactly what sss::math::footprint_taps does
 // (module/src/math/footprint_kernel.cpp).
 //
-// Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_HALF_TAPS (when
-// defined: the tap count as a constant instead of a uniform), SSS_JITTER,
-// SSS_FOLLOW_SURFACE, SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). Before this piece
+// Switches: footprint_cells.glsl's (the tables and the layout, which it includes), SSS_JITTER and
+// SSS_FOLLOW_SURFACE (see separable_blur.frag). Before this piece
 // the shader includes depth.glsl and jitter.glsl, and defines how its taps are read (GLSL has no
 // function pointers):
 //   struct TapSite      what the shader needs to find this pixel's taps
@@ -21,61 +20,7 @@
 //   bool sss_tap_foreign   (SSS_PROFILE_IDS only) set by sss_fetch_tap: the pixel it read has
 //                       another profile or object index than the centre, and counts as the centre
 
-#if SSS_PROFILE_IDS
-// Per-pixel profiles (SSS_PROFILE_IDS 1): every profile's table for this pass in one uniform block
-// (module/src/math/profile_set.hpp's layout: SSS_CDF_ENTRIES cumulative entries, then the reach and
-// centre delta), picked by the centre pixel's index; main() sets sss_table_base and
-// sss_inv_two_variance before the taps.
-layout(std140) uniform SssProfileTables {
-  vec4 u_tables[SSS_PROFILES * (SSS_CDF_ENTRIES + 1)];
-};
-int sss_table_base;
-float sss_inv_two_variance;
-#define SSS_CDF(j) u_tables[sss_table_base + (j)]
-#define SSS_FOOTPRINT u_tables[sss_table_base + SSS_CDF_ENTRIES]
-#define SSS_INV_TWO_VARIANCE sss_inv_two_variance
-#else
-uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
-uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
-#define SSS_CDF(j) u_cdf[j]
-#define SSS_FOOTPRINT u_footprint
-#if SSS_FOLLOW_SURFACE == 2
-uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
-#define SSS_INV_TWO_VARIANCE u_inv_two_variance
-#endif
-#endif
-uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
-#ifdef SSS_HALF_TAPS
-// The tap count as a constant of the variant (the fragment passes at a preset count), so the
-// compiler sees the loop's bound and unrolls it. The spacing stays the uniform array: unrolled,
-// each step reads one element at a constant index, inside the array even where the last step
-// looks one tap ahead in code that never runs. (As a const array of SSS_HALF_TAPS literals that
-// index was past its end, which NVIDIA's compiler refused; a chain of selects in its place cost
-// llvmpipe 1.8 % more on the 1080p close-up, the uniform 0.2 % more than the literals.)
-const int kSssHalfTaps = SSS_HALF_TAPS;       // the most taps on either side
-#else
-uniform int u_half_taps;                      // the most taps on either side
-#define kSssHalfTaps u_half_taps
-#endif
-#if SSS_JITTER
-uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
-#endif
-
-// The pass's kernel integrated from 0 to `fraction` of its reach, as
-// sss::math::footprint_half_cdf_at_fraction. The taps pass the sum of two positions times
-// footprint_sum's midpoint scale: one division per pixel, not two per tap (llvmpipe's tap loop
-// waited on them).
-vec3 half_cdf(float fraction) {
-  float u = sqrt(min(fraction, 1.0)) * float(SSS_CDF_ENTRIES - 1);
-  int j = min(int(u), SSS_CDF_ENTRIES - 2);
-  float f = u - float(j);
-  return SSS_CDF(j).rgb * (1.0 - f) + SSS_CDF(j + 1).rgb * f;
-}
-
-// The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
-float tap_position(int i, float previous, bool dense, float reach_pixels) {
-  return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));
-}
+#include "footprint_cells.glsl"
 
 // A tap's colour as it enters the sum: a non-finite neighbour (or one past colour_range.glsl's bound)
 // must not spread, so it counts as the

@@ -285,8 +285,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
     const sss::math::ProfileRequest kernel_profile = sss::api::to_request(profile);
     const auto cbf_kernel = sss::math::cbf_kernel(sss::math::cbf_profile(c.settings.cbf_profile, kernel_profile),
                                                   c.settings.cbf_taps, c.settings.cbf_r_max_mm);
-    const auto cbf = sss::math::compute_cbf_constants(fs, scene.projection, g);
-    sss::math::cpu_cbf_filter(cbf_kernel, constants, cbf, image, outcome.cpu.data(),
+    sss::math::cpu_cbf_filter(cbf_kernel, constants, image, outcome.cpu.data(),
                               c.normals.empty() ? nullptr : c.normals.data());
   } else if (c.settings.path == SSS_PATH_HALF_RESOLUTION && kernel.terms.size() == 1) {
     sss::math::CpuHalfResolutionStats stats;

@@ -1,11 +1,10 @@
-// The cross-bilateral mode's math: tap placement by the inverse CDF, per-channel weights, the
-// spike blend, the footprint cosine, the transmittance terms, and the CPU model's invariants.
+// The cross-bilateral mode's math: each channel's broad marginal tabulated for the footprint-aware
+// taps, the spike blend, the transmittance terms, and the CPU model's invariants.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "math/cbf_constants.hpp"
 #include "math/cbf_kernel.hpp"
 #include "math/cpu_cbf_filter.hpp"
 #include "math/spike_gaussian_profile.hpp"
@@ -28,45 +27,30 @@ TEST(SpikeGaussianProfile, EachChannelSumsToOne) {
   EXPECT_DOUBLE_EQ(broad_variance_mm2(mikkelsen_profile(), 2), 1.1);
 }
 
-TEST(CbfKernel, TapsSplitRedProbabilityEvenly) {
+TEST(CbfKernel, EachChannelsBroadMarginalIsTabulatedOnRMax) {
+  // Mikkelsen's profile: one broad Gaussian per channel (2.3, 1.4, 1.1 mm²) truncated to ±4.5 mm,
+  // each channel's table normalised to half its mass on [0, 4.5].
   const SpikeGaussianProfile p = mikkelsen_profile();
-  std::vector<double> bounds;
-  const std::vector<double> offsets = cbf_tap_offsets(p, 13, 4.5, &bounds);
-  ASSERT_EQ(offsets.size(), 13u);
-  ASSERT_EQ(bounds.size(), 14u);
-  EXPECT_EQ(bounds.front(), -4.5);
-  EXPECT_EQ(bounds.back(), 4.5);
-  EXPECT_EQ(offsets[6], 0.0);
-  const double total = broad_marginal_integral(p, 0, -4.5, 4.5);
-  for (int i = 0; i < 13; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    EXPECT_LT(bounds[k], offsets[k]);
-    EXPECT_LT(offsets[k], bounds[k + 1]);
-    EXPECT_NEAR(broad_marginal_integral(p, 0, bounds[k], bounds[k + 1]) / total, 1.0 / 13.0, 1e-9);
-    // The tap is the interval's probability midpoint.
-    EXPECT_NEAR(broad_marginal_integral(p, 0, bounds[k], offsets[k]) / total, 0.5 / 13.0, 1e-9);
-    EXPECT_NEAR(offsets[k], -offsets[12 - k], 1e-12);
+  const CbfKernel k = cbf_kernel(p, 13, 4.5);
+  EXPECT_FLOAT_EQ(k.table.reach_mm, 4.5f);
+  ASSERT_EQ(k.table.half_cdf.size(), static_cast<std::size_t>(kFootprintEntries));
+  EXPECT_EQ(k.spacing, footprint_spacing(6));  // 13 taps: 6 on either side
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_FLOAT_EQ(k.table.half_cdf.back()[c], 0.5f);
+    EXPECT_EQ(k.table.delta[c], 0.0f);  // the spike is the blend, not a delta in the table
+    // C(x) at 1 mm: the Gaussian's mass on [0, 1] over its mass on [0, 4.5].
+    const double expected = 0.5 * broad_marginal_integral(p, static_cast<int>(c), 0.0, 1.0) /
+                            broad_marginal_integral(p, static_cast<int>(c), 0.0, 4.5);
+    EXPECT_NEAR(footprint_half_cdf(k.table, 1.0f)[c], expected, 2e-4);
   }
-  // The red Gaussian (sigma 1.52 mm): the outermost tap's probability midpoint 1/26 lies near
-  // -1.77 sigma of the truncated distribution.
-  EXPECT_NEAR(offsets[0], -2.6, 0.1);
+  // Narrower green and blue hold more of their mass near the centre.
+  const auto near = footprint_half_cdf(k.table, 0.5f);
+  EXPECT_GT(near[2], near[1]);
+  EXPECT_GT(near[1], near[0]);
 }
 
-TEST(CbfKernel, WeightsSpikeAndVariances) {
+TEST(CbfKernel, SpikeBlendAndVariances) {
   const CbfKernel k = cbf_kernel(mikkelsen_profile(), 13, 4.5);
-  ASSERT_EQ(k.taps.size(), 13u);
-  EXPECT_EQ(k.taps[0].offset_mm, 0.0f);
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0.0;
-    for (const KernelTap& t : k.taps) sum += t.weight[static_cast<std::size_t>(c)];
-    EXPECT_NEAR(sum, 1.0, 1e-6);
-  }
-  for (std::size_t i = 2; i < k.taps.size(); ++i) EXPECT_LT(k.taps[i - 1].offset_mm, k.taps[i].offset_mm);
-  // Red: 1/13 each. Narrower green and blue: more weight at the centre, less at the ends.
-  for (const KernelTap& t : k.taps) EXPECT_NEAR(t.weight[0], 1.0 / 13.0, 1e-6);
-  EXPECT_GT(k.taps[0].weight[2], k.taps[0].weight[1]);
-  EXPECT_GT(k.taps[0].weight[1], k.taps[0].weight[0]);
-  EXPECT_LT(k.taps[1].weight[2], k.taps[1].weight[0]);
   // Two passes of (b, 1-b) leave exactly 1 - spike fully 2D-filtered.
   const double spikes[3] = {0.15, 0.18, 0.20};
   const double variances[3] = {2.3, 1.4, 1.1};
@@ -77,27 +61,25 @@ TEST(CbfKernel, WeightsSpikeAndVariances) {
   }
 }
 
-TEST(CbfKernel, AnyProfilePlugsIn) {
-  // The six-Gaussian skin profile and a wide r_max, many taps: still a valid kernel.
-  const CbfKernel k = cbf_kernel(skin_spike_gaussian_profile(), 65, 8.0);
-  ASSERT_EQ(k.taps.size(), 65u);
+TEST(CbfKernel, TheTapsWeighTheMarginalOverTheirPixels) {
+  // d'Eon's skin, the spike its narrowest term: blue's broad part is almost all the 0.0484 mm²
+  // Gaussian (sigma 0.22 mm). At 1 mm per pixel the pixel beside the centre holds the blue marginal's
+  // mass between 0.5 and 1.5 mm (about 1.2 % on either side); Mikkelsen's importance-placed taps
+  // read there with their interval's mass, 4.1 % (docs/surface-turns.md).
+  const SpikeGaussianProfile p = skin_spike_gaussian_profile();
+  const CbfKernel k = cbf_kernel(p, 13, 8.0);
+  const FootprintTaps taps = footprint_taps(k.table, k.spacing, 1.0f);  // 1 pixel per mm
+  ASSERT_GE(taps.count, 1);
+  ASSERT_EQ(taps.position[0], 1);
+  const double total = broad_marginal_integral(p, 2, -8.0, 8.0);
+  const double beside = broad_marginal_integral(p, 2, 0.5, 1.5) / total;
+  EXPECT_NEAR(taps.weight[1][2], beside, 2e-3);
+  EXPECT_LT(taps.weight[1][2], 0.02f);
   for (int c = 0; c < 3; ++c) {
-    double sum = 0.0;
-    for (const KernelTap& t : k.taps) {
-      EXPECT_GE(t.weight[static_cast<std::size_t>(c)], 0.0f);
-      sum += t.weight[static_cast<std::size_t>(c)];
-    }
-    EXPECT_NEAR(sum, 1.0, 1e-5);
+    double sum = taps.weight[0][static_cast<std::size_t>(c)];
+    for (int i = 1; i <= taps.count; ++i) sum += 2.0 * taps.weight[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
+    EXPECT_NEAR(sum, 1.0, 1e-5) << "channel " << c;
   }
-  EXPECT_GT(k.taps.back().offset_mm, 2.0f);
-  EXPECT_LT(k.taps.back().offset_mm, 8.0f);
-}
-
-TEST(CbfConstants, FootprintCosine) {
-  EXPECT_FLOAT_EQ(footprint_cosine(1.0f, 0.0f, 0.0f, 1.0f), 1.0f);  // facing the eye
-  EXPECT_NEAR(footprint_cosine(std::cos(1.0472f), std::sin(1.0472f), 0.0f, 1.0f), 0.5f, 1e-4f);  // 60° tilt
-  EXPECT_NEAR(footprint_cosine(0.0f, 1.0f, 0.0f, 1.0f), 0.0f, 1e-7f);  // seen edge-on
-  EXPECT_FLOAT_EQ(footprint_cosine(0.0f, 0.0f, 0.0f, 1.0f), 1.0f);    // degenerate tangent: no correction
 }
 
 TEST(Transmittance, TermsComeFromTheProfile) {
@@ -123,10 +105,10 @@ TEST(Transmittance, TermsComeFromTheProfile) {
   EXPECT_LT(transmittance(t, 2, 1.0), transmittance(t, 0, 1.0));  // red travels furthest
 }
 
-// The CPU model's invariants: a flat, facing, uniform image stays the same (normalised weights);
-// on a plane tilted about the y axis the cosine correction keeps the blur a function of the
-// distance along the surface (no over-attenuation from the range Gaussian).
-TEST(CpuCbfFilter, FlatStaysFlatAndTiltedPlaneIsBlurred) {
+// The CPU model's invariants: a flat, facing, uniform image stays the same (normalised weights); a
+// stripe pattern on a plane turned 60 degrees about y is blurred, by the walk's footprint along
+// the surface (the range Gaussian takes nothing from a plane).
+TEST(CpuCbfFilter, FlatStaysFlatAndATurnedPlaneIsBlurred) {
   const auto projection = sss_test::perspective_matrix(40.0f, 1.0f, 0.1f, 10.0f);
   sss_test::SyntheticScene s = sss_test::make_flat_scene(32, 32, {0.3f, 0.5f, 0.7f, 1.0f}, 1.0f, projection);
   FilterSettings fs;
@@ -135,26 +117,22 @@ TEST(CpuCbfFilter, FlatStaysFlatAndTiltedPlaneIsBlurred) {
   g.texture_width = g.texture_height = 32;
   g.viewport = {0, 0, 32, 32};
   const PassConstants k = compute_pass_constants(fs, projection, g);
-  const CbfConstants c = compute_cbf_constants(fs, projection, g);
   const CbfKernel kernel = cbf_kernel(mikkelsen_profile(), 13, 4.5);
   CpuFilterImage image;
   image.width = image.height = 32;
   image.color = s.color.data();
   image.depth = s.window_depth.data();
   std::vector<float> out(s.color.size());
-  cpu_cbf_filter(kernel, k, c, image, out.data());
+  cpu_cbf_filter(kernel, k, image, out.data());
   for (std::size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], s.color[i], 2e-3f * s.color[i]);  // fp16 intermediate
 
-  // A vertical stripe pattern on a plane tilted 60° about y: blurred (stripes lose contrast).
+  s = sss_test::make_turned_plane_scene(32, 32, 60.0, 90.0, 1.0, projection, 5);
   for (int y = 0; y < 32; ++y) {
-    for (int x = 0; x < 32; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * 32 + x;
-      s.distance[i] = 1.0f + 0.02f * static_cast<float>(x) * std::tan(1.0472f) / 1.0f * 0.5f;
-      s.color[i * 4] = (x % 2 == 0) ? 1.0f : 0.0f;
-    }
+    for (int x = 0; x < 32; ++x) s.color[(static_cast<std::size_t>(y) * 32 + x) * 4] = (x % 2 == 0) ? 1.0f : 0.0f;
   }
-  sss_test::compute_window_depth(&s);
-  cpu_cbf_filter(kernel, k, c, image, out.data());
+  image.color = s.color.data();
+  image.depth = s.window_depth.data();
+  cpu_cbf_filter(kernel, k, image, out.data());
   const std::size_t mid = (16 * 32 + 16) * 4;
   EXPECT_GT(out[mid + 4], 0.2f);   // an odd (dark) column picks up light from its neighbours
   EXPECT_LT(out[mid], 0.8f);       // an even (bright) column loses some
@@ -179,7 +157,7 @@ TEST(SpikeGaussianProfile, MeasuredMaterialsAreFittedGaussianSums) {
   // Red scatters furthest in marble (smallest σa, Jensen et al. 2001): its broad variance is the largest.
   EXPECT_GT(broad_variance_mm2(p, 0), broad_variance_mm2(p, 2));
   const CbfKernel k = cbf_kernel(p, 13, 8.0);
-  EXPECT_EQ(k.taps.size(), 13u);
+  for (std::size_t c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(k.table.half_cdf.back()[c], 0.5f);
   float terms[4 * SSS_PROFILE_MAX_TERMS];
   int32_t count = 0;
   ASSERT_EQ(sss_profile_transmittance_terms(SSS_PROFILE_MARBLE, terms, SSS_PROFILE_MAX_TERMS, &count), SSS_OK);

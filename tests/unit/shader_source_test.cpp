@@ -152,7 +152,7 @@ TEST(ShaderSource, EveryLineOfTheEmbeddedShadersCarriesItsFileAndLine) {
 TEST(ShaderSource, TheBlurShadersShareTheirPieces) {
   using namespace sss::gl;
   const std::vector<std::string> shared = {"nearest_half.glsl", "colour_range.glsl", "depth.glsl", "jitter.glsl",
-                                           "pass_surface.glsl", "footprint_taps.glsl"};
+                                           "pass_surface.glsl", "footprint_taps.glsl", "footprint_cells.glsl"};
   for (const ShaderRecipe& recipe :
        {stage_recipe(GlslVariant::glsl330, "separable_blur.frag", blur_defines(BlurVariant{})),
         compute_recipe(compute_blur_defines(BlurVariant{}, 1, ComputePass::horizontal_marked))}) {

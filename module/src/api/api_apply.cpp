@@ -335,7 +335,6 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
     run->identity = ctx.settings.world_units_per_mm == 0.0f || ctx.settings.scale == 0.0f;  // strength does not apply here
     run->cbf_kernel = &ctx.cbf_kernel;
     run->cbf_kernel_revision = ctx.cbf_kernel_revision;
-    run->cbf = sss::math::compute_cbf_constants(ctx.settings, ctx.projection, geometry);
   }
   if (run->region) {
     // The host's promise: nothing translucent outside draw_rect. An empty one means nothing is;

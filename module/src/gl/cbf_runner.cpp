@@ -53,32 +53,29 @@ sss_result prepare(PassContext& ctx, const FilterRun& run, CbfProgram** horizont
 
 void set_cbf_uniforms(const Functions& f, CbfProgram& p, const FilterRun& run, int axis) {
   const math::PassConstants& k = run.constants;
-  const math::CbfConstants& c = run.cbf;
   const math::CbfKernel& kernel = *run.cbf_kernel;
   f.UseProgram(p.program);
   if (p.kernel_revision != run.cbf_kernel_revision) {
+    const math::FootprintTable& table = kernel.table;
     std::vector<float> packed;
-    packed.reserve(kernel.taps.size() * 4);
-    for (const math::KernelTap& tap : kernel.taps) {
-      packed.insert(packed.end(), {tap.weight[0], tap.weight[1], tap.weight[2], tap.offset_mm});
-    }
-    f.Uniform4fv(p.kernel, static_cast<GLsizei>(kernel.taps.size()), packed.data());
-    f.Uniform1i(p.tap_count, static_cast<GLint>(kernel.taps.size()));
+    packed.reserve(table.half_cdf.size() * 4);
+    for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
+    f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+    f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
+    f.Uniform1fv(p.spacing, static_cast<GLsizei>(kernel.spacing.size()), kernel.spacing.data());
+    f.Uniform1i(p.half_taps, static_cast<GLint>(kernel.spacing.size()));
     f.Uniform4f(p.spike_blend, kernel.spike_blend[0], kernel.spike_blend[1], kernel.spike_blend[2], 0.0f);
     f.Uniform4f(p.inv_two_variance, kernel.inv_two_variance[0], kernel.inv_two_variance[1],
                 kernel.inv_two_variance[2], 0.0f);
     p.kernel_revision = run.cbf_kernel_revision;
   }
-  f.Uniform2f(p.axis, axis == 0 ? 1.0f : 0.0f, axis == 0 ? 0.0f : 1.0f);
   f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
   f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
   f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
-  f.Uniform4f(p.xy_terms, c.xy_terms[0], c.xy_terms[1], c.xy_terms[2], c.xy_terms[3]);
-  f.Uniform2f(p.xy_offset, c.xy_offset[0], c.xy_offset[1]);
-  f.Uniform4f(p.viewport, c.viewport[0], c.viewport[1], c.viewport[2], c.viewport[3]);
-  f.Uniform1f(p.world_per_mm, c.world_per_mm);
-  f.Uniform1f(p.orthographic, c.orthographic ? 1.0f : 0.0f);
+  f.Uniform2f(p.pixel_span, k.pixel_span[0], k.pixel_span[1]);
+  f.Uniform4f(p.ray_slope, k.slope_scale[0], k.slope_scale[1], k.slope_bias[0], k.slope_bias[1]);
+  f.Uniform1f(p.mm_per_world, k.mm_per_world);
   f.Uniform1i(p.round_to_half, writes_half_float(f, run, 0, axis) ? 1 : 0);
 }
 

@@ -7,7 +7,6 @@
 #include <array>
 #include <cstdint>
 
-#include "../math/cbf_constants.hpp"
 #include "../math/cbf_kernel.hpp"
 #include "../math/filter_constants.hpp"
 #include "../math/pass_kernel.hpp"
@@ -63,7 +62,6 @@ struct FilterRun {
   bool cross_bilateral = false;
   const math::CbfKernel* cbf_kernel = nullptr;
   std::uint64_t cbf_kernel_revision = 0;
-  math::CbfConstants cbf;
   // MSAA path only: the host depth's encoding for the resolve (`constants` then describe the
   // resolved linear distance the passes read), and how sample depths combine.
   math::PassConstants resolve_constants;

@@ -52,10 +52,10 @@ struct BlurProgram {
 
 struct CbfProgram {
   GLuint program = 0;
-  GLint source = -1, depth = -1, original = -1, kernel = -1, tap_count = -1, axis = -1, pixels_per_mm = -1,
-        ndc_from_depth = -1, depth_terms = -1, clamp = -1, xy_terms = -1, xy_offset = -1, viewport = -1,
-        world_per_mm = -1, orthographic = -1, spike_blend = -1, inv_two_variance = -1, normals = -1,
-        round_to_half = -1;
+  GLint source = -1, depth = -1, original = -1, normals = -1, pixels_per_mm = -1, ndc_from_depth = -1,
+        depth_terms = -1, clamp = -1, pixel_span = -1, ray_slope = -1, mm_per_world = -1, spike_blend = -1,
+        inv_two_variance = -1, round_to_half = -1;
+  GLint cdf = -1, footprint = -1, spacing = -1, half_taps = -1;  // footprint_cells.glsl's table and layout
   std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
 };
 

@@ -38,9 +38,6 @@ static_assert(compute_shared_bytes(kComputeTiles[0]) <= 32768 && compute_shared_
 static_assert(kComputeTiles[0].segment * kComputeTiles[0].lines % kComputeThreads == 0 &&
               kComputeTiles[1].segment * kComputeTiles[1].lines % kComputeThreads == 0);
 
-// The cross-bilateral blur's u_kernel[SSS_MAX_TAPS]: the most taps a pass takes (sss.h).
-inline constexpr int kCbfMaxTaps = SSS_MAX_TAPS;
-
 // The LUT generator (lut_generate.frag): u_terms[SSS_LUT_MAX_TERMS], the Gaussians of a profile
 // it integrates (a profile of more is generated on the CPU), and u_gl[SSS_LUT_ORDER], the
 // Gauss–Legendre rule of the CPU generator.

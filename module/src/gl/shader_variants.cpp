@@ -63,11 +63,15 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format, Compute
 }
 
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
-  char defines[128];
+  // The horizontal pass is the one that writes every pixel (the intermediate): its axis follows
+  // from what it writes outside. Its taps: footprint_cells.glsl's tables, no profiles, no jitter.
+  char defines[320];
   std::snprintf(defines, sizeof defines,
-                "#define SSS_OUTSIDE %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n"
-                "#define SSS_MAX_TAPS %d\n",
-                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, kCbfMaxTaps);
+                "#define SSS_OUTSIDE %d\n#define SSS_AXIS %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n"
+                "#define SSS_CDF_ENTRIES %d\n#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS 0\n"
+                "#define SSS_FOLLOW_SURFACE 0\n#define SSS_JITTER 0\n",
+                static_cast<int>(outside), outside == BlurOutside::write_centre ? 0 : 1, linear_depth ? 1 : 0,
+                normals ? 1 : 0, kCdfEntries, kMaxHalfTaps);
   return defines;
 }
 
