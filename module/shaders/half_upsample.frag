@@ -3,10 +3,12 @@
 // at least u_min_reach pixels on both axes,
 //   out = B + Σ_q W_q · x_q − (Σ_q W_q) · X, kept within the range of the B texels and x_q it combined
 // B and X the half-size result and input from the four nearest half-size texels (bilinear weights
-// times 1 − the follow-surface blend of their distance to the pixel's, on texels of the pixel's
-// own index only); q the pixel and its four neighbours along the axes, x_q as the full-size passes
-// take it, W_q the product of the two full-size passes' weights at offsets 0 and ±1 (the near
-// field at full size; why: module/src/math/half_resolution.hpp).
+// times 1 − the follow-surface blend of their distance off the pixel's tangent plane, on texels of
+// the pixel's own index only); q the pixel, its two neighbours along the row and the nearest pixels
+// of the rows above and below on the vertical pass's sheared line, x_q as the full-size passes take
+// it, W_q the product of the two full-size passes' weights at offsets 0 and ±1 (the near field at
+// full size; why: module/src/math/half_resolution.hpp). The steps and lines are the full-size
+// passes' walk over the surface (pass_surface.glsl), from the four neighbours' distances.
 // Every other pixel is discarded here, leaving the culling depth at 0, and the full-size passes
 // that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
 // This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
@@ -16,6 +18,7 @@
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
 #include "depth.glsl"
+#include "pass_surface.glsl"
 
 SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // pass_inputs.frag's strength bits (the colour's alpha)
@@ -75,8 +78,32 @@ vec3 near_weights(int row, vec4 footprint, float step, out vec3 beside) {
   return 2.0 * below + footprint.yzw;
 }
 
+// The full-size pixel `pixel`'s neighbour `o` for the surface's tangent, as the passes take it
+// (separable_blur.frag's sss_neighbour_distance: inside the drawn rectangle, a usable distance, the
+// pixel's index where there are R8UI indices).
+float neighbour_distance(ivec2 pixel, ivec2 o, uint index, out bool usable) {
+  ivec2 texel = pixel + o;
+  bool inside = all(greaterThanEqual(texel, u_rect.xy)) && all(lessThanEqual(texel, u_rect.zw));
+  uvec4 t = texelFetch(u_source, inside ? texel : pixel, 0);
+  float d = sss_distance(t.a);
+  usable = inside && sss_usable_distance(d);
+#if SSS_PROFILE_IDS == 1
+  usable = usable && (t.b & 0xFFu) == index;
+#endif
+  return d;
+}
+
+vec3 tangent(ivec2 pixel, vec2 g, int axis, float d0, uint index) {
+  ivec2 o = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+  bool um, up;
+  float dm = neighbour_distance(pixel, -o, index, um);
+  float dp = neighbour_distance(pixel, o, index, up);
+  return sss_surface_tangent(g, axis, d0, dm, um, dp, up);
+}
+
 // One pixel of the near field: its colour as the full-size passes take it (blended towards the
-// centre's by the follow-surface rule; the centre's where its index differs), times `w`.
+// centre's by the follow-surface rule: its distance off the pixel's surface along `walk`'s line,
+// less the ramp's slack for `steps` steps; the centre's where its index differs), times `w`.
 struct NearSite {
   ivec2 pixel;
   uint index;     // the centre's R8UI index (the low byte of its blue colour word)
@@ -85,10 +112,14 @@ struct NearSite {
   float factor;   // the follow-surface factor at the centre's strength
 };
 // `lowest` and `highest`: the range of the values the upsample combines, which bounds its result.
-void near_tap(NearSite site, ivec2 offset, vec3 w, inout vec3 near, inout vec3 mass, inout vec3 lowest,
-              inout vec3 highest) {
-  uvec4 q = texelFetch(u_source, clamp(site.pixel + offset, u_rect.xy, u_rect.zw), 0);
-  float s = site.factor * abs(site.distance - sss_distance(q.a));
+void near_tap(NearSite site, ivec2 offset, SssWalk walk, float steps, vec3 w, inout vec3 near, inout vec3 mass,
+              inout vec3 lowest, inout vec3 highest) {
+  ivec2 texel = clamp(site.pixel + offset, u_rect.xy, u_rect.zw);
+  uvec4 q = texelFetch(u_source, texel, 0);
+  vec2 line = sss_off_surface(sss_follow(walk, site.factor, site.distance), vec2(texel - site.pixel));
+  float h = abs(sss_distance(q.a) * line.x + line.y);
+  float s = h - steps * sss_follow_slack(walk, site.factor);
+  s = s < 0.0 ? 0.0 : s;  // not max(): NaN stays NaN
   // Also NaN (isnan() spelt out: NVIDIA's compiler takes !(s < 1.0) for s >= 1.0, which NaN fails):
   // the inputs' unusable colours (pass_inputs.frag) never enter.
   if (isnan(s) || !(s < 1.0)) s = 1.0;
@@ -118,7 +149,12 @@ void main() {
 #endif
   vec4 look = u_looks[profile];
   float a = min(centre.a, 1.0);
-  float step_x = look.x * a / w, step_y = look.y * a / w;
+  // The full-size passes' walks at this pixel: along the row, and up the sheared column.
+  vec2 g = sss_ray_slope(gl_FragCoord.xy);
+  vec3 tx = tangent(pixel, g, 0, d, texel.b & 0xFFu);
+  SssWalk across = sss_horizontal_walk(g, d, tx);
+  SssWalk up = sss_vertical_walk(g, d, tx, tangent(pixel, g, 1, d, texel.b & 0xFFu));
+  float step_x = look.x * a / w * across.ratio, step_y = look.y * a / w * up.ratio;
   vec4 footprint_x = table(SSS_CDF_ENTRIES, 2 * profile), footprint_y = table(SSS_CDF_ENTRIES, 2 * profile + 1);
   float reach_x = min(footprint_x.x * step_x, 1.0e6);
   float reach_y = min(footprint_y.x * step_y, 1.0e6);
@@ -126,6 +162,7 @@ void main() {
   if (isnan(reach) || !(reach >= u_min_reach)) discard;  // narrow: the full-size passes
 
   float factor = look.z / a;
+  vec4 plane = sss_follow(up, factor, d);  // the tangent plane's distance (the vertical walk's)
   ivec2 base = (pixel - 1) >> 1;  // the lower-left of the four nearest half-size texels
   vec2 f = vec2((pixel.x & 1) != 0 ? 0.25 : 0.75, (pixel.y & 1) != 0 ? 0.25 : 0.75);
   float weight = 0.0;
@@ -140,7 +177,9 @@ void main() {
 #if SSS_PROFILE_IDS == 1
       if ((h.b & 0xFFu) != (texel.b & 0xFFu)) continue;
 #endif
-      float s = factor * abs(d - sss_distance(h.a));
+      // Off the pixel's tangent plane, at the centre of the 2x2 block the texel stands for.
+      vec2 line = sss_off_surface(plane, vec2(2 * q - pixel) + 0.5);
+      float s = abs(sss_distance(h.a) * line.x + line.y);
       if (isnan(s) || !(s < 1.0)) s = 1.0;
       float wq = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y) * (1.0 - s);
       weight += wq;
@@ -162,11 +201,13 @@ void main() {
   // run with masked lanes.
   vec3 near = vec3(0.0), mass = vec3(0.0);
   NearSite site = NearSite(pixel, texel.b & 0xFFu, centre.rgb, d, factor);
-  near_tap(site, ivec2(0, -1), centre_x * beside_y, near, mass, lowest, highest);
-  near_tap(site, ivec2(-1, 0), beside_x * centre_y, near, mass, lowest, highest);
-  near_tap(site, ivec2(0, 0), centre_x * centre_y, near, mass, lowest, highest);
-  near_tap(site, ivec2(1, 0), beside_x * centre_y, near, mass, lowest, highest);
-  near_tap(site, ivec2(0, 1), centre_x * beside_y, near, mass, lowest, highest);
+  // The vertical pass's taps one row down and up read the column nearest its sheared line.
+  int below_column = int(gl_FragCoord.x - up.shear) - pixel.x, above_column = int(gl_FragCoord.x + up.shear) - pixel.x;
+  near_tap(site, ivec2(below_column, -1), up, 1.0, centre_x * beside_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(-1, 0), across, 1.0, beside_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(0, 0), across, 0.0, centre_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(1, 0), across, 1.0, beside_x * centre_y, near, mass, lowest, highest);
+  near_tap(site, ivec2(above_column, 1), up, 1.0, centre_x * beside_y, near, mass, lowest, highest);
   // Not a convex sum (the near field minus its half-size stand-in): at a strong edge it could leave
   // the range of what it combined, which the result never should (it is a blur of those values).
   vec3 result = clamp(blurred / weight + near - mass * (reduced / weight), lowest, highest);

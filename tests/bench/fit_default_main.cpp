@@ -84,7 +84,30 @@ struct FitResult {
 };
 
 // Start and bounds of each model.
-void start_of(Model model, std::vector<double>* x, std::vector<double>* lower, std::vector<double>* upper) {
+// Where each fit starts: `refine` false, from the paper's values (Table 1) and d'Eon's Gaussians;
+// true, from the library's current constants (default_kernel_fit.hpp), so that a refit after a small
+// change of the cases (more footprints, a change of the passes) moves from the last optimum.
+void start_of(Model model, bool refine, std::vector<double>* x, std::vector<double>* lower, std::vector<double>* upper) {
+  if (refine) {
+    start_of(model, false, x, lower, upper);  // the bounds
+    switch (model) {
+      case Model::table1:
+        *x = {sss::math::kTable1SeparableScale};
+        return;
+      case Model::separable:
+        *x = {sss::math::kCalibratedSeparableScale};
+        for (float v : sss::math::kCalibratedStrength) x->push_back(v);
+        for (float v : sss::math::kCalibratedFalloff) x->push_back(v);
+        return;
+      case Model::artist:
+        for (std::size_t c = 0; c < 3; ++c) {
+          (*x)[c] = std::log(static_cast<double>(sss::math::kCalibratedNearVarianceMm2[c]));
+          (*x)[3 + c] = std::log(static_cast<double>(sss::math::kCalibratedFarVarianceMm2[c]));
+          (*x)[6 + c] = sss::math::kCalibratedNearWeight[c];
+        }
+        return;
+    }
+  }
   switch (model) {
     case Model::table1:
       *x = {0.36};  // the eq. (3) fit's kernel mm per skin mm (docs/kernel-fits.md)
@@ -120,17 +143,18 @@ void start_of(Model model, std::vector<double>* x, std::vector<double>* lower, s
   }
 }
 
-FitResult fit(const std::vector<CalibrationCase>& cases, Model model, int max_evaluations) {
+FitResult fit(const std::vector<CalibrationCase>& cases, Model model, int max_evaluations, bool refine) {
   Problem problem{&cases, model, 0};
   std::vector<double> x, lower, upper;
-  start_of(model, &x, &lower, &upper);
+  start_of(model, refine, &x, &lower, &upper);
   const auto n = static_cast<unsigned>(x.size());
   nlopt_opt opt = nlopt_create(NLOPT_LN_SBPLX, n);
   nlopt_set_min_objective(opt, objective, &problem);
   nlopt_set_lower_bounds(opt, lower.data());
   nlopt_set_upper_bounds(opt, upper.data());
   std::vector<double> step(n);
-  for (unsigned i = 0; i < n; ++i) step[i] = 0.15 * (upper[i] - lower[i]);
+  // From the last optimum, steps of a few per cent of the range: a local refinement.
+  for (unsigned i = 0; i < n; ++i) step[i] = (refine ? 0.03 : 0.15) * (upper[i] - lower[i]);
   nlopt_set_initial_step(opt, step.data());
   nlopt_set_ftol_rel(opt, 1e-5);
   nlopt_set_maxeval(opt, max_evaluations);
@@ -184,11 +208,12 @@ nlohmann::json record(const FitResult& fit, const sss::math::FilterSettings& s, 
 
 void print_usage(std::FILE* to) {
   std::fprintf(to,
-               "usage: sss_fit_default [--header PATH] [--expectation PATH] [--max-evaluations N]\n"
+               "usage: sss_fit_default [--header PATH] [--expectation PATH] [--max-evaluations N] [--refine]\n"
                "       sss_fit_default --score-family F --taps N [--rank R] [--jitter J]\n"
                "  --header PATH          the constants to write (default module/src/math/default_kernel_fit.hpp)\n"
                "  --expectation PATH     the fit's record (default tests/bench/default_kernel_fit.json)\n"
                "  --max-evaluations N    objective evaluations per fit (default 600)\n"
+               "  --refine               start each fit from the library's current constants, with small steps\n"
                "  --score-family F       exploration: score family F (sss_kernel_family 0..5) with its defaults on\n"
                "                         the calibration cases, print each case and the objective, and stop;\n"
                "                         --taps (default 17), --rank (default 6 for the sum of Gaussians, else 1)\n"
@@ -202,7 +227,7 @@ int score_family(int family, int taps, int rank, float jitter) {
   s.samples = taps;
   s.kernel.rank = rank > 0 ? rank : (s.kernel.family == sss::math::KernelFamily::sum_of_gaussians ? 6 : 1);
   s.jitter = jitter;
-  const auto cases = sss_bench::make_calibration_cases(sss_bench::default_sweep_footprints(), sss_bench::kCalibrationInteriorPx);
+  const auto cases = sss_bench::make_calibration_cases(sss_bench::calibration_footprints(), sss_bench::kCalibrationInteriorPx);
   const auto scores = sss_bench::score_settings(s, cases);
   std::printf("scene          mm/px   miss   red  green   blue\n");
   for (const auto& c : scores) {
@@ -218,11 +243,13 @@ int score_family(int family, int taps, int rank, float jitter) {
 int main(int argc, char** argv) {
   std::string header = "module/src/math/default_kernel_fit.hpp", expectation = "tests/bench/default_kernel_fit.json";
   int max_evaluations = 600, family = -1, taps = 17, rank = 0;
+  bool refine = false;
   float jitter = 0.0f;
-  enum { kHeader = 1000, kExpectation, kMaxEvaluations, kScoreFamily, kTaps, kRank, kJitter, kHelp };
+  enum { kHeader = 1000, kExpectation, kMaxEvaluations, kRefine, kScoreFamily, kTaps, kRank, kJitter, kHelp };
   static const option long_options[] = {{"header", required_argument, nullptr, kHeader},
                                         {"expectation", required_argument, nullptr, kExpectation},
                                         {"max-evaluations", required_argument, nullptr, kMaxEvaluations},
+                                        {"refine", no_argument, nullptr, kRefine},
                                         {"score-family", required_argument, nullptr, kScoreFamily},
                                         {"taps", required_argument, nullptr, kTaps},
                                         {"rank", required_argument, nullptr, kRank},
@@ -234,6 +261,7 @@ int main(int argc, char** argv) {
       case kHeader: header = optarg; break;
       case kExpectation: expectation = optarg; break;
       case kMaxEvaluations: max_evaluations = std::stoi(optarg); break;
+      case kRefine: refine = true; break;
       case kScoreFamily: family = std::stoi(optarg); break;
       case kTaps: taps = std::stoi(optarg); break;
       case kRank: rank = std::stoi(optarg); break;
@@ -248,20 +276,20 @@ int main(int argc, char** argv) {
   }
   if (family >= 0) return score_family(family, taps, rank, jitter);
   const auto started = std::chrono::steady_clock::now();
-  const auto cases = sss_bench::make_calibration_cases(sss_bench::default_sweep_footprints(), sss_bench::kCalibrationInteriorPx);
+  const auto cases = sss_bench::make_calibration_cases(sss_bench::calibration_footprints(), sss_bench::kCalibrationInteriorPx);
   std::fprintf(stderr, "%zu cases\nfitting eq. (1): separable_scale, strength, falloff\n", cases.size());
-  const FitResult separable = fit(cases, Model::separable, max_evaluations);
+  const FitResult separable = fit(cases, Model::separable, max_evaluations, refine);
   std::fprintf(stderr, "fitting Table 1's separable_scale\n");
-  const FitResult table1 = fit(cases, Model::table1, max_evaluations);
+  const FitResult table1 = fit(cases, Model::table1, max_evaluations, refine);
   std::fprintf(stderr, "fitting the artist model\n");
-  const FitResult artist = fit(cases, Model::artist, max_evaluations);
+  const FitResult artist = fit(cases, Model::artist, max_evaluations, refine);
   const auto s = settings_from(separable.x, Model::separable);
   const auto t = settings_from(table1.x, Model::table1);
   const auto a = settings_from(artist.x, Model::artist);
 
   nlohmann::json j;
   j["objective_definition"] = "the mean interior miss + the 8-norm of the interior misses (a smooth largest) + 4 x the sum of channel misses above 0.9";
-  j["footprints_mm"] = sss_bench::default_sweep_footprints();
+  j["footprints_mm"] = sss_bench::calibration_footprints();
   j["interior_px"] = sss_bench::kCalibrationInteriorPx;
   j["separable"] = record(separable, s, cases);
   j["table1"] = record(table1, t, cases);

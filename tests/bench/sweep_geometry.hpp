@@ -20,6 +20,18 @@ inline std::vector<double> default_sweep_footprints() {
   return footprints;
 }
 
+// The footprints the default kernel is calibrated on (sss_fit_default): the sweep's, and 1.3, 3 and
+// 4 mm. A surface turned away from the camera sees the kernel at its facing footprint over the
+// turn's cosine along one axis (up to 3.9 times it at 75 degrees: pass_surface.hpp), and a rank-1
+// kernel's blue, which needs almost no change there, was worse than doing nothing between the sweep's
+// 1.08 and 2 mm on a diagonal edge (1.26 at 1.3 mm), where the sweep had no footprint.
+inline std::vector<double> calibration_footprints() {
+  std::vector<double> footprints = default_sweep_footprints();
+  footprints.insert(footprints.end(), {1.3, 3.0, 4.0});
+  std::sort(footprints.begin(), footprints.end());
+  return footprints;
+}
+
 // The side of a sweep frame at footprint f (mm per pixel): the interior and the profile's reach on
 // every side (border pixels), plus one for the float camera.
 inline int sweep_frame_side(double footprint_mm, int interior_px, double reach_mm) {

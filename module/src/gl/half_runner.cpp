@@ -213,6 +213,8 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
   f.Uniform4i(p.rect, d[0], d[1], d[0] + d[2] - 1, d[1] + d[3] - 1);
   const math::PassConstants& k = run.constants;
   f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
+  f.Uniform2f(p.pixel_span, k.pixel_span[0], k.pixel_span[1]);
+  f.Uniform4f(p.ray_slope, k.slope_scale[0], k.slope_scale[1], k.slope_bias[0], k.slope_bias[1]);
   f.Uniform1i(p.round_to_half, run.target().internal_format == static_cast<GLint>(RGBA16F) ? 1 : 0);
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);

@@ -433,6 +433,8 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.pixel_span = f.GetUniformLocation(p.program, "u_pixel_span");
+  p.ray_slope = f.GetUniformLocation(p.program, "u_ray_slope");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);

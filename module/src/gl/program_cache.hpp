@@ -97,6 +97,7 @@ struct HalfUpsampleProgram {
   GLuint program = 0;
   GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, half_taps = -1, spacing = -1, depth_terms = -1,
         round_to_half = -1;
+  GLint pixel_span = -1, ray_slope = -1;  // pass_surface.glsl's view offsets (the full-size passes' walk)
   GLint tile_grid = -1;  // the tiles' bands (fullscreen.vert, the passes' spans)
 };
 

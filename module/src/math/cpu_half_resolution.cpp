@@ -8,6 +8,7 @@
 #include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
 #include "half_resolution.hpp"
+#include "pass_surface.hpp"
 
 namespace sss::math {
 
@@ -208,6 +209,29 @@ struct Upsample {
   float min_reach;
   bool output_is_half;
 
+  // The full-size pixel (x, y)'s neighbour (x + ox, y + oy) for the surface's tangent, as the passes
+  // take it (pass_surface.hpp; their inputs' distance, the pixel's index where there are indices).
+  Neighbour neighbour(int x, int y, int ox, int oy, std::uint32_t index) const {
+    Neighbour n;
+    if (!cpu_passes::inside(shared, x + ox, y + oy)) return n;
+    const InputTexel& q = full.at(x + ox, y + oy);
+    n.distance = full.distance(q.word);
+    const float w = clip_w(shared, n.distance);
+    n.usable = w > 0.0f && w < 1e30f && (!full.ids || q.index == index);
+    return n;
+  }
+
+  // The full-size passes' walks at (x, y): along the row, and up the sheared column.
+  struct Walks {
+    PassGeometry across, up;
+  };
+  Walks walks(int x, int y, float d, std::uint32_t index) const {
+    const std::array<float, 2> g = ray_slope(shared, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    const Float3 tx = surface_tangent(shared, g, 0, d, neighbour(x, y, -1, 0, index), neighbour(x, y, 1, 0, index));
+    const Float3 ty = surface_tangent(shared, g, 1, d, neighbour(x, y, 0, -1, index), neighbour(x, y, 0, 1, index));
+    return {horizontal_geometry(shared, g, d, tx), vertical_geometry(shared, g, d, tx, ty)};
+  }
+
   // half_upsample.frag at (x, y) into `out` (RGBA); false where it discards (the full-size passes' pixel).
   bool pixel(int x, int y, float* out) const {
     const InputTexel& t = full.at(x, y);
@@ -222,17 +246,18 @@ struct Upsample {
     const PassTerm& term = kernel.terms.front();
     const Look& look = looks[static_cast<std::size_t>(p)];
     const float a = std::min(centre[3], 1.0f);
-    const float step_x = look.x * a / w, step_y = look.y * a / w;
+    const Walks walk = walks(x, y, d, t.index);
+    const float step_x = look.x * a / w * walk.across.ratio, step_y = look.y * a / w * walk.up.ratio;
     const float reach_x = std::min(term.horizontal.footprint.reach_mm * step_x, 1.0e6f);
     const float reach_y = std::min(term.vertical.footprint.reach_mm * step_y, 1.0e6f);
     if (!(std::min(reach_x, reach_y) >= min_reach)) return false;
     float weight = 0.0f;
     std::array<float, 3> blurred{}, reduced{};
     Range range;
-    neighbours(x, y, t.index, d, look.depth_factor / a, &weight, &blurred, &reduced, &range);
+    neighbours(x, y, t.index, d, look.depth_factor / a, walk.up, &weight, &blurred, &reduced, &range);
     if (!(weight >= kHalfResolutionMinWeight)) return false;
     std::array<float, 3> near{}, mass{};
-    near_field(x, y, t, d, look.depth_factor / a,
+    near_field(x, y, t, d, look.depth_factor / a, walk,
                footprint_near_weights(term.horizontal.footprint, kernel.spacing, step_x),
                footprint_near_weights(term.vertical.footprint, kernel.spacing, step_y), &near, &mass, &range);
     for (std::size_t c = 0; c < 3; ++c) {
@@ -253,17 +278,24 @@ struct Upsample {
     }
   };
 
-  // The full-size passes' near field at (x, y): the pixel and its four neighbours along the axes as
-  // their taps take them, weighed by the product of the two passes' weights, and that weight's sum.
-  void near_field(int x, int y, const InputTexel& t, float d, float factor, const NearWeights& h,
+  // The full-size passes' near field at (x, y): the pixel, its neighbours along the row and the
+  // nearest pixels of the rows above and below on the vertical pass's sheared line, as their taps
+  // take them (follow-surface by their distance off the pixel's surface, less the ramp's slack of one
+  // step), weighed by the product of the two passes' weights, and that weight's sum.
+  void near_field(int x, int y, const InputTexel& t, float d, float factor, const Walks& walk, const NearWeights& h,
                   const NearWeights& v, std::array<float, 3>* near, std::array<float, 3>* mass, Range* range) const {
+    const float cx = static_cast<float>(x) + 0.5f;
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if (dx != 0 && dy != 0) continue;  // the diagonals: half_resolution.hpp says why not
-        const int qx = std::clamp(x + dx, static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_max[0]));
+        const float offset = static_cast<float>(dx + dy);  // steps along the pass's line: -1, 0 or 1
+        const int column = dy == 0 ? x + dx : static_cast<int>(cx + walk.up.shear * offset);
+        const int qx = std::clamp(column, static_cast<int>(shared.clamp_min[0]), static_cast<int>(shared.clamp_max[0]));
         const int qy = std::clamp(y + dy, static_cast<int>(shared.clamp_min[1]), static_cast<int>(shared.clamp_max[1]));
         const InputTexel& q = full.at(qx, qy);
-        float s = factor * std::fabs(d - full.distance(q.word));
+        const PassGeometry& line = dy == 0 ? walk.across : walk.up;
+        float s = off_surface_distance(shared, line, factor, offset, static_cast<float>(qx - x),
+                                       static_cast<float>(qy - y), full.distance(q.word), d, true);
         if (!(s < 1.0f)) s = 1.0f;
         if (full.ids && q.index != t.index) s = 1.0f;  // another index: the centre's colour
         for (std::size_t c = 0; c < 3; ++c) {
@@ -278,8 +310,10 @@ struct Upsample {
     }
   }
 
-  // The four nearest half-size texels: bilinear weight times the depth weight, on the pixel's index.
-  void neighbours(int x, int y, std::uint32_t index, float d, float factor, float* weight,
+  // The four nearest half-size texels: bilinear weight times the depth weight (1 - the follow-surface
+  // blend of their distance off the pixel's tangent plane, `plane`: the vertical walk's, taken at
+  // the centre of the 2x2 block each stands for), on the pixel's index.
+  void neighbours(int x, int y, std::uint32_t index, float d, float factor, const PassGeometry& plane, float* weight,
                   std::array<float, 3>* blurred, std::array<float, 3>* reduced, Range* range) const {
     const int i0 = x > 0 ? (x - 1) / 2 : -1, j0 = y > 0 ? (y - 1) / 2 : -1;  // GLSL's (pixel - 1) >> 1
     const float fx = (x & 1) != 0 ? 0.25f : 0.75f, fy = (y & 1) != 0 ? 0.25f : 0.75f;
@@ -291,7 +325,9 @@ struct Upsample {
         if (result.blurred[qk] == 0) continue;
         const InputTexel& q = half.texels[qk];
         if (full.ids && q.index != index) continue;
-        float s = factor * std::fabs(d - half.distance(q.word));
+        // The block's centre, full-size window 2 q + 1, from the pixel's centre.
+        const float ox = static_cast<float>(2 * qi - x) + 0.5f, oy = static_cast<float>(2 * qj - y) + 0.5f;
+        float s = off_surface_distance(shared, plane, factor, 0.0f, ox, oy, half.distance(q.word), d, false);
         if (!(s < 1.0f)) s = 1.0f;
         const float wq = (dx == 0 ? 1.0f - fx : fx) * (dy == 0 ? 1.0f - fy : fy) * (1.0f - s);
         *weight += wq;
