@@ -24,8 +24,11 @@ void write_footprint_sweep(std::ostream& out, const std::vector<ResultRow>& rows
 // region, interior miss per channel and relative RMSE (in collapsed blocks).
 void write_scene_tables(std::ostream& out, const std::vector<ResultRow>& rows);
 
-// The table header and one row in the layout every error table of the document shares.
+// The table header and one row in the layout every error table of the document shares; the
+// head close-up's adds the interior miss against the energy-conserving reference
+// (ResultRow::interior_conserving) after the interior's channels.
 extern const char* const kErrorTableHeader;
-void write_error_row(std::ostream& out, const ResultRow& r);
+extern const char* const kConservingErrorTableHeader;
+void write_error_row(std::ostream& out, const ResultRow& r, bool conserving = false);
 
 }  // namespace sss_bench

@@ -176,20 +176,22 @@ nlohmann::json scores_json(const std::vector<sss_bench::CaseScore>& scores) {
   return out;
 }
 
+// A float literal that reads back as v: nine significant digits, with a decimal point even where
+// %g drops it (1 is "1.0f", not "1f", which C++ does not accept).
+std::string float_text(float v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", double(v));
+  std::string out = text;
+  if (out.find_first_of(".en") == std::string::npos) out += ".0";
+  return out + "f";
+}
+
 std::string float_array(const std::array<float, 3>& v) {
-  char text[96];
-  std::snprintf(text, sizeof text, "{%.9gf, %.9gf, %.9gf}", double(v[0]), double(v[1]), double(v[2]));
-  return text;
+  return "{" + float_text(v[0]) + ", " + float_text(v[1]) + ", " + float_text(v[2]) + "}";
 }
 
 std::array<float, 3> to_float3(const std::array<double, 3>& v) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
-std::string float_text(float v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9gf", double(v));
-  return text;
 }
 
 // What the expectation records of one fit: the settings as floats and the scores they get.

@@ -284,6 +284,15 @@ bool write_error_heatmap_png(const std::string& path, const RgbImage& a, const R
   return write_png_top_row_first(path, a.width, a.height, pixels);
 }
 
+double heat_map_scale(const RgbImage& reference, const uint8_t* mask) {
+  double brightest = 0.0;
+  for (std::size_t i = 0; i < reference.rgb.size() / 3; ++i) {
+    if (mask != nullptr && mask[i] == 0) continue;
+    for (std::size_t c = 0; c < 3; ++c) brightest = std::max(brightest, reference.rgb[i * 3 + c]);
+  }
+  return brightest > 0.0 ? 0.1 * brightest : 1.0;
+}
+
 bool write_tonemapped_png(const std::string& path, const RgbImage& linear, double exposure) {
   if (linear.width <= 0 || linear.height <= 0 ||
       linear.rgb.size() != static_cast<std::size_t>(linear.width) * static_cast<std::size_t>(linear.height) * 3) {

@@ -109,6 +109,10 @@ std::array<uint8_t, 3> error_ramp(double t);
 bool write_error_heatmap_png(const std::string& path, const RgbImage& a, const RgbImage& reference,
                              const uint8_t* mask, double scale);
 
+// The error mapped to the top of the heat map's colour ramp: 10 % of the reference's brightest
+// translucent value, so maps of one scene compare across methods.
+double heat_map_scale(const RgbImage& reference, const uint8_t* mask);
+
 // The image tone-mapped (tone_map, exposure) as an 8-bit sRGB PNG, top row first.
 bool write_tonemapped_png(const std::string& path, const RgbImage& linear, double exposure = 1.0);
 

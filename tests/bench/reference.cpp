@@ -125,4 +125,36 @@ Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_p
   return r;
 }
 
+Reference make_mass_reference(const Scene& scene, long max_cpu_pixels, int stride) {
+  if (!scene.profile.empty()) throw std::invalid_argument("make_mass_reference: " + scene.name + " has several materials");
+  Scene uniform = scene;
+  for (std::size_t i = 0; i < uniform.mask.size(); ++i) {
+    if (uniform.mask[i] == 0) continue;
+    for (std::size_t c = 0; c < 3; ++c) uniform.irradiance[i * 4 + c] = 1.0f;
+  }
+  GpuScene gpu = upload_scene(uniform);
+  try {
+    Reference mass = make_reference(uniform, gpu, max_cpu_pixels, 0, stride);
+    destroy_scene(&gpu);
+    return mass;
+  } catch (...) {
+    destroy_scene(&gpu);
+    throw;
+  }
+}
+
+std::vector<float> divide_by_mass(const Reference& reference, const Reference& mass, const Scene& scene) {
+  std::vector<float> out = reference.rgba;
+  const auto w = static_cast<std::size_t>(scene.width);
+  for (std::size_t i = 0; i < scene.mask.size(); ++i) {
+    // Off the receivers' grid both hold the input; a receiver that is not usable holds it in both.
+    if (scene.mask[i] == 0 || !on_grid(static_cast<int>(i % w), static_cast<int>(i / w), reference.stride)) continue;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float m = mass.rgba[i * 4 + c];
+      if (m > 0.0f) out[i * 4 + c] = static_cast<float>(static_cast<double>(reference.rgba[i * 4 + c]) / m);
+    }
+  }
+  return out;
+}
+
 }  // namespace sss_bench

@@ -41,4 +41,16 @@ Reference make_plane_reference(const Scene& scene, const GpuScene& gpu);
 // The pixels where a reference holds values: the scene's mask, on the stride grid.
 bool on_grid(int x, int y, int stride);
 
+// The mass of the surface at each receiver: make_reference's result (the same method, receivers
+// and mask, no spot checks) for a uniform irradiance of 1 in R, G and B on the scene's translucent
+// pixels. 1 on a plane; on a faceted mesh (the head) a few per cent less along the triangles' edges
+// and in concavities, where the surface rebuilt from depth holds less area within the profile's
+// reach than a plane would: light the exact reference loses and no normalised filter can.
+// Throws std::invalid_argument for a scene of several materials (its reference is per material).
+Reference make_mass_reference(const Scene& scene, long max_cpu_pixels, int stride);
+
+// The energy-conserving reference: `reference` divided by `mass` per channel at every translucent
+// pixel (the receivers where both hold values), the input elsewhere; RGBA like Reference::rgba.
+std::vector<float> divide_by_mass(const Reference& reference, const Reference& mass, const Scene& scene);
+
 }  // namespace sss_bench

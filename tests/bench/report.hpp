@@ -19,9 +19,6 @@ bool is_pictured_scene(const std::string& scene, int width, const std::vector<st
 bool is_pictured_method(const ResultRow& row);
 // "head-close-160x90-separable-17-follow": the file stem of a row's pictures.
 std::string picture_stem(const ResultRow& row);
-// The error mapped to the top of the heat map's colour ramp: 10 % of the reference's brightest
-// translucent value, so maps of one scene compare across methods.
-double heat_map_scale(const RgbImage& reference, const uint8_t* mask);
 
 void write_results_document(const std::string& path, const std::string& out_dir, const RunInfo& info,
                             const std::vector<ResultRow>& rows, const std::vector<ReferenceCheck>& checks,

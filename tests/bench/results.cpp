@@ -50,19 +50,24 @@ const std::vector<std::string>& csv_columns() {
       "translucent_pixels", "reference_stride", "time_extrapolated", "halo_energy", "footprint_mm", "sweep",
       "relative_rmse_interior", "pixels_interior", "miss_interior", "miss_interior_r", "miss_interior_g",
       "miss_interior_b", "pixels_silhouette", "miss_silhouette", "miss_silhouette_r", "miss_silhouette_g",
-      "miss_silhouette_b", "pixels_border", "miss_border", "miss_border_r", "miss_border_g", "miss_border_b"};
+      "miss_silhouette_b", "pixels_border", "miss_border", "miss_border_r", "miss_border_g", "miss_border_b",
+      "miss_interior_conserving", "miss_interior_conserving_r", "miss_interior_conserving_g",
+      "miss_interior_conserving_b"};
   return columns;
 }
 
 namespace {
 
-// The region columns of csv_columns() from "pixels_interior" on, in that order.
+// The region columns of csv_columns() from "pixels_interior" on, in that order, then the
+// conserving reference's.
 std::string region_fields(const ResultRow& r) {
   std::string text;
   for (const RegionScore& score : r.region) {
     text += ',' + std::to_string(score.pixels) + ',' + format(score.miss);
     for (double v : score.miss_channel) text += ',' + format(v);
   }
+  text += ',' + format(r.interior_conserving.miss);
+  for (double v : r.interior_conserving.miss_channel) text += ',' + format(v);
   return text;
 }
 
@@ -176,6 +181,11 @@ void write_json(const std::string& path, const RunInfo& info, const std::vector<
           {"miss", json_number(score.miss)},
           {"miss_rgb", {json_number(score.miss_channel[0]), json_number(score.miss_channel[1]), json_number(score.miss_channel[2])}}};
     }
+    const RegionScore& conserving = r.interior_conserving;
+    j["results"].back()["interior_conserving"] = {
+        {"miss", json_number(conserving.miss)},
+        {"miss_rgb", {json_number(conserving.miss_channel[0]), json_number(conserving.miss_channel[1]),
+                      json_number(conserving.miss_channel[2])}}};
   }
   open_for_writing(path) << j.dump(2) << "\n";
 }

@@ -70,6 +70,11 @@ struct ResultRow {
   // interior alone (relative_rmse above is over every translucent pixel).
   std::array<RegionScore, 3> region;
   double relative_rmse_interior = std::numeric_limits<double>::quiet_NaN();
+  // The head scenes (head-close, -mid, -far, -grazing): the interior miss once more, against the
+  // energy-conserving reference, the exact one divided per channel and receiver by the mass the
+  // same convolution gives a uniform irradiance of 1 (reference.hpp: make_mass_reference), which
+  // takes out the light the faceted surface loses and no normalised filter can. NaN elsewhere.
+  RegionScore interior_conserving;
   const RegionScore& interior() const { return region[0]; }
 };
 

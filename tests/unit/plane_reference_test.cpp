@@ -1,11 +1,14 @@
 // The fronto-parallel plane reference (module/src/math/plane_reference.hpp): its 1D weights, and the
 // whole convolution against the brute-force 2D surface convolution (exact_reference.hpp) on a
-// small plane, where both must give the same numbers.
+// small plane, where both must give the same numbers. The same for the turned plane under an
+// orthographic camera (convolve_turned_plane): against the facing plane's where it does not turn,
+// against the 2D reference where it does.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "math/exact_reference.hpp"
@@ -135,6 +138,176 @@ TEST(PlaneReference, UniformLightStaysUniformInsideAndIsLostPastTheFrame) {
     EXPECT_LT(out[c], 0.95) << c;
     EXPECT_GT(out[c], 0.25) << c;
   }
+}
+
+// Light with every frequency the filter meets, on a width x height frame: a step, a bright spot and
+// a per-pixel pattern, different per channel.
+std::vector<float> irregular_light(int width, int height) {
+  std::vector<float> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+      const float step = x + y < (width + height) / 2 ? 1.0f : 0.02f;
+      const float spot = (x - width / 3) * (x - width / 3) + (y - height / 2) * (y - height / 2) <= 2 ? 4.0f : 0.0f;
+      const float pattern = 0.1f * static_cast<float>((x * 7 + y * 13) % 5);
+      rgba[i * 4 + 0] = step + spot + pattern;
+      rgba[i * 4 + 1] = 0.5f * step + spot;
+      rgba[i * 4 + 2] = 0.25f * step + pattern;
+      rgba[i * 4 + 3] = 1.0f;
+    }
+  }
+  return rgba;
+}
+
+// The largest |x - y| / |y| over two images of the same size.
+double largest_relative_difference(const std::vector<double>& x, const std::vector<double>& y) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::fabs(x[i] - y[i]) / std::fabs(y[i]));
+  return worst;
+}
+
+// Not turned (c = 0), the turned plane's 2D sum is the facing plane's two 1D passes: the same pixel
+// integrals, skipped by the same rule, summed in another order. Pixels wider than tall, so that a
+// swap of a and b would show.
+TEST(TurnedPlaneReference, WithoutShiftEqualsTheFrontoParallelPlane) {
+  const int width = 40, height = 30;
+  const std::vector<float> rgba = irregular_light(width, height);
+  const GaussianProfile profile = sss::math::skin_profile_terms();
+  const sss::math::PlaneInput facing{width, height, rgba.data(), 0.4, 0.25};
+  std::vector<double> expected(static_cast<std::size_t>(width) * height * 3);
+  sss::math::convolve_fronto_parallel_plane(facing, profile, expected.data());
+  sss::math::TurnedPlaneInput turned;
+  turned.width = width;
+  turned.height = height;
+  turned.irradiance = rgba.data();
+  turned.footprint = {0.4, 0.25, 0.0};
+  std::vector<double> result(expected.size());
+  sss::math::convolve_turned_plane(turned, profile, {0, 0, width, height}, result.data());
+  EXPECT_LT(largest_relative_difference(result, expected), 1e-12);
+}
+
+// Only the receivers of the region are written, and they do not depend on the thread count.
+TEST(TurnedPlaneReference, WritesTheRegionOnlyWithAnyThreadCount) {
+  const int width = 30, height = 24;
+  const std::vector<float> rgba = irregular_light(width, height);
+  sss::math::TurnedPlaneInput turned;
+  turned.width = width;
+  turned.height = height;
+  turned.irradiance = rgba.data();
+  turned.footprint = {0.5, 0.9, -0.35};
+  const sss::math::PixelRegion region{5, 7, 13, 9};
+  std::vector<double> one(static_cast<std::size_t>(width) * height * 3, -1.0), three(one);
+  sss::math::convolve_turned_plane(turned, sss::math::skin_profile_terms(), region, one.data(), 1);
+  sss::math::convolve_turned_plane(turned, sss::math::skin_profile_terms(), region, three.data(), 3);
+  EXPECT_EQ(one, three);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const bool inside = x >= region.x && x < region.x + region.width && y >= region.y && y < region.y + region.height;
+      const double v = one[(static_cast<std::size_t>(y) * width + x) * 3];
+      EXPECT_EQ(v == -1.0, !inside) << x << ", " << y;
+    }
+  }
+}
+
+// The footprint from the projection and the plane: under an orthographic camera with p mm pixels, a
+// plane turned by t about the screen's x axis has a = p, b = p / cos t, c = 0; about y, a = p / cos t,
+// b = p, c = 0; about the diagonal the rows shift (c != 0) and the area is still p² / cos t.
+TEST(TurnedPlaneReference, FootprintFromTheProjectionAndThePlane) {
+  const double pixel = 0.3, t = 60.0 * kPi / 180.0;
+  const int width = 24, height = 20;
+  const sss::math::Matrix4 m = sss_test::orthographic_matrix(static_cast<float>(0.5 * pixel * width),
+                                                             static_cast<float>(0.5 * pixel * height), 1.0f, 200.0f);
+  // The float matrix's pixel sides.
+  const double px = 2.0 / (static_cast<double>(m[0]) * width), py = 2.0 / (static_cast<double>(m[5]) * height);
+  const sss::math::Vec3 point{0.0, 0.0, -100.0};
+  const auto footprint = [&](sss::math::Vec3 n) {
+    return sss::math::turned_plane_footprint(m, width, height, point, n, 1.0, 3, 4);
+  };
+  const auto about_x = footprint({0.0, -std::sin(t), std::cos(t)});
+  EXPECT_NEAR(about_x.a_mm, px, 1e-12);
+  EXPECT_NEAR(about_x.b_mm, py / std::cos(t), 1e-12);
+  EXPECT_NEAR(about_x.c_mm, 0.0, 1e-12);
+  const auto about_y = footprint({std::sin(t), 0.0, std::cos(t)});
+  EXPECT_NEAR(about_y.a_mm, px / std::cos(t), 1e-12);
+  EXPECT_NEAR(about_y.b_mm, py, 1e-12);
+  EXPECT_NEAR(about_y.c_mm, 0.0, 1e-12);
+  const double r = std::sqrt(0.5);
+  const auto diagonal = footprint({std::sin(t) * r, -std::sin(t) * r, std::cos(t)});
+  EXPECT_GT(std::fabs(diagonal.c_mm), 0.1 * px);
+  EXPECT_NEAR(diagonal.a_mm * diagonal.b_mm, px * py / std::cos(t), 1e-12);
+  EXPECT_THROW(footprint({1.0, 0.0, 0.0}), std::invalid_argument);  // edge-on: the rays miss it
+}
+
+// The check for turned planes: small orthographic planes turned 30, 60 and 75 degrees about
+// the screen's x axis, its y axis and a diagonal, their depth exact (distance_f64), irregular light:
+// the closed form equals the 2D surface convolution with central differences (which on such a
+// plane are exact, surface.hpp) at every pixel, frame border included (both take the plane to end
+// there). The 2D reference truncates each term where 1e-15 of its mass is left.
+TEST(TurnedPlaneReference, EqualsTheBruteForce2dReference) {
+  const int width = 24, height = 20;
+  const double pixel = 0.3, distance = 100.0;
+  const sss::math::Matrix4 m = sss_test::orthographic_matrix(static_cast<float>(0.5 * pixel * width),
+                                                             static_cast<float>(0.5 * pixel * height), 1.0f, 400.0f);
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  const std::vector<float> rgba = irregular_light(width, height);
+  const GaussianProfile profile = sss::math::skin_profile_terms();
+  sss::math::ExactOptions options;
+  options.tail_mass = 1e-15;
+  double worst = 0.0;
+  for (double axis_degrees : {0.0, 90.0, 45.0}) {
+    for (double turn_degrees : {30.0, 60.0, 75.0}) {
+      SCOPED_TRACE("turned " + std::to_string(turn_degrees) + " about " + std::to_string(axis_degrees));
+      // The normal (0, 0, 1) turned about the screen axis at axis_degrees from x.
+      const double t = turn_degrees * kPi / 180.0, a = axis_degrees * kPi / 180.0;
+      const sss::math::Vec3 normal{std::sin(t) * std::sin(a), -std::sin(t) * std::cos(a), std::cos(t)};
+      const sss::math::Vec3 point{0.0, 0.0, -distance};
+      std::vector<double> depth(n);
+      for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+          // An orthographic ray keeps its x and y: the plane's depth there.
+          const sss::math::Vec3 at = sss::math::pixel_position(m, width, height, x, y, distance);
+          depth[static_cast<std::size_t>(y) * width + x] = distance + (normal.x * at.x + normal.y * at.y) / normal.z;
+        }
+      }
+      sss::math::ExactInput in;
+      in.width = width;
+      in.height = height;
+      in.irradiance = rgba.data();
+      in.distance_f64 = depth.data();
+      in.projection = m;
+      in.world_units_per_mm = 1.0;
+      std::vector<double> brute(n * 3);
+      sss::math::exact_surface_convolution(in, profile, {0, 0, width, height}, brute.data(), options);
+      sss::math::TurnedPlaneInput turned;
+      turned.width = width;
+      turned.height = height;
+      turned.irradiance = rgba.data();
+      turned.footprint = sss::math::turned_plane_footprint(m, width, height, point, normal, 1.0, width / 2, height / 2);
+      std::vector<double> closed(n * 3);
+      sss::math::convolve_turned_plane(turned, profile, {0, 0, width, height}, closed.data());
+      const double difference = largest_relative_difference(closed, brute);
+      EXPECT_LT(difference, 1e-9);
+      worst = std::max(worst, difference);
+    }
+  }
+  std::printf("largest relative difference to the 2D reference on the turned planes: %.3g\n", worst);
+}
+
+TEST(TurnedPlaneReference, RefusesBadArguments) {
+  const std::vector<float> rgba(16 * 4, 1.0f);
+  std::vector<double> out(16 * 3);
+  sss::math::TurnedPlaneInput in;
+  in.width = in.height = 4;
+  in.irradiance = rgba.data();
+  in.footprint = {0.5, 0.5, 0.1};
+  const GaussianProfile profile = sss::math::skin_profile_terms();
+  EXPECT_NO_THROW(sss::math::convolve_turned_plane(in, profile, {0, 0, 4, 4}, out.data()));
+  EXPECT_THROW(sss::math::convolve_turned_plane(in, profile, {1, 0, 4, 4}, out.data()), std::invalid_argument);
+  in.footprint.b_mm = 0.0;
+  EXPECT_THROW(sss::math::convolve_turned_plane(in, profile, {0, 0, 4, 4}, out.data()), std::invalid_argument);
+  in.footprint = {0.5, 0.5, std::nan("")};
+  EXPECT_THROW(sss::math::convolve_turned_plane(in, profile, {0, 0, 4, 4}, out.data()), std::invalid_argument);
+  EXPECT_THROW(sss::math::turned_plane_footprint({1.0, 0.0, 0.0}, {2.0, 0.0, 0.0}), std::invalid_argument);
 }
 
 }  // namespace

@@ -413,6 +413,32 @@ const std::vector<std::string>* shot_row(const Csv& csv, const Columns& c, const
   return nullptr;
 }
 
+// The turn sweep's interior miss (docs/benchmarks/turn-sweep/results.csv, sss_bench_turns) for a
+// series on the planes turned 60 degrees: every footprint, axis and projection it ran. Empty where
+// the sweep did not run the series (it runs the default, the sum of Gaussians and the
+// cross-bilateral mode at their tap counts, and no scattering).
+std::vector<double> turned_60(const Csv& turns, const Series& s) {
+  const int scene = turns.column("scene"), turn = turns.column("turn_deg"), method = turns.column("method"),
+            taps = turns.column("taps"), miss = turns.column("miss_interior");
+  std::vector<double> out;
+  if (scene < 0 || turn < 0 || method < 0 || taps < 0 || miss < 0) return out;
+  for (const auto& row : turns.rows) {
+    const double m = number(field(row, miss));
+    if (field(row, scene) == "plane" && number(field(row, turn)) == 60.0 && field(row, method) == s.method &&
+        number(field(row, taps)) == s.taps && !std::isnan(m)) {
+      out.push_back(m);
+    }
+  }
+  return out;
+}
+
+// "median (low–high)", or "–" for none.
+std::string median_and_range(const std::vector<double>& v) {
+  if (v.empty()) return "–";
+  return miss3(median(v)) + " (" + miss3(*std::min_element(v.begin(), v.end())) + "–" +
+         miss3(*std::max_element(v.begin(), v.end())) + ")";
+}
+
 std::string headline(const fs::path& root) {
   const fs::path results = root / "docs/benchmarks";
   const Csv csv = read_csv(results / "results.csv");
@@ -422,10 +448,13 @@ std::string headline(const fs::path& root) {
     std::cerr << "sss_docs: docs/benchmarks/results.csv lacks a column the headline needs\n";
     throw Failure{};
   }
+  const fs::path turn_csv = results / "turn-sweep/results.csv";
+  const Csv turns = fs::exists(turn_csv) ? read_csv(turn_csv) : Csv{};
   std::ostringstream out;
-  out << "| method | passes | interior `miss`, footprint sweep: median (range) | interior `miss`, head close-up "
+  out << "| method | passes | interior `miss`, footprint sweep: median (range) | interior `miss`, planes turned "
+         "60°: median (range) | interior `miss`, head close-up "
       << kShotWidth << "×" << kShotHeight << " | ms, same shot | × copy |\n"
-      << "|---|---:|---:|---:|---:|---:|\n";
+      << "|---|---:|---:|---:|---:|---:|---:|\n";
   for (const Series& s : kRows) {
     std::vector<double> sweep;
     for (const auto& row : csv.rows) {
@@ -434,10 +463,8 @@ std::string headline(const fs::path& root) {
     }
     const std::vector<std::string>* shot = shot_row(csv, c, s);
     const bool timed = shot != nullptr && std::string(s.method) != "no-scattering";
-    out << "| " << s.label << " | " << (shot ? field(*shot, c.passes) : "–") << " | "
-        << (sweep.empty() ? std::string("–")
-                          : miss3(median(sweep)) + " (" + miss3(*std::min_element(sweep.begin(), sweep.end())) +
-                                "–" + miss3(*std::max_element(sweep.begin(), sweep.end())) + ")")
+    out << "| " << s.label << " | " << (shot ? field(*shot, c.passes) : "–") << " | " << median_and_range(sweep)
+        << " | " << median_and_range(turned_60(turns, s))
         << " | " << (shot ? miss3(number(field(*shot, c.miss))) : "–") << " | "
         << (timed ? sig3(number(field(*shot, c.time_ms))) : "–") << " | "
         << (timed ? sig3(number(field(*shot, c.ratio))) : "–") << " |\n";
@@ -445,7 +472,12 @@ std::string headline(const fs::path& root) {
   const std::string renderer = json_string(json, "renderer");
   out << "\nMeasured on `" << renderer << "` (" << json_string(json, "version")
       << (renderer.find("llvmpipe") != std::string::npos ? "; Mesa's CPU rasteriser: read its times as ratios" : "")
-      << ") on " << json_string(json, "date") << "; how: [docs/benchmarks.md](docs/benchmarks.md).";
+      << ") on " << json_string(json, "date") << "; how: [docs/benchmarks.md](docs/benchmarks.md)";
+  if (!turns.rows.empty()) {
+    out << "; the turned planes (0.1-1 mm per facing pixel, turned about three screen axes, orthographic and "
+           "perspective): [docs/benchmarks/turn-sweep.md](docs/benchmarks/turn-sweep.md)";
+  }
+  out << ".";
   // The same shot on a GPU, where a run is committed (scripts/gpu/).
   const fs::path gpu = root / "docs/benchmarks-gpu";
   if (fs::exists(gpu / "results.csv") && fs::exists(gpu / "results.json")) {

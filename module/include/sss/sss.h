@@ -51,7 +51,7 @@
  * (unless SSS_CREATE_NO_STATE_RESTORE) and leaves no GL error: program, vertex array, draw and read
  * framebuffers, renderbuffer, active texture; on units 0-5 the 2D and 2D-multisample texture and sampler;
  * uniform buffer binding 0 and the generic one; the unpack buffer and alignment/row length/skips (pack
- * state too under SSS_CREATE_DEBUG_CHECKS); image unit 0; viewport; sample mask word 0; the enables
+ * state too under SSS_CREATE_DEBUG_CHECKS); image units 0 and 1; viewport; sample mask word 0; the enables
  * SCISSOR, DEPTH, STENCIL, BLEND, CULL_FACE, FRAMEBUFFER_SRGB, RASTERIZER_DISCARD, SAMPLE_ALPHA_TO_COVERAGE,
  * SAMPLE_COVERAGE, SAMPLE_MASK, POLYGON_OFFSET_FILL, DEPTH_CLAMP, COLOR_LOGIC_OP, CLIP_DISTANCE0-7,
  * MULTISAMPLE; colour mask (buffer 0); blend func/equation (buffer 0; MSAA); polygon mode; front/back stencil;
@@ -119,7 +119,7 @@ typedef struct sss_settings {
   int32_t taps;             /**< odd, [SSS_MIN_TAPS, SSS_MAX_TAPS]: most taps per pass. Default 17 */
   uint32_t flags;           /**< SSS_FOLLOW_SURFACE, SSS_AUTO_HALF_RESOLUTION */
   uint32_t mode;            /**< sss_mode. Default SSS_MODE_SEPARABLE */
-  int32_t cbf_taps;         /**< odd, [3, 65]: taps per pass of the cross-bilateral mode. Default 13 */
+  int32_t cbf_taps;         /**< odd, [3, 65]: most taps per pass of the cross-bilateral mode. Default 13 */
   float cbf_r_max_mm;       /**< (0, 50]: cross-bilateral footprint radius in profile mm. Default 4.5 */
   uint32_t cbf_profile;     /**< cross-bilateral sss_profile (measured/KERNEL need sss_tools_init). Default MIKKELSEN_2010 */
   const struct sss_kernel_desc *kernel; /**< NULL: eq. (1) from the above (default); else a sss_tools.h kernel (copied) */

@@ -22,7 +22,7 @@ CbfKernel cbf_kernel(const SpikeGaussianProfile& profile, int taps, double r_max
   k.spacing = footprint_spacing(taps / 2);
   for (int c = 0; c < 3; ++c) {
     const auto s = static_cast<std::size_t>(c);
-    k.spike_blend[s] = static_cast<float>(1.0 - std::sqrt(1.0 - profile.spike[s]));
+    k.spike_blend[s] = static_cast<float>(profile.spike[s]);
     k.inv_two_variance[s] = static_cast<float>(1.0 / (2.0 * broad_variance_mm2(profile, c)));
   }
   return k;

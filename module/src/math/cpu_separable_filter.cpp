@@ -33,9 +33,16 @@ struct Indices {
   std::uint16_t at(int x, int y) const { return ids[static_cast<std::size_t>(y) * width + x]; }
 };
 
-// A neighbour of (x, y) for the surface's tangent (pass_surface.hpp): inside the clamp rectangle,
-// with the view distance the passes' inputs hold (NaN for a colour they do not blur), in front of
-// the camera.
+// What every pixel of a pass shares: the frame's constants (depth linearisation, clamp, view
+// offsets), the view distance per pixel as the passes' inputs hold it, the per-pixel profiles'
+// indices, and how the model walks the surface.
+struct PassFrame {
+  const PassConstants& shared;
+  const Plane& distance;
+  Indices indices;
+  CpuWalkChoices walk;
+};
+
 // The neighbour (x + ox, y + oy) of (x, y) for the surface's tangent (pass_surface.hpp): inside the
 // clamp rectangle, with the view distance the passes' inputs hold (NaN for a colour they do not
 // blur), in front of the camera, and with per-pixel profiles the centre's whole index (another
@@ -53,24 +60,34 @@ Neighbour neighbour_at(const PassConstants& shared, const Plane& distance, const
 
 // The pass's walk over the surface at (x, y) (pass_surface.hpp), from the distances of its four
 // neighbours (the vertical pass needs both tangents; the horizontal one only T_x).
-PassGeometry pass_geometry(const PassConstants& shared, const Plane& distance, const Indices& indices, int axis, int x,
-                           int y, float d0) {
+PassGeometry pass_geometry(const PassFrame& frame, int axis, int x, int y, float d0) {
+  if (frame.walk.facing) return PassGeometry{};
+  const PassConstants& shared = frame.shared;
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const std::array<float, 2> g = ray_slope(shared, cx, cy);
-  const auto neighbour = [&](int ox, int oy) { return neighbour_at(shared, distance, indices, x, y, ox, oy); };
-  const Float3 tx = surface_tangent(shared, g, 0, d0, neighbour(-1, 0), neighbour(1, 0));
-  if (axis == 0) return horizontal_geometry(shared, g, d0, tx);
-  const Float3 ty = surface_tangent(shared, g, 1, d0, neighbour(0, -1), neighbour(0, 1));
-  return vertical_geometry(shared, g, d0, tx, ty);
+  const auto neighbour = [&](int ox, int oy) {
+    return neighbour_at(shared, frame.distance, frame.indices, x, y, ox, oy);
+  };
+  const TangentRule rule = frame.walk.tangent;
+  const Float3 tx = surface_tangent(shared, g, 0, d0, neighbour(-1, 0), neighbour(1, 0), rule);
+  PassGeometry walk;
+  if (axis == 0) {
+    walk = horizontal_geometry(shared, g, d0, tx);
+  } else {
+    const Float3 ty = surface_tangent(shared, g, 1, d0, neighbour(0, -1), neighbour(0, 1), rule);
+    walk = vertical_geometry(shared, g, d0, tx, ty);
+  }
+  walk.slack *= frame.walk.slack / kFollowSurfaceSlack;
+  return walk;
 }
 
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y, sheared: pass_surface.hpp), with the look
-// `k` (pixels per mm and the follow-surface numbers) and the frame's `shared` constants (depth
-// linearisation, clamp, view offsets). `distance`: the view distance per pixel as the passes'
-// inputs hold it. Returns false when the pixel is left as it is (not translucent or no usable depth).
+// `k` (pixels per mm and the follow-surface numbers) in `frame`. Returns false when the pixel is left as it is (not translucent or no usable depth).
 bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
-                  const PassConstants& shared, const Plane& source, const Plane& distance, const Indices& indices,
-                  int axis, int x, int y, Rgba* result) {
+                  const PassFrame& frame, const Plane& source, int axis, int x, int y, Rgba* result) {
+  const PassConstants& shared = frame.shared;
+  const Plane& distance = frame.distance;
+  const Indices& indices = frame.indices;
   const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
   const Rgba centre = source.rgba(x, y);
   if (!(centre[3] > 0.0f) || !in_colour_range(centre.data(), 4)) return false;
@@ -79,7 +96,7 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   const float w = clip_w(shared, centre_distance);
   if (!(w > 0.0f) || std::isinf(w)) return false;
 
-  const PassGeometry walk = pass_geometry(shared, distance, indices, axis, x, y, centre_distance);
+  const PassGeometry walk = pass_geometry(frame, axis, x, y, centre_distance);
   const float step = k.pixels_per_mm[static_cast<std::size_t>(axis)] * strength / w * walk.ratio;
   const bool gaussian_depth = depth_variance_mm2 > 0.0f;
   const float follow_surface = (gaussian_depth ? k.mm_per_world : k.follow_surface_factor) / strength;
@@ -155,6 +172,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   const Plane color{w, h, 4, image.color};
   const std::vector<float> distances = pass_distances(constants, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
+  const PassFrame frame{constants, distance, Indices{}, image.walk};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
   std::vector<float> accumulated(count * 3, 0.0f);  // the earlier terms' vertical sums
@@ -166,8 +184,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
     cpu_passes::horizontal_into_intermediate(
         image, constants, false,
         [&](int x, int y, Rgba* blurred) {
-          return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, constants, color, distance,
-                              Indices{}, 0, x, y, blurred);
+          return filter_pixel(term.horizontal, kernel, term.depth_variance_mm2, constants, frame, color, 0, x, y,
+                              blurred);
         },
         intermediate.data());
     // Vertical pass from the intermediate, plus the earlier terms: into the module's sum target,
@@ -176,8 +194,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
     cpu_passes::vertical(
         image, constants,
         [&](int x, int y, Rgba* blurred) {
-          return filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, constants, half_plane, distance,
-                              Indices{}, 1, x, y, blurred);
+          return filter_pixel(term.vertical, kernel, term.depth_variance_mm2, constants, frame, half_plane, 1, x, y,
+                              blurred);
         },
         [&](std::size_t i, const Rgba& blurred) {
           for (int c = 0; c < 3; ++c) {
@@ -207,6 +225,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
   const std::vector<float> distances = pass_distances(shared, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
   const Indices indices{ids, w};
+  const PassFrame frame{shared, distance, indices, image.walk};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
   // The pixel's profile, or -1 where its index has none (the pixel is left alone).
@@ -220,7 +239,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
     const PassKernel& kernel = *kernels[static_cast<std::size_t>(p)];
     const PassTerm& term = kernel.terms.front();
     return filter_pixel(axis == 0 ? term.horizontal : term.vertical, kernel, term.depth_variance_mm2,
-                        constants[static_cast<std::size_t>(p)], shared, source, distance, indices, axis, x, y, blurred);
+                        constants[static_cast<std::size_t>(p)], frame, source, axis, x, y, blurred);
   };
   cpu_passes::horizontal_into_intermediate(
       image, constants.front(), false, [&](int x, int y, Rgba* blurred) { return pass(0, color, x, y, blurred); },

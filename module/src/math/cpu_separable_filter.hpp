@@ -10,9 +10,20 @@
 
 #include "filter_constants.hpp"
 #include "pass_kernel.hpp"
+#include "pass_surface.hpp"
 #include "profile_set.hpp"
 
 namespace sss::math {
+
+// How the model walks the surface (pass_surface.hpp). The defaults are the passes'; the others let
+// tests/bench/surface_study.cpp measure the passes' choices against their alternatives.
+struct CpuWalkChoices {
+  TangentRule tangent = TangentRule::blend;
+  float slack = kFollowSurfaceSlack;  // the ramp's slack per unit of a tap's distance along the line
+  // The passes before they walked the surface: every pixel stepped as if its surface faced the
+  // camera, follow-surface on the raw depth difference (no shear, no slack).
+  bool facing = false;
+};
 
 struct CpuFilterImage {
   int width = 0, height = 0;
@@ -24,6 +35,7 @@ struct CpuFilterImage {
   // The horizontal pass's target is RGBA16F (every colour but RGBA32F, whose intermediate is
   // RGBA32F: gl::FilterRun::intermediate_format): round what it stores like the GL.
   bool intermediate_is_half = true;
+  CpuWalkChoices walk;  // the passes' unless a study asks otherwise
 };
 
 // An image of `width` x `height` pixels with these colour and depth planes, the rest as above.

@@ -8,14 +8,14 @@
 namespace sss::math {
 
 // Eq. (1): strength, falloff and kernel millimetres per millimetre of skin.
-inline constexpr std::array<float, 3> kCalibratedStrength = {0.693610072f, 0.978639185f, 0.824371934f};
-inline constexpr std::array<float, 3> kCalibratedFalloff = {0.899528146f, 0.126406983f, 0.0799999982f};
-inline constexpr float kCalibratedSeparableScale = 0.428944111f;
+inline constexpr std::array<float, 3> kCalibratedStrength = {0.683215618f, 1.0f, 0.824371934f};
+inline constexpr std::array<float, 3> kCalibratedFalloff = {0.970074236f, 0.125469476f, 0.0799999982f};
+inline constexpr float kCalibratedSeparableScale = 0.443194121f;
 // Table 1's strength and falloff with their own fitted scale.
-inline constexpr float kTable1SeparableScale = 0.417189926f;
+inline constexpr float kTable1SeparableScale = 0.432892561f;
 // The artist model (supplementary §E): near and far variance (mm²) and near weight per channel.
-inline constexpr std::array<float, 3> kCalibratedNearVarianceMm2 = {0.0146977585f, 0.0323268473f, 0.0145371454f};
-inline constexpr std::array<float, 3> kCalibratedFarVarianceMm2 = {2.04194164f, 3.73170376f, 0.946319938f};
-inline constexpr std::array<float, 3> kCalibratedNearWeight = {0.505393445f, 0.983223438f, 0.992999971f};
+inline constexpr std::array<float, 3> kCalibratedNearVarianceMm2 = {0.0159175489f, 0.0319527611f, 0.0143624023f};
+inline constexpr std::array<float, 3> kCalibratedFarVarianceMm2 = {2.04194164f, 1.10612977f, 0.513344884f};
+inline constexpr std::array<float, 3> kCalibratedNearWeight = {0.510988116f, 0.983785331f, 0.987421811f};
 
 }  // namespace sss::math

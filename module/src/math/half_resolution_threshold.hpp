@@ -3,8 +3,8 @@
 // smallest candidate at which the half-resolution path's interior miss stays within
 // kHalfResolutionMissMargin of the full-size passes' on every scene and footprint
 // (docs/benchmarks/half-resolution.md; the cases in tests/bench/half_threshold_fit.json).
-// The candidate below it, 6, upsamples plane-disk at 0.776 mm per pixel
-// (a 6.0-pixel reach): miss 0.156 against the full-size passes' 0.099.
+// The candidate below it, 6, upsamples plane-disk at 0.751 mm per pixel
+// (a 6.0-pixel reach): miss 0.158 against the full-size passes' 0.103.
 #pragma once
 
 namespace sss::math {

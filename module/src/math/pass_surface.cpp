@@ -54,6 +54,22 @@ void set_off_surface(const PassConstants& k, const Float3& ray, const Float3& n,
   }
 }
 
+// The share a for the rules the passes do not take (TangentRule).
+float rule_share(TangentRule rule, float limit, float dm, float dp) {
+  switch (rule) {
+    case TangentRule::reference:
+      if (std::fabs(dp + dm) <= limit) return 0.5f;
+      [[fallthrough]];
+    case TangentRule::smaller_step:
+      return std::fabs(dm) < std::fabs(dp) ? 0.0f : 1.0f;
+    case TangentRule::central:
+      return 0.5f;
+    case TangentRule::blend:
+      break;
+  }
+  return plus_share(limit, dm, dp);
+}
+
 }  // namespace
 
 std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy) {
@@ -61,14 +77,14 @@ std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy) {
 }
 
 Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, int axis, float d0, const Neighbour& minus,
-                       const Neighbour& plus) {
+                       const Neighbour& plus, TangentRule rule) {
   const std::size_t a = axis == 0 ? 0 : 1;
   const float w0 = clip_w(k, d0);
   const float limit = std::fabs(k.pixel_span[a]) * w0;  // a facing pixel's width
   // The neighbours' depth changes, 0 where one does not serve.
   const float dp = plus.usable ? plus.distance - d0 : 0.0f;
   const float dm = minus.usable ? minus.distance - d0 : 0.0f;
-  const float share = plus.usable ? (minus.usable ? plus_share(limit, dm, dp) : 1.0f) : (minus.usable ? 0.0f : 0.5f);
+  const float share = plus.usable ? (minus.usable ? rule_share(rule, limit, dm, dp) : 1.0f) : (minus.usable ? 0.0f : 0.5f);
   // a·T+ + (1 - a)·(-T-), with T± = P(±1) - P: its depth change D and its clip w W.
   const float depth = share * dp - (1.0f - share) * dm;
   const float w = w0 - k.depth_terms[1] * (share * dp + (1.0f - share) * dm);

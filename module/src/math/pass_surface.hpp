@@ -39,8 +39,8 @@
 // The reference switches between central and one-sided at the threshold; a pass cannot: a depth
 // quantised by a 24-bit buffer, or by the R8UI index's 8 bits, moves the second difference across
 // it from pixel to pixel, and the switch changes the tangent by up to half a pixel's depth change.
-// The blend is continuous in the distances. Measured against the reference's own rule and against
-// always taking the smaller step: docs/surface-turns.md.
+// The blend is continuous in the distances. Measured against the reference's own rule, always the
+// smaller step and always central (TangentRule): docs/benchmarks/surface-study.md.
 //
 // The two passes
 // --------------
@@ -85,9 +85,8 @@
 // bend of up to 14 degrees between the centre and the tap, or a curvature radius down to twice the
 // tap's distance, while a step (nose over cheek, ear over neck) lies off the line by far more than
 // that. The Gaussian depth correction (SSS_FOLLOW_SURFACE 2) is the profile's own law in the
-// third dimension, exp(-h²/2v), and keeps no slack. On the head close-up against the energy-
-// conserving reference, the default's interior miss falls from 0.142 to 0.124 with it
-// (docs/surface-turns.md).
+// third dimension, exp(-h²/2v), and keeps no slack. No slack and twice the slack, measured on the
+// head and on curved surfaces: docs/benchmarks/surface-study.md.
 #pragma once
 
 #include <array>
@@ -110,10 +109,16 @@ struct Neighbour {
 // The view ray's lateral slope g (x, y) at window position (wx, wy).
 std::array<float, 2> ray_slope(const PassConstants& k, float wx, float wy);
 
+// How the tangent weighs its two one-sided differences where both neighbours serve: the passes'
+// blend (above), or, to measure that choice against (tests/bench/surface_study.cpp), the reference's
+// switch (central where smooth, else the smaller depth change), always the smaller depth change, or
+// always the central difference.
+enum class TangentRule { blend, reference, smaller_step, central };
+
 // The surface tangent along `axis` (0 x, 1 y) at the centre from its two neighbours on that axis (at
 // window offsets -1 and +1), by the rule above.
 Float3 surface_tangent(const PassConstants& k, const std::array<float, 2>& g, int axis, float d0, const Neighbour& minus,
-                       const Neighbour& plus);
+                       const Neighbour& plus, TangentRule rule = TangentRule::blend);
 
 // The share of a tap's distance along the line that follow-surface's ramp leaves unfaded (above).
 inline constexpr float kFollowSurfaceSlack = 0.25f;

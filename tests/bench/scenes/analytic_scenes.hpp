@@ -1,4 +1,5 @@
-// The scenes computed on the CPU (no GL): dot, edges, sphere, depth step, empty.
+// The scenes computed on the CPU (no GL): dot, edges, sphere, depth step, empty, the footprint
+// sweep's planes and the turn sweep's scenes.
 // Internal to sss_bench_scenes.
 #pragma once
 
@@ -26,6 +27,12 @@ Scene make_empty_scene(int width, int height);
 // distance where a pixel measures footprint_mm.
 Scene make_footprint_plane_scene(const std::string& name, double footprint_mm, int width, int height);
 
+// The turn sweep (scenes.hpp: make_turned_plane_scene, make_cylinder_scene, make_footprint_sphere_scene).
+Scene make_turned_plane_scene(double footprint_mm, double turn_degrees, double axis_degrees, bool orthographic,
+                              int width, int height, PlaneGeometry* plane);
+Scene make_cylinder_scene(double footprint_mm, int width, int height);
+Scene make_footprint_sphere_scene(double footprint_mm, int width, int height);
+
 // The cameras, shared with the tests and the report (metres, vertical field of view 30 degrees).
 constexpr double kFovyDegrees = 30.0;
 constexpr double kPlaneDistance = 0.25;         // dot and edges: the plane's view distance
@@ -41,5 +48,14 @@ constexpr double kEmptyDistance = 1.0;
 constexpr double kSpotRadiusMm = 0.5;    // plane-spot: a small bright spot (the dot's)
 constexpr double kDiskRadiusMm = 3.0;    // plane-disk
 constexpr double kAlbedoLow = 0.25;      // plane-albedo: per-pixel albedo in [0.25, 1)
+// The turn sweep: the turned plane's spot (on the lit side, its centre this far from the edge) and
+// its light; the cylinder's and the sphere's radius.
+constexpr double kTurnedSpotOffsetMm = 2.0;
+constexpr double kTurnedSpotLight = 4.0;
+constexpr double kTurnSweepRadius = 0.04;  // 40 mm
+// The turned planes' perspective camera: its corner rays this far off the view axis, so that every
+// pixel sees the plane within this many degrees of its turn and every frame of the turn sweep keeps
+// an interior (analytic_scenes.cpp: turned_plane_fovy_degrees: 4.24 degrees of vertical field of view on a square frame).
+constexpr double kTurnedPlaneSpreadDegrees = 3.0;
 
 }  // namespace sss_bench::detail

@@ -23,6 +23,10 @@ struct HeadView {
   bool preintegrated = false;
 };
 
+// The camera of each head scene by name (scenes.cpp: "head-close", "head-grazing", "head-mid",
+// "head-mixed"; any other name gets the far shot's).
+HeadView head_view(const std::string& name);
+
 // The head scenes' lights (world space, towards the light): the key (which throws the shadow map's
 // shadow), the fill and the ambient, linear colours.
 struct HeadLights {

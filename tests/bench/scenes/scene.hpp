@@ -11,8 +11,10 @@ namespace sss_bench {
 
 struct Scene {
   std::string name;                 // "dot", "edge-0", "edge-30", "edge-45", "sphere", "depth-step",
-                                    // "tilted-30/60/80", "head-close", "head-mid", "head-far", "empty",
-                                    // the footprint sweep's "plane-*"
+                                    // "tilted-30/60/80", "head-close", "head-mid", "head-far",
+                                    // "head-grazing", "head-mixed", "empty",
+                                    // the footprint sweep's "plane-*", the turn sweep's
+                                    // "turned-*", "cylinder", "sphere-40mm"
   int width = 0, height = 0;
   std::vector<float> irradiance;    // RGBA, row 0 at the bottom (GL order); linear diffuse irradiance
                                     // (albedo included); alpha = SSS strength: 1 translucent, 0 not
@@ -32,6 +34,12 @@ struct Scene {
   // for every other scene (one material: d'Eon's skin).
   std::vector<uint8_t> profile;
   std::vector<int> profile_materials;
+};
+
+// The turn sweep's plane (make_turned_plane_scene): a point on it and its unit normal, view space,
+// metres, so that a reference can take its depth and tangents exactly rather than from the floats.
+struct PlaneGeometry {
+  std::array<double, 3> point{}, normal{};
 };
 
 }  // namespace sss_bench

@@ -14,13 +14,18 @@
 #include <vector>
 
 #include "analytic_scenes.hpp"
+#include "calibration.hpp"
 #include "gl_fixture.hpp"
 #include "head_asset.hpp"
 #include "head_scene.hpp"
 #include "math/plane_reference.hpp"
 #include "math/projection.hpp"
+#include "math/surface.hpp"
+#include "regions.hpp"
 #include "scenes.hpp"
 #include "sss/sss.h"
+#include "sweep_geometry.hpp"
+#include "turn_sweep.hpp"
 
 using namespace host_gl;
 
@@ -47,8 +52,9 @@ bool bit_identical(const sss_bench::Scene& a, const sss_bench::Scene& b) {
          std::memcmp(a.projection.data(), b.projection.data(), sizeof a.projection) == 0;
 }
 
-// Everything scene.hpp promises, for any scene.
-void check_scene(const sss_bench::Scene& s, const std::string& name, int width, int height) {
+// Everything scene.hpp promises, for any scene; `perspective` false: an orthographic one (the turn
+// sweep's), with square pixels all the same.
+void check_scene(const sss_bench::Scene& s, const std::string& name, int width, int height, bool perspective = true) {
   SCOPED_TRACE(name);
   EXPECT_EQ(s.name, name);
   ASSERT_EQ(s.width, width);
@@ -60,9 +66,9 @@ void check_scene(const sss_bench::Scene& s, const std::string& name, int width, 
   ASSERT_EQ(s.mask.size(), n);
   EXPECT_EQ(s.world_units_per_mm, 0.001f);
 
-  // A perspective projection with square pixels.
-  EXPECT_EQ(s.projection[11], -1.0f);
-  EXPECT_EQ(s.projection[15], 0.0f);
+  // A perspective (or orthographic) projection with square pixels.
+  EXPECT_EQ(s.projection[11], perspective ? -1.0f : 0.0f);
+  EXPECT_EQ(s.projection[15], perspective ? 0.0f : 1.0f);
   EXPECT_NEAR(s.projection[5] / s.projection[0], static_cast<double>(width) / height, 1e-5);
   sss::math::Matrix4 m{};
   std::copy(s.projection.begin(), s.projection.end(), m.begin());
@@ -107,7 +113,7 @@ class SceneTest : public GlTest {};
 TEST_F(SceneTest, NamesAndErrors) {
   const std::vector<std::string> expected = {"dot",       "edge-0",    "edge-30",    "edge-45",  "sphere",
                                              "depth-step", "tilted-30", "tilted-60", "tilted-80", "head-close",
-                                             "head-mid",  "head-far",  "head-mixed", "empty"};
+                                             "head-mid",  "head-far",  "head-grazing", "head-mixed", "empty"};
   EXPECT_EQ(sss_bench::canonical_scene_names(), expected);
   for (const std::string& name : expected)
     EXPECT_EQ(sss_bench::scene_needs_gl(name), name.rfind("head-", 0) == 0) << name;
@@ -334,6 +340,73 @@ TEST_F(SceneTest, HeadCoverageShrinksWithDistance) {
 
 // The head scenes leave the caller's state as it was, create no lasting object, leave no error,
 // and do not depend on that state.
+// How far each skin pixel of a head scene turns from its view direction (degrees): its normal from
+// its 4-neighbours' positions by central differences (the depth gradient), NaN where one of them
+// is not skin or the pixel is on the frame's edge.
+std::vector<double> depth_gradient_turns(const sss_bench::Scene& s) {
+  sss::math::Matrix4 m{};
+  std::copy(s.projection.begin(), s.projection.end(), m.begin());
+  std::vector<double> turns(pixel_count(s), std::nan(""));
+  const auto at = [&](int x, int y) {
+    return sss::math::pixel_position(m, s.width, s.height, x, y, s.distance[static_cast<size_t>(y) * s.width + x]);
+  };
+  for (int y = 1; y + 1 < s.height; ++y) {
+    for (int x = 1; x + 1 < s.width; ++x) {
+      const size_t p = static_cast<size_t>(y) * s.width + x;
+      if (!s.mask[p] || !s.mask[p - 1] || !s.mask[p + 1] || !s.mask[p - s.width] || !s.mask[p + s.width]) continue;
+      const sss::math::Vec3 n = sss::math::cross(at(x + 1, y) - at(x - 1, y), at(x, y + 1) - at(x, y - 1));
+      const sss::math::Vec3 position = at(x, y);
+      const double c = std::fabs(sss::math::dot(n, position)) / (sss::math::length(n) * sss::math::length(position));
+      turns[p] = std::acos(std::min(1.0, c)) * 180.0 / kPi;
+    }
+  }
+  return turns;
+}
+
+double median_of(std::vector<double> values) {
+  if (values.empty()) return std::nan("");
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
+// head-grazing: the left cheek turned about 70 degrees away, and the frame's interior pixels as
+// scenes.cpp states (numbers measured at 320x180; the same on every backend this suite runs).
+TEST_F(SceneTest, HeadGrazingTurnsTheCheekAway) {
+  const int width = 320, height = 180;
+  const sss_bench::Scene s = sss_bench::make_scene("head-grazing", width, height);
+  check_scene(s, "head-grazing", width, height);
+  sss_bench::detail::Mat4 projection{}, view{};
+  sss_bench::detail::head_camera(sss_bench::detail::head_view("head-grazing"), width, height, &projection, &view);
+  const std::vector<double> turns = depth_gradient_turns(s);
+  const std::vector<uint8_t> interior = sss_bench::region_mask(
+      sss_bench::classify_regions(sss_bench::region_input_of(s, sss_bench::profile_reach_mm(sss::math::skin_profile_terms()))),
+      sss_bench::Region::interior);
+  sss::math::Matrix4 m{};
+  std::copy(s.projection.begin(), s.projection.end(), m.begin());
+  std::vector<double> cheek, inside;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t p = static_cast<size_t>(y) * width + x;
+      if (std::isnan(turns[p])) continue;
+      if (interior[p]) inside.push_back(turns[p]);
+      // The scan's coordinates: view = R world + t, so world = Rᵀ (view - t).
+      const sss::math::Vec3 v = sss::math::pixel_position(m, width, height, x, y, s.distance[p]);
+      const double q[3] = {v.x - view[12], v.y - view[13], v.z - view[14]};
+      double w[3];
+      for (int r = 0; r < 3; ++r) w[r] = view[r * 4] * q[0] + view[r * 4 + 1] * q[1] + view[r * 4 + 2] * q[2];
+      if (w[0] > 0.02 && w[0] < 0.07 && w[1] > 0.0 && w[1] < 0.06 && w[2] > 0.03) cheek.push_back(turns[p]);
+    }
+  }
+  ASSERT_GT(cheek.size(), 150u);
+  const auto share_60_80 = [](const std::vector<double>& t) {
+    return static_cast<double>(std::count_if(t.begin(), t.end(), [](double v) { return v >= 60.0 && v <= 80.0; })) /
+           static_cast<double>(t.size());
+  };
+  EXPECT_NEAR(median_of(cheek), 67.5, 1.5);
+  EXPECT_GT(share_60_80(cheek), 0.65);
+  EXPECT_NEAR(median_of(inside), 37.6, 1.0);
+}
+
 TEST_F(SceneTest, HeadSceneRestoresGlStateAndDeletesItsObjects) {
   const sss_bench::Scene reference = sss_bench::make_scene("head-close", kWidth, kHeight);
 
@@ -558,6 +631,134 @@ TEST_F(SceneTest, NormalMapGreenConvention) {
   EXPECT_GT(tangent_right, triangles * 99 / 100);
   EXPECT_GT(bitangent_down, triangles * 99 / 100) << "the bitangent no longer points towards +v";
   EXPECT_EQ(sss_bench::detail::kNormalMapGreenSign, -1.0f);
+}
+
+// The turn sweep's planes: what scene.hpp promises (an orthographic projection for half of them);
+// every translucent pixel on the plane it reports, turned by its angle; orthographic: translucent
+// everywhere with pixels of the footprint; the shadow edge through the centre and the spot's light.
+TEST_F(SceneTest, TurnedPlanesLieOnTheirPlane) {
+  const int side = 96;
+  const double footprint = 0.2;
+  for (bool orthographic : {true, false}) {
+    for (double turn : {0.0, 60.0, 75.0}) {
+      for (double axis : {0.0, 45.0}) {
+        sss_bench::PlaneGeometry plane;
+        const sss_bench::Scene s = sss_bench::make_turned_plane_scene(footprint, turn, axis, orthographic, side, side, &plane);
+        const std::string name = "turned-" + std::to_string(static_cast<int>(turn)) + "-about-" +
+                                 std::to_string(static_cast<int>(axis)) + (orthographic ? "-orthographic" : "-perspective");
+        check_scene(s, name, side, side, !orthographic);
+        SCOPED_TRACE(name);
+        EXPECT_NEAR(plane.normal[2], std::cos(turn * kPi / 180.0), 1e-12);
+        sss::math::Matrix4 m{};
+        std::copy(s.projection.begin(), s.projection.end(), m.begin());
+        const sss::math::Vec3 n{plane.normal[0], plane.normal[1], plane.normal[2]};
+        const sss::math::Vec3 point{plane.point[0], plane.point[1], plane.point[2]};
+        double off_plane = 0.0, dark = 0.0, lit = 0.0, brightest = 0.0;
+        for (int y = 0; y < side; ++y)
+          for (int x = 0; x < side; ++x) {
+            const size_t p = static_cast<size_t>(y) * side + x;
+            if (s.mask[p] == 0) continue;
+            const sss::math::Vec3 at = sss::math::pixel_position(m, side, side, x, y, s.distance[p]);
+            off_plane = std::max(off_plane, std::fabs(sss::math::dot(n, at - point)) / s.distance[p]);
+            const double e = s.irradiance[p * 4];
+            dark += e <= sss_bench::detail::kDark ? 1.0 : 0.0;
+            lit += e >= sss_bench::detail::kAlbedoLow * sss_bench::detail::kLit ? 1.0 : 0.0;
+            brightest = std::max(brightest, e);
+          }
+        EXPECT_LT(off_plane, 1e-6);  // the float distances' rounding
+        const double translucent = translucent_fraction(s) * side * side;
+        EXPECT_GT(dark, 0.3 * translucent);  // the edge through the centre (the backdrop takes a side's part)
+        EXPECT_GT(lit, 0.3 * translucent);
+        if (turn <= 60.0) {
+          EXPECT_GT(brightest, 1.5);  // a few whole pixels of the spot at 4.0 times an albedo
+        }
+        if (!orthographic) continue;
+        EXPECT_EQ(translucent_fraction(s), 1.0);
+        const auto f = sss::math::turned_plane_footprint(m, side, side, point, n, s.world_units_per_mm, 3, 5);
+        EXPECT_NEAR(f.a_mm * f.b_mm, footprint * footprint / std::cos(turn * kPi / 180.0), 1e-5 * footprint * footprint);
+      }
+    }
+  }
+  // The narrow perspective camera sees no horizon at 75 degrees: the plane fills the frame.
+  EXPECT_EQ(translucent_fraction(sss_bench::make_turned_plane_scene(footprint, 75.0, 0.0, false, side, side)), 1.0);
+  EXPECT_THROW(sss_bench::make_turned_plane_scene(0.0, 30.0, 0.0, true, side, side), std::invalid_argument);
+  EXPECT_THROW(sss_bench::make_turned_plane_scene(0.2, 90.0, 0.0, true, side, side), std::invalid_argument);
+  EXPECT_THROW(sss_bench::make_turned_plane_scene(0.2, 30.0, 0.0, true, 2, side), std::invalid_argument);
+}
+
+// Every frame of the default turn sweep (turn_sweep.hpp: its footprints, turns, axes and both
+// projections, framed as sss_bench_turns frames them) keeps interior pixels to score, and the
+// perspective camera's corner rays are kTurnedPlaneSpreadDegrees off its axis, so every pixel sees
+// the plane within that of its turn (analytic_scenes.cpp: turned_plane_fovy_degrees).
+TEST_F(SceneTest, TurnSweepPlanesKeepAnInterior) {
+  const sss_bench::turns::Options sweep;
+  const double reach_mm = sss_bench::profile_reach_mm(sss::math::skin_profile_terms());
+  for (double footprint : sweep.footprints) {
+    const int side = sss_bench::sweep_frame_side(footprint, sss_bench::kCalibrationInteriorPx, reach_mm);
+    for (const std::string& projection : sweep.projections) {
+      for (double turn : sweep.turns) {
+        for (double axis : sweep.axes) {
+          const sss_bench::Scene s =
+              sss_bench::make_turned_plane_scene(footprint, turn, axis, projection == "orthographic", side, side);
+          SCOPED_TRACE(s.name + " at " + std::to_string(footprint) + " mm/px");
+          const std::vector<uint8_t> interior = sss_bench::region_mask(
+              sss_bench::classify_regions(sss_bench::region_input_of(s, reach_mm)), sss_bench::Region::interior);
+          EXPECT_GT(std::count(interior.begin(), interior.end(), uint8_t{1}), 0);
+          if (projection == "orthographic") continue;
+          // The corner ray's angle off the axis: x / m[0] and y / m[5] at NDC (1, 1) and z = -1.
+          const double corner = std::hypot(1.0 / s.projection[0], 1.0 / s.projection[5]);
+          EXPECT_NEAR(std::atan(corner) * 180.0 / kPi, sss_bench::detail::kTurnedPlaneSpreadDegrees, 1e-4);
+        }
+      }
+    }
+  }
+}
+
+// The turn sweep's curved scenes: what scene.hpp promises; the cylinder shaded and dark on either side
+// of its terminator before the backdrop; the sphere's nearest point where a facing pixel measures the
+// footprint. Both need a clear change where they are scored: around the image centre, the cast
+// shadow's edge leaves lit and dark pixels, and the per-pixel albedo makes neighbours differ.
+TEST_F(SceneTest, TurnSweepCylinderAndSphere) {
+  for (double footprint : {0.1, 1.0}) {
+    const int side = footprint < 0.5 ? 244 : 84;  // the sweep's frames
+    const sss_bench::Scene cylinder = sss_bench::make_cylinder_scene(footprint, side, side);
+    check_scene(cylinder, "cylinder", side, side);
+    const double ambient_only = 0.85 * 0.03 + 1e-6;  // red: albedo times the ambient term, at most
+    size_t shaded = 0, unlit = 0;
+    for (size_t p = 0; p < pixel_count(cylinder); ++p) {
+      if (cylinder.mask[p] == 0) continue;
+      (cylinder.irradiance[p * 4] > ambient_only ? shaded : unlit) += 1;
+    }
+    EXPECT_GT(shaded, pixel_count(cylinder) / 5) << footprint;
+    EXPECT_GT(unlit, pixel_count(cylinder) / 5) << footprint;
+    const sss_bench::Scene sphere = sss_bench::make_footprint_sphere_scene(footprint, side, side);
+    check_scene(sphere, "sphere-40mm", side, side);
+    sss::math::Matrix4 m{};
+    std::copy(sphere.projection.begin(), sphere.projection.end(), m.begin());
+    const float nearest = *std::min_element(sphere.distance.begin(), sphere.distance.end());
+    EXPECT_NEAR(sss::math::plane_pixel_mm_y(m, side, nearest, sphere.world_units_per_mm), footprint, 0.01 * footprint);
+    for (const sss_bench::Scene* s : {&cylinder, &sphere}) {
+      SCOPED_TRACE(s->name + " at " + std::to_string(footprint) + " mm/px");
+      // The central 64x64 pixels (the sweep's interior at the coarse footprints).
+      size_t lit = 0, dark = 0, pairs = 0, differing = 0;
+      for (int y = side / 2 - 32; y < side / 2 + 32; ++y) {
+        for (int x = side / 2 - 32; x < side / 2 + 32; ++x) {
+          const size_t p = static_cast<size_t>(y) * static_cast<size_t>(side) + static_cast<size_t>(x);
+          const float e = s->irradiance[p * 4], right = s->irradiance[(p + 1) * 4];
+          (e > ambient_only ? lit : dark) += 1;
+          if (e > 2.0 * ambient_only && right > 2.0 * ambient_only) {
+            ++pairs;
+            differing += std::fabs(e - right) > 0.2 * std::max(e, right) ? 1 : 0;
+          }
+        }
+      }
+      EXPECT_GT(lit, 64u * 64u / 5);
+      EXPECT_GT(dark, 64u * 64u / 5);
+      EXPECT_GT(differing, pairs / 3);  // two random albedos in [0.25, 1) differ so 67 % of the time
+    }
+  }
+  EXPECT_THROW(sss_bench::make_cylinder_scene(-1.0, 84, 84), std::invalid_argument);
+  EXPECT_THROW(sss_bench::make_footprint_sphere_scene(20.0, 84, 84), std::invalid_argument);  // through the backdrop
 }
 
 }  // namespace
