@@ -8,7 +8,8 @@
 //     follow-surface on the raw depth difference (CpuWalkChoices::facing);
 //   - the passes: the tangent blend and a ramp slack of kFollowSurfaceSlack;
 //   - the tangent by the reference's switch, by the smaller depth change alone, or central;
-//   - no slack, or twice the slack.
+//   - no slack, or twice the slack;
+//   - per-tap chords (3D distances) instead of the centre's footprint.
 //
 // Against two references, both the 2D surface convolution of exact_reference.hpp (d'Eon's skin
 // profile, double) on the interior receivers of a stride grid:
@@ -163,6 +164,10 @@ std::vector<Variant> variants() {
   v = {"slack 0.5", "twice the passes' slack", {}};
   v.walk.slack = 2.0f * sss::math::kFollowSurfaceSlack;
   out.push_back(v);
+  v = {"chords", "each tap weighed by the kernel between the midpoints of the taps' 3D distances from the centre, "
+                 "instead of the centre's footprint for every tap (the passes keep the latter: cost)", {}};
+  v.walk.chords = true;
+  out.push_back(v);
   return out;
 }
 
@@ -192,7 +197,8 @@ sss_bench::Scene build_scene(const std::string& name, const Options& o) {
 }
 
 struct Receivers {
-  std::vector<std::size_t> pixels;  // interior pixels on the stride grid
+  std::vector<std::size_t> pixels;  // the receivers: pixels on the stride grid (below)
+  std::vector<uint8_t> interior;    // per receiver: 1 in the interior (regions.hpp), which is scored
   RgbImage input, raw, conserving;  // at those pixels (pixels.size() x 1)
 };
 
@@ -224,13 +230,20 @@ sss_bench::RegionInput region_input(const sss_bench::Scene& scene) {
   return in;
 }
 
-Receivers make_receivers(const sss_bench::Scene& scene, const std::vector<float>& irradiance, int stride) {
+// The receivers on the stride grid: the interior's, and with `every_translucent` (pictures) the
+// silhouettes' and borders' too, which are shown but not scored.
+Receivers make_receivers(const sss_bench::Scene& scene, const std::vector<float>& irradiance, int stride,
+                         bool every_translucent) {
   const std::vector<uint8_t> regions = sss_bench::classify_regions(region_input(scene));
   Receivers r;
   for (int y = stride / 2; y < scene.height; y += stride) {
     for (int x = stride / 2; x < scene.width; x += stride) {
       const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(scene.width) + static_cast<std::size_t>(x);
-      if (regions[i] == static_cast<uint8_t>(sss_bench::Region::interior)) r.pixels.push_back(i);
+      const bool interior = regions[i] == static_cast<uint8_t>(sss_bench::Region::interior);
+      if (interior || (every_translucent && scene.mask[i] != 0)) {
+        r.pixels.push_back(i);
+        r.interior.push_back(interior ? 1 : 0);
+      }
     }
   }
   const int n = static_cast<int>(r.pixels.size());
@@ -307,7 +320,28 @@ void write_heat_map(const std::string& dir, const std::string& file, const Grid&
   }
 }
 
+// The heat maps' top: the 99th percentile, over the scored receivers, of the largest channel of the
+// change scattering makes (|input - raw reference|), so that the no-scattering map shows the change
+// to make and each result's map the share of it left.
+double change_scale(const Receivers& r) {
+  std::vector<double> change;
+  for (std::size_t i = 0; i < r.pixels.size(); ++i) {
+    if (r.interior[i] == 0) continue;
+    double e = 0.0;
+    for (std::size_t c = 0; c < 3; ++c) e = std::max(e, std::fabs(r.input.rgb[i * 3 + c] - r.raw.rgb[i * 3 + c]));
+    change.push_back(e);
+  }
+  if (change.empty()) return 1.0;
+  const auto at = change.begin() + static_cast<std::ptrdiff_t>(change.size() * 99 / 100);
+  std::nth_element(change.begin(), at, change.end());
+  return *at > 0.0 ? *at : 1.0;
+}
+
 // ---- The runs ----
+
+// The row of the conserving reference itself: what a filter that keeps light and is otherwise
+// exact would score against the raw reference.
+const char* const kConservingFloor = "the conserving reference itself";
 
 struct Row {
   std::string scene, family, variant;
@@ -323,7 +357,9 @@ std::vector<Row> study_scene(const sss_bench::Scene& scene, const Options& o, Sc
   std::vector<float> colour(scene.irradiance.size());
   for (std::size_t i = 0; i < colour.size(); ++i) colour[i] = sss::math::round_to_half(scene.irradiance[i]);
   for (std::size_t i = 0; i < n; ++i) colour[i * 4 + 3] = scene.mask[i] != 0 ? 1.0f : 0.0f;
-  const Receivers receivers = make_receivers(scene, colour, pictures != nullptr ? o.picture_stride : o.stride);
+  const Receivers receivers =
+      make_receivers(scene, colour, pictures != nullptr ? o.picture_stride : o.stride, pictures != nullptr);
+  const int scored = static_cast<int>(std::count(receivers.interior.begin(), receivers.interior.end(), 1));
   const double footprint = sss_bench::median_footprint_mm(region_input(scene));
 
   std::unique_ptr<Grid> grid;
@@ -332,7 +368,7 @@ std::vector<Row> study_scene(const sss_bench::Scene& scene, const Options& o, Sc
   if (pictures != nullptr) {
     grid = std::make_unique<Grid>(scene, receivers, o.picture_stride);
     grid_reference = grid->place(receivers, receivers.raw);
-    scale = sss_bench::heat_map_scale(grid_reference, grid->mask.data());
+    scale = change_scale(receivers);
     pictures->scene = scene.name;
     const std::string input = scene.name + "-input.png";
     if (!sss_bench::write_tonemapped_png(o.pictures + "/" + input, RgbImage::from_rgba(colour.data(), scene.width, scene.height))) {
@@ -344,7 +380,11 @@ std::vector<Row> study_scene(const sss_bench::Scene& scene, const Options& o, Sc
     pictures->pictures.push_back({none, "no scattering: the change to make"});
   }
 
-  std::vector<Row> rows;
+  // The floor of any filter that keeps light: the conserving reference scored against the raw one.
+  std::vector<Row> rows = {{scene.name, "–", kConservingFloor, scored, footprint, {}, {}}};
+  rows.front().raw = sss_bench::miss_share(receivers.conserving, receivers.raw, receivers.input, receivers.interior.data());
+  rows.front().conserving = sss_bench::miss_share(receivers.conserving, receivers.conserving, receivers.input,
+                                                  receivers.interior.data());
   std::vector<float> out(n * 4);
   for (const Family& family : families()) {
     const sss::math::PassKernel kernel = sss::math::build_pass_kernel(family.settings);
@@ -366,9 +406,9 @@ std::vector<Row> study_scene(const sss_bench::Scene& scene, const Options& o, Sc
       for (std::size_t i = 0; i < receivers.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) result.at(static_cast<int>(i), 0, c) = out[receivers.pixels[i] * 4 + static_cast<std::size_t>(c)];
       }
-      Row row{scene.name, family.name, variant.name, static_cast<int>(receivers.pixels.size()), footprint, {}, {}};
-      row.raw = sss_bench::miss_share(result, receivers.raw, receivers.input, nullptr);
-      row.conserving = sss_bench::miss_share(result, receivers.conserving, receivers.input, nullptr);
+      Row row{scene.name, family.name, variant.name, scored, footprint, {}, {}};
+      row.raw = sss_bench::miss_share(result, receivers.raw, receivers.input, receivers.interior.data());
+      row.conserving = sss_bench::miss_share(result, receivers.conserving, receivers.input, receivers.interior.data());
       rows.push_back(row);
       if (grid != nullptr && (variant.name == "before" || variant.name == "passes")) {
         const std::string file = scene.name + "-" + (family.name == "default" ? "default" : "sum-of-gaussians") + "-" +
@@ -400,9 +440,12 @@ void write_pictures(std::ofstream& doc, const Options& o, const ScenePictures& p
   const std::filesystem::path doc_dir = std::filesystem::path(o.doc).parent_path();
   const std::string dir = std::filesystem::relative(o.pictures, doc_dir.empty() ? "." : doc_dir).generic_string();
   doc << "\n## Pictures: " << p.scene << "\n\n"
-      << "Heat maps of each result's largest channel distance from the raw reference on the grid of "
-         "receivers (one cell a receiver, every " << o.picture_stride << " pixels; grey: not scored), one "
-         "scale for all (a tenth of the reference's brightest value at the top of the ramp). Head scan: "
+      << "Heat maps of each result's largest channel distance from the raw reference on a grid of "
+         "receivers (one cell a receiver, every " << o.picture_stride << " pixels; grey: not translucent), "
+         "the silhouettes and borders shown too though only the interior is scored, one scale for all: "
+         "the top of the ramp is the 99th percentile of the change scattering makes in the interior, so "
+         "the no-scattering map is the change to make and each result's map what it leaves undone. "
+         "Head scan: "
       << sss_bench::head_attribution() << "\n\n| | |\n|---|---|\n";
   for (std::size_t i = 0; i < p.pictures.size(); i += 2) {
     doc << "|";
@@ -434,7 +477,9 @@ void write_document(const Options& o, const std::vector<Row>& rows, const std::v
          "receiver there gets less than the light around it even under uniform light, which no filter "
          "that keeps light reproduces;\n"
          "- **conserving**: each receiver's value divided by the convolution of uniform light at that "
-         "receiver (its mass: 1 on a smooth surface), the light a real skin keeps.\n\n"
+         "receiver (its mass: 1 on a smooth surface), the light a real skin keeps. Each scene's first "
+         "row scores the conserving reference itself against the raw one: the floor of any filter that "
+         "keeps light, however exact otherwise.\n\n"
          "The head scenes are " << o.width << "x" << o.height << "; the analytic ones "
       << o.height << "x" << o.height << " at " << kAnalyticFootprintMm << " mm per facing pixel: a "
          "cylinder and a sphere of radius 40 mm, and a plane turned 60 degrees about an axis 30 degrees "

@@ -81,6 +81,45 @@ PassGeometry pass_geometry(const PassFrame& frame, int axis, int x, int y, float
   return walk;
 }
 
+// The taps of one pixel's pass as it blends them (follow-surface, per-pixel profiles), each side's
+// in order outwards, and their 3D distances from the centre in profile millimetres (chords only).
+struct PassTapColours {
+  std::array<std::array<std::array<float, 3>, kMaxFootprintHalfTaps>, 2> colour{};
+  std::array<std::array<float, kMaxFootprintHalfTaps>, 2> chord_mm{};
+};
+
+// The view-space distance between the centre (distance d0) and a tap whose pixel centre sits
+// (ox, oy) window pixels away at distance d (pass_surface.hpp's ΔP), times to_mm.
+float chord_mm(const PassConstants& k, const std::array<float, 2>& g, float ox, float oy, float d, float d0,
+               float to_mm) {
+  const float w = clip_w(k, d), dd = d - d0;
+  const float px = k.pixel_span[0] * ox * w + dd * g[0], py = k.pixel_span[1] * oy * w + dd * g[1];
+  const float c = std::sqrt(px * px + py * py + dd * dd) * to_mm;
+  return std::isfinite(c) ? c : 1e30f;
+}
+
+// CpuWalkChoices::chords: the centre's delta, then on each side the kernel's half-CDF between the
+// midpoints of consecutive taps' chords (made non-decreasing outwards), the centre taking what lies
+// inside half the first tap's chord and the last tap the rest.
+Rgba chord_weighted_sum(const FootprintTable& table, const Rgba& centre, int count, PassTapColours* taps) {
+  Rgba sum = {0.0f, 0.0f, 0.0f, centre[3]};
+  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * table.delta[c];
+  for (std::size_t side = 0; side < 2; ++side) {
+    auto& mm = taps->chord_mm[side];
+    for (std::size_t i = 1; i < static_cast<std::size_t>(count); ++i) mm[i] = std::max(mm[i], mm[i - 1]);
+    std::array<float, 3> below = footprint_half_cdf(table, 0.5f * mm[0]);
+    for (std::size_t c = 0; c < 3; ++c) sum[c] += centre[c] * below[c];
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+      const std::array<float, 3> upto = i + 1 < static_cast<std::size_t>(count)
+                                            ? footprint_half_cdf(table, 0.5f * (mm[i] + mm[i + 1]))
+                                            : table.half_cdf.back();
+      for (std::size_t c = 0; c < 3; ++c) sum[c] += (upto[c] - below[c]) * taps->colour[side][i][c];
+      below = upto;
+    }
+  }
+  return sum;
+}
+
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y, sheared: pass_surface.hpp), with the look
 // `k` (pixels per mm and the follow-surface numbers) in `frame`. Returns false when the pixel is left as it is (not translucent or no usable depth).
 bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
@@ -107,10 +146,11 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   const int jitter_from = kernel.jitter_from;
   const float noise = kernel.jittered() ? jitter_noise(x, y, axis) : 0.0f;
   const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step, jitter_from, noise);
-  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * taps.weight[0][c];
+  const bool chords = frame.walk.chords && taps.count > 0;  // no taps: the pixel keeps the whole kernel
+  const std::array<float, 2> g = chords ? ray_slope(shared, cx, cy) : std::array<float, 2>{};
+  PassTapColours colours;
   for (int i = 0; i < taps.count; ++i) {
     const float p = static_cast<float>(taps.position[static_cast<std::size_t>(i)]);
-    std::array<float, 3> pair = {0.0f, 0.0f, 0.0f};
     for (int side = 0; side < 2; ++side) {
       const float offset = side == 0 ? p : -p;
       float px = cx, py = cy;
@@ -134,9 +174,24 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
         follow_surface_blend(&tap, centre, d, gaussian_depth, inv_two_variance);
       }
       if (indices.ids != nullptr && indices.at(tx, ty) != indices.at(x, y)) tap = {centre[0], centre[1], centre[2]};
-      for (std::size_t c = 0; c < 3; ++c) pair[c] += tap[c];
+      const auto s = static_cast<std::size_t>(side), t = static_cast<std::size_t>(i);
+      colours.colour[s][t] = tap;
+      if (chords) {
+        const float ox = static_cast<float>(tx) + 0.5f - cx, oy = static_cast<float>(ty) + 0.5f - cy;
+        colours.chord_mm[s][t] = chord_mm(shared, g, ox, oy, distance.at(tx, ty, 0), centre_distance,
+                                          k.mm_per_world / strength);
+      }
     }
-    for (std::size_t c = 0; c < 3; ++c) sum[c] += taps.weight[static_cast<std::size_t>(i + 1)][c] * pair[c];
+  }
+  if (chords) {
+    *result = chord_weighted_sum(pass.footprint, centre, taps.count, &colours);
+    return true;
+  }
+  for (std::size_t c = 0; c < 3; ++c) sum[c] = centre[c] * taps.weight[0][c];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(taps.count); ++i) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      sum[c] += taps.weight[i + 1][c] * (colours.colour[0][i][c] + colours.colour[1][i][c]);
+    }
   }
   *result = sum;
   return true;

@@ -23,6 +23,10 @@ struct CpuWalkChoices {
   // The passes before they walked the surface: every pixel stepped as if its surface faced the
   // camera, follow-surface on the raw depth difference (no shear, no slack).
   bool facing = false;
+  // Per-tap chords instead of the centre's footprint: each tap weighs the pass's 1D kernel
+  // integrated between the midpoints of the taps' 3D distances from the centre (the alternative
+  // issue 40 asked to measure; the passes keep the centre's footprint, docs/surface-turns.md).
+  bool chords = false;
 };
 
 struct CpuFilterImage {
