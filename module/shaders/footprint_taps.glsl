@@ -41,11 +41,13 @@ vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line, float slack) {
 #if SSS_FOLLOW_SURFACE == 2
   float s = 1.0 - exp(-d * d * SSS_INV_TWO_VARIANCE);
 #else
-  float s = d - slack < 0.0 ? 0.0 : d - slack;  // not max(): a NaN (an unusable tap) must stay NaN
+  float s = max(d - slack, 0.0);
 #endif
-  // Past the reach (also when the tap's distance is not finite): the centre itself, not mix(tap,
-  // centre, 1), which a driver may compute as tap + (centre - tap), inexact for a large tap.
-  tap = isnan(s) || !(s < 1.0) ? centre : mix(tap, centre, s);
+  // Past the reach, or an unusable tap (its distance NaN, so d is): the centre itself, not
+  // mix(tap, centre, 1), which a driver may compute as tap + (centre - tap), inexact for a large
+  // tap. The NaN is tested on d, not on s: max() may drop a NaN, and so may a compiler that turns
+  // `x < 0.0 ? 0.0 : x` into max() (Mesa's NIR does, which let kSssUnusableColour into the sum).
+  tap = isnan(d) || !(s < 1.0) ? centre : mix(tap, centre, s);
 #endif
   return tap;
 }

@@ -118,11 +118,12 @@ void near_tap(NearSite site, ivec2 offset, SssWalk walk, float steps, vec3 w, in
   uvec4 q = texelFetch(u_source, texel, 0);
   vec2 line = sss_off_surface(sss_follow(walk, site.factor, site.distance), vec2(texel - site.pixel));
   float h = abs(sss_distance(q.a) * line.x + line.y);
-  float s = h - steps * sss_follow_slack(walk, site.factor);
-  s = s < 0.0 ? 0.0 : s;  // not max(): NaN stays NaN
-  // Also NaN (isnan() spelt out: NVIDIA's compiler takes !(s < 1.0) for s >= 1.0, which NaN fails):
-  // the inputs' unusable colours (pass_inputs.frag) never enter.
-  if (isnan(s) || !(s < 1.0)) s = 1.0;
+  float s = max(h - steps * sss_follow_slack(walk, site.factor), 0.0);
+  // Also an unusable texel (its distance NaN, so h is), tested on h: max() may drop a NaN, as may a
+  // compiler that rewrites a select into max() (Mesa's NIR does). isnan() spelt out: NVIDIA's
+  // compiler takes !(s < 1.0) for s >= 1.0, which NaN fails. So the inputs' unusable colours
+  // (pass_inputs.frag) never enter.
+  if (isnan(h) || !(s < 1.0)) s = 1.0;
 #if SSS_PROFILE_IDS == 1
   if ((q.b & 0xFFu) != site.index) s = 1.0;
 #endif

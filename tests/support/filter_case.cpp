@@ -32,6 +32,27 @@ float largest_relative_difference(const std::vector<float>& gpu, const std::vect
   return worst;
 }
 
+void expect_matches_model_up_to_tap_flips(const FilterOutcome& o, float tolerance, const char* what) {
+  ASSERT_EQ(o.gpu.size(), o.cpu.size()) << what;
+  const std::size_t pixels = o.gpu.size() / 4;
+  std::size_t flipped = 0;
+  float flipped_worst = 0.0f;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const std::vector<float> gpu(o.gpu.begin() + static_cast<std::ptrdiff_t>(p * 4),
+                                 o.gpu.begin() + static_cast<std::ptrdiff_t>(p * 4 + 4));
+    const std::vector<float> cpu(o.cpu.begin() + static_cast<std::ptrdiff_t>(p * 4),
+                                 o.cpu.begin() + static_cast<std::ptrdiff_t>(p * 4 + 4));
+    const float difference = largest_relative_difference(gpu, cpu);
+    if (difference <= tolerance) continue;
+    ++flipped;
+    if (!(difference <= flipped_worst)) flipped_worst = difference;  // NaN propagates as the worst
+  }
+  std::printf("%s: %zu of %zu pixels beyond %.3g of the CPU model, the worst %.3g\n", what, flipped, pixels,
+              static_cast<double>(tolerance), static_cast<double>(flipped_worst));
+  EXPECT_LE(flipped * kTapFlipShare, pixels) << what << ": too many pixels differ from the CPU model";
+  EXPECT_LE(flipped_worst, kTapFlipBound) << what;
+}
+
 RoundingAgreement rounding_agreement(const FilterOutcome& o) {
   RoundingAgreement a;
   std::size_t equal = 0;
