@@ -23,7 +23,8 @@ if [[ ! -d build/compare-old/src ]]; then
   git worktree add --force --detach build/compare-old/src "$old"
 fi
 git -C build/compare-old/src checkout --quiet --detach "$old"
-ln -sfn "$(cd .. && pwd)/shared" build/compare-old/shared  # the head asset, as ../shared is for us
+# Commits before the head scan shipped in assets/ found it in ../shared/assets, beside their tree.
+ln -sfn "$(cd .. && pwd)/shared" build/compare-old/shared
 cmake -S build/compare-old/src -B build/compare-old/build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_BUILD_TESTS=OFF
 cmake --build build/compare-old/build --parallel "$(nproc)" --target sss_demo
 

@@ -1,4 +1,4 @@
-// Where the project's shared assets are (../shared/assets by default) and what their licences ask
+// Where the project's assets are (assets/ in the source tree by default) and what their licences ask
 // for. Used by the demo and the benchmark's head scenes.
 #pragma once
 
@@ -14,7 +14,7 @@ std::string asset_dir();
 std::string head_path();
 
 // The attribution the head scan's licence (CC BY 3.0) asks for; carry it with any image of it
-// (text of ../shared/assets/lee-perry-smith-head/README.md).
+// (text of assets/lee-perry-smith-head/README.md).
 const char* head_attribution();
 
 }  // namespace sss_assets

@@ -26,7 +26,7 @@ mkdir -p "$out"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
-export LD_LIBRARY_PATH=$PWD/.gpu/lib SSS_ASSET_DIR=$PWD/.gpu/assets
+export LD_LIBRARY_PATH=$PWD/.gpu/lib SSS_ASSET_DIR=$PWD/assets
 
 {
   date -u

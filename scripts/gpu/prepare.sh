@@ -17,7 +17,6 @@ cmake --build build-gpu --parallel "$(nproc)" --target sss_bench sss_headless_in
 
 rm -rf .gpu
 mkdir -p .gpu/lib
-cp -r ../shared/assets .gpu/assets
 # Every library the programs load from the system that the GPU machine's image may not have: all
 # but the C and C++ runtimes (there, newer) and GL (the driver's and the .gl packages').
 for program in build-gpu/tests/bench/sss_bench build-gpu/tests/sss_gl_tests build-gpu/tests/sss_gl_state_tests build-gpu/tests/sss_gl_stress_tests; do

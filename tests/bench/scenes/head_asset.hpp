@@ -3,7 +3,7 @@
 // "Infinite, 3D Head Scan" by Lee Perry-Smith is licensed under a Creative Commons Attribution 3.0
 // Unported License. Based on a work at www.triplegangers.com. Permissions beyond the scope of this
 // license may be available at http://www.ir-ltd.net/
-// (../shared/assets/lee-perry-smith-head/README.md; any image of it must carry this attribution.)
+// (assets/lee-perry-smith-head/README.md; any image of it must carry this attribution.)
 #pragma once
 
 #include <cstdint>

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -561,6 +563,25 @@ TEST_F(SceneTest, AssetDirectoryComesFromTheEnvironment) {
     ::unsetenv("SSS_ASSET_DIR");
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_NE(std::string(sss_bench::head_attribution()).find("Lee Perry-Smith"), std::string::npos);
+}
+
+// A clone alone renders the head: without SSS_ASSET_DIR the scan comes from assets/ in the source
+// tree (not from a folder beside it), and its README there carries the attribution the code prints.
+TEST_F(SceneTest, TheHeadShipsWithTheProjectAndItsAttribution) {
+  const char* previous = std::getenv("SSS_ASSET_DIR");
+  const std::string saved = previous != nullptr ? previous : "";
+  ::unsetenv("SSS_ASSET_DIR");
+  const std::string dir = sss_bench::asset_dir();
+  if (previous != nullptr) ::setenv("SSS_ASSET_DIR", saved.c_str(), 1);
+  const std::filesystem::path shipped = std::filesystem::path(SSS_SOURCE_DIR) / "assets";
+  EXPECT_TRUE(std::filesystem::equivalent(dir, shipped)) << dir << " is not " << shipped;
+  EXPECT_TRUE(std::filesystem::is_regular_file(shipped / "lee-perry-smith-head" / "head.glb"));
+  std::ifstream readme(shipped / "lee-perry-smith-head" / "README.md");
+  ASSERT_TRUE(readme.good());
+  // The attribution as one line of words: the README wraps it.
+  std::string text, word;
+  while (readme >> word) text += (text.empty() ? "" : " ") + word;
+  EXPECT_NE(text.find(sss_bench::head_attribution()), std::string::npos) << sss_bench::head_attribution();
 }
 
 // The normal map's green channel convention, checked on the asset itself (see head_scene.cpp):
