@@ -26,6 +26,7 @@ SssControls controls_from_options(const Options &o) {
   c.kernel_rank = o.kernel_rank;
   c.material = o.material;
   c.jitter = o.jitter;
+  c.moving_noise = o.moving_noise;
   c.region = o.region;
   c.path = static_cast<int>(o.path);
   c.translucency = o.translucency;

@@ -120,6 +120,8 @@ void print_usage(const char *program) {
       "  --material NAME     the profile of those families: skin (default), apple, chicken1, chicken2, cream,\n"
       "                      ketchup, marble, potato, skimmilk, skin1, skin2, wholemilk\n"
       "  --jitter F          share of the taps jittered per pixel, [0, 1] (the supplementary uses 0.33)\n"
+      "  --moving-noise      give each frame its number as sss_frame.noise_index: the jitter's pattern moves\n"
+      "                      every frame, as a host with TAA would have it (without: one pattern)\n"
       "  --region            tell the library the head's projected bounds (work only there)\n"
       "  --path NAME         how the separable passes run: auto (whichever is fastest here; the library's\n"
       "                      default) | fragment (culled to translucent pixels) | masked (since 0.4 the\n"
@@ -150,7 +152,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
     kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
-    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kNoObjectIds, kDump, kHandColourOption
+    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kMovingNoise, kNoObjectIds, kDump, kHandColourOption
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -187,6 +189,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"baked-thickness", required_argument, nullptr, kBakedThickness},
       {"back-light", no_argument, nullptr, kBackLight},
       {"no-object-ids", no_argument, nullptr, kNoObjectIds},
+      {"moving-noise", no_argument, nullptr, kMovingNoise},
       {"dump", no_argument, nullptr, kDump},
       {"hand-colour", required_argument, nullptr, kHandColourOption},
       {nullptr, 0, nullptr, 0}};
@@ -329,6 +332,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kBackLight: o->back_light = true; break;
       case kNoObjectIds: o->object_ids = false; break;
+      case kMovingNoise: o->moving_noise = true; break;
       case kDump: o->dump = true; break;
       case kHandColourOption: {
         char tail = '\0';

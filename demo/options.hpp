@@ -30,6 +30,7 @@ struct Options {
   int kernel_rank = 1;           // sum of Gaussians / SVD: terms
   int material = 0;              // sss_material the kernel's profile comes from (SSS_PROFILE_SKIN_DEON)
   float jitter = 0.0f;           // sss_settings.jitter
+  bool moving_noise = false;     // sss_frame.noise_index = the frame's number (the jitter moves each frame)
   unsigned path = 2;             // sss_settings.path: SSS_PATH_AUTO (the library's default), _FRAGMENT, _COMPUTE, _FRAGMENT_MASKED, _HALF_RESOLUTION
   bool region = false;           // SSS_FRAME_REGION from the head's projected bounds
   bool translucency = false;     // transmittance through thin parts

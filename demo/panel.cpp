@@ -65,6 +65,7 @@ void sss_section(WindowState *s) {
     ImGui::TextDisabled("  a measured material is fitted when chosen (up to ~0.3 s)");
   }
   ImGui::SliderFloat("jittered taps", &c.jitter, 0.0f, 1.0f, "%.2f");
+  ImGui::Checkbox("move the jitter every frame (noise index, for TAA)", &c.moving_noise);
   ImGui::Checkbox("region from the head's bounds", &c.region);
   // Indexed by SSS_PATH_*: fragment 0, compute 1, auto 2, masked 3, half resolution 4.
   const char* const paths[] = {"fragment passes", "compute (GL 4.3+)", "auto (the fastest)", "fragment, masked",

@@ -143,13 +143,13 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   d.struct_size = sizeof d;
   d.width = shape.width;
   d.height = shape.height;
-  d.color_format = 0x881A;   // GL_RGBA16F: the diffuse target
-  d.output_format = 0x881A;  // GL_RGBA16F: "after"
-  d.depth_format = 0x88F0;   // GL_DEPTH24_STENCIL8
+  d.color_format = SSS_GL_RGBA16F;   // the diffuse target
+  d.output_format = SSS_GL_RGBA16F;  // "after"
+  d.depth_format = SSS_GL_DEPTH24_STENCIL8;
   d.samples = shape.samples;
-  d.stencil_format = shape.stencil ? 0x88F0u : 0u;
+  d.stencil_format = shape.stencil ? SSS_GL_DEPTH24_STENCIL8 : 0u;
   d.flags = shape.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u;
-  d.profile_format = shape.profile_texture ? 0x8232u : 0u;  // GL_R8UI
+  d.profile_format = shape.profile_texture ? SSS_GL_R8UI : 0u;
   // Settings compare byte for byte, and the kernel they point at (always stage->kernel, so the pointer
   // alone would not show a new family) too: the demo's kernels hold no pointers (no tabulated profile).
   const bool same = stage->prepared && std::memcmp(&d, &stage->prepared_desc, sizeof d) == 0 &&
@@ -164,10 +164,9 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   return true;
 }
 
-bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
+bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
                std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region,
                std::uint32_t profile) {
-  if (!report(sss_set_camera(stage.context, glm::value_ptr(projection)), "sss_set_camera", stage.context)) return false;
   sss_stencil stencil{};
   stencil.depth_stencil_texture = depth_stencil;
   stencil.ref = 1;  // the lighting pass writes 1 on translucent materials
@@ -179,12 +178,16 @@ bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::ma
   frame.output_texture = after;
   frame.stencil = controls.use_stencil ? &stencil : nullptr;
   frame.profile_texture = profile;
-  frame.profile_format = profile != 0 ? 0x8232u : 0u;  // GL_R8UI
+  frame.profile_format = profile != 0 ? SSS_GL_R8UI : 0u;
+  frame.projection = glm::value_ptr(projection);  // the frame carries its camera
+  frame.noise_index = controls.moving_noise ? stage.frames_applied : 0u;
   if (region != nullptr) {
     frame.flags |= SSS_FRAME_REGION;
     for (int i = 0; i < 4; ++i) frame.region[i] = region[i];
   }
-  return report(sss_apply_frame(stage.context, &frame), "sss_apply_frame", stage.context);
+  if (!report(sss_apply_frame(stage.context, &frame), "sss_apply_frame", stage.context)) return false;
+  ++stage.frames_applied;
+  return true;
 }
 
 void destroy_sss_stage(SssStage *stage) {

@@ -30,6 +30,9 @@ struct SssControls {
   int kernel_rank = 1;
   int material = SSS_PROFILE_SKIN_DEON;
   float jitter = 0.0f;
+  // sss_frame.noise_index: each frame's number, so the jittered taps' pattern moves every frame (what
+  // a host with TAA gives it, to average the noise away); off: 0, one pattern every frame.
+  bool moving_noise = false;
   // Skipping work: the head's projected bounds, padded by the kernel's reach, as the frame's region
   // of translucent pixels (SSS_FRAME_REGION). (Taps follow each pixel's footprint in the library
   // without a switch.)
@@ -95,6 +98,7 @@ struct SssStage {
   sss_prepare_desc prepared_desc{};
   sss_settings prepared_settings{};
   sss_kernel_desc prepared_kernel{};
+  std::uint32_t frames_applied = 0;  // successful sss_apply_frame calls (the moving noise index)
 };
 
 // The frames sss_prepare gets ready for: the demo's targets (RGBA16F diffuse, DEPTH24_STENCIL8,
@@ -123,10 +127,10 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape);
 bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_units_per_mm,
                       const std::vector<int> &materials = {}, bool per_pixel = false);
 
-// sss_set_camera + sss_apply_frame: `diffuse` (left as it is) into `after`; region: x, y, width,
-// height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI
+// sss_apply_frame with the camera in the frame: `diffuse` (left as it is) into `after`; region: x, y,
+// width, height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI
 // profile/object texture (sss_frame.profile_texture), or 0 for none (every pixel profile 0).
-bool apply_sss(const SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
+bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
                std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after,
                const std::int32_t *region = nullptr, std::uint32_t profile = 0);
 

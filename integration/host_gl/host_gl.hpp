@@ -81,6 +81,9 @@
   X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)               \
   X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)         \
   X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)               \
+  X(PFNGLISRENDERBUFFERPROC, glIsRenderbuffer)                   \
+  X(PFNGLGETRENDERBUFFERPARAMETERIVPROC, glGetRenderbufferParameteriv) \
+  X(PFNGLGETBUFFERPARAMETERIVPROC, glGetBufferParameteriv)       \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                 \
   X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)           \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                 \

@@ -1,10 +1,13 @@
 // The jitter of sparse taps (SSS_JITTER 1; nothing otherwise), for separable_blur.frag and .comp.
 
 #if SSS_JITTER
+uniform uint u_noise_index;  // sss_frame.noise_index
+
 // The jitter noise in [0, 1): must equal sss::math::jitter_noise (module/src/math/pass_kernel.cpp)
 // bit for bit, which 32-bit uint arithmetic guarantees; axis 0 horizontal, 1 vertical.
 float jitter_noise(ivec2 pixel, int axis) {
-  uint h = uint(pixel.x) * 0x8da6b343u ^ uint(pixel.y) * 0xd8163841u ^ uint(axis + 1) * 0xcb1ab31fu;
+  uint h = uint(pixel.x) * 0x8da6b343u ^ uint(pixel.y) * 0xd8163841u ^ uint(axis + 1) * 0xcb1ab31fu ^
+           u_noise_index * 0x9e3779b9u;
   h ^= h >> 16u;
   h *= 0x7feb352du;
   h ^= h >> 15u;

@@ -9,7 +9,9 @@
 //   - the passes: the tangent blend and a ramp slack of kFollowSurfaceSlack;
 //   - the tangent by the reference's switch, by the smaller depth change alone, or central;
 //   - no slack, or twice the slack;
-//   - per-tap chords (3D distances) instead of the centre's footprint.
+//   - per-tap chords (3D distances) instead of the centre's footprint;
+//   - jittered taps (0.33), one frame and the mean of 8 frames whose noise index moves
+//     (sss_frame.noise_index: a TAA host's view).
 //
 // Against two references, both the 2D surface convolution of exact_reference.hpp (d'Eon's skin
 // profile, double) on the interior receivers of a stride grid:
@@ -137,9 +139,14 @@ Options parse(int argc, char** argv) {
 
 // ---- The choices and the kernels ----
 
+// The jitter the study's jittered variants run with: the supplementary's 0.33.
+constexpr float kStudyJitter = 0.33f;
+
 struct Variant {
   std::string name, what;
   sss::math::CpuWalkChoices walk;
+  float jitter = 0.0f;  // sss_settings.jitter of the kernel
+  int frames = 1;       // the mean of this many frames, noise indices 0 .. frames - 1 (a TAA host's view)
 };
 
 std::vector<Variant> variants() {
@@ -167,6 +174,15 @@ std::vector<Variant> variants() {
   v = {"chords", "each tap weighed by the kernel between the midpoints of the taps' 3D distances from the centre, "
                  "instead of the centre's footprint for every tap (the passes keep the latter: cost)", {}};
   v.walk.chords = true;
+  out.push_back(v);
+  // The jittered taps (the supplementary's share), one frame and the mean of 8 frames with the noise
+  // index moving (sss_frame.noise_index): what a host that averages frames sees.
+  v = {"jitter 0.33, one frame", "the outer third of the taps jittered per pixel, one frame", {}};
+  v.jitter = kStudyJitter;
+  out.push_back(v);
+  v = {"jitter 0.33, 8 frames", "the same, the mean of 8 frames with noise indices 0-7", {}};
+  v.jitter = kStudyJitter;
+  v.frames = 8;
   out.push_back(v);
   return out;
 }
@@ -396,12 +412,22 @@ std::vector<Row> study_scene(const sss_bench::Scene& scene, const Options& o, Sc
     for (std::size_t i = 0; i < 16; ++i) projection[i] = scene.projection[i];
     const sss::math::PassConstants constants =
         sss::math::compute_pass_constants(family.settings, projection, geometry, kernel.reach_mm);
+    sss::math::FilterSettings jittered_settings = family.settings;
+    jittered_settings.jitter = kStudyJitter;
+    const sss::math::PassKernel jittered = sss::math::build_pass_kernel(jittered_settings);
     for (const Variant& variant : variants()) {
       sss::math::CpuFilterImage image =
           sss::math::cpu_filter_image(scene.width, scene.height, colour.data(), scene.window_depth.data());
       image.output_is_half = true;
       image.walk = variant.walk;
-      sss::math::cpu_pass_kernel_filter(kernel, constants, image, out.data());
+      const sss::math::PassKernel& run = variant.jitter > 0.0f ? jittered : kernel;
+      std::vector<double> sum(variant.frames > 1 ? out.size() : 0, 0.0);
+      for (int frame = 0; frame < variant.frames; ++frame) {
+        image.noise_index = static_cast<std::uint32_t>(frame);
+        sss::math::cpu_pass_kernel_filter(run, constants, image, out.data());
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += out[i];
+      }
+      for (std::size_t i = 0; i < sum.size(); ++i) out[i] = static_cast<float>(sum[i] / variant.frames);
       RgbImage result(static_cast<int>(receivers.pixels.size()), 1);
       for (std::size_t i = 0; i < receivers.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) result.at(static_cast<int>(i), 0, c) = out[receivers.pixels[i] * 4 + static_cast<std::size_t>(c)];

@@ -441,8 +441,30 @@ TEST_F(Msaa, StatsCountEveryDrawOfTheMsaaPath) {
       EXPECT_EQ(st.frames, static_cast<uint64_t>(i + 1));
       EXPECT_EQ(st.last_frame_passes, expected[i]) << "output " << outputs[i];
       EXPECT_EQ(st.glsl_variant, static_cast<uint32_t>(gl33 ? SSS_GLSL_330_CORE : SSS_GLSL_420_CORE));
+      // The resolve, then the fragment passes, whatever path the last single-sample frame took.
+      EXPECT_EQ(st.last_frame_path, static_cast<uint32_t>(SSS_PATH_FRAGMENT));
     }
   }
+}
+
+// An MSAA frame after a compute frame reports the fragment passes it ran, not the compute path.
+TEST_F(Msaa, TheLastFramePathOfAnMsaaFrameIsTheFragmentPasses) {
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 13, kCamera);
+  const SyntheticScene coarse = make_relief_scene(kW, kH, 13, kCamera);
+  sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f);
+  s.path = SSS_PATH_COMPUTE;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  sss_frame single = frame_of(make_rgba16f(kW, kH, coarse.color), make_depth32f(kW, kH, coarse.window_depth));
+  single.flags = SSS_FRAME_TARGET_COMPLETE;
+  ASSERT_EQ(sss_apply_frame(sss_, &single), SSS_OK) << sss_last_error(sss_);
+  sss_stats st = {};
+  st.struct_size = sizeof st;
+  ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+  const uint32_t single_path = st.last_frame_path;  // compute where the GL has it
+  const sss_frame f = frame(ms(GL_RGBA16F, fine.color), ms(GL_DEPTH_COMPONENT32F, fine.window_depth), 0u);
+  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+  EXPECT_EQ(st.last_frame_path, static_cast<uint32_t>(SSS_PATH_FRAGMENT)) << "after a frame on path " << single_path;
 }
 
 // The write-back never copies the host's samples: the module allocates no multisampled texture

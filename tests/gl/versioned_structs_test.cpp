@@ -4,6 +4,7 @@
 // 4cb68e3 and 5646dcc), field for field, as a host compiled against them would pass them.
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -96,17 +97,35 @@ struct Settings02 {
   uint32_t path;
 };
 
+// sss 0.4's sss_frame (its sss.h): 0.1's and 0.2's are its fields up to region, 0.3's up to
+// strength_format. 0.5 put each texture beside its format and added the projection and noise index.
+struct Frame04 {
+  uint32_t struct_size, color_texture, depth_texture, output_texture;
+  const sss_stencil* stencil;
+  int32_t viewport[4];
+  uint32_t flags, color_format, depth_format, output_format, stencil_format;
+  int32_t texture_width, texture_height;
+  uint32_t normal_texture, normal_format, msaa_depth_resolve;
+  int32_t region[4];
+  uint32_t depth_stencil_mode;
+  uint32_t strength_texture, strength_format;
+  uint32_t profile_texture, profile_format;
+};
+
 #if UINTPTR_MAX == 0xFFFFFFFFFFFFFFFFu
 // The sizes those releases had on x86-64 (LP64), as their sss.h compiled.
 static_assert(sizeof(Settings01) == 184, "0.1's sss_settings");
 static_assert(sizeof(Settings02) == 192, "0.2's sss_settings");
 static_assert(sizeof(KernelDesc03) == 120 && sizeof(ProfileDesc03) == 32, "0.1-0.3's sss_kernel_desc");
 static_assert(sizeof(sss_kernel_desc) == 144, "0.4: six burley floats appended to the embedded profile desc");
-static_assert(sizeof(sss_create_desc) == 48 && sizeof(sss_stats) == 72, "kept 0.1's layout");
-static_assert(sizeof(sss_frame) == 120, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format "
+static_assert(sizeof(sss_create_desc) == 48, "kept 0.1's layout");
+static_assert(offsetof(sss_stats, gpu_memory_bytes) == 72 && sizeof(sss_stats) == 80,
+              "0.1-0.4's 72 bytes, then gpu_memory_bytes (0.5)");
+static_assert(sizeof(Frame04) == 120, "0.1's and 0.2's 96 bytes, depth_stencil_mode, strength_texture and _format "
               "(0.3's 112), profile_texture and _format");
-static_assert(offsetof(sss_frame, profile_texture) == 108, "0.3's sss_frame (112 with its padding) is today's up to "
-              "profile_texture");
+static_assert(offsetof(Frame04, depth_stencil_mode) == 96 && offsetof(Frame04, profile_texture) == 108,
+              "0.3's sss_frame (112 with its padding) is 0.4's up to profile_texture");
+static_assert(sizeof(sss_frame) == 136, "0.5's sss_frame: a size no release had");
 static_assert(sizeof(sss_prepare_desc) == 44 && offsetof(sss_prepare_desc, profile_format) == 40,
               "0.3's sss_prepare_desc (40 bytes) is today's up to profile_format");
 #endif
@@ -352,6 +371,24 @@ TEST_F(VersionedStructs, KernelDescsOfEarlierReleasesAreRead) {
       << sss_last_error(sss_);
 }
 
+// An 8x8 RGBA32F frame into an output, every format, the size and the viewport given, in a
+// release's layout (the fields have the same names in all of them).
+template <typename Frame>
+Frame described_frame(uint32_t struct_size, GLuint color, GLuint depth, GLuint output) {
+  Frame f{};
+  f.struct_size = struct_size;
+  f.color_texture = color;
+  f.color_format = GL_RGBA32F;
+  f.depth_texture = depth;
+  f.depth_format = GL_DEPTH_COMPONENT32F;
+  f.output_texture = output;
+  f.output_format = GL_RGBA32F;
+  f.texture_width = f.texture_height = 8;
+  const int32_t viewport[4] = {0, 0, 8, 8};
+  std::memcpy(f.viewport, viewport, sizeof viewport);
+  return f;
+}
+
 TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   if (is_gles()) GTEST_SKIP() << "OpenGL ES 3.0 needs described frames; the sizes are the same there";
   ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
@@ -361,28 +398,37 @@ TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   sss_settings settings;
   sss_default_settings(&settings);
   settings.world_units_per_mm = 1.0f;
-  // One path for all three frames: on a GPU SSS_PATH_AUTO times a different path in each of its
+  // One path for all the frames: on a GPU SSS_PATH_AUTO times a different path in each of its
   // first frames, and the paths agree to rounding, not bit for bit.
   settings.path = SSS_PATH_FRAGMENT;
   ASSERT_EQ(sss_set_settings(sss_, &settings), SSS_OK) << sss_last_error(sss_);
   const SyntheticScene scene = make_relief_scene(8, 8, 1, kCamera);
   const GLuint depth = make_depth32f(8, 8, scene.window_depth);
-  std::vector<float> results[3];
-  const uint32_t sizes[3] = {96u, 112u, static_cast<uint32_t>(sizeof(sss_frame))};  // 0.1 and 0.2; 0.3; 0.4
-  for (int i = 0; i < 3; ++i) {
+  // 0.1-0.4 in 0.4's layout, with a separate output, a viewport of the whole frame and described
+  // formats (every field moved in 0.5), then 0.5's own frame with the same fields.
+  const uint32_t sizes[3] = {sizeof(Frame04) == 120 ? 96u : 92u, sizeof(Frame04) == 120 ? 112u : 108u,
+                             static_cast<uint32_t>(sizeof(Frame04))};  // 0.1 and 0.2; 0.3; 0.4
+  std::vector<float> results[4];
+  for (int i = 0; i < 4; ++i) {
+    SCOPED_TRACE(i < 3 ? sizes[i] : sizeof(sss_frame));
     const GLuint color = make_rgba32f(8, 8, scene.color);
-    sss_frame f{};
-    f.struct_size = sizes[i];
-    f.color_texture = color;
-    f.depth_texture = depth;
-    // 0.3's 112 bytes end in 4 bytes of padding where 0.4 has profile_texture: whatever a 0.3 host
-    // left there is not read as a texture name.
-    if (sizes[i] == 112u) f.profile_texture = 0xDEADu;
-    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sizes[i] << ": " << sss_last_error(sss_);
-    results[i] = read_rgba(color, 8, 8);
+    const GLuint output = make_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, -1.0f));
+    if (i < 3) {
+      Frame04 f = described_frame<Frame04>(sizes[i], color, depth, output);
+      // 0.3's 112 bytes end in 4 bytes of padding where 0.4 has profile_texture: whatever a 0.3 host
+      // left there is not read as a texture name.
+      if (sizes[i] == 112u) f.profile_texture = 0xDEADu;
+      ASSERT_EQ(sss_apply_frame(sss_, reinterpret_cast<const sss_frame*>(&f)), SSS_OK) << sss_last_error(sss_);
+    } else {
+      const sss_frame f = described_frame<sss_frame>(sizeof(sss_frame), color, depth, output);
+      ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    }
+    EXPECT_EQ(read_rgba(color, 8, 8), scene.color);  // the output was written, not the colour
+    results[i] = read_rgba(output, 8, 8);
   }
   EXPECT_EQ(results[0], results[1]);  // depth_stencil_mode's default: the same frame
   EXPECT_EQ(results[0], results[2]);  // no profile texture: the same frame
+  EXPECT_EQ(results[0], results[3]);  // 0.4's fields where 0.5 has them
   EXPECT_NE(results[0], scene.color);
   sss_frame f{};
   f.struct_size = 100u;
@@ -392,6 +438,27 @@ TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   const std::string message = sss_last_error(sss_);
   EXPECT_NE(message.find("frame->struct_size = 100"), std::string::npos) << message;
   EXPECT_NE(message.find("sss_frame"), std::string::npos) << message;
+}
+
+// 0.1-0.4's sss_stats (72 bytes on LP64) get their fields and nothing past them; 0.5's get the memory.
+TEST_F(VersionedStructs, StatsOfEveryReleaseAreFilledToTheirSize) {
+  unsigned char bytes[sizeof(sss_stats) + 8];
+  std::memset(bytes, 0xAB, sizeof bytes);
+  sss_stats* old = reinterpret_cast<sss_stats*>(bytes);
+  old->struct_size = static_cast<uint32_t>(offsetof(sss_stats, gpu_memory_bytes));
+  ASSERT_EQ(sss_get_stats(sss_, old), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(old->struct_size, offsetof(sss_stats, gpu_memory_bytes));
+  EXPECT_EQ(old->frames, 0u);
+  for (std::size_t i = offsetof(sss_stats, last_frame_path) + sizeof(uint32_t); i < sizeof bytes; ++i) {
+    EXPECT_EQ(bytes[i], 0xAB) << "byte " << i << " past 0.4's fields was written";
+  }
+  sss_stats now{};
+  now.struct_size = sizeof now;
+  ASSERT_EQ(sss_get_stats(sss_, &now), SSS_OK);
+  EXPECT_EQ(now.struct_size, sizeof now);
+  now.struct_size = 76u;
+  EXPECT_EQ(sss_get_stats(sss_, &now), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("stats->struct_size = 76"), std::string::npos);
 }
 
 // The runtime builds no fitted kernel by itself (it links neither NLopt nor Eigen): without the tools'

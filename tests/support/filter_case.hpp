@@ -28,6 +28,7 @@ struct FilterCase {
   // Before the frame, the same context applies another one of the same size, every pixel
   // translucent and of other colours: what the module's targets hold from it must not show.
   bool stale_frame_first = false;
+  std::uint32_t noise_index = 0;  // sss_frame.noise_index (the CPU model's too)
 };
 
 struct FilterOutcome {

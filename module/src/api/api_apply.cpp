@@ -305,8 +305,8 @@ sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint3
 }
 
 // Everything of the run but the textures and rectangles: the constants from the settings, the
-// camera and the frame's geometry; the kernel; the path.
-void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run) {
+// frame's camera (`projection`) and geometry; the kernel; the path; the noise index.
+void fill_run(const sss_context& ctx, const sss_frame& frame, const sss::math::Matrix4& projection, gl::FilterRun* run) {
   sss::math::FrameGeometry geometry;
   geometry.texture_width = run->color.width;
   geometry.texture_height = run->color.height;
@@ -315,14 +315,15 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
   if (run->color.multisampled()) {
     // The resolve reads the host's encoding; the passes read the resolved linear distance.
     run->resolve_constants =
-        sss::math::compute_pass_constants(ctx.settings, ctx.projection, geometry, ctx.kernel.reach_mm);
+        sss::math::compute_pass_constants(ctx.settings, projection, geometry, ctx.kernel.reach_mm);
     geometry.depth = sss::math::DepthEncoding::linear_distance;
     run->depth_resolve = static_cast<gl::DepthResolve>(frame.msaa_depth_resolve);
   }
-  run->constants = sss::math::compute_pass_constants(ctx.settings, ctx.projection, geometry, ctx.kernel.reach_mm);
+  run->constants = sss::math::compute_pass_constants(ctx.settings, projection, geometry, ctx.kernel.reach_mm);
   run->kernel = &ctx.kernel;
   run->kernel_revision = ctx.kernel_revision;
   run->follow_surface = ctx.settings.follow_surface;
+  run->noise_index = frame.noise_index;
   // Nothing drawn (unless an output needs the copy) where every profile the frame can use is the identity.
   run->identity = sss::api::is_identity_settings(ctx.settings) &&
                   (!run->has_profiles() || sss::api::extra_profiles_are_identity(ctx));
@@ -346,7 +347,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run
       sss::math::clamp_to_rect(&run->constants, run->draw_rect);
     }
   }
-  if (run->has_profiles()) sss::api::fill_profiles(ctx, &geometry, run);
+  if (run->has_profiles()) sss::api::fill_profiles(ctx, projection, &geometry, run);
 }
 
 // The runner, with the depth texture sampled as depth (gl/host_texture_state.hpp: put back before
@@ -399,7 +400,16 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
   const sss_frame* frame = &current;
   r = sss::api::check_frame(ctx, frame);
   if (r != SSS_OK) return r;
-  if (!ctx->has_camera) return fail(ctx, SSS_ERROR_INVALID_OPERATION, "no camera: call sss_set_camera before applying");
+  // The frame's own camera, or the context's (sss_set_camera). A frame's is checked every time (a
+  // few float comparisons): two views may take turns.
+  sss::math::Matrix4 projection = ctx->projection;
+  if (frame->projection != nullptr) {
+    r = sss::api::take_projection(ctx, frame->projection, "frame->", &projection);
+    if (r != SSS_OK) return r;
+  } else if (!ctx->has_camera) {
+    return fail(ctx, SSS_ERROR_INVALID_OPERATION,
+                "frame->projection is NULL and no camera is set: give the frame a projection or call sss_set_camera");
+  }
   const gl::Functions& f = ctx->gl;
   // A steady frame trusts the last successful one and asks the GL nothing (steady_frame.hpp);
   // every other frame checks the context, the host's errors and the textures first.
@@ -425,7 +435,7 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
     if (!steady) sss::api::drain_host_errors(nullptr, f);  // a failed query may have raised one
     return r;
   }
-  fill_run(*ctx, *frame, &run);
+  fill_run(*ctx, *frame, projection, &run);
   if (steady && run.identity != ctx->steady.identity) {
     // Drawing after drawing nothing may allocate the targets, whose check reads the error flag.
     steady = false;
@@ -446,42 +456,6 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
     sss::api::remember_steady(ctx, *frame, run);
   }
   return r;
-}
-
-SSS_API sss_result sss_get_stats(const sss_context* ctx, sss_stats* stats) {
-  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
-  if (stats == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "stats is NULL");
-  // Every release so far has the same sss_stats (0.1's 72 bytes on x86-64).
-  const sss_result size = sss::api::check_struct_size(mutable_ctx, "stats->struct_size", "sss_stats", stats->struct_size,
-                                                      {{"0.1, 0.2, 0.3", static_cast<uint32_t>(sizeof(sss_stats))}});
-  if (size != SSS_OK) return size;
-  sss_stats s = {};
-  s.struct_size = sizeof s;
-  switch (ctx->filter.variant()) {
-    case gl::GlslVariant::glsl330: s.glsl_variant = SSS_GLSL_330_CORE; break;
-    case gl::GlslVariant::glsl420: s.glsl_variant = SSS_GLSL_420_CORE; break;
-    case gl::GlslVariant::essl300: s.glsl_variant = SSS_GLSL_300_ES; break;
-  }
-  s.frames = ctx->frames;
-  s.passes = ctx->passes;
-  s.last_frame_passes = ctx->last_frame_passes;
-  s.last_frame_path = ctx->last_frame_path;
-  const gl::PassMeasurement& m = ctx->filter.queries().latest();
-  if (m.frame != 0) {
-    s.measured_frame = m.frame;
-    if (m.has_pixels) {
-      s.measured |= SSS_STATS_PIXELS;
-      s.pixels_touched = m.pixels;
-    }
-    if (m.has_time) {
-      s.measured |= SSS_STATS_GPU_TIME;
-      s.gpu_time_ms[0] = m.milliseconds[0];
-      s.gpu_time_ms[1] = m.milliseconds[1];
-    }
-  }
-  *stats = s;
-  return SSS_OK;
 }
 
 }  // extern "C"

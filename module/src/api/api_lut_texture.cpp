@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../gl/debug_label.hpp"
+#include "../gl/gpu_memory.hpp"
 #include "../gl/program.hpp"
 #include "../gl/shader_constants.hpp"
 #include "../gl/shader_variants.hpp"
@@ -245,7 +246,9 @@ SSS_API sss_result sss_lut_create_texture(sss_context* ctx, int32_t which, const
   gl::GLuint texture = 0;
   r = make_texture(ctx, which, *desc, values_key, key, &texture);
   if (r != SSS_OK) return r;
-  ctx->lut_textures.push_front({key, texture});
+  const std::uint64_t bytes = static_cast<std::uint64_t>(desc->width) * static_cast<std::uint64_t>(desc->height) *
+                              gl::texel_bytes(internal_format(desc->format));
+  ctx->lut_textures.push_front({key, texture, bytes});
   while (ctx->lut_textures.size() > kTextureCacheSize) {
     f.DeleteTextures(1, &ctx->lut_textures.back().texture);
     ctx->lut_textures.pop_back();

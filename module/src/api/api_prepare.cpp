@@ -208,7 +208,7 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   if (d.profile_format != 0) {
     run.profile_ids = described(d, d.profile_format, false);
     run.profile_ids.name = gl::kPrewarmPlaceholder;
-    sss::api::fill_profiles(ctx, nullptr, &run);  // the kernels; their constants are per frame
+    sss::api::fill_profiles(ctx, ctx.projection, nullptr, &run);  // the kernels; their constants are per frame
   }
   return run;
 }

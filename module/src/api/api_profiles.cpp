@@ -121,7 +121,8 @@ sss_result check_profile_texture(sss_context* ctx, const gl::FilterRun& run) {
   return SSS_OK;
 }
 
-void fill_profiles(const sss_context& ctx, const sss::math::FrameGeometry* geometry, gl::FilterRun* run) {
+void fill_profiles(const sss_context& ctx, const sss::math::Matrix4& projection, const sss::math::FrameGeometry* geometry,
+                   gl::FilterRun* run) {
   run->profile_count = 1 + static_cast<int>(ctx.extra_profiles.size());
   run->profile_kernels[0] = &ctx.kernel;
   run->profile_constants[0] = run->constants;
@@ -131,7 +132,7 @@ void fill_profiles(const sss_context& ctx, const sss::math::FrameGeometry* geome
     run->profile_kernels[i + 1] = &p.kernel;
     if (geometry == nullptr) continue;
     run->profile_constants[i + 1] =
-        sss::math::compute_pass_constants(p.settings, ctx.projection, *geometry, p.kernel.reach_mm);
+        sss::math::compute_pass_constants(p.settings, projection, *geometry, p.kernel.reach_mm);
   }
 }
 

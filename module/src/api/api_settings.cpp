@@ -229,17 +229,64 @@ SSS_API sss_result sss_get_settings(const sss_context* ctx, sss_settings* s) {
 
 SSS_API sss_result sss_set_camera(sss_context* ctx, const float projection[16]) {
   if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
-  if (projection == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "projection is NULL");
   sss::math::Matrix4 m;
-  std::memcpy(m.data(), projection, sizeof m);
-  std::string why;
-  switch (sss::math::check_projection(m, &why)) {
-    case sss::math::ProjectionCheck::ok: break;
-    case sss::math::ProjectionCheck::invalid: return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, why);
-    case sss::math::ProjectionCheck::unsupported: return fail(ctx, SSS_ERROR_UNSUPPORTED, why);
-  }
+  const sss_result r = sss::api::take_projection(ctx, projection, "", &m);
+  if (r != SSS_OK) return r;
   ctx->projection = m;
   ctx->has_camera = true;
+  return SSS_OK;
+}
+
+SSS_API sss_result sss_get_projection_info(const sss_context* ctx, const sss_projection_query* query,
+                                           sss_projection_info* info) {
+  if (ctx == nullptr) return fail(nullptr, SSS_ERROR_INVALID_ARGUMENT, "ctx is NULL");
+  auto* mutable_ctx = const_cast<sss_context*>(ctx);  // only for the error message
+  if (query == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "query is NULL");
+  if (info == nullptr) return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "info is NULL");
+  sss_result r = sss::api::check_struct_size(mutable_ctx, "query->struct_size", "sss_projection_query",
+                                             query->struct_size,
+                                             {{"0.5", static_cast<uint32_t>(sizeof(sss_projection_query))}});
+  if (r != SSS_OK) return r;
+  r = sss::api::check_struct_size(mutable_ctx, "info->struct_size", "sss_projection_info", info->struct_size,
+                                  {{"0.5", static_cast<uint32_t>(sizeof(sss_projection_info))}});
+  if (r != SSS_OK) return r;
+  if ((query->frame_flags & ~static_cast<uint32_t>(SSS_FRAME_DEPTH_ZERO_TO_ONE)) != 0) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "query->frame_flags = 0x%x: only SSS_FRAME_DEPTH_ZERO_TO_ONE (0x1) applies", query->frame_flags);
+  }
+  if (query->width <= 0 || query->height <= 0) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "query->width = %d, height = %d: both must be > 0",
+                query->width, query->height);
+  }
+  if (!(query->view_distance > 0.0f) || !std::isfinite(query->view_distance)) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_ARGUMENT, "query->view_distance = %g: must be finite and > 0",
+                static_cast<double>(query->view_distance));
+  }
+  sss::math::Matrix4 m = ctx->projection;
+  if (query->projection != nullptr) {
+    r = sss::api::take_projection(mutable_ctx, query->projection, "query->", &m);
+    if (r != SSS_OK) return r;
+  } else if (!ctx->has_camera) {
+    return fail(mutable_ctx, SSS_ERROR_INVALID_OPERATION,
+                "query->projection is NULL and no camera is set: call sss_set_camera or give a projection");
+  }
+  const sss::math::ProjectionReading reading =
+      sss::math::read_projection(m, (query->frame_flags & SSS_FRAME_DEPTH_ZERO_TO_ONE) != 0);
+  sss_projection_info out = {};
+  out.struct_size = sizeof out;
+  out.kind = reading.orthographic ? SSS_PROJECTION_ORTHOGRAPHIC : SSS_PROJECTION_PERSPECTIVE;
+  out.flags = (reading.reversed ? SSS_PROJECTION_REVERSED_Z : 0u) | (reading.infinite_far ? SSS_PROJECTION_INFINITE_FAR : 0u);
+  out.near_distance = static_cast<float>(reading.near_distance);
+  out.far_distance = reading.infinite_far ? INFINITY : static_cast<float>(reading.far_distance);
+  const int pixels[2] = {query->width, query->height};
+  for (int axis = 0; axis < 2; ++axis) {
+    // Millimetres of surface: the world span over the scene's world units per millimetre (0: no
+    // millimetre is a world length, so a pixel spans infinitely many).
+    const double world = sss::math::world_per_pixel(m, axis, pixels[axis], query->view_distance);
+    const double per_mm = ctx->settings.world_units_per_mm;
+    out.mm_per_pixel[axis] = per_mm > 0.0 ? static_cast<float>(world / per_mm) : INFINITY;
+  }
+  *info = out;
   return SSS_OK;
 }
 

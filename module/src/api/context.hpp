@@ -62,10 +62,18 @@ struct sss_context {
   struct LutTexture {
     std::string key;
     std::uint32_t texture = 0;
+    std::uint64_t bytes = 0;  // its storage (sss_stats.gpu_memory_bytes)
   };
   std::list<LutTexture> lut_textures;
   std::uint64_t lut_gpu_generations = 0;
   sss::math::LutCache lut_data{4};  // CPU-generated LUTs (SSS_LUT_CPU), by the same keys
+
+  // The LUT textures' storage.
+  std::uint64_t lut_texture_bytes() const {
+    std::uint64_t sum = 0;
+    for (const LutTexture& lut : lut_textures) sum += lut.bytes;
+    return sum;
+  }
 
   // sss_get_stats counters.
   std::uint64_t frames = 0, passes = 0;

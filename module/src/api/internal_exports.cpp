@@ -26,6 +26,8 @@ SSS_API const char* sss_last_error(const sss_context* ctx) {
   return ctx != nullptr ? ctx->last_error.c_str() : thread_error().c_str();
 }
 
+SSS_API uint32_t sss_get_version(void) { return SSS_VERSION; }
+
 SSS_API const char* sss_result_string(sss_result r) {
   switch (r) {
     case SSS_OK: return "SSS_OK";

@@ -69,9 +69,10 @@ struct Settings02 {
 inline constexpr std::uint32_t kLegacyAdaptiveTaps = 0x2u;
 inline constexpr std::uint32_t kLegacyMikkelsen = 0x100u;
 inline constexpr std::uint32_t kLegacyKernelProfile = 0x101u;
-// 0.1's and 0.2's sss_frame: today's without depth_stencil_mode (appended after 0.2). Its size
-// from its layout, not a number: 96 bytes with 64-bit pointers, 92 on wasm32 (the WebAssembly build).
-struct Frame02 {
+// 0.4's sss_frame. Each earlier release's is a prefix of it: 0.1's and 0.2's end before
+// depth_stencil_mode, 0.3's before profile_texture (their sizes: frame_size_ending_at). 0.5 put each
+// texture beside its format and added the projection and the noise index.
+struct Frame04 {
   std::uint32_t struct_size, color_texture, depth_texture, output_texture;
   const sss_stencil* stencil;
   std::int32_t viewport[4];
@@ -79,8 +80,31 @@ struct Frame02 {
   std::int32_t texture_width, texture_height;
   std::uint32_t normal_texture, normal_format, msaa_depth_resolve;
   std::int32_t region[4];
+  std::uint32_t depth_stencil_mode;
+  std::uint32_t strength_texture, strength_format;
+  std::uint32_t profile_texture, profile_format;
 };
-inline constexpr auto kFrameSize02 = static_cast<std::uint32_t>(sizeof(Frame02));
+inline constexpr auto kFrameSize04 = static_cast<std::uint32_t>(sizeof(Frame04));
+// The size of a release's frame whose fields end at byte `end` of Frame04: rounded up to the
+// struct's alignment, as its compiler padded it. From the layout, not a number: 0.1's and 0.2's are
+// 96 bytes with 64-bit pointers and 92 on wasm32 (the WebAssembly build).
+constexpr std::uint32_t frame_size_ending_at(std::size_t end) {
+  return static_cast<std::uint32_t>((end + alignof(Frame04) - 1) / alignof(Frame04) * alignof(Frame04));
+}
+inline constexpr std::uint32_t kFrameSize02 = frame_size_ending_at(offsetof(Frame04, depth_stencil_mode));
+
+// 0.1-0.4's sss_stats: today's without gpu_memory_bytes (0.5).
+struct Stats04 {
+  std::uint32_t struct_size, glsl_variant;
+  std::uint64_t frames, passes;
+  std::uint32_t last_frame_passes, measured;
+  std::uint64_t measured_frame, pixels_touched;
+  double gpu_time_ms[2];
+  std::uint32_t last_frame_path;
+};
+inline constexpr auto kStatsSize04 = static_cast<std::uint32_t>(sizeof(Stats04));
+static_assert(offsetof(sss_stats, gpu_memory_bytes) >= offsetof(Stats04, last_frame_path) + sizeof(std::uint32_t),
+              "0.5 appended gpu_memory_bytes");
 
 }  // namespace sss::legacy
 

@@ -25,7 +25,9 @@ sss_result check_profile_texture(sss_context* ctx, const gl::FilterRun& run);
 // The profiles' kernels and per-frame constants into `run` (which has its constants from the first
 // profile already), for a frame with a profile texture; geometry nullptr: the kernels alone
 // (sss_prepare, before any camera).
-void fill_profiles(const sss_context& ctx, const sss::math::FrameGeometry* geometry, gl::FilterRun* run);
+// `projection`: the frame's camera (used with `geometry` only).
+void fill_profiles(const sss_context& ctx, const sss::math::Matrix4& projection, const sss::math::FrameGeometry* geometry,
+                   gl::FilterRun* run);
 // SSS_CREATE_DEBUG_CHECKS: reads the indices back and refuses the frame (SSS_ERROR_INVALID_TEXTURE,
 // before anything is drawn) where a pixel of the drawn rectangle names a profile that is not set.
 sss_result check_profile_indices(sss_context* ctx, const gl::FilterRun& run);

@@ -1,6 +1,8 @@
 #include "validation.hpp"
 
 #include <cmath>
+#include <cstring>
+#include <string>
 
 #include "../gl/texture_query.hpp"
 #include "../math/spike_gaussian_profile.hpp"
@@ -63,6 +65,20 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
   // NULL: eq. (1) from the fields above. A kernel desc is checked whole, whatever its family.
   if (s->kernel == nullptr) return SSS_OK;
   return check_kernel_desc(ctx, s->kernel, "settings->kernel->", true);
+}
+
+sss_result take_projection(sss_context* ctx, const float* projection, const char* owner, sss::math::Matrix4* out) {
+  if (projection == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%sprojection is NULL", owner);
+  sss::math::Matrix4 m;
+  std::memcpy(m.data(), projection, sizeof m);
+  std::string why;  // "projection[3] = nan is not finite", "projection is singular: ..."
+  switch (sss::math::check_projection(m, &why)) {
+    case sss::math::ProjectionCheck::ok: break;
+    case sss::math::ProjectionCheck::invalid: return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, std::string(owner) + why);
+    case sss::math::ProjectionCheck::unsupported: return fail(ctx, SSS_ERROR_UNSUPPORTED, std::string(owner) + why);
+  }
+  *out = m;
+  return SSS_OK;
 }
 
 sss_result check_frame(sss_context* ctx, const sss_frame* frame) {

@@ -13,6 +13,10 @@ namespace sss::api {
 
 sss_result check_settings(sss_context* ctx, const sss_settings* s);
 sss_result check_frame(sss_context* ctx, const sss_frame* frame);
+// A projection as sss_set_camera and sss_frame.projection take it: NULL and invalid matrices
+// SSS_ERROR_INVALID_ARGUMENT, unsupported ones SSS_ERROR_UNSUPPORTED, the message naming the element
+// as `owner` + "projection[i]" ("", "frame->", "query->"); else *out.
+sss_result take_projection(sss_context* ctx, const float* projection, const char* owner, sss::math::Matrix4* out);
 // The optional texture description of sss_frame (formats in their lists, sizes both 0 or both > 0).
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame);
 // The frame describes its textures (sss.h, sss_frame): the size, and the format of every texture

@@ -15,8 +15,8 @@ namespace {
 using legacy::Settings01;
 using legacy::Settings02;
 
-static_assert(offsetof(sss_frame, depth_stencil_mode) == legacy::kFrameSize02,
-              "0.1's and 0.2's sss_frame are today's up to depth_stencil_mode");
+static_assert(offsetof(legacy::Frame04, depth_stencil_mode) == legacy::kFrameSize02,
+              "0.1's and 0.2's sss_frame are 0.4's up to depth_stencil_mode");
 
 // The 0.1 and 0.2 layouts embedded a kernel desc whose eq. (1) family meant "the settings' own
 // strength and falloff": today that is settings.kernel = NULL.
@@ -159,22 +159,54 @@ sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss
   return SSS_OK;
 }
 
-// 0.3's sss_frame: today's fields up to profile_texture, its size rounded up to the struct's
+// 0.3's sss_frame: 0.4's fields up to profile_texture, its size rounded up to the struct's
 // alignment (112 bytes on LP64, where the bytes after strength_format are padding; 108 on wasm32).
-constexpr auto kFrameFields03 = static_cast<std::uint32_t>(offsetof(sss_frame, profile_texture));
-constexpr auto kFrameSize03 =
-    static_cast<std::uint32_t>((kFrameFields03 + alignof(sss_frame) - 1) / alignof(sss_frame) * alignof(sss_frame));
+constexpr auto kFrameFields03 = static_cast<std::uint32_t>(offsetof(legacy::Frame04, profile_texture));
+constexpr std::uint32_t kFrameSize03 = legacy::frame_size_ending_at(kFrameFields03);
+// Every release's frame has its own size, on every ABI, so the size alone says the layout.
+static_assert(sizeof(sss_frame) != legacy::kFrameSize02 && sizeof(sss_frame) != kFrameSize03 &&
+                  sizeof(sss_frame) != legacy::kFrameSize04 && legacy::kFrameSize04 != kFrameSize03,
+              "a new sss_frame layout needs a size of its own");
 
 sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* out) {
   if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame is NULL");
-  const sss_result r = check_struct_size(
-      ctx, "frame->struct_size", "sss_frame", in->struct_size,
-      {{"0.1, 0.2", legacy::kFrameSize02}, {"0.3", kFrameSize03}, {"0.4", static_cast<std::uint32_t>(sizeof(sss_frame))}});
+  const sss_result r = check_struct_size(ctx, "frame->struct_size", "sss_frame", in->struct_size,
+                                         {{"0.1, 0.2", legacy::kFrameSize02},
+                                          {"0.3", kFrameSize03},
+                                          {"0.4", legacy::kFrameSize04},
+                                          {"0.5", static_cast<std::uint32_t>(sizeof(sss_frame))}});
   if (r != SSS_OK) return r;
+  if (in->struct_size == sizeof(sss_frame)) {
+    *out = *in;
+    return SSS_OK;
+  }
+  // An earlier release's fields only (its padding is not a field), read into 0.4's layout with the
+  // later fields zero (their defaults), then moved field by field.
+  legacy::Frame04 old{};
+  std::memcpy(static_cast<void*>(&old), in, in->struct_size == kFrameSize03 ? kFrameFields03 : in->struct_size);
   *out = sss_frame{};
-  // An earlier release's fields only: its padding is not today's fields.
-  std::memcpy(static_cast<void*>(out), in, in->struct_size == kFrameSize03 ? kFrameFields03 : in->struct_size);
   out->struct_size = sizeof(sss_frame);
+  out->color_texture = old.color_texture;
+  out->color_format = old.color_format;
+  out->depth_texture = old.depth_texture;
+  out->depth_format = old.depth_format;
+  out->depth_stencil_mode = old.depth_stencil_mode;
+  out->msaa_depth_resolve = old.msaa_depth_resolve;
+  out->output_texture = old.output_texture;
+  out->output_format = old.output_format;
+  out->texture_width = old.texture_width;
+  out->texture_height = old.texture_height;
+  out->flags = old.flags;
+  std::memcpy(out->viewport, old.viewport, sizeof out->viewport);
+  std::memcpy(out->region, old.region, sizeof out->region);
+  out->stencil = old.stencil;
+  out->stencil_format = old.stencil_format;
+  out->strength_texture = old.strength_texture;
+  out->strength_format = old.strength_format;
+  out->profile_texture = old.profile_texture;
+  out->profile_format = old.profile_format;
+  out->normal_texture = old.normal_texture;
+  out->normal_format = old.normal_format;
   return SSS_OK;
 }
 

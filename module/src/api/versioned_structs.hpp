@@ -38,7 +38,8 @@ sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, Curren
 // `kernel` is the current kernel desc (NULL: eq. (1)).
 sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss_settings* out);
 
-// The frame in this release's layout (a 0.1 or 0.2 frame is the prefix without depth_stencil_mode).
+// The frame in this release's layout, converted field by field from an earlier release's (0.1-0.4:
+// prefixes of legacy_structs.hpp's Frame04; 0.5 put each texture beside its format).
 sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* out);
 
 // What 0.1 and 0.2 called the profile ids of sss_settings.cbf_profile: sss_material 0..11 (today's

@@ -84,6 +84,7 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   f.Uniform2f(p.pixel_span, k.pixel_span[0], k.pixel_span[1]);
   f.Uniform4f(p.ray_slope, k.slope_scale[0], k.slope_scale[1], k.slope_bias[0], k.slope_bias[1]);
   f.Uniform1i(p.round_to_half, writes_half_float(f, run, term, axis) ? 1 : 0);
+  if (p.noise_index >= 0) f.Uniform1ui(p.noise_index, run.noise_index);
   if (p.profile >= 0) {
     // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
     std::array<float, 4 * math::kMaxProfiles> looks{};

@@ -56,6 +56,7 @@ struct FilterRun {
   std::uint64_t profiles_revision = 0;
   bool has_profiles() const { return profile_ids.name != 0; }
   bool follow_surface = false;
+  std::uint32_t noise_index = 0;           // sss_frame.noise_index: seeds the jitter (jitter.glsl)
   bool identity = false;                   // nothing to blur: only copy into a separate output
   std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
   // The cross-bilateral mode (Mikkelsen 2010) instead of the separable kernel.

@@ -24,6 +24,10 @@ class ProfileTables {
   sss_result upload(const FilterRun& run, std::string* message);
   // Binding point 0 on the block of the pass along `axis` (0 horizontal, 1 vertical).
   void bind(int axis) const;
+  // The buffer's storage (both passes' blocks), 0 before the first upload (sss_stats.gpu_memory_bytes).
+  std::uint64_t memory_bytes() const {
+    return buffer_ != 0 ? static_cast<std::uint64_t>(stride_ + block_bytes()) : 0;
+  }
   void destroy();  // deletes the buffer (in the current context)
   void forget();   // drops the name (context lost)
 

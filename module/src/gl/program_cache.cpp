@@ -205,6 +205,7 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.original = f.GetUniformLocation(p.program, "u_original");
   p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
   p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
+  p.noise_index = f.GetUniformLocation(p.program, "u_noise_index");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
   p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
   p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");

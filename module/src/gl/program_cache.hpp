@@ -30,7 +30,7 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 
 struct BlurProgram {
   GLuint program = 0;
-  GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, inv_two_variance = -1,
+  GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, noise_index = -1, inv_two_variance = -1,
         pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
         cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
   GLint pixel_span = -1, ray_slope = -1;  // pass_surface.glsl's view offsets

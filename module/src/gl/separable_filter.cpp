@@ -49,7 +49,7 @@ void SeparableFilter::forget() {
   queries_ = PassQueries{};
   chooser_ = PathChooser{};
   last_draws_ = 0;
-  last_path_ = SSS_PATH_FRAGMENT;
+  last_path_ = reported_path_ = SSS_PATH_FRAGMENT;
 }
 
 sss_result SeparableFilter::rebuild(std::string* message) {
@@ -128,6 +128,7 @@ sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   if (run.color.multisampled()) {
     const sss_result r = run_msaa(ctx, run, message);
     last_draws_ = ctx.draws;
+    if (r == SSS_OK) reported_path_ = SSS_PATH_FRAGMENT;
     return r;
   }
   const PathChooser::Choice choice = choose_path(run);
@@ -148,7 +149,7 @@ sss_result SeparableFilter::run(const FilterRun& given, std::string* message) {
   }
   chooser_.end();
   last_draws_ = ctx.draws;
-  if (r == SSS_OK) last_path_ = path;
+  if (r == SSS_OK) last_path_ = reported_path_ = path;
   return r;
 }
 

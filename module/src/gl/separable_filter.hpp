@@ -43,6 +43,8 @@ class SeparableFilter {
   // Mesa's software rasterisers (their GL_TIME_ELAPSED covers one tile); call before init().
   void set_software_renderer(bool software_renderer) { software_renderer_ = software_renderer; }
   const PassQueries& queries() const { return queries_; }
+  // The storage of its targets and buffers now (gpu_memory.hpp).
+  std::uint64_t gpu_memory_bytes() const { return targets_.memory_bytes() + profile_tables_.memory_bytes(); }
   // Full-screen draws of the last run() (blur passes and copies; MSAA: also the resolve, the
   // stencil mark and one per-sample write per sample).
   int last_draws() const { return last_draws_; }
@@ -61,7 +63,8 @@ class SeparableFilter {
   // the fragment passes an incomplete target would take).
   sss_result prewarm(const FilterRun& run, std::string* message);
   // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
-  unsigned last_run_path() const { return last_path_; }
+  // (An MSAA frame resolves, then runs the fragment passes: SSS_PATH_FRAGMENT.)
+  unsigned last_run_path() const { return reported_path_; }
 
   // Context loss. The objects live in the GL context that init() ran in. When that context was
   // lost or destroyed and the host made a new one current (or made another, unrelated one current)
@@ -96,7 +99,8 @@ class SeparableFilter {
   PassQueries queries_;
   PathChooser chooser_;
   int last_draws_ = 0;
-  unsigned last_path_ = SSS_PATH_FRAGMENT;
+  unsigned last_path_ = SSS_PATH_FRAGMENT;  // the last single-sample run's (its framebuffers were checked)
+  unsigned reported_path_ = SSS_PATH_FRAGMENT;  // the last successful run's, MSAA included
   const char* compute_refusal_ = "";  // compute_unavailable()'s last answer for SSS_PATH_COMPUTE
   const char* half_refusal_ = "";     // half_resolution_unavailable()'s for SSS_PATH_HALF_RESOLUTION
 };

@@ -17,16 +17,18 @@ sss_result allocation_failed(GLenum error, const char* what, int width, int heig
   return error == OUT_OF_MEMORY ? SSS_ERROR_OUT_OF_MEMORY : SSS_ERROR_GL;
 }
 
-// (Re)specifies a single-sample texture with one level and no data.
-void specify_2d(const Functions& f, GLuint texture, GLint format, GLenum pixel_format, GLenum type, int width,
-                int height) {
+}  // namespace
+
+// (Re)specifies a single-sample texture with one level and no data, and records its storage.
+void TargetPool::specify_2d(GLuint texture, GLint format, GLenum pixel_format, GLenum type, int width, int height) {
+  const Functions& f = *gl_;
+  memory_.set_2d(TEXTURE, texture, format, width, height);
   f.ActiveTexture(TEXTURE0);
   f.BindTexture(TEXTURE_2D, texture);
   f.BindBuffer(PIXEL_UNPACK_BUFFER, 0);  // NULL data must not read from a host buffer
   f.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 0);
   f.TexImage2D(TEXTURE_2D, 0, format, width, height, 0, pixel_format, type, nullptr);
 }
-}  // namespace
 
 void TargetPool::init(const Functions* gl, bool labels, const Log* log) {
   gl_ = gl;
@@ -85,9 +87,10 @@ sss_result TargetPool::allocate_target(GLuint* texture, GLenum internal_format, 
                                        const char* what, std::string* message, GLenum pixel_format) {
   const Functions& f = *gl_;
   if (*texture == 0) f.GenTextures(1, texture);
-  specify_2d(f, *texture, static_cast<GLint>(internal_format), pixel_format, type, width, height);
+  specify_2d(*texture, static_cast<GLint>(internal_format), pixel_format, type, width, height);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
+    memory_.erase(TEXTURE, *texture);
     f.DeleteTextures(1, texture);
     *texture = 0;
     return allocation_failed(error, what, width, height, message);
@@ -146,8 +149,10 @@ sss_result TargetPool::ensure_stencil_buffer(GLint format, int width, int height
   f.BindRenderbuffer(RENDERBUFFER, t_.stencil_buffer);
   // The copy is a blit, which needs the host's exact depth-stencil format.
   f.RenderbufferStorage(RENDERBUFFER, static_cast<GLenum>(format), width, height);
+  memory_.set_2d(RENDERBUFFER, t_.stencil_buffer, format, width, height);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
+    memory_.erase(RENDERBUFFER, t_.stencil_buffer);
     f.DeleteRenderbuffers(1, &t_.stencil_buffer);
     t_.stencil_buffer = 0;
     stencil_format_ = 0;
@@ -170,9 +175,10 @@ sss_result TargetPool::ensure_masked_source(GLint format, int width, int height,
   // The host colour's own format: the copy must hold it exactly (its centre share is not blurred),
   // and on OpenGL ES that format is the one the create-time and frame checks found renderable and
   // sampleable (RGBA32F there needs extensions an RGBA16F host may lack).
-  specify_2d(f, t_.masked_source, format, RGBA, FLOAT, width, height);
+  specify_2d(t_.masked_source, format, RGBA, FLOAT, width, height);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
+    memory_.erase(TEXTURE, t_.masked_source);
     f.DeleteTextures(1, &t_.masked_source);
     t_.masked_source = 0;
     masked_width_ = masked_height_ = 0;
@@ -219,8 +225,8 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
       t_.translucent_lowest = t[4];
     }
     has_write_back_targets_ = false;
-    specify_2d(f, t_.resolved_color, color_format, RGBA, FLOAT, width, height);
-    specify_2d(f, t_.resolved_distance, static_cast<GLint>(R32F), RED, FLOAT, width, height);
+    specify_2d(t_.resolved_color, color_format, RGBA, FLOAT, width, height);
+    specify_2d(t_.resolved_distance, static_cast<GLint>(R32F), RED, FLOAT, width, height);
     const GLenum error = f.GetError();
     if (error != NO_ERROR) {
       msaa_color_format_ = 0;  // reallocated next time
@@ -236,9 +242,9 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.resolved_distance, 0);
   }
   if (write_back && !has_write_back_targets_) {
-    specify_2d(f, t_.blurred, color_format, RGBA, FLOAT, width, height);
-    specify_2d(f, t_.translucent_mean, static_cast<GLint>(RGBA32F), RGBA, FLOAT, width, height);
-    specify_2d(f, t_.translucent_lowest, static_cast<GLint>(RGBA32UI), RGBA_INTEGER, UNSIGNED_INT, width, height);
+    specify_2d(t_.blurred, color_format, RGBA, FLOAT, width, height);
+    specify_2d(t_.translucent_mean, static_cast<GLint>(RGBA32F), RGBA, FLOAT, width, height);
+    specify_2d(t_.translucent_lowest, static_cast<GLint>(RGBA32UI), RGBA_INTEGER, UNSIGNED_INT, width, height);
     const GLenum error = f.GetError();
     if (error != NO_ERROR) return allocation_failed(error, "MSAA write-back targets", width, height, message);
     label_object(f, labels_, TEXTURE, t_.blurred, "sss msaa blurred (before the write-back)");
@@ -345,8 +351,10 @@ sss_result TargetPool::ensure_half_targets(int width, int height, GLint result_f
   if (t_.half_depth == 0) f.GenRenderbuffers(1, &t_.half_depth);
   f.BindRenderbuffer(RENDERBUFFER, t_.half_depth);
   f.RenderbufferStorage(RENDERBUFFER, DEPTH24_STENCIL8, w, h);
+  memory_.set_2d(RENDERBUFFER, t_.half_depth, static_cast<GLint>(DEPTH24_STENCIL8), w, h);
   const GLenum error = f.GetError();
   if (error != NO_ERROR) {
+    memory_.erase(RENDERBUFFER, t_.half_depth);
     f.DeleteRenderbuffers(1, &t_.half_depth);
     t_.half_depth = 0;
     return allocation_failed(error, "half-size DEPTH24_STENCIL8 culling depth", w, h, message);

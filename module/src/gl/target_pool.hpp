@@ -11,6 +11,7 @@
 #include <string>
 
 #include "gl_functions.hpp"
+#include "gpu_memory.hpp"
 #include "program_cache.hpp"
 #include "texture_query.hpp"
 
@@ -66,6 +67,8 @@ class TargetPool {
   void destroy();  // deletes every object (they must exist in the current context), then forget()s
   void forget();   // drops the names (context lost)
   const Targets& names() const { return t_; }
+  // The storage its textures and renderbuffers hold now (gpu_memory.hpp).
+  std::uint64_t memory_bytes() const { return memory_.total(); }
 
   // `format`: intermediate_format (pass_setup.hpp) of the frame: RGBA16F, or RGBA32F for RGBA32F colour.
   sss_result ensure_intermediate(GLint format, int width, int height, std::string* message);
@@ -116,11 +119,15 @@ class TargetPool {
   sss_result allocate_target(GLuint* texture, GLenum internal_format, GLenum type, int width, int height,
                              const char* what, std::string* message, GLenum pixel_format = RGBA);
   void note(const std::string& text) const;
+  // (Re)specifies a single-sample texture with one level and no data (left bound on unit 0, no
+  // unpack buffer), and records its storage in memory_.
+  void specify_2d(GLuint texture, GLint format, GLenum pixel_format, GLenum type, int width, int height);
 
   const Functions* gl_ = nullptr;
   bool labels_ = false;
   const Log* log_ = nullptr;
   Targets t_;
+  GpuMemory memory_;
   GLint intermediate_format_ = 0;
   int intermediate_width_ = 0, intermediate_height_ = 0;
   bool accumulator_half_ = false;

@@ -41,6 +41,7 @@ struct PassFrame {
   const Plane& distance;
   Indices indices;
   CpuWalkChoices walk;
+  std::uint32_t noise_index;  // CpuFilterImage::noise_index
 };
 
 // The neighbour (x + ox, y + oy) of (x, y) for the surface's tangent (pass_surface.hpp): inside the
@@ -144,7 +145,7 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
 
   // Whole-pixel taps (footprint_kernel.hpp), read without filtering.
   const int jitter_from = kernel.jitter_from;
-  const float noise = kernel.jittered() ? jitter_noise(x, y, axis) : 0.0f;
+  const float noise = kernel.jittered() ? jitter_noise(x, y, axis, frame.noise_index) : 0.0f;
   const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step, jitter_from, noise);
   const bool chords = frame.walk.chords && taps.count > 0;  // no taps: the pixel keeps the whole kernel
   const std::array<float, 2> g = chords ? ray_slope(shared, cx, cy) : std::array<float, 2>{};
@@ -227,7 +228,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   const Plane color{w, h, 4, image.color};
   const std::vector<float> distances = pass_distances(constants, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
-  const PassFrame frame{constants, distance, Indices{}, image.walk};
+  const PassFrame frame{constants, distance, Indices{}, image.walk, image.noise_index};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
   std::vector<float> accumulated(count * 3, 0.0f);  // the earlier terms' vertical sums
@@ -280,7 +281,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
   const std::vector<float> distances = pass_distances(shared, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
   const Indices indices{ids, w};
-  const PassFrame frame{shared, distance, indices, image.walk};
+  const PassFrame frame{shared, distance, indices, image.walk, image.noise_index};
   std::copy(image.color, image.color + count * 4, out);
   std::vector<float> intermediate(count * 4);
   // The pixel's profile, or -1 where its index has none (the pixel is left alone).

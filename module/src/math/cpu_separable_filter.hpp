@@ -40,6 +40,7 @@ struct CpuFilterImage {
   // RGBA32F: gl::FilterRun::intermediate_format): round what it stores like the GL.
   bool intermediate_is_half = true;
   CpuWalkChoices walk;  // the passes' unless a study asks otherwise
+  std::uint32_t noise_index = 0;  // sss_frame.noise_index: moves the jittered taps (jitter_noise)
 };
 
 // An image of `width` x `height` pixels with these colour and depth planes, the rest as above.

@@ -108,11 +108,12 @@ bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b) {
          x.radius_mm == y.radius_mm;
 }
 
-float jitter_noise(int x, int y, int axis) {
-  // A 32-bit integer hash (xorshift-multiply rounds) of the pixel and the axis, then its top 24 bits
-  // as a fraction: exact in float and identical in GLSL's uint arithmetic.
+float jitter_noise(int x, int y, int axis, std::uint32_t noise_index) {
+  // A 32-bit integer hash (xorshift-multiply rounds) of the pixel, the axis and the noise index (by
+  // the golden ratio's odd multiplier, so that consecutive indices land far apart), then its top 24
+  // bits as a fraction: exact in float and identical in GLSL's uint arithmetic.
   std::uint32_t h = static_cast<std::uint32_t>(x) * 0x8da6b343u ^ static_cast<std::uint32_t>(y) * 0xd8163841u ^
-                    static_cast<std::uint32_t>(axis + 1) * 0xcb1ab31fu;
+                    static_cast<std::uint32_t>(axis + 1) * 0xcb1ab31fu ^ noise_index * 0x9e3779b9u;
   h ^= h >> 16;
   h *= 0x7feb352du;
   h ^= h >> 15;

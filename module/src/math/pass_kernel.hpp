@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "filter_constants.hpp"
@@ -55,10 +56,11 @@ PassKernel build_pass_kernel(const FilterSettings& settings);
 // kernel is rebuilt only when one of them changes.
 bool same_pass_kernel_inputs(const FilterSettings& a, const FilterSettings& b);
 
-// Deterministic per-pixel noise in [0, 1) for the jittered taps: an integer hash of the pixel and
-// the pass axis (0 horizontal, 1 vertical), exact in GLSL's 32-bit uint arithmetic too
+// Deterministic per-pixel noise in [0, 1) for the jittered taps: an integer hash of the pixel, the
+// pass axis (0 horizontal, 1 vertical) and the frame's noise index (sss_frame.noise_index: 0 gives
+// the pattern of the releases before it), exact in GLSL's 32-bit uint arithmetic too
 // (module/shaders/jitter.glsl, which separable_blur.frag and .comp include, must compute the same
 // bits: a change here is a change there).
-float jitter_noise(int x, int y, int axis);
+float jitter_noise(int x, int y, int axis, std::uint32_t noise_index);
 
 }  // namespace sss::math

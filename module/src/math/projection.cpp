@@ -54,6 +54,29 @@ double distance_from_ndc_z(const Matrix4& m, double ndc_z) {
   return -z_view;
 }
 
+ProjectionReading read_projection(const Matrix4& m, bool zero_to_one) {
+  ProjectionReading r;
+  r.orthographic = m[11] == 0.0f;
+  // d(NDC z)/d(distance) = -det / w²: the depth grows with the distance where det < 0.
+  r.reversed = depth_map_determinant(m) > 0.0;
+  const double low = zero_to_one ? 0.0 : -1.0;
+  const double near_ndc = r.reversed ? 1.0 : low, far_ndc = r.reversed ? low : 1.0;
+  r.near_distance = distance_from_ndc_z(m, near_ndc);
+  // The far end at infinity: the denominator of distance_from_ndc_z vanishes there, to float
+  // precision (an infinite projection built in float keeps an ulp or so of it).
+  const double denominator = far_ndc * m[11] - m[10];
+  const double scale = std::fabs(static_cast<double>(m[11])) + std::fabs(static_cast<double>(m[10]));
+  const double far = distance_from_ndc_z(m, far_ndc);
+  r.infinite_far = std::fabs(denominator) <= 1e-6 * scale || !std::isfinite(far) || far <= r.near_distance;
+  r.far_distance = r.infinite_far ? HUGE_VAL : far;
+  return r;
+}
+
+double world_per_pixel(const Matrix4& m, int axis, int pixels, double distance) {
+  const double scale = std::fabs(static_cast<double>(m[axis == 0 ? 0 : 5]));
+  return 2.0 * clip_w_from_distance(m, distance) / (scale * pixels);
+}
+
 double clip_w_from_distance(const Matrix4& m, double distance) {
   return -static_cast<double>(m[11]) * distance + m[15];
 }

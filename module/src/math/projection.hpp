@@ -26,4 +26,19 @@ double clip_w_from_distance(const Matrix4& m, double distance);
 // The determinant of the depth map (non-zero when depth can be linearised).
 double depth_map_determinant(const Matrix4& m);
 
+// How a projection that passes check_projection maps distances to depth (sss_get_projection_info).
+struct ProjectionReading {
+  bool orthographic = false;  // clip w does not change with the distance (m[11] == 0)
+  bool reversed = false;      // NDC z falls as the distance grows (reversed-Z)
+  bool infinite_far = false;  // the depth range's far end lies at infinity
+  double near_distance = 0.0, far_distance = 0.0;  // view distances at its near and far ends
+};
+// `zero_to_one`: the depth range is NDC z in [0, 1] (glClipControl's GL_ZERO_TO_ONE), else [-1, 1].
+ProjectionReading read_projection(const Matrix4& m, bool zero_to_one);
+
+// The world width one pixel spans on a surface facing the camera at view distance `distance`, along
+// `axis` (0: x, 1: y) of a viewport `pixels` wide along it: NDC's 2 units over the projection's scale,
+// times clip w.
+double world_per_pixel(const Matrix4& m, int axis, int pixels, double distance);
+
 }  // namespace sss::math
