@@ -92,6 +92,32 @@ std::string per_frame(const std::map<std::string, long>& calls, int frames) {
   return out.empty() ? "none" : out;
 }
 
+// Two views in one context, each frame carrying its own projection (sss_frame.projection), and the
+// jitter's noise index moving every frame: the frames stay steady, the module asks the GL nothing.
+TEST_F(GlQueries, TwoViewsTakingTurnsWithTheirOwnProjectionsMakeNone) {
+  start(SSS_CREATE_NO_STATE_RESTORE);
+  if (HasFatalFailure()) return;
+  sss_settings s = settings_;
+  s.jitter = 0.5f;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  const sss::math::Matrix4 left = perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f);
+  const sss::math::Matrix4 right = perspective_matrix(44.0f, 32.0f / 24.0f, 0.1f, 10.0f);
+  sss_frame f = described_frame();
+  for (int i = 0; i < 2; ++i) {
+    f.projection = (i % 2 == 0 ? left : right).data();
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  }
+  reset_call_counts();
+  for (uint32_t i = 0; i < 2 * kSteadyFrames; ++i) {
+    f.projection = (i % 2 == 0 ? left : right).data();
+    f.noise_index = i;
+    ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  }
+  const GlCallCounts n = call_counts();
+  EXPECT_EQ(n.total_queries(), 0) << n.describe_queries();
+  EXPECT_EQ(n.total_creations(), 0) << n.describe_creations();
+}
+
 TEST_F(GlQueries, ADescribedSteadyFrameWithoutStateRestoreMakesNone) {
   start(SSS_CREATE_NO_STATE_RESTORE);
   if (HasFatalFailure()) return;
