@@ -8,9 +8,9 @@
 //   - every function that returns an sss_result lists its codes as "@retval" lines (SSS_OK among
 //     them), never as one "@return" sentence.
 // Prints every problem as "<header>:<line>: <what>" and exits 1 if there is any.
+#include <cctype>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -92,6 +92,44 @@ class Checker {
     }
   }
   static bool trailing_doc(const std::string& text) { return text.find("/**<") != std::string::npos; }
+  static bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+  static bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+  // The name a "#define NAME ..." line defines, or "" for another line.
+  static std::string defined_name(const std::string& code) {
+    if (code.empty() || code[0] != '#') return "";
+    const std::string rest = trim(code.substr(1));
+    if (!starts_with(rest, "define")) return "";
+    const std::string after = trim(rest.substr(6));
+    std::size_t end = 0;
+    while (end < after.size() && identifier_char(after[end])) ++end;
+    return after.substr(0, end);
+  }
+  // The identifier right before the first '(' of a declaration, and the text before it.
+  static bool function_name(const std::string& code, std::string* name, std::string* before) {
+    if (!starts_with(code, "SSS_API")) return false;
+    const std::size_t paren = code.find('(');
+    if (paren == std::string::npos) return false;
+    std::size_t end = paren;
+    while (end > 0 && code[end - 1] == ' ') --end;
+    std::size_t begin = end;
+    while (begin > 0 && identifier_char(code[begin - 1])) --begin;
+    *name = code.substr(begin, end - begin);
+    *before = code.substr(0, begin);
+    return !name->empty();
+  }
+  // Enumerators on an enum's line: the comma-separated pieces that start with a name.
+  static int enumerators(const std::string& code) {
+    int count = 0;
+    std::size_t from = 0;
+    while (from <= code.size()) {
+      const std::size_t comma = code.find(',', from);
+      const std::string piece = trim(code.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+      if (!piece.empty() && (std::isalpha(static_cast<unsigned char>(piece[0])) != 0 || piece[0] == '_')) ++count;
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+    return count;
+  }
   // The code before any comment on the line.
   static std::string code_of(const std::string& text) {
     const auto c = text.find("/*");
@@ -106,35 +144,27 @@ class Checker {
     if (lines_[i].in_comment) return;
     const std::string code = code_of(text);
     if (code.empty()) return;
-    static const std::regex define(R"(^#\s*define\s+(\w+))");
-    static const std::regex enum_open(R"(^typedef\s+enum\s+\w*\s*\{)");
-    static const std::regex struct_open(R"(^typedef\s+struct\s+\w*\s*\{)");
-    static const std::regex close(R"(^\}\s*\w*\s*;$)");
-    static const std::regex function(R"(^SSS_API\s+(.*?)\b(\w+)\s*\()");
-    static const std::regex typedef_line(R"(^typedef\b)");
-    static const std::regex enumerator(R"(\bSSS_\w+\b(\s*=\s*[^,]+)?\s*,?)");
-    std::smatch m;
-    if (std::regex_search(code, m, define)) {
-      const std::string name = m[1];
+    const std::string name = defined_name(code);
+    if (!name.empty()) {
       if (name == "SSS_API" || name.find("_H") == name.size() - 2) return;  // export macro, include guard
       if (!trailing_doc(text) && !documented_above(i)) problem(i, "#define " + name + " has no comment of its own");
       return;
     }
     if (code[0] == '#') return;  // other preprocessor lines
-    if (std::regex_search(code, close)) {
+    if (code[0] == '}' && code.back() == ';') {
       if (code.find(';') != code.rfind(';')) problem(i, "the struct's closing line declares more");
       scope_ = Scope::none;
       return;
     }
-    if (std::regex_search(code, enum_open) || std::regex_search(code, struct_open)) {
+    const bool opens = code.find('{') != std::string::npos;
+    if (opens && (starts_with(code, "typedef enum") || starts_with(code, "typedef struct"))) {
       if (!documented_above(i)) problem(i, "a type without a comment of its own above it");
       if (code.find('}') != std::string::npos) problem(i, "a whole enum or struct on one line");
       scope_ = code.find("enum") != std::string::npos ? Scope::enumeration : Scope::structure;
       return;
     }
     if (scope_ == Scope::enumeration) {
-      const auto count = std::distance(std::sregex_iterator(code.begin(), code.end(), enumerator), std::sregex_iterator());
-      if (count > 1) problem(i, "several enumerators on one line: " + code);
+      if (enumerators(code) > 1) problem(i, "several enumerators on one line: " + code);
       if (!trailing_doc(text) && !documented_above(i)) problem(i, "enumerator without a comment of its own: " + code);
       return;
     }
@@ -151,20 +181,20 @@ class Checker {
       if (!trailing_doc(text) && !documented_above(i)) problem(i, "field without a comment of its own: " + code);
       return;
     }
-    if (std::regex_search(code, m, function)) {
-      const std::string name = m[2];
+    std::string function, returns;
+    if (function_name(code, &function, &returns)) {
       if (!documented_above(i)) {
-        problem(i, name + "() has no comment of its own above it");
+        problem(i, function + "() has no comment of its own above it");
         return;
       }
       const std::string block = block_above(i);
-      if (std::string(m[1]).find("sss_result") != std::string::npos) {
-        if (block.find("@retval SSS_OK") == std::string::npos) problem(i, name + "(): no \"@retval SSS_OK\"");
-        if (block.find("@return") != std::string::npos) problem(i, name + "(): codes in \"@return\", not \"@retval\"");
+      if (returns.find("sss_result") != std::string::npos) {
+        if (block.find("@retval SSS_OK") == std::string::npos) problem(i, function + "(): no \"@retval SSS_OK\"");
+        if (block.find("@return") != std::string::npos) problem(i, function + "(): codes in \"@return\", not \"@retval\"");
       }
       return;
     }
-    if (std::regex_search(code, typedef_line)) {
+    if (starts_with(code, "typedef ")) {
       if (!documented_above(i)) problem(i, "a typedef without a comment of its own above it: " + code);
     }
   }
