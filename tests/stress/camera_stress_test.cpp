@@ -235,5 +235,53 @@ TEST_F(CameraStress, RandomMatricesAreRejectedOrGiveFiniteFrames) {
   EXPECT_GT(accepted, 100);
 }
 
+// The same random matrices carried by the frame (sss_frame.projection): each is refused with the
+// code sss_set_camera gives it, leaving the colour as it was, or gives the image sss_set_camera's
+// camera gives, bit for bit.
+TEST_F(CameraStress, RandomMatricesInTheFrameAgreeWithTheCamera) {
+  category_ = "cameras-in-the-frame";
+  const uint32_t seed = stress_seed(0x5eed41u);
+  std::printf("seed %u (SSS_STRESS_SEED)\n", seed);
+  std::mt19937 rng(seed);
+  const std::vector<float> extremes = extreme_floats();
+  std::uniform_int_distribution<std::size_t> pick_extreme(0, extremes.size() - 1);
+  std::uniform_int_distribution<int> pick(0, 9);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  sss_settings s;
+  sss_default_settings(&s);
+  s.world_units_per_mm = 0.05f;
+  s.path = SSS_PATH_FRAGMENT;  // one path for both runs of a matrix
+  ASSERT_EQ(set_settings(s), SSS_OK);
+  int accepted = 0, refused = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Matrix4 m{};
+    for (float& v : m) {
+      const int k = pick(rng);
+      v = k < 4 ? 0.0f : k < 6 ? extremes[pick_extreme(rng)] : unit(rng) * std::pow(10.0f, 6.0f * unit(rng));
+    }
+    if (trial % 2 == 0) m[1] = m[2] = m[3] = m[4] = m[6] = m[7] = 0.0f;
+    SCOPED_TRACE(::testing::Message() << "trial " << trial);
+    StressFrame f = relief_frame(9, 7, static_cast<uint32_t>(rng()), m, 0.0, 1.0, DepthFormat::r32f);
+    f.projection = m.data();
+    ++tally_.cases;
+    const StressOutcome carried = run(f);
+    const sss_result camera = sss_set_camera(sss_, m.data());
+    check(carried.result == camera, std::string("the frame's projection gave ") + sss_result_string(carried.result) +
+                                         ", sss_set_camera " + sss_result_string(camera));
+    if (camera != SSS_OK) {
+      ++refused;
+      check(carried.output == carried.input, "a refused projection changed the colour");
+      continue;
+    }
+    ++accepted;
+    f.projection = nullptr;
+    const StressOutcome set = run(f);
+    check(set.result == SSS_OK && set.output == carried.output, "the frame's projection gave another image");
+  }
+  std::printf("%d accepted, %d refused\n", accepted, refused);
+  EXPECT_GT(accepted, 10);
+  EXPECT_GT(refused, 10);
+}
+
 }  // namespace
 }  // namespace sss_test

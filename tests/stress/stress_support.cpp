@@ -214,6 +214,7 @@ StressOutcome StressTest::run(const StressFrame& f) {
   frame.stencil = f.use_stencil ? &stencil : nullptr;
   std::memcpy(frame.viewport, f.viewport, sizeof frame.viewport);
   frame.flags = f.flags;
+  frame.projection = f.projection;
   o.result = sss_apply_frame(sss_, &frame);
   o.output = read_rgba(output != 0 ? output : color, f.width, f.height);
   const GLenum error = glGetError();

@@ -43,6 +43,7 @@ struct StressFrame {
   uint32_t flags = 0;  // SSS_FRAME_*
   // Per pixel, as an R16UI profile_texture (profile in bits 0-3, object above); empty: none.
   std::vector<uint16_t> profile_ids;
+  const float* projection = nullptr;  // sss_frame.projection (NULL: the context's camera)
 };
 
 constexpr float kSentinel = -3.25f;
