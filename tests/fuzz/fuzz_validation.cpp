@@ -136,7 +136,7 @@ void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
   SSS_FUZZ_CHECK(now.mode == s.mode && now.cbf_taps == s.cbf_taps && now.cbf_profile == s.cbf_profile);
   SSS_FUZZ_CHECK(std::memcmp(&now.cbf_r_max_mm, &s.cbf_r_max_mm, sizeof(float)) == 0);
   if (s.mode == SSS_MODE_CROSS_BILATERAL) {
-    SSS_FUZZ_CHECK(ctx->cbf_kernel.taps.size() == static_cast<std::size_t>(s.cbf_taps));
+    SSS_FUZZ_CHECK(ctx->cbf_kernel.spacing.size() == static_cast<std::size_t>(s.cbf_taps / 2));  // taps a side
   }
   SSS_FUZZ_CHECK(std::memcmp(&now.jitter, &s.jitter, sizeof(float)) == 0 && (now.kernel == nullptr) == (s.kernel == nullptr) &&
                  (s.kernel == nullptr || now.kernel->family == s.kernel->family));
