@@ -42,6 +42,12 @@
 //                       (value & 15) picks its profile's table (a uniform block of SSS_PROFILES)
 //                       and u_profile[] entry; an index >= u_profile_count leaves the pixel alone;
 //                       taps whose whole value (profile and object) differs count as the centre
+//   SSS_DEBUG_VIEW      0: the filter; else an sss_debug_view (sss.h) instead of the blurred colour:
+//                       the horizontal pass writes its own footprint (1 / its step: profile mm per
+//                       pixel) and tap count into the texel's r and g (b and a, the R8UI index and the
+//                       distance the vertical walk reads, kept); the vertical pass writes the view,
+//                       (0, 0, 0, 1) for a pixel it leaves alone, and with u_debug_fill set (drawn
+//                       over the pixels the culling keeps from the passes) (0, 0, 0, 1) everywhere
 // and from the dialect's header (version_*.glsl, module/src/gl/glsl_variant.cpp):
 //   SSS_BINDING(unit)        layout(binding = unit) where the dialect has it, else nothing (the
 //                            module sets the unit with glUniform1i)
@@ -71,6 +77,9 @@ SSS_BINDING(3) uniform sampler2D u_accumulated;  // the earlier terms' vertical 
 uniform float u_pixels_per_mm;        // along the axis, at clip w = 1 and strength 1
 uniform float u_follow_surface;       // 1 / the kernel's reach in world units (SSS_FOLLOW_SURFACE 2: 1 / world units per mm)
 uniform vec4 u_clamp;                 // tap positions are kept inside (xy min, zw max), in pixels
+#if SSS_DEBUG_VIEW && !SSS_PACKED_OUTPUT
+uniform int u_debug_fill;             // 1: every pixel drawn gets (0, 0, 0, 1) (see SSS_DEBUG_VIEW)
+#endif
 
 #if SSS_PROFILE_IDS
 #if SSS_PROFILE_IDS == 2
@@ -213,7 +222,9 @@ SssWalk sss_walk(ivec2 pixel, float d0) {
 
 // `texel`: the pixel's own input texel.
 void leave_untouched(ivec2 pixel, uvec4 texel) {
-#if SSS_OUTSIDE == 0 && SSS_PACKED_OUTPUT
+#if SSS_DEBUG_VIEW && !SSS_PACKED_OUTPUT
+  o_color = vec4(0.0, 0.0, 0.0, 1.0);  // a view: a pixel the passes leave alone
+#elif SSS_OUTSIDE == 0 && SSS_PACKED_OUTPUT
   o_packed = texel;
 #elif SSS_OUTSIDE == 0
   o_color = vec4(sss_colour(texel.rgb), 0.0);
@@ -226,6 +237,12 @@ void leave_untouched(ivec2 pixel, uvec4 texel) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+#if SSS_DEBUG_VIEW && !SSS_PACKED_OUTPUT
+  if (u_debug_fill != 0) {
+    o_color = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+#endif
   uvec4 texel = sss_tap_texel(pixel);
   vec4 centre = vec4(sss_colour(texel.rgb), sss_strength(pixel));
   // Not translucent, or a non-finite colour or strength (or past colour_range.glsl's bound): the
@@ -262,6 +279,32 @@ void main() {
 #endif
   SssWalk walk = sss_walk(pixel, centre_distance);
   float step_pixels = pixels_per_mm * strength / w * walk.ratio;
+#if SSS_DEBUG_VIEW
+  // This pass's footprint and taps (footprint_taps.glsl's count), as the filter would run them.
+  float footprint = 1.0 / step_pixels;
+  float taps = float(1 + 2 * sss_tap_count(step_pixels));
+#if SSS_PACKED_OUTPUT
+  o_packed = uvec4(floatBitsToUint(footprint), floatBitsToUint(taps), texel.b, texel.a);
+#else
+  // The horizontal pass's numbers for this pixel are in its texel's r and g.
+  vec2 across = vec2(uintBitsToFloat(texel.r), uintBitsToFloat(texel.g));
+#if SSS_DEBUG_VIEW == 1
+  vec3 view = vec3(1.0);
+#elif SSS_DEBUG_VIEW == 2
+  vec3 view = vec3(centre_distance);
+#elif SSS_DEBUG_VIEW == 3
+  vec3 view = vec3(across.x, footprint, 0.0);
+#elif SSS_DEBUG_VIEW == 4
+  vec3 view = vec3(across.y, taps, 0.0);
+#elif SSS_PROFILE_IDS
+  vec3 view = vec3(float(sss_centre_id & 15u), float(sss_centre_id >> 4u), 0.0);
+#else
+  vec3 view = vec3(0.0);
+#endif
+  o_color = sss_nearest_half(vec4(view, 1.0));
+#endif
+  return;
+#endif
   vec3 sum = footprint_sum(sss_tap_site(walk.shear), centre.rgb, step_pixels, sss_follow(walk, follow_surface, centre_distance),
                            sss_follow_slack(walk, follow_surface), pixel, kSssAxis);
 #if SSS_ACCUMULATE

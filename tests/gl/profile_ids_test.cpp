@@ -226,6 +226,37 @@ TEST_F(ProfileIds, MatchesTheCpuModel) {
   EXPECT_EQ(gpu[(static_cast<std::size_t>(30) * kW + 50) * 4], input[(static_cast<std::size_t>(30) * kW + 50) * 4]);
 }
 
+// The profile view (SSS_DEBUG_VIEW_PROFILE): each pixel's profile and object, (0, 0, 0, 1) where its
+// index has no profile, into an output; the colour untouched.
+TEST_F(ProfileIds, TheProfileViewShowsEachPixelsIndex) {
+  const sss_settings profiles[2] = {first_, second_look(first_)};
+  const auto id = [](int x, int y) { return x < kBoundary ? (y < kH / 2 ? 0u : 0x10u) : (y < 20 ? 1u : 0x27u); };
+  fresh();
+  ASSERT_EQ(sss_set_profiles(sss_, profiles, 2), SSS_OK) << sss_last_error(sss_);
+  const Inputs in = make_inputs();
+  const GLuint output = make_rgba16f(kW, kH, std::vector<float>(static_cast<std::size_t>(kW) * kH * 4, -1.0f));
+  sss_frame f = frame_of(in.color, in.depth, output);
+  describe_frame(&f, GL_RGBA16F, GL_RGBA16F, GL_DEPTH_COMPONENT32F, kW, kH);
+  f.profile_texture = make_ids(id);
+  f.profile_format = GL_R8UI;
+  f.debug_view = SSS_DEBUG_VIEW_PROFILE;
+  const std::vector<float> before = read_rgba(in.color, kW, kH);
+  ASSERT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(read_rgba(in.color, kW, kH), before);
+  const std::vector<float> view = read_rgba(output, kW, kH);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const unsigned v = id(x, y);
+      const bool has_profile = (v & 15u) < 2u;
+      const float* p = &view[(static_cast<std::size_t>(y) * kW + x) * 4];
+      ASSERT_EQ(p[0], has_profile ? static_cast<float>(v & 15u) : 0.0f) << x << ", " << y;
+      ASSERT_EQ(p[1], has_profile ? static_cast<float>(v >> 4) : 0.0f) << x << ", " << y;
+      ASSERT_EQ(p[2], 0.0f);
+      ASSERT_EQ(p[3], 1.0f);
+    }
+  }
+}
+
 TEST_F(ProfileIds, EachObjectOfOneMaterialMatchesItsRunAlone) {
   // One profile, two objects (index 0 and 0x10: profile 0, object 1): the object ID alone separates them.
   const sss_settings profiles[2] = {first_, first_};

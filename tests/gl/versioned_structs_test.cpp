@@ -125,7 +125,7 @@ static_assert(sizeof(Frame04) == 120, "0.1's and 0.2's 96 bytes, depth_stencil_m
               "(0.3's 112), profile_texture and _format");
 static_assert(offsetof(Frame04, depth_stencil_mode) == 96 && offsetof(Frame04, profile_texture) == 108,
               "0.3's sss_frame (112 with its padding) is 0.4's up to profile_texture");
-static_assert(sizeof(sss_frame) == 136, "0.5's sss_frame: a size no release had");
+static_assert(sizeof(sss_frame) == 144, "0.5's sss_frame: a size no release had");
 static_assert(sizeof(sss_prepare_desc) == 44 && offsetof(sss_prepare_desc, profile_format) == 40,
               "0.3's sss_prepare_desc (40 bytes) is today's up to profile_format");
 #endif

@@ -129,6 +129,22 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
       }
     }
   }
+  // The debug views (SSS_DEBUG_VIEW 1..5): the fragment passes' pair a view runs (the horizontal
+  // pass packed, the vertical one into a separate output), with each per-pixel profile variant.
+  for (int view = 1; view <= static_cast<int>(SSS_DEBUG_VIEW_LAST); ++view) {
+    for (int profile_ids = 0; profile_ids < 3; ++profile_ids) {
+      for (const bool packed : {true, false}) {
+        gl::BlurVariant v;
+        v.follow_surface = 1;
+        v.profile_ids = profile_ids;
+        v.packed_output = packed;
+        v.outside = packed ? gl::BlurOutside::write_centre : gl::BlurOutside::copy_original;
+        v.debug_view = view;
+        out->write(d + "blur_debug" + std::to_string(view) + "_" + blur_name(v) + ".frag",
+                   gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+      }
+    }
+  }
   for (int outside = 0; outside < 3; ++outside) {
     for (int linear = 0; linear < 2; ++linear) {
       for (int normals = 0; normals < 2; ++normals) {

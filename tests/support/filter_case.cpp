@@ -235,6 +235,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   sss_frame frame = frame_of(color, depth, output);
   frame.stencil = c.use_stencil ? &stencil : nullptr;
   frame.noise_index = c.noise_index;
+  frame.debug_view = c.debug_view;
   frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
   if (c.use_region) {
@@ -292,6 +293,7 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   image.depth = stored_depth.data();
   image.mask = c.use_stencil ? scene.stencil.data() : nullptr;
   image.noise_index = c.noise_index;
+  image.debug_view = c.debug_view;
   image.output_is_half = c.half_color && !c.separate_output;
   // The module's intermediate is as precise as the colour (RGBA32F colour: RGBA32F), and on ES it
   // sums terms in RGBA16F unless the colour is RGBA32F.

@@ -29,6 +29,7 @@ struct FilterCase {
   // translucent and of other colours: what the module's targets hold from it must not show.
   bool stale_frame_first = false;
   std::uint32_t noise_index = 0;  // sss_frame.noise_index (the CPU model's too)
+  std::uint32_t debug_view = 0;   // sss_frame.debug_view (the CPU model's too; needs separate_output)
 };
 
 struct FilterOutcome {

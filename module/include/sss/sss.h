@@ -274,6 +274,26 @@ typedef enum sss_msaa_depth {
   SSS_MSAA_DEPTH_MAX = 3      /**< the farthest sample */
 } sss_msaa_depth;
 
+/** What a frame writes into its output_texture instead of the filtered image (sss_frame.debug_view):
+ *  what the passes see, per pixel. A pixel the passes leave alone (not translucent, outside the
+ *  stencil, a colour that is not finite, an unusable depth, a profile index with no profile) is
+ *  (0, 0, 0, 1); every other pixel (r, g, b, 1) as below. The views run the fragment passes of the
+ *  kernel's first term. */
+typedef enum sss_debug_view {
+  SSS_DEBUG_VIEW_NONE = 0,         /**< the filtered image (the default) */
+  SSS_DEBUG_VIEW_MASK = 1,         /**< (1, 1, 1): the pixels the passes change */
+  SSS_DEBUG_VIEW_LINEAR_DEPTH = 2, /**< (d, d, d): the view distance the passes read, world units */
+  SSS_DEBUG_VIEW_FOOTPRINT = 3,    /**< (x, y, 0): profile millimetres one pixel step spans along the
+                                        horizontal and the vertical pass (the surface's turn included;
+                                        surface millimetres over scale and the pixel's strength) */
+  SSS_DEBUG_VIEW_TAPS = 4,         /**< (x, y, 0): taps the horizontal and the vertical pass read,
+                                        the centre included */
+  SSS_DEBUG_VIEW_PROFILE = 5       /**< (p, o, 0): the profile (value & 15) and object (value >> 4)
+                                        index; (0, 0, 0) without a profile_texture */
+} sss_debug_view;
+/** The largest sss_debug_view. */
+#define SSS_DEBUG_VIEW_LAST 5u
+
 /** One application of the filter. Zero-initialise it and fill what you have: each texture with its
  *  format beside it. A frame that gives its size and the format of every texture it names is
  *  "described"; a described frame equal to the last successful one is "steady" and asks the GL
@@ -326,6 +346,11 @@ typedef struct sss_frame {
   uint32_t noise_index;        /**< any value: moves the jittered taps' pattern (settings.jitter > 0),
                                     so that a host that averages frames (TAA) averages the noise away:
                                     give it the frame counter. 0: the same pattern every frame */
+  /* Debugging. */
+  uint32_t debug_view;         /**< an sss_debug_view: 0 filters; else that view goes into
+                                    output_texture (required), the kernel's first term on the
+                                    fragment passes; not with SSS_FRAME_REGION, a multisampled colour
+                                    or the cross-bilateral mode */
 } sss_frame;
 
 /** Bits of sss_prepare_desc.flags: what the frames will use besides the formats. */
@@ -519,11 +544,13 @@ SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
  *  runs before the first draw: a failure other than SSS_ERROR_GL leaves every texture as it was.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT  ctx or frame NULL, a field outside its range (named), a
- *                                      described format or size that is not the texture's
+ *                                      described format or size that is not the texture's, a
+ *                                      debug_view without an output_texture or with a region
  *  @retval SSS_ERROR_INVALID_TEXTURE   a texture's name, target, format or size; under
  *                                      SSS_CREATE_DEBUG_CHECKS a profile index >= the profile count
  *  @retval SSS_ERROR_UNSUPPORTED       a format or sample count this GL lacks; a projection
- *                                      sss_set_camera() would refuse as unsupported
+ *                                      sss_set_camera() would refuse as unsupported; a debug_view
+ *                                      with a multisampled colour or in the cross-bilateral mode
  *  @retval SSS_ERROR_INVALID_OPERATION no projection in the frame and no camera set
  *  @retval SSS_ERROR_NO_CONTEXT        the GL context is not current or was lost (the module's
  *                                      objects are rebuilt by the next call that finds one)

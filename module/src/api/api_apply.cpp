@@ -324,6 +324,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, const sss::math::M
   run->kernel_revision = ctx.kernel_revision;
   run->follow_surface = ctx.settings.follow_surface;
   run->noise_index = frame.noise_index;
+  run->debug_view = frame.debug_view;
   // Nothing drawn (unless an output needs the copy) where every profile the frame can use is the identity.
   run->identity = sss::api::is_identity_settings(ctx.settings) &&
                   (!run->has_profiles() || sss::api::extra_profiles_are_identity(ctx));
@@ -347,6 +348,9 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, const sss::math::M
       sss::math::clamp_to_rect(&run->constants, run->draw_rect);
     }
   }
+  // A view shows the passes as they run even where they change nothing (scale, strength or the
+  // scene scale 0: a zero step, no taps).
+  if (frame.debug_view != 0) run->identity = false;
   if (run->has_profiles()) sss::api::fill_profiles(ctx, projection, &geometry, run);
 }
 
@@ -436,6 +440,12 @@ SSS_API sss_result sss_apply_frame(sss_context* ctx, const sss_frame* given) {
     return r;
   }
   fill_run(*ctx, *frame, projection, &run);
+  if (frame->debug_view != 0 && (run.cross_bilateral || run.color.multisampled())) {
+    if (!steady) sss::api::drain_host_errors(nullptr, f);
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "frame->debug_view = %u: the views show the separable passes on "
+                "single-sample textures (%s)", frame->debug_view,
+                run.cross_bilateral ? "the settings are in the cross-bilateral mode" : "the colour is multisampled");
+  }
   if (steady && run.identity != ctx->steady.identity) {
     // Drawing after drawing nothing may allocate the targets, whose check reads the error flag.
     steady = false;

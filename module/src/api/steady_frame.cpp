@@ -30,7 +30,8 @@ bool is_steady(const sss_context& ctx, const sss_frame& frame) {
   const std::array<std::uint32_t, 7> formats = formats_of(frame);
   return frame_described(frame) && names == s.names && formats == s.formats &&
          frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
-         frame.msaa_depth_resolve == s.msaa_depth_resolve && ctx.kernel_revision == s.kernel_revision &&
+         frame.msaa_depth_resolve == s.msaa_depth_resolve && frame.debug_view == s.debug_view &&
+         ctx.kernel_revision == s.kernel_revision &&
          ctx.profiles_revision == s.profiles_revision &&
          ctx.cbf_kernel_revision == s.cbf_kernel_revision && ctx.settings.path == s.path &&
          ctx.settings.cross_bilateral == s.cross_bilateral && ctx.settings.follow_surface == s.follow_surface;
@@ -63,6 +64,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.height = frame.texture_height;
   s.frame_flags = frame.flags;
   s.msaa_depth_resolve = frame.msaa_depth_resolve;
+  s.debug_view = frame.debug_view;
   s.kernel_revision = ctx->kernel_revision;
   s.profiles_revision = ctx->profiles_revision;
   s.cbf_kernel_revision = ctx->cbf_kernel_revision;

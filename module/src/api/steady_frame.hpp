@@ -34,7 +34,7 @@ struct SteadyFrame {
   // stencil, normals, strength and profile indices (0: none), the size, the flags that pick program variants.
   std::array<std::uint32_t, 7> names{}, formats{};
   std::int32_t width = 0, height = 0;
-  std::uint32_t frame_flags = 0, msaa_depth_resolve = 0;
+  std::uint32_t frame_flags = 0, msaa_depth_resolve = 0, debug_view = 0;
   // The settings that pick programs and targets.
   std::uint64_t kernel_revision = 0, cbf_kernel_revision = 0, profiles_revision = 0;
   unsigned path = 0;

@@ -104,6 +104,18 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
                 "frame->region = {%d, %d, %d, %d}: x, y, width and height must be >= 0 (SSS_FRAME_REGION is set)", rg[0],
                 rg[1], rg[2], rg[3]);
   }
+  if (frame->debug_view > SSS_DEBUG_VIEW_LAST) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = %u: must be an sss_debug_view (0..%u)",
+                frame->debug_view, SSS_DEBUG_VIEW_LAST);
+  }
+  if (frame->debug_view != 0 && frame->output_texture == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->debug_view = %u needs an output_texture (a view never replaces the colour)", frame->debug_view);
+  }
+  if (frame->debug_view != 0 && (frame->flags & SSS_FRAME_REGION) != 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "frame->debug_view = %u with SSS_FRAME_REGION: a view covers the whole viewport", frame->debug_view);
+  }
   if (frame->msaa_depth_resolve > SSS_MSAA_DEPTH_MAX) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->msaa_depth_resolve = %u: must be SSS_MSAA_DEPTH_AVERAGE, _SAMPLE0, _MIN or _MAX (0..3)",

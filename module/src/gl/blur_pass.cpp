@@ -30,12 +30,14 @@ BlurVariant fragment_blur_variant(const FilterRun& run, std::size_t term, int ax
   v.profile_ids = profile_ids_variant(run);
   v.packed_output = axis == 0;
   v.half_taps = compile_time_half_taps(static_cast<int>(run.kernel->spacing.size()));
+  v.debug_view = static_cast<int>(run.debug_view);
   return v;
 }
 
 bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis) {
   if (axis == 0) return run.intermediate_format() == static_cast<GLint>(RGBA16F);
-  const std::size_t terms = run.cross_bilateral ? 1 : run.kernel->terms.size();
+  // (A debug view runs the first term alone: its vertical pass writes the output.)
+  const std::size_t terms = run.cross_bilateral || run.debug_view != 0 ? 1 : run.kernel->terms.size();
   if (term + 1 < terms) return accumulators_are_half(gl, run);
   return run.target().internal_format == static_cast<GLint>(RGBA16F);
 }
@@ -51,6 +53,10 @@ void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& ru
     packed.reserve(table.half_cdf.size() * 4);
     for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
     f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
+  }
+  // Apart from the table: a debug view's pass reads the reach alone (its table is optimised away).
+  if (p.footprint >= 0) {
+    const math::FootprintTable& table = taps.footprint;
     f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
   }
   // (A fragment variant at a preset count has its tap count as a constant: no u_half_taps.)
@@ -94,8 +100,10 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
       std::copy(look.begin(), look.end(), looks.begin() + 4 * i);
     }
     f.Uniform4fv(p.profile, run.profile_count, looks.data());
-    f.Uniform1i(p.profile_count, run.profile_count);
   }
+  // Apart from the looks: a debug view that needs no step (mask, depth, profile) has them optimised
+  // away, but still leaves the pixels of an index without a profile alone.
+  if (p.profile_count >= 0) f.Uniform1i(p.profile_count, run.profile_count);
 }
 
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {

@@ -57,6 +57,8 @@ struct FilterRun {
   bool has_profiles() const { return profile_ids.name != 0; }
   bool follow_surface = false;
   std::uint32_t noise_index = 0;           // sss_frame.noise_index: seeds the jitter (jitter.glsl)
+  // sss_frame.debug_view: 0, or the view the first term's fragment passes write (SSS_DEBUG_VIEW).
+  std::uint32_t debug_view = 0;
   bool identity = false;                   // nothing to blur: only copy into a separate output
   std::uint64_t frame = 0;                 // 1-based number of this frame (for the measurements)
   // The cross-bilateral mode (Mikkelsen 2010) instead of the separable kernel.

@@ -103,8 +103,11 @@ namespace {
 using TermPrograms = std::array<BlurProgram*, 2 * math::kMaxPlanTerms>;  // [2t]: horizontal, [2t + 1]: vertical
 
 // Programs first: a variant that fails to build must not leave a new target behind.
+// The terms the passes run: a debug view shows the first term's passes only.
+std::size_t terms_run(const FilterRun& run) { return run.debug_view != 0 ? 1 : run.kernel->terms.size(); }
+
 sss_result build_programs(PassContext& ctx, const FilterRun& run, TermPrograms* programs, std::string* message) {
-  const std::size_t terms = run.kernel->terms.size();
+  const std::size_t terms = terms_run(run);
   const Outside last_outside = run.writes_back() ? Outside::discard : Outside::copy_original;
   sss_result r = SSS_OK;
   for (std::size_t t = 0; t < terms && r == SSS_OK; ++t) {
@@ -183,7 +186,14 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, BlurProgram& p, 
   measure.begin_pixels();
   draw_blur(ctx, p, run, ctx.targets.names().pass_intermediate, term, 1);
   measure.end_pixels();
-  if (!run.writes_back() && !run.output_outside_stencil_unread) {
+  if (run.debug_view != 0) {
+    // A view: the pixels the culling keeps from the passes are left alone, (0, 0, 0, 1), drawn by
+    // the same program (no scissor box to set, no clear of the host's texture outside the viewport).
+    set_culling(f, run, NOTEQUAL);
+    f.Uniform1i(p.debug_fill, 1);
+    draw_cover(ctx, p.tile_grid);
+    f.Uniform1i(p.debug_fill, 0);
+  } else if (!run.writes_back() && !run.output_outside_stencil_unread) {
     set_culling(f, run, NOTEQUAL);
     draw_copy(ctx, run.color.name);
   }
@@ -223,7 +233,7 @@ sss_result prepare_separable(PassContext& ctx, const FilterRun& run, TermProgram
     r = ctx.targets.ensure_stencil_buffer(static_cast<GLint>(DEPTH24_STENCIL8), run.color.width, run.color.height,
                                           message);
   }
-  if (r == SSS_OK && run.kernel->terms.size() > 1) {
+  if (r == SSS_OK && terms_run(run) > 1) {
     r = ctx.targets.ensure_accumulators(run.color.width, run.color.height, accumulators_are_half(ctx.gl, run),
                                         message);
   }
@@ -246,7 +256,7 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
 sss_result run_separable(PassContext& ctx, const FilterRun& run, bool tiles, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
-  const std::size_t terms = run.kernel->terms.size();
+  const std::size_t terms = terms_run(run);
   TermPrograms programs{};
   sss_result r = prepare_separable(ctx, run, &programs, message);
   if (r == SSS_OK && tiles) r = prepare_tile_culling(ctx, run, message);

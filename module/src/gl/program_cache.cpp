@@ -206,6 +206,7 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
   p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
   p.noise_index = f.GetUniformLocation(p.program, "u_noise_index");
+  p.debug_fill = f.GetUniformLocation(p.program, "u_debug_fill");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
   p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
   p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");

@@ -38,6 +38,7 @@ struct BlurProgram {
   GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
   GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
+  GLint debug_fill = -1;  // a debug view's vertical pass: u_debug_fill (separable_blur.frag)
   bool compute = false;
   // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_packed_inputs binds the source there.
   bool image_taps = false;

@@ -62,6 +62,10 @@ PathChooser::Choice SeparableFilter::choose_path(const FilterRun& run) {
   // Availability is asked only when a path other than the plain one is.
   const auto compute_ok = [&] { return !run.identity && *compute_unavailable(*gl_, run) == '\0'; };
   PathChooser::Choice choice;
+  if (run.debug_view != 0) {  // the views are the fragment passes' (fragment_runner.cpp)
+    choice.path = PathChooser::fragment;
+    return choice;
+  }
   switch (run.path) {
     case SSS_PATH_COMPUTE: {
       const char* refusal = run.identity ? "" : compute_unavailable(*gl_, run);

@@ -14,7 +14,8 @@ int blur_variant_index(const BlurVariant& v) {
   index = index * 3 + v.follow_surface;
   index = index * 2 + (v.linear_depth ? 1 : 0);
   index = index * 2 + (v.jitter ? 1 : 0);
-  return index * 2 + (v.accumulate ? 1 : 0);
+  index = index * 2 + (v.accumulate ? 1 : 0);
+  return v.debug_view * kBlurVariantCount + index;
 }
 
 BlurVariant blur_variant_at(int index) {
@@ -35,15 +36,15 @@ BlurVariant blur_variant_at(int index) {
 }
 
 std::string blur_defines(const BlurVariant& v, int profiles) {
-  char defines[416];
+  char defines[480];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
                 "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
                 "#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS %d\n#define SSS_PROFILES %d\n"
-                "#define SSS_PACKED_OUTPUT %d\n#define SSS_IMAGE_TAPS %d\n",
+                "#define SSS_PACKED_OUTPUT %d\n#define SSS_IMAGE_TAPS %d\n#define SSS_DEBUG_VIEW %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
                 v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids, profiles, v.packed_output ? 1 : 0,
-                v.image_taps ? 1 : 0);
+                v.image_taps ? 1 : 0, v.debug_view);
   std::string text = defines;
   if (v.half_taps > 0) text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n";
   return text;

@@ -38,6 +38,9 @@ struct BlurVariant {
   // not part of the index. On llvmpipe a texelFetch is a call to a sampling function that works out
   // a mip level per lane, around which the tap loop spills its registers; imageLoad is inlined.
   bool image_taps = false;
+  // SSS_DEBUG_VIEW: 0 filters; else the fragment passes write that sss_debug_view instead
+  // (fragment_runner.cpp). Above kBlurVariantCount's variants in the index (blur_variant_index).
+  int debug_view = 0;
 };
 // The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
 // (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll; any
@@ -50,7 +53,8 @@ inline int compile_time_half_taps(int half_taps) {
   return 0;
 }
 inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 3 * 2;
-// A variant's index in [0, kBlurVariantCount), and the variant at an index.
+// A variant's index: in [0, kBlurVariantCount) for the filtering variants, above for the debug views'
+// (debug_view · kBlurVariantCount + the rest); the variant at an index (below kBlurVariantCount).
 int blur_variant_index(const BlurVariant& v);
 BlurVariant blur_variant_at(int index);
 // The variants the module builds: fragment passes read pass_inputs.frag's view distances (no

@@ -42,6 +42,7 @@ struct PassFrame {
   Indices indices;
   CpuWalkChoices walk;
   std::uint32_t noise_index;  // CpuFilterImage::noise_index
+  std::uint32_t debug_view;   // CpuFilterImage::debug_view
 };
 
 // The neighbour (x + ox, y + oy) of (x, y) for the surface's tangent (pass_surface.hpp): inside the
@@ -121,6 +122,28 @@ Rgba chord_weighted_sum(const FootprintTable& table, const Rgba& centre, int cou
   return sum;
 }
 
+// A debug view's pass at a pixel the passes run (separable_blur.frag's SSS_DEBUG_VIEW): the
+// horizontal pass's footprint (1 / step) and taps in r and g (b and alpha kept); the vertical pass's
+// view, reading the horizontal numbers from its source's r and g.
+Rgba debug_values(const PassFrame& frame, const Plane& source, int axis, int x, int y, const Rgba& centre,
+                  float centre_distance, float step, int tap_count) {
+  const float footprint = 1.0f / step;
+  const auto taps = static_cast<float>(1 + 2 * tap_count);
+  if (axis == 0) return {footprint, taps, centre[2], centre[3]};
+  switch (frame.debug_view) {
+    case 1: return {1.0f, 1.0f, 1.0f, 1.0f};  // SSS_DEBUG_VIEW_MASK
+    case 2: return {centre_distance, centre_distance, centre_distance, 1.0f};  // _LINEAR_DEPTH
+    case 3: return {source.at(x, y, 0), footprint, 0.0f, 1.0f};  // _FOOTPRINT
+    case 4: return {source.at(x, y, 1), taps, 0.0f, 1.0f};  // _TAPS
+    default: {  // _PROFILE
+      const Indices& ids = frame.indices;
+      if (ids.ids == nullptr) return {0.0f, 0.0f, 0.0f, 1.0f};
+      const std::uint16_t id = ids.at(x, y);
+      return {static_cast<float>(id & 15u), static_cast<float>(id >> 4), 0.0f, 1.0f};
+    }
+  }
+}
+
 // One pass at pixel (x, y) along axis `axis` (0: x, 1: y, sheared: pass_surface.hpp), with the look
 // `k` (pixels per mm and the follow-surface numbers) in `frame`. Returns false when the pixel is left as it is (not translucent or no usable depth).
 bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_variance_mm2, const PassConstants& k,
@@ -147,6 +170,10 @@ bool filter_pixel(const PassTaps& pass, const PassKernel& kernel, float depth_va
   const int jitter_from = kernel.jitter_from;
   const float noise = kernel.jittered() ? jitter_noise(x, y, axis, frame.noise_index) : 0.0f;
   const FootprintTaps taps = footprint_taps(pass.footprint, kernel.spacing, step, jitter_from, noise);
+  if (frame.debug_view != 0) {
+    *result = debug_values(frame, source, axis, x, y, centre, centre_distance, step, taps.count);
+    return true;
+  }
   const bool chords = frame.walk.chords && taps.count > 0;  // no taps: the pixel keeps the whole kernel
   const std::array<float, 2> g = chords ? ray_slope(shared, cx, cy) : std::array<float, 2>{};
   PassTapColours colours;
@@ -219,20 +246,38 @@ std::vector<float> pass_distances(const PassConstants& shared, const CpuFilterIm
   return out;
 }
 
+// A debug view's output before its passes: (0, 0, 0, 1) over the clamp rectangle (the viewport),
+// where the GL's view draws; the rest as it was. Its intermediate keeps the horizontal numbers'
+// float bits (the GL writes them into RGBA32UI as they are): `image` without the half rounding.
+CpuFilterImage prepare_debug_view(const CpuFilterImage& image, const PassConstants& k, float* out) {
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!cpu_passes::inside(k, x, y)) continue;
+      float* p = out + (static_cast<std::size_t>(y) * image.width + x) * 4;
+      p[0] = p[1] = p[2] = 0.0f;
+      p[3] = 1.0f;
+    }
+  }
+  CpuFilterImage debug = image;
+  debug.intermediate_is_half = false;
+  return debug;
+}
+
 }  // namespace
 
-void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& image,
+void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& given,
                             float* out) {
-  const int w = image.width, h = image.height;
+  const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
+  std::copy(given.color, given.color + count * 4, out);
+  const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants, out) : given;
   const Plane color{w, h, 4, image.color};
   const std::vector<float> distances = pass_distances(constants, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
-  const PassFrame frame{constants, distance, Indices{}, image.walk, image.noise_index};
-  std::copy(image.color, image.color + count * 4, out);
+  const PassFrame frame{constants, distance, Indices{}, image.walk, image.noise_index, image.debug_view};
   std::vector<float> intermediate(count * 4);
   std::vector<float> accumulated(count * 3, 0.0f);  // the earlier terms' vertical sums
-  const std::size_t terms = kernel.terms.size();
+  const std::size_t terms = image.debug_view != 0 ? 1 : kernel.terms.size();  // a view: the first term
   for (std::size_t t = 0; t < terms; ++t) {
     const PassTerm& term = kernel.terms[t];
     const bool last = t + 1 == terms;
@@ -267,9 +312,11 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
 }
 
 void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std::vector<PassConstants>& constants,
-                        const std::uint16_t* ids, const CpuFilterImage& image, float* out, bool index_in_blue) {
-  const int w = image.width, h = image.height;
+                        const std::uint16_t* ids, const CpuFilterImage& given, float* out, bool index_in_blue) {
+  const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
+  std::copy(given.color, given.color + count * 4, out);
+  const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants.front(), out) : given;
   // With R8UI ids the passes' inputs carry each index in the low byte of the blue colour word, which
   // the passes read as 0 (and the horizontal pass's result carries on the same way).
   std::vector<float> colours(image.color, image.color + count * 4);
@@ -281,8 +328,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
   const std::vector<float> distances = pass_distances(shared, image, image.depth);
   const Plane distance{w, h, 1, distances.data()};
   const Indices indices{ids, w};
-  const PassFrame frame{shared, distance, indices, image.walk, image.noise_index};
-  std::copy(image.color, image.color + count * 4, out);
+  const PassFrame frame{shared, distance, indices, image.walk, image.noise_index, image.debug_view};
   std::vector<float> intermediate(count * 4);
   // The pixel's profile, or -1 where its index has none (the pixel is left alone).
   const auto profile_of = [&](int x, int y) {

@@ -41,6 +41,9 @@ struct CpuFilterImage {
   bool intermediate_is_half = true;
   CpuWalkChoices walk;  // the passes' unless a study asks otherwise
   std::uint32_t noise_index = 0;  // sss_frame.noise_index: moves the jittered taps (jitter_noise)
+  // sss_frame.debug_view (sss.h sss_debug_view): 0 filters; else the first term's passes write that
+  // view, as separable_blur.frag's SSS_DEBUG_VIEW does: (0, 0, 0, 1) where they leave a pixel alone.
+  std::uint32_t debug_view = 0;
 };
 
 // An image of `width` x `height` pixels with these colour and depth planes, the rest as above.

@@ -1,0 +1,165 @@
+// The debug views (sss_frame.debug_view): what the passes see, written into the output texture, on
+// the GL against the CPU model of the same passes (math::cpu_pass_kernel_filter with
+// CpuFilterImage::debug_view). The mask and the tap counts are data: equal value for value, but for
+// the few pixels where the walk's float noise puts a tap count one step over, as it puts a tap one
+// pixel over (expect_matches_model_up_to_tap_flips: the step differs by an ulp or so between the
+// driver's compiler and the model). The depth and the footprint are measures: within the output's
+// fp16 rounding (one fp16 step, 2^-10 relative: the GL's and the model's values may round to
+// neighbouring steps) and, RGBA32F, within 1e-5 of the model (the walk's ulps). Bad frames are refused by
+// name with nothing drawn. The per-pixel profile view is in profile_ids_test.cpp.
+//   DebugViews.*  every backend
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "filter_case.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kW = 48, kH = 32;
+
+class DebugViews : public FilterCaseTest {
+ protected:
+  void SetUp() override {
+    FilterCaseTest::SetUp();
+    // A relief with the background (alpha 0) around a translucent patch, so the views show both.
+    scene_ = make_relief_scene(kW, kH, 3, perspective_matrix(40.0f, 1.5f, 0.1f, 10.0f));
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        if (x < 6 || y > kH - 5) scene_.color[(static_cast<std::size_t>(y) * kW + x) * 4 + 3] = 0.0f;
+      }
+    }
+  }
+  FilterCase view_case(uint32_t view, bool half_output) const {
+    FilterCase c;
+    c.settings = visible_settings(17, SSS_FOLLOW_SURFACE, 0.18f);  // sparse taps at the near pixels
+    c.settings.path = SSS_PATH_AUTO;  // any path: a view runs the fragment passes
+    c.separate_output = true;
+    c.half_color = half_output;  // the output has the colour's format
+    c.debug_view = view;
+    return c;
+  }
+  SyntheticScene scene_;
+};
+
+// Where the view's values are finite and the output has a value: the pixel's channel c.
+float at(const std::vector<float>& image, int x, int y, int c) {
+  return image[(static_cast<std::size_t>(y) * kW + x) * 4 + static_cast<std::size_t>(c)];
+}
+
+TEST_F(DebugViews, EachViewMatchesTheCpuModel) {
+  struct View {
+    uint32_t view;
+    const char* name;
+    bool data;  // equal value for value (else a measure: within the rounding)
+  };
+  const View views[] = {{SSS_DEBUG_VIEW_MASK, "mask", true},
+                        {SSS_DEBUG_VIEW_LINEAR_DEPTH, "linear depth", false},
+                        {SSS_DEBUG_VIEW_FOOTPRINT, "footprint", false},
+                        {SSS_DEBUG_VIEW_TAPS, "taps", true},
+                        {SSS_DEBUG_VIEW_PROFILE, "profile (none: zero)", true}};
+  for (const View& v : views) {
+    for (const bool half : {false, true}) {
+      SCOPED_TRACE(std::string(v.name) + (half ? ", RGBA16F" : ", RGBA32F"));
+      const FilterOutcome o = run_case(scene_, view_case(v.view, half));
+      ASSERT_EQ(o.result, SSS_OK);
+      if (v.data) {
+        expect_matches_model_up_to_tap_flips(o, 0.0f, v.name);
+      } else {
+        // fp16 output: half an ulp of the value (2^-11 relative); fp32: the walk's float noise.
+        const float tolerance = half ? 9.8e-4f : 1e-5f;
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < o.gpu.size(); ++i) {
+          const float d = std::fabs(o.gpu[i] - o.cpu[i]) / std::max(1e-30f, std::fabs(o.cpu[i]));
+          if (o.gpu[i] != o.cpu[i] && !(d <= worst)) worst = d;
+        }
+        std::printf("%s: largest relative difference from the model %.3g\n", v.name, static_cast<double>(worst));
+        EXPECT_LE(worst, tolerance);
+      }
+      // Background pixels (alpha 0) are (0, 0, 0, 1); translucent ones hold the view.
+      EXPECT_EQ(at(o.gpu, 2, 2, 0), 0.0f);
+      EXPECT_EQ(at(o.gpu, 2, 2, 3), 1.0f);
+      const float inside = at(o.gpu, kW / 2, kH / 2, 0);
+      switch (v.view) {
+        case SSS_DEBUG_VIEW_MASK: EXPECT_EQ(inside, 1.0f); break;
+        case SSS_DEBUG_VIEW_LINEAR_DEPTH: EXPECT_GT(inside, 0.1f); break;
+        case SSS_DEBUG_VIEW_FOOTPRINT: EXPECT_GT(inside, 0.0f); break;
+        case SSS_DEBUG_VIEW_TAPS: EXPECT_GT(inside, 1.0f); break;
+        default: EXPECT_EQ(inside, 0.0f); break;
+      }
+    }
+  }
+}
+
+// The taps view against the passes' own rule: at most the settings' taps, odd, and more where the
+// footprint is finer (the footprint and taps views of one frame agree with each other).
+TEST_F(DebugViews, TheTapsFollowTheFootprint) {
+  const FilterOutcome footprint = run_case(scene_, view_case(SSS_DEBUG_VIEW_FOOTPRINT, false));
+  TearDown();
+  SetUp();
+  const FilterOutcome taps = run_case(scene_, view_case(SSS_DEBUG_VIEW_TAPS, false));
+  ASSERT_EQ(footprint.result, SSS_OK);
+  ASSERT_EQ(taps.result, SSS_OK);
+  int translucent = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      for (int axis = 0; axis < 2; ++axis) {
+        const float n = at(taps.gpu, x, y, axis), mm = at(footprint.gpu, x, y, axis);
+        if (n == 0.0f) continue;  // left alone
+        ++translucent;
+        EXPECT_LE(n, 17.0f);
+        EXPECT_EQ(std::fmod(n, 2.0f), 1.0f);
+        EXPECT_GT(mm, 0.0f);
+      }
+    }
+  }
+  EXPECT_GT(translucent, kW * kH);  // both axes of most pixels
+}
+
+TEST_F(DebugViews, BadFramesAreRefusedByNameAndNothingIsDrawn) {
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
+  sss_settings s = visible_settings(17, SSS_FOLLOW_SURFACE, 0.18f);
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  const GLuint color = make_rgba32f(kW, kH, scene_.color);
+  const GLuint depth = make_depth32f(kW, kH, scene_.window_depth);
+  const std::vector<float> sentinel(static_cast<std::size_t>(kW) * kH * 4, -2.0f);
+  const GLuint output = make_rgba32f(kW, kH, sentinel);
+  const auto expect_refused = [&](sss_frame f, sss_result code, const char* part) {
+    SCOPED_TRACE(part);
+    describe_frame(&f, GL_RGBA32F, f.output_texture != 0 ? GL_RGBA32F : 0, GL_DEPTH_COMPONENT32F, kW, kH);
+    EXPECT_EQ(sss_apply_frame(sss_, &f), code);
+    EXPECT_NE(std::string(sss_last_error(sss_)).find(part), std::string::npos) << sss_last_error(sss_);
+    EXPECT_EQ(read_rgba(color, kW, kH), scene_.color);
+    EXPECT_EQ(read_rgba(output, kW, kH), sentinel);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  };
+  sss_frame f = frame_of(color, depth, output);
+  f.debug_view = SSS_DEBUG_VIEW_LAST + 1;
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = 6");
+  f = frame_of(color, depth);
+  f.debug_view = SSS_DEBUG_VIEW_MASK;
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "needs an output_texture");
+  f = frame_of(color, depth, output);
+  f.debug_view = SSS_DEBUG_VIEW_TAPS;
+  f.flags = SSS_FRAME_REGION;
+  f.region[2] = kW;
+  f.region[3] = kH;
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "SSS_FRAME_REGION");
+  s.mode = SSS_MODE_CROSS_BILATERAL;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
+  f = frame_of(color, depth, output);
+  f.debug_view = SSS_DEBUG_VIEW_MASK;
+  expect_refused(f, SSS_ERROR_UNSUPPORTED, "cross-bilateral");
+}
+
+}  // namespace
+}  // namespace sss_test
