@@ -148,9 +148,9 @@ void main() {
 
   // The footprint-aware taps (footprint_taps.glsl's footprint_sum, without jitter): every pixel out
   // to the reach where the kernel spans at most kSssHalfTaps on a side, else that many spread out.
-  float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
-  bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
-  int count = dense ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
+  float reach_pixels = sss_reach_pixels(step_pixels);
+  bool dense = sss_dense_taps(reach_pixels);
+  int count = sss_tap_count(reach_pixels);
   vec3 total = SSS_CDF(SSS_CDF_ENTRIES - 1).rgb;
   vec3 below = total;
   float p = 0.0;

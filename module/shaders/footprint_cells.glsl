@@ -58,6 +58,15 @@ vec3 half_cdf(float fraction) {
   return SSS_CDF(j).rgb * (1.0 - f) + SSS_CDF(j + 1).rgb * f;
 }
 
+// The kernel's reach in pixels at a step of `step_pixels` pixels per profile mm, and how many taps a
+// side the passes read for it (footprint_sum, cbf_blur.frag): every pixel out to the reach where
+// that takes at most kSssHalfTaps, else kSssHalfTaps (the debug views show the count).
+float sss_reach_pixels(float step_pixels) { return min(SSS_FOOTPRINT.x * step_pixels, 1.0e6); }
+bool sss_dense_taps(float reach_pixels) { return reach_pixels <= float(kSssHalfTaps) + 0.5; }
+int sss_tap_count(float reach_pixels) {
+  return sss_dense_taps(reach_pixels) ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
+}
+
 // The i-th tap's distance from the centre in pixels (i >= 1), after the previous one's.
 float tap_position(int i, float previous, bool dense, float reach_pixels) {
   return dense ? float(i) : max(previous + 1.0, floor(reach_pixels * u_spacing[i - 1] + 0.5));

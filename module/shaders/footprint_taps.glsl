@@ -59,18 +59,10 @@ vec3 settled_tap(vec4 fetched, vec3 centre, vec2 line, float slack) {
 // pixel out to the reach where the kernel spans at most u_half_taps on a side, else u_half_taps
 // spread denser at the centre (never two on one pixel). A tap's weight is the kernel over the
 // pixels between the midpoints to its neighbours; the last one takes the tail.
-// How many taps a side footprint_sum reads at a step of `step_pixels` pixels per profile mm (the
-// debug views show it: SSS_DEBUG_VIEW).
-int sss_tap_count(float step_pixels) {
-  float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
-  bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
-  return dense ? max(int(ceil(reach_pixels - 0.5)), 0) : kSssHalfTaps;
-}
-
 vec3 footprint_sum(TapSite site, vec3 centre, float step_pixels, vec4 follow, float slack, ivec2 pixel, int axis) {
-  float reach_pixels = min(SSS_FOOTPRINT.x * step_pixels, 1.0e6);
-  bool dense = reach_pixels <= float(kSssHalfTaps) + 0.5;
-  int count = sss_tap_count(step_pixels);
+  float reach_pixels = sss_reach_pixels(step_pixels);
+  bool dense = sss_dense_taps(reach_pixels);
+  int count = sss_tap_count(reach_pixels);
 #if SSS_JITTER
   int jitter_from = dense ? count + 1 : u_jitter_from;
   float noise = jitter_noise(pixel, axis);

@@ -282,7 +282,7 @@ void main() {
 #if SSS_DEBUG_VIEW
   // This pass's footprint and taps (footprint_taps.glsl's count), as the filter would run them.
   float footprint = 1.0 / step_pixels;
-  float taps = float(1 + 2 * sss_tap_count(step_pixels));
+  float taps = float(1 + 2 * sss_tap_count(sss_reach_pixels(step_pixels)));
 #if SSS_PACKED_OUTPUT
   o_packed = uvec4(floatBitsToUint(footprint), floatBitsToUint(taps), texel.b, texel.a);
 #else

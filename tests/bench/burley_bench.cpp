@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "list_argument.hpp"
 #include "gpu_scene.hpp"
 #include "host_context.hpp"
 #include "host_gl.hpp"
@@ -56,13 +57,6 @@ struct Args {
   std::string command_line;
 };
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream list(text);
-  for (std::string s; std::getline(list, s, ',');) out.push_back(s);
-  return out;
-}
-
 [[noreturn]] void usage(const char* program, int code) {
   std::printf("usage: %s [--backend egl|osmesa] [--footprints f,f,...] [--scenes a,b] [--taps N] "
               "[--max-receivers N] [--doc FILE]\n", program);
@@ -81,10 +75,10 @@ Args parse(int argc, char** argv) {
     } else if (k == "--doc") {
       a.doc = v;
     } else if (k == "--scenes") {
-      a.scenes = split(v);
+      a.scenes = sss_bench::split_list(v);
     } else if (k == "--footprints") {
       a.footprints.clear();
-      for (const std::string& f : split(v)) a.footprints.push_back(std::atof(f.c_str()));
+      for (const std::string& f : sss_bench::split_list(v)) a.footprints.push_back(std::atof(f.c_str()));
     } else if (k == "--taps") {
       a.taps = std::atoi(v.c_str());
     } else if (k == "--max-receivers") {

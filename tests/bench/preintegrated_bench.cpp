@@ -13,11 +13,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "list_argument.hpp"
 #include "gpu_scene.hpp"
 #include "host_context.hpp"
 #include "host_gl.hpp"
@@ -70,9 +70,7 @@ Args parse(int argc, char** argv) {
         std::exit(2);
       }
     } else if (k == "--scenes" && has) {
-      a.scenes.clear();
-      std::stringstream list(argv[++i]);
-      for (std::string s; std::getline(list, s, ',');) a.scenes.push_back(s);
+      a.scenes = sss_bench::split_list(argv[++i]);
     } else {
       std::printf("usage: %s [--backend egl|osmesa] [--size WxH] [--repetitions N] [--lut-size N] [--scenes a,b] [--out DIR] [--doc FILE]\n",
                   argv[0]);

@@ -44,12 +44,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "list_argument.hpp"
 #include "host_context.hpp"
 #include "math/cpu_separable_filter.hpp"
 #include "math/exact_reference.hpp"
@@ -92,15 +92,6 @@ constexpr double kAnalyticFootprintMm = 0.2;
   std::exit(status);
 }
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    if (!item.empty()) out.push_back(item);
-  }
-  return out;
-}
-
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 0; i < argc; ++i) o.command_line += (i ? " " : "") + std::string(argv[i]);
@@ -116,7 +107,7 @@ Options parse(int argc, char** argv) {
     const std::string arg = optarg != nullptr ? optarg : "";
     switch (c) {
       case 'b': o.backend = arg; break;
-      case 's': o.scenes = split(arg); break;
+      case 's': o.scenes = sss_bench::split_list(arg, true); break;
       case 'z':
         if (std::sscanf(arg.c_str(), "%dx%d", &o.width, &o.height) != 2) usage(argv[0], 2);
         break;
@@ -124,7 +115,7 @@ Options parse(int argc, char** argv) {
       case 'd': o.doc = arg; break;
       case 'c': o.csv = arg; break;
       case 'p': o.pictures = arg; break;
-      case 'P': o.picture_scenes = split(arg); break;
+      case 'P': o.picture_scenes = sss_bench::split_list(arg, true); break;
       case 'S': o.picture_stride = std::atoi(arg.c_str()); break;
       case 'k': o.check = true; break;
       case 'h': usage(argv[0], 0);

@@ -28,12 +28,12 @@
 #include <ctime>
 #include <filesystem>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "list_argument.hpp"
 #include "calibration.hpp"
 #include "gpu_scene.hpp"
 #include "host_context.hpp"
@@ -59,13 +59,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream list(text);
-  for (std::string s; std::getline(list, s, ',');) out.push_back(s);
-  return out;
-}
-
 [[noreturn]] void usage(const char* program, int code) {
   std::printf("usage: %s [--backend egl|osmesa] [--footprints f,...] [--turns t,...] [--axes a,...]\n"
               "       [--projections orthographic,perspective] [--scenes plane,sphere,cylinder] [--methods m,...]\n"
@@ -78,7 +71,7 @@ std::vector<std::string> split(const std::string& text) {
 
 std::vector<double> numbers(const std::string& text, const char* program) {
   std::vector<double> out;
-  for (const std::string& s : split(text)) {
+  for (const std::string& s : sss_bench::split_list(text)) {
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
     if (s.empty() || *end != '\0' || !std::isfinite(v)) usage(program, 2);
@@ -119,9 +112,9 @@ Options parse(int argc, char** argv) {
       case 'f': o.footprints = numbers(v, argv[0]); break;
       case 't': o.turns = numbers(v, argv[0]); break;
       case 'a': o.axes = numbers(v, argv[0]); break;
-      case 'p': o.projections = split(v); break;
-      case 's': o.scenes = split(v); break;
-      case 'm': o.methods = split(v); break;
+      case 'p': o.projections = sss_bench::split_list(v); break;
+      case 's': o.scenes = sss_bench::split_list(v); break;
+      case 'm': o.methods = sss_bench::split_list(v); break;
       case 'r': o.max_receivers = std::max(16, std::atoi(v.c_str())); break;
       case 'o': o.out = v; break;
       case 'd': o.doc = v; break;

@@ -191,29 +191,44 @@ TEST_F(CameraStress, SingularAndUnsupportedMatricesAreRejectedAndTheOldCameraSta
   check(after.result == SSS_OK && after.output == reference.output, "the camera changed after rejected matrices");
 }
 
+// Random projections: each element 0 (4 in 10), an extreme float (2 in 10) or a random magnitude in
+// [1e-6, 1e6] of either sign; `supported_shape` zeroes the elements a supported matrix has zero (no
+// shear, w from z alone), so that many are accepted.
+class RandomMatrices {
+ public:
+  explicit RandomMatrices(uint32_t seed) : rng_(seed), extremes_(extreme_floats()), pick_extreme_(0, extremes_.size() - 1) {}
+  Matrix4 next(bool supported_shape) {
+    Matrix4 m{};
+    for (float& v : m) {
+      const int k = pick_(rng_);
+      v = k < 4 ? 0.0f : k < 6 ? extremes_[pick_extreme_(rng_)] : unit() * std::pow(10.0f, 6.0f * unit());
+    }
+    if (supported_shape) m[1] = m[2] = m[3] = m[4] = m[6] = m[7] = 0.0f;
+    return m;
+  }
+  float unit() { return unit_(rng_); }  // in [-1, 1)
+  uint32_t bits() { return static_cast<uint32_t>(rng_()); }
+
+ private:
+  std::mt19937 rng_;
+  std::vector<float> extremes_;
+  std::uniform_int_distribution<std::size_t> pick_extreme_;
+  std::uniform_int_distribution<int> pick_{0, 9};
+  std::uniform_real_distribution<float> unit_{-1.0f, 1.0f};
+};
+
 TEST_F(CameraStress, RandomMatricesAreRejectedOrGiveFiniteFrames) {
   category_ = "cameras-random";
   const uint32_t seed = stress_seed(0xca3e7a5u);
   std::printf("seed %u (SSS_STRESS_SEED)\n", seed);
-  std::mt19937 rng(seed);
-  const std::vector<float> extremes = extreme_floats();
-  std::uniform_int_distribution<std::size_t> pick_extreme(0, extremes.size() - 1);
-  std::uniform_int_distribution<int> pick(0, 9);
-  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  RandomMatrices random(seed);
   sss_settings s;
   sss_default_settings(&s);
   s.world_units_per_mm = 0.05f;
   ASSERT_EQ(set_settings(s), SSS_OK);
   int accepted = 0, frames = 0;
   for (int trial = 0; trial < 4000; ++trial) {
-    Matrix4 m{};
-    for (float& v : m) {
-      const int k = pick(rng);
-      v = k < 4 ? 0.0f : k < 6 ? extremes[pick_extreme(rng)] : unit(rng) * std::pow(10.0f, 6.0f * unit(rng));
-    }
-    if (trial % 2 == 0) {  // half of them in the supported shape, so that many are accepted
-      m[1] = m[2] = m[3] = m[4] = m[6] = m[7] = 0.0f;
-    }
+    const Matrix4 m = random.next(trial % 2 == 0);  // half of them in the supported shape
     ++tally_.cases;
     const sss_result r = sss_set_camera(sss_, m.data());
     check(r == SSS_OK || r == SSS_ERROR_INVALID_ARGUMENT || r == SSS_ERROR_UNSUPPORTED,
@@ -224,9 +239,9 @@ TEST_F(CameraStress, RandomMatricesAreRejectedOrGiveFiniteFrames) {
     ++frames;
     // Raw depth anywhere in [0, 1] (whatever distance that means for this matrix), or linear.
     const DepthFormat format = frames % 2 ? DepthFormat::depth32f : DepthFormat::r32f;
-    StressFrame f = relief_frame(11, 9, static_cast<uint32_t>(rng()), m, 0.0, 1.0, format);
+    StressFrame f = relief_frame(11, 9, random.bits(), m, 0.0, 1.0, format);
     if (!is_linear(format)) {
-      for (std::size_t i = 0; i < f.depth.size(); ++i) f.depth[i] = 0.5f + 0.5f * unit(rng);
+      for (std::size_t i = 0; i < f.depth.size(); ++i) f.depth[i] = 0.5f + 0.5f * random.unit();
     }
     SCOPED_TRACE(::testing::Message() << "trial " << trial);
     ASSERT_TRUE(run_and_check(f));
@@ -242,11 +257,7 @@ TEST_F(CameraStress, RandomMatricesInTheFrameAgreeWithTheCamera) {
   category_ = "cameras-in-the-frame";
   const uint32_t seed = stress_seed(0x5eed41u);
   std::printf("seed %u (SSS_STRESS_SEED)\n", seed);
-  std::mt19937 rng(seed);
-  const std::vector<float> extremes = extreme_floats();
-  std::uniform_int_distribution<std::size_t> pick_extreme(0, extremes.size() - 1);
-  std::uniform_int_distribution<int> pick(0, 9);
-  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  RandomMatrices random(seed);
   sss_settings s;
   sss_default_settings(&s);
   s.world_units_per_mm = 0.05f;
@@ -254,14 +265,9 @@ TEST_F(CameraStress, RandomMatricesInTheFrameAgreeWithTheCamera) {
   ASSERT_EQ(set_settings(s), SSS_OK);
   int accepted = 0, refused = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    Matrix4 m{};
-    for (float& v : m) {
-      const int k = pick(rng);
-      v = k < 4 ? 0.0f : k < 6 ? extremes[pick_extreme(rng)] : unit(rng) * std::pow(10.0f, 6.0f * unit(rng));
-    }
-    if (trial % 2 == 0) m[1] = m[2] = m[3] = m[4] = m[6] = m[7] = 0.0f;
+    const Matrix4 m = random.next(trial % 2 == 0);
     SCOPED_TRACE(::testing::Message() << "trial " << trial);
-    StressFrame f = relief_frame(9, 7, static_cast<uint32_t>(rng()), m, 0.0, 1.0, DepthFormat::r32f);
+    StressFrame f = relief_frame(9, 7, random.bits(), m, 0.0, 1.0, DepthFormat::r32f);
     f.projection = m.data();
     ++tally_.cases;
     const StressOutcome carried = run(f);
