@@ -16,6 +16,9 @@ uniform int u_mode;         // 0 final, 1 split, 2 heat map, 3 touched, 4 profil
 uniform float u_exposure;
 uniform float u_split_x;    // pixels from the left
 uniform vec2 u_size;        // output size in pixels
+uniform int u_debug_view;   // the sss_debug_view in u_after (0: the filtered image)
+uniform vec2 u_view_depth;  // the depth view's nearest and farthest view distance
+uniform float u_taps;       // the taps view's top (sss_settings.taps)
 out vec4 o_color;
 
 // Narkowicz's fit of the ACES filmic curve (with his 0.6 input scale).
@@ -46,8 +49,35 @@ vec3 profile_colour(uint value, float alpha) {
   return c * (object <= 1u ? 1.0 : 1.0 - 0.22 * float((object - 1u) % 4u));
 }
 
+// 0 at 0.01 profile mm per pixel (a 4K close-up's finest) to 1 at 10 (a far crowd), logarithmic.
+float footprint_level(float mm) { return clamp((log2(max(mm, 1e-6)) - log2(0.01)) / log2(1000.0), 0.0, 1.0); }
+
+// A debug view (sss.h sss_debug_view) in colours a person reads: each pass's number in its own
+// channel (red the horizontal pass, green the vertical one) where the view has two; the pixels the
+// passes leave alone ((0, 0, 0, 1) in the view) show the unfiltered frame in dim grey.
+vec3 debug_colour(vec4 view, vec3 base) {
+  bool alone = view.rgb == vec3(0.0);
+  vec3 dim = vec3(0.1 + 0.3 * dot(base, vec3(0.2126, 0.7152, 0.0722)));
+  if (u_debug_view == 6) return mix(dim, view.rgb, 0.6);  // tiles: r passes, g inputs, b marked
+  if (alone) return dim;
+  if (u_debug_view == 5) return profile_colour(uint(view.r) | (uint(view.g) << 4), 1.0);  // kProfiles' hues
+  if (u_debug_view == 1) return vec3(1.0, 0.55, 0.1);  // mask
+  if (u_debug_view == 2) {  // depth: white at the scene's nearest point, dark at its farthest
+    float t = clamp((view.r - u_view_depth.x) / (u_view_depth.y - u_view_depth.x), 0.0, 1.0);
+    return vec3(1.0 - 0.85 * t);
+  }
+  if (u_debug_view == 3) return vec3(footprint_level(view.r), footprint_level(view.g), 0.15);
+  return vec3((view.rg - 1.0) / max(u_taps - 1.0, 1.0), 0.15);  // taps: 1 (the centre alone) to u_taps
+}
+
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
+  if (u_debug_view != 0 && u_mode != 2 && u_mode != 4) {
+    vec4 before = texelFetch(u_before, p, 0);
+    vec3 base = display(before.rgb, texelFetch(u_specular, p, 0).rgb);
+    o_color = vec4(debug_colour(texelFetch(u_after, p, 0), base), 1.0);
+    return;
+  }
   if (u_mode == 4) {
     o_color = vec4(profile_colour(texelFetch(u_profile, p, 0).r, texelFetch(u_before, p, 0).a), 1.0);
     return;
@@ -92,6 +122,20 @@ const char *view_mode_name(ViewMode mode) {
   return "?";
 }
 
+const char *debug_view_legend(int view) {
+  switch (view) {
+    case 1: return "orange: the pixels the passes change";
+    case 2: return "the view distance the passes read: white at the scene's nearest point, dark at its farthest";
+    case 3: return "profile mm per pixel step, red the horizontal pass, green the vertical, each from 0.01 (dark) "
+                   "to 10 (full) on a log scale; yellow where both are coarse";
+    case 4: return "taps read, red the horizontal pass, green the vertical, from 1 (dark) to the settings' taps (full)";
+    case 5: return "the profile and object the passes read, in the profiles view's colours";
+    case 6: return "16x16 tiles of the masked path: red its blur passes draw, green its inputs draw, blue the tile "
+                   "holds a translucent pixel (white: all three)";
+    default: return "the filtered image";
+  }
+}
+
 bool create_composite_pass(CompositePass *pass) {
   pass->program = build_program("composite", kFullscreenVertexShader, kFragmentShader);
   if (pass->program == 0) return false;
@@ -116,6 +160,9 @@ void run_composite_pass(const CompositePass &pass, const FrameTargets &targets, 
               static_cast<float>(static_cast<int>(in.split * static_cast<float>(targets.width))));
   glUniform2f(glGetUniformLocation(pass.program, "u_size"), static_cast<float>(targets.width),
               static_cast<float>(targets.height));
+  glUniform1i(glGetUniformLocation(pass.program, "u_debug_view"), in.debug_view);
+  glUniform2f(glGetUniformLocation(pass.program, "u_view_depth"), in.view_depth[0], in.view_depth[1]);
+  glUniform1f(glGetUniformLocation(pass.program, "u_taps"), static_cast<float>(in.taps));
   const GLuint textures[5] = {in.before, in.after, in.specular, in.heat_map, targets.profile};
   for (GLuint unit = 0; unit < 5; ++unit) {
     glActiveTexture(GL_TEXTURE0 + unit);

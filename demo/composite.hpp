@@ -8,6 +8,9 @@
 //             the final image in dim grey
 //   kProfiles the G-buffer's profile/object byte in flat false colours: a hue per profile, a shade per
 //             object of it; not translucent (alpha 0) dark grey
+// Where "after" holds one of the library's debug views (CompositeInput::debug_view), the final, split
+// and touched views show it in false colours instead (debug_colour in composite.cpp), over a dim grey
+// of the unfiltered frame where the view leaves the pixel alone.
 #pragma once
 
 #include "frame_targets.hpp"
@@ -22,6 +25,8 @@ enum class ViewMode { kFinal, kSplit, kHeatMap, kTouched, kProfiles };
 constexpr int kViewModeCount = 5;
 
 const char *view_mode_name(ViewMode mode);  // "final", "split", "heatmap", "touched", "profiles"
+// How the composite colours a debug view (sss_debug_view `view`), in words for captions and the panel.
+const char *debug_view_legend(int view);
 
 struct CompositeInput {
   ViewMode mode = ViewMode::kFinal;
@@ -31,6 +36,9 @@ struct CompositeInput {
   GLuint heat_map = 0;  // kHeatMap only
   float exposure = 1.0f;
   float split = 0.5f;   // kSplit: divider position, fraction of the width from the left
+  int debug_view = 0;   // the sss_debug_view "after" holds (0: the filtered image)
+  float view_depth[2] = {0.0f, 1.0f};  // the depth view's range: nearest and farthest view distance
+  int taps = 17;        // the taps view's top: sss_settings.taps
 };
 
 struct CompositePass {

@@ -70,6 +70,7 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   FrameResult frame;
   SssControls small_controls = controls;
   small_controls.decision_height = o.height;  // choose the shading as the full frame does
+  small_controls.debug_view = 0;              // the error of the filtered image
   const bool ok = render_frame(renderer, m, small_controls, &small, false, &frame);
   SmallFrame data;
   if (ok) data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm);
@@ -89,6 +90,39 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glBindTexture(GL_TEXTURE_2D, 0);
   return check_gl("heat map upload");
+}
+
+// --debug-view: each view the library writes for this frame (sss_frame.debug_view), in the
+// composite's false colours, as PRESET-view-NAME.png.
+bool write_debug_views(Renderer *renderer, const Options &o, const Context &context, const SssControls &controls,
+                       const CameraMatrices &m, FrameTargets *targets, const std::string &prefix, Preset preset,
+                       const std::string &settings) {
+  const DemoScene &scene = *renderer->scene;
+  bool ok = true;
+  for (const int view : o.debug_views) {
+    SssControls with_view = controls;
+    with_view.debug_view = view;
+    const char *refusal = debug_view_refusal(with_view, targets->samples);
+    if (refusal != nullptr || !controls.enabled) {
+      std::fprintf(stderr, "sss_demo: no %s view: %s\n", debug_view_name(view),
+                   refusal != nullptr ? refusal : "the library is off (--no-sss)");
+      continue;
+    }
+    FrameResult frame;
+    if (!render_frame(renderer, m, with_view, targets, false, &frame)) return false;
+    if (frame.debug_view != view) continue;  // pre-integrated shading: no pass ran
+    composite_frame(*renderer, *targets, frame, ViewMode::kFinal, o.exposure, 0.5f, 0, nullptr);
+    const Image image = image_from_gl_rows(read_output(*targets), targets->width, targets->height);
+    const std::string name = std::string("view-") + debug_view_name(view);
+    const std::string description = std::string("the library's debug view '") + debug_view_name(view) + "' (" +
+                                    debug_view_legend(view) + "). " + scene.name + ", " + preset_title(preset) +
+                                    ", " + std::to_string(targets->width) + "x" + std::to_string(targets->height) +
+                                    ". " + settings;
+    ok = write_png(prefix + name + ".png", image,
+                   image_text(scene, "sss_demo " + name, description, context.renderer)) &&
+         ok;
+  }
+  return ok && check_gl("the debug views");
 }
 
 bool render_preset(Renderer *renderer, const Options &o, const Context &context, const SssControls &controls,
@@ -177,6 +211,7 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
        ok;
   glDeleteTextures(1, &heat_texture);
   if (o.dump) ok = write_frame_dumps(*targets, frame.sss_ran, prefix) && ok;
+  ok = ok && write_debug_views(renderer, o, context, controls, m, targets, prefix, preset, settings);
   return ok && check_gl("the views");
 }
 
@@ -202,8 +237,14 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
       "                      re-render of the same frame at 1/heat-factor of each side, shown scaled up.\n"
       "  PRESET-touched.png  orange: pixels the library changed; blue: translucent but unchanged; grey: the rest\n"
       "  PRESET-zoom.png     before | after, magnified 3x, around the block where they differ most\n"
-      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n"
-      "Tone mapping: x exposure, Narkowicz's ACES filmic fit, sRGB.\n\n";
+      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n";
+  for (const int view : o.debug_views) {
+    char line[320];
+    std::snprintf(line, sizeof line, "  PRESET-view-%s.png the library's debug view (sss_frame.debug_view): %s\n",
+                  debug_view_name(view), debug_view_legend(view));
+    t += line;
+  }
+  t += "Tone mapping: x exposure, Narkowicz's ACES filmic fit, sRGB.\n\n";
   t += "Scene        " + scene.name + ": " + scene.description + "\n";
   t += "GL_RENDERER  " + context.renderer + "\nGL_VERSION   " + context.version + "\nbackend      " +
        context.backend + " (requested " + o.backend + ")\n";

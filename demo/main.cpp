@@ -35,6 +35,9 @@ SssControls controls_from_options(const Options &o) {
   c.baked_thickness_mm = o.baked_thickness_mm;
   c.msaa_samples = o.msaa;
   c.object_ids = o.object_ids;
+  // The window starts on the first debug view asked for; headless keeps the filter for its usual
+  // images and writes each view apart (headless_app.cpp's write_debug_views).
+  if (!o.headless && !o.debug_views.empty()) c.debug_view = o.debug_views.front();
   return c;
 }
 

@@ -69,6 +69,29 @@ bool parse_size(const char *text, int *width, int *height) {
   return true;
 }
 
+// "all", or debug view names separated by commas (debug_view_name).
+bool parse_debug_views(const char *text, std::vector<int> *out) {
+  out->clear();
+  const std::string list = text;
+  if (list == "all") {
+    for (int v = 1; v <= static_cast<int>(SSS_DEBUG_VIEW_LAST); ++v) out->push_back(v);
+    return true;
+  }
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, end - start);
+    int found = 0;
+    for (int v = 1; v <= static_cast<int>(SSS_DEBUG_VIEW_LAST); ++v) {
+      if (name == debug_view_name(v)) found = v;
+    }
+    if (found == 0) return false;
+    out->push_back(found);
+    start = end + 1;
+  }
+  return !out->empty();
+}
+
 bool parse_view(const char *text, ViewMode *out) {
   for (ViewMode m : {ViewMode::kFinal, ViewMode::kSplit, ViewMode::kHeatMap, ViewMode::kTouched, ViewMode::kProfiles}) {
     if (std::strcmp(text, view_mode_name(m)) == 0) {
@@ -139,6 +162,10 @@ void print_usage(const char *program) {
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
       "  --repeat N          headless: timed frames per preset, median reported (default 5)\n"
       "  --view NAME         window: final | split | heatmap | touched | profiles (default final)\n"
+      "  --debug-view LIST   the library's debug views (sss_frame.debug_view), comma-separated or all: mask,\n"
+      "                      depth, footprint, taps, profile, tiles; headless: PRESET-view-NAME.png each;\n"
+      "                      window: the first is shown (the panel switches them). Single-sample, separable\n"
+      "                      mode only; the tiles view drops the stencil (the masked path culls by alpha)\n"
       "  --frames N          window: close after N frames (for tests)\n"
       "  --screenshot-frame K  window: save a screenshot at frame K, as F12 does (for tests)\n"
       "  --help              this text\n\n"
@@ -152,7 +179,8 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
     kHeadless = 1, kBackend, kScene, kSize, kOut, kPreset, kNoSss, kTaps, kScale, kWidthScale, kNoFollow, kNoStencil, kAdaptive, kRegion, kPath,
     kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
-    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kMovingNoise, kNoObjectIds, kDump, kHandColourOption
+    kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kMovingNoise, kNoObjectIds, kDump, kHandColourOption,
+    kDebugViewOption
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -176,6 +204,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"heat-factor", required_argument, nullptr, kHeatFactor},
       {"repeat", required_argument, nullptr, kRepeat},
       {"view", required_argument, nullptr, kView},
+      {"debug-view", required_argument, nullptr, kDebugViewOption},
       {"frames", required_argument, nullptr, kFrames},
       {"screenshot-frame", required_argument, nullptr, kScreenshotFrame},
       {"shading", required_argument, nullptr, kShading},
@@ -273,6 +302,10 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         break;
       case kView:
         ok = parse_view(optarg, &o->view) || fail("--view wants final, split, heatmap, touched or profiles", optarg);
+        break;
+      case kDebugViewOption:
+        ok = parse_debug_views(optarg, &o->debug_views) ||
+             fail("--debug-view wants all, or mask, depth, footprint, taps, profile, tiles separated by commas", optarg);
         break;
       case kFrames:
         ok = (parse_int(optarg, &o->frames) && o->frames >= 0) || fail("--frames wants a count >= 0", optarg);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "camera.hpp"
+#include "sss_stage.hpp"
 #include "composite.hpp"
 #include "scene.hpp"
 
@@ -50,6 +51,8 @@ struct Options {
   int repeat = 5;                // headless: timed frames per preset (median reported)
 
   ViewMode view = ViewMode::kFinal;  // window: the first view
+  // --debug-view: sss_debug_view values; headless: a PRESET-view-NAME.png each; window: the first is shown.
+  std::vector<int> debug_views;
   int frames = 0;                // window: close after this many frames (0: when the user closes it)
   int screenshot_frame = -1;     // window: save a screenshot at this frame, as F12 does
 };

@@ -91,6 +91,18 @@ void view_section(WindowState *s) {
   ImGui::SameLine();
   ImGui::RadioButton("profiles", &view, static_cast<int>(ViewMode::kProfiles));
   s->view = static_cast<ViewMode>(view);
+  // The library's debug views (sss_frame.debug_view) replace the filtered image in the final, split and
+  // touched views while one is chosen.
+  auto view_name = [](void *, int i, const char **out) {
+    *out = i == 0 ? "off (the filtered image)" : debug_view_name(i);
+    return *out != nullptr;
+  };
+  ImGui::Combo("library debug view", &s->controls.debug_view, view_name, nullptr,
+               static_cast<int>(SSS_DEBUG_VIEW_LAST) + 1);
+  if (s->controls.debug_view != 0) {
+    const char *refusal = debug_view_refusal(s->controls, s->controls.msaa_samples);
+    ImGui::TextWrapped("  %s", refusal != nullptr ? refusal : debug_view_legend(s->controls.debug_view));
+  }
   ImGui::SliderFloat("exposure", &s->exposure, 0.1f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
   if (s->view == ViewMode::kSplit) {
     ImGui::SliderFloat("divider", &s->split, 0.0f, 1.0f, "%.2f");

@@ -108,6 +108,23 @@ bool translucent_region(const DemoScene &scene, const CameraMatrices &camera, co
   return true;
 }
 
+// The nearest and farthest view distance (-z in view space) of the subject's bounds' corners (the
+// head, not the whole scene: the depth view's contrast is on the skin), the nearest kept in front of
+// the near plane.
+void view_depth_range(const DemoScene &scene, const CameraMatrices &camera, float range[2]) {
+  const Bounds &b = scene.subject;
+  range[0] = 1e30f;
+  range[1] = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y, (corner & 4) ? b.max.z : b.min.z);
+    const float distance = -(camera.view * glm::vec4(p, 1.0f)).z;
+    range[0] = std::min(range[0], distance);
+    range[1] = std::max(range[1], distance);
+  }
+  range[0] = std::max(range[0], camera.near_plane);
+  range[1] = std::max(range[1], range[0] * 1.001f);
+}
+
 }  // namespace
 
 bool create_renderer(Renderer *r, const DemoScene &scene, sss_get_proc_address_fn get_proc_address, void *user) {
@@ -177,9 +194,13 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
 
   if (controls.debug_checks != r->sss.debug_checks && !recreate_sss(r, controls.debug_checks)) return false;
   if (controls.enabled && !result->preintegrated) {
+    // A debug view the library would refuse here is not asked for (the panel says why); a view
+    // covers the whole viewport, so it goes without the region.
+    SssControls frame_controls = controls;
+    if (debug_view_refusal(controls, targets->samples) != nullptr) frame_controls.debug_view = 0;
     std::int32_t region[4] = {0, 0, 0, 0};
-    const bool has_region = controls.region && translucent_region(*r->scene, camera, controls, targets->width,
-                                                                  targets->height, region);
+    const bool has_region = controls.region && frame_controls.debug_view == 0 &&
+                            translucent_region(*r->scene, camera, controls, targets->width, targets->height, region);
     SssFrameShape shape;
     shape.width = targets->width;
     shape.height = targets->height;
@@ -197,12 +218,14 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     // After new settings or a resize, sss_prepare builds and allocates what the frame will need,
     // so the frame itself does not (no hitch; a no-op when nothing changed).
     if (!prepare_sss(&r->sss, shape) ||
-        !apply_sss(r->sss, controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
+        !apply_sss(r->sss, frame_controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
                    targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
                    has_region ? region : nullptr, shape.profile_texture ? targets->profile : 0u)) {
       return false;
     }
     result->sss_ran = true;
+    result->debug_view = frame_controls.debug_view;
+    view_depth_range(*r->scene, camera, result->view_depth);
   }
   lap(&t.sss_ms);
 
@@ -226,6 +249,10 @@ void composite_frame(const Renderer &r, const FrameTargets &targets, const Frame
   in.heat_map = heat_map;
   in.exposure = exposure;
   in.split = split;
+  in.debug_view = frame.sss_ran ? frame.debug_view : 0;
+  in.view_depth[0] = frame.view_depth[0];
+  in.view_depth[1] = frame.view_depth[1];
+  in.taps = static_cast<int>(r.sss.settings.taps);
   run_composite_pass(r.composite, targets, in);
   glFinish();
   if (times != nullptr) times->composite_ms = now_ms() - start;

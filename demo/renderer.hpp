@@ -46,6 +46,10 @@ struct FrameResult {
   bool sss_ran = false;  // targets.after holds the library's output
   bool preintegrated = false;  // the skin was shaded with the pre-integrated LUTs (no SSS pass)
   float pixels_per_mm = 0.0f;  // a millimetre at the scene's centre, in pixels (the automatic choice)
+  // The debug view "after" holds (SssControls::debug_view where the library ran it; 0: the image),
+  // and the view distances of the subject's bounds, nearest and farthest (the depth view's range).
+  int debug_view = 0;
+  float view_depth[2] = {0.0f, 0.0f};
 };
 
 // Passes 1-3 and the counts into `targets` (count = false skips the counts). Returns false (after

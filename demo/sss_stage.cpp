@@ -164,6 +164,18 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   return true;
 }
 
+const char *debug_view_name(int view) {
+  static const char *const kNames[] = {"mask", "depth", "footprint", "taps", "profile", "tiles"};
+  return view >= 1 && view <= static_cast<int>(SSS_DEBUG_VIEW_LAST) ? kNames[view - 1] : nullptr;
+}
+
+const char *debug_view_refusal(const SssControls &controls, int samples) {
+  if (controls.debug_view == 0) return nullptr;
+  if (samples > 0) return "the debug views need single-sample targets (MSAA is on)";
+  if (controls.cross_bilateral) return "the debug views show the separable passes (the cross-bilateral mode is on)";
+  return nullptr;
+}
+
 bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
                std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region,
                std::uint32_t profile) {
@@ -176,11 +188,13 @@ bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &pr
   frame.color_texture = diffuse;
   frame.depth_texture = depth_stencil;
   frame.output_texture = after;
-  frame.stencil = controls.use_stencil ? &stencil : nullptr;
+  // The tiles view shows what the masked path draws, which culls by alpha alone: no stencil with it.
+  frame.stencil = controls.use_stencil && controls.debug_view != SSS_DEBUG_VIEW_TILES ? &stencil : nullptr;
   frame.profile_texture = profile;
   frame.profile_format = profile != 0 ? SSS_GL_R8UI : 0u;
   frame.projection = glm::value_ptr(projection);  // the frame carries its camera
   frame.noise_index = controls.moving_noise ? stage.frames_applied : 0u;
+  frame.debug_view = static_cast<std::uint32_t>(controls.debug_view);  // render_frame: 0 where refused
   if (region != nullptr) {
     frame.flags |= SSS_FRAME_REGION;
     for (int i = 0; i < 4; ++i) frame.region[i] = region[i];

@@ -60,7 +60,17 @@ struct SssControls {
   // The G-buffer's byte carries object IDs (profile | object << 4); off: the profile alone, so light
   // crosses between objects of one profile (the bleeding test scene shows the difference).
   bool object_ids = true;
+  // sss_frame.debug_view (an sss_debug_view): what the passes see goes into "after" instead of the
+  // filtered image, and the composite's debug view colours it (debug_view_refusal: when it cannot).
+  int debug_view = 0;
 };
+
+// The debug views' names on the command line and in the panel (SSS_DEBUG_VIEW_MASK .. _TILES):
+// "mask", "depth", "footprint", "taps", "profile", "tiles"; nullptr for 0 and out of range.
+const char *debug_view_name(int view);
+// Why the library would refuse `controls.debug_view` on the demo's frames of `samples` (the views
+// need single-sample colour and the separable mode), or nullptr when it runs.
+const char *debug_view_refusal(const SssControls &controls, int samples);
 
 constexpr int kShadingScreenSpace = 0;
 constexpr int kShadingPreintegrated = 1;

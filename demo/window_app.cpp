@@ -140,6 +140,7 @@ class HeatMapper {
     FrameResult frame;
     SssControls controls = s->controls;
     controls.decision_height = s->height;  // choose the shading as the shown frame does
+    controls.debug_view = 0;  // the error of the filtered image
     if (!render_frame(renderer, m, controls, &small_, false, &frame)) return 0;
     SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm);
     data.materials = reference_materials(*renderer->scene);

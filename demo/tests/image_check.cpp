@@ -7,6 +7,14 @@
 //       (the background is left alone); the split's left part is before and its right part after;
 //       the heat map uses the error ramp; the touched map has orange pixels; README.txt and
 //       ATTRIBUTION.txt exist.
+//   sss_demo_image_check views DIR ATTRIBUTION PRESET
+//       the library's debug views (--debug-view all) of the head: every PRESET-view-NAME.png exists
+//       with the attribution and before.png's size; the mask view's orange pixels are the pixels
+//       the library ran on (at least the touched map's orange ones, at most those and its blue
+//       ones); at those pixels the depth view is grey and varies, the footprint and taps views
+//       carry their two channels over the 0.15 blue, the profile view shows profile 0's hue, and
+//       the tiles view is near white (a marked tile both draws cover); somewhere the tiles view
+//       shows the inputs draw alone (green).
 //   sss_demo_image_check window FRAME.png WINDOW.png REFERENCE.png
 //       the window's screenshot: FRAME (the frame as rendered) is not blank and matches REFERENCE
 //       (the headless render of the same preset and size): mean |difference| <= 0.5 levels of 255
@@ -223,6 +231,67 @@ int headless(int argc, char **argv) {
   return g_failures == 0 ? 0 : 1;
 }
 
+bool near(const uint8_t *p, int r, int g, int b) {
+  return std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
+}
+
+int views(int argc, char **argv) {
+  if (argc != 5) return 2;
+  const std::string dir = argv[2], attribution = argv[3], prefix = dir + "/" + argv[4] + "-";
+  const Image before = load(prefix + "before.png"), touched = load(prefix + "touched.png");
+  const char *const names[] = {"mask", "depth", "footprint", "taps", "profile", "tiles"};
+  std::array<Image, 6> view;
+  for (size_t i = 0; i < 6; ++i) {
+    const std::string file = prefix + "view-" + names[i] + ".png";
+    view[i] = load(file);
+    check(same_size(before, view[i]), file + ": missing or not the size of before.png");
+    if (!view[i].ok()) continue;
+    check(text_of(view[i], "Copyright").find(attribution) != std::string::npos, file + " carries no attribution");
+    check(not_blank(view[i]), file + " is blank");
+  }
+  if (g_failures != 0) return 1;
+  const Image &mask = view[0], &depth = view[1], &footprint = view[2], &taps = view[3], &profile = view[4],
+              &tiles = view[5];
+  size_t ran = 0, changed = 0, unchanged = 0, grey_depth = 0, two_channels = 0, profile_hue = 0, white_tiles = 0,
+         inputs_alone = 0;
+  int depth_low = 255, depth_high = 0;
+  const size_t pixels = static_cast<size_t>(before.width) * static_cast<size_t>(before.height);
+  for (size_t i = 0; i < pixels; ++i) {
+    const uint8_t *t = &touched.rgb[3 * i], *g = &tiles.rgb[3 * i];
+    changed += (t[0] > t[1] + 40 && t[1] > t[2] + 20) ? 1 : 0;  // as check_preset's orange
+    unchanged += t[2] > t[0] + 40 ? 1 : 0;                      // translucent but unchanged: blue
+    inputs_alone += (g[1] > g[0] + 40 && g[1] > g[2] + 40) ? 1 : 0;
+    if (!near(&mask.rgb[3 * i], 255, 140, 26)) continue;  // composite.cpp: (1, 0.55, 0.1)
+    ++ran;
+    const uint8_t *d = &depth.rgb[3 * i], *f = &footprint.rgb[3 * i], *k = &taps.rgb[3 * i];
+    if (d[0] == d[1] && d[1] == d[2]) {
+      ++grey_depth;
+      depth_low = std::min<int>(depth_low, d[0]);
+      depth_high = std::max<int>(depth_high, d[0]);
+    }
+    // Blue 0.15 and not the grey of a pixel left alone (a pixel of one tap a pass is (0, 0, 0.15)).
+    const auto carried = [](const uint8_t *p) { return std::abs(p[2] - 38) <= 1 && !(p[0] == p[1] && p[1] == p[2]); };
+    two_channels += carried(f) && carried(k) ? 1 : 0;
+    profile_hue += near(&profile.rgb[3 * i], 242, 140, 115) ? 1 : 0;  // profile 0: (0.95, 0.55, 0.45)
+    white_tiles += std::min({g[0], g[1], g[2]}) >= 150 ? 1 : 0;      // 0.6 of (1, 1, 1) over the grey
+  }
+  std::printf("views: %zu pixels ran (touched: %zu changed, %zu unchanged); at them grey depth %zu (%d..%d), both "
+              "channels %zu, profile hue %zu, white tiles %zu; inputs-only tile pixels %zu\n",
+              ran, changed, unchanged, grey_depth, depth_low, depth_high, two_channels, profile_hue, white_tiles,
+              inputs_alone);
+  check(ran > 0, "the mask view shows no pixel");
+  // The touched map's colours are a blend over the frame's grey, read back through 8 bits: 2 % slack.
+  check(static_cast<double>(ran) >= 0.98 * static_cast<double>(changed), "the mask view misses pixels the library changed");
+  check(static_cast<double>(ran) <= 1.02 * static_cast<double>(changed + unchanged),
+        "the mask view shows pixels that are not translucent");
+  check(grey_depth == ran && depth_high - depth_low > 20, "the depth view is not a varying grey on the skin");
+  check(two_channels == ran, "the footprint or taps view lacks its channels on the skin");
+  check(profile_hue == ran, "the profile view does not show profile 0 on the head");
+  check(white_tiles == ran, "the tiles view does not mark every tile with skin");
+  check(inputs_alone > 0, "the tiles view shows no tile the inputs draw covers alone");
+  return g_failures == 0 ? 0 : 1;
+}
+
 int window(int argc, char **argv) {
   if (argc != 5) return 2;
   const Image frame = load(argv[2]), shown = load(argv[3]), reference = load(argv[4]);
@@ -250,6 +319,7 @@ int window(int argc, char **argv) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  return demo_check::run_mode(argc, argv, {{"headless", headless}, {"window", window}},
-                              "headless DIR ATTRIBUTION PRESET... | window FRAME.png WINDOW.png REFERENCE.png");
+  return demo_check::run_mode(argc, argv, {{"headless", headless}, {"views", views}, {"window", window}},
+                              "headless DIR ATTRIBUTION PRESET... | views DIR ATTRIBUTION PRESET | "
+                              "window FRAME.png WINDOW.png REFERENCE.png");
 }

@@ -297,9 +297,9 @@ void main() {
 #elif SSS_DEBUG_VIEW == 4
   vec3 view = vec3(across.y, taps, 0.0);
 #elif SSS_PROFILE_IDS
-  vec3 view = vec3(float(sss_centre_id & 15u), float(sss_centre_id >> 4u), 0.0);
+  vec3 view = vec3(float(sss_centre_id & 15u), float(sss_centre_id >> 4u), 1.0);
 #else
-  vec3 view = vec3(0.0);
+  vec3 view = vec3(0.0, 0.0, 1.0);  // b 1: profile 0 and object 0 told apart from a pixel left alone
 #endif
   o_color = sss_nearest_half(vec4(view, 1.0));
 #endif

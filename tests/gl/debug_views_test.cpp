@@ -123,6 +123,53 @@ TEST_F(DebugViews, TheTapsFollowTheFootprint) {
   EXPECT_GT(translucent, kW * kH);  // both axes of most pixels
 }
 
+// The tiles view: the masked path's marks and bands on a frame with translucency in two tiles of
+// one row only, where each kind of pixel shows (a marked tile; a tile of its band the passes'
+// span crosses; a tile only the inputs draw covers, in that band's row or in another band's column;
+// a tile nothing covers). Data: equal value for value with the CPU form of the rule
+// (math::write_tile_view), at a rectangle whose size is no multiple of a tile, and at an offset one.
+TEST_F(DebugViews, TheTilesViewShowsWhatTheMaskedPathDraws) {
+  constexpr int kTile = 16, kBand = 4;  // sss::math::kTileSize, kTileBand (the rule's own numbers)
+  constexpr int w = 7 * kTile - 5, h = 5 * kTile + 3;  // partial tiles on the right and the top
+  SyntheticScene scene = make_relief_scene(w, h, 5, perspective_matrix(40.0f, 1.5f, 0.1f, 10.0f));
+  // Translucent in tile (2, 1) and in tile (4, 1), with (3, 1) between them empty.
+  const auto translucent = [&](int x, int y) {
+    const int column = x / kTile, row = y / kTile;
+    return row == 1 && (column == 2 || (column == 4 && x % kTile == 7 && y % kTile == 9));
+  };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) scene.color[(static_cast<std::size_t>(y) * w + x) * 4 + 3] = translucent(x, y) ? 1.0f : 0.0f;
+  }
+  const auto pixel = [&](const std::vector<float>& image, int tx, int ty) {
+    const std::size_t i = (static_cast<std::size_t>(ty * kTile + 3) * w + static_cast<std::size_t>(tx * kTile + 3)) * 4;
+    return std::vector<float>(image.begin() + static_cast<std::ptrdiff_t>(i), image.begin() + static_cast<std::ptrdiff_t>(i + 4));
+  };
+  for (const bool half : {false, true}) {
+    SCOPED_TRACE(half ? "RGBA16F" : "RGBA32F");
+    FilterCase c = view_case(SSS_DEBUG_VIEW_TILES, half);
+    c.settings.path = SSS_PATH_FRAGMENT;  // any path shows the masked path's tiles
+    const FilterOutcome o = run_case(scene, c);
+    ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(o.gpu, o.cpu);
+    using V = std::vector<float>;
+    EXPECT_EQ(pixel(o.gpu, 2, 1), (V{1, 1, 1, 1}));  // marked: the passes and the inputs draw
+    EXPECT_EQ(pixel(o.gpu, 4, 1), (V{1, 1, 1, 1}));  // marked by one pixel
+    EXPECT_EQ(pixel(o.gpu, 3, 1), (V{1, 1, 0, 1}));  // inside the passes' span of its band
+    EXPECT_EQ(pixel(o.gpu, 3, 0), (V{1, 1, 0, 1}));  // same band, another row of tiles
+    EXPECT_EQ(pixel(o.gpu, 0, 1), (V{0, 1, 0, 1}));  // the inputs draw's whole rows of the band
+    EXPECT_EQ(pixel(o.gpu, 2, kBand), (V{0, 1, 0, 1}));  // another band: the marked columns' span
+    EXPECT_EQ(pixel(o.gpu, 0, kBand), (V{0, 0, 0, 1}));  // nothing draws there
+    TearDown();
+    SetUp();
+  }
+  // A viewport at an offset: the tiles start at its corner; outside it the output keeps its value.
+  FilterCase c = view_case(SSS_DEBUG_VIEW_TILES, false);
+  c.viewport = {5, 3, w - 9, h - 7};
+  const FilterOutcome o = run_case(scene, c);
+  ASSERT_EQ(o.result, SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(o.gpu, o.cpu);
+}
+
 TEST_F(DebugViews, BadFramesAreRefusedByNameAndNothingIsDrawn) {
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
@@ -144,7 +191,7 @@ TEST_F(DebugViews, BadFramesAreRefusedByNameAndNothingIsDrawn) {
   };
   sss_frame f = frame_of(color, depth, output);
   f.debug_view = SSS_DEBUG_VIEW_LAST + 1;
-  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = 6");
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = 7");
   f = frame_of(color, depth);
   f.debug_view = SSS_DEBUG_VIEW_MASK;
   expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "needs an output_texture");
@@ -154,6 +201,11 @@ TEST_F(DebugViews, BadFramesAreRefusedByNameAndNothingIsDrawn) {
   f.region[2] = kW;
   f.region[3] = kH;
   expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "SSS_FRAME_REGION");
+  f = frame_of(color, depth, output);
+  f.debug_view = SSS_DEBUG_VIEW_TILES;
+  const sss_stencil stencil = {depth, 1, 0xFF};
+  f.stencil = &stencil;
+  expect_refused(f, SSS_ERROR_UNSUPPORTED, "SSS_DEBUG_VIEW_TILES) with a stencil");
   s.mode = SSS_MODE_CROSS_BILATERAL;
   ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK);
   f = frame_of(color, depth, output);

@@ -251,7 +251,7 @@ TEST_F(ProfileIds, TheProfileViewShowsEachPixelsIndex) {
       const float* p = &view[(static_cast<std::size_t>(y) * kW + x) * 4];
       ASSERT_EQ(p[0], has_profile ? static_cast<float>(v & 15u) : 0.0f) << x << ", " << y;
       ASSERT_EQ(p[1], has_profile ? static_cast<float>(v >> 4) : 0.0f) << x << ", " << y;
-      ASSERT_EQ(p[2], 0.0f);
+      ASSERT_EQ(p[2], has_profile ? 1.0f : 0.0f);  // 1 wherever the passes run
       ASSERT_EQ(p[3], 1.0f);
     }
   }

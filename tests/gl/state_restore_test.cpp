@@ -142,6 +142,7 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     const char* name;
     uint32_t path = SSS_PATH_FRAGMENT, mode = SSS_MODE_SEPARABLE;
     bool stencil = false, output = false, two_terms = false, msaa = false, strength = false;
+    uint32_t debug_view = 0;  // sss_frame.debug_view (needs `output`)
   };
   const Case cases[] = {{"in place"},
                         {"host stencil, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true},
@@ -160,7 +161,11 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
                         {"strength texture, masked path", SSS_PATH_FRAGMENT_MASKED, SSS_MODE_SEPARABLE, false, false,
                          false, false, true},
                         {"strength texture, compute path", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE, false, false, false,
-                         false, true}};
+                         false, true},
+                        {"taps debug view, host stencil", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true, false,
+                         false, false, SSS_DEBUG_VIEW_TAPS},
+                        {"tiles debug view (its colour masks)", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, true,
+                         false, false, false, SSS_DEBUG_VIEW_TILES}};
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
@@ -176,6 +181,7 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     sss_frame f = frame_of(c.msaa ? msaa_color : color, c.msaa ? msaa_depth : c.stencil ? depth_stencil : depth,
                            c.output ? output : 0);
     f.stencil = c.stencil ? &stencil : nullptr;
+    f.debug_view = c.debug_view;
     FilterCase description;
     description.half_color = true;
     description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;

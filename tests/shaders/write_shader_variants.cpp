@@ -86,6 +86,8 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
     out->write(d + "tile_mark_" + gl::kComputeImageFormats[image].qualifier + ".frag",
                gl::stage_recipe(dialect, "tile_mark.frag", gl::tile_mark_defines(false, image)));
   }
+  // The tiles debug view's fragment stage (drawn with each of the three vertex stages above).
+  out->write(d + "tile_view.frag", gl::stage_recipe(dialect, "tile_view.frag"));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
   // The inputs: every switch set with the colour read through the sampler; GLSL 4.20 also through
@@ -129,9 +131,10 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
       }
     }
   }
-  // The debug views (SSS_DEBUG_VIEW 1..5): the fragment passes' pair a view runs (the horizontal
-  // pass packed, the vertical one into a separate output), with each per-pixel profile variant.
-  for (int view = 1; view <= static_cast<int>(SSS_DEBUG_VIEW_LAST); ++view) {
+  // The debug views the passes write (SSS_DEBUG_VIEW 1..5): the fragment passes' pair a view runs
+  // (the horizontal pass packed, the vertical one into a separate output), with each per-pixel
+  // profile variant. The tiles view has its own program, with each of its vertex stages below.
+  for (int view = 1; view <= static_cast<int>(SSS_DEBUG_VIEW_PROFILE); ++view) {
     for (int profile_ids = 0; profile_ids < 3; ++profile_ids) {
       for (const bool packed : {true, false}) {
         gl::BlurVariant v;

@@ -277,8 +277,8 @@ typedef enum sss_msaa_depth {
 /** What a frame writes into its output_texture instead of the filtered image (sss_frame.debug_view):
  *  what the passes see, per pixel. A pixel the passes leave alone (not translucent, outside the
  *  stencil, a colour that is not finite, an unusable depth, a profile index with no profile) is
- *  (0, 0, 0, 1); every other pixel (r, g, b, 1) as below. The views run the fragment passes of the
- *  kernel's first term. */
+ *  (0, 0, 0, 1); every other pixel (r, g, b, 1) as below. The views but the tiles run the fragment
+ *  passes of the kernel's first term; the tiles view runs the masked path's tile marks. */
 typedef enum sss_debug_view {
   SSS_DEBUG_VIEW_NONE = 0,         /**< the filtered image (the default) */
   SSS_DEBUG_VIEW_MASK = 1,         /**< (1, 1, 1): the pixels the passes change */
@@ -288,11 +288,16 @@ typedef enum sss_debug_view {
                                         surface millimetres over scale and the pixel's strength) */
   SSS_DEBUG_VIEW_TAPS = 4,         /**< (x, y, 0): taps the horizontal and the vertical pass read,
                                         the centre included */
-  SSS_DEBUG_VIEW_PROFILE = 5       /**< (p, o, 0): the profile (value & 15) and object (value >> 4)
-                                        index; (0, 0, 0) without a profile_texture */
+  SSS_DEBUG_VIEW_PROFILE = 5,      /**< (p, o, 1): the profile (value & 15) and object (value >> 4)
+                                        index; (0, 0, 1) without a profile_texture */
+  SSS_DEBUG_VIEW_TILES = 6         /**< (r, g, b): the 16x16 tiles SSS_PATH_FRAGMENT_MASKED draws, at
+                                        every pixel of the viewport: r 1 where its blur passes draw,
+                                        g 1 where its inputs draw does, b 1 where the tile holds a
+                                        translucent pixel; 0 elsewhere. Not with a stencil (that
+                                        path draws no tiles then) */
 } sss_debug_view;
 /** The largest sss_debug_view. */
-#define SSS_DEBUG_VIEW_LAST 5u
+#define SSS_DEBUG_VIEW_LAST 6u
 
 /** One application of the filter. Zero-initialise it and fill what you have: each texture with its
  *  format beside it. A frame that gives its size and the format of every texture it names is
@@ -350,7 +355,7 @@ typedef struct sss_frame {
   uint32_t debug_view;         /**< an sss_debug_view: 0 filters; else that view goes into
                                     output_texture (required), the kernel's first term on the
                                     fragment passes; not with SSS_FRAME_REGION, a multisampled colour
-                                    or the cross-bilateral mode */
+                                    or the cross-bilateral mode (the tiles view: nor a stencil) */
 } sss_frame;
 
 /** Bits of sss_prepare_desc.flags: what the frames will use besides the formats. */
@@ -550,7 +555,8 @@ SSS_API sss_result sss_prepare(sss_context *ctx, const sss_prepare_desc *desc);
  *                                      SSS_CREATE_DEBUG_CHECKS a profile index >= the profile count
  *  @retval SSS_ERROR_UNSUPPORTED       a format or sample count this GL lacks; a projection
  *                                      sss_set_camera() would refuse as unsupported; a debug_view
- *                                      with a multisampled colour or in the cross-bilateral mode
+ *                                      with a multisampled colour or in the cross-bilateral mode;
+ *                                      SSS_DEBUG_VIEW_TILES with a stencil
  *  @retval SSS_ERROR_INVALID_OPERATION no projection in the frame and no camera set
  *  @retval SSS_ERROR_NO_CONTEXT        the GL context is not current or was lost (the module's
  *                                      objects are rebuilt by the next call that finds one)

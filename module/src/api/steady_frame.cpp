@@ -100,9 +100,10 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   scope.unit3 = ctx.settings.cross_bilateral || ctx.kernel.terms.size() > 1 || (msaa && frame.output_texture == 0) ||
                 half;
   scope.profiles = frame.profile_texture != 0 || half;
-  // The tile marks of the masked path (the path AUTO takes untimed, and may time) and of the
-  // half-resolution path.
-  scope.tiles = path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || half;
+  // The tile marks of the masked path (the path AUTO takes untimed, and may time), of the
+  // half-resolution path and of the tiles debug view (whatever the path).
+  scope.tiles = path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || half ||
+                frame.debug_view == SSS_DEBUG_VIEW_TILES;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;
 }

@@ -116,6 +116,11 @@ sss_result check_frame(sss_context* ctx, const sss_frame* frame) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->debug_view = %u with SSS_FRAME_REGION: a view covers the whole viewport", frame->debug_view);
   }
+  if (frame->debug_view == SSS_DEBUG_VIEW_TILES && frame->stencil != nullptr) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "frame->debug_view = %u (SSS_DEBUG_VIEW_TILES) with a stencil: the masked path draws no tiles "
+                "where the stencil culls", frame->debug_view);
+  }
   if (frame->msaa_depth_resolve > SSS_MSAA_DEPTH_MAX) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
                 "frame->msaa_depth_resolve = %u: must be SSS_MSAA_DEPTH_AVERAGE, _SAMPLE0, _MIN or _MAX (0..3)",

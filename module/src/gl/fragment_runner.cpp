@@ -256,6 +256,7 @@ sss_result run_fragment(PassContext& ctx, const FilterRun& run, std::string* mes
 sss_result run_separable(PassContext& ctx, const FilterRun& run, bool tiles, std::string* message) {
   if (run.identity) return run_identity(ctx, run, message);
   if (run.cross_bilateral) return run_cross_bilateral(ctx, run, message);
+  if (run.debug_view == SSS_DEBUG_VIEW_TILES) return run_tile_view(ctx, run, message);
   const std::size_t terms = terms_run(run);
   TermPrograms programs{};
   sss_result r = prepare_separable(ctx, run, &programs, message);

@@ -71,6 +71,7 @@ void ProgramCache::destroy() {
   for (const HalfInputsProgram& p : half_inputs_) remove(p.program);
   for (const HalfUpsampleProgram& p : half_upsample_) remove(p.program);
   for (const TileMarkProgram& p : tile_mark_) remove(p.program);
+  for (const TileViewProgram& p : tile_view_) remove(p.program);
   forget();
 }
 
@@ -385,6 +386,26 @@ sss_result ProgramCache::tile_mark(bool columns, int color_image, TileMarkProgra
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  return SSS_OK;
+}
+
+sss_result ProgramCache::tile_view(TileSpans spans, TileViewProgram** out, std::string* message) {
+  TileViewProgram& p = tile_view_[static_cast<std::size_t>(spans)];
+  *out = &p;
+  if (p.program != 0) return SSS_OK;
+  static const char* const kDraws[] = {"marks", "passes' bands", "inputs' bands"};
+  const char* draw = kDraws[static_cast<std::size_t>(spans)];
+  p.program = link("tile_view.frag", "", std::string("tiles view shader (") + draw + ")", message, spans);
+  if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
+  char label[64];
+  std::snprintf(label, sizeof label, "sss tiles view (%s)", draw);
+  finish(p.program, label, "tiles view");
+  const Functions& f = *gl_;
+  p.rect = f.GetUniformLocation(p.program, "u_rect");
+  p.cover = f.GetUniformLocation(p.program, "u_cover");
+  p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
   return SSS_OK;
 }
 

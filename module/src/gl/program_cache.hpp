@@ -88,6 +88,14 @@ struct TileMarkProgram {
   int color_image = -1;
 };
 
+// The tiles debug view (tile_view.frag): one program per vertex stage (TileSpans: the full-screen
+// triangle for the marks, then the inputs draw's and the blur passes' bands).
+struct TileViewProgram {
+  GLuint program = 0;
+  GLint rect = -1, cover = -1;
+  GLint tile_grid = -1;  // the band draws' (fullscreen.vert)
+};
+
 // The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
 struct HalfInputsProgram {
   GLuint program = 0;
@@ -143,6 +151,8 @@ class ProgramCache {
   // the sampler; a context without image units, or a driver that refused such a read
   // (image_inputs_refused_), gets the sampler's.
   sss_result tile_mark(bool columns, int color_image, TileMarkProgram** out, std::string* message);
+  // The tiles debug view's program drawn with the vertex stage `spans` (SSS_DEBUG_VIEW_TILES).
+  sss_result tile_view(TileSpans spans, TileViewProgram** out, std::string* message);
 
  private:
   // The compute variants (is_compute_blur_variant): blur_variant_index's leading factor (packed
@@ -193,6 +203,7 @@ class ProgramCache {
   std::array<HalfUpsampleProgram, kHalfVariantCount> half_upsample_{};
   // [0]: the columns' marks; [1 + color_image + 1]: the tiles' (sampler, then each image format).
   std::array<TileMarkProgram, 2 + kPassInputsColorImageFormats> tile_mark_{};
+  std::array<TileViewProgram, 3> tile_view_{};  // by TileSpans
 };
 
 }  // namespace sss::gl

@@ -54,6 +54,9 @@ sss_result run_masked(PassContext& ctx, const FilterRun& run, std::string* messa
 // drawn rectangle.
 sss_result prepare_tile_culling(PassContext& ctx, const FilterRun& run, std::string* message);
 sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* message);
+// SSS_DEBUG_VIEW_TILES (tile_view.cpp): the tiles' marks and the masked path's bands, each draw in
+// its own channel of the separate output, over the drawn rectangle.
+sss_result run_tile_view(PassContext& ctx, const FilterRun& run, std::string* message);
 // The paper's stencil culling: the module's stencil buffer set to 1 where `source`'s alpha is
 // above 0 (left on horizontal_framebuffer(run)). Draws over the current viewport.
 sss_result mark_stencil_from_alpha(PassContext& ctx, const FilterRun& run, GLuint source, std::string* message);

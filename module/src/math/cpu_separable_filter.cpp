@@ -9,6 +9,7 @@
 #include "cpu_filter_passes.hpp"
 #include "half_float.hpp"
 #include "pass_surface.hpp"
+#include "tile_culling.hpp"
 
 namespace sss::math {
 
@@ -137,9 +138,9 @@ Rgba debug_values(const PassFrame& frame, const Plane& source, int axis, int x, 
     case 4: return {source.at(x, y, 1), taps, 0.0f, 1.0f};  // _TAPS
     default: {  // _PROFILE
       const Indices& ids = frame.indices;
-      if (ids.ids == nullptr) return {0.0f, 0.0f, 0.0f, 1.0f};
+      if (ids.ids == nullptr) return {0.0f, 0.0f, 1.0f, 1.0f};
       const std::uint16_t id = ids.at(x, y);
-      return {static_cast<float>(id & 15u), static_cast<float>(id >> 4), 0.0f, 1.0f};
+      return {static_cast<float>(id & 15u), static_cast<float>(id >> 4), 1.0f, 1.0f};
     }
   }
 }
@@ -263,6 +264,14 @@ CpuFilterImage prepare_debug_view(const CpuFilterImage& image, const PassConstan
   return debug;
 }
 
+// The tiles view over the clamp rectangle (the viewport), from the colour's alpha; no pass runs.
+void tile_view(const CpuFilterImage& image, const PassConstants& k, float* out) {
+  const int x = static_cast<int>(k.clamp_min[0] - 0.5f), y = static_cast<int>(k.clamp_min[1] - 0.5f);
+  const std::array<int, 4> rect = {x, y, static_cast<int>(k.clamp_max[0] + 0.5f) - x,
+                                   static_cast<int>(k.clamp_max[1] + 0.5f) - y};
+  write_tile_view(image.color, image.width, rect, out);
+}
+
 }  // namespace
 
 void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& constants, const CpuFilterImage& given,
@@ -270,6 +279,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
   const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   std::copy(given.color, given.color + count * 4, out);
+  if (given.debug_view == kTilesDebugView) return tile_view(given, constants, out);
   const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants, out) : given;
   const Plane color{w, h, 4, image.color};
   const std::vector<float> distances = pass_distances(constants, image, image.depth);
@@ -316,6 +326,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
   const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
   std::copy(given.color, given.color + count * 4, out);
+  if (given.debug_view == kTilesDebugView) return tile_view(given, constants.front(), out);
   const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants.front(), out) : given;
   // With R8UI ids the passes' inputs carry each index in the low byte of the blue colour word, which
   // the passes read as 0 (and the horizontal pass's result carries on the same way).

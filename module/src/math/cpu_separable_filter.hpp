@@ -46,6 +46,10 @@ struct CpuFilterImage {
   std::uint32_t debug_view = 0;
 };
 
+// sss.h SSS_DEBUG_VIEW_TILES (the math layer includes no public header): the view that runs no pass,
+// only the masked path's tile marks (math::write_tile_view).
+inline constexpr std::uint32_t kTilesDebugView = 6;
+
 // An image of `width` x `height` pixels with these colour and depth planes, the rest as above.
 inline CpuFilterImage cpu_filter_image(int width, int height, const float* color, const float* depth) {
   CpuFilterImage image;

@@ -13,6 +13,7 @@
 // saved on a full frame; its bins are 64 pixels).
 #pragma once
 
+#include <array>
 #include <vector>
 
 namespace sss::math {
@@ -36,5 +37,14 @@ struct TileSpan {
 std::vector<unsigned char> column_marks(const std::vector<unsigned char>& marks, int across, int down);
 TileSpan tile_span(const std::vector<unsigned char>& marks, const std::vector<unsigned char>& columns, int across,
                    int down, int band, TileDraw draw);
+
+// The tiles' marks of `rect` (x, y, width, height) in an RGBA image `width` pixels wide, row 0 at
+// the bottom: across × down, 1 where a tile's alpha is above 0 somewhere (NaN is not).
+std::vector<unsigned char> tile_marks(const float* rgba, int width, const std::array<int, 4>& rect);
+
+// The tiles debug view (sss.h SSS_DEBUG_VIEW_TILES) over `rect` of `out` (RGBA, `width` wide; the
+// rest left as it is): (r, g, b, 1) with r 1 where the blur passes' bands cover the pixel, g where
+// the inputs draw's do, b where the pixel's own tile is marked. `rgba` and `out` may not alias.
+void write_tile_view(const float* rgba, int width, const std::array<int, 4>& rect, float* out);
 
 }  // namespace sss::math
