@@ -7,9 +7,11 @@
 #   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
 #           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots); RapidCheck
 #           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets),
-#           clang-tidy (the code.shape test), Emscripten and Chromium (the web.browser test)
+#           clang-tidy (the code.shape test), Emscripten and Chromium (the web.browser test), npm
+#           (the web.three test: three, lil-gui and TypeScript from web/three/dev/package-lock.json)
 #   demo    build + GLFW, tinygltf, Dear ImGui, and Xvfb (the demo's window test)
-#   web     build + Emscripten, Chromium, tinygltf, nlohmann-json (scripts/run-web-demo.sh)
+#   web     build + Emscripten, Chromium, tinygltf, nlohmann-json (scripts/run-web-demo.sh), npm
+#           (the three.js package: scripts/build-three-package.sh, scripts/run-three-demo.sh)
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
 #
@@ -21,13 +23,14 @@ readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev 
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev libeigen3-dev libnlopt-dev)
 readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
   nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev clang-tidy emscripten
-  chromium)
+  chromium npm)
 readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
 # The web demo: emcc compiles tinygltf, nlohmann-json, stb_image and glm from their Debian headers.
-readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev)
+# The three.js package: npm packs it and installs three, lil-gui and TypeScript from the registry.
+readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev npm)
 
 usage() {
-  sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 check_only=0

@@ -24,6 +24,18 @@ function rendererString(gl) {
     ' (' + gl.getParameter(gl.VERSION) + ')';
 }
 
+// The canvas as RGBA8, top row first, base64 (what the test compares and saves).
+function pixels(gl) {
+  const width = gl.drawingBufferWidth, height = gl.drawingBufferHeight;
+  const data = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  const rows = new Uint8Array(data.length);
+  for (let y = 0; y < height; ++y) rows.set(data.subarray((height - 1 - y) * width * 4, (height - y) * width * 4), y * width * 4);
+  let text = '';
+  for (let i = 0; i < rows.length; i += 0x8000) text += String.fromCharCode.apply(null, rows.subarray(i, i + 0x8000));
+  return btoa(text);
+}
+
 async function main() {
   const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
@@ -69,6 +81,30 @@ async function main() {
   for (const m of [marble, milk]) m.castShadow = m.receiveShadow = true;
   scene.add(marble, milk);
 
+  const composer = new EffectComposer(renderer, createSSSRenderTarget(WIDTH, HEIGHT));
+  composer.addPass(new RenderPass(scene, camera));
+  composer.addPass(new OutputPass());
+
+  // One frame, waited for with a one-pixel read (a full round trip through the GPU): its time in ms.
+  const pixel = new Uint8Array(4);
+  let pass = null;
+  function frame() {
+    const start = performance.now();
+    composer.render();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    const ms = performance.now() - start;
+    $('error').textContent = pass && pass.enabled ? pass.lastError : '';
+    $('readout').textContent = `frame ${ms.toFixed(1)} ms (${WIDTH}x${HEIGHT}, three's render + SSSPass + OutputPass, ` +
+      'waited for with a one-pixel read)';
+    return ms;
+  }
+  Object.assign(example, { THREE, renderer, scene, camera, composer, frame, pixels: () => pixels(gl) });
+  // ?hold: the test renders three's own frames before the library exists, then calls proceed().
+  if (params.has('hold')) {
+    example.holding = true;
+    await new Promise((resolve) => { example.proceed = resolve; });
+  }
+
   let sss;
   try {
     sss = await SSS.create(renderer);
@@ -77,24 +113,8 @@ async function main() {
     $('error').textContent = example.failed;
     return;
   }
-  const composer = new EffectComposer(renderer, createSSSRenderTarget(WIDTH, HEIGHT));
-  composer.addPass(new RenderPass(scene, camera));
-  const pass = new SSSPass(sss, scene, camera, { metresPerUnit: 1 });
-  composer.addPass(pass);
-  composer.addPass(new OutputPass());
-
-  // One frame, waited for with a one-pixel read (a full round trip through the GPU): its time in ms.
-  const pixel = new Uint8Array(4);
-  function frame() {
-    const start = performance.now();
-    composer.render();
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    const ms = performance.now() - start;
-    $('error').textContent = pass.enabled ? pass.lastError : '';
-    $('readout').textContent = `frame ${ms.toFixed(1)} ms (${WIDTH}x${HEIGHT}, three's render + SSSPass + OutputPass, ` +
-      'waited for with a one-pixel read)';
-    return ms;
-  }
+  pass = new SSSPass(sss, scene, camera, { metresPerUnit: 1 });
+  composer.insertPass(pass, 1);  // after the RenderPass, before tone mapping and sRGB
 
   // Every setting of the pass; the materials' profiles too.
   const gui = new GUI({ title: 'SSSPass' });
@@ -119,17 +139,7 @@ async function main() {
   controls.addEventListener('change', redraw);
 
   Object.assign(example, {
-    THREE, renderer, scene, camera, composer, pass, sss, gui, frame,
-    // RGBA8 of the canvas, top row first, base64 (what the test compares and saves).
-    pixels() {
-      const data = new Uint8Array(WIDTH * HEIGHT * 4);
-      gl.readPixels(0, 0, WIDTH, HEIGHT, gl.RGBA, gl.UNSIGNED_BYTE, data);
-      const rows = new Uint8Array(data.length);
-      for (let y = 0; y < HEIGHT; ++y) rows.set(data.subarray((HEIGHT - 1 - y) * WIDTH * 4, (HEIGHT - y) * WIDTH * 4), y * WIDTH * 4);
-      let text = '';
-      for (let i = 0; i < rows.length; i += 0x8000) text += String.fromCharCode.apply(null, rows.subarray(i, i + 0x8000));
-      return btoa(text);
-    },
+    pass, sss, gui, marble, milk, head,
     // Median ms of `count` frames with the pass on, and with it off (three's frame alone).
     time(count) {
       const median = (a) => a.sort((x, y) => x - y)[a.length >> 1];

@@ -33,6 +33,11 @@ const PROFILE_FLOATS = 16;
 // leaves a pixel whose index has no profile as it is).
 const NO_PROFILE = 15;
 const MAX_PROFILES = 15;
+// How far (window depth) three's depth may lie behind the profile pass's fragment and still be its
+// surface: two vertex shaders' rounding (a few steps of a 24-bit depth buffer), yet finer than any
+// gap between two surfaces that matters (window depth changes by about near / distance² per unit: 1e-5 is 0.1 mm at 1 m
+// from a camera whose near plane is at 0.1).
+const DEPTH_EPSILON = '1e-5';
 
 /**
  * Marks a material as translucent: the pass filters the pixels it covers with the profile given.
@@ -78,7 +83,10 @@ function depthFormatOf(texture) {
 
 // The profile pass's material: the profile texture's value where the mesh is in front, with three's
 // own vertex chunks so that skinned, morphed, instanced and batched meshes land where three drew
-// them. Left of `split` (a fraction of the width) every pixel is NO_PROFILE: the split view.
+// them. Left of `split` (a fraction of the width) every pixel is NO_PROFILE: the split view. So is
+// a pixel where three's own depth lies behind this fragment: this shader and three's compute the
+// position with different code, which can move a silhouette by a pixel (measured: about 400 pixels
+// of the head's outline at 640x360 otherwise marked skin over the background).
 const PROFILE_VERTEX = `
 #include <common>
 #include <batching_pars_vertex>
@@ -99,10 +107,13 @@ const PROFILE_FRAGMENT = `
 #include <clipping_planes_pars_fragment>
 uniform uint sssValue;
 uniform float sssSplitX;
+uniform highp sampler2D sssDepth;
 layout(location = 0) out highp uvec4 sssProfile;
 void main() {
 #include <clipping_planes_fragment>
-  sssProfile = uvec4(gl_FragCoord.x < sssSplitX ? ${NO_PROFILE}u : sssValue, 0u, 0u, 0u);
+  float drawn = texelFetch(sssDepth, ivec2(gl_FragCoord.xy), 0).r;
+  bool mine = gl_FragCoord.x >= sssSplitX && drawn <= gl_FragCoord.z + ${DEPTH_EPSILON};
+  sssProfile = uvec4(mine ? sssValue : ${NO_PROFILE}u, 0u, 0u, 0u);
 }`;
 
 /**
@@ -144,6 +155,7 @@ export class SSS {
     this._projection = this._scratch + PROFILE_FLOATS * MAX_PROFILES * 4;
     this._stats = this._projection + 16 * 4;
     this.context = this._call(() => module._sss3_create(options.flags || 0));
+    this._forgetState();
     if (!this.context) {
       const message = this._message();
       this._free();
@@ -156,6 +168,7 @@ export class SSS {
     this._idTarget = null;
     this._idMaterials = new Map();
     this._split = { value: 0 };
+    this._depth = { value: null };  // three's DepthTexture of the frame: the profile pass's uniform
     this._clear = new Color();
     this._idClear = new Color();
     this._idClear.r = NO_PROFILE;  // three clears an unsigned-integer target with the clear colour as is
@@ -166,6 +179,18 @@ export class SSS {
   }
 
   _message() { return this.module.UTF8ToString(this.module._sss3_last_error()); }
+
+  // sss_create draws nothing, and the library restores GL state only around what draws (sss.h):
+  // it leaves the program, the vertex array and texture unit 0 unbound (measured by the web.three
+  // test, docs/three.md; sss_prepare and sss_destroy leave nothing). Three would keep drawing with
+  // what it believes is bound (the head's albedo on unit 0: a black head), so it is told to forget:
+  // resetState() sets the GL to its defaults and three's cache with it. Once, at setup;
+  // sss_apply_frame restores everything three can see.
+  _forgetState() {
+    const target = this.renderer.getRenderTarget();
+    this.renderer.resetState();
+    this.renderer.setRenderTarget(target);
+  }
 
   // Lends `object` (a WebGL object of three's) the integer name Emscripten's GL layer will look it
   // up by, for the length of one call: the library reads bindings through glGetIntegerv, which
@@ -284,7 +309,7 @@ export class SSS {
     if (!material) {
       material = new ShaderMaterial({
         glslVersion: GLSL3, vertexShader: PROFILE_VERTEX, fragmentShader: PROFILE_FRAGMENT, side, clipping: true,
-        uniforms: { sssValue: { value }, sssSplitX: this._split }
+        uniforms: { sssValue: { value }, sssSplitX: this._split, sssDepth: this._depth }
       });
       this._idMaterials.set(key, material);
     }
@@ -295,7 +320,7 @@ export class SSS {
   // (NO_PROFILE for materials without userData.sss), through three itself, so three's cache sees
   // every state change. Transparent meshes and non-mesh objects are left out (they do not hide
   // what lies behind them from the filter).
-  _renderProfiles(scene, camera, width, height, perMaterial, split) {
+  _renderProfiles(scene, camera, width, height, perMaterial, split, depthTexture) {
     const renderer = this.renderer;
     if (!this._idTarget) {
       this._idTarget = new WebGLRenderTarget(width, height, {
@@ -306,6 +331,7 @@ export class SSS {
       this._idTarget.setSize(width, height);
     }
     this._split.value = split * width;
+    this._depth.value = depthTexture;
     const swapped = [], hidden = [];
     scene.traverse((object) => {
       if (!object.visible) return;
@@ -349,6 +375,7 @@ export class SSS {
       renderer.shadowMap.needsUpdate = shadowNeeds;
       renderer.setClearColor(this._clear, clearAlpha);
       renderer.setRenderTarget(target);
+      this._depth.value = null;
     }
   }
 
@@ -374,7 +401,7 @@ export class SSS {
     }
     if (!this._setProfiles(collected, settings)) return this.lastResult;
     const width = target.width, height = target.height;
-    this._renderProfiles(scene, camera, width, height, collected.perMaterial, settings.split);
+    this._renderProfiles(scene, camera, width, height, collected.perMaterial, settings.split, target.depthTexture);
     const colorFormat = colorFormatOf(gl, target.texture), depthFormat = depthFormatOf(target.depthTexture);
     const color = properties.get(target.texture).__webglTexture;
     const depth = properties.get(target.depthTexture).__webglTexture;
@@ -382,16 +409,18 @@ export class SSS {
     const m = this.module;
     new Float32Array(m.HEAPF32.buffer, this._projection, 16).set(camera.projectionMatrix.elements);
     const flags = camera.reversedDepth ? SSS_FRAME_DEPTH_ZERO_TO_ONE : 0;
+    const prepared = [width, height, colorFormat, depthFormat].join();
+    if (prepared !== this._prepared) {
+      // The first frame of this size and these formats that setSize did not prepare.
+      const p = this.prepare(width, height, colorFormat, depthFormat);
+      if (p !== 0) {
+        this.lastResult = p;
+        return p;
+      }
+    }
     const r = this._call(() => {
       const GL = this._GL;
       this._lendBindings();
-      const prepared = [width, height, colorFormat, depthFormat].join();
-      if (prepared !== this._prepared) {
-        // Compiles and allocates for this size now (a new size: setSize), not inside the frame.
-        const p = m._sss3_prepare(this.context, width, height, colorFormat, depthFormat, GL_R8UI);
-        if (p !== 0) return p;
-        this._prepared = prepared;
-      }
       return m._sss3_apply(this.context, this._lend(color, GL.textures), colorFormat, this._lend(depth, GL.textures),
         depthFormat, this._lend(profile, GL.textures), GL_R8UI, width, height, this._projection, ++this._frame, flags);
     });
