@@ -73,6 +73,11 @@ fi
 # architecture: dpkg-query prints one status per installed architecture).
 is_installed() {
   local status
+  # npm: any npm on the PATH serves (Node's own release bundles it, outside dpkg); Debian's
+  # package only where there is none, since it brings Debian's nodejs with it.
+  if [[ $1 == npm ]] && command -v npm >/dev/null 2>&1; then
+    return 0
+  fi
   status=$(dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null) || return 1
   grep -qx 'install ok installed' <<<"$status"
 }
