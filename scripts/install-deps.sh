@@ -7,10 +7,12 @@
 #   test    build + GoogleTest/GoogleMock, Google Benchmark, glslangValidator, and the benchmark's
 #           tinygltf (head scenes), nlohmann-json (results) and gnuplot (plots); RapidCheck
 #           (property tests), valgrind (memcheck run), clang + its runtime (libFuzzer targets),
-#           clang-tidy (the code.shape test), Emscripten and Chromium (the web.browser test),
+#           clang-tidy (the code.shape test), Emscripten and Chromium (the web.browser test), npm
+#           (the web.three test: three, lil-gui and TypeScript from web/three/dev/package-lock.json),
 #           OpenSceneGraph 3.6 with Xvfb (the osg.engine_cache tests of examples/osg)
 #   demo    build + GLFW, tinygltf, Dear ImGui, and Xvfb (the demo's window test)
-#   web     build + Emscripten, Chromium, tinygltf, nlohmann-json (scripts/run-web-demo.sh)
+#   web     build + Emscripten, Chromium, tinygltf, nlohmann-json (scripts/run-web-demo.sh), npm
+#           (the three.js package: scripts/build-three-package.sh, scripts/run-three-demo.sh)
 #   all     everything above
 #   --check only report what is missing; exit 1 if something is, install nothing
 #
@@ -22,13 +24,14 @@ readonly BUILD_PKGS=(cmake ninja-build g++ pkg-config libosmesa6-dev libegl-dev 
   libgl1-mesa-dri libgles-dev libglm-dev libstb-dev libeigen3-dev libnlopt-dev)
 readonly TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev glslang-tools libtinygltf-dev
   nlohmann-json3-dev gnuplot-nox librapidcheck-dev valgrind clang libclang-rt-14-dev clang-tidy emscripten
-  chromium libopenscenegraph-dev xvfb xauth)
+  chromium npm libopenscenegraph-dev xvfb xauth)
 readonly DEMO_PKGS=(libglfw3-dev libtinygltf-dev libimgui-dev xvfb xauth)
 # The web demo: emcc compiles tinygltf, nlohmann-json, stb_image and glm from their Debian headers.
-readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev)
+# The three.js package: npm packs it and installs three, lil-gui and TypeScript from the registry.
+readonly WEB_PKGS=(emscripten chromium libtinygltf-dev nlohmann-json3-dev npm)
 
 usage() {
-  sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 check_only=0
@@ -71,6 +74,11 @@ fi
 # architecture: dpkg-query prints one status per installed architecture).
 is_installed() {
   local status
+  # npm: any npm on the PATH serves (Node's own release bundles it, outside dpkg); Debian's
+  # package only where there is none, since it brings Debian's nodejs with it.
+  if [[ $1 == npm ]] && command -v npm >/dev/null 2>&1; then
+    return 0
+  fi
   status=$(dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null) || return 1
   grep -qx 'install ok installed' <<<"$status"
 }

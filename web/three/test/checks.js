@@ -1,0 +1,369 @@
+// The web.three test's side in the page (web/three/test/three_test.py loads it into the example
+// page, window.sssExample): frames, GL state snapshots, a probe of three's state cache, and the
+// compile counter. It returns measurements; the Python driver judges them.
+import * as THREE from 'three';
+
+const ex = window.sssExample;
+const gl = ex.renderer.getContext();
+
+// ---- A second scene of three's standard materials (no userData.sss): textures, lights, shadows,
+// a transparent object, points and lines, so that a frame of it exercises much of three's state.
+function standardScene() {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0x223344);
+  const camera = new THREE.PerspectiveCamera(45, gl.drawingBufferWidth / gl.drawingBufferHeight, 0.1, 50);
+  camera.position.set(0, 1.5, 5);
+  camera.lookAt(0, 0, 0);
+  const data = new Uint8Array(8 * 8 * 4).map((_, i) => ((i >> 2) % 3 === 0 ? 255 : (i * 37) & 255));
+  const texture = new THREE.DataTexture(data, 8, 8);
+  texture.needsUpdate = true;
+  const light = new THREE.SpotLight(0xffffff, 40);
+  light.position.set(2, 4, 3);
+  light.castShadow = true;
+  scene.add(light, new THREE.AmbientLight(0x404040));
+  const box = new THREE.Mesh(new THREE.BoxGeometry(1, 1, 1), new THREE.MeshStandardMaterial({ map: texture, roughness: 0.4 }));
+  box.position.x = -1.5;
+  box.castShadow = true;
+  const knot = new THREE.Mesh(new THREE.TorusKnotGeometry(0.5, 0.15, 96, 12), new THREE.MeshPhongMaterial({ color: 0x44aa88 }));
+  knot.castShadow = true;
+  const glass = new THREE.Mesh(new THREE.SphereGeometry(0.6, 32, 16),
+    new THREE.MeshPhysicalMaterial({ color: 0xff8844, transparent: true, opacity: 0.5 }));
+  glass.position.x = 1.5;
+  const floor = new THREE.Mesh(new THREE.PlaneGeometry(8, 8), new THREE.MeshLambertMaterial({ color: 0x888888 }));
+  floor.rotation.x = -Math.PI / 2;
+  floor.position.y = -1;
+  floor.receiveShadow = true;
+  const points = new THREE.Points(new THREE.BufferGeometry().setAttribute('position',
+    new THREE.Float32BufferAttribute([-2, 1.5, 0, 0, 1.8, 0, 2, 1.5, 0], 3)), new THREE.PointsMaterial({ size: 8, sizeAttenuation: false }));
+  const line = new THREE.Line(new THREE.BufferGeometry().setAttribute('position',
+    new THREE.Float32BufferAttribute([-3, -0.5, 1, 3, -0.5, 1], 3)), new THREE.LineBasicMaterial({ color: 0xffff00 }));
+  scene.add(box, knot, glass, floor, points, line);
+  return { scene, camera };
+}
+const standard = standardScene();
+
+// The example's background is near black, which dark skin at the silhouette can equal after tone
+// mapping; the test's frames show a colour no lit surface has, so that "background" is exact.
+const exampleBackground = ex.scene.background;
+ex.scene.background = new THREE.Color(1, 0, 1);
+
+// ---- GL state: everything getParameter can read that a draw depends on, with WebGL objects as
+// stable labels (the same object, the same label).
+const labels = new WeakMap();
+let nextLabel = 1;
+function label(object) {
+  if (object === null || object === undefined) return null;
+  if (typeof object !== 'object' || ArrayBuffer.isView(object) || Array.isArray(object)) {
+    return ArrayBuffer.isView(object) ? Array.from(object) : object;
+  }
+  if (!labels.has(object)) labels.set(object, object.constructor.name + '#' + nextLabel++);
+  return labels.get(object);
+}
+
+const PARAMETERS = ['ACTIVE_TEXTURE', 'ARRAY_BUFFER_BINDING', 'ELEMENT_ARRAY_BUFFER_BINDING', 'CURRENT_PROGRAM',
+  'VERTEX_ARRAY_BINDING', 'DRAW_FRAMEBUFFER_BINDING', 'READ_FRAMEBUFFER_BINDING', 'RENDERBUFFER_BINDING',
+  'PIXEL_PACK_BUFFER_BINDING', 'PIXEL_UNPACK_BUFFER_BINDING', 'UNIFORM_BUFFER_BINDING', 'COPY_READ_BUFFER_BINDING',
+  'COPY_WRITE_BUFFER_BINDING', 'TRANSFORM_FEEDBACK_BINDING', 'TRANSFORM_FEEDBACK_BUFFER_BINDING',
+  'BLEND', 'CULL_FACE', 'DEPTH_TEST', 'DITHER', 'POLYGON_OFFSET_FILL', 'RASTERIZER_DISCARD',
+  'SAMPLE_ALPHA_TO_COVERAGE', 'SAMPLE_COVERAGE', 'SCISSOR_TEST', 'STENCIL_TEST',
+  'BLEND_COLOR', 'BLEND_DST_ALPHA', 'BLEND_DST_RGB', 'BLEND_EQUATION_ALPHA', 'BLEND_EQUATION_RGB', 'BLEND_SRC_ALPHA',
+  'BLEND_SRC_RGB', 'COLOR_CLEAR_VALUE', 'COLOR_WRITEMASK', 'CULL_FACE_MODE', 'DEPTH_CLEAR_VALUE', 'DEPTH_FUNC',
+  'DEPTH_RANGE', 'DEPTH_WRITEMASK', 'FRONT_FACE', 'LINE_WIDTH', 'POLYGON_OFFSET_FACTOR', 'POLYGON_OFFSET_UNITS',
+  'SAMPLE_COVERAGE_INVERT', 'SAMPLE_COVERAGE_VALUE', 'SCISSOR_BOX', 'VIEWPORT',
+  'STENCIL_BACK_FAIL', 'STENCIL_BACK_FUNC', 'STENCIL_BACK_PASS_DEPTH_FAIL', 'STENCIL_BACK_PASS_DEPTH_PASS',
+  'STENCIL_BACK_REF', 'STENCIL_BACK_VALUE_MASK', 'STENCIL_BACK_WRITEMASK', 'STENCIL_CLEAR_VALUE', 'STENCIL_FAIL',
+  'STENCIL_FUNC', 'STENCIL_PASS_DEPTH_FAIL', 'STENCIL_PASS_DEPTH_PASS', 'STENCIL_REF', 'STENCIL_VALUE_MASK',
+  'STENCIL_WRITEMASK', 'PACK_ALIGNMENT', 'UNPACK_ALIGNMENT', 'PACK_ROW_LENGTH', 'PACK_SKIP_PIXELS', 'PACK_SKIP_ROWS',
+  'UNPACK_ROW_LENGTH', 'UNPACK_SKIP_PIXELS', 'UNPACK_SKIP_ROWS', 'UNPACK_IMAGE_HEIGHT', 'UNPACK_SKIP_IMAGES',
+  'UNPACK_FLIP_Y_WEBGL', 'UNPACK_PREMULTIPLY_ALPHA_WEBGL', 'UNPACK_COLORSPACE_CONVERSION_WEBGL',
+  'GENERATE_MIPMAP_HINT', 'FRAGMENT_SHADER_DERIVATIVE_HINT', 'READ_BUFFER'];
+const TEXTURE_PARAMETERS = ['TEXTURE_MIN_FILTER', 'TEXTURE_MAG_FILTER', 'TEXTURE_WRAP_S', 'TEXTURE_WRAP_T',
+  'TEXTURE_WRAP_R', 'TEXTURE_COMPARE_MODE', 'TEXTURE_COMPARE_FUNC', 'TEXTURE_BASE_LEVEL', 'TEXTURE_MAX_LEVEL',
+  'TEXTURE_MIN_LOD', 'TEXTURE_MAX_LOD'];
+
+// The textures whose parameters the snapshot reads: the composer's colour and depth, the pass's
+// profile target (three's WebGLTexture objects).
+function passTextures() {
+  const props = ex.renderer.properties, out = {};
+  const add = (name, texture) => { if (texture && props.get(texture).__webglTexture) out[name] = props.get(texture).__webglTexture; };
+  add('colour1', ex.composer.renderTarget1.texture);
+  add('depth1', ex.composer.renderTarget1.depthTexture);
+  add('colour2', ex.composer.renderTarget2.texture);
+  add('depth2', ex.composer.renderTarget2.depthTexture);
+  if (ex.sss && ex.sss._idTarget) add('profile', ex.sss._idTarget.texture);
+  return out;
+}
+
+export function snapshot() {
+  const s = {};
+  for (const name of PARAMETERS) s[name] = label(gl.getParameter(gl[name]));
+  const units = gl.getParameter(gl.MAX_COMBINED_TEXTURE_IMAGE_UNITS);
+  const active = gl.getParameter(gl.ACTIVE_TEXTURE);
+  for (let unit = 0; unit < Math.min(units, 32); ++unit) {
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    for (const b of ['TEXTURE_BINDING_2D', 'TEXTURE_BINDING_CUBE_MAP', 'TEXTURE_BINDING_3D', 'TEXTURE_BINDING_2D_ARRAY',
+      'SAMPLER_BINDING']) s[b + '[' + unit + ']'] = label(gl.getParameter(gl[b]));
+  }
+  gl.activeTexture(active);
+  for (let i = 0; i < gl.getParameter(gl.MAX_UNIFORM_BUFFER_BINDINGS); ++i) {
+    s['UNIFORM_BUFFER_BINDING[' + i + ']'] = label(gl.getIndexedParameter(gl.UNIFORM_BUFFER_BINDING, i));
+  }
+  const drawFramebuffer = gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING);
+  for (let i = 0; i < (drawFramebuffer ? 4 : 1); ++i) s['DRAW_BUFFER' + i] = gl.getParameter(gl.DRAW_BUFFER0 + i);
+  const attribs = gl.getParameter(gl.MAX_VERTEX_ATTRIBS);
+  for (let i = 0; i < attribs; ++i) {
+    s['VERTEX_ATTRIB_ARRAY_ENABLED[' + i + ']'] = gl.getVertexAttrib(i, gl.VERTEX_ATTRIB_ARRAY_ENABLED);
+    s['VERTEX_ATTRIB_ARRAY_BUFFER_BINDING[' + i + ']'] = label(gl.getVertexAttrib(i, gl.VERTEX_ATTRIB_ARRAY_BUFFER_BINDING));
+  }
+  // Texture parameters: bound on the active unit for the read, then the unit's binding put back.
+  const bound = gl.getParameter(gl.TEXTURE_BINDING_2D);
+  for (const [name, texture] of Object.entries(passTextures())) {
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    for (const p of TEXTURE_PARAMETERS) s[name + '.' + p] = gl.getTexParameter(gl.TEXTURE_2D, gl[p]);
+  }
+  gl.bindTexture(gl.TEXTURE_2D, bound);
+  return s;
+}
+
+export function differences(a, b) {
+  const out = [];
+  for (const key of new Set([...Object.keys(a), ...Object.keys(b)])) {
+    if (JSON.stringify(a[key]) !== JSON.stringify(b[key])) out.push(key + ': ' + JSON.stringify(a[key]) + ' -> ' + JSON.stringify(b[key]));
+  }
+  return out;
+}
+
+// ---- Three's cache against the GL: set each piece of state three caches to what the GL holds,
+// through three's own WebGLState, and count the GL calls three makes. Three skips a call where its
+// cache already holds the value, so 0 calls means its cache agrees with the GL on all of them. A
+// value three has not cached yet (a capability it never touched, the read framebuffer) costs a
+// call the first time: a probe first brings the cache up to the GL, a second one then measures.
+const COUNTED = ['enable', 'disable', 'useProgram', 'bindFramebuffer', 'activeTexture', 'bindTexture', 'viewport',
+  'scissor', 'colorMask', 'depthMask', 'depthFunc', 'stencilMask', 'stencilFunc', 'stencilOp', 'cullFace',
+  'frontFace', 'blendEquationSeparate', 'blendFuncSeparate', 'blendEquation', 'blendFunc', 'lineWidth',
+  'polygonOffset', 'clearColor', 'clearDepth', 'clearStencil', 'bindBufferBase', 'bindSampler'];
+export function cacheProbe() {
+  const state = ex.renderer.state, calls = [];
+  const saved = {};
+  for (const name of COUNTED) {
+    saved[name] = Object.prototype.hasOwnProperty.call(gl, name) ? gl[name] : undefined;
+    const original = gl[name];
+    gl[name] = function (...args) { calls.push(name); return original.apply(gl, args); };
+  }
+  try {
+    for (const cap of ['BLEND', 'CULL_FACE', 'DEPTH_TEST', 'POLYGON_OFFSET_FILL', 'SAMPLE_ALPHA_TO_COVERAGE',
+      'SCISSOR_TEST', 'STENCIL_TEST']) {
+      if (gl.isEnabled(gl[cap])) state.enable(gl[cap]); else state.disable(gl[cap]);
+    }
+    state.useProgram(gl.getParameter(gl.CURRENT_PROGRAM));
+    state.bindFramebuffer(gl.DRAW_FRAMEBUFFER, gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING));
+    state.bindFramebuffer(gl.READ_FRAMEBUFFER, gl.getParameter(gl.READ_FRAMEBUFFER_BINDING));
+    const active = gl.getParameter(gl.ACTIVE_TEXTURE);
+    state.activeTexture(active);
+    state.bindTexture(gl.TEXTURE_2D, gl.getParameter(gl.TEXTURE_BINDING_2D));
+    const v = gl.getParameter(gl.VIEWPORT), sc = gl.getParameter(gl.SCISSOR_BOX);
+    state.viewport(new THREE.Vector4(v[0], v[1], v[2], v[3]));
+    state.scissor(new THREE.Vector4(sc[0], sc[1], sc[2], sc[3]));
+    const b = state.buffers;
+    b.color.setMask(gl.getParameter(gl.COLOR_WRITEMASK)[0]);
+    b.depth.setMask(gl.getParameter(gl.DEPTH_WRITEMASK));
+    const depthFuncs = { [gl.NEVER]: THREE.NeverDepth, [gl.ALWAYS]: THREE.AlwaysDepth, [gl.LESS]: THREE.LessDepth,
+      [gl.LEQUAL]: THREE.LessEqualDepth, [gl.EQUAL]: THREE.EqualDepth, [gl.GEQUAL]: THREE.GreaterEqualDepth,
+      [gl.GREATER]: THREE.GreaterDepth, [gl.NOTEQUAL]: THREE.NotEqualDepth };
+    b.depth.setFunc(depthFuncs[gl.getParameter(gl.DEPTH_FUNC)]);
+    b.stencil.setMask(gl.getParameter(gl.STENCIL_WRITEMASK));
+    b.stencil.setFunc(gl.getParameter(gl.STENCIL_FUNC), gl.getParameter(gl.STENCIL_REF), gl.getParameter(gl.STENCIL_VALUE_MASK));
+    b.stencil.setOp(gl.getParameter(gl.STENCIL_FAIL), gl.getParameter(gl.STENCIL_PASS_DEPTH_FAIL), gl.getParameter(gl.STENCIL_PASS_DEPTH_PASS));
+    state.setFlipSided(gl.getParameter(gl.FRONT_FACE) === gl.CW);
+    state.setLineWidth(gl.getParameter(gl.LINE_WIDTH));
+  } finally {
+    for (const name of COUNTED) {
+      if (saved[name] === undefined) delete gl[name]; else gl[name] = saved[name];
+    }
+  }
+  return calls;
+}
+
+// ---- Frames.
+function frame() {
+  ex.frame();
+  return ex.pixels();
+}
+
+function glErrors() {
+  const errors = [];
+  for (let e = gl.getError(); e !== gl.NO_ERROR && errors.length < 16; e = gl.getError()) errors.push(e);
+  return errors;
+}
+
+function standardFrame() {
+  ex.renderer.setRenderTarget(null);
+  ex.renderer.render(standard.scene, standard.camera);
+  return ex.pixels();
+}
+
+// Before the library exists (?hold): three's own frames of both scenes.
+export function before() {
+  return { composer: frame(), standard: standardFrame(), errors: glErrors() };
+}
+
+// Screen positions (pixels, top-left origin) of the head's centre and the two spheres.
+export function positions() {
+  const out = {};
+  const at = (name, v) => {
+    const p = v.clone().project(ex.camera);
+    out[name] = [Math.round((p.x + 1) / 2 * gl.drawingBufferWidth), Math.round((1 - p.y) / 2 * gl.drawingBufferHeight)];
+  };
+  at('head', new THREE.Vector3(0, 0.03, 0.08));
+  at('marble', ex.marble.position);
+  at('milk', ex.milk.position);
+  return out;
+}
+
+// Frames with the library: on, off (the pass disabled), the standard scene after it; the state
+// and three's cache around every library call of one frame, and with three's standard frame.
+export function withLibrary() {
+  const out = {};
+  ex.pass.enabled = true;
+  ex.pass.split = 0;
+  out.on = frame();
+  out.onResult = ex.sss.lastResult;
+  out.onError = ex.sss.lastError;
+  out.errorsOn = glErrors();
+  // Around the library's own call (the wasm export that runs sss_apply_frame): the GL state and three's
+  // cache, with names lent as the package lends them.
+  const m = ex.sss.module, apply = m._sss3_apply, around = [];
+  m._sss3_apply = function (...args) {
+    // The first probe fills what three's cache does not know yet (it issues those calls) so that
+    // the cache then holds the GL's every value; after the library's call it must issue none.
+    const syncCalls = cacheProbe();
+    const s0 = snapshot();
+    const r = apply.apply(this, args);
+    const s1 = snapshot();
+    around.push({ result: r, differences: differences(s0, s1), syncCalls, cacheCalls: cacheProbe(), errors: glErrors() });
+    return r;
+  };
+  try {
+    frame();
+  } finally {
+    m._sss3_apply = apply;
+  }
+  out.around = around;
+  // The probe can see a stale cache: the GL changed behind three's back must cost three calls.
+  cacheProbe();
+  const depthTest = gl.isEnabled(gl.DEPTH_TEST);
+  if (depthTest) gl.disable(gl.DEPTH_TEST); else gl.enable(gl.DEPTH_TEST);
+  out.staleProbeCalls = cacheProbe();
+  out.afterStaleState = snapshot();
+  if (depthTest) gl.enable(gl.DEPTH_TEST); else gl.disable(gl.DEPTH_TEST);
+  ex.renderer.state.reset();  // three forgets what it thought; the next frame sets everything again
+  frame();
+  out.stats = ex.sss.stats();
+  ex.pass.enabled = false;
+  out.off = frame();
+  out.standard = standardFrame();
+  out.errorsAfter = glErrors();
+  ex.pass.enabled = true;
+  return out;
+}
+
+// What the library restores wrongly where three's bound objects have no names in Emscripten's tables
+// (the package's lending turned off for the bindings): the state differences around its call.
+export function withoutLending() {
+  const sss = ex.sss, lendBindings = sss._lendBindings, m = sss.module, apply = m._sss3_apply;
+  let diffs = null;
+  sss._lendBindings = () => {};
+  m._sss3_apply = function (...args) {
+    const s0 = snapshot();
+    const r = apply.apply(this, args);
+    diffs = differences(s0, snapshot());
+    return r;
+  };
+  try {
+    frame();
+  } finally {
+    sss._lendBindings = lendBindings;
+    m._sss3_apply = apply;
+  }
+  ex.renderer.resetState();  // three rebinds everything: the next frames are as before
+  glErrors();
+  return diffs;
+}
+
+// A setting the library refuses: its message, the frame (three's, untouched), then valid again.
+export function badSetting(name, value) {
+  const pass = ex.pass, valid = pass[name];
+  pass[name] = value;
+  const image = frame();
+  const out = { result: ex.sss.lastResult, message: ex.sss.lastError, shown: document.getElementById('error').textContent,
+    image, errors: glErrors() };
+  pass[name] = valid;
+  out.validAgain = frame();
+  out.validResult = ex.sss.lastResult;
+  out.validMessage = ex.sss.lastError;
+  return out;
+}
+
+// A new canvas size: the composer's and the pass's setSize (the library prepares there), then the
+// first frame at that size with gl.compileShader counted; then back.
+export function resize(width, height) {
+  const r = ex.renderer, w0 = gl.drawingBufferWidth, h0 = gl.drawingBufferHeight;
+  const compile = gl.compileShader;
+  let compiles = 0;
+  const setSize = (w, h) => {
+    r.setSize(w, h);
+    ex.composer.setSize(w, h);
+    ex.camera.aspect = w / h;
+    ex.camera.updateProjectionMatrix();
+  };
+  setSize(width, height);
+  const framesBefore = ex.sss.stats().frames;
+  gl.compileShader = function (...args) { ++compiles; return compile.apply(gl, args); };
+  try {
+    ex.frame();
+  } finally {
+    delete gl.compileShader;
+  }
+  const out = { compiles, result: ex.sss.lastResult, message: ex.sss.lastError,
+    frames: ex.sss.stats().frames - framesBefore, size: [gl.drawingBufferWidth, gl.drawingBufferHeight], errors: glErrors() };
+  setSize(w0, h0);
+  ex.frame();
+  out.backResult = ex.sss.lastResult;
+  return out;
+}
+
+// Split view for the screenshot: the left half unfiltered.
+export function split(value) {
+  ex.scene.background = exampleBackground;
+  ex.pass.split = value;
+  ex.gui.controllersRecursive().forEach((c) => c.updateDisplay());  // the panel shows the split too
+  return frame();
+}
+
+// What the library's calls that draw nothing leave changed (sss_create, sss_prepare, sss_destroy on
+// a second context of the library on three's context): the state differences around each, before
+// the package tells three to forget its cache (docs/three.md).
+export function setupCalls() {
+  const m = ex.sss.module, out = {};
+  const wrap = (name) => {
+    const original = m[name];
+    m[name] = function (...args) {
+      const s0 = snapshot();
+      const r = original.apply(this, args);
+      out[name.replace('_sss3_', 'sss_')] = differences(s0, snapshot());
+      return r;
+    };
+    return () => { m[name] = original; };
+  };
+  const undo = ['_sss3_create', '_sss3_prepare', '_sss3_destroy'].map(wrap);
+  try {
+    const second = new ex.sss.constructor(m, ex.renderer);
+    second._profileKey = 'defaults';  // sss_prepare with the library's default settings
+    second.prepare(320, 180, 0x881A, 0x81A6);
+    second.dispose();
+  } finally {
+    undo.forEach((u) => u());
+  }
+  out.errors = glErrors();
+  return out;
+}

@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""The three.js package in a real browser (docs/three.md): serves a folder the packed package was
+installed into (with three, lil-gui, the head scan at /head.glb and test/checks.js), opens the
+package's example page in headless Chromium (SwiftShader's WebGL2) and checks
+
+  1. the pass changes skin pixels, both spheres (marble; Burley's whole milk) and no background pixel;
+  2. with the pass disabled the frame is bit-identical to three's own, rendered before the library
+     existed; so is a frame of three's standard materials rendered after the pass;
+  3. around each of the library's calls: no GL error, no difference in a snapshot of the GL state
+     (bindings of every texture unit, buffers, framebuffers, program, vertex array, enables, blend,
+     depth, stencil, masks, viewport, scissor, pixel store, the pass's textures' parameters), and
+     three's state cache agrees with the GL (setting each cached value to what the GL holds makes
+     three issue no GL call; a state changed behind three's back does);
+  4. a setting the library refuses (1001 taps, a scale of NaN) puts its message on the page and leaves
+     three's frame bit for bit; valid settings again give the filtered frame again;
+  5. a new canvas size: the first frame after it compiles no shader and filters.
+
+  three_test.py --site DIR [--chromium PATH] [--out DIR] [--screenshot PNG] [--frames N]
+
+Writes results.json (with the frame times, which no check reads) and the images into --out. Exit 0 on
+success, 1 on a failed check, 77 when Chromium or the installed site is missing (ctest: a skip).
+"""
+
+import argparse
+import base64
+import json
+import os
+import shutil
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "test"))
+import cdp  # noqa: E402
+import images  # noqa: E402
+
+WIDTH, HEIGHT = 640, 360
+EXAMPLE = "node_modules/sss-three/example/index.html"
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        raise Failure(what)
+
+
+def rgb(b64):
+    return images.rgba_to_rgb(base64.b64decode(b64))
+
+
+def changed(a, b, pixels):
+    return sum(1 for i in pixels if a[i * 3:i * 3 + 3] != b[i * 3:i * 3 + 3])
+
+
+def disk(centre, radius):
+    cx, cy = centre
+    return [y * WIDTH + x for y in range(max(0, cy - radius), min(HEIGHT, cy + radius + 1))
+            for x in range(max(0, cx - radius), min(WIDTH, cx + radius + 1)) if (x - cx) ** 2 + (y - cy) ** 2 <= radius ** 2]
+
+
+def run(browser, args, out_dir, results):
+    js = browser.evaluate
+    before = js("checks.before()")
+    check(before["errors"] == [], "three alone: no GL error (%s)" % before["errors"])
+    js("sssExample.proceed(); true")
+    browser.wait_for("sssExample.ready || sssExample.failed", timeout=args.timeout)
+    failed = js("sssExample.failed")
+    check(failed is None, "the library runs on three's context (%s)" % failed)
+    results["renderer"] = js("document.getElementById('renderer').textContent")
+    print("     " + results["renderer"])
+
+    three_only = rgb(before["composer"])
+    lib = js("checks.withLibrary()")
+    on, off = rgb(lib["on"]), rgb(lib["off"])
+    check(lib["onResult"] == 0, "the pass filtered the frame (%s %s)" % (lib["onResult"], lib["onError"]))
+    check(lib["errorsOn"] == [] and lib["errorsAfter"] == [], "no GL error after the frames (%s %s)" % (lib["errorsOn"], lib["errorsAfter"]))
+
+    images.write_png(os.path.join(out_dir, "three-on.png"), WIDTH, HEIGHT, on)
+    images.write_png(os.path.join(out_dir, "three-off.png"), WIDTH, HEIGHT, three_only)
+    images.write_png(os.path.join(out_dir, "three-diff-x8.png"), WIDTH, HEIGHT,
+                     images.difference_image(images.pixel_differences(on, three_only), 8))
+
+    # 1. What the pass changes.
+    n = WIDTH * HEIGHT
+    background = three_only[0:3]
+    scene_pixels = [i for i in range(n) if three_only[i * 3:i * 3 + 3] != background]
+    background_pixels = [i for i in range(n) if three_only[i * 3:i * 3 + 3] == background]
+    positions = js("checks.positions()")
+    head = [i for i in disk(positions["head"], 60) if three_only[i * 3:i * 3 + 3] != background]
+    results["changed"] = {"scene": changed(on, three_only, scene_pixels) / max(1, len(scene_pixels)),
+                          "head_centre": changed(on, three_only, head) / max(1, len(head)),
+                          "background": changed(on, three_only, background_pixels)}
+    check(len(scene_pixels) > 0.2 * n, "the scene covers %.2f of the frame (> 0.2)" % (len(scene_pixels) / n))
+    check(results["changed"]["head_centre"] > 0.3,
+          "the pass changed %.2f of the face's pixels (> 0.3)" % results["changed"]["head_centre"])
+    check(results["changed"]["background"] == 0, "the pass changed %d background pixels (0)" % results["changed"]["background"])
+    for name in ("marble", "milk"):
+        sphere = disk(positions[name], 12)
+        share = changed(on, three_only, sphere) / len(sphere)
+        results["changed"][name] = share
+        check(share > 0.1, "the pass changed %.2f of the %s sphere's centre (> 0.1)" % (share, name))
+
+    # 2. No leak into three's frames.
+    check(off == three_only, "the pass disabled: the frame is three's own, bit for bit")
+    check(rgb(lib["standard"]) == rgb(before["standard"]),
+          "three's standard materials after the pass: the frame as without the library, bit for bit")
+
+    # 3. Around each of the library's calls.
+    results["cache_calls_before_the_library"] = lib["around"][0]["syncCalls"] if lib["around"] else None
+    check(len(lib["around"]) == 1, "one library call per frame (%d)" % len(lib["around"]))
+    for call in lib["around"]:
+        check(call["result"] == 0, "the library's call succeeded (%s)" % call["result"])
+        check(call["errors"] == [], "no GL error after the library's call (%s)" % call["errors"])
+        check(call["differences"] == [], "no GL state difference around the library's call (%s)" % call["differences"][:8])
+        check(call["cacheCalls"] == [], "three's state cache agrees with the GL after the call (calls: %s)" % call["cacheCalls"])
+    check(len(lib["staleProbeCalls"]) > 0, "the probe sees a stale cache: DEPTH_TEST flipped behind three's back cost %s"
+          % lib["staleProbeCalls"])
+    results["stats"] = lib["stats"]
+
+    # 4. Settings the library refuses.
+    for name, value, words in (("taps", 1001, ["taps", "1001"]), ("scale", float("nan"), ["scale", "nan"])):
+        bad = js("checks.badSetting(%s, %s)" % (json.dumps(name), "NaN" if value != value else json.dumps(value)))
+        results["refused_" + name] = bad["message"]
+        check(bad["result"] != 0 and bad["message"].startswith("SSS_ERROR_INVALID_ARGUMENT")
+              and all(w in bad["message"].lower() for w in words), "%s %s: the library's message: %r" % (name, value, bad["message"]))
+        check(bad["shown"] == bad["message"], "%s %s: the page shows it" % (name, value))
+        check(rgb(bad["image"]) == three_only, "%s %s: three's frame, bit for bit" % (name, value))
+        check(bad["errors"] == [], "%s %s: no GL error" % (name, value))
+        check(bad["validResult"] == 0 and bad["validMessage"] == "" and rgb(bad["validAgain"]) == on,
+              "%s valid again: filtered as before, the message cleared" % name)
+
+    # 5. A new size.
+    resized = js("checks.resize(800, 450)")
+    results["resize"] = resized
+    check(resized["result"] == 0 and resized["frames"] == 1 and resized["size"] == [800, 450],
+          "800x450: the first frame filtered (%s)" % resized["message"])
+    check(resized["compiles"] == 0, "800x450: no shader compiled in the frame after setSize (%d)" % resized["compiles"])
+    check(resized["errors"] == [] and resized["backResult"] == 0, "800x450 and back: no GL error, filtered")
+
+    # Pictures and times (read by people, never judged).
+    times = js("sssExample.time(%d)" % args.frames)
+    results["frame_ms"] = {"with_pass": round(times["on"], 1), "without_pass": round(times["off"], 1),
+                           "frames": args.frames}
+    print("     frame %.1f ms with the pass, %.1f ms without (median of %d)" % (times["on"], times["off"], args.frames))
+    js("sssExample.pass.enabled = false; true")
+    unsplit = rgb(js("checks.split(0.5)"))  # the example's own background from here on
+    unsplit_full = rgb(js("checks.split(0)"))
+    js("sssExample.pass.enabled = true; true")
+    split = rgb(js("checks.split(0.5)"))
+    images.write_png(os.path.join(out_dir, "three-split.png"), WIDTH, HEIGHT, split)
+    left = [y * WIDTH + x for y in range(HEIGHT) for x in range(WIDTH // 2 - 1)]
+    right = [y * WIDTH + x for y in range(HEIGHT) for x in range(WIDTH // 2 + 1, WIDTH)]
+    check(changed(split, unsplit, left) == 0 and changed(split, unsplit, right) > 0,
+          "split view: the left half is three's own frame, the right half filtered")
+    if args.screenshot:
+        with open(args.screenshot, "wb") as f:
+            f.write(browser.screenshot_png(1000, 720))
+    js("checks.split(0)")
+
+    # What the calls that draw nothing leave bound (after sss_create the package resets three's state).
+    setup = js("checks.setupCalls()")
+    results["state_after_setup_calls"] = setup
+    for name in ("sss_create", "sss_prepare", "sss_destroy"):
+        print("     %s leaves %d differences: %s" % (name, len(setup[name]), setup[name][:6]))
+    check(setup["errors"] == [], "create, prepare, destroy of a second context: no GL error")
+    check(setup["sss_prepare"] == [] and setup["sss_destroy"] == [],
+          "sss_prepare and sss_destroy leave the GL state as they found it (the package resets three only after sss_create)")
+    js("sssExample.pass.enabled = false; true")
+    check(rgb(js("checks.split(0)")) == unsplit_full, "after them: three's frame as before, bit for bit")
+    js("sssExample.pass.enabled = true; true")
+
+    # Why the package lends names: without them the library restores three's bindings to nothing.
+    unlent = js("checks.withoutLending()")
+    results["state_without_lending"] = unlent
+    check(len(unlent) > 0, "without lent names the library's restore differs in %d places (%s)" % (len(unlent), unlent[:6]))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--site", required=True, help="the folder the package was installed into")
+    parser.add_argument("--chromium", default=shutil.which("chromium") or "chromium")
+    parser.add_argument("--out", help="where the images and results.json go (default: a temporary folder)")
+    parser.add_argument("--screenshot", help="also save the example page's screenshot (split view) here")
+    parser.add_argument("--frames", type=int, default=5, help="frames timed with and without the pass (median)")
+    parser.add_argument("--timeout", type=float, default=300)
+    args = parser.parse_args()
+    if shutil.which(args.chromium) is None:
+        print("SKIP: no Chromium (Debian: chromium; scripts/install-deps.sh test)")
+        return 77
+    if not os.path.isfile(os.path.join(args.site, EXAMPLE)):
+        print("SKIP: the package is not installed in %s (web/three/test/run_three_test.sh installs it)" % args.site)
+        return 77
+    out_dir = args.out or tempfile.mkdtemp(prefix="sss-three-test-")
+    os.makedirs(out_dir, exist_ok=True)
+    results = {"width": WIDTH, "height": HEIGHT}
+    start = time.monotonic()
+    status = 0
+    server = cdp.StaticServer(args.site)
+    browser = cdp.Chromium(args.chromium)
+    try:
+        browser.open(server.url + EXAMPLE + "?hold")
+        browser.wait_for("window.sssExample && (sssExample.holding || sssExample.failed)", timeout=args.timeout)
+        browser.evaluate("import('/test/checks.js').then((m) => { window.checks = m; return true; })")
+        run(browser, args, out_dir, results)
+    except Failure:
+        status = 1
+    finally:
+        browser.close()
+        server.close()
+    results["seconds"] = round(time.monotonic() - start, 1)
+    with open(os.path.join(out_dir, "results.json"), "w") as f:
+        json.dump(results, f, indent=2)
+    print("results and images: " + out_dir)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
