@@ -65,8 +65,8 @@
  * an earlier release's struct (its fields are read as that release defined them and the newer ones
  * take their defaults); any other size fails, naming the struct and the sizes it accepts.
  *
- * GL state: a call that draws leaves no GL error and restores everything it changed (unless the
- * context was created with SSS_CREATE_NO_STATE_RESTORE):
+ * GL state: a call that draws, and sss_create and sss_prepare, which build, leave no GL error and
+ * restore everything they changed (unless the context was created with SSS_CREATE_NO_STATE_RESTORE):
  *   - bindings: program, vertex array, draw and read framebuffers, renderbuffer, active texture,
  *     the 2D and 2D-multisample texture and the sampler of texture units 0-5, uniform buffer
  *     binding 0 and the generic uniform buffer, the pixel unpack buffer, image units 0 and 1;
@@ -476,7 +476,8 @@ SSS_API const char *sss_last_error(const sss_context *ctx);
  *  On failure nothing is left in the GL. */
 SSS_API sss_result sss_create(const sss_create_desc *desc, sss_context **out);
 
-/** Deletes the context and its GL objects; its GL context must be current. NULL: nothing. */
+/** Deletes the context and its GL objects (no binding of yours changes); its GL context must be
+ *  current. NULL: nothing. */
 SSS_API void sss_destroy(sss_context *ctx);
 
 /** Fills *s with the defaults (struct_size = sizeof(sss_settings)). NULL: nothing. */
