@@ -27,6 +27,8 @@ def native_block(three):
              % (f["width"], f["height"], a["settings"]["taps"], a["skin_pixels"]),
              "| miss, overall | %.5f | %.2f |" % (a["miss"], a["miss_bound"]),
              "| miss, red / green / blue | %.5f / %.5f / %.5f | |" % tuple(a["miss_per_channel"]),
+             "| miss with the native scattering distance 5 %% off (the check's own test: must fail) | %.3f | > %.2f |"
+             % (a["miss_scale_1_05"], a["miss_bound"]),
              "| what half a half-float step on every filtered value would leave undone | %.3f | |" % a["fp16_explained"],
              "| skin pixels beyond %d levels (sRGB, 8 bits) | %.3f %% | %.2f %% |"
              % (a["small_levels"], 100 * a["share_beyond_small"], 100 * a["small_share_limit"]),

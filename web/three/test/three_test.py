@@ -215,6 +215,41 @@ def srgb8(x):
     return int(round(x * 255))
 
 
+def write_params(directory, params):
+    with open(os.path.join(directory, "params.txt"), "w") as f:
+        for name, values in params.items():
+            f.write(name + " " + " ".join(repr(float(v)) for v in values) + "\n")
+
+
+def native_run(native_apply, directory, params):
+    """sss_three_native_apply on DIRECTORY's inputs with PARAMS: its JSON line, or None when it failed."""
+    write_params(directory, params)
+    run = subprocess.run([native_apply, directory], capture_output=True, text=True, timeout=300)
+    print("     native: " + run.stdout.strip() + (" " + run.stderr.strip() if run.stderr.strip() else ""))
+    return json.loads(run.stdout.strip().splitlines()[-1]) if run.returncode == 0 else None
+
+
+def floats(directory, name):
+    a = array.array("f")
+    with open(os.path.join(directory, name), "rb") as f:
+        a.frombytes(f.read())
+    return a
+
+
+def miss_of(web, native, colour, pixels):
+    """The share of the native change (native - colour) that web leaves undone: sums over PIXELS of
+    |web - native| and |native - colour| (RGB; alpha is never filtered), per channel, and of |native|."""
+    off, change, scale = [0.0] * 3, [0.0] * 3, [0.0] * 3
+    for i in pixels:
+        for c in range(3):
+            k = i * 4 + c
+            off[c] += abs(web[k] - native[k])
+            change[c] += abs(native[k] - colour[k])
+            scale[c] += abs(native[k])
+    return (sum(off) / max(1e-30, sum(change)), [off[c] / max(1e-30, change[c]) for c in range(3)],
+            FP16_HALF_STEP * sum(scale) / max(1e-30, sum(change)))
+
+
 def against_native(js, native_apply, out_dir, results):
     got = js("checks.nativeInputs()")
     check(got["result"] == 0 and got.get("frame") is not None, "one profile: the pass filtered (%s %s)"
@@ -236,20 +271,9 @@ def against_native(js, native_apply, out_dir, results):
               "world_units_per_mm": [fields[2]], "scale": [fields[3]], "strength": fields[4:7], "falloff": fields[7:10],
               "taps": [profiles["taps"]], "follow_surface": [profiles["followSurface"]], "path": [profiles["path"]],
               "jitter": [profiles["jitter"]], "noise_index": [frame["noiseIndex"]], "flags": [frame["flags"]]}
-    with open(os.path.join(native_dir, "params.txt"), "w") as f:
-        for name, values in params.items():
-            f.write(name + " " + " ".join(repr(float(v)) for v in values) + "\n")
-    run = subprocess.run([native_apply, native_dir], capture_output=True, text=True, timeout=300)
-    print("     native: " + run.stdout.strip() + (" " + run.stderr.strip() if run.stderr.strip() else ""))
-    check(run.returncode == 0, "sss_three_native_apply filtered the same inputs on OpenGL ES 3.0 (exit %d)" % run.returncode)
-    native_info = json.loads(run.stdout.strip().splitlines()[-1])
-
-    def floats(name):
-        a = array.array("f")
-        with open(os.path.join(native_dir, name), "rb") as f:
-            a.frombytes(f.read())
-        return a
-    colour, web, native = floats("colour.f32"), floats("web.f32"), floats("native.f32")
+    native_info = native_run(native_apply, native_dir, params)
+    check(native_info is not None, "sss_three_native_apply filtered the same inputs on OpenGL ES 3.0")
+    colour, web, native = floats(native_dir, "colour.f32"), floats(native_dir, "web.f32"), floats(native_dir, "native.f32")
     profile = open(os.path.join(native_dir, "profile.u8"), "rb").read()
     n = width * height
     skin = [i for i in range(n) if profile[i] & 15 == 0]
@@ -260,17 +284,8 @@ def against_native(js, native_apply, out_dir, results):
     check(untouched, "pixels without a profile: three's colour in both, bit for bit")
 
     # (a) The miss with the native output as the reference: the share of the change it makes that
-    # the pass's output does not make the same, per channel and overall (RGB; alpha is never filtered).
-    off, change, scale = [0.0] * 3, [0.0] * 3, [0.0] * 3
-    for i in skin:
-        for c in range(3):
-            k = i * 4 + c
-            off[c] += abs(web[k] - native[k])
-            change[c] += abs(native[k] - colour[k])
-            scale[c] += abs(native[k])
-    miss = sum(off) / max(1e-30, sum(change))
-    per_channel = [off[c] / max(1e-30, change[c]) for c in range(3)]
-    fp16_explained = FP16_HALF_STEP * sum(scale) / max(1e-30, sum(change))
+    # the pass's output does not make the same, per channel and overall.
+    miss, per_channel, fp16_explained = miss_of(web, native, colour, skin)
 
     # (b) The tone-mapped frames (8 bits) within web.browser's limits, over the skin's pixels.
     beyond_small = beyond_outlier = 0
@@ -284,7 +299,7 @@ def against_native(js, native_apply, out_dir, results):
     results["against_native"] = {
         "native_renderer": native_info["renderer"], "skin_pixels": len(skin), "miss": miss,
         "miss_per_channel": per_channel, "miss_bound": MISS_BOUND, "fp16_explained": fp16_explained,
-        "change_mean": sum(change) / (3 * len(skin)), "share_beyond_small": small_share,
+        "share_beyond_small": small_share,
         "share_beyond_outlier": outlier_share, "largest_levels": largest,
         "small_levels": browser_test.SMALL_LEVELS, "small_share_limit": browser_test.SMALL_SHARE,
         "outlier_levels": browser_test.OUTLIER_LEVELS, "outlier_share_limit": browser_test.OUTLIER_SHARE,
@@ -292,6 +307,17 @@ def against_native(js, native_apply, out_dir, results):
     print("     miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; skin %d pixels"
           % (miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(skin)))
     check(miss <= MISS_BOUND, "the pass's output against the native output: miss %.5f (<= %.2f)" % (miss, MISS_BOUND))
+    # The check's own test: the native side with a scattering distance 5 % off must fail the bound.
+    wrong_dir = os.path.join(out_dir, "native-scale-1.05")
+    os.makedirs(wrong_dir, exist_ok=True)
+    for name in ("colour.f32", "depth.f32", "profile.u8"):
+        shutil.copyfile(os.path.join(native_dir, name), os.path.join(wrong_dir, name))
+    check(native_run(native_apply, wrong_dir, dict(params, scale=[fields[3] * 1.05])) is not None,
+          "the check's own test: sss_three_native_apply with the scale 5 % off ran")
+    wrong_miss = miss_of(web, floats(wrong_dir, "native.f32"), colour, skin)[0]
+    results["against_native"]["miss_scale_1_05"] = wrong_miss
+    check(wrong_miss > MISS_BOUND, "the check's own test: the scale 5 %% off natively: miss %.4f (> %.2f)"
+          % (wrong_miss, MISS_BOUND))
     check(small_share <= browser_test.SMALL_SHARE,
           "tone-mapped: %.4f%% of skin pixels beyond %d levels (<= %.2f%%)"
           % (100 * small_share, browser_test.SMALL_LEVELS, 100 * browser_test.SMALL_SHARE))
