@@ -367,3 +367,116 @@ export function setupCalls() {
   out.errors = glErrors();
   return out;
 }
+
+// ---- Against the native frame (docs/three.md): exactly what the pass gives the library in one frame
+// of a single profile (the head's skin; the spheres made not translucent for it) and what the library
+// made of it, for web/three/test/native_apply.cpp to filter again natively. Three's scene cannot be
+// rebuilt natively, so the same inputs stand in for the same scene.
+function base64(bytes) {
+  let text = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+  return btoa(text);
+}
+
+// A texture's level 0 through a framebuffer of our own on the read binding only, which is put back:
+// the draw state the library's call sees is not touched. Rows bottom first, as GL reads them.
+function readTexture(texture, width, height, integer) {
+  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+  const fbo = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fbo);
+  gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+  let data;
+  if (integer) {  // R8UI: RGBA_INTEGER/UNSIGNED_INT is the read every implementation has
+    const wide = new Uint32Array(width * height * 4);
+    gl.readPixels(0, 0, width, height, gl.RGBA_INTEGER, gl.UNSIGNED_INT, wide);
+    data = new Uint8Array(width * height).map((_, i) => wide[i * 4]);
+  } else {  // RGBA16F as FLOAT (EXT_color_buffer_float): every half float exactly
+    data = new Float32Array(width * height * 4);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, data);
+  }
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
+  gl.deleteFramebuffer(fbo);
+  return data;
+}
+
+// A DepthTexture cannot be read: drawn by three into an RGBA32F target (red: the window depth as a
+// shader samples it, which is what the library samples) and that read.
+function readDepth(depthTexture, width, height) {
+  const target = new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType, format: THREE.RGBAFormat,
+    minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, depthBuffer: false, generateMipmaps: false });
+  const material = new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3, depthTest: false, depthWrite: false, uniforms: { depthTexture: { value: depthTexture } },
+    vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    fragmentShader: 'uniform highp sampler2D depthTexture; layout(location = 0) out highp vec4 depthOut;\n' +
+      'void main() { depthOut = vec4(texelFetch(depthTexture, ivec2(gl_FragCoord.xy), 0).r, 0.0, 0.0, 1.0); }'
+  });
+  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
+  quad.frustumCulled = false;
+  const scene = new THREE.Scene(), camera = new THREE.OrthographicCamera();
+  scene.add(quad);
+  const previous = ex.renderer.getRenderTarget();
+  const rgba = new Float32Array(width * height * 4);
+  try {
+    ex.renderer.setRenderTarget(target);
+    ex.renderer.render(scene, camera);
+    ex.renderer.readRenderTargetPixels(target, 0, 0, width, height, rgba);
+  } finally {
+    ex.renderer.setRenderTarget(previous);
+    target.dispose();
+    material.dispose();
+    quad.geometry.dispose();
+  }
+  return new Float32Array(width * height).map((_, i) => rgba[i * 4]);
+}
+
+export function nativeInputs() {
+  const sss = ex.sss, m = sss.module, pass = ex.pass;
+  const spheres = [ex.marble.material, ex.milk.material].map((material) => [material, material.userData.sss]);
+  for (const [material] of spheres) delete material.userData.sss;
+  const setProfiles = m._sss3_set_profiles, apply = m._sss3_apply, render = sss.render;
+  const out = { settings: pass.settings() };
+  let target = null, colour = null, profile = null, web = null;
+  sss.render = function (t, ...rest) { target = t; return render.call(this, t, ...rest); };
+  m._sss3_set_profiles = function (context, fields, count, taps, followSurface, path, jitter) {
+    out.profiles = { fields: Array.from(new Float32Array(m.HEAPF32.buffer, fields, 16 * count)), count, taps,
+      followSurface, path, jitter };
+    return setProfiles.apply(this, arguments);
+  };
+  m._sss3_apply = function (context, color, colorFormat, depth, depthFormat, profileName, profileFormat, width, height,
+    projection, noiseIndex, flags) {
+    out.frame = { colorFormat, depthFormat, profileFormat, width, height, noiseIndex, flags,
+      projection: Array.from(new Float32Array(m.HEAPF32.buffer, projection, 16)) };
+    const textures = sss._GL.textures;  // the names the package lent for this call
+    colour = readTexture(textures[color], width, height, false);
+    profile = readTexture(textures[profileName], width, height, true);
+    const r = apply.apply(this, arguments);
+    web = readTexture(textures[color], width, height, false);
+    return r;
+  };
+  const enabled = pass.enabled, split = pass.split;
+  try {
+    pass.enabled = true;
+    pass.split = 0;
+    ex.frame();
+  } finally {
+    sss.render = render;
+    m._sss3_set_profiles = setProfiles;
+    m._sss3_apply = apply;
+    pass.enabled = enabled;
+    pass.split = split;
+  }
+  out.result = sss.lastResult;
+  out.message = sss.lastError;
+  if (out.frame) {
+    // Three's depth after the frame is the depth of the frame: the passes after SSSPass draw to the screen.
+    const depth = readDepth(target.depthTexture, out.frame.width, out.frame.height);
+    out.colour = base64(new Uint8Array(colour.buffer));
+    out.depth = base64(new Uint8Array(depth.buffer));
+    out.profile = base64(profile);
+    out.web = base64(new Uint8Array(web.buffer));
+  }
+  for (const [material, spec] of spheres) material.userData.sss = spec;
+  out.errors = glErrors();
+  ex.frame();  // the three profiles again
+  return out;
+}

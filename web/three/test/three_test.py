@@ -13,24 +13,31 @@ package's example page in headless Chromium (SwiftShader's WebGL2) and checks
      three issue no GL call; a state changed behind three's back does);
   4. a setting the library refuses (1001 taps, a scale of NaN) puts its message on the page and leaves
      three's frame bit for bit; valid settings again give the filtered frame again;
-  5. a new canvas size: the first frame after it compiles no shader and filters.
+  5. a new canvas size: the first frame after it compiles no shader and filters;
+  6. against the native frame (--native-apply): a frame of one profile (the head's skin), its inputs
+     as the pass gave them to the library (colour, depth, profile texture, projection, settings)
+     filtered again natively on OpenGL ES 3.0 by sss_three_native_apply; the pass's output against
+     that: the miss, and the tone-mapped frames within web.browser's limits.
 
-  three_test.py --site DIR [--chromium PATH] [--out DIR] [--screenshot PNG] [--frames N]
+  three_test.py --site DIR [--native-apply EXE] [--chromium PATH] [--out DIR] [--screenshot PNG] [--frames N]
 
 Writes results.json (with the frame times, which no check reads) and the images into --out. Exit 0 on
 success, 1 on a failed check, 77 when Chromium or the installed site is missing (ctest: a skip).
 """
 
 import argparse
+import array
 import base64
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "test"))
+import browser_test  # noqa: E402
 import cdp  # noqa: E402
 import images  # noqa: E402
 
@@ -178,10 +185,151 @@ def run(browser, args, out_dir, results):
     results["state_without_lending"] = unlent
     check(len(unlent) > 0, "without lent names the library's restore differs in %d places (%s)" % (len(unlent), unlent[:6]))
 
+    # 6. Against the native frame.
+    if args.native_apply:
+        against_native(js, args.native_apply, out_dir, results)
+    else:
+        print("skip against the native frame: no --native-apply (ctest passes sss_three_native_apply)")
+
+
+# The miss's bound. Both sides run the library's shaders on the same inputs; what may differ is the
+# rasteriser's float32 arithmetic (SwiftShader against llvmpipe: fused multiply-adds, exp2 and
+# division, the order of sums) and so where a value lands among the half floats the library's passes
+# write (the intermediate blurred target and the output): one half-float step, 2^-10 of the value.
+# The change the pass makes is small beside the skin's colour, so half a step on every filtered value
+# would already leave fp16_explained (results.json: FP16_HALF_STEP * sum |native| / sum of the change)
+# of the change undone: 0.08 measured. Measured miss: 0, the two outputs bit for bit equal (both
+# rasterisers round these shaders' float32 results into the same half floats). The bound lets one
+# filtered value in eight land one step away (1/8 * 2 * 0.08 = 0.02), what another SwiftShader or
+# Mesa with other rounding may do, and no more: a scattering distance 5 % off (scale 1.05 natively)
+# measured a miss of 0.061, the depth taken as [0, 1] clip depth (flags 1) 1.25.
+MISS_BOUND = 0.02
+FP16_HALF_STEP = 2.0 ** -11
+
+
+def srgb8(x):
+    # A plain sRGB encode of clamp(x) (exposure 1) to 8 bits: the frames compared the way
+    # web.browser compares the page's, without three's ACES curve (the same on both sides).
+    x = min(1.0, max(0.0, x))
+    x = 12.92 * x if x <= 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055
+    return int(round(x * 255))
+
+
+def write_params(directory, params):
+    with open(os.path.join(directory, "params.txt"), "w") as f:
+        for name, values in params.items():
+            f.write(name + " " + " ".join(repr(float(v)) for v in values) + "\n")
+
+
+def native_run(native_apply, directory, params):
+    """sss_three_native_apply on DIRECTORY's inputs with PARAMS: its JSON line, or None when it failed."""
+    write_params(directory, params)
+    run = subprocess.run([native_apply, directory], capture_output=True, text=True, timeout=300)
+    print("     native: " + run.stdout.strip() + (" " + run.stderr.strip() if run.stderr.strip() else ""))
+    return json.loads(run.stdout.strip().splitlines()[-1]) if run.returncode == 0 else None
+
+
+def floats(directory, name):
+    a = array.array("f")
+    with open(os.path.join(directory, name), "rb") as f:
+        a.frombytes(f.read())
+    return a
+
+
+def miss_of(web, native, colour, pixels):
+    """The share of the native change (native - colour) that web leaves undone: sums over PIXELS of
+    |web - native| and |native - colour| (RGB; alpha is never filtered), per channel, and of |native|."""
+    off, change, scale = [0.0] * 3, [0.0] * 3, [0.0] * 3
+    for i in pixels:
+        for c in range(3):
+            k = i * 4 + c
+            off[c] += abs(web[k] - native[k])
+            change[c] += abs(native[k] - colour[k])
+            scale[c] += abs(native[k])
+    return (sum(off) / max(1e-30, sum(change)), [off[c] / max(1e-30, change[c]) for c in range(3)],
+            FP16_HALF_STEP * sum(scale) / max(1e-30, sum(change)))
+
+
+def against_native(js, native_apply, out_dir, results):
+    got = js("checks.nativeInputs()")
+    check(got["result"] == 0 and got.get("frame") is not None, "one profile: the pass filtered (%s %s)"
+          % (got["result"], got["message"]))
+    check(got["errors"] == [], "one profile: no GL error, the inputs read back (%s)" % got["errors"])
+    profiles, frame, settings = got["profiles"], got["frame"], got["settings"]
+    fields = profiles["fields"]
+    defaults = {"metresPerUnit": 1, "scale": 1, "strength": 1, "falloff": 1, "taps": 17, "followSurface": True,
+                "path": "auto", "jitter": 0, "split": 0}
+    check(profiles["count"] == 1 and fields[0] == 0 and all(settings[k] == v for k, v in defaults.items() if k != "split"),
+          "one profile, the skin kernel, the default settings (%d profiles, kind %s, %s)" % (profiles["count"], fields[0], settings))
+    width, height = frame["width"], frame["height"]
+    native_dir = os.path.join(out_dir, "native")
+    os.makedirs(native_dir, exist_ok=True)
+    for name in ("colour", "depth", "profile", "web"):
+        with open(os.path.join(native_dir, name + {"profile": ".u8"}.get(name, ".f32")), "wb") as f:
+            f.write(base64.b64decode(got[name]))
+    params = {"width": [width], "height": [height], "projection": frame["projection"],
+              "world_units_per_mm": [fields[2]], "scale": [fields[3]], "strength": fields[4:7], "falloff": fields[7:10],
+              "taps": [profiles["taps"]], "follow_surface": [profiles["followSurface"]], "path": [profiles["path"]],
+              "jitter": [profiles["jitter"]], "noise_index": [frame["noiseIndex"]], "flags": [frame["flags"]]}
+    native_info = native_run(native_apply, native_dir, params)
+    check(native_info is not None, "sss_three_native_apply filtered the same inputs on OpenGL ES 3.0")
+    colour, web, native = floats(native_dir, "colour.f32"), floats(native_dir, "web.f32"), floats(native_dir, "native.f32")
+    profile = open(os.path.join(native_dir, "profile.u8"), "rb").read()
+    n = width * height
+    skin = [i for i in range(n) if profile[i] & 15 == 0]
+    others = [i for i in range(n) if profile[i] & 15 != 0]
+    check(len(skin) > 0.05 * n, "the skin covers %.3f of the frame (> 0.05)" % (len(skin) / n))
+    # Pixels without a profile: both sides leave them as three drew them.
+    untouched = all(web[i * 4 + c] == colour[i * 4 + c] == native[i * 4 + c] for i in others for c in range(4))
+    check(untouched, "pixels without a profile: three's colour in both, bit for bit")
+
+    # (a) The miss with the native output as the reference: the share of the change it makes that
+    # the pass's output does not make the same, per channel and overall.
+    miss, per_channel, fp16_explained = miss_of(web, native, colour, skin)
+
+    # (b) The tone-mapped frames (8 bits) within web.browser's limits, over the skin's pixels.
+    beyond_small = beyond_outlier = 0
+    largest = 0
+    for i in skin:
+        d = max(abs(srgb8(web[i * 4 + c]) - srgb8(native[i * 4 + c])) for c in range(3))
+        largest = max(largest, d)
+        beyond_small += d > browser_test.SMALL_LEVELS
+        beyond_outlier += d > browser_test.OUTLIER_LEVELS
+    small_share, outlier_share = beyond_small / len(skin), beyond_outlier / len(skin)
+    results["against_native"] = {
+        "native_renderer": native_info["renderer"], "skin_pixels": len(skin), "miss": miss,
+        "miss_per_channel": per_channel, "miss_bound": MISS_BOUND, "fp16_explained": fp16_explained,
+        "share_beyond_small": small_share,
+        "share_beyond_outlier": outlier_share, "largest_levels": largest,
+        "small_levels": browser_test.SMALL_LEVELS, "small_share_limit": browser_test.SMALL_SHARE,
+        "outlier_levels": browser_test.OUTLIER_LEVELS, "outlier_share_limit": browser_test.OUTLIER_SHARE,
+        "frame": frame, "settings": settings}
+    print("     miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; skin %d pixels"
+          % (miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(skin)))
+    check(miss <= MISS_BOUND, "the pass's output against the native output: miss %.5f (<= %.2f)" % (miss, MISS_BOUND))
+    # The check's own test: the native side with a scattering distance 5 % off must fail the bound.
+    wrong_dir = os.path.join(out_dir, "native-scale-1.05")
+    os.makedirs(wrong_dir, exist_ok=True)
+    for name in ("colour.f32", "depth.f32", "profile.u8"):
+        shutil.copyfile(os.path.join(native_dir, name), os.path.join(wrong_dir, name))
+    check(native_run(native_apply, wrong_dir, dict(params, scale=[fields[3] * 1.05])) is not None,
+          "the check's own test: sss_three_native_apply with the scale 5 % off ran")
+    wrong_miss = miss_of(web, floats(wrong_dir, "native.f32"), colour, skin)[0]
+    results["against_native"]["miss_scale_1_05"] = wrong_miss
+    check(wrong_miss > MISS_BOUND, "the check's own test: the scale 5 %% off natively: miss %.4f (> %.2f)"
+          % (wrong_miss, MISS_BOUND))
+    check(small_share <= browser_test.SMALL_SHARE,
+          "tone-mapped: %.4f%% of skin pixels beyond %d levels (<= %.2f%%)"
+          % (100 * small_share, browser_test.SMALL_LEVELS, 100 * browser_test.SMALL_SHARE))
+    check(outlier_share <= browser_test.OUTLIER_SHARE,
+          "tone-mapped: %.4f%% of skin pixels beyond %d levels (<= %.2f%%; largest %d)"
+          % (100 * outlier_share, browser_test.OUTLIER_LEVELS, 100 * browser_test.OUTLIER_SHARE, largest))
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--site", required=True, help="the folder the package was installed into")
+    parser.add_argument("--native-apply", help="sss_three_native_apply: the check against the native frame")
     parser.add_argument("--chromium", default=shutil.which("chromium") or "chromium")
     parser.add_argument("--out", help="where the images and results.json go (default: a temporary folder)")
     parser.add_argument("--screenshot", help="also save the example page's screenshot (split view) here")
