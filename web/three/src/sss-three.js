@@ -154,8 +154,12 @@ export class SSS {
     this._scratch = module._malloc(PROFILE_FLOATS * MAX_PROFILES * 4 + 16 * 4 + 8 * 8);
     this._projection = this._scratch + PROFILE_FLOATS * MAX_PROFILES * 4;
     this._stats = this._projection + 16 * 4;
-    this.context = this._call(() => module._sss3_create(options.flags || 0));
-    this._forgetState();
+    // sss_create restores what it binds (sss.h), by the names it reads back: three's objects need
+    // theirs lent as for every other call, or the restore would unbind them.
+    this.context = this._call(() => {
+      this._lendBindings();
+      return module._sss3_create(options.flags || 0);
+    });
     if (!this.context) {
       const message = this._message();
       this._free();
@@ -179,18 +183,6 @@ export class SSS {
   }
 
   _message() { return this.module.UTF8ToString(this.module._sss3_last_error()); }
-
-  // sss_create draws nothing, and the library restores GL state only around what draws (sss.h):
-  // it leaves the program, the vertex array and texture unit 0 unbound (measured by the web.three
-  // test, docs/three.md; sss_prepare and sss_destroy leave nothing). Three would keep drawing with
-  // what it believes is bound (the head's albedo on unit 0: a black head), so it is told to forget:
-  // resetState() sets the GL to its defaults and three's cache with it. Once, at setup;
-  // sss_apply_frame restores everything three can see.
-  _forgetState() {
-    const target = this.renderer.getRenderTarget();
-    this.renderer.resetState();
-    this.renderer.setRenderTarget(target);
-  }
 
   // Lends `object` (a WebGL object of three's) the integer name Emscripten's GL layer will look it
   // up by, for the length of one call: the library reads bindings through glGetIntegerv, which

@@ -67,7 +67,7 @@ def main():
                  native["frame_ms"] - native["frame_ms_without_sss"]),
               "", "The three.js scene is not the page's (three's lights and materials, two spheres beside the head, three"
               " profiles), so its row compares the pass with three's own frame, not with the other rows' frames.", "",
-              "What the library's calls leave in the GL (measured by the test; the package resets three after `sss_create`):", ""]
+              "What the library's calls leave in the GL (measured by the test, three's objects lent their names):", ""]
     for name, diffs in sorted(three["state_after_setup_calls"].items()):
         if name == "errors":
             continue

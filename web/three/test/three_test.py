@@ -168,14 +168,14 @@ def run(browser, args, out_dir, results):
             f.write(browser.screenshot_png(1000, 720))
     js("checks.split(0)")
 
-    # What the calls that draw nothing leave bound (after sss_create the package resets three's state).
+    # What the calls that draw nothing leave bound: nothing, with three's objects lent their names.
     setup = js("checks.setupCalls()")
     results["state_after_setup_calls"] = setup
     for name in ("sss_create", "sss_prepare", "sss_destroy"):
         print("     %s leaves %d differences: %s" % (name, len(setup[name]), setup[name][:6]))
     check(setup["errors"] == [], "create, prepare, destroy of a second context: no GL error")
-    check(setup["sss_prepare"] == [] and setup["sss_destroy"] == [],
-          "sss_prepare and sss_destroy leave the GL state as they found it (the package resets three only after sss_create)")
+    check(setup["sss_create"] == [] and setup["sss_prepare"] == [] and setup["sss_destroy"] == [],
+          "sss_create, sss_prepare and sss_destroy leave the GL state as they found it")
     js("sssExample.pass.enabled = false; true")
     check(rgb(js("checks.split(0)")) == unsplit_full, "after them: three's frame as before, bit for bit")
     js("sssExample.pass.enabled = true; true")
