@@ -26,7 +26,7 @@ export const MEASURED_PROFILES = Object.freeze({
 /** sss_settings.path by name. */
 export const PATHS = Object.freeze({ fragment: 0, compute: 1, auto: 2, masked: 3, half: 4 });
 
-// wasm/sss_three.cpp's ProfileKind and the floats of one profile (kProfileFloats).
+// wasm/profile_fields.hpp's ProfileKind and the floats of one profile (kProfileFloats).
 const KIND_SEPARABLE = 0, KIND_MEASURED = 1, KIND_BURLEY_MEASURED = 2, KIND_BURLEY = 3;
 const PROFILE_FLOATS = 16;
 // The profile nibble of pixels the library must leave alone: the profiles use 0..14 (the library

@@ -429,10 +429,16 @@ function readDepth(depthTexture, width, height) {
   return new Float32Array(width * height).map((_, i) => rgba[i * 4]);
 }
 
-export function nativeInputs() {
+// One frame (split off) with what the pass gives sss3_set_profiles and sss3_apply and the textures
+// before and after: of the head's skin alone (single, the spheres made not translucent), or of the
+// example's own three profiles (three_test.py, "against the native frame").
+export function nativeInputs(single = true) {
   const sss = ex.sss, m = sss.module, pass = ex.pass;
-  const spheres = [ex.marble.material, ex.milk.material].map((material) => [material, material.userData.sss]);
+  const spheres = single ? [ex.marble.material, ex.milk.material].map((material) => [material, material.userData.sss]) : [];
   for (const [material] of spheres) delete material.userData.sss;
+  // The example's own three profiles: the pass calls sss_set_profiles only when they changed, so
+  // forget the last ones (the same key again: the same call as the example's first frame).
+  if (!single) sss._profileKey = null;
   const setProfiles = m._sss3_set_profiles, apply = m._sss3_apply, render = sss.render;
   const out = { settings: pass.settings() };
   let target = null, colour = null, profile = null, web = null;
@@ -477,6 +483,6 @@ export function nativeInputs() {
   }
   for (const [material, spec] of spheres) material.userData.sss = spec;
   out.errors = glErrors();
-  ex.frame();  // the three profiles again
+  if (single) ex.frame();  // the three profiles again
   return out;
 }

@@ -8,9 +8,11 @@
 //
 // DIR holds (rows bottom first, as glReadPixels gives them): colour.f32 (W*H*4 floats), depth.f32
 // (W*H window depths in [0, 1]), profile.u8 (W*H bytes, profile | object << 4) and params.txt (one
-// "name value..." a line: width, height, projection (16, column-major), world_units_per_mm, scale,
-// strength (3), falloff (3), taps, follow_surface, path, jitter, noise_index, flags). Writes
-// DIR/native.f32 (the filtered colour, W*H*4 floats) and prints one JSON object.
+// "name value..." a line: width, height, projection (16, column-major); count and fields (count
+// profiles of 16 floats), taps, follow_surface, path, jitter: the arguments the pass gave
+// sss3_set_profiles; noise_index, flags). The profiles become settings and kernels by the
+// WebAssembly's own code (web/three/wasm/profile_fields.cpp). Writes DIR/native.f32 (the filtered
+// colour, W*H*4 floats) and prints one JSON object.
 #include <GLES3/gl3.h>
 
 #include <cstdint>
@@ -23,6 +25,7 @@
 
 #include <sss/sss.h>
 
+#include "profile_fields.hpp"
 #include "sss_headless.h"
 
 namespace {
@@ -76,8 +79,10 @@ int run(const std::string& dir, sss_headless* headless) {
   }
   const auto one = [&p](const char* name) { return p[name].empty() ? 0.0 : p[name][0]; };
   const int width = static_cast<int>(one("width")), height = static_cast<int>(one("height"));
-  if (width <= 0 || height <= 0 || p["projection"].size() != 16 || p["strength"].size() != 3 || p["falloff"].size() != 3) {
-    std::fprintf(stderr, "sss_three_native_apply: params.txt lacks a size, the projection, strength or falloff\n");
+  const int count = static_cast<int>(one("count"));
+  if (width <= 0 || height <= 0 || p["projection"].size() != 16 || count < 1 || count > SSS_MAX_PROFILES ||
+      p["fields"].size() != static_cast<size_t>(count) * sss_three::kProfileFloats) {
+    std::fprintf(stderr, "sss_three_native_apply: params.txt lacks a size, the projection, or count and its fields\n");
     return 1;
   }
   const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
@@ -99,21 +104,16 @@ int run(const std::string& dir, sss_headless* headless) {
     std::fprintf(stderr, "sss_three_native_apply: sss_create: %s\n", sss_last_error(nullptr));
     return 1;
   }
-  // One profile: the skin kernel (settings.kernel NULL) with the pass's fields, as sss3_set_profiles
-  // (web/three/wasm/sss_three.cpp) fills them for a 'skin' material.
-  sss_settings s;
-  sss_default_settings(&s);
-  s.world_units_per_mm = static_cast<float>(one("world_units_per_mm"));
-  s.scale = static_cast<float>(one("scale"));
-  for (int c = 0; c < 3; ++c) {
-    s.strength[c] = static_cast<float>(p["strength"][static_cast<size_t>(c)]);
-    s.falloff[c] = static_cast<float>(p["falloff"][static_cast<size_t>(c)]);
-  }
-  s.taps = static_cast<int32_t>(one("taps"));
-  s.flags = one("follow_surface") != 0.0 ? SSS_FOLLOW_SURFACE : 0u;
-  s.path = static_cast<uint32_t>(one("path"));
-  s.jitter = static_cast<float>(one("jitter"));
-  r = sss_set_profiles(sss, &s, 1);
+  // The profiles as sss3_set_profiles (web/three/wasm/sss_three.cpp) makes them from the same floats.
+  const std::vector<float> fields(p["fields"].begin(), p["fields"].end());
+  sss_settings profiles[SSS_MAX_PROFILES];
+  sss_kernel_desc kernels[SSS_MAX_PROFILES];
+  r = sss_three::profiles_from_fields(fields.data(), count, static_cast<int>(one("taps")),
+                                      static_cast<int>(one("follow_surface")), static_cast<int>(one("path")),
+                                      static_cast<float>(one("jitter")), profiles, kernels);
+  std::string message;
+  if (r != SSS_OK) message = sss_last_error(nullptr);
+  if (r == SSS_OK) r = sss_set_profiles(sss, profiles, static_cast<uint32_t>(count));
 
   // The same values in the same formats, but the depth: three's DEPTH_COMPONENT24 as the float it
   // sampled to, in DEPTH_COMPONENT32F (the library reads both as the same window depth).
@@ -147,7 +147,7 @@ int run(const std::string& dir, sss_headless* headless) {
     frame.flags = static_cast<uint32_t>(one("flags"));
     r = sss_apply_frame(sss, &frame);  // in place, as the pass filters three's target
   }
-  const std::string message = r == SSS_OK ? "" : sss_last_error(sss);
+  if (r != SSS_OK && message.empty()) message = sss_last_error(sss);
   int status = r == SSS_OK ? 0 : 1;
   if (r == SSS_OK) {
     GLuint fbo = 0;

@@ -18,6 +18,29 @@ def kib(n):
     return "%d KiB" % round(n / 1024.0)
 
 
+def three_profile_rows(t):
+    """The rows of the example's own frame of three profiles (absent from results written before it)."""
+    if t is None:
+        return []
+    f = t["frame"]
+    rows = ["| **the example's frame, three profiles** (%dx%d, default settings, %d taps): pixels compared | %d | |"
+            % (f["width"], f["height"], t["settings"]["taps"], t["pixels"]),
+            "| miss, overall | %.5f | %.2f |" % (t["miss"], t["miss_bound"]),
+            "| miss, red / green / blue | %.5f / %.5f / %.5f | |" % tuple(t["miss_per_channel"])]
+    for name, p in t.get("per_profile", {}).items():
+        rows.append("| %s (%d pixels): miss; with the scale 5 %% off; half a half-float step | %.5f; %.3f; %.3f | %.2f; > %.2f |"
+                    % (name, p["pixels"], p["miss"], p["miss_scale_1_05"], p["fp16_explained"], t["miss_bound"], t["miss_bound"]))
+    rows += ["| miss with every native scattering distance 5 %% off (the check's own test: must fail) | %.3f | > %.2f |"
+             % (t["miss_scale_1_05"], t["miss_bound"]),
+             "| what half a half-float step on every filtered value would leave undone | %.3f | |" % t["fp16_explained"],
+             "| pixels beyond %d levels (sRGB, 8 bits) | %.3f %% | %.2f %% |"
+             % (t["small_levels"], 100 * t["share_beyond_small"], 100 * t["small_share_limit"]),
+             "| pixels beyond %d levels | %.3f %% | %.2f %% |"
+             % (t["outlier_levels"], 100 * t["share_beyond_outlier"], 100 * t["outlier_share_limit"]),
+             "| largest difference, levels | %d | |" % t["largest_levels"]]
+    return rows
+
+
 def native_block(three):
     a = three["against_native"]
     f = a["frame"]
@@ -35,6 +58,7 @@ def native_block(three):
              "| skin pixels beyond %d levels | %.3f %% | %.2f %% |"
              % (a["outlier_levels"], 100 * a["share_beyond_outlier"], 100 * a["outlier_share_limit"]),
              "| largest difference, levels | %d | |" % a["largest_levels"],
+             ] + three_profile_rows(three.get("against_native_three")) + [
              "", "Native: %s (OpenGL ES 3.0, EGL surfaceless); web: %s." % (a["native_renderer"], three["renderer"].replace("WebGL2: ", "")),
              "", "<!-- three-native: end -->"]
     return "\n".join(lines)

@@ -14,10 +14,12 @@ package's example page in headless Chromium (SwiftShader's WebGL2) and checks
   4. a setting the library refuses (1001 taps, a scale of NaN) puts its message on the page and leaves
      three's frame bit for bit; valid settings again give the filtered frame again;
   5. a new canvas size: the first frame after it compiles no shader and filters;
-  6. against the native frame (--native-apply): a frame of one profile (the head's skin), its inputs
-     as the pass gave them to the library (colour, depth, profile texture, projection, settings)
-     filtered again natively on OpenGL ES 3.0 by sss_three_native_apply; the pass's output against
-     that: the miss, and the tone-mapped frames within web.browser's limits.
+  6. against the native frame (--native-apply): a frame of one profile (the head's skin), then the
+     example's own frame of three profiles (skin, marble, Burley's whole milk), each with its inputs
+     as the pass gave them to the library (colour, depth, profile texture, projection, every profile's
+     floats and settings) filtered again natively on OpenGL ES 3.0 by sss_three_native_apply (which
+     builds the kernels by the WebAssembly's own code); the pass's output against that: the miss
+     (overall, per channel, per profile), and the tone-mapped frames within web.browser's limits.
 
   three_test.py --site DIR [--native-apply EXE] [--chromium PATH] [--out DIR] [--screenshot PNG] [--frames N]
 
@@ -202,7 +204,11 @@ def run(browser, args, out_dir, results):
 # rasterisers round these shaders' float32 results into the same half floats). The bound lets one
 # filtered value in eight land one step away (1/8 * 2 * 0.08 = 0.02), what another SwiftShader or
 # Mesa with other rounding may do, and no more: a scattering distance 5 % off (scale 1.05 natively)
-# measured a miss of 0.061, the depth taken as [0, 1] clip depth (flags 1) 1.25.
+# measured a miss of 0.061, the depth taken as [0, 1] clip depth (flags 1) 1.25. The example's frame
+# of three profiles: one float of 330560 a half-float step away (marble, green), miss 1e-6 overall
+# (marble 4e-6); half a step everywhere would leave 0.086 undone (skin 0.081, marble 0.068, whole
+# milk 0.147); every scale 5 % off: 0.070 (skin 0.061, marble 0.091, whole milk 0.076). Each profile
+# is held to the same bound.
 MISS_BOUND = 0.02
 FP16_HALF_STEP = 2.0 ** -11
 
@@ -250,80 +256,126 @@ def miss_of(web, native, colour, pixels):
             FP16_HALF_STEP * sum(scale) / max(1e-30, sum(change)))
 
 
-def against_native(js, native_apply, out_dir, results):
-    got = js("checks.nativeInputs()")
-    check(got["result"] == 0 and got.get("frame") is not None, "one profile: the pass filtered (%s %s)"
-          % (got["result"], got["message"]))
-    check(got["errors"] == [], "one profile: no GL error, the inputs read back (%s)" % got["errors"])
-    profiles, frame, settings = got["profiles"], got["frame"], got["settings"]
-    fields = profiles["fields"]
-    defaults = {"metresPerUnit": 1, "scale": 1, "strength": 1, "falloff": 1, "taps": 17, "followSurface": True,
-                "path": "auto", "jitter": 0, "split": 0}
-    check(profiles["count"] == 1 and fields[0] == 0 and all(settings[k] == v for k, v in defaults.items() if k != "split"),
-          "one profile, the skin kernel, the default settings (%d profiles, kind %s, %s)" % (profiles["count"], fields[0], settings))
-    width, height = frame["width"], frame["height"]
-    native_dir = os.path.join(out_dir, "native")
-    os.makedirs(native_dir, exist_ok=True)
-    for name in ("colour", "depth", "profile", "web"):
-        with open(os.path.join(native_dir, name + {"profile": ".u8"}.get(name, ".f32")), "wb") as f:
-            f.write(base64.b64decode(got[name]))
-    params = {"width": [width], "height": [height], "projection": frame["projection"],
-              "world_units_per_mm": [fields[2]], "scale": [fields[3]], "strength": fields[4:7], "falloff": fields[7:10],
-              "taps": [profiles["taps"]], "follow_surface": [profiles["followSurface"]], "path": [profiles["path"]],
-              "jitter": [profiles["jitter"]], "noise_index": [frame["noiseIndex"]], "flags": [frame["flags"]]}
-    native_info = native_run(native_apply, native_dir, params)
-    check(native_info is not None, "sss_three_native_apply filtered the same inputs on OpenGL ES 3.0")
-    colour, web, native = floats(native_dir, "colour.f32"), floats(native_dir, "web.f32"), floats(native_dir, "native.f32")
-    profile = open(os.path.join(native_dir, "profile.u8"), "rb").read()
-    n = width * height
-    skin = [i for i in range(n) if profile[i] & 15 == 0]
-    others = [i for i in range(n) if profile[i] & 15 != 0]
-    check(len(skin) > 0.05 * n, "the skin covers %.3f of the frame (> 0.05)" % (len(skin) / n))
-    # Pixels without a profile: both sides leave them as three drew them.
-    untouched = all(web[i * 4 + c] == colour[i * 4 + c] == native[i * 4 + c] for i in others for c in range(4))
-    check(untouched, "pixels without a profile: three's colour in both, bit for bit")
+# The example's three profiles, by the kind the pass gave each (wasm/profile_fields.hpp's ProfileKind).
+EXAMPLE_PROFILES = {0: "skin", 1: "marble", 2: "whole milk"}
 
-    # (a) The miss with the native output as the reference: the share of the change it makes that
-    # the pass's output does not make the same, per channel and overall.
-    miss, per_channel, fp16_explained = miss_of(web, native, colour, skin)
 
-    # (b) The tone-mapped frames (8 bits) within web.browser's limits, over the skin's pixels.
-    beyond_small = beyond_outlier = 0
-    largest = 0
-    for i in skin:
+def tone_mapped(web, native, pixels):
+    """Of PIXELS: the share beyond web.browser's small and outlier limits (8-bit sRGB), the largest difference."""
+    beyond_small = beyond_outlier = largest = 0
+    for i in pixels:
         d = max(abs(srgb8(web[i * 4 + c]) - srgb8(native[i * 4 + c])) for c in range(3))
         largest = max(largest, d)
         beyond_small += d > browser_test.SMALL_LEVELS
         beyond_outlier += d > browser_test.OUTLIER_LEVELS
-    small_share, outlier_share = beyond_small / len(skin), beyond_outlier / len(skin)
-    results["against_native"] = {
-        "native_renderer": native_info["renderer"], "skin_pixels": len(skin), "miss": miss,
+    return beyond_small / max(1, len(pixels)), beyond_outlier / max(1, len(pixels)), largest
+
+
+def against_native(js, native_apply, out_dir, results):
+    # The single profile (the head's skin, the spheres not translucent), then the example's own frame
+    # of three profiles (skin; marble, measured; Burley's whole milk), split off in both.
+    results["against_native"] = against_native_frame(js, native_apply, out_dir, True)
+    results["against_native_three"] = against_native_frame(js, native_apply, out_dir, False)
+
+
+def against_native_frame(js, native_apply, out_dir, single):
+    what = "one profile" if single else "three profiles"
+    got = js("checks.nativeInputs(%s)" % ("true" if single else "false"))
+    check(got["result"] == 0 and got.get("frame") is not None and got.get("profiles") is not None,
+          "%s: the pass filtered (%s %s)" % (what, got["result"], got["message"]))
+    check(got["errors"] == [], "%s: no GL error, the inputs read back (%s)" % (what, got["errors"]))
+    profiles, frame, settings = got["profiles"], got["frame"], got["settings"]
+    fields, count = profiles["fields"], profiles["count"]
+    kinds = [int(fields[i * 16]) for i in range(count)]
+    defaults = {"metresPerUnit": 1, "scale": 1, "strength": 1, "falloff": 1, "taps": 17, "followSurface": True,
+                "path": "auto", "jitter": 0, "split": 0}
+    expected = [0] if single else [0, 1, 2]
+    check(sorted(kinds) == expected and all(settings[k] == v for k, v in defaults.items() if k != "split"),
+          "%s: %s, the default settings (kinds %s, %s)" % (what, "the skin kernel" if single else
+                                                           "skin, measured and Burley-measured kernels", kinds, settings))
+    width, height = frame["width"], frame["height"]
+    native_dir = os.path.join(out_dir, "native" if single else "native-three")
+    os.makedirs(native_dir, exist_ok=True)
+    for name in ("colour", "depth", "profile", "web"):
+        with open(os.path.join(native_dir, name + {"profile": ".u8"}.get(name, ".f32")), "wb") as f:
+            f.write(base64.b64decode(got[name]))
+    # What the pass gave sss3_set_profiles (all of its scratch floats) and sss3_apply.
+    params = {"width": [width], "height": [height], "projection": frame["projection"], "count": [count],
+              "fields": fields, "taps": [profiles["taps"]], "follow_surface": [profiles["followSurface"]],
+              "path": [profiles["path"]], "jitter": [profiles["jitter"]], "noise_index": [frame["noiseIndex"]],
+              "flags": [frame["flags"]]}
+    native_info = native_run(native_apply, native_dir, params)
+    check(native_info is not None, "%s: sss_three_native_apply filtered the same inputs on OpenGL ES 3.0" % what)
+    colour, web, native = floats(native_dir, "colour.f32"), floats(native_dir, "web.f32"), floats(native_dir, "native.f32")
+    profile = open(os.path.join(native_dir, "profile.u8"), "rb").read()
+    n = width * height
+    filtered = [i for i in range(n) if profile[i] & 15 < count]
+    others = [i for i in range(n) if profile[i] & 15 >= count]
+    per_profile = {EXAMPLE_PROFILES.get(kinds[j], "kind %d" % kinds[j]): [i for i in filtered if profile[i] & 15 == j]
+                   for j in range(count)}
+    check(len(filtered) > 0.05 * n, "%s: they cover %.3f of the frame (> 0.05)" % (what, len(filtered) / n))
+    check(all(len(px) > 0 for px in per_profile.values()),
+          "%s: every profile has pixels (%s)" % (what, {k: len(v) for k, v in per_profile.items()}))
+    # Pixels without a profile: both sides leave them as three drew them.
+    untouched = all(web[i * 4 + c] == colour[i * 4 + c] == native[i * 4 + c] for i in others for c in range(4))
+    check(untouched, "%s: pixels without a profile: three's colour in both, bit for bit" % what)
+
+    # (a) The miss with the native output as the reference: the share of the change it makes that
+    # the pass's output does not make the same, per channel and overall (and per profile).
+    miss, per_channel, fp16_explained = miss_of(web, native, colour, filtered)
+    # (b) The tone-mapped frames (8 bits) within web.browser's limits, over the filtered pixels.
+    small_share, outlier_share, largest = tone_mapped(web, native, filtered)
+    out = {
+        "native_renderer": native_info["renderer"], "skin_pixels" if single else "pixels": len(filtered), "miss": miss,
         "miss_per_channel": per_channel, "miss_bound": MISS_BOUND, "fp16_explained": fp16_explained,
         "share_beyond_small": small_share,
         "share_beyond_outlier": outlier_share, "largest_levels": largest,
         "small_levels": browser_test.SMALL_LEVELS, "small_share_limit": browser_test.SMALL_SHARE,
         "outlier_levels": browser_test.OUTLIER_LEVELS, "outlier_share_limit": browser_test.OUTLIER_SHARE,
-        "frame": frame, "settings": settings}
-    print("     miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; skin %d pixels"
-          % (miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(skin)))
-    check(miss <= MISS_BOUND, "the pass's output against the native output: miss %.5f (<= %.2f)" % (miss, MISS_BOUND))
-    # The check's own test: the native side with a scattering distance 5 % off must fail the bound.
-    wrong_dir = os.path.join(out_dir, "native-scale-1.05")
+        "frame": frame, "settings": settings, "kinds": kinds}
+    print("     %s: miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; %d pixels"
+          % (what, miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(filtered)))
+    if not single:
+        out["per_profile"] = {}
+        for name, px in per_profile.items():
+            m, pc, fp = miss_of(web, native, colour, px)
+            small, outlier, big = tone_mapped(web, native, px)
+            out["per_profile"][name] = {"pixels": len(px), "miss": m, "miss_per_channel": pc, "fp16_explained": fp,
+                                        "share_beyond_small": small, "share_beyond_outlier": outlier, "largest_levels": big}
+            print("     %s: miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; %d pixels, largest %d levels"
+                  % (name, m, pc[0], pc[1], pc[2], fp, len(px), big))
+    check(miss <= MISS_BOUND, "%s: the pass's output against the native output: miss %.5f (<= %.2f)" % (what, miss, MISS_BOUND))
+    for name, p in out.get("per_profile", {}).items():
+        check(p["miss"] <= MISS_BOUND, "%s: %s's miss %.5f (<= %.2f)" % (what, name, p["miss"], MISS_BOUND))
+    # The check's own test: the native side with a scattering distance 5 % off (every profile's
+    # scale) must fail the bound.
+    wrong_dir = native_dir + "-scale-1.05"
     os.makedirs(wrong_dir, exist_ok=True)
     for name in ("colour.f32", "depth.f32", "profile.u8"):
         shutil.copyfile(os.path.join(native_dir, name), os.path.join(wrong_dir, name))
-    check(native_run(native_apply, wrong_dir, dict(params, scale=[fields[3] * 1.05])) is not None,
-          "the check's own test: sss_three_native_apply with the scale 5 % off ran")
-    wrong_miss = miss_of(web, floats(wrong_dir, "native.f32"), colour, skin)[0]
-    results["against_native"]["miss_scale_1_05"] = wrong_miss
-    check(wrong_miss > MISS_BOUND, "the check's own test: the scale 5 %% off natively: miss %.4f (> %.2f)"
-          % (wrong_miss, MISS_BOUND))
+    wrong_fields = [v * 1.05 if k % 16 == 3 else v for k, v in enumerate(fields)]
+    check(native_run(native_apply, wrong_dir, dict(params, fields=wrong_fields)) is not None,
+          "%s: the check's own test: sss_three_native_apply with the scale 5 %% off ran" % what)
+    wrong_native = floats(wrong_dir, "native.f32")
+    wrong_miss = miss_of(web, wrong_native, colour, filtered)[0]
+    out["miss_scale_1_05"] = wrong_miss
+    if not single:
+        for name, px in per_profile.items():
+            out["per_profile"][name]["miss_scale_1_05"] = miss_of(web, wrong_native, colour, px)[0]
+        print("     the scale 5 %% off, per profile: %s" % ", ".join(
+            "%s %.4f" % (name, v["miss_scale_1_05"]) for name, v in out["per_profile"].items()))
+    check(wrong_miss > MISS_BOUND, "%s: the check's own test: the scale 5 %% off natively: miss %.4f (> %.2f)"
+          % (what, wrong_miss, MISS_BOUND))
+    for name, p in out.get("per_profile", {}).items():
+        check(p["miss_scale_1_05"] > MISS_BOUND, "%s: the check's own test for %s: miss %.4f (> %.2f)"
+              % (what, name, p["miss_scale_1_05"], MISS_BOUND))
     check(small_share <= browser_test.SMALL_SHARE,
-          "tone-mapped: %.4f%% of skin pixels beyond %d levels (<= %.2f%%)"
-          % (100 * small_share, browser_test.SMALL_LEVELS, 100 * browser_test.SMALL_SHARE))
+          "%s, tone-mapped: %.4f%% of filtered pixels beyond %d levels (<= %.2f%%)"
+          % (what, 100 * small_share, browser_test.SMALL_LEVELS, 100 * browser_test.SMALL_SHARE))
     check(outlier_share <= browser_test.OUTLIER_SHARE,
-          "tone-mapped: %.4f%% of skin pixels beyond %d levels (<= %.2f%%; largest %d)"
-          % (100 * outlier_share, browser_test.OUTLIER_LEVELS, 100 * browser_test.OUTLIER_SHARE, largest))
+          "%s, tone-mapped: %.4f%% of filtered pixels beyond %d levels (<= %.2f%%; largest %d)"
+          % (what, 100 * outlier_share, browser_test.OUTLIER_LEVELS, 100 * browser_test.OUTLIER_SHARE, largest))
+    return out
 
 
 def main():

@@ -9,7 +9,7 @@
 #include <cstring>
 
 #include <sss/sss.h>
-#include <sss/sss_tools.h>
+#include "profile_fields.hpp"
 
 namespace {
 
@@ -25,21 +25,6 @@ int remember(sss_result r, const sss_context* sss) {
   if (r != SSS_OK) g_message = sss_last_error(sss);
   return r;
 }
-
-// How a profile's kernel is chosen; the numbers are part of the contract with sss-three.js
-// (PROFILE_KIND there).
-enum ProfileKind : int {
-  kSeparable = 0,      // eq. (1) fitted to d'Eon's skin: the library's default kernel (settings.kernel NULL)
-  kMeasured = 1,       // a measured material (Jensen et al. 2001's dipole) through the pre-integrated kernel
-  kBurleyMeasured = 2, // Burley's normalized diffusion with a measured material's published parameters
-  kBurley = 3          // Burley's normalized diffusion with the caller's albedo and mean free path
-};
-
-// The floats of one profile in the scratch buffer sss-three.js fills (PROFILE_FLOATS there).
-enum ProfileField : int {
-  kKind = 0, kProfile, kWorldUnitsPerMm, kScale, kStrengthR, kStrengthG, kStrengthB, kFalloffR, kFalloffG,
-  kFalloffB, kAlbedoR, kAlbedoG, kAlbedoB, kDmfpR, kDmfpG, kDmfpB, kProfileFloats
-};
 
 }  // namespace
 
@@ -73,7 +58,8 @@ EMSCRIPTEN_KEEPALIVE double sss3_default(int index) {
 }
 
 // sss_set_profiles from `count` profiles of kProfileFloats floats each at `fields` (values as the
-// caller gave them: the library judges them), with the settings every profile shares.
+// caller gave them: the library judges them), with the settings every profile shares; the floats
+// become settings and kernels in profile_fields.cpp, which sss_three_native_apply shares.
 EMSCRIPTEN_KEEPALIVE int sss3_set_profiles(sss_context* sss, const float* fields, int count, int taps,
                                            int follow_surface, int path, float jitter) {
   if (count < 1 || count > SSS_MAX_PROFILES) {
@@ -82,42 +68,8 @@ EMSCRIPTEN_KEEPALIVE int sss3_set_profiles(sss_context* sss, const float* fields
   }
   sss_settings profiles[SSS_MAX_PROFILES];
   sss_kernel_desc kernels[SSS_MAX_PROFILES];  // sss_set_profiles copies them
-  for (int i = 0; i < count; ++i) {
-    const float* f = fields + i * kProfileFloats;
-    sss_settings& s = profiles[i];
-    sss_default_settings(&s);
-    s.world_units_per_mm = f[kWorldUnitsPerMm];
-    s.scale = f[kScale];
-    for (int c = 0; c < 3; ++c) {
-      s.strength[c] = f[kStrengthR + c];
-      s.falloff[c] = f[kFalloffR + c];
-    }
-    s.taps = taps;
-    s.flags = follow_surface != 0 ? SSS_FOLLOW_SURFACE : 0u;
-    s.path = static_cast<uint32_t>(path);
-    s.jitter = jitter;
-    const int kind = static_cast<int>(f[kKind]);
-    if (kind == kSeparable) continue;  // the default kernel: s.kernel stays NULL
-    sss_kernel_desc& k = kernels[i];
-    sss_default_kernel_desc(&k);  // also registers the tools' kernel families with the runtime
-    k.family = SSS_KERNEL_PREINTEGRATED;
-    k.taps = taps;
-    k.rank = 1;  // one term: what sss_set_profiles allows with several profiles
-    const int profile = static_cast<int>(f[kProfile]);
-    if (kind == kMeasured) {
-      k.profile.profile = profile;
-    } else if (kind == kBurleyMeasured) {
-      const sss_result r = sss_profile_burley_from_measured(profile, &k.profile);
-      if (r != SSS_OK) return remember(r, nullptr);
-    } else {
-      k.profile.profile = SSS_PROFILE_BURLEY;
-      for (int c = 0; c < 3; ++c) {
-        k.profile.burley_albedo[c] = f[kAlbedoR + c];
-        k.profile.burley_dmfp_mm[c] = f[kDmfpR + c];
-      }
-    }
-    s.kernel = &k;
-  }
+  const sss_result r = sss_three::profiles_from_fields(fields, count, taps, follow_surface, path, jitter, profiles, kernels);
+  if (r != SSS_OK) return remember(r, nullptr);
   return remember(sss_set_profiles(sss, profiles, static_cast<uint32_t>(count)), sss);
 }
 
