@@ -11,31 +11,29 @@ namespace sss_osg {
 
 void* osg_gl_loader(const char* name, void* /*user*/) { return osg::getGLExtensionFuncPtr(name); }
 
-osg::ref_ptr<osg::Texture2D> make_half_float_texture(int width, int height) {
+namespace {
+// The pass's textures are read with texelFetch only, in the library and in the composite: nearest,
+// clamped, no mipmaps (complete as they are).
+osg::ref_ptr<osg::Texture2D> texel_texture(int width, int height, GLint internal_format, GLenum format, GLenum type) {
   osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
   t->setTextureSize(width, height);
-  t->setInternalFormat(GL_RGBA16F_ARB);
-  t->setSourceFormat(GL_RGBA);
-  t->setSourceType(GL_HALF_FLOAT);
-  // texelFetch only, in the library and in the composite: nearest, no mipmaps (complete as it is).
+  t->setInternalFormat(internal_format);
+  t->setSourceFormat(format);
+  t->setSourceType(type);
   t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
   t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
   t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
   t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
   return t;
 }
+}  // namespace
+
+osg::ref_ptr<osg::Texture2D> make_half_float_texture(int width, int height) {
+  return texel_texture(width, height, GL_RGBA16F_ARB, GL_RGBA, GL_HALF_FLOAT);
+}
 
 osg::ref_ptr<osg::Texture2D> make_depth_texture(int width, int height) {
-  osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
-  t->setTextureSize(width, height);
-  t->setInternalFormat(GL_DEPTH_COMPONENT32F);
-  t->setSourceFormat(GL_DEPTH_COMPONENT);
-  t->setSourceType(GL_FLOAT);
-  t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
-  t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-  t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-  t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
-  return t;
+  return texel_texture(width, height, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT);
 }
 
 void tell_osg_the_library_drew(osg::State& state) {
@@ -109,7 +107,7 @@ bool SssDrawCallback::prepare(int width, int height) const {
 
 void SssDrawCallback::operator()(osg::RenderInfo& info) const {
   if (release_requested_) {
-    sss_destroy(context_);  // restores what it binds, as a frame does
+    sss_destroy(context_);  // deletes the library's objects; binds nothing of OSG's (sss.h)
     context_ = nullptr;
     prepared_width_ = prepared_height_ = 0;
     settings_dirty_ = true;
@@ -117,6 +115,13 @@ void SssDrawCallback::operator()(osg::RenderInfo& info) const {
   }
   if (!enabled_) return;
   osg::State& state = *info.getState();
+  filter(state);
+  // Without its restore the library leaves its bindings after sss_create and sss_prepare too, and
+  // after a failed frame whatever those left: OSG is told after any call of this callback.
+  if ((create_flags_ & SSS_CREATE_NO_STATE_RESTORE) != 0 && context_ != nullptr) tell_osg_the_library_drew(state);
+}
+
+void SssDrawCallback::filter(osg::State& state) const {
   if (context_ == nullptr && !create()) return;
   const unsigned id = state.getContextID();
   // The output is only sampled by the composite, later in the frame: on the first frame OSG has not
@@ -153,10 +158,8 @@ void SssDrawCallback::operator()(osg::RenderInfo& info) const {
     std::fprintf(stderr, "sss_osg: %s\n", last_error_.c_str());
     return;
   }
-  if ((create_flags_ & SSS_CREATE_NO_STATE_RESTORE) != 0) tell_osg_the_library_drew(state);
   last_error_.clear();
   ++frames_applied_;
 }
-
 
 }  // namespace sss_osg

@@ -22,6 +22,7 @@
 #include <sss/sss.h>
 
 #include <osg/Camera>
+#include <osg/State>
 #include <osg/Texture2D>
 
 #include <cstdint>
@@ -85,6 +86,9 @@ class SssDrawCallback : public osg::Camera::DrawCallback {
 
  private:
   bool create() const;
+  // Creates, prepares and runs the library on this frame's textures (the call's work, apart from
+  // telling OSG).
+  void filter(osg::State& state) const;
   bool prepare(int width, int height) const;
 
   PassTextures textures_;
