@@ -86,8 +86,10 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
     out->write(d + "tile_mark_" + gl::kComputeImageFormats[image].qualifier + ".frag",
                gl::stage_recipe(dialect, "tile_mark.frag", gl::tile_mark_defines(false, image)));
   }
-  // The tiles debug view's fragment stage (drawn with each of the three vertex stages above).
+  // The tiles debug view's fragment stages: the marks' (with the full-screen vertex stage) and the
+  // band draws' (with the two band vertex stages above).
   out->write(d + "tile_view.frag", gl::stage_recipe(dialect, "tile_view.frag"));
+  out->write(d + "tile_view_bands.frag", gl::stage_recipe(dialect, "tile_view.frag", "#define SSS_TILE_VIEW_BANDS 1\n"));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
   out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
   // The inputs: every switch set with the colour read through the sampler; GLSL 4.20 also through

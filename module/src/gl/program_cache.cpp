@@ -395,14 +395,15 @@ sss_result ProgramCache::tile_view(TileSpans spans, TileViewProgram** out, std::
   if (p.program != 0) return SSS_OK;
   static const char* const kDraws[] = {"marks", "passes' bands", "inputs' bands"};
   const char* draw = kDraws[static_cast<std::size_t>(spans)];
-  p.program = link("tile_view.frag", "", std::string("tiles view shader (") + draw + ")", message, spans);
+  // The band draws' fragment stage writes a constant (their colour mask picks the channel).
+  const std::string defines = spans == TileSpans::none ? "" : "#define SSS_TILE_VIEW_BANDS 1\n";
+  p.program = link("tile_view.frag", defines, std::string("tiles view shader (") + draw + ")", message, spans);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[64];
   std::snprintf(label, sizeof label, "sss tiles view (%s)", draw);
   finish(p.program, label, "tiles view");
   const Functions& f = *gl_;
   p.rect = f.GetUniformLocation(p.program, "u_rect");
-  p.cover = f.GetUniformLocation(p.program, "u_cover");
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);

@@ -92,7 +92,7 @@ struct TileMarkProgram {
 // triangle for the marks, then the inputs draw's and the blur passes' bands).
 struct TileViewProgram {
   GLuint program = 0;
-  GLint rect = -1, cover = -1;
+  GLint rect = -1;       // the marks' draw (the drawn rectangle)
   GLint tile_grid = -1;  // the band draws' (fullscreen.vert)
 };
 

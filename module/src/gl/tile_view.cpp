@@ -23,12 +23,10 @@ sss_result build_tile_view(PassContext& ctx, const FilterRun& run, TileViewProgr
 }
 
 // One of the band draws, into the channels `red`, `green` of the output.
-void draw_bands(PassContext& ctx, const TileViewProgram& p, const FilterRun& run, bool red, bool green) {
+void draw_bands(PassContext& ctx, const TileViewProgram& p, bool red, bool green) {
   const Functions& f = ctx.gl;
   f.ColorMask(red ? 1 : 0, green ? 1 : 0, 0, 0);
   f.UseProgram(p.program);
-  f.Uniform4i(p.rect, run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
-  f.Uniform1i(p.cover, 1);
   draw_cover(ctx, p.tile_grid);
 }
 }  // namespace
@@ -48,11 +46,10 @@ sss_result run_tile_view(PassContext& ctx, const FilterRun& run, std::string* me
     // Every pixel of the rectangle: (0, 0, its tile's mark, 1); one triangle, whatever the bands.
     f.UseProgram(programs.marks->program);
     f.Uniform4i(programs.marks->rect, run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
-    f.Uniform1i(programs.marks->cover, 0);
     f.DrawArrays(TRIANGLES, 0, 3);
     ++ctx.draws;
-    draw_bands(ctx, *programs.inputs, run, false, true);
-    draw_bands(ctx, *programs.passes, run, true, false);
+    draw_bands(ctx, *programs.inputs, false, true);
+    draw_bands(ctx, *programs.passes, true, false);
     f.ColorMask(1, 1, 1, 1);
   }
   ctx.tile_bands = 0;

@@ -54,10 +54,13 @@ void write_tile_view(const float* rgba, int width, const std::array<int, 4>& rec
   const int across = tiles_across(rect[2]), down = tiles_across(rect[3]);
   const std::vector<unsigned char> marks = tile_marks(rgba, width, rect);
   const std::vector<unsigned char> columns = column_marks(marks, across, down);
+  TileSpan passes, inputs;  // the spans of the band `y` is in, found once a band
   for (int y = 0; y < rect[3]; ++y) {
     const int row = y / kTileSize, band = row / kTileBand;
-    const TileSpan passes = tile_span(marks, columns, across, down, band, TileDraw::passes);
-    const TileSpan inputs = tile_span(marks, columns, across, down, band, TileDraw::inputs);
+    if (y == band * kTileBand * kTileSize) {
+      passes = tile_span(marks, columns, across, down, band, TileDraw::passes);
+      inputs = tile_span(marks, columns, across, down, band, TileDraw::inputs);
+    }
     for (int x = 0; x < rect[2]; ++x) {
       const int column = x / kTileSize;
       const auto covers = [column](const TileSpan& span) { return column >= span.first && column <= span.last; };

@@ -90,24 +90,17 @@ export declare class SSS {
   dispose(): void;
 }
 
-/** The EffectComposer pass: filters the read buffer in place (needsSwap false). */
-export declare class SSSPass extends Pass implements SSSSettings {
+/** The EffectComposer pass: filters the read buffer in place (needsSwap false). Its settings are
+ *  its properties: every field of SSSSettings (the interface below merges them into the class). */
+export declare class SSSPass extends Pass {
   constructor(sss: SSS, scene: Scene, camera: Camera, settings?: Partial<SSSSettings>);
   sss: SSS;
   scene: Scene;
   camera: Camera;
-  metresPerUnit: number;
-  scale: number;
-  strength: number;
-  falloff: number;
-  taps: number;
-  followSurface: boolean;
-  path: SSSPath;
-  jitter: number;
-  split: number;
   readonly lastError: string;
   settings(): SSSSettings;
 }
+export interface SSSPass extends SSSSettings {}
 
 /** Sets material.userData.sss; returns the material. */
 export declare function setSSSMaterial<M extends Material>(material: M, spec?: SSSMaterialSpec): M;
