@@ -28,13 +28,13 @@ SSS_BINDING(3) uniform highp sampler2D u_half_result;   // the half-size passes'
 // then the table's reach in profile mm (r) and centre delta (gba): the passes' u_cdf and u_footprint.
 SSS_BINDING(4) uniform highp sampler2D u_tables;
 uniform vec4 u_looks[16];     // per profile: pixels per mm on x and y (clip w = 1, strength 1), depth factor
-uniform int u_profile_count;
-uniform ivec4 u_half_rect;    // the half-size texels the passes covered: first and last (x0, y0, x1, y1)
+// u_profile_count, u_half_rect (the half-size texels the passes covered: first and last, x0, y0,
+// x1, y1), u_rect (the drawn rectangle's first and last pixel), u_half_taps (the kernel's most taps
+// per side), u_spacing (its sparse layout's first two taps, as shares of the reach) and the pieces'
+// numbers are the fields of u_upsample, declared with the variant's #defines
+// (module/src/gl/pass_uniforms.hpp).
 uniform float u_min_reach;    // math::kHalfResolutionMinReachPixels
 uniform float u_min_weight;   // math::kHalfResolutionMinWeight
-uniform ivec4 u_rect;         // the drawn rectangle's first and last pixel (x0, y0, x1, y1)
-uniform int u_half_taps;      // the kernel's most taps per side
-uniform vec2 u_spacing;       // its sparse layout's first two taps, as shares of the reach
 
 out vec4 o_color;
 

@@ -1,7 +1,9 @@
 // The jitter of sparse taps (SSS_JITTER 1; nothing otherwise), for separable_blur.frag and .comp.
 
 #if SSS_JITTER
+#ifndef u_noise_index  // a pass's uniform struct names it (module/src/gl/pass_uniforms.hpp)
 uniform uint u_noise_index;  // sss_frame.noise_index
+#endif
 
 // The jitter noise in [0, 1): must equal sss::math::jitter_noise (module/src/math/pass_kernel.cpp)
 // bit for bit, which 32-bit uint arithmetic guarantees; axis 0 horizontal, 1 vertical.

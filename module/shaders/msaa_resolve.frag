@@ -20,8 +20,9 @@
 
 SSS_BINDING(0) uniform sampler2DMS u_color;
 SSS_BINDING(1) uniform sampler2DMS u_depth;
-uniform int u_samples;           // the textures' sample count (both have the same)
-uniform int u_depth_mode;        // 0 average, 1 sample 0, 2 minimum (nearest), 3 maximum (farthest)
+// u_samples (the textures' sample count, both have the same), u_depth_mode (0 average, 1 sample
+// 0, 2 minimum: nearest, 3 maximum: farthest) and the pieces' numbers are the fields of u_resolve,
+// declared with the variant's #defines (module/src/gl/pass_uniforms.hpp).
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out float o_distance;

@@ -60,10 +60,9 @@ layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict image2D u_target;
 layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_target;
 #endif
 
-uniform ivec4 u_rect;           // the pixels this pass writes: x, y, width, height
-uniform float u_pixels_per_mm;
-uniform float u_follow_surface;
-uniform vec4 u_clamp;           // tap positions are kept inside (xy min, zw max), in pixels
+// u_rect (the pixels this pass writes: x, y, width, height), u_pixels_per_mm, u_follow_surface,
+// u_clamp (tap positions are kept inside: xy min, zw max, in pixels) and the pieces' numbers are
+// the fields of u_blur, declared with the variant's #defines (module/src/gl/pass_uniforms.hpp).
 
 const ivec2 kAxis = ivec2(1 - SSS_AXIS, SSS_AXIS);
 const ivec2 kAcross = ivec2(SSS_AXIS, 1 - SSS_AXIS);

@@ -1,4 +1,4 @@
-// The masked path's tile culling (SSS_PATH_FRAGMENT_MASKED; module/src/gl/tile_culling.cpp, the rule
+// The masked path's tile culling (SSS_PATH_FRAGMENT_MASKED; module/src/gl/tile_marks.cpp, the rule
 // in module/src/math/tile_culling.hpp): its draws cover only bands of 16x16 tiles holding
 // translucent pixels (the passes) or within their rows and columns (the inputs the taps read).
 // What can go wrong is a tap reading a texel the inputs draw did not write this frame, or a pixel
@@ -124,7 +124,7 @@ TEST_F(TileCulling, SparsePixelsAfterAFullFrameGiveThePlainResultBitForBit) {
   }
 }
 
-// The half-resolution path keeps the same bands (module/src/gl/half_runner.cpp), and its reduction
+// The half-resolution path keeps the same bands (module/src/gl/half_resolution_passes.cpp), and its reduction
 // and half-size passes the same tiles at 8 texels a side, wherever the rectangle starts on even
 // coordinates. The same sparse frame after a full one must be its CPU model's within
 // HalfResolution.MatchesTheCpuModel's tolerance (3e-3), with pixels upsampled and pixels left to

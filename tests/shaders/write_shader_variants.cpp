@@ -129,7 +129,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
         v.half_taps = half_taps;
         out->write(d + "blur_" + blur_name(v) + "_a" + (v.accumulate ? "1" : "0") + "_t" + std::to_string(half_taps) +
                        (image_taps ? "_i" : "") + ".frag",
-                   gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+                   gl::stage_recipe(dialect, gl::blur_fragment_file(v), gl::blur_defines(v)));
       }
     }
   }
@@ -146,7 +146,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
         v.outside = packed ? gl::BlurOutside::write_centre : gl::BlurOutside::copy_original;
         v.debug_view = view;
         out->write(d + "blur_debug" + std::to_string(view) + "_" + blur_name(v) + ".frag",
-                   gl::stage_recipe(dialect, "separable_blur.frag", gl::blur_defines(v)));
+                   gl::stage_recipe(dialect, gl::blur_fragment_file(v), gl::blur_defines(v)));
       }
     }
   }

@@ -149,21 +149,31 @@ TEST(ShaderSource, EveryLineOfTheEmbeddedShadersCarriesItsFileAndLine) {
   }
 }
 
+// The fragment passes (the filter and its debug views, each through blur_pixel.glsl, what a pass
+// reads at its pixel) and the compute passes include the same pieces in the same order.
 TEST(ShaderSource, TheBlurShadersShareTheirPieces) {
   using namespace sss::gl;
-  const std::vector<std::string> shared = {"nearest_half.glsl", "colour_range.glsl", "depth.glsl", "jitter.glsl",
-                                           "pass_surface.glsl", "footprint_taps.glsl", "footprint_cells.glsl"};
-  for (const ShaderRecipe& recipe :
-       {stage_recipe(GlslVariant::glsl330, "separable_blur.frag", blur_defines(BlurVariant{})),
-        compute_recipe(compute_blur_defines(BlurVariant{}, 1, ComputePass::horizontal_marked))}) {
+  const std::vector<std::string> shared = {"nearest_half.glsl",   "colour_range.glsl", "depth.glsl",
+                                           "jitter.glsl",         "pass_surface.glsl", "footprint_taps.glsl",
+                                           "footprint_cells.glsl"};
+  BlurVariant view;
+  view.debug_view = SSS_DEBUG_VIEW_TAPS;
+  for (const BlurVariant& v : {BlurVariant{}, view}) {
     AssembledShader out;
-    ASSERT_TRUE(assemble_shader(recipe, &out, nullptr));
-    EXPECT_EQ(std::vector<std::string>(out.files.begin() + 3, out.files.end()), shared) << recipe.top;
+    ASSERT_TRUE(
+        assemble_shader(stage_recipe(GlslVariant::glsl330, blur_fragment_file(v), blur_defines(v)), &out, nullptr));
+    std::vector<std::string> pieces(out.files.begin() + 3, out.files.end());
+    ASSERT_FALSE(pieces.empty());
+    EXPECT_EQ(pieces.front(), "blur_pixel.glsl") << blur_fragment_file(v);
+    EXPECT_EQ(std::vector<std::string>(pieces.begin() + 1, pieces.end()), shared) << blur_fragment_file(v);
   }
+  AssembledShader out;
+  ASSERT_TRUE(assemble_shader(compute_recipe(compute_blur_defines(BlurVariant{}, 1, ComputePass::horizontal_marked)),
+                              &out, nullptr));
+  EXPECT_EQ(std::vector<std::string>(out.files.begin() + 3, out.files.end()), shared);
 }
 
-const std::vector<std::string> kNames = {"version_330.glsl", "<variant defines>", "separable_blur.frag",
-                                         "depth.glsl"};
+const std::vector<std::string> kNames = {"version_330.glsl", "<variant defines>", "separable_blur.frag", "depth.glsl"};
 
 TEST(ShaderSource, NamesMesaLogLocations) {
   EXPECT_EQ(sss::gl::name_log_sources("0:12(3): error: syntax error, unexpected ';'\n"

@@ -1,7 +1,7 @@
 #include "host_texture_params.hpp"
 
 #include "../gl/host_texture_state.hpp"
-#include "../gl/runners.hpp"
+#include "../gl/frame_plan.hpp"
 #include "validation.hpp"
 
 namespace sss::api {
@@ -44,11 +44,12 @@ sss_result host_texture_params(sss_context* ctx, const sss_frame& frame, gl::Fil
   // Asked only where completeness is all that keeps the frame off the compute path.
   const bool wants_compute = run->path == SSS_PATH_COMPUTE || run->path == SSS_PATH_AUTO;
   run->target_complete = true;
-  const bool only_completeness = wants_compute && !run->identity && *gl::compute_unavailable(ctx->gl, *run) == '\0';
+  const bool only_completeness = wants_compute && !run->identity &&
+                                 *gl::path_unavailable(*run, ctx->filter.capabilities(), SSS_PATH_COMPUTE) == '\0';
   run->target_complete = only_completeness && !described && gl::query_image_complete(ctx->gl, run->target());
   // The colour, where the passes' inputs could read it through an image unit (one answer serves
   // both in place, when the target's was asked).
-  if (!described && gl::may_read_color_image(ctx->gl, *run)) {
+  if (!described && gl::may_read_color_image(ctx->filter.capabilities(), *run)) {
     run->color_complete = run->writes_back() && only_completeness ? run->target_complete
                                                                    : gl::query_image_complete(ctx->gl, run->color);
   }

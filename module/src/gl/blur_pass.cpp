@@ -4,41 +4,16 @@
 #include <array>
 #include <vector>
 
+#include "pass_uniforms.hpp"
 #include "texture_units.hpp"
 
 namespace sss::gl {
-
-BlurVariant blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) {
-  const math::PassTerm& t = run.kernel->terms[term];
-  BlurVariant v;
-  v.outside = outside;
-  v.follow_surface = !run.follow_surface ? 0 : (t.depth_variance_mm2 > 0.0f ? 2 : 1);
-  v.linear_depth = run.constants.linear_depth;
-  v.jitter = run.kernel->jittered();
-  v.accumulate = axis == 1 && term > 0;
-  return v;
-}
-
-int profile_ids_variant(const FilterRun& run) {
-  if (!run.has_profiles()) return 0;
-  return run.profile_ids.internal_format == static_cast<GLint>(R16UI) ? 2 : 1;
-}
-
-BlurVariant fragment_blur_variant(const FilterRun& run, std::size_t term, int axis, Outside outside) {
-  BlurVariant v = blur_variant(run, term, axis, outside);
-  v.linear_depth = false;  // pass_inputs.frag linearised
-  v.profile_ids = profile_ids_variant(run);
-  v.packed_output = axis == 0;
-  v.half_taps = compile_time_half_taps(static_cast<int>(run.kernel->spacing.size()));
-  v.debug_view = static_cast<int>(run.debug_view);
-  return v;
-}
 
 bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis) {
   if (axis == 0) return run.intermediate_format() == static_cast<GLint>(RGBA16F);
   // (A debug view runs the first term alone: its vertical pass writes the output.)
   const std::size_t terms = run.cross_bilateral || run.debug_view != 0 ? 1 : run.kernel->terms.size();
-  if (term + 1 < terms) return accumulators_are_half(gl, run);
+  if (term + 1 < terms) return accumulators_are_half(gl.api.es, run);
   return run.target().internal_format == static_cast<GLint>(RGBA16F);
 }
 
@@ -68,9 +43,9 @@ void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& ru
 }
 }  // namespace
 
-void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, std::size_t term, int axis) {
+void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, std::size_t term, int axis,
+                       int round_to_half) {
   const Functions& f = ctx.gl;
-  const math::PassConstants& k = run.constants;
   const math::PassTerm& t = run.kernel->terms[term];
   f.UseProgram(p.program);
   if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
@@ -81,16 +56,11 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   }
   // (No axis uniform: the compute variants have SSS_AXIS, and a fragment variant's axis follows
   // from SSS_PACKED_OUTPUT.)
-  f.Uniform1f(p.pixels_per_mm, k.pixels_per_mm[static_cast<std::size_t>(axis)]);
-  // The Gaussian depth correction measures depth in profile millimetres; the ramp in reaches.
-  f.Uniform1f(p.follow_surface, p.inv_two_variance >= 0 ? k.mm_per_world : k.follow_surface_factor);
-  f.Uniform2f(p.ndc_from_depth, k.ndc_scale, k.ndc_bias);
-  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
-  f.Uniform4f(p.clamp, k.clamp_min[0], k.clamp_min[1], k.clamp_max[0], k.clamp_max[1]);
-  f.Uniform2f(p.pixel_span, k.pixel_span[0], k.pixel_span[1]);
-  f.Uniform4f(p.ray_slope, k.slope_scale[0], k.slope_scale[1], k.slope_bias[0], k.slope_bias[1]);
-  f.Uniform1i(p.round_to_half, writes_half_float(f, run, term, axis) ? 1 : 0);
-  if (p.noise_index >= 0) f.Uniform1ui(p.noise_index, run.noise_index);
+  // The pass's struct in one call (a variant whose depth correction is the Gaussian reads
+  // u_inv_two_variance, and its follow-surface number in profile mm per world unit).
+  const bool rounds = round_to_half >= 0 ? round_to_half != 0 : writes_half_float(f, run, term, axis);
+  const BlurUniforms u = fill_blur_uniforms(run, axis, p.inv_two_variance >= 0, rounds);
+  f.Uniform4fv(p.uniforms, kBlurUniformVectors, u.values.data());
   if (p.profile >= 0) {
     // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
     std::array<float, 4 * math::kMaxProfiles> looks{};
@@ -101,9 +71,6 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
     }
     f.Uniform4fv(p.profile, run.profile_count, looks.data());
   }
-  // Apart from the looks: a debug view that needs no step (mask, depth, profile) has them optimised
-  // away, but still leaves the pixels of an index without a profile alone.
-  if (p.profile_count >= 0) f.Uniform1i(p.profile_count, run.profile_count);
 }
 
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {

@@ -1,7 +1,7 @@
 // What one frame asks of the GPU passes: the host's textures (already validated and described by
 // the api layer), the kernel and its per-frame constants, and how the passes may run. The api
-// layer fills a FilterRun (module/src/api/api_apply.cpp); SeparableFilter::run hands it to the
-// runner of the path it takes (runners.hpp).
+// layer fills a FilterRun (module/src/api/api_apply.cpp); SeparableFilter::run plans the frame
+// from it (frame_plan.hpp) and runs the plan's steps. It describes the frame; the plan decides.
 #pragma once
 
 #include <array>
@@ -32,8 +32,8 @@ struct FilterRun {
   TextureInfo output;                      // name 0: write back into color
   TextureInfo normals;                     // name 0: none (cross-bilateral mode reconstructs from depth)
   // The host's strength texture (sss_frame.strength_texture; name 0: the colour's alpha is the
-  // strength). SeparableFilter::run draws the colour with it as alpha into the module's copy and
-  // runs the passes on with_strength_source's run (strength_source.cpp): the runners never see it.
+  // strength). The plan draws the colour with it as alpha into the module's copy first and runs the
+  // passes on passes_run()'s run (frame_plan.hpp), which reads the copy.
   TextureInfo strength;
   const StencilInput* stencil = nullptr;   // nullptr: mask from alpha alone
   std::array<int, 4> viewport = {0, 0, 0, 0};
@@ -69,15 +69,8 @@ struct FilterRun {
   // resolved linear distance the passes read), and how sample depths combine.
   math::PassConstants resolve_constants;
   DepthResolve depth_resolve = DepthResolve::average;
-  bool stencil_ready = false;              // internal: the stencil buffer already holds the mask
-  // Internal (the MSAA path): its resolve wrote the fragment passes' inputs (pass_inputs.frag's
-  // layout) along with the resolved images, so the passes skip their inputs draw.
-  bool inputs_ready = false;
-  // Internal (the MSAA write-back behind its own mask): the output's pixels outside the stencil are
-  // never read, so the last pass leaves them as they are instead of copying the colour there.
-  bool output_outside_stencil_unread = false;
   // sss.h SSS_PATH_*: the compute path is taken (SSS_PATH_COMPUTE), or chosen by timing
-  // (SSS_PATH_AUTO, per path_key: the frame's configuration), when compute_unavailable() is "";
+  // (SSS_PATH_AUTO, per path_key: the frame's configuration), when path_unavailable() is "";
   // otherwise (and always on OpenGL ES or before GL 4.3) the fragment passes run.
   unsigned path = SSS_PATH_FRAGMENT;
   std::uint64_t path_key = 0;

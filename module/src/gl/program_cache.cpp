@@ -20,11 +20,12 @@ int image_format_index(GLint internal_format) {
 }
 
 sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool labels, const Log* log,
-                              std::string* message) {
+                              Capabilities* caps, std::string* message) {
   gl_ = gl;
   variant_ = variant;
   labels_ = labels;
   log_ = log;
+  caps_ = caps;
   std::string log_text;
   copy_ = build_program(*gl_, vertex_recipe(variant_), stage_recipe(variant_, "copy.frag"), &log_text);
   if (copy_ == 0) {
@@ -35,21 +36,32 @@ sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool lab
   label_object(*gl_, labels_, PROGRAM, copy_, "sss copy");
 
   // The default settings' fragment passes written back on hardware depth, culled by the depth the
-  // inputs draw marks: their inputs, the horizontal pass (packed) and the vertical one.
-  BlurProgram* unused = nullptr;
-  BlurVariant common;
-  common.follow_surface = 1;
-  common.packed_output = true;
-  common.half_taps = SSS_TAPS_MEDIUM / 2;  // the default's 17 taps
-  sss_result r = blur(common, &unused, message);
-  common.outside = Outside::discard;
-  common.packed_output = false;
-  if (r == SSS_OK) r = blur(common, &unused, message);
-  PassInputsProgram* inputs = nullptr;
-  PassInputsVariant culled;
-  culled.mark_depth = true;
-  culled.color_image = 0;  // an RGBA16F colour that is complete, through the image unit where there is one
-  if (r == SSS_OK) r = pass_inputs(culled, &inputs, message);
+  // inputs draw marks: their inputs, the horizontal pass (packed) and the vertical one, as the
+  // planner asks for them on this context (again after a refusal it records, with its stand-in).
+  sss_result r = SSS_OK;
+  std::size_t refusals = 0;
+  do {
+    refusals = caps_->refusals();
+    BlurProgram* unused = nullptr;
+    BlurVariant common;
+    common.follow_surface = 1;
+    common.packed_output = true;
+    common.image_taps = caps_->image_taps();
+    common.half_taps = SSS_TAPS_MEDIUM / 2;  // the default's 17 taps
+    if (caps_->preset_refused(common)) common.half_taps = 0;
+    r = blur(common, &unused, message);
+    common.outside = Outside::discard;
+    common.packed_output = false;
+    common.half_taps = SSS_TAPS_MEDIUM / 2;
+    if (caps_->preset_refused(common)) common.half_taps = 0;
+    if (r == SSS_OK) r = blur(common, &unused, message);
+    PassInputsProgram* inputs = nullptr;
+    PassInputsVariant culled;
+    culled.mark_depth = true;
+    // An RGBA16F colour that is complete, through the image unit where there is one.
+    culled.color_image = caps_->image_inputs() ? 0 : -1;
+    if (r == SSS_OK) r = pass_inputs(culled, &inputs, message);
+  } while (r != SSS_OK && caps_->refusals() != refusals);
   return r;
 }
 
@@ -96,7 +108,7 @@ void ProgramCache::stand_in(const std::string& refused, const std::string& inste
   if (log_ != nullptr && *log_) {
     (*log_)(SSS_LOG_WARNING, "the driver refused " + refused + "; " + instead + " stands in (" + *message + ")");
   }
-  message->clear();
+  *message = "the driver refused " + refused + " (planned again with " + instead + ")";
 }
 
 void ProgramCache::finish(GLuint program, const char* label, const char* built, const char* dialect) {
@@ -107,30 +119,20 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
   }
 }
 
-sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, std::string* message) {
-  // Image loads for the taps where the context has them (BlurVariant::image_taps): GLSL 4.20's
-  // layout(binding) names the unit, and glBindImageTexture is loaded on GL 4.3+.
-  BlurVariant v = requested;
-  v.image_taps = variant_ == GlslVariant::glsl420 && gl_->has_compute && !image_taps_refused_;
-  BlurProgram& p = blur_[blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps];
-  const auto with_uniform_count = [&v] {
-    BlurVariant u = v;
-    u.half_taps = 0;
-    return u;
-  };
-  if (p.refused) return blur(with_uniform_count(), out, message);
+sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
+  BlurProgram& p = blur_[(blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps) * 2 + (v.image_taps ? 1 : 0)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
-  p.program = link("separable_blur.frag", defines, "separable blur shader (" + defines + ")", message,
+  p.program = link(blur_fragment_file(v), defines, "separable blur shader (" + defines + ")", message,
                    TileSpans::passes);
   if (p.program == 0 && v.image_taps) {
     // Insurance, as for the preset counts below (no driver has refused this so far): the taps read
     // through the sampler give the same image, for this program and every one after it.
     stand_in("the separable blur program that reads its taps through an image unit",
              "the one that reads them through a sampler", message);
-    image_taps_refused_ = true;
-    return blur(requested, out, message);
+    caps_->image_taps_refused = true;
+    return SSS_ERROR_SHADER_COMPILE;
   }
   if (p.program == 0 && v.half_taps > 0) {
     // The preset count's variant only lets the compiler unroll the loop; the one that reads the
@@ -138,8 +140,8 @@ sss_result ProgramCache::blur(const BlurVariant& requested, BlurProgram** out, s
     // look-ahead index in the unrolled loop once) still gets the filter, and says so once.
     stand_in("the separable blur program for " + std::to_string(2 * v.half_taps + 1) + " taps as a constant",
              "the one that reads the count as a uniform", message);
-    p.refused = true;
-    return blur(with_uniform_count(), out, message);
+    caps_->refused_presets.push_back(preset_key(v));
+    return SSS_ERROR_SHADER_COMPILE;
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[144];
@@ -201,31 +203,20 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
 void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   const Functions& f = *gl_;
   BlurProgram& p = *program;
+  p.uniforms = f.GetUniformLocation(p.program, "u_blur");
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
   p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
   p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
-  p.noise_index = f.GetUniformLocation(p.program, "u_noise_index");
-  p.debug_fill = f.GetUniformLocation(p.program, "u_debug_fill");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
-  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
-  p.follow_surface = f.GetUniformLocation(p.program, "u_follow_surface");
-  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
-  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
-  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
-  p.pixel_span = f.GetUniformLocation(p.program, "u_pixel_span");
-  p.ray_slope = f.GetUniformLocation(p.program, "u_ray_slope");
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
   p.footprint = f.GetUniformLocation(p.program, "u_footprint");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
-  p.rect = f.GetUniformLocation(p.program, "u_rect");
-  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
   p.strength = f.GetUniformLocation(p.program, "u_strength");
   p.profile_ids = f.GetUniformLocation(p.program, "u_profile_ids");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
-  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
 }
 
 sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
@@ -252,23 +243,16 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
 void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
   const Functions& f = *gl_;
   CbfProgram& p = *program;
+  p.uniforms = f.GetUniformLocation(p.program, "u_cbf");
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
-  p.pixels_per_mm = f.GetUniformLocation(p.program, "u_pixels_per_mm");
-  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
-  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
-  p.clamp = f.GetUniformLocation(p.program, "u_clamp");
-  p.pixel_span = f.GetUniformLocation(p.program, "u_pixel_span");
-  p.ray_slope = f.GetUniformLocation(p.program, "u_ray_slope");
-  p.mm_per_world = f.GetUniformLocation(p.program, "u_mm_per_world");
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
   p.footprint = f.GetUniformLocation(p.program, "u_footprint");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
   p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
   p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
-  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
   p.normals = f.GetUniformLocation(p.program, "u_normals");
 }
 
@@ -285,11 +269,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, Resolv
                                          "sss msaa resolve linear for write-back"};
   finish(p.program, kLabels[index], nullptr);
   const Functions& f = *gl_;
-  p.samples = f.GetUniformLocation(p.program, "u_samples");
-  p.depth_mode = f.GetUniformLocation(p.program, "u_depth_mode");
-  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
-  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
-  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.uniforms = f.GetUniformLocation(p.program, "u_resolve");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
   return SSS_OK;
@@ -325,11 +305,7 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   return SSS_OK;
 }
 
-sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInputsProgram** out,
-                                     std::string* message) {
-  // Image loads where the context has them (as ProgramCache::blur's taps).
-  PassInputsVariant v = requested;
-  if (!(variant_ == GlslVariant::glsl420 && gl_->has_compute) || image_inputs_refused_) v.color_image = -1;
+sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message) {
   PassInputsProgram& p = pass_inputs_[static_cast<std::size_t>(pass_inputs_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
@@ -339,8 +315,8 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInp
     // Insurance, as for the blur's image taps: the sampler's read gives the same image.
     stand_in("the pass inputs program that reads the colour through an image unit",
              "the one that reads it through a sampler", message);
-    image_inputs_refused_ = true;
-    return pass_inputs(requested, out, message);
+    caps_->image_inputs_refused = true;
+    return SSS_ERROR_SHADER_COMPILE;
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[112];
@@ -350,8 +326,7 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInp
   finish(p.program, label, "pass inputs");
   p.color_image = v.color_image;
   const Functions& f = *gl_;
-  p.ndc_from_depth = f.GetUniformLocation(p.program, "u_ndc_from_depth");
-  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
+  p.uniforms = f.GetUniformLocation(p.program, "u_inputs");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
@@ -362,9 +337,7 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& requested, PassInp
 }
 
 sss_result ProgramCache::tile_mark(bool columns, int color_image, TileMarkProgram** out, std::string* message) {
-  // Image loads where the context has them (as ProgramCache::pass_inputs).
-  int image = columns ? -1 : color_image;
-  if (!(variant_ == GlslVariant::glsl420 && gl_->has_compute) || image_inputs_refused_) image = -1;
+  const int image = columns ? -1 : color_image;
   TileMarkProgram& p = tile_mark_[columns ? 0 : static_cast<std::size_t>(image + 2)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
@@ -374,8 +347,8 @@ sss_result ProgramCache::tile_mark(bool columns, int color_image, TileMarkProgra
     // Insurance, as for the passes' inputs: the sampler's read gives the same marks.
     stand_in("the tile marks program that reads the colour through an image unit",
              "the one that reads it through a sampler", message);
-    image_inputs_refused_ = true;
-    return tile_mark(columns, -1, out, message);
+    caps_->image_inputs_refused = true;
+    return SSS_ERROR_SHADER_COMPILE;
   }
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[64];
@@ -445,20 +418,12 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   finish(p.program, v.profile_ids != 0 ? "sss half-size upsample profiles=1" : "sss half-size upsample",
          "half-size upsample");
   const Functions& f = *gl_;
+  p.uniforms = f.GetUniformLocation(p.program, "u_upsample");
   p.looks = f.GetUniformLocation(p.program, "u_looks");
-  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
-  p.half_rect = f.GetUniformLocation(p.program, "u_half_rect");
   // The method's constants: set once, here, not per frame.
   f.UseProgram(p.program);
   f.Uniform1f(f.GetUniformLocation(p.program, "u_min_reach"), math::kHalfResolutionMinReachPixels);
   f.Uniform1f(f.GetUniformLocation(p.program, "u_min_weight"), math::kHalfResolutionMinWeight);
-  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
-  p.spacing = f.GetUniformLocation(p.program, "u_spacing");
-  p.rect = f.GetUniformLocation(p.program, "u_rect");
-  p.depth_terms = f.GetUniformLocation(p.program, "u_depth_terms");
-  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
-  p.pixel_span = f.GetUniformLocation(p.program, "u_pixel_span");
-  p.ray_slope = f.GetUniformLocation(p.program, "u_ray_slope");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);

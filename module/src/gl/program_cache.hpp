@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "frame_plan.hpp"
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
 #include "shader_variants.hpp"
@@ -30,21 +31,16 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 
 struct BlurProgram {
   GLuint program = 0;
-  GLint source = -1, depth = -1, original = -1, accumulated = -1, jitter_from = -1, noise_index = -1, inv_two_variance = -1,
-        pixels_per_mm = -1, follow_surface = -1, ndc_from_depth = -1, depth_terms = -1, clamp = -1,
-        cdf = -1, footprint = -1, spacing = -1, half_taps = -1, round_to_half = -1;
-  GLint pixel_span = -1, ray_slope = -1;  // pass_surface.glsl's view offsets
-  GLint rect = -1;  // compute programs only
+  GLint uniforms = -1;  // u_blur: the pass's per-draw uniforms (pass_uniforms.hpp)
+  GLint source = -1, depth = -1, original = -1, accumulated = -1;  // samplers
+  // The kernel's tables, uploaded when the kernel, term or axis changes (footprint_cells.glsl).
+  GLint jitter_from = -1, inv_two_variance = -1, cdf = -1, footprint = -1, spacing = -1, half_taps = -1;
   GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
-  GLint profile_ids = -1, profile = -1, profile_count = -1;  // per-pixel profile variants only
+  GLint profile_ids = -1, profile = -1;  // per-pixel profile variants only
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
-  GLint debug_fill = -1;  // a debug view's vertical pass: u_debug_fill (separable_blur.frag)
   bool compute = false;
   // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_packed_inputs binds the source there.
   bool image_taps = false;
-  // A preset tap count's variant (SSS_HALF_TAPS) the driver would not build: the variant with the
-  // count as a uniform stands in for it (ProgramCache::blur), without another attempt per frame.
-  bool refused = false;
   // Which taps the kernel uniforms hold: kernel revision, term and axis (revision 0: none yet).
   std::uint64_t kernel_revision = 0;
   std::size_t uploaded_term = 0;
@@ -53,10 +49,10 @@ struct BlurProgram {
 
 struct CbfProgram {
   GLuint program = 0;
-  GLint source = -1, depth = -1, original = -1, normals = -1, pixels_per_mm = -1, ndc_from_depth = -1,
-        depth_terms = -1, clamp = -1, pixel_span = -1, ray_slope = -1, mm_per_world = -1, spike_blend = -1,
-        inv_two_variance = -1, round_to_half = -1;
-  GLint cdf = -1, footprint = -1, spacing = -1, half_taps = -1;  // footprint_cells.glsl's table and layout
+  GLint uniforms = -1;  // u_cbf: the pass's per-draw uniforms (pass_uniforms.hpp)
+  GLint source = -1, depth = -1, original = -1, normals = -1;  // samplers
+  // The kernel: footprint_cells.glsl's table and layout, the spike blend and the Gaussian's width.
+  GLint cdf = -1, footprint = -1, spacing = -1, half_taps = -1, spike_blend = -1, inv_two_variance = -1;
   std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
 };
 
@@ -68,12 +64,13 @@ struct StrengthProgram {
 
 struct ResolveProgram {
   GLuint program = 0;
-  GLint samples = -1, depth_mode = -1, ndc_from_depth = -1, depth_terms = -1, round_to_half = -1;
+  GLint uniforms = -1;  // u_resolve (pass_uniforms.hpp)
 };
 
 struct PassInputsProgram {
   GLuint program = 0;
-  GLint ndc_from_depth = -1, depth_terms = -1, tile_grid = -1;
+  GLint uniforms = -1;  // u_inputs (pass_uniforms.hpp)
+  GLint tile_grid = -1;
   // Reads the colour through image unit 0 in kComputeImageFormats[color_image] (SSS_COLOR_IMAGE);
   // -1: through the sampler on unit 0.
   int color_image = -1;
@@ -104,9 +101,8 @@ struct HalfInputsProgram {
 };
 struct HalfUpsampleProgram {
   GLuint program = 0;
-  GLint looks = -1, profile_count = -1, half_rect = -1, rect = -1, half_taps = -1, spacing = -1, depth_terms = -1,
-        round_to_half = -1;
-  GLint pixel_span = -1, ray_slope = -1;  // pass_surface.glsl's view offsets (the full-size passes' walk)
+  GLint uniforms = -1;  // u_upsample (pass_uniforms.hpp)
+  GLint looks = -1;     // per profile: pixels per mm on x and y, depth factor
   GLint tile_grid = -1;  // the tiles' bands (fullscreen.vert, the passes' spans)
 };
 
@@ -116,13 +112,19 @@ struct SampleWriteProgram {
   bool one_draw = false;            // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
 };
 
+// Every program builds exactly the variant it is asked for: which variant a frame needs is the
+// planner's (frame_plan.hpp). Where the driver refuses a program that another variant stands in
+// for (its taps or colour through the image unit, a preset tap count as a constant), the cache
+// records the refusal in the Capabilities it was given and logs it once (SSS_LOG_WARNING); the
+// caller then plans again and asks for the stand-in.
 class ProgramCache {
  public:
   // Builds the copy program and the fragment programs every host uses (written back, follow-surface,
   // hardware depth, culled by depth: the default settings'), so a driver that cannot compile them
-  // fails at create.
-  // `log` (may be empty) gets a DEBUG note per program built; it must outlive the cache.
-  sss_result init(const Functions* gl, GlslVariant variant, bool labels, const Log* log, std::string* message);
+  // fails at create. `log` (may be empty) gets a DEBUG note per program built; it and `caps` (the
+  // context's capabilities, where refusals are recorded) must outlive the cache.
+  sss_result init(const Functions* gl, GlslVariant variant, bool labels, const Log* log, Capabilities* caps,
+                  std::string* message);
   void destroy();  // deletes the programs (they must exist in the current context), then forget()s
   void forget();   // drops the names (context lost)
 
@@ -140,16 +142,13 @@ class ProgramCache {
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
   sss_result strength_combine(StrengthProgram** out, std::string* message);
-  // The fragment passes' inputs: colour and view distance (and R8UI indices), strength. A variant
-  // asking for the colour through an image unit gets the sampler's where the context has no image
-  // units or its driver refused such a program (*out's color_image says which was built).
+  // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
   sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
   sss_result half_upsample(const HalfVariant& v, HalfUpsampleProgram** out, std::string* message);
   // `columns`: the marks of the columns of tiles (SSS_TILE_COLUMNS), else of the tiles.
   // `color_image`: the colour's image format for the tiles' marks (ignored for the columns'), -1 for
-  // the sampler; a context without image units, or a driver that refused such a read
-  // (image_inputs_refused_), gets the sampler's.
+  // the sampler.
   sss_result tile_mark(bool columns, int color_image, TileMarkProgram** out, std::string* message);
   // The tiles debug view's program drawn with the vertex stage `spans` (SSS_DEBUG_VIEW_TILES).
   sss_result tile_view(TileSpans spans, TileViewProgram** out, std::string* message);
@@ -171,7 +170,8 @@ class ProgramCache {
   // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
   void set_unit(GLuint program, GLint location, GLuint unit) const;
   // A program the driver refused (`refused`, its log in *message) where another gives the same
-  // image: one SSS_LOG_WARNING naming both, and *message cleared for the one `instead`.
+  // image: one SSS_LOG_WARNING naming both, with the driver's log from *message; *message then
+  // says what was refused (the caller plans again).
   void stand_in(const std::string& refused, const std::string& instead, std::string* message) const;
   // Labels a new program and, where `built` names its kind, notes it (DEBUG) with its dialect
   // (nullptr: the context's).
@@ -181,16 +181,11 @@ class ProgramCache {
   GlslVariant variant_ = GlslVariant::glsl330;
   bool labels_ = false;
   int profile_capacity_ = SSS_MAX_PROFILES;
-  // The driver refused a blur program that reads its taps through the image unit: every blur
-  // program from then on reads them through the sampler (BlurVariant::image_taps).
-  bool image_taps_refused_ = false;
-  // The same for the passes' inputs and the tile marks reading the colour through the image unit
-  // (PassInputsVariant::color_image, TileMarkProgram::color_image).
-  bool image_inputs_refused_ = false;
+  Capabilities* caps_ = nullptr;
   const Log* log_ = nullptr;
   GLuint copy_ = 0;
-  // Fragment variants by blur_variant_index and half_taps (std::map: the programs stay put while a
-  // frame holds pointers to them, and only the tap counts a host uses get an entry).
+  // Fragment variants by blur_variant_index, half_taps and image_taps (std::map: the programs stay
+  // put while a frame holds pointers to them, and only the tap counts a host uses get an entry).
   std::map<int, BlurProgram> blur_;
   std::array<BlurProgram, kComputeVariantCount> compute_{};
   std::array<CbfProgram, kCbfVariantCount> cbf_{};

@@ -4,16 +4,19 @@
 //   target_pool.hpp    the render targets and framebuffers, reallocated when a frame's size changes
 //   profile_tables.hpp the per-pixel profiles' kernel tables (a uniform buffer)
 //   pass_setup.hpp     what every path shares (vertex array, samplers, attachments, measurements)
-//   runners.hpp        one runner per path: fragment (and cross-bilateral), masked, compute, MSAA
+//   frame_plan.hpp     the frame's decisions as a value: path, variants, targets, ordered steps
+//   plan_steps.hpp     the steps a plan runs, each in the file of its concept, and prepare_plan
 //   path_chooser.hpp   SSS_PATH_AUTO's timing of the paths
 // Callers validate their inputs first (api layer) and wrap run() in a StateGuard (state_guard.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 
 #include "filter_run.hpp"
+#include "frame_plan.hpp"
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
 #include "pass_queries.hpp"
@@ -26,6 +29,8 @@ namespace sss::gl {
 
 // A texture name that stands for "given" in the FilterRun of SeparableFilter::prewarm.
 inline constexpr GLuint kPrewarmPlaceholder = 0xFFFFFFFFu;
+
+struct PlanPrograms;
 
 class SeparableFilter {
  public:
@@ -65,6 +70,8 @@ class SeparableFilter {
   // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
   // (An MSAA frame resolves, then runs the fragment passes: SSS_PATH_FRAGMENT.)
   unsigned last_run_path() const { return reported_path_; }
+  // What the context can run and what its driver refused (the planner's input; known after init()).
+  const Capabilities& capabilities() const { return caps_; }
 
   // Context loss. The objects live in the GL context that init() ran in. When that context was
   // lost or destroyed and the host made a new one current (or made another, unrelated one current)
@@ -81,8 +88,16 @@ class SeparableFilter {
 
  private:
   // The path a frame takes: the one asked for, the one SSS_PATH_AUTO's timing chose, or the plain
-  // fragment passes where the one asked for cannot run this frame.
+  // fragment passes where the one asked for cannot run this frame (plan_executor.cpp).
   PathChooser::Choice choose_path(const FilterRun& run);
+  // The frame's plan into last_plan_ (the last frame's again where nothing it depends on changed),
+  // prepared: everything it names built and allocated (plan_executor.cpp).
+  sss_result plan(PassContext& ctx, const FilterRun& host, const FilterRun& passes, unsigned path,
+                  PlanPrograms* programs, std::string* message);
+  // plan_frame on `path`, then prepare_plan; planned again after a refusal the program cache
+  // recorded in caps_ (plan_executor.cpp).
+  sss_result plan_and_prepare(PassContext& ctx, const FilterRun& host, const FilterRun& passes, unsigned path,
+                              FramePlan* plan, PlanPrograms* programs, std::string* message);
   // Logs (INFO) why SSS_PATH_COMPUTE gives way to the fragment path, when the reason changes.
   // Logs why a path asked for cannot run the frame (INFO), when the reason changes.
   void note_refusal(const char** last, const char* path, const char* reason);
@@ -101,8 +116,20 @@ class SeparableFilter {
   int last_draws_ = 0;
   unsigned last_path_ = SSS_PATH_FRAGMENT;  // the last single-sample run's (its framebuffers were checked)
   unsigned reported_path_ = SSS_PATH_FRAGMENT;  // the last successful run's, MSAA included
-  const char* compute_refusal_ = "";  // compute_unavailable()'s last answer for SSS_PATH_COMPUTE
-  const char* half_refusal_ = "";     // half_resolution_unavailable()'s for SSS_PATH_HALF_RESOLUTION
+  const char* compute_refusal_ = "";  // path_unavailable()'s last answer for SSS_PATH_COMPUTE
+  const char* half_refusal_ = "";     // its last answer for SSS_PATH_HALF_RESOLUTION
+  Capabilities caps_;
+  FramePlan last_plan_;  // the last frame's plan (SSS_LOG_DEBUG prints a plan when it changes)
+  FramePlan next_plan_;  // where a frame plans, before it is compared with the last
+  // What a steady frame must share with the last one to run its plan again: the path, the drawn
+  // rectangle (not part of a steady frame's description) and the driver's refusals.
+  struct PlanKey {
+    unsigned path = SSS_PATH_FRAGMENT;
+    std::array<int, 4> draw_rect{};
+    std::size_t refusals = 0;
+  };
+  PlanKey plan_key_;
+  bool plan_cached_ = false;
 };
 
 }  // namespace sss::gl

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "../math/tile_culling.hpp"
+#include "pass_uniforms.hpp"
 #include "shader_constants.hpp"
 
 namespace sss::gl {
@@ -47,7 +48,7 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
                 v.image_taps ? 1 : 0, v.debug_view);
   std::string text = defines;
   if (v.half_taps > 0) text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n";
-  return text;
+  return text + uniform_struct_glsl(kBlurUniforms);  // the pass's uniform struct (pass_uniforms.hpp)
 }
 
 std::string compute_blur_defines(const BlurVariant& v, int image_format, ComputePass pass,
@@ -73,12 +74,12 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
                 "#define SSS_FOLLOW_SURFACE 0\n#define SSS_JITTER 0\n",
                 static_cast<int>(outside), outside == BlurOutside::write_centre ? 0 : 1, linear_depth ? 1 : 0,
                 normals ? 1 : 0, kCdfEntries, kMaxHalfTaps);
-  return defines;
+  return defines + uniform_struct_glsl(kCbfUniforms);
 }
 
 std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
   return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
-         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n");
+         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n") + uniform_struct_glsl(kResolveUniforms);
 }
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {
@@ -106,7 +107,7 @@ std::string pass_inputs_defines(const PassInputsVariant& v) {
   if (v.color_image >= 0) {
     text += std::string("#define SSS_COLOR_IMAGE_FORMAT ") + kComputeImageFormats[v.color_image].qualifier + "\n";
   }
-  return text;
+  return text + uniform_struct_glsl(kInputsUniforms);
 }
 
 std::string half_inputs_defines(const HalfVariant& v) {
@@ -116,7 +117,7 @@ std::string half_inputs_defines(const HalfVariant& v) {
 std::string half_upsample_defines(const HalfVariant& v) {
   // SSS_LINEAR_DEPTH 1: depth.glsl's clip_w only (the upsample reads view distances).
   return half_inputs_defines(v) + "#define SSS_LINEAR_DEPTH 1\n#define SSS_CDF_ENTRIES " +
-         std::to_string(math::kFootprintEntries) + "\n";
+         std::to_string(math::kFootprintEntries) + "\n" + uniform_struct_glsl(kUpsampleUniforms);
 }
 
 std::string lut_defines(int kind) {

@@ -39,7 +39,7 @@ struct BlurVariant {
   // a mip level per lane, around which the tap loop spills its registers; imageLoad is inlined.
   bool image_taps = false;
   // SSS_DEBUG_VIEW: 0 filters; else the fragment passes write that sss_debug_view instead
-  // (fragment_runner.cpp). Above kBlurVariantCount's variants in the index (blur_variant_index).
+  // (fragment_passes.cpp). Above kBlurVariantCount's variants in the index (blur_variant_index).
   int debug_view = 0;
 };
 // The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
@@ -53,6 +53,12 @@ inline int compile_time_half_taps(int half_taps) {
   return 0;
 }
 inline constexpr int kBlurVariantCount = 3 * 3 * 2 * 2 * 2 * 3 * 2;
+// The fragment stage a blur variant is built from: the filter (separable_blur.frag), or for a debug
+// view the same passes writing what they would use (blur_debug_view.frag); both read their pixel
+// through blur_pixel.glsl.
+inline const char* blur_fragment_file(const BlurVariant& v) {
+  return v.debug_view != 0 ? "blur_debug_view.frag" : "separable_blur.frag";
+}
 // A variant's index: in [0, kBlurVariantCount) for the filtering variants, above for the debug views'
 // (debug_view · kBlurVariantCount + the rest); the variant at an index (below kBlurVariantCount).
 int blur_variant_index(const BlurVariant& v);
@@ -80,7 +86,7 @@ inline constexpr ComputeImageFormat kComputeImageFormats[] = {
 inline constexpr int kComputeImageFormatCount = 3;
 // The compute path's dispatches: the horizontal pass (reading its pixels' strength from the
 // colour, or, `horizontal_marked`, from the target image, which a stencil draw marked first:
-// compute_runner.cpp) and the vertical pass (SSS_AXIS, SSS_MARKED).
+// compute_passes.cpp) and the vertical pass (SSS_AXIS, SSS_MARKED).
 enum class ComputePass : int { horizontal = 0, horizontal_marked = 1, vertical = 2 };
 inline constexpr int kComputePassCount = 3;
 struct ComputeTile;  // shader_constants.hpp

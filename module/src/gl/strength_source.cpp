@@ -7,52 +7,28 @@
 // a separate output: its rgb, and the untouched pixels' exact values (the copy holds an
 // R11F_G11F_B10F value exactly: RGBA16F has more bits in every field and the same exponent range).
 #include "debug_label.hpp"
-#include "runners.hpp"
+#include "plan_steps.hpp"
 #include "texture_units.hpp"
 
 namespace sss::gl {
 
-namespace {
-GLint copy_format(const FilterRun& run) { return run.intermediate_format(); }
-}  // namespace
-
-sss_result prepare_strength_source(PassContext& ctx, const FilterRun& run, std::string* message) {
-  StrengthProgram* program = nullptr;
-  const sss_result r = ctx.programs.strength_combine(&program, message);
-  if (r != SSS_OK) return r;
-  return ctx.targets.ensure_strength_source(copy_format(run), run.color.width, run.color.height, message);
-}
-
-sss_result draw_strength_source(PassContext& ctx, const FilterRun& run, std::string* message) {
+sss_result draw_strength_source(PassContext& ctx, const FilterRun& run, const PlanPrograms& p, std::string* message) {
   const Functions& f = ctx.gl;
-  StrengthProgram* program = nullptr;
-  sss_result r = prepare_strength_source(ctx, run, message);
-  if (r == SSS_OK) r = ctx.programs.strength_combine(&program, message);
-  if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss colour with the strength texture");
   begin_passes(ctx, run.viewport);
   f.Disable(STENCIL_TEST);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, ctx.targets.names().strength_framebuffer);
-  r = check_framebuffer(ctx, "colour with the strength texture", message);
+  const sss_result r = check_framebuffer(ctx, "colour with the strength texture", message);
   if (r != SSS_OK) return r;
-  f.UseProgram(program->program);
-  f.Uniform1i(program->round_to_half, copy_format(run) == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  f.UseProgram(p.strength->program);
+  // The copy has the intermediate's format (passes_run): rounded to nearest where that is RGBA16F.
+  f.Uniform1i(p.strength->round_to_half, run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
   bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
   // GL_NEAREST on ES, where an R32F texture is not filterable (texelFetch needs it complete).
   bind_texture(ctx, unit::strength, run.strength.name, ctx.objects.depth_sampler);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
   return SSS_OK;
-}
-
-FilterRun with_strength_source(const FilterRun& run, const Targets& targets) {
-  FilterRun passes = run;
-  if (run.writes_back()) passes.output = run.color;
-  passes.color.name = targets.strength_source;
-  passes.color.internal_format = copy_format(run);
-  passes.color_complete = true;  // one level (TargetPool)
-  passes.strength = TextureInfo{};
-  return passes;
 }
 
 }  // namespace sss::gl

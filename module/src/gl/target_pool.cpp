@@ -200,7 +200,7 @@ void TargetPool::ensure_msaa_framebuffers() {
   f.GenFramebuffers(2, framebuffers);
   t_.resolve_framebuffer = framebuffers[0];
   t_.sample_write_framebuffer = framebuffers[1];
-  // The resolve's draw buffers are set per frame (msaa_runner.cpp): 2, or 4 writing back, and 7
+  // The resolve's draw buffers are set per frame (msaa_resolve.cpp): 2, or 4 writing back, and 7
   // with the passes' inputs (attach_resolve_inputs).
   resolve_inputs_attached_ = false;
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);

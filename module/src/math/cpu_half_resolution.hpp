@@ -1,4 +1,4 @@
-// A CPU model of the half-resolution passes (half_resolution.hpp; module/src/gl/half_runner.cpp and
+// A CPU model of the half-resolution passes (half_resolution.hpp; module/src/gl/half_resolution_passes.cpp and
 // module/shaders/half_inputs.frag, half_upsample.frag): the same 2x2 reduction, the same passes at
 // half size (cpu_separable_filter's model of them), the same upsample and, for the pixels it does
 // not serve, the full-size passes. Tests compare the GL result against it. Math layer: no GL; not

@@ -1,5 +1,5 @@
 // The half-resolution passes (sss.h SSS_PATH_HALF_RESOLUTION; issue 24 item 5): what the GL runner
-// (module/src/gl/half_runner.cpp) and its CPU model (cpu_half_resolution.hpp) share. Math layer: no GL.
+// (module/src/gl/half_resolution_passes.cpp) and its CPU model (cpu_half_resolution.hpp) share. Math layer: no GL.
 //
 // The frame's inputs are reduced to half size (each 2x2 block to one texel: the block's nearest
 // translucent pixel and those of its pixels on the same surface and profile, averaged), the two

@@ -1,4 +1,4 @@
-// The masked path's tile culling (module/src/gl/tile_culling.cpp, module/shaders/tile_mark.frag and
+// The masked path's tile culling (module/src/gl/tile_marks.cpp, module/shaders/tile_mark.frag and
 // fullscreen.vert's SSS_TILE_SPANS), as plain functions: the GL draws compute exactly this, and the
 // unit tests check on it that the rows it draws hold every pixel the passes read or write.
 //

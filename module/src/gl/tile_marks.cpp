@@ -9,32 +9,20 @@
 // culling depth that draw did not write; into a separate output, whose copy of the untouched
 // pixels tests every pixel, the inputs draw clears the culling depth first (not translucent).
 #include "debug_label.hpp"
-#include "runners.hpp"
+#include "plan_steps.hpp"
 #include "texture_units.hpp"
 
 #include "../math/tile_culling.hpp"
 
 namespace sss::gl {
 
-sss_result prepare_tile_culling(PassContext& ctx, const FilterRun& run, std::string* message) {
-  TileMarkProgram* unused = nullptr;
-  sss_result r = ctx.programs.tile_mark(false, readable_color_image(run), &unused, message);
-  if (r == SSS_OK) r = ctx.programs.tile_mark(true, -1, &unused, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_tile_targets(run.color.width, run.color.height, message);
-  return r;
-}
-
-sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* message) {
+void mark_tiles(PassContext& ctx, const FilterRun& run, const PlanPrograms& p) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   const std::array<int, 4>& rect = run.draw_rect;
   const int across = math::tiles_across(rect[2]), down = math::tiles_across(rect[3]);
-  TileMarkProgram* tiles = nullptr;
-  TileMarkProgram* columns = nullptr;
-  // Built by prepare_tile_culling.
-  sss_result r = ctx.programs.tile_mark(false, readable_color_image(run), &tiles, message);
-  if (r == SSS_OK) r = ctx.programs.tile_mark(true, -1, &columns, message);
-  if (r != SSS_OK) return r;
+  const TileMarkProgram* tiles = p.tile_marks;
+  const TileMarkProgram* columns = p.tile_columns;
   DebugGroup group(f, ctx.labels, "sss tile marks (masked path)");
   f.Disable(DEPTH_TEST);
   f.Disable(STENCIL_TEST);
@@ -67,7 +55,6 @@ sss_result mark_tiles(PassContext& ctx, const FilterRun& run, std::string* messa
   ctx.tile_grid = {static_cast<GLfloat>(across), static_cast<GLfloat>(down),
                    2.0f * static_cast<GLfloat>(math::kTileSize) / static_cast<GLfloat>(rect[2]),
                    2.0f * static_cast<GLfloat>(math::kTileSize) / static_cast<GLfloat>(rect[3])};
-  return SSS_OK;
 }
 
 }  // namespace sss::gl

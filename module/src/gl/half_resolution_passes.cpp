@@ -30,35 +30,14 @@
 #include "../math/half_resolution.hpp"
 #include "../math/tile_culling.hpp"
 #include "blur_pass.hpp"
+#include "pass_uniforms.hpp"
 #include "debug_label.hpp"
-#include "runners.hpp"
+#include "plan_steps.hpp"
 #include "texture_units.hpp"
 
 namespace sss::gl {
 
 namespace {
-
-struct HalfPrograms {
-  BlurProgram* horizontal = nullptr;  // packed output, used at both sizes
-  BlurProgram* half_vertical = nullptr;  // into half_result
-  BlurProgram* vertical = nullptr;     // the full-size vertical pass into the target
-  HalfInputsProgram* inputs = nullptr;
-  HalfUpsampleProgram* upsample = nullptr;
-};
-
-HalfVariant half_variant(const FilterRun& run) {
-  HalfVariant v;
-  v.profile_ids = profile_ids_variant(run);
-  return v;
-}
-
-// The full-size inputs draw's variant: it marks the culling depth with a host stencil too (the
-// half-size passes need alpha's mark).
-PassInputsVariant full_size_inputs_variant(const FilterRun& run) {
-  PassInputsVariant v = pass_inputs_variant(run);
-  v.mark_depth = true;
-  return v;
-}
 
 const math::PassKernel& kernel_of(const FilterRun& run, int profile) {
   return run.has_profiles() ? *run.profile_kernels[static_cast<std::size_t>(profile)] : *run.kernel;
@@ -92,38 +71,6 @@ std::uint64_t tables_revision(const FilterRun& run) {
   return run.has_profiles() ? run.profiles_revision * 2 + 1 : run.kernel_revision * 2;
 }
 
-// The bands of tiles (the file's comment): no host stencil (whose test the bands would not know),
-// and 2x2 blocks that do not straddle tiles.
-bool uses_tiles(const FilterRun& run) {
-  return run.stencil == nullptr && run.draw_rect[0] % 2 == 0 && run.draw_rect[1] % 2 == 0;
-}
-
-sss_result prepare(PassContext& ctx, const FilterRun& run, HalfPrograms* p, std::string* message) {
-  const Outside last = run.writes_back() ? Outside::discard : Outside::copy_original;
-  sss_result r = ctx.programs.blur(fragment_blur_variant(run, 0, 0, Outside::write_centre), &p->horizontal, message);
-  if (r == SSS_OK) {
-    r = ctx.programs.blur(fragment_blur_variant(run, 0, 1, Outside::write_centre), &p->half_vertical, message);
-  }
-  if (r == SSS_OK) r = ctx.programs.blur(fragment_blur_variant(run, 0, 1, last), &p->vertical, message);
-  PassInputsProgram* unused = nullptr;
-  if (r == SSS_OK) r = ctx.programs.pass_inputs(full_size_inputs_variant(run), &unused, message);
-  if (r == SSS_OK) r = ctx.programs.half_inputs(half_variant(run), &p->inputs, message);
-  if (r == SSS_OK) r = ctx.programs.half_upsample(half_variant(run), &p->upsample, message);
-  const int w = run.color.width, h = run.color.height;
-  if (r == SSS_OK) r = ctx.targets.ensure_pass_targets(w, h, message);
-  // The culling depth: with a host stencil, the module's copy of it in the host's format (copy_stencil).
-  const GLint depth_format = run.stencil != nullptr ? run.stencil->texture.internal_format
-                                                    : static_cast<GLint>(DEPTH24_STENCIL8);
-  if (r == SSS_OK) r = ctx.targets.ensure_stencil_buffer(depth_format, w, h, message);
-  if (r == SSS_OK) r = ctx.targets.ensure_half_targets(w, h, run.intermediate_format(), message);
-  if (r == SSS_OK && uses_tiles(run)) r = prepare_tile_culling(ctx, run, message);
-  // The tables only when the kernels changed: a steady frame allocates nothing.
-  if (r == SSS_OK && !ctx.targets.half_tables_hold(tables_revision(run))) {
-    r = ctx.targets.upload_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
-  }
-  return r;
-}
-
 // The run at half size: half the pixels per mm, taps kept in the half-size rectangle.
 FilterRun half_size_run(const FilterRun& run, const std::array<int, 4>& half) {
   FilterRun h = run;
@@ -153,7 +100,7 @@ sss_result check_half_size_framebuffers(PassContext& ctx, std::string* message) 
   return SSS_OK;
 }
 
-void draw_reduction(PassContext& ctx, const FilterRun& run, HalfInputsProgram& p) {
+void draw_reduction(PassContext& ctx, const FilterRun& run, const HalfInputsProgram& p) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.half_inputs_framebuffer);
@@ -182,15 +129,15 @@ void draw_half_pass(PassContext& ctx, const FilterRun& half, BlurProgram& p, int
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     f.ClearBufferfv(COLOR, 0, zero);
   }
-  set_blur_uniforms(ctx, p, half, 0, axis);
   // The vertical pass writes half_result, in the intermediate's format (not the target's).
-  if (axis == 1) f.Uniform1i(p.round_to_half, half.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  const int round = axis == 1 ? (half.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0) : -1;
+  set_blur_uniforms(ctx, p, half, 0, axis, round);
   bind_packed_inputs(ctx, p, axis == 0 ? t.half_taps : t.half_intermediate, t.half_strength);
   if (half.has_profiles()) bind_profile_inputs(ctx, half, axis);
   draw_cover(ctx, p.tile_grid);
 }
 
-void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& p, const std::array<int, 4>& half) {
+void draw_upsample(PassContext& ctx, const FilterRun& run, const HalfUpsampleProgram& p, const std::array<int, 4>& half) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
   DebugGroup group(f, ctx.labels, "sss half-size upsample");
@@ -204,18 +151,9 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, HalfUpsampleProgram& 
     looks[at + 2] = k.follow_surface_factor;
   }
   f.Uniform4fv(p.looks, 16, looks.data());
-  f.Uniform1i(p.profile_count, run.profile_count);
-  f.Uniform4i(p.half_rect, half[0], half[1], half[0] + half[2] - 1, half[1] + half[3] - 1);
-  const std::vector<float>& spacing = run.kernel->spacing;
-  f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
-  f.Uniform2f(p.spacing, spacing.empty() ? 0.0f : spacing[0], spacing.size() < 2 ? 0.0f : spacing[1]);
-  const std::array<int, 4>& d = run.draw_rect;
-  f.Uniform4i(p.rect, d[0], d[1], d[0] + d[2] - 1, d[1] + d[3] - 1);
-  const math::PassConstants& k = run.constants;
-  f.Uniform4f(p.depth_terms, k.depth_terms[0], k.depth_terms[1], k.depth_terms[2], k.depth_terms[3]);
-  f.Uniform2f(p.pixel_span, k.pixel_span[0], k.pixel_span[1]);
-  f.Uniform4f(p.ray_slope, k.slope_scale[0], k.slope_scale[1], k.slope_bias[0], k.slope_bias[1]);
-  f.Uniform1i(p.round_to_half, run.target().internal_format == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  const UpsampleUniforms u =
+      fill_upsample_uniforms(run, half, run.target().internal_format == static_cast<GLint>(RGBA16F));
+  f.Uniform4fv(p.uniforms, kUpsampleUniforms.vectors, u.values.data());
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::half_source, t.half_taps, ctx.objects.nearest_sampler);
@@ -240,25 +178,13 @@ void copy_untouched(PassContext& ctx, const FilterRun& run) {
   draw_copy(ctx, run.color.name);
 }
 
-// Every check, and the draws that write only the module's targets: the host stencil's copy, the
-// inputs (marking the culling depth), the framebuffers; the output attached (with a region into a
-// separate output, the viewport's colour copied there first). Nothing is measured yet.
-sss_result begin_frame(PassContext& ctx, const FilterRun& run, std::string* message) {
-  const Targets& t = ctx.targets.names();
-  begin_passes(ctx, run.draw_rect);
-  sss_result r = SSS_OK;
-  if (run.stencil != nullptr) r = copy_stencil(ctx, run, *run.stencil, message, t.pass_inputs_framebuffer);
-  if (r == SSS_OK && uses_tiles(run)) r = mark_tiles(ctx, run, message);
-  if (r == SSS_OK) r = draw_pass_inputs(ctx, run, full_size_inputs_variant(run), message);
-  if (r == SSS_OK) r = check_half_size_framebuffers(ctx, message);
-  if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
-  if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);
-  return r;
-}
+}  // namespace
 
 // Steps 1 and 2 of the file's comment: the reduction and the passes at half size.
-void draw_half_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& p, const std::array<int, 4>& half) {
+void draw_half_size(PassContext& ctx, const FilterRun& run, const PlanPrograms& p, PlanMeasurement& measure) {
   const Functions& f = ctx.gl;
+  const std::array<int, 4> half = math::half_rect(run.draw_rect);
+  measure.get().begin(PassQueries::horizontal);
   set_viewport(f, half);
   // The bands at half size: the same tiles, 8 texels a side (uses_tiles: blocks never straddle them).
   const std::array<GLfloat, 4> full_grid = ctx.tile_grid;
@@ -268,20 +194,23 @@ void draw_half_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& 
   f.Enable(DEPTH_TEST);
   f.DepthFunc(ALWAYS);  // the reduction marks every texel it draws
   f.DepthMask(1);
-  draw_reduction(ctx, run, *p.inputs);
+  draw_reduction(ctx, run, *p.half_inputs);
   f.DepthMask(0);
   f.DepthFunc(GREATER);  // the half-size passes: translucent texels only
   const FilterRun half_run = half_size_run(run, half);
-  draw_half_pass(ctx, half_run, *p.horizontal, 0);
+  draw_half_pass(ctx, half_run, *p.half_horizontal, 0);
   draw_half_pass(ctx, half_run, *p.half_vertical, 1);
   ctx.tile_grid = full_grid;
 }
 
-// Steps 3 to 5: full size, into the host's colour or output.
-void draw_full_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& p, const std::array<int, 4>& half,
-                    FrameMeasurement& measure) {
+// Steps 3 to 5: full size, into the host's colour or output. gpu_time_ms[0] spans the half-size
+// draws, the upsample and the full-size horizontal pass; [1] the full-size vertical pass (as on the
+// fragment path, the inputs draw is not measured).
+void draw_full_size(PassContext& ctx, const FilterRun& run, const PlanPrograms& p, PlanMeasurement& measurement) {
   const Functions& f = ctx.gl;
   const Targets& t = ctx.targets.names();
+  const std::array<int, 4> half = math::half_rect(run.draw_rect);
+  FrameMeasurement& measure = measurement.get();
   set_viewport(f, run.draw_rect);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
   if (run.writes_back()) {
@@ -293,14 +222,14 @@ void draw_full_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& 
   set_stencil_test(f, run.stencil, EQUAL);  // the host's stencil culls too (no stencil: the test is off)
   f.DepthFunc(GREATER);
   f.DepthMask(1);
-  draw_upsample(ctx, run, *p.upsample, half);
+  draw_upsample(ctx, run, *p.half_upsample, half);
   f.DepthMask(0);
   // The pixels the upsample left (depth still 0), nearer than the marks' 0.5 and 1.
   f.set_depth_range(0.0f, 0.5f);
   {
     DebugGroup group(f, ctx.labels, "sss horizontal pass (full size, narrow kernels)");
     f.BindFramebuffer(DRAW_FRAMEBUFFER, t.pass_intermediate_framebuffer);
-    draw_blur(ctx, *p.horizontal, run, t.pass_taps, 0, 0);
+    draw_blur(ctx, *p.half_horizontal, run, t.pass_taps, 0, 0);
   }
   measure.end(PassQueries::horizontal);
   {
@@ -309,49 +238,29 @@ void draw_full_size(PassContext& ctx, const FilterRun& run, const HalfPrograms& 
     f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
     bind_original(ctx, run);
     measure.begin_pixels();
-    draw_blur(ctx, *p.vertical, run, t.pass_intermediate, 0, 1);
+    draw_blur(ctx, *p.full_vertical, run, t.pass_intermediate, 0, 1);
     measure.end_pixels();
     measure.end(PassQueries::vertical);
   }
   f.set_depth_range(0.0f, 1.0f);
-}
-
-}  // namespace
-
-const char* half_resolution_unavailable(const FilterRun& run) {
-  if (run.identity) return "nothing to blur";
-  if (run.color.multisampled()) return "a multisampled colour";
-  if (run.cross_bilateral) return "the cross-bilateral mode";
-  if (run.kernel->terms.size() > 1) return "a kernel of several terms";
-  if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
-  return "";
-}
-
-sss_result prepare_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
-  HalfPrograms programs;
-  return prepare(ctx, run, &programs, message);
-}
-
-// gpu_time_ms[0] spans the half-size draws, the upsample and the full-size horizontal pass; [1]
-// the full-size vertical pass (as on the fragment path, the inputs draw is not measured).
-sss_result run_half_resolution(PassContext& ctx, const FilterRun& run, std::string* message) {
-  HalfPrograms p;
-  sss_result r = prepare(ctx, run, &p, message);
-  if (r == SSS_OK) r = begin_frame(ctx, run, message);
-  if (r != SSS_OK) {
-    ctx.tile_bands = 0;
-    detach_output(ctx);
-    return r;
-  }
-  const std::array<int, 4> half = math::half_rect(run.draw_rect);
-  FrameMeasurement measure(ctx.queries, run.frame);
-  measure.begin(PassQueries::horizontal);
-  draw_half_size(ctx, run, p, half);
-  draw_full_size(ctx, run, p, half, measure);
   measure.end_frame();
-  ctx.tile_bands = 0;
-  detach_output(ctx);
-  return SSS_OK;
+}
+
+// The checks before the half-size and full-size draws: the three half-size framebuffers, the
+// culling depth on the horizontal pass's, the output (with a region into a separate output, the
+// viewport's colour copied there first).
+sss_result attach_half_targets(PassContext& ctx, const FilterRun& run, std::string* message) {
+  const Targets& t = ctx.targets.names();
+  sss_result r = check_half_size_framebuffers(ctx, message);
+  if (r == SSS_OK) r = attach_stencil(ctx, t.pass_intermediate_framebuffer, t.stencil_buffer, message);
+  if (r == SSS_OK) r = attach_output(ctx, run, t.stencil_buffer, message);
+  return r;
+}
+
+sss_result upload_half_tables(PassContext& ctx, const FilterRun& run, std::string* message) {
+  // Only when the kernels changed: a steady frame allocates nothing.
+  if (ctx.targets.half_tables_hold(tables_revision(run))) return SSS_OK;
+  return ctx.targets.upload_half_tables(tables_revision(run), 2 * run.profile_count, table_texels(run), message);
 }
 
 }  // namespace sss::gl
