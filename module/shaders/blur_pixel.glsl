@@ -21,7 +21,7 @@ layout(binding = 1, r32ui) readonly uniform highp uimage2D u_strength_image;  //
 #endif
 // The pass's own numbers (u_pixels_per_mm, u_follow_surface, u_clamp, u_profile_count and the
 // pieces' u_ndc_from_depth, u_depth_terms, u_pixel_span, u_ray_slope, u_round_to_half,
-// u_noise_index) are the fields of u_blur, declared with the variant's #defines
+// u_noise_index) are the blur pass's uniform struct, declared with the variant's #defines
 // (module/src/gl/pass_uniforms.hpp).
 
 #if SSS_PROFILE_IDS

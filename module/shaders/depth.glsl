@@ -1,7 +1,7 @@
 // Depth linearisation, for every pass that reads the host's depth (separable_blur.frag and .comp,
 // cbf_blur.frag, msaa_resolve.frag). SSS_LINEAR_DEPTH 0: the host's depth is hardware depth,
 // linearised with the projection; 1: it holds the view distance already.
-#ifndef u_depth_terms  // a pass's uniform struct names it (module/src/gl/pass_uniforms.hpp)
+#ifndef SSS_UNIFORM_u_depth_terms  // a pass kind's uniform struct declares it (module/src/gl/pass_uniforms.hpp)
 uniform vec2 u_ndc_from_depth;  // z_ndc = depth · x + y
 uniform vec4 u_depth_terms;     // projection m10, m11, m14, m15
 #endif

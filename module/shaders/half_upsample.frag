@@ -31,7 +31,7 @@ uniform vec4 u_looks[16];     // per profile: pixels per mm on x and y (clip w =
 // u_profile_count, u_half_rect (the half-size texels the passes covered: first and last, x0, y0,
 // x1, y1), u_rect (the drawn rectangle's first and last pixel), u_half_taps (the kernel's most taps
 // per side), u_spacing (its sparse layout's first two taps, as shares of the reach) and the pieces'
-// numbers are the fields of u_upsample, declared with the variant's #defines
+// numbers are the upsample's uniform struct, declared with the variant's #defines
 // (module/src/gl/pass_uniforms.hpp).
 uniform float u_min_reach;    // math::kHalfResolutionMinReachPixels
 uniform float u_min_weight;   // math::kHalfResolutionMinWeight

@@ -1,7 +1,7 @@
 // The jitter of sparse taps (SSS_JITTER 1; nothing otherwise), for separable_blur.frag and .comp.
 
 #if SSS_JITTER
-#ifndef u_noise_index  // a pass's uniform struct names it (module/src/gl/pass_uniforms.hpp)
+#ifndef SSS_UNIFORM_u_noise_index  // a pass kind's uniform struct declares it (module/src/gl/pass_uniforms.hpp)
 uniform uint u_noise_index;  // sss_frame.noise_index
 #endif
 

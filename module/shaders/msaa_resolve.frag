@@ -21,7 +21,7 @@
 SSS_BINDING(0) uniform sampler2DMS u_color;
 SSS_BINDING(1) uniform sampler2DMS u_depth;
 // u_samples (the textures' sample count, both have the same), u_depth_mode (0 average, 1 sample
-// 0, 2 minimum: nearest, 3 maximum: farthest) and the pieces' numbers are the fields of u_resolve,
+// 0, 2 minimum: nearest, 3 maximum: farthest) and the pieces' numbers are the resolve's uniform struct,
 // declared with the variant's #defines (module/src/gl/pass_uniforms.hpp).
 
 layout(location = 0) out vec4 o_color;

@@ -8,7 +8,7 @@
 // CPU model, 1.16 on llvmpipe). A value rounded here is a half float already, which every
 // conversion stores exactly, so each driver writes what sss::math::round_to_half
 // (module/src/math/half_float.cpp) gives the CPU model: nearest, ties to even.
-#ifndef u_round_to_half  // a pass's uniform struct names it (module/src/gl/pass_uniforms.hpp)
+#ifndef SSS_UNIFORM_u_round_to_half  // a pass kind's uniform struct declares it (module/src/gl/pass_uniforms.hpp)
 uniform bool u_round_to_half;
 #endif
 

@@ -6,7 +6,7 @@
 // depth test). Written without branches (each choice a select): a SIMD rasteriser runs both sides
 // of every `if` anyway. Before this piece the shader includes depth.glsl (u_depth_terms, clip_w).
 
-#ifndef u_ray_slope  // a pass's uniform struct names it (module/src/gl/pass_uniforms.hpp)
+#ifndef SSS_UNIFORM_u_ray_slope  // a pass kind's uniform struct declares it (module/src/gl/pass_uniforms.hpp)
 uniform vec2 u_pixel_span;  // world width of a window pixel per unit of clip w, x and y (signed)
 uniform vec4 u_ray_slope;   // the view ray's lateral slope at window position p: p · xy + zw
 #endif

@@ -62,7 +62,7 @@ layout(binding = 0, SSS_IMAGE_FORMAT) uniform restrict writeonly image2D u_targe
 
 // u_rect (the pixels this pass writes: x, y, width, height), u_pixels_per_mm, u_follow_surface,
 // u_clamp (tap positions are kept inside: xy min, zw max, in pixels) and the pieces' numbers are
-// the fields of u_blur, declared with the variant's #defines (module/src/gl/pass_uniforms.hpp).
+// the blur pass's uniform struct, declared with the variant's #defines (module/src/gl/pass_uniforms.hpp).
 
 const ivec2 kAxis = ivec2(1 - SSS_AXIS, SSS_AXIS);
 const ivec2 kAcross = ivec2(SSS_AXIS, 1 - SSS_AXIS);

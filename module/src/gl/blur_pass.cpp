@@ -60,7 +60,7 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   // u_inv_two_variance, and its follow-surface number in profile mm per world unit).
   const bool rounds = round_to_half >= 0 ? round_to_half != 0 : writes_half_float(f, run, term, axis);
   const BlurUniforms u = fill_blur_uniforms(run, axis, p.inv_two_variance >= 0, rounds);
-  f.Uniform4fv(p.uniforms, kBlurUniformVectors, u.values.data());
+  upload_uniforms(f, kBlurUniforms, p.fields, u.values.data());
   if (p.profile >= 0) {
     // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
     std::array<float, 4 * math::kMaxProfiles> looks{};

@@ -45,7 +45,7 @@ void set_cbf_uniforms(const Functions& f, CbfProgram& p, const FilterRun& run, i
     p.kernel_revision = run.cbf_kernel_revision;
   }
   const CbfUniforms u = fill_cbf_uniforms(run, axis, writes_half_float(f, run, 0, axis));
-  f.Uniform4fv(p.uniforms, kCbfUniforms.vectors, u.values.data());
+  upload_uniforms(f, kCbfUniforms, p.fields, u.values.data());
 }
 
 void draw_cbf(PassContext& ctx, CbfProgram& p, const FilterRun& run, GLuint source, int axis) {

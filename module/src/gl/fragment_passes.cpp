@@ -54,7 +54,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const FrameP
   }
   f.UseProgram(p.program);
   const InputsUniforms u = fill_inputs_uniforms(run.constants);
-  f.Uniform4fv(p.uniforms, kInputsUniforms.vectors, u.values.data());
+  upload_uniforms(f, kInputsUniforms, p.fields, u.values.data());
   if (p.color_image >= 0) {
     // As bind_packed_inputs' image taps: the colour was last written as a render target.
     f.MemoryBarrier(SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -140,10 +140,10 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, const Step& step
     // A view: the pixels the culling keeps from the passes are left alone, (0, 0, 0, 1), drawn by
     // the same program (no scissor box to set, no clear of the host's texture outside the viewport).
     set_culling(f, run, NOTEQUAL);
-    BlurUniforms fill = fill_blur_uniforms(run, 1, p.inv_two_variance >= 0, writes_half_float(f, run, step.term, 1));
-    fill.set(kBlurUniforms, BlurField::debug_fill, 1.0f);
-    f.Uniform4fv(p.uniforms, kBlurUniformVectors, fill.values.data());
+    const GLint fill = p.fields.at[static_cast<std::size_t>(BlurField::debug_fill)];
+    f.Uniform1i(fill, 1);
     draw_cover(ctx, p.tile_grid);
+    f.Uniform1i(fill, 0);
   } else if (step.copy_untouched) {
     set_culling(f, run, NOTEQUAL);
     draw_copy(ctx, run.color.name);

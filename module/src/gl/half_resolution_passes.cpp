@@ -153,7 +153,7 @@ void draw_upsample(PassContext& ctx, const FilterRun& run, const HalfUpsamplePro
   f.Uniform4fv(p.looks, 16, looks.data());
   const UpsampleUniforms u =
       fill_upsample_uniforms(run, half, run.target().internal_format == static_cast<GLint>(RGBA16F));
-  f.Uniform4fv(p.uniforms, kUpsampleUniforms.vectors, u.values.data());
+  upload_uniforms(f, kUpsampleUniforms, p.fields, u.values.data());
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::half_source, t.half_taps, ctx.objects.nearest_sampler);

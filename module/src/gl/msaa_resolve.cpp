@@ -34,7 +34,7 @@ sss_result resolve_msaa(PassContext& ctx, const FilterRun& run, const FramePlan&
   DebugGroup group(f, ctx.labels, "sss msaa resolve");
   f.UseProgram(p.program);
   const ResolveUniforms u = fill_resolve_uniforms(run);
-  f.Uniform4fv(p.uniforms, kResolveUniforms.vectors, u.values.data());
+  upload_uniforms(f, kResolveUniforms, p.fields, u.values.data());
   f.ActiveTexture(TEXTURE0 + unit::msaa_color);
   f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.color.name);
   f.ActiveTexture(TEXTURE0 + unit::msaa_depth);

@@ -6,26 +6,14 @@ namespace sss::gl {
 
 namespace {
 
-const char* components(int offset, int size) {
-  static const char* const kOne[] = {"x", "y", "z", "w"};
-  if (size == 4) return "";
-  if (size == 2) return offset % 4 == 0 ? "xy" : "zw";
-  return kOne[offset % 4];
-}
-
-// The GLSL expression that reads `f` from the struct's array.
-std::string read_field(const char* array, const UniformField& f) {
-  const std::string vector = std::string(array) + "[" + std::to_string(f.offset / 4) + "]";
-  const char* part_of = components(f.offset, f.size);
-  const std::string part = *part_of != '\0' ? vector + "." + part_of : vector;
+// A field's GLSL type.
+const char* glsl_type(const UniformField& f) {
   switch (f.kind) {
-    case UniformKind::boolean: return "(" + part + " != 0.0)";
-    case UniformKind::integer: return "int(" + part + ")";
-    case UniformKind::integers: return "ivec4(" + part + ")";
-    case UniformKind::uint_split:
-      return "(uint(" + vector + "." + components(f.offset, 1) + ") * 65536u + uint(" + vector + "." +
-             components(f.offset + 1, 1) + "))";
-    default: return "(" + part + ")";
+    case UniformKind::boolean: return "bool";
+    case UniformKind::integer: return "int";
+    case UniformKind::integers: return "ivec4";
+    case UniformKind::uint_split: return "uint";
+    default: return f.size == 1 ? "float" : f.size == 2 ? "vec2" : "vec4";
   }
 }
 
@@ -71,11 +59,43 @@ std::array<int, 4> corners(const std::array<int, 4>& r) { return {r[0], r[1], r[
 }  // namespace
 
 std::string uniform_struct_glsl(const UniformStruct& s) {
-  std::string text = std::string("uniform vec4 ") + s.array + "[" + std::to_string(s.vectors) + "];\n";
+  std::string text;
   for (std::size_t i = 0; i < s.count; ++i) {
-    text += std::string("#define ") + s.fields[i].glsl_name + " " + read_field(s.array, s.fields[i]) + "\n";
+    const UniformField& f = s.fields[i];
+    text += std::string("uniform ") + glsl_type(f) + " " + f.glsl_name + ";\n#define SSS_UNIFORM_" + f.glsl_name + "\n";
   }
   return text;
+}
+
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s) {
+  UniformLocations l;
+  for (std::size_t i = 0; i < s.count; ++i) l.at[i] = gl.GetUniformLocation(program, s.fields[i].glsl_name);
+  return l;
+}
+
+void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations, const float* values) {
+  for (std::size_t i = 0; i < s.count; ++i) {
+    const GLint at = locations.at[i];
+    if (at < 0) continue;
+    const UniformField& f = s.fields[i];
+    const float* v = values + f.offset;
+    switch (f.kind) {
+      case UniformKind::boolean:
+      case UniformKind::integer: gl.Uniform1i(at, static_cast<GLint>(v[0])); break;
+      case UniformKind::integers:
+        gl.Uniform4i(at, static_cast<GLint>(v[0]), static_cast<GLint>(v[1]), static_cast<GLint>(v[2]),
+                     static_cast<GLint>(v[3]));
+        break;
+      case UniformKind::uint_split:
+        gl.Uniform1ui(at, static_cast<GLuint>(v[0]) * 65536u + static_cast<GLuint>(v[1]));
+        break;
+      default:
+        if (f.size == 1) gl.Uniform1f(at, v[0]);
+        if (f.size == 2) gl.Uniform2f(at, v[0], v[1]);
+        if (f.size == 4) gl.Uniform4f(at, v[0], v[1], v[2], v[3]);
+        break;
+    }
+  }
 }
 
 BlurUniforms fill_blur_uniforms(const FilterRun& run, int axis, bool gaussian_depth, bool round_to_half) {

@@ -1,16 +1,19 @@
-// Each pass kind's per-draw uniforms as one struct, mirrored in GLSL by the uniform array form of a
-// block: one `uniform vec4 <array>[N]`, set with one glUniform4fv a draw, whose fields the shaders
-// read under their own names through the #define lines uniform_struct_glsl() writes from the same
-// table (the blur's u_pixels_per_mm is u_blur[0].x). A new uniform is one line of its pass kind's
-// table and the line that fills it in the pass kind's fill function (pass_uniforms.cpp), which takes
-// the frame's constants (math::PassConstants, computed once a frame by compute_pass_constants).
+// Each pass kind's per-draw uniforms as one struct: a table of fields (name, place, size, kind),
+// from which the shader's declarations are written (uniform_struct_glsl, into every variant's
+// defines: the GLSL declares none of its own), the program's locations are found once at link
+// (UniformLocations), and one draw's values are filled by the pass kind's one function from the
+// frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and set
+// in one call (upload_uniforms). A new uniform is one line of its pass kind's table and the line
+// that fills it (pass_uniforms.cpp).
 //
-// Why not a std140 block with a buffer: a block reads a buffer bound to an indexed binding point,
-// which is the host's context state; the state guard would save and restore that binding on every
-// frame (more queries per steady frame), and a steady frame would rewrite a buffer the GPU may still
-// be reading. The array form adds no state and no buffer, and every dialect the module builds has it.
-// The pieces the pass kinds share declare a uniform of their own only where no struct names it
-// (depth.glsl, pass_surface.glsl, nearest_half.glsl, jitter.glsl: `#ifndef u_depth_terms`).
+// The fields stay separate GLSL uniforms. Two ways of making a pass kind one GL object were
+// measured against the bounds of issue 47: a uniform array (one `vec4` array and a #define per
+// field) costs llvmpipe 0.12 instructions a pixel in a full-screen draw (callgrind, the empty
+// 640x360 frame on the fragment path: 27,800 instructions more of the inputs draw alone), and a
+// std140 block reads a buffer bound to an indexed binding point, the host's context state, which the
+// state guard would save and restore every frame (more queries per steady frame). The pieces the
+// pass kinds share declare a uniform only where no struct does (depth.glsl, pass_surface.glsl,
+// nearest_half.glsl, jitter.glsl: `#ifndef SSS_UNIFORM_u_depth_terms`).
 #pragma once
 
 #include <array>
@@ -20,6 +23,7 @@
 #include <string>
 
 #include "filter_run.hpp"
+#include "gl_functions.hpp"
 
 namespace sss::gl {
 
@@ -39,12 +43,20 @@ struct UniformField {
   UniformKind kind;
 };
 
-// A pass kind's struct: its GLSL array's name, its vec4s and its fields (by an enum of the kind's).
+// A pass kind's struct: a name for the log, its size in vec4s and its fields (by an enum of the kind's).
 struct UniformStruct {
-  const char* array;
+  const char* name;
   int vectors;
   const UniformField* fields;
   std::size_t count;
+};
+// The most fields of a struct.
+inline constexpr std::size_t kMaxUniformFields = 12;
+
+// A program's locations of a struct's fields (-1: the program does not use the field).
+struct UniformLocations {
+  std::array<GLint, kMaxUniformFields> at{};
+  UniformLocations() { at.fill(-1); }
 };
 
 // One draw's values of a struct of `Vectors` vec4s, in the shader's layout.
@@ -69,10 +81,16 @@ struct UniformValues {
   }
 };
 
-// The declaration of the struct's array and a #define per field, for the variant's defines.
+// The struct's declarations, for the variant's defines: each field as a uniform of its GLSL type,
+// and a SSS_UNIFORM_<name> #define for the pieces' guards.
 std::string uniform_struct_glsl(const UniformStruct& s);
+// Each field's location in `program` (once, at link).
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s);
+// One draw's values into the program in use: a glUniform call per field it uses.
+void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations, const float* values);
 
 // ---- The separable blur pass (separable_blur.frag, blur_debug_view.frag, separable_blur.comp) ----
+// (The table's offsets pack the values a draw uploads; the GLSL types come from the kinds.)
 enum class BlurField : int {
   pixels_per_mm,   // along the axis, at clip w = 1 and strength 1 (blur_pixel.glsl)
   follow_surface,  // 1 / the reach in world units (the depth Gaussian: profile mm per world unit)
@@ -96,7 +114,7 @@ inline constexpr UniformField kBlurFields[] = {
     {"u_debug_fill", 22, 1, UniformKind::integer},   {"u_rect", 24, 4, UniformKind::integers},
 };
 inline constexpr int kBlurUniformVectors = 7;
-inline constexpr UniformStruct kBlurUniforms = {"u_blur", kBlurUniformVectors, kBlurFields, std::size(kBlurFields)};
+inline constexpr UniformStruct kBlurUniforms = {"blur pass", kBlurUniformVectors, kBlurFields, std::size(kBlurFields)};
 using BlurUniforms = UniformValues<kBlurUniformVectors>;
 // Term `term`'s pass along `axis` of `run`: `gaussian_depth` the variant's depth correction
 // (SSS_FOLLOW_SURFACE 2, whose u_follow_surface is profile mm per world unit), `round_to_half`
@@ -113,7 +131,7 @@ inline constexpr UniformField kCbfFields[] = {
     {"u_pixel_span", 6, 2, UniformKind::floats},     {"u_depth_terms", 8, 4, UniformKind::floats},
     {"u_clamp", 12, 4, UniformKind::floats},         {"u_ray_slope", 16, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kCbfUniforms = {"u_cbf", 5, kCbfFields, std::size(kCbfFields)};
+inline constexpr UniformStruct kCbfUniforms = {"cross-bilateral pass", 5, kCbfFields, std::size(kCbfFields)};
 using CbfUniforms = UniformValues<5>;
 CbfUniforms fill_cbf_uniforms(const FilterRun& run, int axis, bool round_to_half);
 
@@ -123,7 +141,7 @@ inline constexpr UniformField kInputsFields[] = {
     {"u_ndc_from_depth", 0, 2, UniformKind::floats},
     {"u_depth_terms", 4, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kInputsUniforms = {"u_inputs", 2, kInputsFields, std::size(kInputsFields)};
+inline constexpr UniformStruct kInputsUniforms = {"pass inputs", 2, kInputsFields, std::size(kInputsFields)};
 using InputsUniforms = UniformValues<2>;
 InputsUniforms fill_inputs_uniforms(const math::PassConstants& k);
 
@@ -134,7 +152,7 @@ inline constexpr UniformField kResolveFields[] = {
     {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_ndc_from_depth", 4, 2, UniformKind::floats},
     {"u_depth_terms", 8, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kResolveUniforms = {"u_resolve", 3, kResolveFields, std::size(kResolveFields)};
+inline constexpr UniformStruct kResolveUniforms = {"MSAA resolve", 3, kResolveFields, std::size(kResolveFields)};
 using ResolveUniforms = UniformValues<3>;
 ResolveUniforms fill_resolve_uniforms(const FilterRun& host);
 
@@ -149,7 +167,7 @@ inline constexpr UniformField kUpsampleFields[] = {
     {"u_rect", 12, 4, UniformKind::integers},          {"u_depth_terms", 16, 4, UniformKind::floats},
     {"u_ray_slope", 20, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kUpsampleUniforms = {"u_upsample", 6, kUpsampleFields, std::size(kUpsampleFields)};
+inline constexpr UniformStruct kUpsampleUniforms = {"upsample", 6, kUpsampleFields, std::size(kUpsampleFields)};
 using UpsampleUniforms = UniformValues<6>;
 // `half`: the half-size rectangle; `round_to_half`: whether the target is RGBA16F.
 UpsampleUniforms fill_upsample_uniforms(const FilterRun& run, const std::array<int, 4>& half, bool round_to_half);

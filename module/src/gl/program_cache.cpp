@@ -203,7 +203,7 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
 void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   const Functions& f = *gl_;
   BlurProgram& p = *program;
-  p.uniforms = f.GetUniformLocation(p.program, "u_blur");
+  p.fields = find_uniforms(f, p.program, kBlurUniforms);
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
@@ -243,7 +243,7 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
 void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
   const Functions& f = *gl_;
   CbfProgram& p = *program;
-  p.uniforms = f.GetUniformLocation(p.program, "u_cbf");
+  p.fields = find_uniforms(f, p.program, kCbfUniforms);
   p.source = f.GetUniformLocation(p.program, "u_source");
   p.depth = f.GetUniformLocation(p.program, "u_depth");
   p.original = f.GetUniformLocation(p.program, "u_original");
@@ -269,7 +269,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, Resolv
                                          "sss msaa resolve linear for write-back"};
   finish(p.program, kLabels[index], nullptr);
   const Functions& f = *gl_;
-  p.uniforms = f.GetUniformLocation(p.program, "u_resolve");
+  p.fields = find_uniforms(f, p.program, kResolveUniforms);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
   return SSS_OK;
@@ -326,7 +326,7 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   finish(p.program, label, "pass inputs");
   p.color_image = v.color_image;
   const Functions& f = *gl_;
-  p.uniforms = f.GetUniformLocation(p.program, "u_inputs");
+  p.fields = find_uniforms(f, p.program, kInputsUniforms);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
@@ -418,7 +418,7 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   finish(p.program, v.profile_ids != 0 ? "sss half-size upsample profiles=1" : "sss half-size upsample",
          "half-size upsample");
   const Functions& f = *gl_;
-  p.uniforms = f.GetUniformLocation(p.program, "u_upsample");
+  p.fields = find_uniforms(f, p.program, kUpsampleUniforms);
   p.looks = f.GetUniformLocation(p.program, "u_looks");
   // The method's constants: set once, here, not per frame.
   f.UseProgram(p.program);

@@ -15,6 +15,7 @@
 #include "frame_plan.hpp"
 #include "gl_functions.hpp"
 #include "glsl_variant.hpp"
+#include "pass_uniforms.hpp"
 #include "shader_variants.hpp"
 
 namespace sss::gl {
@@ -31,7 +32,7 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 
 struct BlurProgram {
   GLuint program = 0;
-  GLint uniforms = -1;  // u_blur: the pass's per-draw uniforms (pass_uniforms.hpp)
+  UniformLocations fields;  // the blur pass's uniform struct (pass_uniforms.hpp)
   GLint source = -1, depth = -1, original = -1, accumulated = -1;  // samplers
   // The kernel's tables, uploaded when the kernel, term or axis changes (footprint_cells.glsl).
   GLint jitter_from = -1, inv_two_variance = -1, cdf = -1, footprint = -1, spacing = -1, half_taps = -1;
@@ -49,7 +50,7 @@ struct BlurProgram {
 
 struct CbfProgram {
   GLuint program = 0;
-  GLint uniforms = -1;  // u_cbf: the pass's per-draw uniforms (pass_uniforms.hpp)
+  UniformLocations fields;  // the cross-bilateral pass's uniform struct (pass_uniforms.hpp)
   GLint source = -1, depth = -1, original = -1, normals = -1;  // samplers
   // The kernel: footprint_cells.glsl's table and layout, the spike blend and the Gaussian's width.
   GLint cdf = -1, footprint = -1, spacing = -1, half_taps = -1, spike_blend = -1, inv_two_variance = -1;
@@ -64,12 +65,12 @@ struct StrengthProgram {
 
 struct ResolveProgram {
   GLuint program = 0;
-  GLint uniforms = -1;  // u_resolve (pass_uniforms.hpp)
+  UniformLocations fields;  // the resolve's uniform struct (pass_uniforms.hpp)
 };
 
 struct PassInputsProgram {
   GLuint program = 0;
-  GLint uniforms = -1;  // u_inputs (pass_uniforms.hpp)
+  UniformLocations fields;  // the inputs' uniform struct (pass_uniforms.hpp)
   GLint tile_grid = -1;
   // Reads the colour through image unit 0 in kComputeImageFormats[color_image] (SSS_COLOR_IMAGE);
   // -1: through the sampler on unit 0.
@@ -101,7 +102,7 @@ struct HalfInputsProgram {
 };
 struct HalfUpsampleProgram {
   GLuint program = 0;
-  GLint uniforms = -1;  // u_upsample (pass_uniforms.hpp)
+  UniformLocations fields;  // the upsample's uniform struct (pass_uniforms.hpp)
   GLint looks = -1;     // per profile: pixels per mm on x and y, depth factor
   GLint tile_grid = -1;  // the tiles' bands (fullscreen.vert, the passes' spans)
 };
