@@ -20,8 +20,6 @@ namespace {
 
 // ---- Variants -------------------------------------------------------------------------------
 
-int profile_ids_of(const FilterRun& run) { return profile_ids_variant(run); }
-
 // The colour's image format for the inputs draw and the tile marks: single-sample RGBA16F or
 // RGBA32F; -1 for any other colour.
 int color_image_format(const FilterRun& run) {
@@ -65,7 +63,7 @@ BlurVariant fragment_variant(const FilterRun& run, const Capabilities& caps, std
                              BlurOutside outside) {
   BlurVariant v = common_variant(run, term, axis, outside);
   v.linear_depth = false;
-  v.profile_ids = profile_ids_of(run);
+  v.profile_ids = profile_ids_variant(run);
   v.packed_output = axis == 0;
   v.half_taps = compile_time_half_taps(static_cast<int>(run.kernel->spacing.size()));
   v.debug_view = static_cast<int>(run.debug_view);
@@ -129,7 +127,7 @@ void plan_separable(Steps& steps, const FilterRun& run, const Capabilities& caps
   plan.tiles = tiles;
   plan.terms = run.debug_view != 0 ? 1 : static_cast<int>(run.kernel->terms.size());
   plan.inputs.linear_depth = run.constants.linear_depth;
-  plan.inputs.profile_ids = profile_ids_of(run);
+  plan.inputs.profile_ids = profile_ids_variant(run);
   plan.inputs.mark_depth = run.stencil == nullptr;
   plan.inputs.color_image = readable_color_image(run, caps);
   plan.tile_mark_image = readable_color_image(run, caps);
@@ -169,11 +167,11 @@ void plan_half_resolution(Steps& steps, const FilterRun& run, const Capabilities
   plan.terms = 1;
   plan.tiles = run.stencil == nullptr && run.draw_rect[0] % 2 == 0 && run.draw_rect[1] % 2 == 0;
   plan.inputs.linear_depth = run.constants.linear_depth;
-  plan.inputs.profile_ids = profile_ids_of(run);
+  plan.inputs.profile_ids = profile_ids_variant(run);
   plan.inputs.mark_depth = true;
   plan.inputs.color_image = readable_color_image(run, caps);
   plan.tile_mark_image = readable_color_image(run, caps);
-  plan.half.profile_ids = profile_ids_of(run);
+  plan.half.profile_ids = profile_ids_variant(run);
   const BlurOutside last = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
   plan.half_horizontal = fragment_variant(run, caps, 0, 0, BlurOutside::write_centre);
   plan.half_vertical = fragment_variant(run, caps, 0, 1, BlurOutside::write_centre);
@@ -315,7 +313,7 @@ const char* path_unavailable(const FilterRun& run, const Capabilities& caps, uns
       if (run.color.multisampled()) return "a multisampled colour";
       if (run.cross_bilateral) return "the cross-bilateral mode";
       if (run.kernel->terms.size() > 1) return "a kernel of several terms";
-      if (profile_ids_of(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
+      if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
       return "";
     default: return "";
   }
@@ -410,14 +408,6 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   }
 }
 
-bool operator==(const Step& a, const Step& b) {
-  return a.kind == b.kind && a.run == b.run && a.term == b.term && a.axis == b.axis && a.into == b.into &&
-         a.rect == b.rect && a.stencil_on == b.stencil_on && a.copy_untouched == b.copy_untouched &&
-         blur_variant_index(a.variant) == blur_variant_index(b.variant) && a.variant.half_taps == b.variant.half_taps &&
-         a.variant.image_taps == b.variant.image_taps && a.image_format == b.image_format &&
-         a.compute_pass == b.compute_pass;
-}
-
 namespace {
 bool same_variant(const BlurVariant& a, const BlurVariant& b) {
   return blur_variant_index(a) == blur_variant_index(b) && a.half_taps == b.half_taps && a.image_taps == b.image_taps;
@@ -426,6 +416,13 @@ bool same_inputs(const PassInputsVariant& a, const PassInputsVariant& b) {
   return pass_inputs_variant_index(a) == pass_inputs_variant_index(b);
 }
 }  // namespace
+
+bool operator==(const Step& a, const Step& b) {
+  return a.kind == b.kind && a.run == b.run && a.term == b.term && a.axis == b.axis && a.into == b.into &&
+         a.rect == b.rect && a.stencil_on == b.stencil_on && a.copy_untouched == b.copy_untouched &&
+         same_variant(a.variant, b.variant) && a.image_format == b.image_format && a.compute_pass == b.compute_pass;
+}
+
 
 bool operator==(const FramePlan& a, const FramePlan& b) {
   if (a.kind != b.kind || a.path != b.path || a.msaa != b.msaa || a.strength_copy != b.strength_copy ||
