@@ -12,6 +12,7 @@
 #include "depth.glsl"
 #include "jitter.glsl"
 #include "pass_surface.glsl"
+#include "albedo.glsl"
 
 SSS_BINDING(0) uniform highp usampler2D u_source;   // colour and distance bits (pass_inputs.frag)
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // the colour's alpha bits (pass_inputs.frag)
@@ -199,6 +200,15 @@ bool sss_read_centre(ivec2 pixel, out SssCentre c) {
   c.follow_surface = u_follow_surface / c.strength;
 #endif
   return true;
+}
+
+// The centre's texturing mode for albedo.glsl (SSS_ALBEDO 3: its profile's, in u_profile's w).
+int sss_centre_texturing() {
+#if SSS_ALBEDO == 3
+  return int(u_profile[int(sss_centre_id & 15u)].w);
+#else
+  return SSS_ALBEDO;
+#endif
 }
 
 // This pass's step in pixels per profile mm at the pixel, on its walk over the surface.

@@ -13,7 +13,8 @@
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp): SSS_OUTSIDE
 // and SSS_LINEAR_DEPTH as in separable_blur.frag; SSS_AXIS 0 the horizontal pass, 1 the vertical;
 // SSS_NORMALS 1: the surface's tangents come from the host's view-space normal texture; and the
-// table's sizes for footprint_cells.glsl (SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS). The pieces it
+// table's sizes for footprint_cells.glsl (SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS); SSS_ALBEDO (albedo.glsl:
+// the vertical pass's result times A_post). The pieces it
 // includes: nearest_half.glsl (u_round_to_half: the written colour rounded to half float here),
 // colour_range.glsl, depth.glsl (view_distance, clip_w), pass_surface.glsl and footprint_cells.glsl.
 
@@ -22,6 +23,7 @@
 #include "depth.glsl"
 #include "pass_surface.glsl"
 #include "footprint_cells.glsl"
+#include "albedo.glsl"
 
 SSS_BINDING(0) uniform sampler2D u_source;    // the pass input (host colour or its masked copy, then the intermediate)
 SSS_BINDING(1) uniform sampler2D u_depth;     // the host's depth
@@ -171,6 +173,7 @@ void main() {
     p = next;
   }
   vec3 result = u_spike_blend.rgb * centre.rgb + (1.0 - u_spike_blend.rgb) * (sum / weight_sum);
+  result = sss_times_albedo_post(result, pixel, SSS_ALBEDO);  // the vertical pass's (SSS_ALBEDO 1 or 2)
 #if SSS_OUTSIDE == 2
   o_color = sss_nearest_half(vec4(result, texelFetch(u_original, pixel, 0).a));
 #else

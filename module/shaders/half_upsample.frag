@@ -13,12 +13,14 @@
 // that follow (drawn nearer) take exactly those; the written ones get depth 0.5 from this draw.
 // This must compute what sss::math::cpu_half_resolution_filter does (cpu_half_resolution.cpp).
 //
-// Switches: SSS_PROFILE_IDS 0 or 1 (as half_inputs.frag), SSS_CDF_ENTRIES (a table's entries). It
+// Switches: SSS_PROFILE_IDS 0 or 1 (as half_inputs.frag), SSS_CDF_ENTRIES (a table's entries),
+// SSS_ALBEDO (albedo.glsl: the result times A_post, one mode for the frame). It
 // writes alpha as the colour's own (the strength's bits); writing back, the runner masks it off.
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
 #include "depth.glsl"
 #include "pass_surface.glsl"
+#include "albedo.glsl"
 
 SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // pass_inputs.frag's strength bits (the colour's alpha)
@@ -212,5 +214,6 @@ void main() {
   // Not a convex sum (the near field minus its half-size stand-in): at a strong edge it could leave
   // the range of what it combined, which the result never should (it is a blur of those values).
   vec3 result = clamp(blurred / weight + near - mass * (reduced / weight), lowest, highest);
+  result = sss_times_albedo_post(result, pixel, SSS_ALBEDO);  // SSS_ALBEDO 1 or 2 (one mode per frame here)
   o_color = sss_nearest_half(vec4(result, centre.a));
 }

@@ -28,6 +28,7 @@
 //   SSS_SEGMENT, SSS_LINES  the tile: SSS_LINES lines of SSS_SEGMENT pixels along the axis
 //   SSS_APRON          the most pixels cached on each end of a line
 //   SSS_IMAGE_FORMAT   the target image's format qualifier (rgba16f, rgba32f, r11f_g11f_b10f)
+//   SSS_ALBEDO         the last vertical pass: the sum times A_post (albedo.glsl; 1 or 2, no profiles)
 // The header is version_430.glsl. The pieces it includes: nearest_half.glsl (u_round_to_half: set
 // for an rgba16f image), depth.glsl, jitter.glsl and footprint_taps.glsl (the taps and their
 // weights, shared with separable_blur.frag). The target is written with imageStore. Writing back
@@ -43,6 +44,7 @@
 #include "depth.glsl"
 #include "jitter.glsl"
 #include "pass_surface.glsl"
+#include "albedo.glsl"
 
 layout(local_size_x = SSS_THREADS, local_size_y = 1, local_size_z = 1) in;
 
@@ -197,6 +199,7 @@ void write_blurred(ivec2 pixel, vec3 sum, float alpha) {
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif
+  sum = sss_times_albedo_post(sum, pixel, SSS_ALBEDO);  // the last vertical pass's (SSS_ALBEDO 1 or 2)
 #if SSS_OUTSIDE == 2
   imageStore(u_target, pixel, sss_nearest_half(vec4(sum, texelFetch(u_original, pixel, 0).a)));
 #else

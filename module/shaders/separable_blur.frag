@@ -11,6 +11,7 @@
 //   SSS_OUTSIDE        what a pixel the pass leaves alone gets: 0 its own value, 1 nothing
 //                      (discard), 2 the host's original colour (into a separate output)
 //   SSS_ACCUMULATE     1: add the earlier terms' sum (u_accumulated)
+//   SSS_ALBEDO         the pass that writes the target: the sum times A_post (albedo.glsl)
 // and blur_pixel.glsl's and footprint_taps.glsl's. The debug views are blur_debug_view.frag.
 
 #include "blur_pixel.glsl"
@@ -54,6 +55,7 @@ void main() {
 #if SSS_ACCUMULATE
   sum += texelFetch(u_accumulated, pixel, 0).rgb;
 #endif
+  sum = sss_times_albedo_post(sum, pixel, sss_centre_texturing());
 #if SSS_PACKED_OUTPUT
   uvec3 bits = floatBitsToUint(sss_nearest_half(vec4(sum, 0.0)).rgb);
 #if SSS_PROFILE_IDS == 1

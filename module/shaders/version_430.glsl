@@ -1,3 +1,4 @@
 #version 430 core
 // GLSL 4.30 (OpenGL 4.3+): the compute path's blur (separable_blur.comp) only; its bindings are
 // fixed in the shader with layout(binding).
+#define SSS_BINDING(unit) layout(binding = unit)

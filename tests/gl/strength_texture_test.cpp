@@ -6,7 +6,7 @@
 // gives. The scene's rgb is made R11F_G11F_B10F-exact (7 significant bits in red and green, 6 in
 // blue), which RGBA16F (11) holds exactly too; the strength is k / 255 in an R8 texture, and the
 // RGBA16F reference's alpha is that rounded to half float to nearest, which is what the module's
-// copy holds (strength_combine.frag rounds so, whatever the driver's conversion does). So:
+// copy holds (colour_copy.frag rounds so, whatever the driver's conversion does). So:
 // - into a separate RGBA16F output both frames run the same passes on the same bits: equal bit for
 //   bit, alpha included (the output's alpha is the strength);
 // - written back, the reference stores half floats and the R11F_G11F_B10F colour its own format:

@@ -125,9 +125,13 @@ static_assert(sizeof(Frame04) == 120, "0.1's and 0.2's 96 bytes, depth_stencil_m
               "(0.3's 112), profile_texture and _format");
 static_assert(offsetof(Frame04, depth_stencil_mode) == 96 && offsetof(Frame04, profile_texture) == 108,
               "0.3's sss_frame (112 with its padding) is 0.4's up to profile_texture");
-static_assert(sizeof(sss_frame) == 144, "0.5's sss_frame: a size no release had");
-static_assert(sizeof(sss_prepare_desc) == 44 && offsetof(sss_prepare_desc, profile_format) == 40,
-              "0.3's sss_prepare_desc (40 bytes) is today's up to profile_format");
+static_assert(offsetof(sss_frame, albedo_texture) == 140 && sizeof(sss_frame) == 152,
+              "0.5's sss_frame (144 bytes with its padding) is today's up to albedo_texture (0.6)");
+static_assert(sizeof(sss_prepare_desc) == 48 && offsetof(sss_prepare_desc, profile_format) == 40 &&
+                  offsetof(sss_prepare_desc, albedo_format) == 44,
+              "0.3's sss_prepare_desc (40 bytes) and 0.4's (44) are today's up to profile_format and albedo_format");
+static_assert(offsetof(sss_settings, texturing) == 80 && sizeof(sss_settings) == 88,
+              "0.3-0.5's sss_settings (80 bytes) are today's up to texturing (0.6)");
 #endif
 
 const sss::math::Matrix4 kCamera = perspective_matrix(45.0f, 1.0f, 0.1f, 10.0f);

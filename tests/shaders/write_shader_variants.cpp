@@ -91,7 +91,40 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   out->write(d + "tile_view.frag", gl::stage_recipe(dialect, "tile_view.frag"));
   out->write(d + "tile_view_bands.frag", gl::stage_recipe(dialect, "tile_view.frag", "#define SSS_TILE_VIEW_BANDS 1\n"));
   out->write(d + "copy.frag", gl::stage_recipe(dialect, "copy.frag"));
-  out->write(d + "strength_combine.frag", gl::stage_recipe(dialect, "strength_combine.frag"));
+  // The colour copy: every switch (the strength texture, each texturing mode, the index formats
+  // that pick a profile's mode).
+  for (int i = 0; i < gl::kColourCopyVariantCount; ++i) {
+    const gl::ColourCopyVariant v = gl::colour_copy_variant_at(i);
+    if (v.profile_ids != 0 && v.albedo != 3) continue;
+    out->write(d + "colour_copy_s" + std::to_string(v.strength_texture ? 1 : 0) + "_a" + std::to_string(v.albedo) +
+                   "_p" + std::to_string(v.profile_ids) + ".frag",
+               gl::stage_recipe(dialect, "colour_copy.frag", gl::colour_copy_defines(v)));
+  }
+  // The texturing modes' last passes (SSS_ALBEDO): the vertical pass into the target, written back
+  // and into a separate output, with each profile variant (3: per profile only with profiles).
+  for (int albedo = 1; albedo <= 3; ++albedo) {
+    for (int profile_ids = albedo == 3 ? 1 : 0; profile_ids < 3; ++profile_ids) {
+      for (const gl::BlurOutside outside : {gl::BlurOutside::discard, gl::BlurOutside::copy_original}) {
+        gl::BlurVariant v;
+        v.follow_surface = 1;
+        v.profile_ids = profile_ids;
+        v.outside = outside;
+        v.accumulate = profile_ids == 0;  // a kernel of several terms (one profile)
+        v.albedo = albedo;
+        out->write(d + "blur_albedo" + std::to_string(albedo) + "_" + blur_name(v) + ".frag",
+                   gl::stage_recipe(dialect, gl::blur_fragment_file(v), gl::blur_defines(v)));
+      }
+    }
+  }
+  for (int albedo = 1; albedo <= 2; ++albedo) {
+    for (int profile_ids = 0; profile_ids < 2; ++profile_ids) {
+      const gl::HalfVariant v{profile_ids, albedo};
+      out->write(d + "half_upsample_p" + std::to_string(profile_ids) + "_albedo" + std::to_string(albedo) + ".frag",
+                 gl::stage_recipe(dialect, "half_upsample.frag", gl::half_upsample_defines(v)));
+    }
+    out->write(d + "cbf_o2_albedo" + std::to_string(albedo) + ".frag",
+               gl::stage_recipe(dialect, "cbf_blur.frag", gl::cbf_defines(gl::BlurOutside::copy_original, false, false, albedo)));
+  }
   // The inputs: every switch set with the colour read through the sampler; GLSL 4.20 also through
   // the image unit in each image format (what a GL 4.3+ context builds for a complete colour).
   for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {
@@ -105,6 +138,7 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   }
   for (int i = 0; i < gl::kHalfVariantCount; ++i) {
     const gl::HalfVariant v = gl::half_variant_at(i);
+    if (v.albedo != 0) continue;  // below, with the texturing modes' passes
     const std::string suffix = "_p" + std::to_string(v.profile_ids) + ".frag";
     out->write(d + "half_inputs" + suffix, gl::stage_recipe(dialect, "half_inputs.frag", gl::half_inputs_defines(v)));
     out->write(d + "half_upsample" + suffix,
@@ -191,6 +225,17 @@ void write_compute(Writer* out) {
                        gl::kComputeImageFormats[format].qualifier + ".comp",
                    gl::compute_recipe(gl::compute_blur_defines(v, format, static_cast<gl::ComputePass>(pass))));
       }
+    }
+  }
+  // The texturing modes' last vertical pass (SSS_ALBEDO 1 and 2), written back and into an output.
+  for (int albedo = 1; albedo <= 2; ++albedo) {
+    for (const gl::BlurOutside outside : {gl::BlurOutside::discard, gl::BlurOutside::copy_original}) {
+      gl::BlurVariant v;
+      v.follow_surface = 1;
+      v.outside = outside;
+      v.albedo = albedo;
+      out->write("430_blur_compute_albedo" + std::to_string(albedo) + "_" + blur_name(v) + "_v_rgba16f.comp",
+                 gl::compute_recipe(gl::compute_blur_defines(v, 0, gl::ComputePass::vertical)));
     }
   }
   // Tiles of several lines (SSS_LINES > 1, several pixels per invocation), which the shader keeps

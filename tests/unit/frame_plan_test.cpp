@@ -300,7 +300,7 @@ TEST(FramePlan, NothingToBlur) {
   // With a strength texture, the copy is of the colour with the strength.
   f.run.strength = texture(7, R8);
   EXPECT_EQ(kinds(plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT)),
-            (std::vector<K>{K::combine_strength, K::copy_colour}));
+            (std::vector<K>{K::colour_copy, K::copy_colour}));
 }
 
 TEST(FramePlan, AStrengthTextureRunsThePassesOnTheModulesCopy) {
@@ -308,8 +308,8 @@ TEST(FramePlan, AStrengthTextureRunsThePassesOnTheModulesCopy) {
   f.run.color = texture(1, R11F_G11F_B10F);
   f.run.strength = texture(7, R8);
   const FramePlan p = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
-  EXPECT_TRUE(p.strength_copy);
-  EXPECT_EQ(p.steps[0].kind, K::combine_strength);
+  EXPECT_TRUE(p.colour_copy);
+  EXPECT_EQ(p.steps[0].kind, K::colour_copy);
   EXPECT_EQ(p.steps[0].run, StepRun::host);
   // Written back, the host's colour is the passes' separate output: its rgb alone is written, and
   // the untouched pixels copied (the copy holds them exactly).
@@ -318,7 +318,7 @@ TEST(FramePlan, AStrengthTextureRunsThePassesOnTheModulesCopy) {
   EXPECT_TRUE(v.copy_untouched);
   EXPECT_EQ(p.inputs.color_image, 0);  // the module's RGBA16F copy is complete
   PassTextures module;
-  module.strength_source = 40;
+  module.colour_copy = 40;
   const FilterRun passes = passes_run(f.run, module, nullptr);
   EXPECT_EQ(passes.color.name, 40u);
   EXPECT_EQ(passes.color.internal_format, static_cast<GLint>(RGBA16F));

@@ -68,7 +68,8 @@
  * GL state: a call that draws, and sss_create and sss_prepare, which build, leave no GL error and
  * restore everything they changed (unless the context was created with SSS_CREATE_NO_STATE_RESTORE):
  *   - bindings: program, vertex array, draw and read framebuffers, renderbuffer, active texture,
- *     the 2D and 2D-multisample texture and the sampler of texture units 0-5, uniform buffer
+ *     the 2D and 2D-multisample texture and the sampler of texture units 0-5 (and 6 in a frame
+ *     with an albedo_texture), uniform buffer
  *     binding 0 and the generic uniform buffer, the pixel unpack buffer, image units 0 and 1;
  *   - pixel store: unpack alignment, row length and skips (pack too under SSS_CREATE_DEBUG_CHECKS);
  *   - viewport, sample mask word 0, colour mask and blend function and equation of draw buffer 0,
@@ -104,6 +105,8 @@ extern "C" {
 #define SSS_GL_R16F 0x822Du               /**< GL_R16F: linear view distance; strength */
 #define SSS_GL_R32F 0x822Eu               /**< GL_R32F: linear view distance; strength */
 #define SSS_GL_R8 0x8229u                 /**< GL_R8: strength */
+#define SSS_GL_RGBA8 0x8058u              /**< GL_RGBA8: albedo */
+#define SSS_GL_SRGB8_ALPHA8 0x8C43u       /**< GL_SRGB8_ALPHA8: albedo (decoded to linear as it is read) */
 #define SSS_GL_R8UI 0x8232u               /**< GL_R8UI: profile indices */
 #define SSS_GL_R16UI 0x8234u              /**< GL_R16UI: profile and object indices */
 #define SSS_GL_DEPTH_COMPONENT 0x1902u    /**< GL_DEPTH_COMPONENT: a depth-stencil texture's sampling mode */
@@ -200,6 +203,23 @@ typedef enum sss_path {
   SSS_PATH_HALF_RESOLUTION = 4  /**< the passes at half size where the kernel is wide, then upsampled */
 } sss_path;
 
+/** Where the albedo goes (sss_settings.texturing): what of the surface's colour is blurred with the
+ *  light. The host's colour is irradiance E times albedo A (sss_frame.color_texture); with an
+ *  albedo_texture the passes blur E·A_pre and the output is A_post·(blurred), with A_pre·A_post = A.
+ *  Where a channel of the albedo is below 1/256, 1/256 stands in for it on both sides (the colour is
+ *  near 0 there: its light is taken as colour·256, so the output at such a pixel is its blurred
+ *  light times 1/256, and it lends its neighbours that light; docs/integration.md "Texturing modes"
+ *  measures what that costs). */
+typedef enum sss_texturing {
+  SSS_TEXTURING_PRE_SCATTER = 0,         /**< A_pre = A: the colour blurred as it is, albedo detail
+                                              with it (the default; needs no albedo_texture) */
+  SSS_TEXTURING_POST_SCATTER = 1,        /**< A_post = A: the light alone blurred, the albedo's detail
+                                              kept sharp (a scanned albedo that already holds the
+                                              scattering; needs an albedo_texture) */
+  SSS_TEXTURING_PRE_AND_POST_SCATTER = 2 /**< A_pre = A_post = sqrt(A): half the detail blurred
+                                              (needs an albedo_texture) */
+} sss_texturing;
+
 /** sss_settings.flags: fade taps that lie off the centre's surface (a depth step). Default on. */
 #define SSS_FOLLOW_SURFACE 0x1u
 /** sss_settings.flags: SSS_PATH_AUTO may choose SSS_PATH_HALF_RESOLUTION (by timing). Default off. */
@@ -236,6 +256,8 @@ typedef struct sss_settings {
   float jitter;             /**< [0, 1]: the share of the outer taps that move per pixel, trading
                                  banding for noise (see sss_frame.noise_index). Default 0 */
   uint32_t path;            /**< an sss_path. Default SSS_PATH_AUTO */
+  uint32_t texturing;       /**< an sss_texturing. Default SSS_TEXTURING_PRE_SCATTER; the other modes
+                                 need the frame's albedo_texture. Per profile (sss_set_profiles) */
 } sss_settings;
 
 /** How many profiles one frame may use (sss_set_profiles). */
@@ -356,6 +378,11 @@ typedef struct sss_frame {
                                     output_texture (required), the kernel's first term on the
                                     fragment passes; not with SSS_FRAME_REGION, a multisampled colour
                                     or the cross-bilateral mode (the tiles view: nor a stencil) */
+  /* The surface's albedo: optional, needed by a texturing mode other than pre-scatter. */
+  uint32_t albedo_texture;     /**< 0: none; else a single-sample 2D texture of the colour's size, rgb
+                                    the diffuse albedo the colour was multiplied by (alpha unused),
+                                    read where a pixel's profile's texturing is not pre-scatter */
+  uint32_t albedo_format;      /**< 0, SSS_GL_SRGB8_ALPHA8 (decoded), SSS_GL_RGBA8, SSS_GL_RGBA16F */
 } sss_frame;
 
 /** Bits of sss_prepare_desc.flags: what the frames will use besides the formats. */
@@ -380,6 +407,7 @@ typedef struct sss_prepare_desc {
   uint32_t flags;           /**< sss_prepare_flag bits */
   uint32_t strength_format; /**< 0: no strength texture; else as sss_frame.strength_format (single-sample) */
   uint32_t profile_format;  /**< 0: no profile texture; else as sss_frame.profile_format (single-sample) */
+  uint32_t albedo_format;   /**< 0: no albedo texture; else as sss_frame.albedo_format */
 } sss_prepare_desc;
 
 /* ---- What the module reports ---- */
@@ -494,8 +522,8 @@ SSS_API void sss_default_settings(sss_settings *s);
 SSS_API sss_result sss_set_settings(sss_context *ctx, const sss_settings *s);
 
 /** Several materials in one frame: profiles[i] filters the pixels whose profile_texture value & 15
- *  is i. Each may differ in world_units_per_mm, scale, strength, falloff, separable_scale and kernel
- *  (one term when count > 1); every other field must equal profiles[0]'s, which become the
+ *  is i. Each may differ in world_units_per_mm, scale, strength, falloff, separable_scale, kernel
+ *  (one term when count > 1) and texturing; every other field must equal profiles[0]'s, which become the
  *  settings (sss_set_settings() is count 1). Pixels of an index >= count are left alone (refused
  *  under SSS_CREATE_DEBUG_CHECKS). No GL call.
  *  @param count [1, SSS_MAX_PROFILES]

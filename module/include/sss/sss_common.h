@@ -27,7 +27,7 @@ extern "C" {
 /* The version of the headers. sss_get_version() (sss.h) returns the library's, which a host may
  * compare with SSS_VERSION to catch a header and a library from different releases. */
 #define SSS_VERSION_MAJOR 0 /**< incompatible API changes (none before 1.0: see docs/migration.md) */
-#define SSS_VERSION_MINOR 5 /**< features; before 1.0 also API changes, each with a migration note */
+#define SSS_VERSION_MINOR 6 /**< features; before 1.0 also API changes, each with a migration note */
 #define SSS_VERSION_PATCH 0 /**< fixes only */
 /** Packs a version as sss_get_version() returns it: major in bits 16-31, minor 8-15, patch 0-7. */
 #define SSS_MAKE_VERSION(major, minor, patch) \

@@ -135,6 +135,7 @@ std::uint64_t path_key(const sss_context& ctx, const gl::FilterRun& run, std::ui
   mix(run.output.name != 0 ? static_cast<std::uint64_t>(run.output.internal_format) : 0u);
   mix(static_cast<std::uint64_t>(run.color.internal_format));
   mix(frame_flags);
+  mix(run.albedo.name != 0 ? 1u + ctx.settings.texturing : 0u);  // the texturing mode adds the colour copy
   return h;
 }
 
@@ -171,7 +172,7 @@ sss_result query_color_and_depth(sss_context* ctx, const sss_frame& frame, gl::F
 }
 
 // sss_frame.strength_texture: single-sample R8, R16F or R32F of the colour's size, with a colour
-// the passes can take it with (gl/strength_source.cpp).
+// the passes can take it with (gl/colour_copy.cpp).
 sss_result query_strength(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   sss_result r = query(ctx, frame, frame.strength_texture, "strength_texture", "strength_format",
                        frame.strength_format, &run->strength);
@@ -200,7 +201,59 @@ sss_result query_strength(sss_context* ctx, const sss_frame& frame, gl::FilterRu
   return SSS_OK;
 }
 
-// The optional textures: a separate output, the host's stencil, the normals, the strength.
+// Whether a texturing mode of a profile the frame can use reads the albedo (sss.h sss_texturing);
+// the first such profile's index in *which (-1: the settings, without per-pixel profiles).
+bool needs_albedo(const sss_context& ctx, const sss_frame& frame, int* which, unsigned* mode) {
+  *which = -1;
+  *mode = ctx.settings.texturing;
+  if (*mode != SSS_TEXTURING_PRE_SCATTER) return true;
+  if (frame.profile_texture == 0) return false;
+  for (std::size_t i = 0; i < ctx.extra_profiles.size(); ++i) {
+    *mode = ctx.extra_profiles[i].settings.texturing;
+    if (*mode != SSS_TEXTURING_PRE_SCATTER) {
+      *which = static_cast<int>(i + 1);
+      return true;
+    }
+  }
+  return false;
+}
+
+// A texturing mode other than pre-scatter needs the albedo, and one of the colour's size and sample
+// count; the MSAA path does not take one yet (docs/integration.md "Texturing modes").
+sss_result query_albedo(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
+  int which = -1;
+  unsigned mode = 0;
+  if (!needs_albedo(*ctx, frame, &which, &mode)) return SSS_OK;  // given or not, it is not read
+  char field[48];
+  if (which < 0) {
+    std::snprintf(field, sizeof field, "settings->texturing");
+  } else {
+    std::snprintf(field, sizeof field, "profiles[%d].texturing", which);
+  }
+  if (frame.albedo_texture == 0) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "%s = %u (%s) with frame->albedo_texture = 0: the mode divides the colour by the albedo; give the "
+                "albedo texture, or SSS_TEXTURING_PRE_SCATTER", field, mode,
+                mode == SSS_TEXTURING_POST_SCATTER ? "SSS_TEXTURING_POST_SCATTER" : "SSS_TEXTURING_PRE_AND_POST_SCATTER");
+  }
+  sss_result r = query(ctx, frame, frame.albedo_texture, "albedo_texture", "albedo_format", frame.albedo_format,
+                       &run->albedo);
+  if (r != SSS_OK) return r;
+  if (!gl::is_albedo_format(run->albedo.internal_format)) {
+    return wrong_format(ctx, "albedo_texture", run->albedo, "GL_SRGB8_ALPHA8, GL_RGBA8 or GL_RGBA16F");
+  }
+  if (run->color.multisampled()) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED,
+                "%s = %u with color_texture = %u %s: the MSAA path takes no albedo yet; resolve the colour (and the "
+                "albedo) first, or use SSS_TEXTURING_PRE_SCATTER", field, mode, run->color.name,
+                gl::describe_target(run->color).c_str());
+  }
+  r = same_samples(ctx, "albedo_texture", run->albedo, run->color);
+  if (r == SSS_OK) r = same_size(ctx, "albedo_texture", run->albedo, run->color);
+  return r;
+}
+
+// The optional textures: a separate output, the host's stencil, the normals, the strength, the albedo.
 sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run,
                                    gl::StencilInput* stencil) {
   sss_result r = SSS_OK;
@@ -244,6 +297,8 @@ sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl:
     if (r == SSS_OK) r = sss::api::check_profile_texture(ctx, *run);
     if (r != SSS_OK) return r;
   }
+  r = query_albedo(ctx, frame, run);
+  if (r != SSS_OK) return r;
   if (frame.normal_texture != 0) {
     r = query(ctx, frame, frame.normal_texture, "normal_texture", "normal_format", frame.normal_format, &run->normals);
     if (r != SSS_OK) return r;
@@ -254,34 +309,6 @@ sss_result query_optional_textures(sss_context* ctx, const sss_frame& frame, gl:
     if (r == SSS_OK) r = same_size(ctx, "normal_texture", run->normals, run->color);
   }
   return r;
-}
-
-// The viewport (0 width: the whole colour texture) and the host's region inside it.
-sss_result frame_rectangles(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
-  const int32_t* vp = frame.viewport;
-  if (vp[2] == 0) {
-    run->viewport = {0, 0, run->color.width, run->color.height};
-  } else if (vp[0] + vp[2] > run->color.width || vp[1] + vp[3] > run->color.height) {
-    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->viewport = {%d, %d, %d, %d} reaches outside the %dx%d colour texture",
-                vp[0], vp[1], vp[2], vp[3], run->color.width, run->color.height);
-  } else {
-    run->viewport = {vp[0], vp[1], vp[2], vp[3]};
-  }
-  run->draw_rect = run->viewport;
-  if ((frame.flags & SSS_FRAME_REGION) != 0) {
-    const int32_t* rg = frame.region;
-    const std::array<int, 4>& v = run->viewport;
-    // In 64 bits: x + width of two large int32 values must not wrap into range.
-    const auto end = [](int32_t a, int32_t b) { return static_cast<int64_t>(a) + static_cast<int64_t>(b); };
-    if (rg[0] < v[0] || rg[1] < v[1] || end(rg[0], rg[2]) > end(v[0], v[2]) || end(rg[1], rg[3]) > end(v[1], v[3])) {
-      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
-                  "frame->region = {%d, %d, %d, %d} reaches outside the viewport {%d, %d, %d, %d}", rg[0], rg[1], rg[2],
-                  rg[3], v[0], v[1], v[2], v[3]);
-    }
-    run->draw_rect = {rg[0], rg[1], rg[2], rg[3]};
-    run->region = true;
-  }
-  return SSS_OK;
 }
 
 // The textures, as the GL describes them, against the lists in sss.h (a steady frame takes them
@@ -295,7 +322,7 @@ sss_result describe_textures(sss_context* ctx, const sss_frame& frame, bool stea
     r = query_color_and_depth(ctx, frame, run);
     if (r == SSS_OK) r = query_optional_textures(ctx, frame, run, stencil);
   }
-  return r == SSS_OK ? frame_rectangles(ctx, frame, run) : r;
+  return r == SSS_OK ? sss::api::frame_rectangles(ctx, frame, run) : r;
 }
 
 sss::math::DepthEncoding depth_encoding(const gl::TextureInfo& depth, std::uint32_t frame_flags) {
@@ -325,6 +352,7 @@ void fill_run(const sss_context& ctx, const sss_frame& frame, const sss::math::M
   run->follow_surface = ctx.settings.follow_surface;
   run->noise_index = frame.noise_index;
   run->debug_view = frame.debug_view;
+  run->texturing[0] = static_cast<std::uint8_t>(ctx.settings.texturing);
   // Nothing drawn (unless an output needs the copy) where every profile the frame can use is the identity.
   run->identity = sss::api::is_identity_settings(ctx.settings) &&
                   (!run->has_profiles() || sss::api::extra_profiles_are_identity(ctx));

@@ -71,7 +71,8 @@ sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc, sss_prep
   const sss_result size =
       sss::api::check_struct_size(ctx, "desc->struct_size", "sss_prepare_desc", desc->struct_size,
                                   {{"0.3", static_cast<uint32_t>(offsetof(sss_prepare_desc, profile_format))},
-                                   {"0.4", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
+                                   {"0.4, 0.5", static_cast<uint32_t>(offsetof(sss_prepare_desc, albedo_format))},
+                                   {"0.6", static_cast<uint32_t>(sizeof(sss_prepare_desc))}});
   if (size != SSS_OK) return size;
   *out = sss_prepare_desc{};
   std::memcpy(out, desc, desc->struct_size);
@@ -101,6 +102,14 @@ sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc, sss_prep
   if (d.stencil_format != 0 && !gl::is_depth_stencil_format(format(d.stencil_format))) {
     return bad_format(ctx, "stencil_format", d.stencil_format,
                       "0 (no stencil), GL_DEPTH24_STENCIL8 (0x88F0) or GL_DEPTH32F_STENCIL8 (0x8CAD)");
+  }
+  if (d.albedo_format != 0 && !gl::is_albedo_format(format(d.albedo_format))) {
+    return bad_format(ctx, "albedo_format", d.albedo_format,
+                      "0 (no albedo), GL_SRGB8_ALPHA8 (0x8C43), GL_RGBA8 (0x8058) or GL_RGBA16F (0x881A)");
+  }
+  if (d.albedo_format != 0 && d.samples > 1) {
+    return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->albedo_format = %s with samples = %d: the MSAA path takes no "
+                "albedo yet", gl::format_name(format(d.albedo_format)).c_str(), d.samples);
   }
   sss_result r = check_strength(ctx, d);
   if (r == SSS_OK) r = check_profile_format(ctx, d);
@@ -186,6 +195,11 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
     run.strength.name = gl::kPrewarmPlaceholder;
     run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }
+  if (d.albedo_format != 0) {
+    run.albedo = described(d, d.albedo_format, false);
+    run.albedo.name = gl::kPrewarmPlaceholder;
+    run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
+  }
   if (d.stencil_format != 0) {
     stencil->texture = described(d, d.stencil_format, multisampled);
     run.stencil = stencil;
@@ -210,6 +224,7 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
     run.profile_ids.name = gl::kPrewarmPlaceholder;
     sss::api::fill_profiles(ctx, ctx.projection, nullptr, &run);  // the kernels; their constants are per frame
   }
+  run.texturing[0] = static_cast<std::uint8_t>(ctx.settings.texturing);
   return run;
 }
 

@@ -130,6 +130,7 @@ void fill_profiles(const sss_context& ctx, const sss::math::Matrix4& projection,
   for (std::size_t i = 0; i < ctx.extra_profiles.size(); ++i) {
     const sss::math::Profile& p = ctx.extra_profiles[i];
     run->profile_kernels[i + 1] = &p.kernel;
+    run->texturing[i + 1] = static_cast<std::uint8_t>(p.settings.texturing);
     if (geometry == nullptr) continue;
     run->profile_constants[i + 1] =
         sss::math::compute_pass_constants(p.settings, projection, *geometry, p.kernel.reach_mm);
@@ -195,6 +196,30 @@ SSS_API sss_result sss_set_profiles(sss_context* ctx, const sss_settings* profil
                 count, capacity);
   }
   if (count == 1) return sss_set_settings(ctx, profiles);
+  // The array's stride is the caller's sizeof(sss_settings), which profiles[0].struct_size says:
+  // 0.4's and 0.5's (their profiles are pre-scatter) or today's. Read into today's layout first.
+  const uint32_t stride = profiles[0].struct_size;
+  if (stride != sizeof(sss_settings) && stride != sss::api::kSettingsSize05) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "profiles[0].struct_size = %u: expected sizeof(sss_settings) = %u (0.6) or %u (0.4, 0.5; "
+                "sss_set_profiles is new in 0.4)",
+                stride, static_cast<unsigned>(sizeof(sss_settings)), sss::api::kSettingsSize05);
+  }
+  std::vector<sss::api::CurrentSettings> read(count);  // kept: each settings.kernel may point into it
+  std::vector<sss_settings> current(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const auto* given = reinterpret_cast<const sss_settings*>(reinterpret_cast<const char*>(profiles) +
+                                                              static_cast<std::size_t>(i) * stride);
+    if (given->struct_size != stride) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "profiles[%u].struct_size = %u: expected profiles[0]'s, %u (one array of one release's structs)", i,
+                  given->struct_size, stride);
+    }
+    const sss_result r = sss::api::settings_from_caller(ctx, given, &read[i]);
+    if (r != SSS_OK) return for_profile(ctx, r, i);
+    current[i] = read[i].settings;
+  }
+  profiles = current.data();
   // Every profile is checked and built before anything changes: a failure keeps the old set.
   std::vector<sss::math::Profile> built(count);
   // Last to first, so that profile 0's kernel is the freshest in ctx->recent_kernels.

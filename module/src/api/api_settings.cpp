@@ -32,6 +32,7 @@ sss::math::FilterSettings to_filter_settings(const sss_settings& s) {
   if (s.kernel != nullptr) f.kernel = sss::api::to_kernel_request(*s.kernel);
   f.jitter = s.jitter;
   f.path = s.path;
+  f.texturing = s.texturing;
   return f;
 }
 
@@ -58,6 +59,7 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
   s->cbf_profile = f.cbf_profile;
   s->jitter = f.jitter;
   s->path = f.path;
+  s->texturing = f.texturing;
 }
 
 // A family that normalises by the profile's energy needs some in every channel (as sss_kernel_plan).

@@ -8,33 +8,44 @@ namespace sss::api {
 namespace {
 
 // Names and formats in the order of SteadyFrame: colour, depth, output, stencil, normals, strength,
-// profile indices.
-std::array<std::uint32_t, 7> names_of(const sss_frame& frame) {
+// profile indices, albedo.
+std::array<std::uint32_t, 8> names_of(const sss_frame& frame) {
   return {frame.color_texture, frame.depth_texture, frame.output_texture,
           frame.stencil != nullptr ? frame.stencil->depth_stencil_texture : 0u, frame.normal_texture,
-          frame.strength_texture, frame.profile_texture};
+          frame.strength_texture, frame.profile_texture, frame.albedo_texture};
 }
 
-std::array<std::uint32_t, 7> formats_of(const sss_frame& frame) {
+std::array<std::uint32_t, 8> formats_of(const sss_frame& frame) {
   return {frame.color_format, frame.depth_format, frame.output_texture != 0 ? frame.output_format : 0u,
           frame.stencil != nullptr ? frame.stencil_format : 0u, frame.normal_texture != 0 ? frame.normal_format : 0u,
-          frame.strength_texture != 0 ? frame.strength_format : 0u, frame.profile_texture != 0 ? frame.profile_format : 0u};
+          frame.strength_texture != 0 ? frame.strength_format : 0u, frame.profile_texture != 0 ? frame.profile_format : 0u,
+          frame.albedo_texture != 0 ? frame.albedo_format : 0u};
 }
 
 }  // namespace
 
+std::array<std::uint8_t, SSS_MAX_PROFILES> texturing_of(const sss_context& ctx) {
+  std::array<std::uint8_t, SSS_MAX_PROFILES> modes{};
+  modes[0] = static_cast<std::uint8_t>(ctx.settings.texturing);
+  for (std::size_t i = 0; i < ctx.extra_profiles.size(); ++i) {
+    modes[i + 1] = static_cast<std::uint8_t>(ctx.extra_profiles[i].settings.texturing);
+  }
+  return modes;
+}
+
 bool is_steady(const sss_context& ctx, const sss_frame& frame) {
   const SteadyFrame& s = ctx.steady;
   if (!s.valid) return false;
-  const std::array<std::uint32_t, 7> names = names_of(frame);
-  const std::array<std::uint32_t, 7> formats = formats_of(frame);
+  const std::array<std::uint32_t, 8> names = names_of(frame);
+  const std::array<std::uint32_t, 8> formats = formats_of(frame);
   return frame_described(frame) && names == s.names && formats == s.formats &&
          frame.texture_width == s.width && frame.texture_height == s.height && frame.flags == s.frame_flags &&
          frame.msaa_depth_resolve == s.msaa_depth_resolve && frame.debug_view == s.debug_view &&
          ctx.kernel_revision == s.kernel_revision &&
          ctx.profiles_revision == s.profiles_revision &&
          ctx.cbf_kernel_revision == s.cbf_kernel_revision && ctx.settings.path == s.path &&
-         ctx.settings.cross_bilateral == s.cross_bilateral && ctx.settings.follow_surface == s.follow_surface;
+         ctx.settings.cross_bilateral == s.cross_bilateral && ctx.settings.follow_surface == s.follow_surface &&
+         texturing_of(ctx) == s.texturing;
 }
 
 void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterRun* run, gl::StencilInput* stencil) {
@@ -45,6 +56,7 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
   run->normals = s.normals;
   run->strength = s.strength;
   run->profile_ids = s.profile_ids;
+  run->albedo = s.albedo;
   if (frame.stencil != nullptr) {
     stencil->texture = s.stencil;
     stencil->ref = frame.stencil->ref;
@@ -55,8 +67,8 @@ void steady_textures(const sss_context& ctx, const sss_frame& frame, gl::FilterR
 
 void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterRun& run) {
   SteadyFrame& s = ctx->steady;
-  const std::array<std::uint32_t, 7> names = names_of(frame);
-  const std::array<std::uint32_t, 7> formats = formats_of(frame);
+  const std::array<std::uint32_t, 8> names = names_of(frame);
+  const std::array<std::uint32_t, 8> formats = formats_of(frame);
   s.valid = frame_described(frame);  // an undescribed frame is asked again every time
   s.names = names;
   s.formats = formats;
@@ -71,6 +83,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.path = ctx->settings.path;
   s.cross_bilateral = ctx->settings.cross_bilateral;
   s.follow_surface = ctx->settings.follow_surface;
+  s.texturing = texturing_of(*ctx);
   s.identity = run.identity;
   s.color = run.color;
   s.depth = run.depth;
@@ -78,6 +91,7 @@ void remember_steady(sss_context* ctx, const sss_frame& frame, const gl::FilterR
   s.normals = run.normals;
   s.strength = run.strength;
   s.profile_ids = run.profile_ids;
+  s.albedo = run.albedo;
   s.stencil = run.stencil != nullptr ? run.stencil->texture : gl::TextureInfo{};
 }
 
@@ -104,6 +118,7 @@ gl::StateGuard::Scope guard_scope(const sss_context& ctx, const sss_frame& frame
   // half-resolution path and of the tiles debug view (whatever the path).
   scope.tiles = path == SSS_PATH_FRAGMENT_MASKED || path == SSS_PATH_AUTO || half ||
                 frame.debug_view == SSS_DEBUG_VIEW_TILES;
+  scope.albedo = frame.albedo_texture != 0;
   scope.pack = frame.profile_texture != 0 && (ctx.create_flags & SSS_CREATE_DEBUG_CHECKS) != 0;
   return scope;
 }

@@ -31,19 +31,23 @@ namespace sss::api {
 struct SteadyFrame {
   bool valid = false;  // cleared by a failure, a lost context, sss_gl_context_changed
   // The last successful frame as it was given: the names and formats of colour, depth, output,
-  // stencil, normals, strength and profile indices (0: none), the size, the flags that pick program variants.
-  std::array<std::uint32_t, 7> names{}, formats{};
+  // stencil, normals, strength, profile indices and albedo (0: none), the size, the flags that pick
+  // program variants.
+  std::array<std::uint32_t, 8> names{}, formats{};
   std::int32_t width = 0, height = 0;
   std::uint32_t frame_flags = 0, msaa_depth_resolve = 0, debug_view = 0;
   // The settings that pick programs and targets.
   std::uint64_t kernel_revision = 0, cbf_kernel_revision = 0, profiles_revision = 0;
   unsigned path = 0;
   bool cross_bilateral = false, follow_surface = false;
+  std::array<std::uint8_t, SSS_MAX_PROFILES> texturing{};  // each profile's (texturing_of)
   bool identity = false;  // nothing was drawn (width, scale or strength 0, or an empty region)
   // The textures as that frame found them (asked of the GL where it can be, else as described).
-  gl::TextureInfo color, depth, output, normals, stencil, strength, profile_ids;
+  gl::TextureInfo color, depth, output, normals, stencil, strength, profile_ids, albedo;
 };
 
+// Each profile's texturing mode ([0] the settings'; sss.h sss_texturing), which picks programs.
+std::array<std::uint8_t, SSS_MAX_PROFILES> texturing_of(const sss_context& ctx);
 // Whether `frame` is steady (see above), by its fields and the context's settings alone.
 bool is_steady(const sss_context& ctx, const sss_frame& frame);
 // The textures of a steady frame, as the last successful frame found them.

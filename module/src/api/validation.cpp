@@ -62,6 +62,12 @@ sss_result check_settings(sss_context* ctx, const sss_settings* s) {
                 "SSS_PATH_FRAGMENT_MASKED (3) or SSS_PATH_HALF_RESOLUTION (4)",
                 s->path);
   }
+  if (s->texturing > SSS_TEXTURING_PRE_AND_POST_SCATTER) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                "settings->texturing = %u: must be SSS_TEXTURING_PRE_SCATTER (0), SSS_TEXTURING_POST_SCATTER (1) or "
+                "SSS_TEXTURING_PRE_AND_POST_SCATTER (2)",
+                s->texturing);
+  }
   // NULL: eq. (1) from the fields above. A kernel desc is checked whole, whatever its family.
   if (s->kernel == nullptr) return SSS_OK;
   return check_kernel_desc(ctx, s->kernel, "settings->kernel->", true);
@@ -153,7 +159,8 @@ bool frame_described(const sss_frame& frame) {
          (frame.stencil == nullptr || frame.stencil_format != 0) &&
          (frame.normal_texture == 0 || frame.normal_format != 0) &&
          (frame.strength_texture == 0 || frame.strength_format != 0) &&
-         (frame.profile_texture == 0 || frame.profile_format != 0);
+         (frame.profile_texture == 0 || frame.profile_format != 0) &&
+         (frame.albedo_texture == 0 || frame.albedo_format != 0);
 }
 
 sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
@@ -176,6 +183,10 @@ sss_result check_frame_description(sss_context* ctx, const sss_frame& frame) {
   }
   if (frame.profile_format != 0 && !gl::is_profile_format(format(frame.profile_format))) {
     return bad("profile_format", frame.profile_format, "GL_R8UI (0x8232) or GL_R16UI (0x8234)");
+  }
+  if (frame.albedo_format != 0 && !gl::is_albedo_format(format(frame.albedo_format))) {
+    return bad("albedo_format", frame.albedo_format,
+               "GL_SRGB8_ALPHA8 (0x8C43), GL_RGBA8 (0x8058) or GL_RGBA16F (0x881A)");
   }
   if (frame.strength_format != 0 && !gl::is_strength_format(format(frame.strength_format))) {
     return bad("strength_format", frame.strength_format, "GL_R8 (0x8229), GL_R16F (0x822D) or GL_R32F (0x822E)");
@@ -271,6 +282,34 @@ sss_result check_lut_desc(sss_context* ctx, const sss_lut_desc* desc, LutUse use
     }
   }
   return r;
+}
+
+// The viewport (0 width: the whole colour texture) and the host's region inside it.
+sss_result frame_rectangles(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
+  const int32_t* vp = frame.viewport;
+  if (vp[2] == 0) {
+    run->viewport = {0, 0, run->color.width, run->color.height};
+  } else if (vp[0] + vp[2] > run->color.width || vp[1] + vp[3] > run->color.height) {
+    return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "frame->viewport = {%d, %d, %d, %d} reaches outside the %dx%d colour texture",
+                vp[0], vp[1], vp[2], vp[3], run->color.width, run->color.height);
+  } else {
+    run->viewport = {vp[0], vp[1], vp[2], vp[3]};
+  }
+  run->draw_rect = run->viewport;
+  if ((frame.flags & SSS_FRAME_REGION) != 0) {
+    const int32_t* rg = frame.region;
+    const std::array<int, 4>& v = run->viewport;
+    // In 64 bits: x + width of two large int32 values must not wrap into range.
+    const auto end = [](int32_t a, int32_t b) { return static_cast<int64_t>(a) + static_cast<int64_t>(b); };
+    if (rg[0] < v[0] || rg[1] < v[1] || end(rg[0], rg[2]) > end(v[0], v[2]) || end(rg[1], rg[3]) > end(v[1], v[3])) {
+      return fail(ctx, SSS_ERROR_INVALID_ARGUMENT,
+                  "frame->region = {%d, %d, %d, %d} reaches outside the viewport {%d, %d, %d, %d}", rg[0], rg[1], rg[2],
+                  rg[3], v[0], v[1], v[2], v[3]);
+    }
+    run->draw_rect = {rg[0], rg[1], rg[2], rg[3]};
+    run->region = true;
+  }
+  return SSS_OK;
 }
 
 }  // namespace sss::api

@@ -57,4 +57,8 @@ struct LutUse {
 };
 sss_result check_lut_desc(sss_context* ctx, const sss_lut_desc* desc, LutUse use);
 
+// The frame's viewport (0 width: the whole colour texture) and the host's region inside it, into
+// run->viewport, draw_rect and region (the colour's size known).
+sss_result frame_rectangles(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run);
+
 }  // namespace sss::api

@@ -66,7 +66,10 @@ void give_common(const sss_settings& s, Legacy* out) {
 
 constexpr auto kSettings01 = static_cast<std::uint32_t>(sizeof(Settings01));
 constexpr auto kSettings02 = static_cast<std::uint32_t>(sizeof(Settings02));
-constexpr auto kSettings03 = static_cast<std::uint32_t>(sizeof(sss_settings));
+constexpr auto kSettings03 = kSettingsSize05;  // 0.3 to 0.5
+constexpr auto kSettings06 = static_cast<std::uint32_t>(sizeof(sss_settings));
+static_assert(kSettings06 != kSettings03 && kSettings06 != kSettings02 && kSettings06 != kSettings01,
+              "a new sss_settings layout needs a size of its own");
 
 }  // namespace
 
@@ -100,10 +103,17 @@ std::uint32_t profile_to_legacy(std::uint32_t profile) {
 sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, CurrentSettings* out) {
   if (in == nullptr) return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "settings is NULL");
   const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", in->struct_size,
-                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3, 0.4", kSettings03}});
+                                         {{"0.1", kSettings01},
+                                          {"0.2", kSettings02},
+                                          {"0.3 to 0.5", kSettings03},
+                                          {"0.6", kSettings06}});
   if (r != SSS_OK) return r;
-  if (in->struct_size == kSettings03) {
-    out->settings = *in;
+  if (in->struct_size == kSettings03 || in->struct_size == kSettings06) {
+    // 0.3 to 0.5 are today's fields before texturing, which keeps its default (pre-scatter).
+    sss_default_settings(&out->settings);
+    std::memcpy(static_cast<void*>(&out->settings), in, in->struct_size == kSettings03 ? offsetof(sss_settings, texturing)
+                                                                                        : sizeof(sss_settings));
+    out->settings.struct_size = kSettings06;
     // Its kernel desc may be 0.1-0.3's (a host built against 0.3): read as today's.
     if (in->kernel == nullptr) return SSS_OK;
     out->settings.kernel = &out->kernel;
@@ -133,10 +143,19 @@ sss_result settings_from_caller(sss_context* ctx, const sss_settings* in, Curren
 
 sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss_settings* out) {
   const sss_result r = check_struct_size(ctx, "settings->struct_size", "sss_settings", out->struct_size,
-                                         {{"0.1", kSettings01}, {"0.2", kSettings02}, {"0.3, 0.4", kSettings03}});
+                                         {{"0.1", kSettings01},
+                                          {"0.2", kSettings02},
+                                          {"0.3 to 0.5", kSettings03},
+                                          {"0.6", kSettings06}});
   if (r != SSS_OK) return r;
-  if (out->struct_size == kSettings03) {
+  if (out->struct_size == kSettings06) {
     *out = current;
+    return SSS_OK;
+  }
+  if (out->struct_size == kSettings03) {  // today's fields before texturing
+    const std::uint32_t size = out->struct_size;
+    std::memcpy(static_cast<void*>(out), &current, offsetof(sss_settings, texturing));
+    out->struct_size = size;
     return SSS_OK;
   }
   if (out->struct_size == kSettings02) {
@@ -163,9 +182,15 @@ sss_result settings_to_caller(sss_context* ctx, const sss_settings& current, sss
 // alignment (112 bytes on LP64, where the bytes after strength_format are padding; 108 on wasm32).
 constexpr auto kFrameFields03 = static_cast<std::uint32_t>(offsetof(legacy::Frame04, profile_texture));
 constexpr std::uint32_t kFrameSize03 = legacy::frame_size_ending_at(kFrameFields03);
+// 0.5's sss_frame: today's fields before albedo_texture (0.6).
+constexpr auto kFrameFields05 = static_cast<std::uint32_t>(offsetof(sss_frame, albedo_texture));
+constexpr auto kFrameSize05 = static_cast<std::uint32_t>((kFrameFields05 + alignof(sss_frame) - 1) / alignof(sss_frame) *
+                                                         alignof(sss_frame));
 // Every release's frame has its own size, on every ABI, so the size alone says the layout.
 static_assert(sizeof(sss_frame) != legacy::kFrameSize02 && sizeof(sss_frame) != kFrameSize03 &&
-                  sizeof(sss_frame) != legacy::kFrameSize04 && legacy::kFrameSize04 != kFrameSize03,
+                  sizeof(sss_frame) != legacy::kFrameSize04 && legacy::kFrameSize04 != kFrameSize03 &&
+                  sizeof(sss_frame) != kFrameSize05 && kFrameSize05 != legacy::kFrameSize04 &&
+                  kFrameSize05 != kFrameSize03 && kFrameSize05 != legacy::kFrameSize02,
               "a new sss_frame layout needs a size of its own");
 
 sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* out) {
@@ -174,10 +199,17 @@ sss_result frame_from_caller(sss_context* ctx, const sss_frame* in, sss_frame* o
                                          {{"0.1, 0.2", legacy::kFrameSize02},
                                           {"0.3", kFrameSize03},
                                           {"0.4", legacy::kFrameSize04},
-                                          {"0.5", static_cast<std::uint32_t>(sizeof(sss_frame))}});
+                                          {"0.5", kFrameSize05},
+                                          {"0.6", static_cast<std::uint32_t>(sizeof(sss_frame))}});
   if (r != SSS_OK) return r;
   if (in->struct_size == sizeof(sss_frame)) {
     *out = *in;
+    return SSS_OK;
+  }
+  if (in->struct_size == kFrameSize05) {  // today's fields before the albedo, which stays 0 (none)
+    *out = sss_frame{};
+    std::memcpy(static_cast<void*>(out), in, kFrameFields05);
+    out->struct_size = sizeof(sss_frame);
     return SSS_OK;
   }
   // An earlier release's fields only (its padding is not a field), read into 0.4's layout with the

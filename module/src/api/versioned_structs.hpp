@@ -6,6 +6,7 @@
 // profile ids one space), so its 0.1 and 0.2 layouts are converted field by field.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 
@@ -29,6 +30,11 @@ sss_result check_struct_size(sss_context* ctx, const char* field, const char* ty
 // The settings as this release reads them, converted from whatever release's layout `in` has
 // (its struct_size says which). `kernel` holds the desc a 0.1 or 0.2 layout embedded; the converted
 // settings point at it when its family is not eq. (1).
+// The size of 0.3's to 0.5's sss_settings: today's fields before texturing (0.6), rounded up to
+// the struct's alignment as their compilers padded it.
+inline constexpr auto kSettingsSize05 = static_cast<std::uint32_t>(
+    (offsetof(sss_settings, texturing) + alignof(sss_settings) - 1) / alignof(sss_settings) * alignof(sss_settings));
+
 struct CurrentSettings {
   sss_settings settings{};
   sss_kernel_desc kernel{};

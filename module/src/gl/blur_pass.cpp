@@ -68,6 +68,7 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
       const auto look = math::profile_pass_vector(run.profile_constants[static_cast<std::size_t>(i)],
                                                   run.profile_kernels[static_cast<std::size_t>(i)]->terms[term], axis);
       std::copy(look.begin(), look.end(), looks.begin() + 4 * i);
+      looks[static_cast<std::size_t>(4 * i + 3)] = run.texturing[static_cast<std::size_t>(i)];  // albedo.glsl's mode
     }
     f.Uniform4fv(p.profile, run.profile_count, looks.data());
   }

@@ -106,7 +106,7 @@ void draw_cbf_pass(PassContext& ctx, const FilterRun& run, const PlanPrograms& p
     measure.end_pixels();
     if (run.stencil != nullptr && !run.writes_back()) {
       set_stencil_test(f, run.stencil, NOTEQUAL);
-      draw_copy(ctx, run.color.name);
+      draw_copy(ctx, run.untouched_colour());
     }
     measure.end(PassQueries::vertical);
   }

@@ -92,7 +92,21 @@ struct FilterRun {
   // sampler, which gives the same image.
   bool color_complete = false;
 
+  // The texturing modes (sss.h sss_texturing): the host's albedo (sss_frame.albedo_texture; name 0:
+  // none) and each profile's mode ([0] the settings'; one per profile with per-pixel profiles).
+  // Where a profile's is not pre-scatter the plan draws the colour divided by A_post into the
+  // module's copy first (frame_plan.hpp passes_run) and the pass that writes the target multiplies
+  // by it again (module/shaders/albedo.glsl).
+  TextureInfo albedo;
+  std::array<std::uint8_t, math::kMaxProfiles> texturing{};
+  // The host's colour where the passes read that divided copy instead (name 0 otherwise): a
+  // separate output's untouched pixels are copied from it, exactly as the host gave them.
+  TextureInfo original;
+
   bool writes_back() const { return output.name == 0; }
+  // The colour a separate output's untouched pixels get: the host's, or the passes' copy of it
+  // (a strength texture's: the same rgb, the strength as alpha).
+  GLuint untouched_colour() const { return original.name != 0 ? original.name : color.name; }
   // The texture the last pass writes: the host's colour (in place) or the separate output.
   const TextureInfo& target() const { return writes_back() ? color : output; }
   // The horizontal pass's target, as precise as the colour it reads: RGBA32F for RGBA32F colour

@@ -146,7 +146,7 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, const Step& step
     f.Uniform1i(fill, 0);
   } else if (step.copy_untouched) {
     set_culling(f, run, NOTEQUAL);
-    draw_copy(ctx, run.color.name);
+    draw_copy(ctx, run.untouched_colour());
   }
   measure.end(PassQueries::vertical);
 }

@@ -113,8 +113,9 @@ void add_terms(Steps& steps, const FilterRun& run, const Capabilities& caps, boo
     add_pass(steps, StepKind::blur, t, 0, Into::intermediate,
              fragment_variant(run, caps, term, 0, BlurOutside::write_centre));
     const BlurOutside outside = last ? last_outside : BlurOutside::write_centre;
-    Step& v = add_pass(steps, StepKind::blur, t, 1, last ? Into::target : Into::sum,
-                       fragment_variant(run, caps, term, 1, outside));
+    BlurVariant vertical = fragment_variant(run, caps, term, 1, outside);
+    if (last && run.debug_view == 0) vertical.albedo = albedo_variant(run);
+    Step& v = add_pass(steps, StepKind::blur, t, 1, last ? Into::target : Into::sum, vertical);
     v.copy_untouched = last && run.debug_view == 0 && !run.writes_back() && !untouched_unread;
   }
 }
@@ -149,6 +150,7 @@ void plan_cross_bilateral(Steps& steps, const FilterRun& run, bool stencil_ready
   plan.cbf_linear_depth = run.constants.linear_depth;
   plan.cbf_normals = run.normals.name != 0;
   plan.cbf_vertical_outside = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
+  plan.cbf_albedo = albedo_variant(run);
   if (!plan.msaa && run.stencil != nullptr) plan.stencil_format = run.stencil->texture.internal_format;
   steps.begin(Rect::draw);
   if (run.stencil != nullptr && !stencil_ready) steps.copy_stencil(StencilOn::horizontal);
@@ -176,6 +178,7 @@ void plan_half_resolution(Steps& steps, const FilterRun& run, const Capabilities
   plan.half_horizontal = fragment_variant(run, caps, 0, 0, BlurOutside::write_centre);
   plan.half_vertical = fragment_variant(run, caps, 0, 1, BlurOutside::write_centre);
   plan.full_vertical = fragment_variant(run, caps, 0, 1, last);
+  plan.full_vertical.albedo = plan.half.albedo = albedo_variant(run);  // one mode (path_unavailable)
   // The culling depth: with a host stencil, the module's copy of it in the host's format.
   plan.stencil_format =
       run.stencil != nullptr ? run.stencil->texture.internal_format : static_cast<GLint>(DEPTH24_STENCIL8);
@@ -216,8 +219,9 @@ void plan_compute(Steps& steps, const FilterRun& run, const Capabilities& caps) 
                        common_variant(run, term, 0, BlurOutside::write_centre));
     h.image_format = intermediate;
     h.compute_pass = run.stencil != nullptr ? ComputePass::horizontal_marked : ComputePass::horizontal;
-    Step& v = add_pass(steps, StepKind::dispatch, t, 1, last ? Into::target : Into::sum,
-                       common_variant(run, term, 1, last ? last_outside : BlurOutside::write_centre));
+    BlurVariant vertical = common_variant(run, term, 1, last ? last_outside : BlurOutside::write_centre);
+    if (last) vertical.albedo = albedo_variant(run);  // one mode: no per-pixel profiles here
+    Step& v = add_pass(steps, StepKind::dispatch, t, 1, last ? Into::target : Into::sum, vertical);
     v.image_format = last ? image_format_of(run.target().internal_format) : sum;
     v.compute_pass = ComputePass::vertical;
   }
@@ -281,6 +285,16 @@ int profile_ids_variant(const FilterRun& run) {
   return run.profile_ids.internal_format == static_cast<GLint>(R16UI) ? 2 : 1;
 }
 
+int albedo_variant(const FilterRun& run) {
+  if (run.albedo.name == 0) return 0;
+  const int count = run.has_profiles() ? run.profile_count : 1;
+  const int mode = run.texturing[0];
+  for (int i = 1; i < count; ++i) {
+    if (run.texturing[static_cast<std::size_t>(i)] != mode) return 3;
+  }
+  return mode;
+}
+
 bool may_read_color_image(const Capabilities& caps, const FilterRun& run) {
   return caps.compute && !run.identity && !run.cross_bilateral && run.strength.name == 0 &&
          color_image_format(run) >= 0;
@@ -314,6 +328,7 @@ const char* path_unavailable(const FilterRun& run, const Capabilities& caps, uns
       if (run.cross_bilateral) return "the cross-bilateral mode";
       if (run.kernel->terms.size() > 1) return "a kernel of several terms";
       if (profile_ids_variant(run) == 2) return "R16UI profile indices (R8UI ones run at half size)";
+      if (albedo_variant(run) == 3) return "profiles of different texturing modes (the upsample takes one)";
       return "";
     default: return "";
   }
@@ -321,15 +336,18 @@ const char* path_unavailable(const FilterRun& run, const Capabilities& caps, uns
 
 FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own) {
   FilterRun passes = run;
-  if (run.strength.name != 0) {
+  if (reads_colour_copy(run)) {
     // The module's copy with the strength as alpha, at the intermediate's precision; written back,
     // the host's colour becomes the separate output (its rgb alone is written: R11F_G11F_B10F has
     // no alpha to keep).
     if (run.writes_back()) passes.output = run.color;
-    passes.color.name = module.strength_source;
+    passes.color.name = module.colour_copy;
     passes.color.internal_format = run.intermediate_format();
     passes.color_complete = true;  // one level (TargetPool)
     passes.strength = TextureInfo{};
+    // Divided by the albedo, the copy is not the host's colour: a separate output's untouched
+    // pixels come from the host's.
+    if (albedo_variant(run) != 0 && !run.writes_back()) passes.original = run.color;
   } else if (run.color.multisampled()) {
     passes.color = TextureInfo{};
     passes.color.name = module.resolved_color;
@@ -366,12 +384,19 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   plan.half = HalfVariant{};
   plan.half_horizontal = plan.half_vertical = plan.full_vertical = BlurVariant{};
   plan.cbf_linear_depth = plan.cbf_normals = false;
+  plan.cbf_albedo = 0;
   plan.cbf_vertical_outside = BlurOutside::write_centre;
   plan.resolve_linear_depth = plan.resolve_write_back = false;
   plan.stencil_format = 0;
   plan.step_count = 0;
   Steps steps{plan};
-  plan.strength_copy = run.strength.name != 0;
+  plan.colour_copy = reads_colour_copy(run);
+  plan.copy = ColourCopyVariant{};
+  if (plan.colour_copy) {
+    plan.copy.strength_texture = run.strength.name != 0;
+    plan.copy.albedo = run.identity ? 0 : albedo_variant(run);
+    plan.copy.profile_ids = plan.copy.albedo == 3 ? profile_ids_variant(run) : 0;
+  }
   plan.intermediate_format = run.intermediate_format();
   plan.accumulators_half = accumulators_half(run, caps);
   plan.path = SSS_PATH_FRAGMENT;
@@ -380,12 +405,12 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   // run is copied only where they are not the host's).
   const StencilInput own;
   PassTextures placeholders;
-  placeholders.strength_source = placeholders.resolved_color = placeholders.resolved_distance = placeholders.blurred =
+  placeholders.colour_copy = placeholders.resolved_color = placeholders.resolved_distance = placeholders.blurred =
       ~0u;
   std::optional<FilterRun> view;
-  if (run.strength.name != 0 || run.color.multisampled()) view.emplace(passes_run(run, placeholders, &own));
+  if (reads_colour_copy(run) || run.color.multisampled()) view.emplace(passes_run(run, placeholders, &own));
   const FilterRun& passes = view ? *view : run;
-  if (plan.strength_copy) steps.add(StepKind::combine_strength, StepRun::host);
+  if (plan.colour_copy) steps.add(StepKind::colour_copy, StepRun::host);
   if (run.color.multisampled()) {
     plan_msaa(steps, run, passes, caps);
   } else if (run.identity) {
@@ -410,7 +435,8 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
 
 namespace {
 bool same_variant(const BlurVariant& a, const BlurVariant& b) {
-  return blur_variant_index(a) == blur_variant_index(b) && a.half_taps == b.half_taps && a.image_taps == b.image_taps;
+  return blur_variant_index(a) == blur_variant_index(b) && a.half_taps == b.half_taps && a.image_taps == b.image_taps &&
+         a.albedo == b.albedo;
 }
 bool same_inputs(const PassInputsVariant& a, const PassInputsVariant& b) {
   return pass_inputs_variant_index(a) == pass_inputs_variant_index(b);
@@ -425,7 +451,9 @@ bool operator==(const Step& a, const Step& b) {
 
 
 bool operator==(const FramePlan& a, const FramePlan& b) {
-  if (a.kind != b.kind || a.path != b.path || a.msaa != b.msaa || a.strength_copy != b.strength_copy ||
+  if (a.kind != b.kind || a.path != b.path || a.msaa != b.msaa || a.colour_copy != b.colour_copy ||
+      colour_copy_variant_index(a.copy) != colour_copy_variant_index(b.copy) || a.cbf_albedo != b.cbf_albedo ||
+      a.half.albedo != b.half.albedo ||
       a.terms != b.terms || a.tiles != b.tiles || a.own_stencil != b.own_stencil || !same_inputs(a.inputs, b.inputs) ||
       a.tile_mark_image != b.tile_mark_image || a.half.profile_ids != b.half.profile_ids ||
       !same_variant(a.half_horizontal, b.half_horizontal) || !same_variant(a.half_vertical, b.half_vertical) ||

@@ -55,7 +55,7 @@ enum class PlanKind : std::uint8_t {
 };
 
 enum class StepKind : std::uint8_t {
-  combine_strength,      // the colour with the strength texture as alpha, into the module's copy
+  colour_copy,           // the colour over A_post (texturing) and/or with the strength texture as alpha, into the module's copy
   resolve_msaa,          // the multisampled colour and depth resolved (with the passes' inputs)
   begin,                 // the passes' fixed-function state, vertex array and viewport (Step::rect)
   copy_host_stencil,     // the host's stencil into the module's stencil buffer, on Step::framebuffer
@@ -109,7 +109,8 @@ struct FramePlan {
   PlanKind kind = PlanKind::nothing;
   unsigned path = SSS_PATH_FRAGMENT;  // sss.h SSS_PATH_*, as sss_get_stats reports it
   bool msaa = false;                  // the passes run on the MSAA resolve's images
-  bool strength_copy = false;         // the passes run on the module's colour with the strength
+  bool colour_copy = false;         // the passes run on the module's copy of the colour (colour_copy.cpp)
+  ColourCopyVariant copy;           // what that copy divides by and takes its alpha from
   int terms = 0;                      // kernel terms the passes run (a debug view: the first alone)
   bool tiles = false;                 // the masked path's tile culling (and the half path's bands)
   bool own_stencil = false;           // MSAA without a host stencil: the passes cull by the module's mark
@@ -121,6 +122,7 @@ struct FramePlan {
   HalfVariant half;
   BlurVariant half_horizontal, half_vertical, full_vertical;  // the half path's three blur programs
   bool cbf_linear_depth = false, cbf_normals = false;
+  int cbf_albedo = 0;  // the cross-bilateral vertical pass's SSS_ALBEDO
   BlurOutside cbf_vertical_outside = BlurOutside::write_centre;
   bool resolve_linear_depth = false, resolve_write_back = false;
   // The module's targets: the horizontal pass's format, the sum of terms in half floats, and the
@@ -138,6 +140,15 @@ inline bool operator!=(const FramePlan& a, const FramePlan& b) { return !(a == b
 
 // SSS_PROFILE_IDS of a run: 0 no profile texture, 1 R8UI, 2 R16UI.
 int profile_ids_variant(const FilterRun& run);
+// SSS_ALBEDO of the pass that writes a run's target (module/shaders/albedo.glsl): 0 without an
+// albedo texture or where every profile the frame can use is pre-scatter, 1 or 2 where they share
+// post-scatter or pre- and post-scatter, 3 where their modes differ.
+int albedo_variant(const FilterRun& run);
+// Whether the passes of `run` read the module's copy of the colour (colour_copy.cpp) instead of the
+// host's: a strength texture, or a texturing mode that divides by the albedo (with something to blur).
+inline bool reads_colour_copy(const FilterRun& run) {
+  return run.strength.name != 0 || (albedo_variant(run) != 0 && !run.identity);
+}
 // The sum of the kernel's terms in half floats: RGBA32F keeps up to six terms at float precision,
 // but OpenGL ES may not render to it (GL_EXT_color_buffer_float), while every ES context the module
 // accepts renders RGBA16F; an RGBA32F colour on ES was checked to have that extension, so its sum
@@ -165,7 +176,7 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
 
 // The module's textures the passes may read instead of the host's (Targets' names of them).
 struct PassTextures {
-  GLuint strength_source = 0;                                     // the colour with the strength texture as alpha
+  GLuint colour_copy = 0;                                     // the colour with the strength texture as alpha
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0;  // the MSAA resolve's and the passes' result
 };
 // The run the passes' steps read (StepRun::passes): `run` itself, or its textures replaced by the

@@ -11,7 +11,7 @@ namespace {
 // Names for the log, in the order of the enums' values (frame_plan.hpp).
 constexpr const char* kKindNames[] = {"nothing",         "copy",    "separable", "cross-bilateral",
                                       "half resolution", "compute", "tiles view"};
-constexpr const char* kStepNames[] = {"combine strength",
+constexpr const char* kStepNames[] = {"colour copy",
                                       "resolve MSAA",
                                       "begin",
                                       "copy host stencil",
@@ -41,6 +41,7 @@ const char* into_name(Into i) { return kIntoNames[static_cast<std::size_t>(i)]; 
 }  // namespace
 
 namespace {
+constexpr const char* kAlbedoNames[] = {"", "(the albedo)", "(its square root)", "(per profile)"};
 // A blur variant's switches by name (shader_variants.hpp), the ones set.
 std::string switches(const BlurVariant& v, bool compute) {
   static const char* const kOutside[] = {"writes its own value outside", "discards outside",
@@ -57,6 +58,7 @@ std::string switches(const BlurVariant& v, bool compute) {
     text += v.half_taps > 0 ? ", " + std::to_string(2 * v.half_taps + 1) + " taps as a constant" : ", taps a uniform";
   if (v.image_taps) text += ", image taps";
   if (v.debug_view != 0) text += ", debug view " + std::to_string(v.debug_view);
+  if (v.albedo != 0) text += ", times A_post " + std::string(kAlbedoNames[v.albedo]);
   return text;
 }
 }  // namespace
@@ -64,7 +66,7 @@ std::string switches(const BlurVariant& v, bool compute) {
 std::string describe(const FramePlan& plan) {
   char line[200];
   std::snprintf(line, sizeof line, "frame plan: %s, path %u%s%s%s, %d term(s)\n", kind_name(plan.kind), plan.path,
-                plan.msaa ? ", MSAA" : "", plan.strength_copy ? ", strength copy" : "", plan.tiles ? ", tiles" : "",
+                plan.msaa ? ", MSAA" : "", plan.colour_copy ? ", colour copy" : "", plan.tiles ? ", tiles" : "",
                 plan.terms);
   std::string text = line;
   for (int i = 0; i < plan.step_count; ++i) {
@@ -81,6 +83,9 @@ std::string describe(const FramePlan& plan) {
     } else if (s.kind == StepKind::draw_inputs) {
       text += plan.inputs.mark_depth ? " (marks the culling depth" : " (behind the stencil";
       text += plan.inputs.color_image >= 0 ? ", colour through the image unit)" : ", colour through the sampler)";
+    } else if (s.kind == StepKind::colour_copy) {
+      if (plan.copy.albedo != 0) text += std::string(" over A_post ") + kAlbedoNames[plan.copy.albedo];
+      if (plan.copy.strength_texture) text += ", the strength texture as alpha";
     } else if (s.kind == StepKind::copy_host_stencil) {
       static const char* const kOn[] = {" onto the horizontal pass's target", " onto the inputs' target",
                                         " onto the intermediate"};

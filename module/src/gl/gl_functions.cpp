@@ -73,6 +73,8 @@ std::string format_name(GLint internal_format) {
     case R16F: return "GL_R16F";
     case R32F: return "GL_R32F";
     case R8: return "GL_R8";
+    case RGBA8: return "GL_RGBA8";
+    case SRGB8_ALPHA8: return "GL_SRGB8_ALPHA8";
     case R8UI: return "GL_R8UI";
     case R16UI: return "GL_R16UI";
     case R11F_G11F_B10F: return "GL_R11F_G11F_B10F";

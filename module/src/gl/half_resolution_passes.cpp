@@ -170,12 +170,12 @@ void copy_untouched(PassContext& ctx, const FilterRun& run) {
   if (run.stencil != nullptr) {
     f.Disable(DEPTH_TEST);
     set_stencil_test(f, run.stencil, NOTEQUAL);
-    draw_copy(ctx, run.color.name);
+    draw_copy(ctx, run.untouched_colour());
     set_stencil_test(f, run.stencil, EQUAL);
   }
   f.Enable(DEPTH_TEST);
   f.DepthFunc(LEQUAL);
-  draw_copy(ctx, run.color.name);
+  draw_copy(ctx, run.untouched_colour());
 }
 
 }  // namespace

@@ -156,7 +156,7 @@ void bind_texture(PassContext& ctx, GLuint unit, GLuint texture, GLuint sampler)
 }
 
 void bind_original(PassContext& ctx, const FilterRun& run) {
-  bind_texture(ctx, unit::original, run.writes_back() ? 0 : run.color.name, ctx.objects.sampler);
+  bind_texture(ctx, unit::original, run.writes_back() ? 0 : run.untouched_colour(), ctx.objects.sampler);
 }
 
 void draw_copy(PassContext& ctx, GLuint source) {
@@ -182,7 +182,7 @@ void copy_outside_region(PassContext& ctx, const FilterRun& run) {
   f.Disable(STENCIL_TEST);
   f.Disable(DEPTH_TEST);
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
-  draw_copy(ctx, run.color.name);
+  draw_copy(ctx, run.untouched_colour());
   f.Viewport(run.draw_rect[0], run.draw_rect[1], run.draw_rect[2], run.draw_rect[3]);
 }
 

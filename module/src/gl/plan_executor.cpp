@@ -128,10 +128,10 @@ sss_result SeparableFilter::run(const FilterRun& host, std::string* message) {
   StencilInput own_mark;
   own_mark.ref = 1;
   own_mark.mask = 1;
-  const bool substituted = host.strength.name != 0 || host.color.multisampled();
+  const bool substituted = reads_colour_copy(host) || host.color.multisampled();
   const auto module_textures = [this] {
     const Targets& t = targets_.names();
-    return PassTextures{t.strength_source, t.resolved_color, t.resolved_distance, t.blurred};
+    return PassTextures{t.colour_copy, t.resolved_color, t.resolved_distance, t.blurred};
   };
   std::optional<FilterRun> view;
   if (substituted) view.emplace(passes_run(host, module_textures(), &own_mark));
@@ -160,7 +160,7 @@ sss_result SeparableFilter::run(const FilterRun& host, std::string* message) {
     const FilterRun& run = step.run == StepRun::host ? host : passes;
     BlurProgram* program = p.blur[static_cast<std::size_t>(i)];
     switch (step.kind) {
-      case StepKind::combine_strength: r = draw_strength_source(ctx, run, p, message); break;
+      case StepKind::colour_copy: r = draw_colour_copy(ctx, run, plan, p, message); break;
       case StepKind::resolve_msaa: r = resolve_msaa(ctx, run, plan, p, message); break;
       case StepKind::begin: begin_passes(ctx, step.rect == Rect::viewport ? run.viewport : run.draw_rect); break;
       case StepKind::copy_host_stencil:

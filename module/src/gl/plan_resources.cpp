@@ -32,7 +32,7 @@ sss_result build_step(PassContext& ctx, const FramePlan& plan, int i, PlanProgra
   BlurProgram** blur = &p->blur[static_cast<std::size_t>(i)];
   sss_result r = SSS_OK;
   switch (step.kind) {
-    case StepKind::combine_strength: return cache.strength_combine(&p->strength, message);
+    case StepKind::colour_copy: return cache.colour_copy(plan.copy, &p->colour_copy, message);
     case StepKind::resolve_msaa:
       return cache.msaa_resolve(plan.resolve_linear_depth, plan.resolve_write_back, &p->resolve, message);
     case StepKind::mark_stencil: return cache.stencil_mark(&p->stencil_mark, message);
@@ -50,7 +50,8 @@ sss_result build_step(PassContext& ctx, const FramePlan& plan, int i, PlanProgra
     case StepKind::full_size: return cache.blur(plan.full_vertical, &p->full_vertical, message);
     case StepKind::cross_bilateral: {
       const BlurOutside outside = step.axis == 0 ? BlurOutside::write_centre : plan.cbf_vertical_outside;
-      return cache.cross_bilateral(outside, plan.cbf_linear_depth, plan.cbf_normals, &p->cbf[step.axis], message);
+      return cache.cross_bilateral(outside, plan.cbf_linear_depth, plan.cbf_normals, step.axis == 0 ? 0 : plan.cbf_albedo,
+                                   &p->cbf[step.axis], message);
     }
     case StepKind::draw_inputs:
       r = cache.pass_inputs(plan.inputs, &p->inputs, message);
@@ -92,7 +93,7 @@ sss_result allocate_pass_targets(PassContext& ctx, const FilterRun& host, const 
     return plan.stencil_format != 0 ? targets.ensure_stencil_buffer(plan.stencil_format, w, h, message) : SSS_OK;
   };
   sss_result r = SSS_OK;
-  if (plan.strength_copy) r = targets.ensure_strength_source(plan.intermediate_format, w, h, message);
+  if (plan.colour_copy) r = targets.ensure_colour_copy(plan.intermediate_format, w, h, message);
   if (r == SSS_OK && plan.msaa) {
     targets.ensure_msaa_framebuffers();
     r = targets.ensure_msaa_targets(host.color.internal_format, w, h, plan.resolve_write_back, message);

@@ -31,7 +31,7 @@ struct PlanPrograms {
   ResolveProgram* resolve = nullptr;
   GLuint stencil_mark = 0;
   SampleWriteProgram* sample_write = nullptr;
-  StrengthProgram* strength = nullptr;
+  ColourCopyProgram* colour_copy = nullptr;
 };
 
 // Every program and target `plan` names (host: the api layer's run; passes: passes_run's), and
@@ -57,9 +57,10 @@ class PlanMeasurement {
   std::optional<FrameMeasurement> measure_;
 };
 
-// ---- strength_source.cpp ----
+// ---- colour_copy.cpp ----
 // The colour's rgb with the strength texture's red as alpha, into the module's copy (over the viewport).
-sss_result draw_strength_source(PassContext& ctx, const FilterRun& host, const PlanPrograms& p, std::string* message);
+sss_result draw_colour_copy(PassContext& ctx, const FilterRun& host, const FramePlan& plan, const PlanPrograms& p,
+                            std::string* message);
 
 // ---- msaa_resolve.cpp ----
 // The resolve of the multisampled colour and depth, with the passes' inputs (writing back, what

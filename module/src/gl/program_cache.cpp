@@ -72,13 +72,13 @@ void ProgramCache::destroy() {
     if (program != 0) f.DeleteProgram(program);
   };
   for (const auto& entry : blur_) remove(entry.second.program);
-  for (const BlurProgram& p : compute_) remove(p.program);
+  for (const auto& entry : compute_) remove(entry.second.program);
   for (const CbfProgram& p : cbf_) remove(p.program);
   for (const ResolveProgram& p : resolve_) remove(p.program);
   remove(copy_);
   remove(stencil_mark_);
   remove(sample_write_.program);
-  remove(strength_combine_.program);
+  for (const ColourCopyProgram& p : colour_copy_) remove(p.program);
   for (const PassInputsProgram& p : pass_inputs_) remove(p.program);
   for (const HalfInputsProgram& p : half_inputs_) remove(p.program);
   for (const HalfUpsampleProgram& p : half_upsample_) remove(p.program);
@@ -120,7 +120,8 @@ void ProgramCache::finish(GLuint program, const char* label, const char* built, 
 }
 
 sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::string* message) {
-  BlurProgram& p = blur_[(blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps) * 2 + (v.image_taps ? 1 : 0)];
+  const int key = (blur_variant_index(v) * (kMaxHalfTaps + 1) + v.half_taps) * 2 + (v.image_taps ? 1 : 0);
+  BlurProgram& p = blur_[key * 4 + v.albedo];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = blur_defines(v, profile_capacity_);
@@ -146,9 +147,9 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[144];
   std::snprintf(label, sizeof label,
-                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d taps=%d image=%d",
+                "sss blur outside=%d follow=%d jitter=%d accumulate=%d profiles=%d packed=%d taps=%d image=%d albedo=%d",
                 static_cast<int>(v.outside), v.follow_surface, v.jitter ? 1 : 0, v.accumulate ? 1 : 0,
-                v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1, v.image_taps ? 1 : 0);
+                v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1, v.image_taps ? 1 : 0, v.albedo);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
   p.image_taps = v.image_taps;
@@ -157,6 +158,7 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
   set_unit(p.program, p.original, unit::original);
   set_unit(p.program, p.accumulated, unit::accumulated);
   set_unit(p.program, p.profile_ids, unit::profile_ids);
+  if (v.albedo != 0) set_unit(p.program, gl_->GetUniformLocation(p.program, "u_albedo"), unit::albedo);
   p.tile_grid = gl_->GetUniformLocation(p.program, "u_tile_grid");
   set_unit(p.program, gl_->GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   if (v.profile_ids != 0) {  // the tables' block on binding point 0 (ProfileTables::bind)
@@ -175,8 +177,8 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
     *message = "separable blur compute shader: not a compute variant (per-pixel profiles run on the fragment passes)";
     return SSS_ERROR_SHADER_COMPILE;
   }
-  const std::size_t index = static_cast<std::size_t>(
-      (variant * kImageFormats + image_format_slot) * kComputePassCount + static_cast<int>(pass));
+  const int index = ((variant * kImageFormats + image_format_slot) * kComputePassCount + static_cast<int>(pass)) * 4 +
+                    v.albedo;
   BlurProgram& p = compute_[index];
   *out = &p;
   if (p.program != 0) return SSS_OK;
@@ -191,9 +193,9 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
   }
   char label[160];
   std::snprintf(label, sizeof label,
-                "sss compute blur pass=%d outside=%d follow=%d linear=%d jitter=%d accumulate=%d %s",
+                "sss compute blur pass=%d outside=%d follow=%d linear=%d jitter=%d accumulate=%d albedo=%d %s",
                 static_cast<int>(pass), static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0,
-                v.jitter ? 1 : 0, v.accumulate ? 1 : 0, format.qualifier);
+                v.jitter ? 1 : 0, v.accumulate ? 1 : 0, v.albedo, format.qualifier);
   finish(p.program, label, "blur", "GLSL 430 core");
   find_blur_uniforms(&p);
   p.compute = true;
@@ -219,24 +221,25 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   p.profile = f.GetUniformLocation(p.program, "u_profile");
 }
 
-sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
-                                         std::string* message) {
-  const int index = (static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0)) * 2 + (normals ? 1 : 0);
+sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, bool normals, int albedo,
+                                         CbfProgram** out, std::string* message) {
+  const int index = ((static_cast<int>(outside) * 2 + (linear_depth ? 1 : 0)) * 2 + (normals ? 1 : 0)) * 3 + albedo;
   CbfProgram& p = cbf_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = cbf_defines(outside, linear_depth, normals);
+  const std::string defines = cbf_defines(outside, linear_depth, normals, albedo);
   p.program = link("cbf_blur.frag", defines, "cross-bilateral blur shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  char label[64];
-  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d", static_cast<int>(outside),
-                linear_depth ? 1 : 0, normals ? 1 : 0);
+  char label[80];
+  std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d albedo=%d",
+                static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, albedo);
   finish(p.program, label, "cross-bilateral");
   find_cbf_uniforms(&p);
   set_unit(p.program, p.normals, unit::normals);
   set_unit(p.program, p.source, unit::source);
   set_unit(p.program, p.depth, unit::depth);
   set_unit(p.program, p.original, unit::original);
+  if (albedo != 0) set_unit(p.program, gl_->GetUniformLocation(p.program, "u_albedo"), unit::albedo);
   return SSS_OK;
 }
 
@@ -384,7 +387,8 @@ sss_result ProgramCache::tile_view(TileSpans spans, TileViewProgram** out, std::
 }
 
 sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message) {
-  HalfInputsProgram& p = half_inputs_[static_cast<std::size_t>(half_variant_index(v))];
+  // The reduction reads no albedo: one program per index variant.
+  HalfInputsProgram& p = half_inputs_[static_cast<std::size_t>(half_variant_index(HalfVariant{v.profile_ids, 0}))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
   const std::string defines = half_inputs_defines(v);
@@ -429,22 +433,30 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_half_result"), unit::half_result);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tables"), unit::half_tables);
+  if (v.albedo != 0) set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   return SSS_OK;
 }
 
-sss_result ProgramCache::strength_combine(StrengthProgram** out, std::string* message) {
-  StrengthProgram& p = strength_combine_;
+sss_result ProgramCache::colour_copy(const ColourCopyVariant& v, ColourCopyProgram** out, std::string* message) {
+  ColourCopyProgram& p = colour_copy_[static_cast<std::size_t>(colour_copy_variant_index(v))];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  p.program = link("strength_combine.frag", "", "strength texture combine shader", message);
+  const std::string defines = colour_copy_defines(v, profile_capacity_);
+  p.program = link("colour_copy.frag", defines, "colour copy shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
-  finish(p.program, "sss colour with the strength texture as alpha", nullptr);
+  char label[80];
+  std::snprintf(label, sizeof label, "sss colour copy strength_texture=%d albedo=%d profiles=%d",
+                v.strength_texture ? 1 : 0, v.albedo, v.profile_ids);
+  finish(p.program, label, nullptr);
   const Functions& f = *gl_;
   p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.texturing = f.GetUniformLocation(p.program, "u_texturing");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::strength);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
+  set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
   return SSS_OK;
 }
 

@@ -57,10 +57,12 @@ struct CbfProgram {
   std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
 };
 
-// The colour with the host's separate strength texture as its alpha (strength_source.cpp).
-struct StrengthProgram {
+// The module's copy of the colour the passes read (colour_copy.cpp): divided by the albedo, with
+// the host's separate strength texture as its alpha.
+struct ColourCopyProgram {
   GLuint program = 0;
   GLint round_to_half = -1;
+  GLint texturing = -1;  // SSS_ALBEDO 3: each profile's mode
 };
 
 struct ResolveProgram {
@@ -136,13 +138,13 @@ class ProgramCache {
   // The compute variant of `v` (no per-pixel profiles) for `pass`, writing image format `image_format`.
   sss_result compute(const BlurVariant& v, int image_format, ComputePass pass, BlurProgram** out,
                      std::string* message);
-  sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, CbfProgram** out,
+  sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, int albedo, CbfProgram** out,
                              std::string* message);
   // `write_back`: the variant that also keeps the translucent samples' mean, lowest values and mask.
   sss_result msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out, std::string* message);
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
   sss_result sample_write(SampleWriteProgram** out, std::string* message);
-  sss_result strength_combine(StrengthProgram** out, std::string* message);
+  sss_result colour_copy(const ColourCopyVariant& v, ColourCopyProgram** out, std::string* message);
   // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
   sss_result half_inputs(const HalfVariant& v, HalfInputsProgram** out, std::string* message);
@@ -159,7 +161,7 @@ class ProgramCache {
   // output, profile ids: 6 values) is 0 for them.
   static constexpr int kComputeBlurVariants = kBlurVariantCount / 6;
   static constexpr int kComputeVariantCount = kComputeBlurVariants * kImageFormats * kComputePassCount;
-  static constexpr int kCbfVariantCount = 3 * 2 * 2;
+  static constexpr int kCbfVariantCount = 3 * 2 * 2 * 3;  // outside, linear depth, normals, SSS_ALBEDO
 
   // A program from the full-screen vertex shader (with the tile spans `spans`) and the fragment
   // shader file `fragment` with `defines`, in the context's dialect; 0 with *message ("<what>:
@@ -188,12 +190,13 @@ class ProgramCache {
   // Fragment variants by blur_variant_index, half_taps and image_taps (std::map: the programs stay
   // put while a frame holds pointers to them, and only the tap counts a host uses get an entry).
   std::map<int, BlurProgram> blur_;
-  std::array<BlurProgram, kComputeVariantCount> compute_{};
+  // By (blur_variant_index, image format, pass) and SSS_ALBEDO; only the variants a host uses.
+  std::map<int, BlurProgram> compute_;
   std::array<CbfProgram, kCbfVariantCount> cbf_{};
   std::array<ResolveProgram, 4> resolve_{};  // index: 2 · writes back + host depth is linear
   GLuint stencil_mark_ = 0;
   SampleWriteProgram sample_write_;
-  StrengthProgram strength_combine_;
+  std::array<ColourCopyProgram, kColourCopyVariantCount> colour_copy_{};
   std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
   std::array<HalfInputsProgram, kHalfVariantCount> half_inputs_{};
   std::array<HalfUpsampleProgram, kHalfVariantCount> half_upsample_{};

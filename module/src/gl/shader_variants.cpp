@@ -42,10 +42,11 @@ std::string blur_defines(const BlurVariant& v, int profiles) {
                 "#define SSS_OUTSIDE %d\n#define SSS_FOLLOW_SURFACE %d\n#define SSS_LINEAR_DEPTH %d\n"
                 "#define SSS_JITTER %d\n#define SSS_ACCUMULATE %d\n#define SSS_CDF_ENTRIES %d\n"
                 "#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS %d\n#define SSS_PROFILES %d\n"
-                "#define SSS_PACKED_OUTPUT %d\n#define SSS_IMAGE_TAPS %d\n#define SSS_DEBUG_VIEW %d\n",
+                "#define SSS_PACKED_OUTPUT %d\n#define SSS_IMAGE_TAPS %d\n#define SSS_DEBUG_VIEW %d\n"
+                "#define SSS_ALBEDO %d\n",
                 static_cast<int>(v.outside), v.follow_surface, v.linear_depth ? 1 : 0, v.jitter ? 1 : 0,
                 v.accumulate ? 1 : 0, kCdfEntries, kMaxHalfTaps, v.profile_ids, profiles, v.packed_output ? 1 : 0,
-                v.image_taps ? 1 : 0, v.debug_view);
+                v.image_taps ? 1 : 0, v.debug_view, v.albedo);
   std::string text = defines;
   if (v.half_taps > 0) text += "#define SSS_HALF_TAPS " + std::to_string(v.half_taps) + "\n";
   return text + uniform_struct_glsl(kBlurUniforms);  // the pass's uniform struct (pass_uniforms.hpp)
@@ -64,16 +65,16 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format, Compute
   return blur_defines(v) + defines;
 }
 
-std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals) {
+std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals, int albedo) {
   // The horizontal pass is the one that writes every pixel (the intermediate): its axis follows
   // from what it writes outside. Its taps: footprint_cells.glsl's tables, no profiles, no jitter.
   char defines[320];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_OUTSIDE %d\n#define SSS_AXIS %d\n#define SSS_LINEAR_DEPTH %d\n#define SSS_NORMALS %d\n"
                 "#define SSS_CDF_ENTRIES %d\n#define SSS_MAX_HALF_TAPS %d\n#define SSS_PROFILE_IDS 0\n"
-                "#define SSS_FOLLOW_SURFACE 0\n#define SSS_JITTER 0\n",
+                "#define SSS_FOLLOW_SURFACE 0\n#define SSS_JITTER 0\n#define SSS_ALBEDO %d\n",
                 static_cast<int>(outside), outside == BlurOutside::write_centre ? 0 : 1, linear_depth ? 1 : 0,
-                normals ? 1 : 0, kCdfEntries, kMaxHalfTaps);
+                normals ? 1 : 0, kCdfEntries, kMaxHalfTaps, albedo);
   return defines + uniform_struct_glsl(kCbfUniforms);
 }
 
@@ -116,8 +117,18 @@ std::string half_inputs_defines(const HalfVariant& v) {
 
 std::string half_upsample_defines(const HalfVariant& v) {
   // SSS_LINEAR_DEPTH 1: depth.glsl's clip_w only (the upsample reads view distances).
-  return half_inputs_defines(v) + "#define SSS_LINEAR_DEPTH 1\n#define SSS_CDF_ENTRIES " +
+  return half_inputs_defines(v) + "#define SSS_ALBEDO " + std::to_string(v.albedo) +
+         "\n#define SSS_LINEAR_DEPTH 1\n#define SSS_CDF_ENTRIES " +
          std::to_string(math::kFootprintEntries) + "\n" + uniform_struct_glsl(kUpsampleUniforms);
+}
+
+std::string colour_copy_defines(const ColourCopyVariant& v, int profiles) {
+  char defines[160];
+  std::snprintf(defines, sizeof defines,
+                "#define SSS_STRENGTH_TEXTURE %d\n#define SSS_ALBEDO %d\n#define SSS_PROFILE_IDS %d\n"
+                "#define SSS_PROFILES %d\n",
+                v.strength_texture ? 1 : 0, v.albedo, v.profile_ids, profiles);
+  return defines;
 }
 
 std::string lut_defines(int kind) {

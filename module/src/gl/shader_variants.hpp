@@ -41,6 +41,10 @@ struct BlurVariant {
   // SSS_DEBUG_VIEW: 0 filters; else the fragment passes write that sss_debug_view instead
   // (fragment_passes.cpp). Above kBlurVariantCount's variants in the index (blur_variant_index).
   int debug_view = 0;
+  // SSS_ALBEDO (albedo.glsl): the pass that writes the frame's target multiplies by A_post: 0 no
+  // (pre-scatter, and every other pass), 1 the albedo, 2 its square root, 3 per pixel by its
+  // profile's mode. Not part of the index (the program cache keys it apart).
+  int albedo = 0;
 };
 // The fragment variant's SSS_HALF_TAPS for a kernel of `half_taps` on either side: the presets'
 // (SSS_TAPS_LOW, _MEDIUM, _HIGH) get their own programs, with loops the compiler can unroll; any
@@ -80,7 +84,7 @@ struct ComputeImageFormat {
   const char* qualifier;  // SSS_IMAGE_FORMAT
 };
 // RGBA16F and RGBA32F: the intermediate, a colour or an output; R11F_G11F_B10F: a colour with a
-// strength texture, which the vertical pass writes as its output (strength_source.cpp).
+// strength texture, which the vertical pass writes as its output (colour_copy.cpp).
 inline constexpr ComputeImageFormat kComputeImageFormats[] = {
     {RGBA16F, "rgba16f"}, {RGBA32F, "rgba32f"}, {R11F_G11F_B10F, "r11f_g11f_b10f"}};
 inline constexpr int kComputeImageFormatCount = 3;
@@ -96,7 +100,8 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format, Compute
                                  const ComputeTile* tile = nullptr);
 
 // The cross-bilateral blur (cbf_blur.frag): SSS_OUTSIDE × SSS_LINEAR_DEPTH × SSS_NORMALS.
-std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals);
+// `albedo`: SSS_ALBEDO of the vertical pass (0-2; the horizontal pass's is 0).
+std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals, int albedo = 0);
 
 // The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH × SSS_WRITE_BACK (the translucent
 // samples' outputs for the write-back).
@@ -128,12 +133,30 @@ std::string pass_inputs_defines(const PassInputsVariant& v);
 // alpha off when writing back).
 struct HalfVariant {
   int profile_ids = 0;
+  int albedo = 0;  // the upsample's SSS_ALBEDO, 0-2 (the reduction reads no albedo)
 };
-inline constexpr int kHalfVariantCount = 2;
-inline int half_variant_index(const HalfVariant& v) { return v.profile_ids; }
-inline HalfVariant half_variant_at(int index) { return HalfVariant{index}; }
+inline constexpr int kHalfVariantCount = 2 * 3;
+inline int half_variant_index(const HalfVariant& v) { return v.profile_ids + 2 * v.albedo; }
+inline HalfVariant half_variant_at(int index) { return HalfVariant{index % 2, index / 2}; }
 std::string half_inputs_defines(const HalfVariant& v);
 std::string half_upsample_defines(const HalfVariant& v);
+// The module's copy of the colour the passes read (colour_copy.frag): SSS_STRENGTH_TEXTURE (its
+// alpha from the host's strength texture), SSS_ALBEDO (divided by A_post, albedo.glsl) and, for
+// SSS_ALBEDO 3, SSS_PROFILE_IDS (1 R8UI, 2 R16UI: the index that picks each pixel's mode).
+struct ColourCopyVariant {
+  bool strength_texture = false;
+  int albedo = 0;
+  int profile_ids = 0;
+};
+inline constexpr int kColourCopyVariantCount = 2 * 4 * 3;
+inline int colour_copy_variant_index(const ColourCopyVariant& v) {
+  return ((v.strength_texture ? 1 : 0) * 4 + v.albedo) * 3 + v.profile_ids;
+}
+inline ColourCopyVariant colour_copy_variant_at(int index) {
+  return ColourCopyVariant{index / 12 != 0, (index / 3) % 4, index % 3};
+}
+std::string colour_copy_defines(const ColourCopyVariant& v, int profiles = SSS_MAX_PROFILES);
+
 // The MSAA path's shaders read sampler2DMS, which GLSL ES 3.00 lacks: desktop dialects only.
 inline bool has_msaa_shaders(GlslVariant v) { return v != GlslVariant::essl300; }
 

@@ -28,7 +28,7 @@ enum : uint32_t {
   enables = 1u << 6,          // kCapabilities
   viewport = 1u << 7,
   sample_mask_value = 1u << 8,   // set by the MSAA write-back only
-  texture_units = 1u << 9,       // 2D and 2D-multisample bindings and samplers of units 0-5
+  texture_units = 1u << 9,       // 2D and 2D-multisample bindings and samplers of units 0-6
   active_texture = 1u << 10,
   unpack_buffer = 1u << 11,
   renderbuffer = 1u << 12,
@@ -49,8 +49,8 @@ std::atomic<uint32_t>& restore_skip_mask_for_tests();  // 0: restore everything
 #endif
 
 // Texture units the module binds: 0 pass source, 1 depth, 2 original colour, 3 normals, 4 profile
-// indices, 5 the masked path's tile marks.
-constexpr int kUnitCount = 6;
+// indices, 5 the masked path's tile marks, 6 the albedo.
+constexpr int kUnitCount = 7;
 
 // The parts of the list a call may change; everything else is saved always. The default is all.
 struct GuardScope {
@@ -64,6 +64,7 @@ struct GuardScope {
   bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
   bool profiles = true;      // texture unit 4 and uniform buffer binding 0: per-pixel profiles
   bool tiles = true;         // texture unit 5: the masked path's tile marks (tile_culling.cpp)
+  bool albedo = true;        // texture unit 6: the host's albedo (a texturing mode)
   bool pack = false;         // the pack state: the debug checks read the profile indices back
   bool depth = true;         // depth func, write mask and range: the fragment passes' culling
                              // (pass_inputs.frag marks translucent pixels in the module's depth)
@@ -99,7 +100,7 @@ class StateGuard {
   // The units saved: 0-2 always, 3 and 4 as the scope says (4 implies 3: the list grew so), 5 for the tiles.
   bool saves_unit(int unit) const {
     return unit < 3 || (unit == 3 && (scope_.unit3 || scope_.profiles)) || (unit == 4 && scope_.profiles) ||
-           (unit == 5 && scope_.tiles);
+           (unit == 5 && scope_.tiles) || (unit == 6 && scope_.albedo);
   }
   // GL_SAMPLE_MASK_VALUE, GL_MULTISAMPLE and the blend function: set by the desktop MSAA write-back
   // only (never on ES).

@@ -60,13 +60,13 @@ void TargetPool::destroy() {
   const Functions& f = *gl_;
   const GLuint framebuffers[] = {t_.intermediate_framebuffer, t_.output_framebuffer, t_.stencil_source_framebuffer,
                                  t_.accumulator_framebuffer,  t_.masked_framebuffer, t_.resolve_framebuffer,
-                                 t_.sample_write_framebuffer, t_.strength_framebuffer, t_.pass_inputs_framebuffer,
+                                 t_.sample_write_framebuffer, t_.colour_copy_framebuffer, t_.pass_inputs_framebuffer,
                                  t_.pass_intermediate_framebuffer, t_.half_inputs_framebuffer,
                                  t_.half_intermediate_framebuffer, t_.half_result_framebuffer,
                                  t_.tiles_framebuffer,        t_.tile_columns_framebuffer};
   const GLuint textures[] = {t_.intermediate,       t_.accumulators[0],  t_.accumulators[1], t_.masked_source,
                              t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
-                             t_.translucent_lowest, t_.strength_source,   t_.pass_taps,       t_.pass_strength,
+                             t_.translucent_lowest, t_.colour_copy,   t_.pass_taps,       t_.pass_strength,
                              t_.pass_intermediate,  t_.half_taps,         t_.half_strength,   t_.half_intermediate,
                              t_.half_result,        t_.half_tables,       t_.tiles,           t_.tile_columns};
   // Name 0 is silently ignored by both calls.
@@ -258,23 +258,23 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
   return SSS_OK;
 }
 
-sss_result TargetPool::ensure_strength_source(GLint format, int width, int height, std::string* message) {
-  ensure_framebuffer(&t_.strength_framebuffer, "sss colour with the strength texture target");
-  if (t_.strength_source != 0 && strength_format_ == format && strength_width_ == width &&
+sss_result TargetPool::ensure_colour_copy(GLint format, int width, int height, std::string* message) {
+  ensure_framebuffer(&t_.colour_copy_framebuffer, "sss colour with the strength texture target");
+  if (t_.colour_copy != 0 && strength_format_ == format && strength_width_ == width &&
       strength_height_ == height) {
     return SSS_OK;
   }
   strength_width_ = strength_height_ = 0;
   const bool single = format == static_cast<GLint>(RGBA32F);
   const sss_result r =
-      allocate_target(&t_.strength_source, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT, width, height,
+      allocate_target(&t_.colour_copy, single ? RGBA32F : RGBA16F, single ? FLOAT : HALF_FLOAT, width, height,
                       single ? "RGBA32F colour with the strength texture" : "RGBA16F colour with the strength texture",
                       message);
   if (r != SSS_OK) return r;
   strength_format_ = format;
   strength_width_ = width;
   strength_height_ = height;
-  attach_colour(t_.strength_framebuffer, t_.strength_source);
+  attach_colour(t_.colour_copy_framebuffer, t_.colour_copy);
   return SSS_OK;
 }
 

@@ -38,7 +38,7 @@ struct Targets {
   GLuint resolve_framebuffer = 0, sample_write_framebuffer = 0;
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, translucent_mean = 0, translucent_lowest = 0;
   // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
-  GLuint strength_source = 0, strength_framebuffer = 0;
+  GLuint colour_copy = 0, colour_copy_framebuffer = 0;
   // The separable fragment passes (pass_inputs.frag): per pixel the colour's and view distance's
   // bits (RGBA32UI pass_taps), the strength's (R32UI pass_strength), and the horizontal pass's
   // result in the same layout (RGBA32UI pass_intermediate). pass_inputs_framebuffer draws all three
@@ -81,7 +81,7 @@ class TargetPool {
   // attachments 2 and 3).
   sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, std::string* message);
   // `format`: RGBA16F or RGBA32F.
-  sss_result ensure_strength_source(GLint format, int width, int height, std::string* message);
+  sss_result ensure_colour_copy(GLint format, int width, int height, std::string* message);
   // The fragment passes' inputs (pass_taps, pass_strength, pass_intermediate) as colour attachments
   // 4-6 of resolve_framebuffer, which the MSAA resolve writes: attached once, again only after
   // either was (re)made. Leaves resolve_framebuffer bound where it attaches.

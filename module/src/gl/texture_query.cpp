@@ -81,6 +81,10 @@ bool is_color_format(GLint f) { return f == static_cast<GLint>(RGBA16F) || f == 
 
 bool is_alpha_free_color_format(GLint f) { return f == static_cast<GLint>(R11F_G11F_B10F); }
 
+bool is_albedo_format(GLint f) {
+  return f == static_cast<GLint>(SRGB8_ALPHA8) || f == static_cast<GLint>(RGBA8) || f == static_cast<GLint>(RGBA16F);
+}
+
 bool is_strength_format(GLint f) {
   return f == static_cast<GLint>(R8) || f == static_cast<GLint>(R16F) || f == static_cast<GLint>(R32F);
 }

@@ -35,6 +35,7 @@ std::string describe_target(const TextureInfo& t);
 
 bool is_color_format(GLint f);          // RGBA16F, RGBA32F
 bool is_alpha_free_color_format(GLint f);  // R11F_G11F_B10F: a colour whose strength comes from a strength texture
+bool is_albedo_format(GLint f);         // SRGB8_ALPHA8, RGBA8, RGBA16F (sss_frame.albedo_texture)
 bool is_strength_format(GLint f);       // R8, R16F, R32F (sss_frame.strength_texture)
 bool is_profile_format(GLint f);        // R8UI, R16UI (sss_frame.profile_texture)
 bool is_hardware_depth_format(GLint f); // DEPTH_COMPONENT*, DEPTH*_STENCIL8

@@ -1,6 +1,6 @@
 // The texture units the module's programs read from. They are fixed per program (set once after
 // linking, or by layout(binding) in GLSL 4.20: module/shaders/*), so a frame binds textures and
-// never changes a sampler uniform. Units 0-5 are in the StateGuard's list (sss.h).
+// never changes a sampler uniform. Units 0-6 are in the StateGuard's list (sss.h).
 #pragma once
 
 #include "gl_functions.hpp"
@@ -19,13 +19,17 @@ constexpr GLuint pass_strength = 1;
 // Per-pixel profiles: the host's profile and object indices (sss_frame.profile_texture), read by
 // pass_inputs.frag (R8UI) or by the blur passes per tap (R16UI).
 constexpr GLuint profile_ids = 4;
-// The strength texture's combine (strength_source.cpp): the host's colour on `source`, its strength here.
+// The strength texture's combine (colour_copy.cpp): the host's colour on `source`, its strength here.
 constexpr GLuint strength = 1;
 
 // The masked path's tile culling (tile_culling.cpp): the tiles' marks, read by the span vertex
 // stage of its inputs draw and blur passes (fullscreen.vert, SSS_TILE_SPANS) and by the columns'
 // draw; the columns' marks, read by the inputs draw's vertex stage only (which reads no original).
 constexpr GLuint tiles = 5;
+
+// The texturing modes (albedo.glsl): the host's albedo, read by the colour copy and by the pass that
+// writes the frame's target. In the StateGuard's list only for a frame that has one (GuardScope::albedo).
+constexpr GLuint albedo = 6;
 constexpr GLuint tile_columns = 2;
 
 // The MSAA resolve, stencil mark and write-back (which never reads the host's samples).

@@ -37,6 +37,9 @@ struct FilterSettings {
   float jitter = 0.0f;  // share of each pass's taps jittered per pixel (supplementary Fig. S.6-S.7)
   unsigned path = 2;  // SSS_PATH_AUTO (SSS_PATH_*: fragment passes, masked ones, compute dispatches, or the fastest)
   bool auto_half_resolution = false;  // SSS_AUTO_HALF_RESOLUTION: AUTO may time SSS_PATH_HALF_RESOLUTION too
+  // sss_settings.texturing (sss.h sss_texturing): 0 pre-scatter, 1 post-scatter, 2 pre- and
+  // post-scatter; where the albedo goes, not what the kernel is (no kernel input).
+  unsigned texturing = 0;
 };
 
 enum class DepthEncoding {

@@ -1,0 +1,317 @@
+// The texturing modes (sss.h sss_texturing, issue 48): the host's colour is irradiance E times
+// albedo A; post-scatter blurs E alone and multiplies by A after, pre- and post-scatter takes
+// sqrt(A) on each side. What they must give, on every path, mode and kernel family run here:
+// - uniform light over an albedo with detail at the pixel (a checker of 2-pixel cells): the blur of
+//   a constant is that constant, so post-scatter gives the input back at every pixel (the albedo's
+//   detail kept), to within the half-float steps the copy, the intermediate and the output round to;
+//   pre-scatter, today's behaviour and the default, blurs the checker (the check's own test);
+// - any light: the module's post-scatter output equals A_post times the pre-scatter filter of the
+//   host's colour over A_post, run by the same module on a texture holding that quotient (the
+//   divide, the filter and the multiply as one reference); pixels the passes leave alone are the
+//   host's colour bit for bit in a separate output;
+// - the refusals: a mode without an albedo texture, an albedo of another size or format, a bad
+//   albedo_format, a multisampled colour; each names its field and leaves the colour untouched.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "filter_case.hpp"
+#include "host_gl_util.hpp"
+#include "math/half_float.hpp"
+#include "multisample_textures.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kW = 64, kH = 48;
+constexpr float kFloor = 1.0f / 256.0f;  // albedo.glsl's kSssAlbedoFloor (sss.h sss_texturing)
+// One half-float step relative to the value: 2^-11 (10 stored fraction bits, rounding to nearest).
+constexpr float kHalfStep = 1.0f / 2048.0f;
+
+// A_post of mode `mode` (1 post-scatter, 2 pre- and post-scatter) from one albedo channel.
+float albedo_post(float a, uint32_t mode) {
+  const float floored = std::max(a, kFloor);
+  return mode == SSS_TEXTURING_POST_SCATTER ? floored : std::sqrt(floored);
+}
+
+struct Inputs {
+  std::vector<float> albedo;  // RGBA16F-exact: a checker of 2-pixel cells, and one dark cell below the floor
+  std::vector<float> color;   // E · A rounded to half, alpha the scene's strength
+};
+
+constexpr float kUniform[3] = {0.8f, 0.55f, 0.4f};  // the uniform light
+// The near-black freckle's pixels (albedo 0.001, below the floor).
+bool in_freckle(int x, int y) { return x >= 40 && x < 44 && y >= 20 && y < 24; }
+
+// `light`: the scene's own colour as irradiance (false: the uniform light); `freckle`: with it.
+Inputs make_inputs(const SyntheticScene& scene, bool light, bool freckle = true) {
+  Inputs in;
+  const std::size_t n = static_cast<std::size_t>(kW) * kH;
+  in.albedo.resize(n * 4);
+  in.color.resize(n * 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int x = static_cast<int>(i % kW), y = static_cast<int>(i / kW);
+    const bool dark = ((x / 2) + (y / 2)) % 2 == 0;
+    for (int c = 0; c < 3; ++c) {
+      float a = dark ? 0.2f + 0.05f * static_cast<float>(c) : 0.9f - 0.1f * static_cast<float>(c);
+      if (freckle && in_freckle(x, y)) a = 0.001f;  // below the floor
+      in.albedo[i * 4 + c] = sss::math::round_to_half(a);
+      const float e = light ? scene.color[i * 4 + c] : kUniform[c];
+      in.color[i * 4 + c] = sss::math::round_to_half(e * in.albedo[i * 4 + c]);
+    }
+    in.albedo[i * 4 + 3] = 1.0f;
+    in.color[i * 4 + 3] = scene.color[i * 4 + 3];
+  }
+  return in;
+}
+
+class Texturing : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    scene_ = make_relief_scene(kW, kH, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f));
+  }
+  void fresh(const sss_settings& s) {
+    if (sss_ != nullptr) sss_destroy(sss_);
+    sss_ = create_sss();
+    ASSERT_NE(sss_, nullptr);
+    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+    ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
+  }
+  // The frame, described (ES 3.0 cannot be asked), into a separate RGBA16F output.
+  sss_result apply(sss_frame f) {
+    f.texture_width = kW;
+    f.texture_height = kH;
+    f.color_format = GL_RGBA16F;
+    f.depth_format = GL_DEPTH_COMPONENT32F;
+    if (f.output_texture != 0) f.output_format = GL_RGBA16F;
+    if (f.albedo_texture != 0) f.albedo_format = GL_RGBA16F;
+    f.flags = SSS_FRAME_TARGET_COMPLETE;  // the compute path needs the promise
+    return sss_apply_frame(sss_, &f);
+  }
+  // The frame of `colour` with `settings` (texturing as given) into a fresh output, read back.
+  std::vector<float> filtered(const sss_settings& settings, const std::vector<float>& colour, GLuint albedo) {
+    fresh(settings);
+    const GLuint depth = make_depth32f(kW, kH, scene_.window_depth);
+    const GLuint color = make_rgba16f(kW, kH, colour);
+    const GLuint out = make_rgba16f(kW, kH, std::vector<float>(colour.size(), -7.0f));
+    sss_frame f = frame_of(color, depth, out);
+    f.albedo_texture = albedo;
+    EXPECT_EQ(apply(f), SSS_OK) << sss_last_error(sss_);
+    return read_rgba(out, kW, kH);
+  }
+  SyntheticScene scene_;
+};
+
+sss_settings case_settings(const PathCase& p, uint32_t texturing) {
+  sss_settings s = path_case_settings(visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f), p.path, p.mode, p.two_terms);
+  s.texturing = texturing;
+  return s;
+}
+
+// The largest |out − in| / in over the translucent pixels' rgb (alpha above 0), and the number of
+// values beyond `bound` of that.
+float largest_change(const std::vector<float>& out, const Inputs& in, float bound, std::size_t* beyond) {
+  float largest = 0.0f;
+  *beyond = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (i % 4 == 3 || !(in.color[i - i % 4 + 3] > 0.0f)) continue;
+    const float relative = std::fabs(out[i] - in.color[i]) / std::max(in.color[i], 1e-6f);
+    largest = std::max(largest, relative);
+    *beyond += relative > bound ? 1 : 0;
+  }
+  return largest;
+}
+
+// Uniform light over the checker: post-scatter gives the input back (each value passes through
+// four roundings to half: the quotient, the horizontal pass's target, the weighted mean of equal
+// values, the output; each within half a step of its value, so at most 4 half steps in all, plus
+// the mean's own float error, far below). Pre- and post-scatter blurs sqrt(A) and pre-scatter A:
+// both change the checker's pixels by far more (measured, printed).
+TEST_F(Texturing, UniformLightKeepsTheAlbedoDetailInPostScatter) {
+  const Inputs in = make_inputs(scene_, false, false);
+  for (const PathCase& p : kEveryPath) {
+    SCOPED_TRACE(p.name);
+    const GLuint albedo = make_rgba16f(kW, kH, in.albedo);
+    std::size_t beyond = 0, beyond_pre = 0, beyond_both = 0;
+    const float bound = 4.0f * kHalfStep;
+    const float post = largest_change(filtered(case_settings(p, SSS_TEXTURING_POST_SCATTER), in.color, albedo), in,
+                                      bound, &beyond);
+    const float both = largest_change(
+        filtered(case_settings(p, SSS_TEXTURING_PRE_AND_POST_SCATTER), in.color, albedo), in, bound, &beyond_both);
+    const float pre = largest_change(filtered(case_settings(p, SSS_TEXTURING_PRE_SCATTER), in.color, albedo), in,
+                                     bound, &beyond_pre);
+    std::printf("%s: uniform light, largest relative change of a translucent value: post-scatter %.5f (%zu beyond "
+                "%.5f), pre- and post-scatter %.3f, pre-scatter %.3f\n",
+                p.name, post, beyond, bound, both, pre);
+    EXPECT_EQ(beyond, 0u);
+    EXPECT_GT(pre, 0.1f) << "pre-scatter must blur the albedo's checker (else this check cannot fail)";
+    EXPECT_GT(both, 0.05f);
+    EXPECT_LT(both, pre);
+    TearDown();
+    SetUp();
+  }
+}
+
+// The near-zero rule (sss.h sss_texturing): under uniform light a freckle of albedo 0.001, below the
+// floor of 1/256, is taken to hold colour / (1/256) of light, a quarter of what it has; its own
+// output is 1/256 times its blurred light, brighter than its colour (at most 1/256 · E, to within
+// the roundings' 4 half steps), and it darkens its neighbours' light. Measured and printed: the
+// freckle's output over its colour, and the largest relative change elsewhere.
+TEST_F(Texturing, AnAlbedoBelowTheFloorCountsAsTheFloor) {
+  const Inputs in = make_inputs(scene_, false, true);
+  const GLuint albedo = make_rgba16f(kW, kH, in.albedo);
+  const std::vector<float> out = filtered(case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER), in.color, albedo);
+  float lowest = 1e30f, highest = 0.0f, elsewhere = 0.0f;
+  std::size_t beyond_floor = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const int c = static_cast<int>(i % 4);
+    const int x = static_cast<int>((i / 4) % kW), y = static_cast<int>((i / 4) / kW);
+    if (c == 3 || !(in.color[i - i % 4 + 3] > 0.0f)) continue;
+    const float ratio = out[i] / in.color[i];
+    if (in_freckle(x, y)) {
+      lowest = std::min(lowest, ratio);
+      highest = std::max(highest, ratio);
+      beyond_floor += out[i] > kFloor * kUniform[c] * (1.0f + 4.0f * kHalfStep) ? 1 : 0;
+    } else {
+      elsewhere = std::max(elsewhere, std::fabs(ratio - 1.0f));
+    }
+  }
+  std::printf("albedo 0.001 under the floor 1/256: the freckle's output is %.2f to %.2f times its colour (the exact "
+              "answer: 1); elsewhere the largest relative change is %.4f\n", lowest, highest, elsewhere);
+  EXPECT_EQ(beyond_floor, 0u);
+  EXPECT_GT(lowest, 1.0f);
+}
+
+// Any light: the module's output of mode `mode` against A_post times its own pre-scatter filter of
+// colour / A_post. The quotient the reference is handed is the copy's (rounded to half from the
+// float quotient); the GL's division may differ from the CPU's in the last float bit, which moves
+// a quotient by at most one half step in rare cases, and the product and its rounding add one more:
+// 3 half steps relative to the value. The pixels the passes leave alone (alpha 0) must be the
+// host's colour exactly.
+void expect_equivalent(const PathCase& p, uint32_t mode, const Inputs& in, const std::vector<float>& module,
+                       const std::vector<float>& reference_filtered) {
+  std::size_t beyond = 0, untouched_moved = 0, translucent = 0;
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < module.size(); ++i) {
+    const std::size_t pixel = i / 4;
+    const int c = static_cast<int>(i % 4);
+    if (!(in.color[pixel * 4 + 3] > 0.0f)) {
+      untouched_moved += module[i] != in.color[i] ? 1 : 0;
+      continue;
+    }
+    if (c == 3) continue;
+    ++translucent;
+    const float expected = sss::math::round_to_half(reference_filtered[i] * albedo_post(in.albedo[i], mode));
+    const float relative = std::fabs(module[i] - expected) / std::max(std::fabs(expected), 1e-6f);
+    largest = std::max(largest, relative);
+    beyond += relative > 3.0f * kHalfStep ? 1 : 0;
+  }
+  std::printf("%s, mode %u: %zu translucent values, largest relative difference from A_post x filter(colour / "
+              "A_post) %.5f, %zu beyond %.5f; %zu untouched values moved\n",
+              p.name, mode, translucent, largest, beyond, 3.0f * kHalfStep, untouched_moved);
+  EXPECT_EQ(beyond, 0u);
+  EXPECT_EQ(untouched_moved, 0u);
+}
+
+TEST_F(Texturing, EachModeIsAPostTimesThePreScatterFilterOfTheColourOverAPost) {
+  const Inputs in = make_inputs(scene_, true);
+  for (const PathCase& p : kEveryPath) {
+    for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+      SCOPED_TRACE(std::string(p.name) + ", mode " + std::to_string(mode));
+      const GLuint albedo = make_rgba16f(kW, kH, in.albedo);
+      const std::vector<float> module = filtered(case_settings(p, mode), in.color, albedo);
+      std::vector<float> quotient = in.color;
+      for (std::size_t i = 0; i < quotient.size(); ++i) {
+        if (i % 4 != 3) quotient[i] = sss::math::round_to_half(in.color[i] / albedo_post(in.albedo[i], mode));
+      }
+      const std::vector<float> reference = filtered(case_settings(p, SSS_TEXTURING_PRE_SCATTER), quotient, 0);
+      expect_equivalent(p, mode, in, module, reference);
+      TearDown();
+      SetUp();
+    }
+  }
+}
+
+// Pre-scatter, the default, reads no albedo: the same image with an albedo texture given or not,
+// bit for bit (and today's: the other suites' images are unchanged).
+TEST_F(Texturing, PreScatterIgnoresTheAlbedo) {
+  const Inputs in = make_inputs(scene_, true);
+  const sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_PRE_SCATTER);
+  const std::vector<float> without = filtered(s, in.color, 0);
+  const std::vector<float> with = filtered(s, in.color, make_rgba16f(kW, kH, in.albedo));
+  EXPECT_EQ(with, without);
+}
+
+TEST_F(Texturing, BadAlbedoInputsAreRefusedByName) {
+  const Inputs in = make_inputs(scene_, true);
+  sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);
+  fresh(s);
+  const GLuint depth = make_depth32f(kW, kH, scene_.window_depth);
+  const GLuint color = make_rgba16f(kW, kH, in.color);
+  const std::vector<float> before = read_rgba(color, kW, kH);
+  const auto expect_refused = [&](sss_frame f, sss_result expected, const char* part, bool described = true) {
+    SCOPED_TRACE(part);
+    const sss_result r = described ? apply(f) : sss_apply_frame(sss_, &f);
+    EXPECT_EQ(r, expected) << sss_result_string(r) << ": " << sss_last_error(sss_);
+    EXPECT_NE(std::string(sss_last_error(sss_)).find(part), std::string::npos) << sss_last_error(sss_);
+    EXPECT_EQ(read_rgba(color, kW, kH), before);
+  };
+  sss_frame f = frame_of(color, depth);
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "settings->texturing = 1 (SSS_TEXTURING_POST_SCATTER) with "
+                                                "frame->albedo_texture = 0");
+  sss_frame bad_format = frame_of(color, depth);
+  bad_format.albedo_texture = make_rgba16f(kW, kH, in.albedo);
+  bad_format.texture_width = kW;
+  bad_format.texture_height = kH;
+  bad_format.color_format = GL_RGBA16F;
+  bad_format.depth_format = GL_DEPTH_COMPONENT32F;
+  bad_format.albedo_format = GL_R8;
+  expect_refused(bad_format, SSS_ERROR_INVALID_ARGUMENT, "frame->albedo_format = 0x8229", false);
+  if (!is_gles()) {  // ES 3.0 cannot be asked: the description is taken as it is there
+    sss_frame u = frame_of(color, depth);  // undescribed: the GL is asked
+    u.albedo_texture = make_texture(GL_RGBA8, kW / 2, kH, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    expect_refused(u, SSS_ERROR_INVALID_TEXTURE, "albedo_texture", false);
+    u.albedo_texture = make_texture(GL_R8, kW, kH, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    expect_refused(u, SSS_ERROR_INVALID_TEXTURE, "albedo_texture", false);
+  }
+  s.texturing = 7;
+  EXPECT_EQ(sss_set_settings(sss_, &s), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("settings->texturing = 7"), std::string::npos);
+  sss_prepare_desc d = {};
+  d.struct_size = sizeof d;
+  d.width = kW;
+  d.height = kH;
+  d.color_format = GL_RGBA16F;
+  d.depth_format = GL_DEPTH_COMPONENT32F;
+  d.albedo_format = GL_R8;
+  EXPECT_EQ(sss_prepare(sss_, &d), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("desc->albedo_format"), std::string::npos);
+  d.albedo_format = GL_SRGB8_ALPHA8;
+  EXPECT_EQ(sss_prepare(sss_, &d), SSS_OK) << sss_last_error(sss_);
+}
+
+TEST_F(Texturing, MultisampledColourWithAnAlbedoIsRefused) {
+  if (is_gles()) GTEST_SKIP() << "no MSAA path on OpenGL ES";
+  sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);
+  fresh(s);
+  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 3, scene_.projection);  // the samples' source
+  const GLuint color = make_multisample_texture(GL_RGBA16F, kW, kH, 4, fine.color);
+  const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, kW, kH, 4, fine.window_depth);
+  textures_.push_back(color);
+  textures_.push_back(depth);
+  sss_frame f = frame_of(color, depth, make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f)));
+  f.albedo_texture = make_texture(GL_RGBA8, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  const sss_result r = sss_apply_frame(sss_, &f);
+  EXPECT_EQ(r, SSS_ERROR_UNSUPPORTED) << sss_last_error(sss_);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("the MSAA path takes no albedo"), std::string::npos)
+      << sss_last_error(sss_);
+}
+
+}  // namespace
+}  // namespace sss_test
