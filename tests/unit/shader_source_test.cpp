@@ -153,9 +153,9 @@ TEST(ShaderSource, EveryLineOfTheEmbeddedShadersCarriesItsFileAndLine) {
 // reads at its pixel) and the compute passes include the same pieces in the same order.
 TEST(ShaderSource, TheBlurShadersShareTheirPieces) {
   using namespace sss::gl;
-  const std::vector<std::string> shared = {"nearest_half.glsl",   "colour_range.glsl", "depth.glsl",
-                                           "jitter.glsl",         "pass_surface.glsl", "footprint_taps.glsl",
-                                           "footprint_cells.glsl"};
+  const std::vector<std::string> shared = {"nearest_half.glsl", "colour_range.glsl",   "depth.glsl",
+                                           "jitter.glsl",       "pass_surface.glsl",   "albedo.glsl",
+                                           "footprint_taps.glsl", "footprint_cells.glsl"};
   BlurVariant view;
   view.debug_view = SSS_DEBUG_VIEW_TAPS;
   for (const BlurVariant& v : {BlurVariant{}, view}) {
