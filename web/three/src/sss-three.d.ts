@@ -51,6 +51,9 @@ export interface SSSSettings {
   jitter: number;
   /** [0, 1]: the fraction of the width, from the left, left unfiltered (split view). Default 0. */
   split: number;
+  /** Standard and physical materials draw their diffuse light apart from their specular and
+   *  emissive light, and only the diffuse is blurred (docs/three.md "Split lighting"). Default true. */
+  splitLighting: boolean;
 }
 export declare const DEFAULT_SETTINGS: Readonly<SSSSettings>;
 
