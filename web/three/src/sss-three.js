@@ -14,6 +14,8 @@ import { FullScreenQuad, Pass } from 'three/examples/jsm/postprocessing/Pass.js'
 import createSSSModule from './wasm/sss_three.js';
 import { SplitCompose, SplitTargets, canSplit, patchMaterial } from './split-lighting.js';
 
+export { SPLIT_PROGRAM_KEY } from './split-lighting.js';
+
 // GL enum values of the formats the library takes (sss.h SSS_GL_*).
 const GL_RGBA16F = 0x881A, GL_RGBA32F = 0x8814, GL_R8UI = 0x8232;
 const GL_DEPTH_COMPONENT16 = 0x81A5, GL_DEPTH_COMPONENT24 = 0x81A6, GL_DEPTH_COMPONENT32F = 0x8CAC;
@@ -186,8 +188,9 @@ export class SSS {
     this._idClear = new Color();
     this._idClear.r = NO_PROFILE;  // three clears an unsigned-integer target with the clear colour as is
     // The split (split-lighting.js): the materials patched, which pass or settings a scene's split
-    // follows (scene -> { pass } or { settings }: read before the scene's draws, when SSSPass has
-    // not run yet), per target what its last scene render drew split, and the targets' attachments.
+    // follows (scene -> { pass }, or { settings, armed } from SSS.render: read before the scene's
+    // draws, when the pass has not run yet), per target what its last scene render drew split, and
+    // the targets' attachments.
     this._patched = new WeakSet();
     this._sources = new WeakMap();
     this._drawn = new WeakMap();
@@ -357,7 +360,15 @@ export class SSS {
   _splitSettings(renderer, scene, target) {
     if (!target.depthTexture || renderer.capabilities.logarithmicDepthBuffer) return null;
     const source = this._sources.get(scene);
-    const settings = !source ? null : source.pass ? (source.pass.enabled ? source.pass.settings() : null) : source.settings;
+    let settings = null;
+    if (source && source.pass) {
+      settings = source.pass.enabled ? source.pass.settings() : null;
+    } else if (source && source.armed === target) {
+      // Without a composer, a call of SSS.render arms the next scene render into its target (that
+      // render must be handed to SSS.render too: a last call with splitLighting false arms none).
+      settings = source.settings;
+      source.armed = null;
+    }
     if (!settings || !settings.splitLighting || !(settings.strength > 0)) return null;
     const collected = this._collectProfiles(scene, settings);
     return collected.profiles.length > 0 && this._setProfiles(collected, settings) ? settings : null;
@@ -472,7 +483,7 @@ export class SSS {
       return this._refuse('sss-three: a logarithmic depth buffer cannot be linearised from the projection');
     }
     const source = this._sources.get(scene);
-    if (!source || !source.pass) this._sources.set(scene, { settings });  // the next frame's split follows these
+    if (!source || !source.pass) this._sources.set(scene, { settings, armed: target });  // the next frame's split
     const drewSplit = this._takeSplit(target);
     const collected = this._collectProfiles(scene, settings);
     this._splittable = collected.splittable;

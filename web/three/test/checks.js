@@ -2,6 +2,7 @@
 // page, window.sssExample): frames, GL state snapshots, a probe of three's state cache, and the
 // compile counter. It returns measurements; the Python driver judges them.
 import * as THREE from 'three';
+import { SPLIT_PROGRAM_KEY, createSSSRenderTarget } from 'sss-three';
 
 const ex = window.sssExample;
 const gl = ex.renderer.getContext();
@@ -484,5 +485,127 @@ export function nativeInputs(single = true) {
   for (const [material, spec] of spheres) material.userData.sss = spec;
   out.errors = glErrors();
   if (single) ex.frame();  // the three profiles again
+  return out;
+}
+
+// ---- Split lighting (docs/three.md "Split lighting"): a glossy skin sphere (MeshPhysicalMaterial,
+// low roughness, userData.sss skin) beside the same material without userData.sss, under a point
+// light, filtered without a composer (SSS.render). Read back as floats: three's own frame before
+// the pass saw the materials; per frame with the pass, the colour the library is handed and what
+// it made of it (around sss3_apply), the unblurred light and the albedo the split wrote, the
+// profile texture and the composed colour; three's specular alone (the skin material with a black
+// diffuse colour: with metalness 0 three's specular does not depend on it); the shader compiles.
+const SPLIT_W = 320, SPLIT_H = 180;
+export const SKIN_COLOUR = [0.8, 0.5, 0.38];  // linear
+function splitScene() {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0, 0, 0);
+  const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
+  camera.position.set(0, 0, 0.6);
+  const light = new THREE.PointLight(0xffffff, 0.6, 0, 2);
+  light.position.set(0.25, 0.3, 0.4);
+  scene.add(light, new THREE.AmbientLight(0xffffff, 0.15));
+  const glossy = (colour) => new THREE.MeshPhysicalMaterial({ color: new THREE.Color(...colour), roughness: 0.25,
+    metalness: 0, specularIntensity: 1 });
+  const geometry = new THREE.SphereGeometry(0.06, 96, 48);
+  const skin = new THREE.Mesh(geometry, glossy(SKIN_COLOUR));
+  skin.material.userData.sss = { profile: 'skin', object: 0 };
+  skin.position.x = -0.07;
+  const plain = new THREE.Mesh(geometry, glossy(SKIN_COLOUR));  // no userData.sss
+  plain.position.x = 0.07;
+  scene.add(skin, plain);
+  const black = glossy([0, 0, 0]);
+  return { scene, camera, skin, plain, black };
+}
+
+function textureOf(texture) { return ex.renderer.properties.get(texture).__webglTexture; }
+
+function drawInto(target, scene, camera) {
+  ex.renderer.setRenderTarget(target);
+  ex.renderer.render(scene, camera);
+  ex.renderer.setRenderTarget(null);
+}
+
+const floats = (texture) => base64(new Uint8Array(readTexture(textureOf(texture), SPLIT_W, SPLIT_H, false).buffer));
+
+// An 8-bit texture (the albedo, SRGB8_ALPHA8) as its bytes: the stored sRGB encoding.
+function bytes(texture) {
+  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING), fbo = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fbo);
+  gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, textureOf(texture), 0);
+  const data = new Uint8Array(SPLIT_W * SPLIT_H * 4);
+  gl.readPixels(0, 0, SPLIT_W, SPLIT_H, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
+  gl.deleteFramebuffer(fbo);
+  return base64(data);
+}
+
+// gl.compileShader and gl.linkProgram counted around `body`.
+function counting(body) {
+  const compile = gl.compileShader, link = gl.linkProgram, counts = { compiles: 0, links: 0 };
+  gl.compileShader = function (...args) { ++counts.compiles; return compile.apply(gl, args); };
+  gl.linkProgram = function (...args) { ++counts.links; return link.apply(gl, args); };
+  try {
+    body();
+  } finally {
+    delete gl.compileShader;
+    delete gl.linkProgram;
+  }
+  return counts;
+}
+
+export function splitLighting() {
+  const sss = ex.sss, m = sss.module, s = splitScene(), target = createSSSRenderTarget(SPLIT_W, SPLIT_H);
+  const skinMaterial = s.skin.material, out = { width: SPLIT_W, height: SPLIT_H, skinColour: SKIN_COLOUR };
+  // Three's own frames, before the pass has seen (and patched) the materials.
+  drawInto(target, s.scene, s.camera);
+  out.three = floats(target.texture);
+  s.skin.material = s.black;
+  drawInto(target, s.scene, s.camera);
+  out.specular = floats(target.texture);
+  s.skin.material = skinMaterial;
+  // One frame with the pass and `settings`: a call of SSS.render first (it arms the next scene
+  // render's split with these settings), then the frame measured.
+  const passFrame = (settings) => {
+    drawInto(target, s.scene, s.camera);
+    sss.render(target, s.scene, s.camera, settings);
+    drawInto(target, s.scene, s.camera);
+    const apply = m._sss3_apply, frame = {};
+    m._sss3_apply = function (context, color) {
+      frame.handed = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+      const r = apply.apply(this, arguments);
+      frame.blurred = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+      return r;
+    };
+    try {
+      frame.result = sss.render(target, s.scene, s.camera, settings);
+    } finally {
+      m._sss3_apply = apply;
+    }
+    frame.message = sss.lastError;
+    frame.composed = floats(target.texture);
+    const companion = sss._splitTargets.companion(target);
+    frame.unblurred = companion ? floats(companion.textures[0]) : null;
+    frame.albedo = companion ? bytes(companion.textures[1]) : null;
+    frame.profile = base64(readTexture(textureOf(sss._idTarget.texture), SPLIT_W, SPLIT_H, true));
+    return frame;
+  };
+  // The first frames: the materials patched (their programs compiled with the split), the profile
+  // pass's materials and the compose.
+  out.firstFrames = counting(() => { out.first = passFrame({}); });
+  out.steadyFrames = counting(() => {
+    out.on = passFrame({});
+    out.noSplit = passFrame({ splitLighting: false });  // the check's own test: the specular blurred
+    // After a call with splitLighting false no scene render is armed: the frame without the pass.
+    drawInto(target, s.scene, s.camera);
+    out.off = floats(target.texture);
+    out.zero = passFrame({ strength: 0 });
+    out.onAgain = passFrame({});
+  });
+  const program = (material) => ex.renderer.properties.get(material).currentProgram;
+  out.programs = { skin: program(skinMaterial).cacheKey, plain: program(s.plain.material).cacheKey,
+    shared: program(skinMaterial) === program(s.plain.material), splitKey: SPLIT_PROGRAM_KEY };
+  out.errors = glErrors();
+  target.dispose();
   return out;
 }
