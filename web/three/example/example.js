@@ -146,19 +146,23 @@ async function main() {
 
   Object.assign(example, {
     pass, sss, gui, marble, milk, glossy, head,
-    // Median ms of `count` frames with the pass on, and with it off (three's frame alone).
+    // Median ms of `count` frames with the pass on, with it on and splitLighting off (the whole lit
+    // colour blurred), and with it off (three's frame alone).
     time(count) {
       const median = (a) => a.sort((x, y) => x - y)[a.length >> 1];
-      const enabled = pass.enabled, on = [], off = [];
+      const enabled = pass.enabled, splitLighting = pass.splitLighting, on = [], unsplit = [], off = [];
       for (let i = 0; i < count; ++i) {
         pass.enabled = true;
         on.push(frame());
+        pass.splitLighting = false;
+        unsplit.push(frame());
+        pass.splitLighting = splitLighting;
         pass.enabled = false;
         off.push(frame());
       }
       pass.enabled = enabled;
       frame();
-      return { on: median(on), off: median(off) };
+      return { on: median(on), unsplit: median(unsplit), off: median(off) };
     }
   });
   frame();
