@@ -554,8 +554,38 @@ function counting(body) {
   return counts;
 }
 
+// One frame with the pass and `settings` on `scene` into `target` (SPLIT_W x SPLIT_H): a call of
+// SSS.render first (it arms the next scene render's split with these settings), then the frame
+// measured: what the library is handed and what it made of it, the composed colour, the split's
+// unblurred light and albedo, the profile texture.
+function passFrame(target, scene, camera, settings) {
+  const sss = ex.sss, m = sss.module, frame = {};
+  drawInto(target, scene, camera);
+  sss.render(target, scene, camera, settings);
+  drawInto(target, scene, camera);
+  const apply = m._sss3_apply;
+  m._sss3_apply = function (context, color) {
+    frame.handed = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+    const r = apply.apply(this, arguments);
+    frame.blurred = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+    return r;
+  };
+  try {
+    frame.result = sss.render(target, scene, camera, settings);
+  } finally {
+    m._sss3_apply = apply;
+  }
+  frame.message = sss.lastError;
+  frame.composed = floats(target.texture);
+  const companion = sss._splitTargets.companion(target);
+  frame.unblurred = companion ? floats(companion.textures[0]) : null;
+  frame.albedo = companion ? bytes(companion.textures[1]) : null;
+  frame.profile = base64(readTexture(textureOf(sss._idTarget.texture), SPLIT_W, SPLIT_H, true));
+  return frame;
+}
+
 export function splitLighting() {
-  const sss = ex.sss, m = sss.module, s = splitScene(), target = createSSSRenderTarget(SPLIT_W, SPLIT_H);
+  const s = splitScene(), target = createSSSRenderTarget(SPLIT_W, SPLIT_H);
   const skinMaterial = s.skin.material, out = { width: SPLIT_W, height: SPLIT_H, skinColour: SKIN_COLOUR };
   // Three's own frames, before the pass has seen (and patched) the materials.
   drawInto(target, s.scene, s.camera);
@@ -564,48 +594,65 @@ export function splitLighting() {
   drawInto(target, s.scene, s.camera);
   out.specular = floats(target.texture);
   s.skin.material = skinMaterial;
-  // One frame with the pass and `settings`: a call of SSS.render first (it arms the next scene
-  // render's split with these settings), then the frame measured.
-  const passFrame = (settings) => {
-    drawInto(target, s.scene, s.camera);
-    sss.render(target, s.scene, s.camera, settings);
-    drawInto(target, s.scene, s.camera);
-    const apply = m._sss3_apply, frame = {};
-    m._sss3_apply = function (context, color) {
-      frame.handed = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
-      const r = apply.apply(this, arguments);
-      frame.blurred = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
-      return r;
-    };
-    try {
-      frame.result = sss.render(target, s.scene, s.camera, settings);
-    } finally {
-      m._sss3_apply = apply;
-    }
-    frame.message = sss.lastError;
-    frame.composed = floats(target.texture);
-    const companion = sss._splitTargets.companion(target);
-    frame.unblurred = companion ? floats(companion.textures[0]) : null;
-    frame.albedo = companion ? bytes(companion.textures[1]) : null;
-    frame.profile = base64(readTexture(textureOf(sss._idTarget.texture), SPLIT_W, SPLIT_H, true));
-    return frame;
-  };
+  const passFrameOf = (settings) => passFrame(target, s.scene, s.camera, settings);
   // The first frames: the materials patched (their programs compiled with the split), the profile
   // pass's materials and the compose.
-  out.firstFrames = counting(() => { out.first = passFrame({}); });
+  out.firstFrames = counting(() => { out.first = passFrameOf({}); });
   out.steadyFrames = counting(() => {
-    out.on = passFrame({});
-    out.noSplit = passFrame({ splitLighting: false });  // the check's own test: the specular blurred
+    out.on = passFrameOf({});
+    out.noSplit = passFrameOf({ splitLighting: false });  // the check's own test: the specular blurred
     // After a call with splitLighting false no scene render is armed: the frame without the pass.
     drawInto(target, s.scene, s.camera);
     out.off = floats(target.texture);
-    out.zero = passFrame({ strength: 0 });
-    out.onAgain = passFrame({});
+    out.zero = passFrameOf({ strength: 0 });
+    out.onAgain = passFrameOf({});
   });
   const program = (material) => ex.renderer.properties.get(material).currentProgram;
   out.programs = { skin: program(skinMaterial).cacheKey, plain: program(s.plain.material).cacheKey,
     shared: program(skinMaterial) === program(s.plain.material), splitKey: SPLIT_PROGRAM_KEY };
   out.errors = glErrors();
   target.dispose();
+  return out;
+}
+
+// The split with what three adds to outgoingLight after the diffuse sum, each on a skin sphere of
+// its own: clearcoat, sheen, transmission (opaque), emissive with a colour map, and fog over all.
+// Three's frame before the pass saw them, and one frame with the pass (three_test.py: composed -
+// blurred = three's colour - the diffuse handed, within half-float rounding).
+export function splitFeatures() {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0, 0, 0);
+  scene.fog = new THREE.Fog(0x203040, 0.4, 1.2);
+  const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
+  camera.position.set(0, 0, 0.6);
+  const light = new THREE.PointLight(0xffffff, 0.6, 0, 2);
+  light.position.set(0.25, 0.3, 0.4);
+  scene.add(light, new THREE.AmbientLight(0xffffff, 0.15));
+  const map = new THREE.DataTexture(new Uint8Array(16 * 16 * 4).map((_, i) => (i % 4 === 3 ? 255 : 128 + ((i * 53) & 127))),
+    16, 16);
+  map.colorSpace = THREE.SRGBColorSpace;
+  map.needsUpdate = true;
+  const colour = new THREE.Color(...SKIN_COLOUR), geometry = new THREE.SphereGeometry(0.04, 64, 32);
+  const features = [
+    { clearcoat: 1, clearcoatRoughness: 0.1 },
+    { sheen: 1, sheenColor: new THREE.Color(0.9, 0.6, 0.5), sheenRoughness: 0.4 },
+    { transmission: 0.5, thickness: 0.02 },
+    { emissive: new THREE.Color(0.2, 0.05, 0.02), map }
+  ];
+  features.forEach((extra, i) => {
+    const material = new THREE.MeshPhysicalMaterial(Object.assign({ color: colour, roughness: 0.3 }, extra));
+    material.userData.sss = { profile: 'skin', object: i };
+    const mesh = new THREE.Mesh(geometry, material);
+    mesh.position.set(-0.15 + 0.1 * i, 0, 0);
+    scene.add(mesh);
+  });
+  const target = createSSSRenderTarget(SPLIT_W, SPLIT_H), out = { width: SPLIT_W, height: SPLIT_H };
+  drawInto(target, scene, camera);
+  out.three = floats(target.texture);
+  passFrame(target, scene, camera, {});  // the materials patched and compiled
+  out.on = passFrame(target, scene, camera, {});
+  out.errors = glErrors();
+  target.dispose();
+  map.dispose();
   return out;
 }

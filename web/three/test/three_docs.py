@@ -104,6 +104,9 @@ def main():
                   "| largest \\|composed − blurred diffuse − three's specular\\| over its half-float bound | %.3f | 1 |"
                   % split["worst_ratio"],
                   "| the same in half-float steps of the composed value | %.2f | |" % split["worst_steps"],
+                  ] + (["| clearcoat, sheen, transmission, emissive with a map, fog (four spheres): largest \\|composed − blurred"
+                        " − (three's colour − the diffuse handed)\\| over its bound | %.3f | 1 |"
+                        % three["split_features"]["worst_ratio"]] if "split_features" in three else []) + [
                   "| with `splitLighting: false` (the check's own test: must fail): largest ratio; pixels beyond | %.0f; %d | > 0 |"
                   % (split["no_split_worst_ratio"], split["no_split_beyond"]),
                   "| shaders compiled in the first split frames; in the nine scene renders after | %d; %d | 0 after |"

@@ -157,6 +157,7 @@ def run(browser, args, out_dir, results):
 
     # 6. Split lighting.
     split_lighting(js, out_dir, results)
+    split_features(js, results)
 
     # Pictures and times (read by people, never judged).
     times = js("sssExample.time(%d)" % args.frames)
@@ -258,6 +259,37 @@ def split_residuals(frame, specular, pixels):
             out = out or residual > bound
         beyond += out
     return worst, beyond
+
+
+def split_features(js, results):
+    # Clearcoat, sheen, transmission, emissive with a map, fog: what three adds after the diffuse sum
+    # lands in the unblurred light, so composed - blurred = three's colour - the diffuse handed. The
+    # same roundings as SPLIT_RELATIVE's, with three's colour F for S and the handed diffuse D (a half
+    # float, exact) beside it: |C - B - (F - D)| <= 2^-11 (|C| + |U| + |F|) + float32's.
+    got = js("checks.splitFeatures()")
+    n = got["width"] * got["height"]
+    on = got["on"]
+    check(on["result"] == 0 and got["errors"] == [], "split features: filtered, no GL error (%s %s)" % (on["message"], got["errors"]))
+    three, composed, blurred = f32(got["three"]), f32(on["composed"]), f32(on["blurred"])
+    handed, unblurred = f32(on["handed"]), f32(on["unblurred"])
+    profile = base64.b64decode(on["profile"])
+    worst, beyond, counts = 0.0, 0, {}
+    for i in range(n):
+        p = profile[i] & 15
+        if p == 15:
+            continue
+        counts[profile[i] >> 4] = counts.get(profile[i] >> 4, 0) + 1
+        for c in range(3):
+            k = i * 4 + c
+            residual = abs(composed[k] - blurred[k] - (three[k] - handed[k]))
+            bound = SPLIT_RELATIVE * (abs(composed[k]) + abs(unblurred[k]) + abs(three[k])) + SPLIT_ABSOLUTE
+            worst = max(worst, residual / bound)
+            beyond += residual > bound
+    results["split_features"] = {"pixels_per_sphere": counts, "worst_ratio": worst, "beyond": beyond}
+    print("     split features (clearcoat, sheen, transmission, emissive + map; fog): worst %.3f of the bound" % worst)
+    check(len(counts) == 4 and min(counts.values()) > 500, "split features: four spheres drawn split (%s)" % counts)
+    check(beyond == 0, "split features: composed - blurred = three's colour - the diffuse, within half-float rounding "
+          "(worst %.3f of the bound)" % worst)
 
 
 def split_lighting(js, out_dir, results):
