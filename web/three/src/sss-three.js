@@ -93,8 +93,9 @@ function depthFormatOf(texture) {
 // a pixel where three's own depth lies behind this fragment: this shader and three's compute the
 // position with different code, which can move a silhouette by a pixel (measured: about 400 pixels
 // of the head's outline at 640x360 otherwise marked skin over the background). The second output
-// is the split's mask (R8): 1 where a material that drew its lighting split is in front, split
-// view or not: where the pass adds the unblurred light back (split-lighting.js).
+// is the split's mask (R8): 1 where a material that drew its lighting split is in front (left of
+// the split view's line too, where that material wrote zeros to add): where the pass adds the
+// unblurred light back (split-lighting.js).
 const PROFILE_VERTEX = `
 #include <common>
 #include <batching_pars_vertex>
@@ -329,11 +330,12 @@ export class SSS {
   }
 
   // Before each draw of a patched material: whether it writes its lighting split (null: no; else the
-  // window x from which it does: right of the split view's line). Only into a target
-  // whose split attachments the pass has allocated (_prepareSplit), when the scene's pass is enabled with splitLighting and a strength, the library has
-  // accepted the frame's profiles and settings (a refusal leaves three's frame as drawn, so it must
-  // be known before the draws: sss_set_profiles is called here, once per scene render, when the
-  // profiles changed; it makes no GL call), and the material is opaque with a strength of its own.
+  // window x from which it does: right of the split view's line). Only into a target whose split
+  // attachments the pass has allocated (_prepareSplit), when the scene's pass is enabled with
+  // splitLighting and a strength, the library has accepted the frame's profiles and settings (a
+  // refusal leaves three's frame as drawn, so it must be known before the draws: sss_set_profiles
+  // is called here, once per scene render, when the profiles changed; it makes no GL call), and the
+  // material is opaque with a strength of its own.
   _drawsSplit(renderer, scene, material, object) {
     const target = renderer.getRenderTarget(), frame = renderer.info.render.frame;
     if (!this.context || !this._splitTargets.companion(target)) return null;
@@ -630,8 +632,9 @@ export class SSSPass extends Pass {
     Object.assign(this, DEFAULT_SETTINGS, settings);
     this.needsSwap = false;
     this._formats = null;
-    // The scene's materials patched now and their split following this pass, so that the first
-    // frame draws split already.
+    // The scene's split follows this pass, and its materials are patched now, so that their first
+    // frame compiles their patched programs (the split itself starts once the pass has filtered a
+    // target and allocated its attachments: from the second frame).
     this._follow();
     sss._collectProfiles(scene, this.settings());
   }
