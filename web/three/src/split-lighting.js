@@ -22,7 +22,7 @@
 // others, so one program serves both and toggling the pass compiles nothing.
 import {
   AddEquation, CustomBlending, GLSL3, HalfFloatType, NearestFilter, OneFactor, RGBAFormat, SRGBColorSpace,
-  ShaderMaterial, UnsignedByteType, WebGLRenderTarget, ZeroFactor
+  ShaderLib, ShaderMaterial, UnsignedByteType, WebGLRenderTarget, ZeroFactor
 } from 'three';
 import { FullScreenQuad } from 'three/examples/jsm/postprocessing/Pass.js';
 
@@ -73,15 +73,20 @@ const AFTER_LAST = `#include <dithering_fragment>
 /** The fragment source of three's meshphysical shader (standard and physical) with the split. */
 export function splitFragmentShader(source) {
   if (!source.includes(TRANSMISSION) || !source.includes(LAST)) {
-    // A three whose shader no longer has these chunks: better no split than a wrong one.
-    throw new Error('sss-three: three\'s meshphysical fragment shader lacks ' + TRANSMISSION + ' or ' + LAST);
+    // The material's own onBeforeCompile took the chunks out: its outputs could not be declared.
+    throw new Error('sss-three: the fragment shader lacks ' + TRANSMISSION + ' or ' + LAST + ' (split lighting)');
   }
   return DECLARATIONS + source.replace(TRANSMISSION, BEFORE_TRANSMISSION).replace(LAST, AFTER_LAST);
 }
 
+// A three whose meshphysical shader has not these chunks (another release than the one tested,
+// 0.187) gets no split: its materials are filtered as three lit them, as before the split.
+const THREE_HAS_CHUNKS = ShaderLib.physical.fragmentShader.includes(TRANSMISSION) &&
+  ShaderLib.physical.fragmentShader.includes(LAST);
+
 /** Whether the pass can split a material's lighting: three's standard and physical materials. */
 export function canSplit(material) {
-  return !!(material && material.isMeshStandardMaterial && !material.isNodeMaterial);
+  return THREE_HAS_CHUNKS && !!(material && material.isMeshStandardMaterial && !material.isNodeMaterial);
 }
 
 /**
