@@ -607,6 +607,13 @@ export function splitLighting() {
     out.zero = passFrameOf({ strength: 0 });
     out.onAgain = passFrameOf({});
   });
+  // The target's framebuffer after the split frames, bound by three: as three made it and caches it
+  // (one draw buffer, nothing at attachments 1 and 2).
+  ex.renderer.setRenderTarget(target);
+  out.framebuffer = { drawBuffers: [0, 1, 2].map((i) => gl.getParameter(gl.DRAW_BUFFER0 + i)),
+    attachments: [1, 2].map((i) => gl.getFramebufferAttachmentParameter(gl.DRAW_FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i,
+      gl.FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE)) };
+  ex.renderer.setRenderTarget(null);
   const program = (material) => ex.renderer.properties.get(material).currentProgram;
   out.programs = { skin: program(skinMaterial).cacheKey, plain: program(s.plain.material).cacheKey,
     shared: program(skinMaterial) === program(s.plain.material), splitKey: SPLIT_PROGRAM_KEY };

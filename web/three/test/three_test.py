@@ -346,6 +346,10 @@ def split_lighting(js, out_dir, results):
           % (first["compiles"], first["links"], steady["compiles"], steady["links"]))
     check(steady["compiles"] == 0 and steady["links"] == 0,
           "split lighting: no shader compiled in the nine scene renders after, toggling the split, strength and the pass (%d compiles)" % steady["compiles"])
+    fb = got["framebuffer"]
+    check(fb["drawBuffers"] == [0x8CE0, 0, 0] and fb["attachments"] == [0, 0],
+          "split lighting: the target's framebuffer after the split frames as three made it (draw buffers %s, "
+          "attachments 1-2 %s)" % (fb["drawBuffers"], fb["attachments"]))
     check(programs["splitKey"] in programs["skin"] and programs["splitKey"] not in programs["plain"] and not programs["shared"],
           "split lighting: the patched material has a program of its own, the plain one three's")
 
