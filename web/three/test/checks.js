@@ -497,7 +497,9 @@ export function nativeInputs(single = true) {
 // diffuse colour: with metalness 0 three's specular does not depend on it); the shader compiles.
 const SPLIT_W = 320, SPLIT_H = 180;
 export const SKIN_COLOUR = [0.8, 0.5, 0.38];  // linear
-function splitScene() {
+// The split scenes' stage: a black background, a camera 0.6 m away, a point light up and right of
+// it and a little ambient light.
+function splitStage() {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0, 0, 0);
   const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
@@ -505,6 +507,11 @@ function splitScene() {
   const light = new THREE.PointLight(0xffffff, 0.6, 0, 2);
   light.position.set(0.25, 0.3, 0.4);
   scene.add(light, new THREE.AmbientLight(0xffffff, 0.15));
+  return { scene, camera };
+}
+
+function splitScene() {
+  const { scene, camera } = splitStage();
   const glossy = (colour) => new THREE.MeshPhysicalMaterial({ color: new THREE.Color(...colour), roughness: 0.25,
     metalness: 0, specularIntensity: 1 });
   const geometry = new THREE.SphereGeometry(0.06, 96, 48);
@@ -627,14 +634,8 @@ export function splitLighting() {
 // Three's frame before the pass saw them, and one frame with the pass (three_test.py: composed -
 // blurred = three's colour - the diffuse handed, within half-float rounding).
 export function splitFeatures() {
-  const scene = new THREE.Scene();
-  scene.background = new THREE.Color(0, 0, 0);
+  const { scene, camera } = splitStage();
   scene.fog = new THREE.Fog(0x203040, 0.4, 1.2);
-  const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
-  camera.position.set(0, 0, 0.6);
-  const light = new THREE.PointLight(0xffffff, 0.6, 0, 2);
-  light.position.set(0.25, 0.3, 0.4);
-  scene.add(light, new THREE.AmbientLight(0xffffff, 0.15));
   const map = new THREE.DataTexture(new Uint8Array(16 * 16 * 4).map((_, i) => (i % 4 === 3 ? 255 : 128 + ((i * 53) & 127))),
     16, 16);
   map.colorSpace = THREE.SRGBColorSpace;
