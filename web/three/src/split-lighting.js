@@ -168,9 +168,11 @@ export class SplitTargets {
   /**
    * In a patched material's draw into `target` (its framebuffer bound by three): the companion's
    * textures attached and all three draw buffers on until `object`'s draw ends (its
-   * onAfterRender, wrapped here once). False when the target has no companion yet.
+   * onAfterRender, wrapped here once); with `clear` (the frame's first split draw) both cleared to
+   * zero first, so that they hold 0 wherever no split draw lands. False when the target has no
+   * companion yet.
    */
-  open(target, object) {
+  open(target, object, clear) {
     const companion = this.companion(target);
     if (!companion) return false;
     const gl = this.gl, properties = this.renderer.properties;
@@ -179,6 +181,13 @@ export class SplitTargets {
     gl.framebufferTexture2D(gl.DRAW_FRAMEBUFFER, gl.COLOR_ATTACHMENT2, gl.TEXTURE_2D,
       properties.get(companion.textures[1]).__webglTexture, 0);
     gl.drawBuffers(ALL_BUFFERS);
+    if (clear) {
+      // A colour mask left off by the last draw would mask the clear; through three's state, which
+      // the draw then sets to the material's own.
+      this.renderer.state.buffers.color.setMask(true);
+      gl.clearBufferfv(gl.COLOR, 1, ZERO);
+      gl.clearBufferfv(gl.COLOR, 2, ZERO);
+    }
     this._open = true;
     if (!this._wrapped.has(object)) {
       const onAfterRender = object.onAfterRender, targets = this;
@@ -210,6 +219,7 @@ export class SplitTargets {
 }
 const ALL_BUFFERS = [0x8CE0, 0x8CE1, 0x8CE2];  // COLOR_ATTACHMENT0-2
 const ONE_BUFFER = [0x8CE0];
+const ZERO = new Float32Array(4);
 
 // The compose: the unblurred light (the companion's first texture) added to the target's colour
 // (which the library filtered in place) where the profile pass found a split material in front, by blending (one + one on the colour; the alpha,

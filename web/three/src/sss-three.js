@@ -346,7 +346,7 @@ export class SSS {
     }
     const spec = material.userData.sss, settings = drawn.settings;
     const split = !!(settings && spec && material.transparent !== true && settings.strength * (spec.strength ?? 1) > 0);
-    if (!split || !this._splitTargets.open(target, object)) return null;
+    if (!split || !this._splitTargets.open(target, object, drawn.materials.size === 0)) return null;
     drawn.materials.add(material);
     return settings.split * target.width;
   }

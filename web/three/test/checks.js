@@ -604,7 +604,11 @@ export function splitLighting() {
   const passFrameOf = (settings) => passFrame(target, s.scene, s.camera, settings);
   // The first frames: the materials patched (their programs compiled with the split), the profile
   // pass's materials and the compose.
+  // The sphere higher up in them, so that the frames after would find its old pixels in the split's
+  // attachments if they were not cleared each frame.
+  s.skin.position.y = 0.08;
   out.firstFrames = counting(() => { out.first = passFrameOf({}); });
+  s.skin.position.y = 0;
   out.steadyFrames = counting(() => {
     out.on = passFrameOf({});
     out.noSplit = passFrameOf({ splitLighting: false });  // the check's own test: the specular blurred

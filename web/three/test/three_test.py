@@ -337,6 +337,9 @@ def split_lighting(js, out_dir, results):
     check(all(composed[i * 4 + c] == three[i * 4 + c] for i in others for c in range(4)),
           "split lighting: the standard material without userData.sss and the background: three's colour, bit for bit")
     albedo = base64.b64decode(on["albedo"])
+    unblurred_on = f32(on["unblurred"])
+    check(all(albedo[i * 4 + c] == 0 and unblurred_on[i * 4 + c] == 0 for i in others for c in range(4)),
+          "split lighting: the split's attachments hold 0 on the plain material and the background")
     expected = [srgb8(v) for v in got["skinColour"]]
     albedo_off = max(abs(albedo[i * 4 + c] - expected[c]) for i in skin for c in range(3))
     check(albedo_off <= 1, "split lighting: the albedo attachment holds the skin's colour, sRGB-encoded %s (within %d level)"
