@@ -218,6 +218,7 @@ export function positions() {
   at('head', new THREE.Vector3(0, 0.03, 0.08));
   at('marble', ex.marble.position);
   at('milk', ex.milk.position);
+  at('glossy', ex.glossy.position);
   return out;
 }
 
@@ -289,6 +290,16 @@ export function withoutLending() {
   ex.renderer.resetState();  // three rebinds everything: the next frames are as before
   glErrors();
   return diffs;
+}
+
+// The example's frame with the pass and splitLighting off (the whole lit colour blurred), then on
+// again.
+export function unsplitFrame() {
+  ex.pass.splitLighting = false;
+  const image = frame();
+  ex.pass.splitLighting = true;
+  frame();
+  return image;
 }
 
 // A setting the library refuses: its message, the frame (three's, untouched), then valid again.

@@ -123,6 +123,17 @@ def run(browser, args, out_dir, results):
     check(rgb(lib["standard"]) == rgb(before["standard"]),
           "three's standard materials after the pass: the frame as without the library, bit for bit")
 
+    # The composer's frame splits too: over the glossy skin sphere, the split frame differs from three's
+    # by the diffuse light's blur alone; blurring the whole lit colour (splitLighting false) adds the
+    # highlight's blur to it (the sum of |8-bit level differences| over the sphere's disk).
+    unsplit = rgb(js("checks.unsplitFrame()"))
+    glossy = disk(positions["glossy"], 25)
+    off_by = lambda image: sum(abs(a - b) for i in glossy for a, b in zip(image[i * 3:i * 3 + 3], three_only[i * 3:i * 3 + 3]))
+    results["glossy_sphere_levels_off"] = {"split": off_by(on), "unsplit": off_by(unsplit)}
+    check(off_by(unsplit) > 2 * off_by(on),
+          "the glossy sphere: the split frame %d levels from three's over its disk, the whole colour blurred %d (> 2x)"
+          % (off_by(on), off_by(unsplit)))
+
     # 3. Around each of the library's calls.
     results["cache_calls_before_the_library"] = lib["around"][0]["syncCalls"] if lib["around"] else None
     check(len(lib["around"]) == 1, "one library call per frame (%d)" % len(lib["around"]))
