@@ -29,7 +29,7 @@ cmake --build "$web_build" --target sss_three
 package=$out/package
 rm -rf "$package"
 mkdir -p "$package/wasm" "$package/example"
-cp web/three/package.json web/three/README.md web/three/src/sss-three.js web/three/src/sss-three.d.ts "$package/"
+cp web/three/package.json web/three/README.md web/three/src/sss-three.js web/three/src/split-lighting.js web/three/src/sss-three.d.ts "$package/"
 cp LICENSE "$package/"  # the project's MIT licence (npm ships a LICENSE at the package's root)
 cp "$web_build/three-wasm/sss_three.js" "$web_build/three-wasm/sss_three.wasm" "$package/wasm/"
 cp web/three/example/index.html web/three/example/example.js "$package/example/"

@@ -78,8 +78,13 @@ async function main() {
   const milk = new THREE.Mesh(sphere, setSSSMaterial(new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.3 }),
     { profile: 'burley', measured: 'wholemilk', object: 2 }));
   milk.position.set(0.19, -0.09, 0.08);
-  for (const m of [marble, milk]) m.castShadow = m.receiveShadow = true;
-  scene.add(marble, milk);
+  // Glossy skin (a physical material, low roughness, clearcoat off): its highlight stays sharp while
+  // the diffuse light under it scatters (the pass's split lighting).
+  const glossy = new THREE.Mesh(sphere, setSSSMaterial(new THREE.MeshPhysicalMaterial({ color: 0xd9a08a, roughness: 0.2,
+    specularIntensity: 1 }), { profile: 'skin', object: 3 }));
+  glossy.position.set(-0.2, 0.075, 0.05);
+  for (const m of [marble, milk, glossy]) m.castShadow = m.receiveShadow = true;
+  scene.add(marble, milk, glossy);
 
   const composer = new EffectComposer(renderer, createSSSRenderTarget(WIDTH, HEIGHT));
   composer.addPass(new RenderPass(scene, camera));
@@ -130,29 +135,34 @@ async function main() {
   gui.add(pass, 'path', Object.keys(PATHS)).onChange(redraw);
   gui.add(pass, 'jitter', 0, 1, 0.05).onChange(redraw);
   gui.add(pass, 'split', 0, 1, 0.01).onChange(redraw);
+  gui.add(pass, 'splitLighting').onChange(redraw);
   const profiles = ['skin', 'burley', ...Object.keys(MEASURED_PROFILES)];
   const materials = gui.addFolder('materials');
-  for (const [label, mesh] of [['head', null], ['left sphere', marble], ['right sphere', milk]]) {
+  for (const [label, mesh] of [['head', null], ['left sphere', marble], ['right sphere', milk], ['glossy sphere', glossy]]) {
     const material = mesh ? mesh.material : head.getObjectByProperty('isMesh', true).material;
     materials.add(material.userData.sss, 'profile', profiles).name(label).onChange(redraw);
   }
   controls.addEventListener('change', redraw);
 
   Object.assign(example, {
-    pass, sss, gui, marble, milk, head,
-    // Median ms of `count` frames with the pass on, and with it off (three's frame alone).
+    pass, sss, gui, marble, milk, glossy, head,
+    // Median ms of `count` frames with the pass on, with it on and splitLighting off (the whole lit
+    // colour blurred), and with it off (three's frame alone).
     time(count) {
       const median = (a) => a.sort((x, y) => x - y)[a.length >> 1];
-      const enabled = pass.enabled, on = [], off = [];
+      const enabled = pass.enabled, splitLighting = pass.splitLighting, on = [], unsplit = [], off = [];
       for (let i = 0; i < count; ++i) {
         pass.enabled = true;
         on.push(frame());
+        pass.splitLighting = false;
+        unsplit.push(frame());
+        pass.splitLighting = splitLighting;
         pass.enabled = false;
         off.push(frame());
       }
       pass.enabled = enabled;
       frame();
-      return { on: median(on), off: median(off) };
+      return { on: median(on), unsplit: median(unsplit), off: median(off) };
     }
   });
   frame();

@@ -14,6 +14,10 @@ export type MeasuredProfile = keyof typeof MEASURED_PROFILES;
 export declare const PATHS: Readonly<{ fragment: 0; compute: 1; auto: 2; masked: 3; half: 4 }>;
 export type SSSPath = keyof typeof PATHS;
 
+/** In customProgramCacheKey() of a material the pass has patched to split its lighting
+ *  (MeshStandardMaterial and MeshPhysicalMaterial with userData.sss, once the pass has seen them). */
+export declare const SPLIT_PROGRAM_KEY: string;
+
 /** A translucent material's profile (material.userData.sss). */
 export interface SSSMaterialSpec {
   /** 'skin': eq. (1) fitted to d'Eon's skin (the library's default); a measured material; 'burley'. */
@@ -51,6 +55,9 @@ export interface SSSSettings {
   jitter: number;
   /** [0, 1]: the fraction of the width, from the left, left unfiltered (split view). Default 0. */
   split: number;
+  /** Standard and physical materials draw their diffuse light apart from their specular and
+   *  emissive light, and only the diffuse is blurred (docs/three.md "Split lighting"). Default true. */
+  splitLighting: boolean;
 }
 export declare const DEFAULT_SETTINGS: Readonly<SSSSettings>;
 

@@ -1,15 +1,20 @@
 // sss-three: the sss library's screen-space subsurface scattering as a three.js post-processing
 // pass, on three's own WebGL2 context (docs/three.md). The library (WebAssembly, wasm/sss_three.js)
 // draws with Emscripten's WebGL bindings; this module registers three's context with them, lends
-// three's WebGL objects the integer names the library's C API takes, and writes the per-pixel
-// profile texture (R8UI: profile | object << 4) from the materials' userData.sss.
+// three's WebGL objects the integer names the library's C API takes, writes the per-pixel
+// profile texture (R8UI: profile | object << 4) from the materials' userData.sss, and splits the
+// lighting of three's standard and physical materials (split-lighting.js): the library blurs the
+// diffuse light alone and the pass adds the specular back.
 import {
-  Color, DepthFormat, DepthStencilFormat, DepthTexture, FloatType, GLSL3, HalfFloatType, NearestFilter,
+  Color, DepthFormat, DepthStencilFormat, DepthTexture, FloatType, GLSL3, HalfFloatType, NearestFilter, RedFormat,
   RedIntegerFormat, RGBAFormat, ShaderMaterial, UnsignedByteType, UnsignedInt248Type, UnsignedIntType,
   UnsignedShortType, WebGLRenderTarget
 } from 'three';
 import { FullScreenQuad, Pass } from 'three/examples/jsm/postprocessing/Pass.js';
 import createSSSModule from './wasm/sss_three.js';
+import { SplitCompose, SplitTargets, canSplit, patchMaterial } from './split-lighting.js';
+
+export { SPLIT_PROGRAM_KEY } from './split-lighting.js';
 
 // GL enum values of the formats the library takes (sss.h SSS_GL_*).
 const GL_RGBA16F = 0x881A, GL_RGBA32F = 0x8814, GL_R8UI = 0x8232;
@@ -38,6 +43,7 @@ const MAX_PROFILES = 15;
 // gap between two surfaces that matters (window depth changes by about near / distance² per unit: 1e-5 is 0.1 mm at 1 m
 // from a camera whose near plane is at 0.1).
 const DEPTH_EPSILON = '1e-5';
+const NO_SPLIT = new Float32Array(4);
 
 /**
  * Marks a material as translucent: the pass filters the pixels it covers with the profile given.
@@ -86,7 +92,10 @@ function depthFormatOf(texture) {
 // them. Left of `split` (a fraction of the width) every pixel is NO_PROFILE: the split view. So is
 // a pixel where three's own depth lies behind this fragment: this shader and three's compute the
 // position with different code, which can move a silhouette by a pixel (measured: about 400 pixels
-// of the head's outline at 640x360 otherwise marked skin over the background).
+// of the head's outline at 640x360 otherwise marked skin over the background). The second output
+// is the split's mask (R8): 1 where a material that drew its lighting split is in front (left of
+// the split view's line too, where that material wrote zeros to add): where the pass adds the
+// unblurred light back (split-lighting.js).
 const PROFILE_VERTEX = `
 #include <common>
 #include <batching_pars_vertex>
@@ -106,14 +115,17 @@ void main() {
 const PROFILE_FRAGMENT = `
 #include <clipping_planes_pars_fragment>
 uniform uint sssValue;
+uniform float sssDrewSplit;
 uniform float sssSplitX;
 uniform highp sampler2D sssDepth;
 layout(location = 0) out highp uvec4 sssProfile;
+layout(location = 1) out highp vec4 sssSplitMask;
 void main() {
 #include <clipping_planes_fragment>
   float drawn = texelFetch(sssDepth, ivec2(gl_FragCoord.xy), 0).r;
-  bool mine = gl_FragCoord.x >= sssSplitX && drawn <= gl_FragCoord.z + ${DEPTH_EPSILON};
-  sssProfile = uvec4(mine ? sssValue : ${NO_PROFILE}u, 0u, 0u, 0u);
+  bool front = drawn <= gl_FragCoord.z + ${DEPTH_EPSILON};
+  sssProfile = uvec4(front && gl_FragCoord.x >= sssSplitX ? sssValue : ${NO_PROFILE}u, 0u, 0u, 0u);
+  sssSplitMask = vec4(front ? sssDrewSplit : 0.0, 0.0, 0.0, 0.0);
 }`;
 
 /**
@@ -176,6 +188,16 @@ export class SSS {
     this._clear = new Color();
     this._idClear = new Color();
     this._idClear.r = NO_PROFILE;  // three clears an unsigned-integer target with the clear colour as is
+    // The split (split-lighting.js): the materials patched, which pass or settings a scene's split
+    // follows (scene -> { pass }, or { settings, armed } from SSS.render: read before the scene's
+    // draws, when the pass has not run yet), per target what its last scene render drew split, and
+    // the targets' attachments.
+    this._patched = new WeakSet();
+    this._sources = new WeakMap();
+    this._drawn = new WeakMap();
+    this._compose = null;
+    this._splittable = false;  // the last frame's scene had a material that can split
+    this._splitTargets = new SplitTargets(renderer);
     /** The library's message about the last refused setting or frame; '' after a successful frame. */
     this.lastError = '';
     /** sss_result of the last frame (0: SSS_OK), or -1 when no frame ran (nothing translucent). */
@@ -238,12 +260,15 @@ export class SSS {
   // and for each material its profile index. Fills `this._meshProfiles` (mesh -> values per material).
   _collectProfiles(scene, settings) {
     const profiles = [], byKey = new Map(), perMaterial = new Map();
+    let splittable = false;
     scene.traverseVisible((object) => {
       if (!object.isMesh) return;
       const materials = Array.isArray(object.material) ? object.material : [object.material];
       for (const material of materials) {
         const spec = material && material.userData && material.userData.sss;
         if (!spec || perMaterial.has(material)) continue;
+        this._patch(material);
+        splittable = splittable || canSplit(material);
         const key = JSON.stringify([spec.profile, spec.measured, spec.albedo, spec.dmfpMm, spec.scale, spec.strength,
           spec.falloff]);
         let index = byKey.get(key);
@@ -255,7 +280,8 @@ export class SSS {
         perMaterial.set(material, index < MAX_PROFILES ? (index | ((spec.object | 0) & 15) << 4) : NO_PROFILE);
       }
     });
-    return { profiles: profiles.slice(0, MAX_PROFILES), perMaterial, key: JSON.stringify([[...byKey.keys()], settings]) };
+    return { profiles: profiles.slice(0, MAX_PROFILES), perMaterial, splittable,
+      key: JSON.stringify([[...byKey.keys()], settings]) };
   }
 
   // sss_set_profiles when the profiles or settings changed since the last call. False (the message
@@ -295,13 +321,77 @@ export class SSS {
     return true;
   }
 
-  _idMaterial(value, side) {
-    const key = value * 4 + side;
+  // Patches a standard or physical material for the split once (the program then compiles with it
+  // in its next draw); other materials keep three's shading and are filtered as three lit them.
+  _patch(material) {
+    if (!canSplit(material) || this._patched.has(material)) return;
+    patchMaterial(material, (renderer, scene, m, object) => this._drawsSplit(renderer, scene, m, object));
+    this._patched.add(material);
+  }
+
+  // Before each draw of a patched material: whether it writes its lighting split (null: no; else the
+  // window x from which it does: right of the split view's line). Only into a target whose split
+  // attachments the pass has allocated (_prepareSplit), when the scene's pass is enabled with
+  // splitLighting and a strength, the library has accepted the frame's profiles and settings (a
+  // refusal leaves three's frame as drawn, so it must be known before the draws: sss_set_profiles
+  // is called here, once per scene render, when the profiles changed; it makes no GL call), and the
+  // material is opaque with a strength of its own.
+  _drawsSplit(renderer, scene, material, object) {
+    const target = renderer.getRenderTarget(), frame = renderer.info.render.frame;
+    if (!this.context || !this._splitTargets.companion(target)) return null;
+    let drawn = this._drawn.get(target);
+    if (!drawn || drawn.frame !== frame) {
+      drawn = { frame, settings: this._splitSettings(renderer, scene, target), materials: new Set() };
+      this._drawn.set(target, drawn);
+    }
+    const spec = material.userData.sss, settings = drawn.settings;
+    const split = !!(settings && spec && material.transparent !== true && settings.strength * (spec.strength ?? 1) > 0);
+    if (!split || !this._splitTargets.open(target, object, drawn.materials.size === 0)) return null;
+    drawn.materials.add(material);
+    return settings.split * target.width;
+  }
+
+  // The split's attachments for `target` (a target the pass can filter, with a material of the scene
+  // that can split), for its next scene render.
+  _prepareSplit(target, splittable, settings) {
+    const filterable = target && target.depthTexture && target.textures.length === 1 && !(target.samples > 0) &&
+      colorFormatOf(this.gl, target.texture) !== 0;
+    if (filterable && settings.splitLighting && splittable) this._splitTargets.prepare(target);
+  }
+
+  _splitSettings(renderer, scene, target) {
+    if (!target.depthTexture || renderer.capabilities.logarithmicDepthBuffer) return null;
+    const source = this._sources.get(scene);
+    let settings = null;
+    if (source && source.pass) {
+      settings = source.pass.enabled ? source.pass.settings() : null;
+    } else if (source && source.armed === target) {
+      // Without a composer, a call of SSS.render arms the next scene render into its target (that
+      // render must be handed to SSS.render too: a last call with splitLighting false arms none).
+      settings = source.settings;
+      source.armed = null;
+    }
+    if (!settings || !settings.splitLighting || !(settings.strength > 0)) return null;
+    const collected = this._collectProfiles(scene, settings);
+    return collected.profiles.length > 0 && this._setProfiles(collected, settings) ? settings : null;
+  }
+
+  // The materials the last scene render into `target` drew split (then forgotten: one compose per
+  // render), or null.
+  _takeSplit(target) {
+    const drawn = this._drawn.get(target);
+    this._drawn.delete(target);
+    return drawn && drawn.materials.size > 0 ? drawn.materials : null;
+  }
+
+  _idMaterial(value, side, drewSplit) {
+    const key = (value * 2 + (drewSplit ? 1 : 0)) * 4 + side;
     let material = this._idMaterials.get(key);
     if (!material) {
       material = new ShaderMaterial({
         glslVersion: GLSL3, vertexShader: PROFILE_VERTEX, fragmentShader: PROFILE_FRAGMENT, side, clipping: true,
-        uniforms: { sssValue: { value }, sssSplitX: this._split, sssDepth: this._depth }
+        uniforms: { sssValue: { value }, sssDrewSplit: { value: drewSplit ? 1 : 0 }, sssSplitX: this._split,
+          sssDepth: this._depth }
       });
       this._idMaterials.set(key, material);
     }
@@ -310,15 +400,19 @@ export class SSS {
 
   // Draws the profile texture: the scene with every mesh's material swapped for its profile value
   // (NO_PROFILE for materials without userData.sss), through three itself, so three's cache sees
-  // every state change. Transparent meshes and non-mesh objects are left out (they do not hide
-  // what lies behind them from the filter).
-  _renderProfiles(scene, camera, width, height, perMaterial, split, depthTexture) {
+  // every state change; and into its second texture the split's mask (the materials of `drewSplit`).
+  // Transparent meshes and non-mesh objects are left out (they do not hide what lies behind them
+  // from the filter).
+  _renderProfiles(scene, camera, width, height, perMaterial, split, depthTexture, drewSplit) {
     const renderer = this.renderer;
     if (!this._idTarget) {
       this._idTarget = new WebGLRenderTarget(width, height, {
-        format: RedIntegerFormat, type: UnsignedByteType, internalFormat: 'R8UI',
+        format: RedIntegerFormat, type: UnsignedByteType, internalFormat: 'R8UI', count: 2,
         minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: true, generateMipmaps: false
       });
+      const mask = this._idTarget.textures[1];
+      mask.format = RedFormat;
+      mask.internalFormat = null;  // R8
     } else if (this._idTarget.width !== width || this._idTarget.height !== height) {
       this._idTarget.setSize(width, height);
     }
@@ -334,7 +428,8 @@ export class SSS {
           hidden.push(object);
           return;
         }
-        const ids = materials.map((m) => this._idMaterial(perMaterial.get(m) ?? NO_PROFILE, m.side));
+        const ids = materials.map((m) => this._idMaterial(perMaterial.get(m) ?? NO_PROFILE, m.side,
+          drewSplit !== null && drewSplit.has(m)));
         swapped.push(object, original);
         object.material = Array.isArray(original) ? ids : ids[0];
       } else if (object.isPoints || object.isLine || object.isSprite) {
@@ -356,6 +451,9 @@ export class SSS {
       renderer.setRenderTarget(this._idTarget);
       renderer.setClearColor(this._idClear, 0);
       renderer.clear(true, true, false);
+      // Three clears only the first texture of an integer target (clearBufferuiv on buffer 0): the
+      // mask's zero where nothing split is drawn.
+      this.gl.clearBufferfv(this.gl.COLOR, 1, NO_SPLIT);
       renderer.render(scene, camera);
     } finally {
       for (let i = 0; i < swapped.length; i += 2) swapped[i].material = swapped[i + 1];
@@ -379,21 +477,41 @@ export class SSS {
    */
   render(target, scene, camera, settings = DEFAULT_SETTINGS) {
     settings = Object.assign({}, DEFAULT_SETTINGS, settings);
-    const renderer = this.renderer, gl = this.gl, properties = renderer.properties;
+    const renderer = this.renderer;
     if (!target || !target.depthTexture) {
       return this._refuse('sss-three: the render target needs a depthTexture (createSSSRenderTarget makes one)');
     }
     if (renderer.capabilities.logarithmicDepthBuffer) {
       return this._refuse('sss-three: a logarithmic depth buffer cannot be linearised from the projection');
     }
+    const source = this._sources.get(scene);
+    if (!source || !source.pass) this._sources.set(scene, { settings, armed: target });  // the next frame's split
+    const drewSplit = this._takeSplit(target);
     const collected = this._collectProfiles(scene, settings);
-    if (collected.profiles.length === 0) {
+    this._splittable = collected.splittable;
+    this._prepareSplit(target, collected.splittable, settings);
+    if (collected.profiles.length === 0 && !drewSplit) {
       this.lastResult = -1;
       return -1;
     }
-    if (!this._setProfiles(collected, settings)) return this.lastResult;
-    const width = target.width, height = target.height;
-    this._renderProfiles(scene, camera, width, height, collected.perMaterial, settings.split, target.depthTexture);
+    const ready = collected.profiles.length > 0 && this._setProfiles(collected, settings);
+    if (!ready && !drewSplit) return this.lastResult;
+    // Where the scene drew split, colour holds the diffuse light alone: the unblurred light goes back
+    // in whatever the library made of the frame (a refusal found only now leaves it unblurred).
+    this._renderProfiles(scene, camera, target.width, target.height, ready ? collected.perMaterial : new Map(),
+      settings.split, target.depthTexture, drewSplit);
+    const r = ready ? this._apply(target, camera) : this.lastResult;
+    const companion = drewSplit && this._splitTargets.companion(target);
+    if (companion) {
+      this._compose = this._compose || new SplitCompose();
+      this._compose.render(renderer, target, companion, this._idTarget.textures[1]);
+    }
+    return r;
+  }
+
+  // sss_apply_frame on the target's colour and depth with the profile texture just drawn.
+  _apply(target, camera) {
+    const gl = this.gl, properties = this.renderer.properties, width = target.width, height = target.height;
     const colorFormat = colorFormatOf(gl, target.texture), depthFormat = depthFormatOf(target.depthTexture);
     const color = properties.get(target.texture).__webglTexture;
     const depth = properties.get(target.depthTexture).__webglTexture;
@@ -468,6 +586,8 @@ export class SSS {
       this.context = 0;
     }
     if (this._idTarget) this._idTarget.dispose();
+    if (this._compose) this._compose.dispose();
+    this._splitTargets.dispose();
     for (const material of this._idMaterials.values()) material.dispose();
     this._idMaterials.clear();
     this._free();
@@ -494,7 +614,8 @@ export const DEFAULT_SETTINGS = Object.freeze({
   followSurface: true, // fade taps that lie across a depth step
   path: 'auto',        // 'auto', 'fragment', 'masked', 'half' (PATHS)
   jitter: 0,           // [0, 1]: share of outer taps jittered per pixel
-  split: 0             // [0, 1]: the fraction of the width, from the left, left unfiltered
+  split: 0,            // [0, 1]: the fraction of the width, from the left, left unfiltered
+  splitLighting: true  // standard and physical materials: blur the diffuse light alone (split-lighting.js)
 });
 
 /**
@@ -511,6 +632,16 @@ export class SSSPass extends Pass {
     Object.assign(this, DEFAULT_SETTINGS, settings);
     this.needsSwap = false;
     this._formats = null;
+    // The scene's split follows this pass, and its materials are patched now, so that their first
+    // frame compiles their patched programs (the split itself starts once the pass has filtered a
+    // target and allocated its attachments: from the second frame).
+    this._follow();
+    sss._collectProfiles(scene, this.settings());
+  }
+
+  _follow() {
+    const source = this.sss._sources.get(this.scene);
+    if (!source || source.pass !== this) this.sss._sources.set(this.scene, { pass: this });
   }
 
   get lastError() { return this.sss.lastError; }
@@ -523,7 +654,11 @@ export class SSSPass extends Pass {
 
   render(renderer, writeBuffer, readBuffer) {
     const target = readBuffer;
-    this.sss.render(target, this.scene, this.camera, this.settings());
+    this._follow();  // a new scene given to the pass
+    const settings = this.settings();
+    this.sss.render(target, this.scene, this.camera, settings);
+    // The composer's other target is the next frame's (the passes that swap): its split prepared now.
+    if (writeBuffer !== target) this.sss._prepareSplit(writeBuffer, this.sss._splittable, settings);
     if (target && target.depthTexture) {
       this._formats = [colorFormatOf(this.sss.gl, target.texture), depthFormatOf(target.depthTexture)];
     }

@@ -2,6 +2,7 @@
 // page, window.sssExample): frames, GL state snapshots, a probe of three's state cache, and the
 // compile counter. It returns measurements; the Python driver judges them.
 import * as THREE from 'three';
+import { SPLIT_PROGRAM_KEY, createSSSRenderTarget } from 'sss-three';
 
 const ex = window.sssExample;
 const gl = ex.renderer.getContext();
@@ -217,6 +218,7 @@ export function positions() {
   at('head', new THREE.Vector3(0, 0.03, 0.08));
   at('marble', ex.marble.position);
   at('milk', ex.milk.position);
+  at('glossy', ex.glossy.position);
   return out;
 }
 
@@ -288,6 +290,16 @@ export function withoutLending() {
   ex.renderer.resetState();  // three rebinds everything: the next frames are as before
   glErrors();
   return diffs;
+}
+
+// The example's frame with the pass and splitLighting off (the whole lit colour blurred), then on
+// again.
+export function unsplitFrame() {
+  ex.pass.splitLighting = false;
+  const image = frame();
+  ex.pass.splitLighting = true;
+  frame();
+  return image;
 }
 
 // A setting the library refuses: its message, the frame (three's, untouched), then valid again.
@@ -484,5 +496,186 @@ export function nativeInputs(single = true) {
   for (const [material, spec] of spheres) material.userData.sss = spec;
   out.errors = glErrors();
   if (single) ex.frame();  // the three profiles again
+  return out;
+}
+
+// ---- Split lighting (docs/three.md "Split lighting"): a glossy skin sphere (MeshPhysicalMaterial,
+// low roughness, userData.sss skin) beside the same material without userData.sss, under a point
+// light, filtered without a composer (SSS.render). Read back as floats: three's own frame before
+// the pass saw the materials; per frame with the pass, the colour the library is handed and what
+// it made of it (around sss3_apply), the unblurred light and the albedo the split wrote, the
+// profile texture and the composed colour; three's specular alone (the skin material with a black
+// diffuse colour: with metalness 0 three's specular does not depend on it); the shader compiles.
+const SPLIT_W = 320, SPLIT_H = 180;
+export const SKIN_COLOUR = [0.8, 0.5, 0.38];  // linear
+// The split scenes' stage: a black background, a camera 0.6 m away, a point light up and right of
+// it and a little ambient light.
+function splitStage() {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0, 0, 0);
+  const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
+  camera.position.set(0, 0, 0.6);
+  const light = new THREE.PointLight(0xffffff, 0.6, 0, 2);
+  light.position.set(0.25, 0.3, 0.4);
+  scene.add(light, new THREE.AmbientLight(0xffffff, 0.15));
+  return { scene, camera };
+}
+
+function splitScene() {
+  const { scene, camera } = splitStage();
+  const glossy = (colour) => new THREE.MeshPhysicalMaterial({ color: new THREE.Color(...colour), roughness: 0.25,
+    metalness: 0, specularIntensity: 1 });
+  const geometry = new THREE.SphereGeometry(0.06, 96, 48);
+  const skin = new THREE.Mesh(geometry, glossy(SKIN_COLOUR));
+  skin.material.userData.sss = { profile: 'skin', object: 0 };
+  skin.position.x = -0.07;
+  const plain = new THREE.Mesh(geometry, glossy(SKIN_COLOUR));  // no userData.sss
+  plain.position.x = 0.07;
+  scene.add(skin, plain);
+  const black = glossy([0, 0, 0]);
+  return { scene, camera, skin, plain, black };
+}
+
+function textureOf(texture) { return ex.renderer.properties.get(texture).__webglTexture; }
+
+function drawInto(target, scene, camera) {
+  ex.renderer.setRenderTarget(target);
+  ex.renderer.render(scene, camera);
+  ex.renderer.setRenderTarget(null);
+}
+
+const floats = (texture) => base64(new Uint8Array(readTexture(textureOf(texture), SPLIT_W, SPLIT_H, false).buffer));
+
+// An 8-bit texture (the albedo, SRGB8_ALPHA8) as its bytes: the stored sRGB encoding.
+function bytes(texture) {
+  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING), fbo = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fbo);
+  gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, textureOf(texture), 0);
+  const data = new Uint8Array(SPLIT_W * SPLIT_H * 4);
+  gl.readPixels(0, 0, SPLIT_W, SPLIT_H, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
+  gl.deleteFramebuffer(fbo);
+  return base64(data);
+}
+
+// gl.compileShader and gl.linkProgram counted around `body`.
+function counting(body) {
+  const compile = gl.compileShader, link = gl.linkProgram, counts = { compiles: 0, links: 0 };
+  gl.compileShader = function (...args) { ++counts.compiles; return compile.apply(gl, args); };
+  gl.linkProgram = function (...args) { ++counts.links; return link.apply(gl, args); };
+  try {
+    body();
+  } finally {
+    delete gl.compileShader;
+    delete gl.linkProgram;
+  }
+  return counts;
+}
+
+// One frame with the pass and `settings` on `scene` into `target` (SPLIT_W x SPLIT_H): a call of
+// SSS.render first (it arms the next scene render's split with these settings), then the frame
+// measured: what the library is handed and what it made of it, the composed colour, the split's
+// unblurred light and albedo, the profile texture.
+function passFrame(target, scene, camera, settings) {
+  const sss = ex.sss, m = sss.module, frame = {};
+  drawInto(target, scene, camera);
+  sss.render(target, scene, camera, settings);
+  drawInto(target, scene, camera);
+  const apply = m._sss3_apply;
+  m._sss3_apply = function (context, color) {
+    frame.handed = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+    const r = apply.apply(this, arguments);
+    frame.blurred = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
+    return r;
+  };
+  try {
+    frame.result = sss.render(target, scene, camera, settings);
+  } finally {
+    m._sss3_apply = apply;
+  }
+  frame.message = sss.lastError;
+  frame.composed = floats(target.texture);
+  const companion = sss._splitTargets.companion(target);
+  frame.unblurred = companion ? floats(companion.textures[0]) : null;
+  frame.albedo = companion ? bytes(companion.textures[1]) : null;
+  frame.profile = base64(readTexture(textureOf(sss._idTarget.texture), SPLIT_W, SPLIT_H, true));
+  return frame;
+}
+
+export function splitLighting() {
+  const s = splitScene(), target = createSSSRenderTarget(SPLIT_W, SPLIT_H);
+  const skinMaterial = s.skin.material, out = { width: SPLIT_W, height: SPLIT_H, skinColour: SKIN_COLOUR };
+  // Three's own frames, before the pass has seen (and patched) the materials.
+  drawInto(target, s.scene, s.camera);
+  out.three = floats(target.texture);
+  s.skin.material = s.black;
+  drawInto(target, s.scene, s.camera);
+  out.specular = floats(target.texture);
+  s.skin.material = skinMaterial;
+  const passFrameOf = (settings) => passFrame(target, s.scene, s.camera, settings);
+  // The first frames: the materials patched (their programs compiled with the split), the profile
+  // pass's materials and the compose.
+  // The sphere higher up in them, so that the frames after would find its old pixels in the split's
+  // attachments if they were not cleared each frame.
+  s.skin.position.y = 0.08;
+  out.firstFrames = counting(() => { out.first = passFrameOf({}); });
+  s.skin.position.y = 0;
+  out.steadyFrames = counting(() => {
+    out.on = passFrameOf({});
+    out.noSplit = passFrameOf({ splitLighting: false });  // the check's own test: the specular blurred
+    // After a call with splitLighting false no scene render is armed: the frame without the pass.
+    drawInto(target, s.scene, s.camera);
+    out.off = floats(target.texture);
+    out.zero = passFrameOf({ strength: 0 });
+    out.onAgain = passFrameOf({});
+  });
+  // The target's framebuffer after the split frames, bound by three: as three made it and caches it
+  // (one draw buffer, nothing at attachments 1 and 2).
+  ex.renderer.setRenderTarget(target);
+  out.framebuffer = { drawBuffers: [0, 1, 2].map((i) => gl.getParameter(gl.DRAW_BUFFER0 + i)),
+    attachments: [1, 2].map((i) => gl.getFramebufferAttachmentParameter(gl.DRAW_FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i,
+      gl.FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE)) };
+  ex.renderer.setRenderTarget(null);
+  const program = (material) => ex.renderer.properties.get(material).currentProgram;
+  out.programs = { skin: program(skinMaterial).cacheKey, plain: program(s.plain.material).cacheKey,
+    shared: program(skinMaterial) === program(s.plain.material), splitKey: SPLIT_PROGRAM_KEY };
+  out.errors = glErrors();
+  target.dispose();
+  return out;
+}
+
+// The split with what three adds to outgoingLight after the diffuse sum, each on a skin sphere of
+// its own: clearcoat, sheen, transmission (opaque), emissive with a colour map, and fog over all.
+// Three's frame before the pass saw them, and one frame with the pass (three_test.py: composed -
+// blurred = three's colour - the diffuse handed, within half-float rounding).
+export function splitFeatures() {
+  const { scene, camera } = splitStage();
+  scene.fog = new THREE.Fog(0x203040, 0.4, 1.2);
+  const map = new THREE.DataTexture(new Uint8Array(16 * 16 * 4).map((_, i) => (i % 4 === 3 ? 255 : 128 + ((i * 53) & 127))),
+    16, 16);
+  map.colorSpace = THREE.SRGBColorSpace;
+  map.needsUpdate = true;
+  const colour = new THREE.Color(...SKIN_COLOUR), geometry = new THREE.SphereGeometry(0.04, 64, 32);
+  const features = [
+    { clearcoat: 1, clearcoatRoughness: 0.1 },
+    { sheen: 1, sheenColor: new THREE.Color(0.9, 0.6, 0.5), sheenRoughness: 0.4 },
+    { transmission: 0.5, thickness: 0.02 },
+    { emissive: new THREE.Color(0.2, 0.05, 0.02), map }
+  ];
+  features.forEach((extra, i) => {
+    const material = new THREE.MeshPhysicalMaterial(Object.assign({ color: colour, roughness: 0.3 }, extra));
+    material.userData.sss = { profile: 'skin', object: i };
+    const mesh = new THREE.Mesh(geometry, material);
+    mesh.position.set(-0.15 + 0.1 * i, 0, 0);
+    scene.add(mesh);
+  });
+  const target = createSSSRenderTarget(SPLIT_W, SPLIT_H), out = { width: SPLIT_W, height: SPLIT_H };
+  drawInto(target, scene, camera);
+  out.three = floats(target.texture);
+  passFrame(target, scene, camera, {});  // the materials patched and compiled
+  out.on = passFrame(target, scene, camera, {});
+  out.errors = glErrors();
+  target.dispose();
+  map.dispose();
   return out;
 }

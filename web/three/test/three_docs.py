@@ -73,7 +73,7 @@ def main():
              "     and docs/web/results.json; do not edit -->", "",
              "What a host loads (`scripts/build-three-package.sh`, Emscripten 3.1.6, `-Os`):", "",
              "| file | bytes | gzip -9 |", "|---|---:|---:|"]
-    for name in ("wasm/sss_three.wasm", "wasm/sss_three.js", "sss-three.js", "sss-three.d.ts"):
+    for name in ("wasm/sss_three.wasm", "wasm/sss_three.js", "sss-three.js", "split-lighting.js", "sss-three.d.ts"):
         data = open(os.path.join(package, name), "rb").read()
         lines.append("| `%s` | %s | %s |" % (name, kib(len(data)), kib(len(gzip.compress(data, 9)))))
     t = three["frame_ms"]
@@ -81,16 +81,37 @@ def main():
     lines += ["", "One 640x360 frame, median of %d, each waited for with a one-pixel read; times from a shared 2-core"
               " machine with software rasterisers, which move with its load:" % t["frames"], "",
               "| | renderer | frame, ms | without the library, ms | the library's share, ms |", "|---|---|---:|---:|---:|",
-              "| three.js example: RenderPass, SSSPass (profile pass + `sss_apply_frame`), OutputPass | %s | %.0f | %.0f | %.0f |"
+              "| three.js example: RenderPass, SSSPass (profile pass + `sss_apply_frame` + the split's compose), OutputPass"
+              " | %s | %.0f | %.0f | %.0f |"
               % (three["renderer"].replace("WebGL2: ", ""), t["with_pass"], t["without_pass"], t["with_pass"] - t["without_pass"]),
+              ] + ([
+              "| the same, `splitLighting: false` (the whole lit colour blurred, as before the split) | %s | %.0f | %.0f | %.0f |"
+              % (three["renderer"].replace("WebGL2: ", ""), t["with_pass_unsplit"], t["without_pass"],
+                 t["with_pass_unsplit"] - t["without_pass"])] if "with_pass_unsplit" in t else []) + [
               "| the project's web page (`docs/web.md`) | %s | %.0f | %.0f | %.0f |"
               % (web["page_renderer"].split(";")[0].replace("WebGL2: ", ""), web["web_frame_ms"], web["web_frame_ms_without_sss"],
                  web["web_frame_ms"] - web["web_frame_ms_without_sss"]),
               "| native OpenGL ES (`sss_web_frame`) | %s | %.0f | %.0f | %.0f |"
               % (native["renderer"], native["frame_ms"], native["frame_ms_without_sss"],
                  native["frame_ms"] - native["frame_ms_without_sss"]),
-              "", "The three.js scene is not the page's (three's lights and materials, two spheres beside the head, three"
-              " profiles), so its row compares the pass with three's own frame, not with the other rows' frames.", "",
+              "", "The three.js scene is not the page's (three's lights and materials, three spheres beside the head, three"
+              " profiles), so its rows compare the pass with three's own frame, not with the other rows' frames.", ""]
+    split = three.get("split_lighting")
+    if split:
+        lines += ["Split lighting (the test's glossy skin sphere, 320x180, a point light; `three_test.py`, `SPLIT_RELATIVE`):", "",
+                  "| | measured | limit |", "|---|---:|---:|",
+                  "| skin pixels | %d | |" % split["skin_pixels"],
+                  "| largest \\|composed − blurred diffuse − three's specular\\| over its half-float bound | %.3f | 1 |"
+                  % split["worst_ratio"],
+                  "| the same in half-float steps of the composed value | %.2f | |" % split["worst_steps"],
+                  ] + (["| clearcoat, sheen, transmission, emissive with a map, fog (four spheres): largest \\|composed − blurred"
+                        " − (three's colour − the diffuse handed)\\| over its bound | %.3f | 1 |"
+                        % three["split_features"]["worst_ratio"]] if "split_features" in three else []) + [
+                  "| with `splitLighting: false` (the check's own test: must fail): largest ratio; pixels beyond | %.0f; %d | > 0 |"
+                  % (split["no_split_worst_ratio"], split["no_split_beyond"]),
+                  "| shaders compiled in the first split frames; in the nine scene renders after | %d; %d | 0 after |"
+                  % (split["first_frames"]["compiles"], split["steady_frames"]["compiles"]), ""]
+    lines += [
               "What the library's calls leave in the GL (measured by the test, three's objects lent their names):", ""]
     for name, diffs in sorted(three["state_after_setup_calls"].items()):
         if name == "errors":

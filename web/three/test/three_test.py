@@ -14,7 +14,11 @@ package's example page in headless Chromium (SwiftShader's WebGL2) and checks
   4. a setting the library refuses (1001 taps, a scale of NaN) puts its message on the page and leaves
      three's frame bit for bit; valid settings again give the filtered frame again;
   5. a new canvas size: the first frame after it compiles no shader and filters;
-  6. against the native frame (--native-apply): a frame of one profile (the head's skin), then the
+  6. split lighting: a glossy skin sphere under a point light: the composed output minus the blurred
+     diffuse is three's specular within half-float rounding (and is not with the split off); with the
+     split off, the pass off or strength 0 the frame is three's own bit for bit, a standard material
+     without userData.sss is untouched, the albedo is the material's, the programs compile once;
+  7. against the native frame (--native-apply): a frame of one profile (the head's skin), then the
      example's own frame of three profiles (skin, marble, Burley's whole milk), each with its inputs
      as the pass gave them to the library (colour, depth, profile texture, projection, every profile's
      floats and settings) filtered again natively on OpenGL ES 3.0 by sss_three_native_apply (which
@@ -31,6 +35,7 @@ import argparse
 import array
 import base64
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -118,6 +123,17 @@ def run(browser, args, out_dir, results):
     check(rgb(lib["standard"]) == rgb(before["standard"]),
           "three's standard materials after the pass: the frame as without the library, bit for bit")
 
+    # The composer's frame splits too: over the glossy skin sphere, the split frame differs from three's
+    # by the diffuse light's blur alone; blurring the whole lit colour (splitLighting false) adds the
+    # highlight's blur to it (the sum of |8-bit level differences| over the sphere's disk).
+    unsplit = rgb(js("checks.unsplitFrame()"))
+    glossy = disk(positions["glossy"], 25)
+    off_by = lambda image: sum(abs(a - b) for i in glossy for a, b in zip(image[i * 3:i * 3 + 3], three_only[i * 3:i * 3 + 3]))
+    results["glossy_sphere_levels_off"] = {"split": off_by(on), "unsplit": off_by(unsplit)}
+    check(off_by(unsplit) > 2 * off_by(on),
+          "the glossy sphere: the split frame %d levels from three's over its disk, the whole colour blurred %d (> 2x)"
+          % (off_by(on), off_by(unsplit)))
+
     # 3. Around each of the library's calls.
     results["cache_calls_before_the_library"] = lib["around"][0]["syncCalls"] if lib["around"] else None
     check(len(lib["around"]) == 1, "one library call per frame (%d)" % len(lib["around"]))
@@ -150,11 +166,16 @@ def run(browser, args, out_dir, results):
     check(resized["compiles"] == 0, "800x450: no shader compiled in the frame after setSize (%d)" % resized["compiles"])
     check(resized["errors"] == [] and resized["backResult"] == 0, "800x450 and back: no GL error, filtered")
 
+    # 6. Split lighting.
+    split_lighting(js, out_dir, results)
+    split_features(js, results)
+
     # Pictures and times (read by people, never judged).
     times = js("sssExample.time(%d)" % args.frames)
-    results["frame_ms"] = {"with_pass": round(times["on"], 1), "without_pass": round(times["off"], 1),
-                           "frames": args.frames}
-    print("     frame %.1f ms with the pass, %.1f ms without (median of %d)" % (times["on"], times["off"], args.frames))
+    results["frame_ms"] = {"with_pass": round(times["on"], 1), "with_pass_unsplit": round(times["unsplit"], 1),
+                           "without_pass": round(times["off"], 1), "frames": args.frames}
+    print("     frame %.1f ms with the pass, %.1f ms with it and splitLighting off, %.1f ms without (median of %d)"
+          % (times["on"], times["unsplit"], times["off"], args.frames))
     js("sssExample.pass.enabled = false; true")
     unsplit = rgb(js("checks.split(0.5)"))  # the example's own background from here on
     unsplit_full = rgb(js("checks.split(0)"))
@@ -187,7 +208,7 @@ def run(browser, args, out_dir, results):
     results["state_without_lending"] = unlent
     check(len(unlent) > 0, "without lent names the library's restore differs in %d places (%s)" % (len(unlent), unlent[:6]))
 
-    # 6. Against the native frame.
+    # 7. Against the native frame.
     if args.native_apply:
         against_native(js, args.native_apply, out_dir, results)
     else:
@@ -211,6 +232,140 @@ def run(browser, args, out_dir, results):
 # is held to the same bound.
 MISS_BOUND = 0.02
 FP16_HALF_STEP = 2.0 ** -11
+
+
+# The split's bound. Three's specular S (the skin material with a black diffuse colour: with metalness
+# 0 nothing of three's specular depends on it) is a float32 value rounded once to half float; the
+# split's way to it rounds twice more: the unblurred light U = round16(three's colour - diffuse) in
+# the split's attachment, then the compose's blend C = round16(B + U) onto the blurred diffuse B
+# (read back exactly: it is a half float). Each rounding is at most half a step, 2^-11 of the value
+# rounded, so |C - B - S| <= 2^-11 (|C| + |U| + |S|), plus float32's own (three's colour minus its
+# diffuse, and the black-diffuse program's specular against the split program's: 2^-24 of the
+# colour, 2^-8 of the bound is far more) and half a half float's smallest step for values that land
+# among the subnormals (2^-25; 2^-23 covers three of them). Measured: every skin pixel within it
+# (SPLIT_WORST_RATIO in results.json: the largest |C - B - S| over its bound). The check's own test:
+# with splitLighting false the library blurs the specular with the diffuse (C - B = 0), and the
+# highlight's pixels lie far outside the bound.
+SPLIT_RELATIVE = FP16_HALF_STEP * (1 + 2.0 ** -8)
+SPLIT_ABSOLUTE = 2.0 ** -23
+
+
+def f32(b64):
+    a = array.array("f")
+    a.frombytes(base64.b64decode(b64))
+    return a
+
+
+def split_residuals(frame, specular, pixels):
+    """Of PIXELS (RGB): C - B - S over its bound, and the pixels beyond the bound."""
+    composed, blurred, unblurred = f32(frame["composed"]), f32(frame["blurred"]), f32(frame["unblurred"])
+    worst, beyond = 0.0, 0
+    for i in pixels:
+        out = False
+        for c in range(3):
+            k = i * 4 + c
+            residual = abs(composed[k] - blurred[k] - specular[k])
+            bound = SPLIT_RELATIVE * (abs(composed[k]) + abs(unblurred[k]) + abs(specular[k])) + SPLIT_ABSOLUTE
+            worst = max(worst, residual / bound)
+            out = out or residual > bound
+        beyond += out
+    return worst, beyond
+
+
+def split_features(js, results):
+    # Clearcoat, sheen, transmission, emissive with a map, fog: what three adds after the diffuse sum
+    # lands in the unblurred light, so composed - blurred = three's colour - the diffuse handed. The
+    # same roundings as SPLIT_RELATIVE's, with three's colour F for S and the handed diffuse D (a half
+    # float, exact) beside it: |C - B - (F - D)| <= 2^-11 (|C| + |U| + |F|) + float32's.
+    got = js("checks.splitFeatures()")
+    n = got["width"] * got["height"]
+    on = got["on"]
+    check(on["result"] == 0 and got["errors"] == [], "split features: filtered, no GL error (%s %s)" % (on["message"], got["errors"]))
+    three, composed, blurred = f32(got["three"]), f32(on["composed"]), f32(on["blurred"])
+    handed, unblurred = f32(on["handed"]), f32(on["unblurred"])
+    profile = base64.b64decode(on["profile"])
+    worst, beyond, counts = 0.0, 0, {}
+    for i in range(n):
+        p = profile[i] & 15
+        if p == 15:
+            continue
+        counts[profile[i] >> 4] = counts.get(profile[i] >> 4, 0) + 1
+        for c in range(3):
+            k = i * 4 + c
+            residual = abs(composed[k] - blurred[k] - (three[k] - handed[k]))
+            bound = SPLIT_RELATIVE * (abs(composed[k]) + abs(unblurred[k]) + abs(three[k])) + SPLIT_ABSOLUTE
+            worst = max(worst, residual / bound)
+            beyond += residual > bound
+    results["split_features"] = {"pixels_per_sphere": counts, "worst_ratio": worst, "beyond": beyond}
+    print("     split features (clearcoat, sheen, transmission, emissive + map; fog): worst %.3f of the bound" % worst)
+    check(len(counts) == 4 and min(counts.values()) > 500, "split features: four spheres drawn split (%s)" % counts)
+    check(beyond == 0, "split features: composed - blurred = three's colour - the diffuse, within half-float rounding "
+          "(worst %.3f of the bound)" % worst)
+
+
+def split_lighting(js, out_dir, results):
+    got = js("checks.splitLighting()")
+    width, height = got["width"], got["height"]
+    n = width * height
+    three, specular = f32(got["three"]), f32(got["specular"])
+    on = got["on"]
+    check(all(got[k]["result"] == 0 for k in ("first", "on", "noSplit", "zero", "onAgain")),
+          "split lighting: the pass filtered every frame (%s)" % got["on"]["message"])
+    check(got["errors"] == [], "split lighting: no GL error (%s)" % got["errors"])
+    profile = base64.b64decode(on["profile"])
+    skin = [i for i in range(n) if profile[i] & 15 == 0]
+    others = [i for i in range(n) if profile[i] & 15 == 15]
+    plain = [i for i in others if any(three[i * 4 + c] != 0 for c in range(3))]
+    highlight = max(specular[i * 4 + c] for i in skin for c in range(3)) if skin else 0
+    check(len(skin) > 2000 and len(plain) > 2000, "split lighting: the skin sphere covers %d pixels, the plain one %d (> 2000)"
+          % (len(skin), len(plain)))
+    check(highlight > 0.1, "split lighting: three's specular on the skin sphere peaks at %.3f (> 0.1: a highlight)" % highlight)
+    blurred, handed = f32(on["blurred"]), f32(on["handed"])
+    filtered = sum(1 for i in skin if any(blurred[i * 4 + c] != handed[i * 4 + c] for c in range(3)))
+    check(filtered > 0.5 * len(skin), "split lighting: the library changed %d of the skin's pixels" % filtered)
+    worst, beyond = split_residuals(on, specular, skin)
+    worst_again, beyond_again = split_residuals(got["onAgain"], specular, skin)
+    off_worst, off_beyond = split_residuals(dict(got["noSplit"], unblurred=got["noSplit"]["composed"]), specular, skin)
+    composed = f32(on["composed"])
+    steps = max(abs(composed[i * 4 + c] - blurred[i * 4 + c] - specular[i * 4 + c]) /
+                max(2.0 ** -24, 2.0 ** (math.floor(math.log2(max(abs(composed[i * 4 + c]), 2.0 ** -14))) - 10))
+                for i in skin for c in range(3))
+    results["split_lighting"] = {
+        "skin_pixels": len(skin), "plain_pixels": len(plain), "specular_peak": highlight,
+        "worst_ratio": worst, "worst_steps": steps, "beyond": beyond, "worst_ratio_again": worst_again,
+        "no_split_worst_ratio": off_worst, "no_split_beyond": off_beyond,
+        "first_frames": got["firstFrames"], "steady_frames": got["steadyFrames"], "programs": got["programs"]}
+    print("     split: |composed - blurred - specular| at most %.3f of its bound (%.2f half-float steps of the output); "
+          "split off: %.1f, %d pixels beyond" % (worst, steps, off_worst, off_beyond))
+    check(beyond == 0 and beyond_again == 0,
+          "split lighting: composed - blurred diffuse = three's specular within half-float rounding on every skin pixel "
+          "(worst %.3f of the bound; again %.3f)" % (worst, worst_again))
+    check(off_beyond > 0.05 * len(skin),
+          "split lighting: the check's own test: with splitLighting false %d skin pixels lie beyond the bound (> 5 %%)" % off_beyond)
+    exact = lambda frame: base64.b64decode(frame) == base64.b64decode(got["three"])
+    check(exact(got["zero"]["composed"]), "split lighting: strength 0: three's frame, bit for bit")
+    check(exact(got["off"]), "split lighting: the pass off (no call armed the frame): three's frame, bit for bit")
+    check(all(composed[i * 4 + c] == three[i * 4 + c] for i in others for c in range(4)),
+          "split lighting: the standard material without userData.sss and the background: three's colour, bit for bit")
+    albedo = base64.b64decode(on["albedo"])
+    unblurred_on = f32(on["unblurred"])
+    check(all(albedo[i * 4 + c] == 0 and unblurred_on[i * 4 + c] == 0 for i in others for c in range(4)),
+          "split lighting: the split's attachments hold 0 on the plain material and the background")
+    expected = [srgb8(v) for v in got["skinColour"]]
+    albedo_off = max(abs(albedo[i * 4 + c] - expected[c]) for i in skin for c in range(3))
+    check(albedo_off <= 1, "split lighting: the albedo attachment holds the skin's colour, sRGB-encoded %s (within %d level)"
+          % (expected, albedo_off))
+    first, steady, programs = got["firstFrames"], got["steadyFrames"], got["programs"]
+    print("     split: the first frames compiled %d shaders, linked %d programs; the nine scene renders after %d, %d"
+          % (first["compiles"], first["links"], steady["compiles"], steady["links"]))
+    check(steady["compiles"] == 0 and steady["links"] == 0,
+          "split lighting: no shader compiled in the nine scene renders after, toggling the split, strength and the pass (%d compiles)" % steady["compiles"])
+    fb = got["framebuffer"]
+    check(fb["drawBuffers"] == [0x8CE0, 0, 0] and fb["attachments"] == [0, 0],
+          "split lighting: the target's framebuffer after the split frames as three made it (draw buffers %s, "
+          "attachments 1-2 %s)" % (fb["drawBuffers"], fb["attachments"]))
+    check(programs["splitKey"] in programs["skin"] and programs["splitKey"] not in programs["plain"] and not programs["shared"],
+          "split lighting: the patched material has a program of its own, the plain one three's")
 
 
 def srgb8(x):

@@ -3,7 +3,7 @@
 import * as THREE from 'three';
 import { EffectComposer } from 'three/examples/jsm/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/examples/jsm/postprocessing/RenderPass.js';
-import { SSS, SSSPass, createSSSRenderTarget, setSSSMaterial, MEASURED_PROFILES, type SSSStats } from 'sss-three';
+import { SSS, SSSPass, createSSSRenderTarget, setSSSMaterial, MEASURED_PROFILES, SPLIT_PROGRAM_KEY, type SSSStats } from 'sss-three';
 
 export async function host(renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera: THREE.PerspectiveCamera): Promise<SSSStats> {
   const skin = setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'skin', object: 1 });
@@ -16,13 +16,17 @@ export async function host(renderer: THREE.WebGLRenderer, scene: THREE.Scene, ca
   composer.addPass(new RenderPass(scene, camera));
   const pass = new SSSPass(sss, scene, camera, { metresPerUnit: 1, taps: 25, path: 'masked' });
   pass.split = 0.5 + marble * 0;
+  pass.splitLighting = false;  // the whole lit colour blurred
+  const patched: boolean = skin.customProgramCacheKey().includes(SPLIT_PROGRAM_KEY);
   composer.addPass(pass);
   composer.render();
-  const r: number = sss.render(createSSSRenderTarget(64, 64), scene, camera, { scale: 2 });
+  const r: number = sss.render(createSSSRenderTarget(64, 64), scene, camera, { scale: 2, splitLighting: patched });
   if (r !== 0) console.log(sss.lastError, sss.resultString(r));
   // @ts-expect-error: not a profile the library has
   setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'jade' });
   // @ts-expect-error: path is one of PATHS' names
   pass.path = 'fastest';
+  // @ts-expect-error: splitLighting is a boolean
+  pass.splitLighting = 'specular';
   return sss.stats();
 }
