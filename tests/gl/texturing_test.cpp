@@ -248,6 +248,40 @@ TEST_F(Texturing, PreScatterIgnoresTheAlbedo) {
   EXPECT_EQ(with, without);
 }
 
+// The CPU model of the modes (math/cpu_texturing.hpp: the passes' model run on the colour over
+// A_post, multiplied back where it blurs, every other pixel the host's colour) against the GL, on
+// the separable paths the model covers (the fragment, masked and compute paths, a kernel of two
+// terms), in place into an RGBA16F colour and into an RGBA32F output: within matches_cpu_model_test's
+// tolerance, 3e-3 (the tap flips its comment describes aside), and the image changed.
+using TexturingModel = FilterCaseTest;
+TEST_F(TexturingModel, EachModeMatchesTheCpuModel) {
+  const SyntheticScene scene = make_relief_scene(kW, kH, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f));
+  const Inputs in = make_inputs(scene, true);
+  SyntheticScene textured = scene;
+  textured.color = in.color;
+  for (const PathCase& p : kEveryPath) {
+    if (p.path == SSS_PATH_HALF_RESOLUTION || p.mode == SSS_MODE_CROSS_BILATERAL) continue;  // their own models
+    for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+      for (const bool separate : {false, true}) {
+        SCOPED_TRACE(std::string(p.name) + ", mode " + std::to_string(mode) + (separate ? ", RGBA32F output" : ""));
+        FilterCase c;
+        c.settings = case_settings(p, mode);
+        c.half_color = true;
+        c.separate_output = separate;
+        c.albedo = in.albedo;
+        const FilterOutcome o = run_case(textured, c);
+        ASSERT_EQ(o.result, SSS_OK);
+        std::printf("%s, mode %u%s: GL vs the CPU model, largest relative difference %.3g\n", p.name, mode,
+                    separate ? ", RGBA32F output" : "", largest_relative_difference(o.gpu, o.cpu));
+        expect_matches_model_up_to_tap_flips(o, 3e-3f, p.name);
+        EXPECT_GT(largest_relative_difference(o.gpu, o.input), 0.02f) << "nothing was blurred";
+        TearDown();
+        SetUp();
+      }
+    }
+  }
+}
+
 TEST_F(Texturing, BadAlbedoInputsAreRefusedByName) {
   const Inputs in = make_inputs(scene_, true);
   sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);

@@ -15,6 +15,7 @@
 #include "api/validation.hpp"
 #include "math/cpu_cbf_filter.hpp"
 #include "math/cpu_separable_filter.hpp"
+#include "math/cpu_texturing.hpp"
 #include "math/pass_kernel.hpp"
 #include "math/separable_kernel.hpp"
 
@@ -237,6 +238,10 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   frame.noise_index = c.noise_index;
   frame.debug_view = c.debug_view;
   frame.normal_texture = c.normals.empty() ? 0u : make_rgba32f(w, h, c.normals);
+  if (!c.albedo.empty()) {
+    frame.albedo_texture = make_rgba16f(w, h, c.albedo);
+    frame.albedo_format = GL_RGBA16F;
+  }
   for (int i = 0; i < 4; ++i) frame.viewport[i] = c.viewport[static_cast<std::size_t>(i)];
   if (c.use_region) {
     frame.flags |= SSS_FRAME_REGION;
@@ -299,6 +304,16 @@ FilterOutcome FilterCaseTest::run_case(const SyntheticScene& scene, const Filter
   // sums terms in RGBA16F unless the colour is RGBA32F.
   image.intermediate_is_half = c.half_color;
   image.accumulator_is_half = is_gles() && c.half_color;
+  // A texturing mode: the model runs on the module's copy (the colour over A_post, in the
+  // intermediate's precision) and multiplies back where it blurs.
+  std::vector<float> post, copy;
+  if (!c.albedo.empty() && c.settings.texturing != SSS_TEXTURING_PRE_SCATTER) {
+    post = sss::math::albedo_post_plane(c.albedo.data(), static_cast<std::size_t>(w) * h, {c.settings.texturing});
+    copy = sss::math::colour_over_albedo(outcome.input.data(), post, c.half_color);
+    image.color = copy.data();
+    image.original = outcome.input.data();
+    image.albedo_post = post.data();
+  }
   outcome.cpu.resize(outcome.input.size());
   if (empty_region) {
     outcome.cpu = outcome.input;  // nothing translucent: the image (or its copy) as it was

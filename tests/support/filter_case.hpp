@@ -30,6 +30,9 @@ struct FilterCase {
   bool stale_frame_first = false;
   std::uint32_t noise_index = 0;  // sss_frame.noise_index (the CPU model's too)
   std::uint32_t debug_view = 0;   // sss_frame.debug_view (the CPU model's too; needs separate_output)
+  // sss_frame.albedo_texture (RGBA, uploaded as RGBA16F; empty: none), for settings.texturing; the
+  // CPU model then runs on the colour over A_post and multiplies back (math/cpu_texturing.hpp).
+  std::vector<float> albedo;
 };
 
 struct FilterOutcome {

@@ -104,6 +104,11 @@ struct FilterRun {
   TextureInfo original;
 
   bool writes_back() const { return output.name == 0; }
+  // The last pass leaves the pixels it does not blur alone (discards them) instead of copying them
+  // into the target: writing back, or writing the host's colour from the module's divided copy
+  // (original: the target holds them already, and reading it while drawing into it would be a
+  // feedback loop).
+  bool keeps_untouched() const { return writes_back() || (original.name != 0 && original.name == output.name); }
   // The colour a separate output's untouched pixels get: the host's, or the passes' copy of it
   // (a strength texture's: the same rgb, the strength as alpha).
   GLuint untouched_colour() const { return original.name != 0 ? original.name : color.name; }

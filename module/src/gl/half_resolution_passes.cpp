@@ -213,7 +213,7 @@ void draw_full_size(PassContext& ctx, const FilterRun& run, const PlanPrograms& 
   FrameMeasurement& measure = measurement.get();
   set_viewport(f, run.draw_rect);
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
-  if (run.writes_back()) {
+  if (run.keeps_untouched()) {
     f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value
   } else {
     copy_untouched(ctx, run);

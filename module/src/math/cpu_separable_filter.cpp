@@ -278,7 +278,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
                             float* out) {
   const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
-  std::copy(given.color, given.color + count * 4, out);
+  const float* untouched = given.original != nullptr ? given.original : given.color;
+  std::copy(untouched, untouched + count * 4, out);
   if (given.debug_view == kTilesDebugView) return tile_view(given, constants, out);
   const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants, out) : given;
   const Plane color{w, h, 4, image.color};
@@ -312,7 +313,8 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
           for (int c = 0; c < 3; ++c) {
             const float v = blurred[static_cast<std::size_t>(c)] + accumulated[i * 3 + c];
             if (last) {
-              out[i * 4 + c] = image.output_is_half ? round_to_half(v) : v;
+              const float post = image.albedo_post != nullptr ? v * image.albedo_post[i * 3 + c] : v;
+              out[i * 4 + c] = image.output_is_half ? round_to_half(post) : post;
             } else {
               accumulated[i * 3 + c] = image.accumulator_is_half ? round_to_half(v) : v;
             }
@@ -325,7 +327,8 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
                         const std::uint16_t* ids, const CpuFilterImage& given, float* out, bool index_in_blue) {
   const int w = given.width, h = given.height;
   const std::size_t count = static_cast<std::size_t>(w) * h;
-  std::copy(given.color, given.color + count * 4, out);
+  const float* untouched = given.original != nullptr ? given.original : given.color;
+  std::copy(untouched, untouched + count * 4, out);
   if (given.debug_view == kTilesDebugView) return tile_view(given, constants.front(), out);
   const CpuFilterImage image = given.debug_view != 0 ? prepare_debug_view(given, constants.front(), out) : given;
   // With R8UI ids the passes' inputs carry each index in the low byte of the blue colour word, which
@@ -364,7 +367,10 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
   cpu_passes::vertical(
       image, constants.front(), [&](int x, int y, Rgba* blurred) { return pass(1, half_plane, x, y, blurred); },
       [&](std::size_t i, const Rgba& blurred) {
-        for (std::size_t c = 0; c < 3; ++c) out[i * 4 + c] = image.output_is_half ? round_to_half(blurred[c]) : blurred[c];
+        for (std::size_t c = 0; c < 3; ++c) {
+          const float post = image.albedo_post != nullptr ? blurred[c] * image.albedo_post[i * 3 + c] : blurred[c];
+          out[i * 4 + c] = image.output_is_half ? round_to_half(post) : post;
+        }
       });
 }
 

@@ -44,6 +44,12 @@ struct CpuFilterImage {
   // sss_frame.debug_view (sss.h sss_debug_view): 0 filters; else the first term's passes write that
   // view, as separable_blur.frag's SSS_DEBUG_VIEW does: (0, 0, 0, 1) where they leave a pixel alone.
   std::uint32_t debug_view = 0;
+  // The texturing modes (sss.h sss_texturing; cpu_texturing.hpp): `color` is then the module's copy,
+  // the host's colour over A_post; each pixel the last pass blurs is multiplied by albedo_post
+  // (width·height·3, rgb) before it is stored and rounded, and every other pixel keeps `original`
+  // (the host's colour, RGBA) instead of the copy. nullptr: pre-scatter, neither.
+  const float* albedo_post = nullptr;
+  const float* original = nullptr;
 };
 
 // sss.h SSS_DEBUG_VIEW_TILES (the math layer includes no public header): the view that runs no pass,
