@@ -1,4 +1,4 @@
-// The debug views of the separable passes (sss.h SSS_DEBUG_VIEW, SSS_DEBUG_VIEW 1-5 here; the tiles
+// The debug views of the separable passes (sss.h SSS_DEBUG_VIEW, SSS_DEBUG_VIEW 1-5 and 7 here; the tiles
 // view is tile_view.frag): the first term's two fragment passes as the filter runs them
 // (blur_pixel.glsl: the same culling, walk and footprint), writing what they would use instead of
 // the blurred colour. The horizontal pass (SSS_PACKED_OUTPUT) writes its footprint (profile mm per
@@ -16,8 +16,10 @@ out vec4 o_color;
 #endif
 
 // The view of one pixel from the vertical pass's numbers and the horizontal pass's (`across`).
-vec3 sss_view(SssCentre c, vec2 across, float footprint, float taps) {
-#if SSS_DEBUG_VIEW == 1
+vec3 sss_view(ivec2 pixel, SssCentre c, vec2 across, float footprint, float taps) {
+#if SSS_DEBUG_VIEW == 7
+  return sss_times_albedo_post(vec3(1.0), pixel, sss_centre_texturing());  // A_post (albedo.glsl)
+#elif SSS_DEBUG_VIEW == 1
   return vec3(1.0);
 #elif SSS_DEBUG_VIEW == 2
   return vec3(c.distance);
@@ -58,6 +60,6 @@ void main() {
   o_packed = uvec4(floatBitsToUint(footprint), floatBitsToUint(taps), c.texel.b, c.texel.a);
 #else
   vec2 across = vec2(uintBitsToFloat(c.texel.r), uintBitsToFloat(c.texel.g));
-  o_color = sss_nearest_half(vec4(sss_view(c, across, footprint, taps), 1.0));
+  o_color = sss_nearest_half(vec4(sss_view(pixel, c, across, footprint, taps), 1.0));
 #endif
 }

@@ -11,6 +11,7 @@
 //
 //   sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N]
 //                  [--path default|fragment|masked|auto|compute|half|copy] [--frames N] [--profiles N] [--msaa 0|4]
+//                  [--texturing pre|post|pre-and-post]
 //
 // --path copy: not the library but the benchmark's yardstick, its two-pass full-screen copy
 // (copy_method.cpp) of the scene into the frame's colour: the `× copy` of the benchmark's times in
@@ -61,6 +62,7 @@ struct Options {
   int profiles = 0;  // 0: sss_set_settings and no profile texture; else sss_set_profiles with this many
   int msaa = 0;      // 4: the MSAA path (multisampled colour and depth, written back)
   bool copy = false;  // the benchmark's two-pass copy instead of the library
+  unsigned texturing = 0;  // 0.6 on: sss_settings.texturing, with an RGBA8 albedo of 2-pixel cells
 };
 
 // --path copy: the benchmark's copy, once to build and allocate, then once counted.
@@ -113,6 +115,16 @@ bool parse(int argc, char** argv, Options* o) {
       o->frames = std::atoi(value.c_str());
     } else if (key == "--profiles") {
       o->profiles = std::atoi(value.c_str());
+    } else if (key == "--texturing") {
+      if (value == "pre") {
+        o->texturing = 0;
+      } else if (value == "post") {
+        o->texturing = 1;
+      } else if (value == "pre-and-post") {
+        o->texturing = 2;
+      } else {
+        return false;
+      }
     } else if (key == "--msaa") {
       o->msaa = std::atoi(value.c_str());
       if (o->msaa != 0 && o->msaa != 4) return false;
@@ -153,6 +165,9 @@ void physical_settings(const sss_bench::GpuScene& scene, const Options& o, sss_s
   s->taps = o.taps;
 #endif
   if (!o.default_path) s->path = o.path;
+#if SSS_VERSION_MAJOR > 0 || SSS_VERSION_MINOR >= 6
+  s->texturing = o.texturing;
+#endif
 }
 
 }  // namespace
@@ -161,7 +176,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, &o)) {
     std::fprintf(stderr, "usage: sss_cost_probe [--backend osmesa|egl] [--scene NAME] [--size WxH] [--taps N] "
-                         "[--path default|fragment|masked|auto|compute|half] [--frames N] [--profiles N] [--msaa 0|4]\n");
+                         "[--path default|fragment|masked|auto|compute|half] [--frames N] [--profiles N] [--msaa 0|4] [--texturing pre|post|pre-and-post]\n");
     return 2;
   }
   sss_headless_desc hd = {};
@@ -257,6 +272,27 @@ int main(int argc, char** argv) {
     return 2;
   }
 #endif
+  GLuint albedo = 0;
+  if (o.texturing != 0) {
+#if SSS_VERSION_MAJOR > 0 || SSS_VERSION_MINOR >= 6
+    // A checker of 2-pixel cells (the cost does not depend on the values; a pore-scale albedo).
+    std::vector<uint8_t> cells(static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height) * 4);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const std::size_t pixel = i / 4;
+      const bool dark = ((pixel % static_cast<std::size_t>(o.width)) / 2 + (pixel / static_cast<std::size_t>(o.width)) / 2) % 2 == 0;
+      cells[i] = static_cast<uint8_t>(dark ? 90 : 200);
+    }
+    glGenTextures(1, &albedo);
+    glBindTexture(GL_TEXTURE_2D, albedo);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, o.width, o.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, cells.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    frame.albedo_texture = albedo;
+#else
+    std::fprintf(stderr, "sss_cost_probe: --texturing needs 0.6 or later\n");
+    return 2;
+#endif
+  }
   // One frame first: programs built, targets allocated, as in a steady frame.
   for (int frame_index = 0; frame_index < 2; ++frame_index) {
     refill(scene.irradiance, color, o.width, o.height, color_target);
@@ -281,15 +317,17 @@ int main(int argc, char** argv) {
   sss_stats stats = {};
   stats.struct_size = sizeof stats;
   const unsigned ran = sss_get_stats(ctx, &stats) == SSS_OK ? stats.last_frame_path : 99u;
-  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran, %d per-pixel profiles, %d samples: frame done\n",
+  std::printf("%s %dx%d, %d taps, path %u asked (%s), %u ran, %d per-pixel profiles, %d samples, texturing %u: "
+              "frame done\n",
               o.scene.c_str(), o.width, o.height, o.taps, s.path, o.default_path ? "the default" : "named", ran,
-              o.profiles, o.msaa);
+              o.profiles, o.msaa, o.texturing);
   if (!ms.empty()) {
     std::sort(ms.begin(), ms.end());
     std::printf("time of %d frames: median %.2f ms, fastest %.2f ms\n", o.frames, ms[ms.size() / 2], ms.front());
   }
   sss_destroy(ctx);
   glDeleteTextures(1, &color);
+  if (albedo != 0) glDeleteTextures(1, &albedo);
   if (depth != scene.depth) glDeleteTextures(1, &depth);
   sss_bench::destroy_scene(&scene);
   sss_headless_destroy(headless);

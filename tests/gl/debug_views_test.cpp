@@ -10,6 +10,7 @@
 //   DebugViews.*  every backend
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -64,7 +65,8 @@ TEST_F(DebugViews, EachViewMatchesTheCpuModel) {
                         {SSS_DEBUG_VIEW_LINEAR_DEPTH, "linear depth", false},
                         {SSS_DEBUG_VIEW_FOOTPRINT, "footprint", false},
                         {SSS_DEBUG_VIEW_TAPS, "taps", true},
-                        {SSS_DEBUG_VIEW_PROFILE, "profile (none: zero)", true}};
+                        {SSS_DEBUG_VIEW_PROFILE, "profile (none: zero)", true},
+                        {SSS_DEBUG_VIEW_ALBEDO, "albedo (pre-scatter: one)", true}};
   for (const View& v : views) {
     for (const bool half : {false, true}) {
       SCOPED_TRACE(std::string(v.name) + (half ? ", RGBA16F" : ", RGBA32F"));
@@ -92,9 +94,35 @@ TEST_F(DebugViews, EachViewMatchesTheCpuModel) {
         case SSS_DEBUG_VIEW_LINEAR_DEPTH: EXPECT_GT(inside, 0.1f); break;
         case SSS_DEBUG_VIEW_FOOTPRINT: EXPECT_GT(inside, 0.0f); break;
         case SSS_DEBUG_VIEW_TAPS: EXPECT_GT(inside, 1.0f); break;
+        case SSS_DEBUG_VIEW_ALBEDO: EXPECT_EQ(inside, 1.0f); break;
         default: EXPECT_EQ(inside, 0.0f); break;
       }
     }
+  }
+}
+
+// The albedo view of a texturing mode: A_post at every pixel the passes run (the floored albedo,
+// or its square root), the CPU model's value for value, and (0, 0, 0, 1) where they do not.
+TEST_F(DebugViews, TheAlbedoViewShowsWhatThePassesDivideBy) {
+  std::vector<float> albedo(static_cast<std::size_t>(kW) * kH * 4, 1.0f);
+  for (std::size_t i = 0; i < albedo.size(); ++i) {
+    if (i % 4 != 3) albedo[i] = (i / 4) % 3 == 0 ? 0.25f : ((i / 4) % 3 == 1 ? 0.5625f : 0.001f);  // half-exact
+  }
+  for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+    SCOPED_TRACE(mode);
+    FilterCase c = view_case(SSS_DEBUG_VIEW_ALBEDO, false);
+    c.settings.texturing = mode;
+    c.albedo = albedo;
+    const FilterOutcome o = run_case(scene_, c);
+    ASSERT_EQ(o.result, SSS_OK);
+    expect_matches_model_up_to_tap_flips(o, 0.0f, "albedo view");
+    const std::size_t i = (static_cast<std::size_t>(kH / 2) * kW + kW / 2);
+    const float expected = mode == SSS_TEXTURING_POST_SCATTER ? std::max(albedo[i * 4], 1.0f / 256.0f)
+                                                              : std::sqrt(std::max(albedo[i * 4], 1.0f / 256.0f));
+    EXPECT_EQ(at(o.gpu, kW / 2, kH / 2, 0), expected);
+    EXPECT_EQ(at(o.gpu, 2, 2, 0), 0.0f);
+    TearDown();
+    SetUp();
   }
 }
 

@@ -167,20 +167,26 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
       }
     }
   }
-  // The debug views the passes write (SSS_DEBUG_VIEW 1..5): the fragment passes' pair a view runs
-  // (the horizontal pass packed, the vertical one into a separate output), with each per-pixel
-  // profile variant. The tiles view has its own program, with each of its vertex stages below.
-  for (int view = 1; view <= static_cast<int>(SSS_DEBUG_VIEW_PROFILE); ++view) {
+  // The debug views the passes write (SSS_DEBUG_VIEW 1..5 and 7): the fragment passes' pair a view
+  // runs (the horizontal pass packed, the vertical one into a separate output), with each per-pixel
+  // profile variant, and the albedo view's vertical pass with each SSS_ALBEDO. The tiles view has
+  // its own program, with each of its vertex stages below.
+  for (const int view : {1, 2, 3, 4, 5, static_cast<int>(SSS_DEBUG_VIEW_ALBEDO)}) {
     for (int profile_ids = 0; profile_ids < 3; ++profile_ids) {
       for (const bool packed : {true, false}) {
-        gl::BlurVariant v;
-        v.follow_surface = 1;
-        v.profile_ids = profile_ids;
-        v.packed_output = packed;
-        v.outside = packed ? gl::BlurOutside::write_centre : gl::BlurOutside::copy_original;
-        v.debug_view = view;
-        out->write(d + "blur_debug" + std::to_string(view) + "_" + blur_name(v) + ".frag",
-                   gl::stage_recipe(dialect, gl::blur_fragment_file(v), gl::blur_defines(v)));
+        for (int albedo = 0; albedo <= (view == SSS_DEBUG_VIEW_ALBEDO && !packed ? 3 : 0); ++albedo) {
+          if (albedo == 3 && profile_ids == 0) continue;  // per profile: only with profiles
+          gl::BlurVariant v;
+          v.follow_surface = 1;
+          v.profile_ids = profile_ids;
+          v.packed_output = packed;
+          v.outside = packed ? gl::BlurOutside::write_centre : gl::BlurOutside::copy_original;
+          v.debug_view = view;
+          v.albedo = albedo;
+          out->write(d + "blur_debug" + std::to_string(view) + "_albedo" + std::to_string(albedo) + "_" +
+                         blur_name(v) + ".frag",
+                     gl::stage_recipe(dialect, gl::blur_fragment_file(v), gl::blur_defines(v)));
+        }
       }
     }
   }

@@ -317,9 +317,12 @@ typedef enum sss_debug_view {
                                         g 1 where its inputs draw does, b 1 where the tile holds a
                                         translucent pixel; 0 elsewhere. Not with a stencil (that
                                         path draws no tiles then) */
+  SSS_DEBUG_VIEW_ALBEDO = 7        /**< (r, g, b): A_post, what the passes divided the colour by and
+                                        multiply their result by (sss_texturing: the floored albedo
+                                        or its square root; (1, 1, 1) for pre-scatter) */
 } sss_debug_view;
 /** The largest sss_debug_view. */
-#define SSS_DEBUG_VIEW_LAST 6u
+#define SSS_DEBUG_VIEW_LAST 7u
 
 /** One application of the filter. Zero-initialise it and fill what you have: each texture with its
  *  format beside it. A frame that gives its size and the format of every texture it names is

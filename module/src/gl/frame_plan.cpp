@@ -114,7 +114,8 @@ void add_terms(Steps& steps, const FilterRun& run, const Capabilities& caps, boo
              fragment_variant(run, caps, term, 0, BlurOutside::write_centre));
     const BlurOutside outside = last ? last_outside : BlurOutside::write_centre;
     BlurVariant vertical = fragment_variant(run, caps, term, 1, outside);
-    if (last && run.debug_view == 0) vertical.albedo = albedo_variant(run);
+    // The filter multiplies by A_post; the albedo view shows it.
+    if (last && (run.debug_view == 0 || run.debug_view == SSS_DEBUG_VIEW_ALBEDO)) vertical.albedo = albedo_variant(run);
     Step& v = add_pass(steps, StepKind::blur, t, 1, last ? Into::target : Into::sum, vertical);
     v.copy_untouched = last && run.debug_view == 0 && !run.keeps_untouched() && !untouched_unread;
   }

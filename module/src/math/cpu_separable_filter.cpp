@@ -136,6 +136,7 @@ Rgba debug_values(const PassFrame& frame, const Plane& source, int axis, int x, 
     case 2: return {centre_distance, centre_distance, centre_distance, 1.0f};  // _LINEAR_DEPTH
     case 3: return {source.at(x, y, 0), footprint, 0.0f, 1.0f};  // _FOOTPRINT
     case 4: return {source.at(x, y, 1), taps, 0.0f, 1.0f};  // _TAPS
+    case kAlbedoDebugView: return {1.0f, 1.0f, 1.0f, 1.0f};   // times A_post where it is stored
     default: {  // _PROFILE
       const Indices& ids = frame.indices;
       if (ids.ids == nullptr) return {0.0f, 0.0f, 1.0f, 1.0f};
@@ -313,7 +314,7 @@ void cpu_pass_kernel_filter(const PassKernel& kernel, const PassConstants& const
           for (int c = 0; c < 3; ++c) {
             const float v = blurred[static_cast<std::size_t>(c)] + accumulated[i * 3 + c];
             if (last) {
-              const float post = image.albedo_post != nullptr ? v * image.albedo_post[i * 3 + c] : v;
+              const float post = multiplies_albedo(image) ? v * image.albedo_post[i * 3 + c] : v;
               out[i * 4 + c] = image.output_is_half ? round_to_half(post) : post;
             } else {
               accumulated[i * 3 + c] = image.accumulator_is_half ? round_to_half(v) : v;
@@ -368,7 +369,7 @@ void cpu_profile_filter(const std::vector<const PassKernel*>& kernels, const std
       image, constants.front(), [&](int x, int y, Rgba* blurred) { return pass(1, half_plane, x, y, blurred); },
       [&](std::size_t i, const Rgba& blurred) {
         for (std::size_t c = 0; c < 3; ++c) {
-          const float post = image.albedo_post != nullptr ? blurred[c] * image.albedo_post[i * 3 + c] : blurred[c];
+          const float post = multiplies_albedo(image) ? blurred[c] * image.albedo_post[i * 3 + c] : blurred[c];
           out[i * 4 + c] = image.output_is_half ? round_to_half(post) : post;
         }
       });

@@ -55,6 +55,12 @@ struct CpuFilterImage {
 // sss.h SSS_DEBUG_VIEW_TILES (the math layer includes no public header): the view that runs no pass,
 // only the masked path's tile marks (math::write_tile_view).
 inline constexpr std::uint32_t kTilesDebugView = 6;
+// sss.h SSS_DEBUG_VIEW_ALBEDO: A_post, which the last pass's store multiplies its view of 1 by.
+inline constexpr std::uint32_t kAlbedoDebugView = 7;
+// Whether the last pass multiplies what it stores by the image's A_post: the filter, and the albedo view.
+inline bool multiplies_albedo(const CpuFilterImage& image) {
+  return image.albedo_post != nullptr && (image.debug_view == 0 || image.debug_view == kAlbedoDebugView);
+}
 
 // An image of `width` x `height` pixels with these colour and depth planes, the rest as above.
 inline CpuFilterImage cpu_filter_image(int width, int height, const float* color, const float* depth) {
