@@ -32,10 +32,16 @@
 //                      GLSL 4.20) and the colour texture is complete: on llvmpipe a texelFetch from
 //                      any texture but an 8-bit one calls a sampling function, which made the colour's
 //                      read a sixth of this draw's time (1080p); 0: the sampler on unit 0
+//   SSS_ALBEDO         albedo.glsl's: the colour divided by A_post (a texturing mode), rounded as
+//                      the module's colour copy rounds it (u_round_to_half: where the copy would be
+//                      RGBA16F), so that every path blurs the same values; 3: by each pixel's
+//                      profile's mode (u_texturing)
 // The texel goes into the horizontal pass's target too: that pass skips the pixels the culling
 // rejects, and the vertical taps read them there.
 #include "colour_range.glsl"
 #include "depth.glsl"
+#include "albedo.glsl"
+#include "nearest_half.glsl"
 
 #if SSS_COLOR_IMAGE
 layout(binding = 0, SSS_COLOR_IMAGE_FORMAT) readonly uniform highp image2D u_color;  // as below, complete
@@ -43,9 +49,26 @@ layout(binding = 0, SSS_COLOR_IMAGE_FORMAT) readonly uniform highp image2D u_col
 SSS_BINDING(0) uniform sampler2D u_color;       // the host's colour (or the module's copy of it)
 #endif
 SSS_BINDING(1) uniform highp sampler2D u_depth;  // the host's depth (hardware or linear)
-#if SSS_PROFILE_IDS == 1
-SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R8UI indices
+#if SSS_PROFILE_IDS == 1 || (SSS_PROFILE_IDS == 2 && SSS_ALBEDO == 3)
+SSS_BINDING(4) uniform highp usampler2D u_profile_ids;  // the host's R8UI (or, for the modes, R16UI) indices
 #endif
+#if SSS_ALBEDO == 3
+uniform float u_texturing[SSS_PROFILES];  // each profile's mode (0-2)
+#endif
+
+// The colour over A_post (albedo.glsl), rounded as the colour copy rounds it.
+vec4 sss_over_albedo(vec4 color, ivec2 pixel) {
+#if SSS_ALBEDO == 3
+  int profile = int(texelFetch(u_profile_ids, pixel, 0).r & 15u);
+  color.rgb /= sss_albedo_post(pixel, profile < SSS_PROFILES ? int(u_texturing[profile]) : 0);
+  return vec4(sss_nearest_half(color).rgb, color.a);
+#elif SSS_ALBEDO
+  color.rgb /= sss_albedo_post(pixel, SSS_ALBEDO);
+  return vec4(sss_nearest_half(color).rgb, color.a);
+#else
+  return color;
+#endif
+}
 
 layout(location = 0) out uvec4 o_taps;
 layout(location = 1) out uint o_strength;
@@ -58,6 +81,7 @@ void main() {
 #else
   vec4 color = texelFetch(u_color, pixel, 0);
 #endif
+  color = sss_over_albedo(color, pixel);
   uint distance = floatBitsToUint(view_distance(texelFetch(u_depth, pixel, 0).r));
   if (!sss_in_range(color.rgb)) {
     color.rgb = vec3(kSssUnusableColour);

@@ -219,7 +219,7 @@ TEST_F(DebugViews, BadFramesAreRefusedByNameAndNothingIsDrawn) {
   };
   sss_frame f = frame_of(color, depth, output);
   f.debug_view = SSS_DEBUG_VIEW_LAST + 1;
-  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = 7");
+  expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "frame->debug_view = 8");
   f = frame_of(color, depth);
   f.debug_view = SSS_DEBUG_VIEW_MASK;
   expect_refused(f, SSS_ERROR_INVALID_ARGUMENT, "needs an output_texture");

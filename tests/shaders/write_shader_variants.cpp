@@ -130,10 +130,11 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
   for (int i = 0; i < gl::kPassInputsVariantCount; ++i) {
     const gl::PassInputsVariant v = gl::pass_inputs_variant_at(i);
     if (v.color_image >= 0 && dialect != gl::GlslVariant::glsl420) continue;
+    if (v.albedo == 3 && v.profile_ids == 0) continue;  // a mode per profile needs the profiles
     out->write(d + "pass_inputs_l" + std::to_string(v.linear_depth ? 1 : 0) + "_p" + std::to_string(v.profile_ids) +
                    "_m" + std::to_string(v.mark_depth ? 1 : 0) +
                    (v.color_image >= 0 ? std::string("_") + gl::kComputeImageFormats[v.color_image].qualifier : "") +
-                   ".frag",
+                   "_a" + std::to_string(v.albedo) + ".frag",
                gl::stage_recipe(dialect, "pass_inputs.frag", gl::pass_inputs_defines(v)));
   }
   for (int i = 0; i < gl::kHalfVariantCount; ++i) {

@@ -319,11 +319,57 @@ TEST(FramePlan, AStrengthTextureRunsThePassesOnTheModulesCopy) {
   EXPECT_EQ(p.inputs.color_image, 0);  // the module's RGBA16F copy is complete
   PassTextures module;
   module.colour_copy = 40;
-  const FilterRun passes = passes_run(f.run, module, nullptr);
+  const FilterRun passes = passes_run(f.run, module, nullptr, p.colour_copy);
   EXPECT_EQ(passes.color.name, 40u);
   EXPECT_EQ(passes.color.internal_format, static_cast<GLint>(RGBA16F));
   EXPECT_EQ(passes.output.name, 1u);
   EXPECT_EQ(passes.strength.name, 0u);
+}
+
+// A texturing mode (sss.h sss_texturing): the fragment and half-resolution passes divide by the
+// albedo in their inputs draw, the compute and cross-bilateral passes read the colour copy, which
+// divides; the pass that writes the target multiplies back; pre-scatter plans as without an albedo.
+TEST(FramePlan, ATexturingModeDividesWhereThePassesReadTheColour) {
+  Frame f;
+  f.run.albedo = texture(9, RGBA8);
+  const FramePlan pre = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
+  f.run.albedo = TextureInfo{};
+  EXPECT_TRUE(pre == plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT));  // pre-scatter: the albedo unread
+  f.run.albedo = texture(9, RGBA8);
+  f.run.texturing[0] = SSS_TEXTURING_POST_SCATTER;
+  for (const unsigned path : {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_HALF_RESOLUTION}) {
+    SCOPED_TRACE(path);
+    const FramePlan p = plan_frame(f.run, desktop(), path);
+    EXPECT_FALSE(p.colour_copy);
+    EXPECT_EQ(p.inputs.albedo, 1);
+    if (path == SSS_PATH_HALF_RESOLUTION) {
+      EXPECT_EQ(p.half.albedo, 1);
+      EXPECT_EQ(p.full_vertical.albedo, 1);
+    } else {
+      EXPECT_EQ(find(p, K::blur, 0, 1)->variant.albedo, 1);
+      EXPECT_EQ(find(p, K::blur, 0, 0)->variant.albedo, 0);
+    }
+  }
+  const FramePlan compute = plan_frame(f.run, desktop(), SSS_PATH_COMPUTE);
+  EXPECT_TRUE(compute.colour_copy);
+  EXPECT_EQ(compute.copy.albedo, 1);
+  EXPECT_EQ(compute.steps[0].kind, K::colour_copy);
+  f.run.texturing[0] = SSS_TEXTURING_PRE_AND_POST_SCATTER;
+  f.run.cross_bilateral = true;
+  const FramePlan cbf = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
+  EXPECT_TRUE(cbf.colour_copy);
+  EXPECT_EQ(cbf.copy.albedo, 2);
+  EXPECT_EQ(cbf.cbf_albedo, 2);
+  // Written back, the passes leave the pixels they do not blur where they are (never the copy).
+  PassTextures module;
+  module.colour_copy = 40;
+  const FilterRun passes = passes_run(f.run, module, nullptr, true);
+  EXPECT_TRUE(passes.keeps_untouched());
+  EXPECT_EQ(cbf.cbf_vertical_outside, BlurOutside::discard);
+  // Nothing to blur: no copy, no division.
+  f.run.identity = true;
+  f.run.output = texture(4, RGBA16F);
+  EXPECT_FALSE(plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT).colour_copy);
 }
 
 TEST(FramePlan, TheMsaaPathResolvesMarksBlursAndWritesBack) {

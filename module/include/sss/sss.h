@@ -312,7 +312,7 @@ typedef enum sss_debug_view {
                                         the centre included */
   SSS_DEBUG_VIEW_PROFILE = 5,      /**< (p, o, 1): the profile (value & 15) and object (value >> 4)
                                         index; (0, 0, 1) without a profile_texture */
-  SSS_DEBUG_VIEW_TILES = 6         /**< (r, g, b): the 16x16 tiles SSS_PATH_FRAGMENT_MASKED draws, at
+  SSS_DEBUG_VIEW_TILES = 6,        /**< (r, g, b): the 16x16 tiles SSS_PATH_FRAGMENT_MASKED draws, at
                                         every pixel of the viewport: r 1 where its blur passes draw,
                                         g 1 where its inputs draw does, b 1 where the tile holds a
                                         translucent pixel; 0 elsewhere. Not with a stencil (that

@@ -36,16 +36,7 @@ sss_result draw_colour_copy(PassContext& ctx, const FilterRun& run, const FrameP
   bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
   // GL_NEAREST on ES, where an R32F texture is not filterable (texelFetch needs it complete).
   if (plan.copy.strength_texture) bind_texture(ctx, unit::strength, run.strength.name, ctx.objects.depth_sampler);
-  if (albedo) {
-    // The albedo stays on its unit for the frame: the pass that writes the target reads it there.
-    bind_texture(ctx, unit::albedo, run.albedo.name, ctx.objects.nearest_sampler);
-    if (plan.copy.albedo == 3) {
-      bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
-      float modes[SSS_MAX_PROFILES] = {};
-      for (int i = 0; i < run.profile_count; ++i) modes[i] = run.texturing[static_cast<std::size_t>(i)];
-      f.Uniform1fv(program.texturing, run.profile_count, modes);
-    }
-  }
+  if (albedo) bind_albedo(ctx, run, plan.copy.albedo, -1, program.texturing);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
   return SSS_OK;

@@ -64,6 +64,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const FrameP
   }
   bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
   if (plan.inputs.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  if (plan.inputs.albedo != 0) bind_albedo(ctx, run, plan.inputs.albedo, p.round_to_half, p.texturing);
   draw_cover(ctx, p.tile_grid);
   // The host's colour leaves the image unit: the next binding there is the module's (or, without
   // the state restore, none).

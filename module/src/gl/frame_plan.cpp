@@ -132,6 +132,7 @@ void plan_separable(Steps& steps, const FilterRun& run, const Capabilities& caps
   plan.inputs.profile_ids = profile_ids_variant(run);
   plan.inputs.mark_depth = run.stencil == nullptr;
   plan.inputs.color_image = readable_color_image(run, caps);
+  plan.inputs.albedo = plan.colour_copy ? 0 : albedo_variant(run);  // the copy divided already
   plan.tile_mark_image = readable_color_image(run, caps);
   plan.stencil_format =
       run.stencil != nullptr ? run.stencil->texture.internal_format : static_cast<GLint>(DEPTH24_STENCIL8);
@@ -173,6 +174,7 @@ void plan_half_resolution(Steps& steps, const FilterRun& run, const Capabilities
   plan.inputs.profile_ids = profile_ids_variant(run);
   plan.inputs.mark_depth = true;
   plan.inputs.color_image = readable_color_image(run, caps);
+  plan.inputs.albedo = plan.colour_copy ? 0 : albedo_variant(run);
   plan.tile_mark_image = readable_color_image(run, caps);
   plan.half.profile_ids = profile_ids_variant(run);
   const BlurOutside last = run.keeps_untouched() ? BlurOutside::discard : BlurOutside::copy_original;
@@ -335,9 +337,15 @@ const char* path_unavailable(const FilterRun& run, const Capabilities& caps, uns
   }
 }
 
-FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own) {
+bool copies_colour(const FilterRun& run, unsigned path) {
+  if (run.strength.name != 0) return true;
+  if (albedo_variant(run) == 0 || run.identity) return false;
+  return run.cross_bilateral || (path == SSS_PATH_COMPUTE && run.debug_view == 0);
+}
+
+FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own, bool colour_copy) {
   FilterRun passes = run;
-  if (reads_colour_copy(run)) {
+  if (colour_copy) {
     // The module's copy with the strength as alpha, at the intermediate's precision; written back,
     // the host's colour becomes the separate output (its rgb alone is written: R11F_G11F_B10F has
     // no alpha to keep).
@@ -391,7 +399,7 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   plan.stencil_format = 0;
   plan.step_count = 0;
   Steps steps{plan};
-  plan.colour_copy = reads_colour_copy(run);
+  plan.colour_copy = copies_colour(run, path);
   plan.copy = ColourCopyVariant{};
   if (plan.colour_copy) {
     plan.copy.strength_texture = run.strength.name != 0;
@@ -409,7 +417,7 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   placeholders.colour_copy = placeholders.resolved_color = placeholders.resolved_distance = placeholders.blurred =
       ~0u;
   std::optional<FilterRun> view;
-  if (reads_colour_copy(run) || run.color.multisampled()) view.emplace(passes_run(run, placeholders, &own));
+  if (plan.colour_copy || run.color.multisampled()) view.emplace(passes_run(run, placeholders, &own, plan.colour_copy));
   const FilterRun& passes = view ? *view : run;
   if (plan.colour_copy) steps.add(StepKind::colour_copy, StepRun::host);
   if (run.color.multisampled()) {

@@ -144,9 +144,13 @@ int profile_ids_variant(const FilterRun& run);
 // albedo texture or where every profile the frame can use is pre-scatter, 1 or 2 where they share
 // post-scatter or pre- and post-scatter, 3 where their modes differ.
 int albedo_variant(const FilterRun& run);
-// Whether the passes of `run` read the module's copy of the colour (colour_copy.cpp) instead of the
-// host's: a strength texture, or a texturing mode that divides by the albedo (with something to blur).
-inline bool reads_colour_copy(const FilterRun& run) {
+// Whether the passes of `run` on `path` read the module's copy of the colour (colour_copy.cpp)
+// instead of the host's: for a strength texture, and for a texturing mode on the passes that read
+// the colour themselves (compute, cross-bilateral); the fragment and half-resolution passes divide
+// by the albedo in their inputs draw instead (pass_inputs.frag), which saves the copy's draw.
+bool copies_colour(const FilterRun& run, unsigned path);
+// Whether they may, on some path (the run the path is chosen on).
+inline bool may_copy_colour(const FilterRun& run) {
   return run.strength.name != 0 || (albedo_variant(run) != 0 && !run.identity);
 }
 // The sum of the kernel's terms in half floats: RGBA32F keeps up to six terms at float precision,
@@ -182,8 +186,8 @@ struct PassTextures {
 // The run the passes' steps read (StepRun::passes): `run` itself, or its textures replaced by the
 // module's copy with the strength (written back, the host's colour then is the output) or the MSAA
 // resolve's images (behind `own`, the module's stencil, where the host gave none). plan_frame plans
-// the passes on this run too.
-FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own);
+// the passes on this run too. `colour_copy`: the plan's (copies_colour).
+FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own, bool colour_copy);
 
 // One line per step, for SSS_LOG_DEBUG and the tests.
 std::string describe(const FramePlan& plan);

@@ -159,6 +159,17 @@ void bind_original(PassContext& ctx, const FilterRun& run) {
   bind_texture(ctx, unit::original, run.keeps_untouched() ? 0 : run.untouched_colour(), ctx.objects.sampler);
 }
 
+void bind_albedo(PassContext& ctx, const FilterRun& run, int albedo, GLint round_to_half, GLint texturing) {
+  const Functions& f = ctx.gl;
+  bind_texture(ctx, unit::albedo, run.albedo.name, ctx.objects.nearest_sampler);
+  if (round_to_half >= 0) f.Uniform1i(round_to_half, run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  if (albedo != 3) return;
+  bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
+  float modes[SSS_MAX_PROFILES] = {};
+  for (int i = 0; i < run.profile_count; ++i) modes[i] = run.texturing[static_cast<std::size_t>(i)];
+  f.Uniform1fv(texturing, run.profile_count, modes);
+}
+
 void draw_copy(PassContext& ctx, GLuint source) {
   ctx.gl.UseProgram(ctx.programs.copy());
   bind_texture(ctx, unit::source, source, ctx.objects.sampler);

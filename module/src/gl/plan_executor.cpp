@@ -128,13 +128,13 @@ sss_result SeparableFilter::run(const FilterRun& host, std::string* message) {
   StencilInput own_mark;
   own_mark.ref = 1;
   own_mark.mask = 1;
-  const bool substituted = reads_colour_copy(host) || host.color.multisampled();
+  const bool substituted = may_copy_colour(host) || host.color.multisampled();
   const auto module_textures = [this] {
     const Targets& t = targets_.names();
     return PassTextures{t.colour_copy, t.resolved_color, t.resolved_distance, t.blurred};
   };
   std::optional<FilterRun> view;
-  if (substituted) view.emplace(passes_run(host, module_textures(), &own_mark));
+  if (substituted) view.emplace(passes_run(host, module_textures(), &own_mark, may_copy_colour(host)));
   const FilterRun& passes = substituted ? *view : host;
 
   // 2. The path (an MSAA frame resolves, then runs the fragment passes) and the plan, with every
@@ -145,7 +145,7 @@ sss_result SeparableFilter::run(const FilterRun& host, std::string* message) {
   sss_result r = plan(ctx, host, passes, sss_path_of(choice.path), &p, message);
   if (r != SSS_OK) return r;
   const FramePlan& plan = last_plan_;
-  if (substituted) *view = passes_run(host, module_textures(), &own_mark);
+  if (substituted) *view = passes_run(host, module_textures(), &own_mark, plan.colour_copy);
   // A steady frame's framebuffers are the last run's only if it took the same path (SSS_PATH_AUTO
   // tries each in turn).
   if (!msaa) ctx.check_framebuffers = host.verify || plan.path != last_path_;

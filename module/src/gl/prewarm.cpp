@@ -36,9 +36,9 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   // is not (or the context has no image units: the two plans then name the same programs).
   for (const bool color_complete : {true, false}) {
     host.color_complete = color_complete;
-    const FilterRun passes = passes_run(host, module, &own);
     for (const unsigned path :
          {SSS_PATH_FRAGMENT, SSS_PATH_FRAGMENT_MASKED, SSS_PATH_HALF_RESOLUTION, SSS_PATH_COMPUTE}) {
+      const FilterRun passes = passes_run(host, module, &own, copies_colour(host, path));
       if (r != SSS_OK || !may_take(passes, path)) continue;
       FramePlan plan;
       PlanPrograms programs;

@@ -324,8 +324,8 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   char label[112];
   const char* image = v.color_image >= 0 ? kComputeImageFormats[v.color_image].qualifier : "none";
-  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d image=%s", v.linear_depth ? 1 : 0,
-                v.profile_ids, v.mark_depth ? 1 : 0, image);
+  std::snprintf(label, sizeof label, "sss pass inputs linear=%d profiles=%d mark=%d image=%s albedo=%d",
+                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0, image, v.albedo);
   finish(p.program, label, "pass inputs");
   p.color_image = v.color_image;
   const Functions& f = *gl_;
@@ -333,6 +333,11 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
+  if (v.albedo != 0) {
+    set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
+    p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+    p.texturing = f.GetUniformLocation(p.program, "u_texturing");
+  }
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
   set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);

@@ -77,6 +77,8 @@ struct PassInputsProgram {
   // Reads the colour through image unit 0 in kComputeImageFormats[color_image] (SSS_COLOR_IMAGE);
   // -1: through the sampler on unit 0.
   int color_image = -1;
+  // SSS_ALBEDO: the quotient's rounding (nearest_half.glsl) and, per profile, each one's mode.
+  GLint round_to_half = -1, texturing = -1;
 };
 
 // The masked path's tile marks (tile_mark.frag): per tile, or per column of tiles.

@@ -85,11 +85,13 @@ std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {
   const int sampler_variant = ((v.linear_depth ? 1 : 0) * 3 + v.profile_ids) * 2 + (v.mark_depth ? 1 : 0);
-  return sampler_variant * (1 + kPassInputsColorImageFormats) + v.color_image + 1;
+  return (sampler_variant * (1 + kPassInputsColorImageFormats) + v.color_image + 1) * 4 + v.albedo;
 }
 
 PassInputsVariant pass_inputs_variant_at(int index) {
   PassInputsVariant v;
+  v.albedo = index % 4;
+  index /= 4;
   v.color_image = index % (1 + kPassInputsColorImageFormats) - 1;
   index /= 1 + kPassInputsColorImageFormats;
   v.mark_depth = index % 2 != 0;
@@ -102,8 +104,9 @@ std::string pass_inputs_defines(const PassInputsVariant& v) {
   char defines[192];
   std::snprintf(defines, sizeof defines,
                 "#define SSS_LINEAR_DEPTH %d\n#define SSS_PROFILE_IDS %d\n#define SSS_MARK_DEPTH %d\n"
-                "#define SSS_COLOR_IMAGE %d\n",
-                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0, v.color_image >= 0 ? 1 : 0);
+                "#define SSS_COLOR_IMAGE %d\n#define SSS_ALBEDO %d\n#define SSS_PROFILES %d\n",
+                v.linear_depth ? 1 : 0, v.profile_ids, v.mark_depth ? 1 : 0, v.color_image >= 0 ? 1 : 0, v.albedo,
+                SSS_MAX_PROFILES);
   std::string text = defines;
   if (v.color_image >= 0) {
     text += std::string("#define SSS_COLOR_IMAGE_FORMAT ") + kComputeImageFormats[v.color_image].qualifier + "\n";

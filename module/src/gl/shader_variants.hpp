@@ -117,14 +117,18 @@ inline std::string msaa_write_defines(GlslVariant v) {
 // and SSS_COLOR_IMAGE: `color_image` -1 reads the colour through the sampler, 0 or 1 through image
 // unit 0 in kComputeImageFormats[color_image] (RGBA16F, RGBA32F: the colours the passes read, a
 // strength texture's R11F_G11F_B10F colour being read from the module's RGBA16F copy).
+// SSS_ALBEDO (0-3, albedo.glsl): the colour divided by A_post as it is read, where the plan runs no
+// colour copy (the fragment and half-resolution paths without a strength texture): the copy's
+// division and rounding without its draw.
 struct PassInputsVariant {
   bool linear_depth = false;
   int profile_ids = 0;
   bool mark_depth = false;
   int color_image = -1;
+  int albedo = 0;
 };
 inline constexpr int kPassInputsColorImageFormats = 2;
-inline constexpr int kPassInputsVariantCount = 2 * 3 * 2 * (1 + kPassInputsColorImageFormats);
+inline constexpr int kPassInputsVariantCount = 2 * 3 * 2 * (1 + kPassInputsColorImageFormats) * 4;
 int pass_inputs_variant_index(const PassInputsVariant& v);
 PassInputsVariant pass_inputs_variant_at(int index);
 std::string pass_inputs_defines(const PassInputsVariant& v);
