@@ -73,7 +73,10 @@ bool make_heat_texture(Renderer *renderer, const Options &o, const OrbitCamera &
   small_controls.debug_view = 0;              // the error of the filtered image
   const bool ok = render_frame(renderer, m, small_controls, &small, false, &frame);
   SmallFrame data;
-  if (ok) data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+  if (ok) {
+    data = read_small_frame(small, m, frame.sss_ran, renderer->scene->world_units_per_mm,
+                            frame.preintegrated ? 0 : static_cast<int>(renderer->sss.settings.texturing));
+  }
   data.materials = reference_materials(*renderer->scene);
   destroy_frame_targets(&small);
   if (!ok) return false;
@@ -125,6 +128,49 @@ bool write_debug_views(Renderer *renderer, const Options &o, const Context &cont
   return ok && check_gl("the debug views");
 }
 
+// The close-up's zoom in each texturing mode side by side (pre | post | pre-and-post, each labelled),
+// 3x around the block where pre- and post-scatter differ most, as close-zoom-texturing.png. Not
+// written where the modes cannot differ: the library off, MSAA (no albedo on the library's MSAA
+// path), pre-integrated shading.
+bool write_texturing_zoom(Renderer *renderer, const Options &o, const Context &context, const SssControls &controls,
+                          const CameraMatrices &m, FrameTargets *targets, const std::string &prefix,
+                          const std::string &settings) {
+  if (!controls.enabled || targets->samples > 0) return true;
+  Image images[3];
+  for (int mode = SSS_TEXTURING_PRE_SCATTER; mode <= SSS_TEXTURING_PRE_AND_POST_SCATTER; ++mode) {
+    SssControls with_mode = controls;
+    with_mode.texturing = mode;
+    FrameResult frame;
+    if (!render_frame(renderer, m, with_mode, targets, false, &frame)) return false;
+    if (frame.preintegrated) return true;
+    composite_frame(*renderer, *targets, frame, ViewMode::kFinal, o.exposure, 0.5f, 0, nullptr);
+    images[mode] = image_from_gl_rows(read_output(*targets), targets->width, targets->height);
+  }
+  const int crop_w = targets->width / 8, crop_h = targets->height / 6;
+  int cx = 0, cy = 0;
+  largest_difference(images[0], images[1], std::min(crop_w, crop_h), &cx, &cy);
+  Image panels[3];
+  for (int mode = 0; mode < 3; ++mode) {
+    panels[mode] = crop_zoom(images[mode], cx, cy, crop_w, crop_h, 3);
+    const int unit = std::max(1, panels[mode].height / 135);
+    static const std::uint8_t kWhite[3] = {235, 235, 235};
+    static const std::uint8_t kFrame[3] = {20, 20, 20};
+    const char *name = texturing_name(mode);
+    fill_rect(&panels[mode], 0, 0, (static_cast<int>(std::strlen(name)) * 6 + 3) * unit, 10 * unit, kFrame);
+    draw_text(&panels[mode], 2 * unit, 2 * unit, name, unit, kWhite);
+  }
+  const Image zoom = side_by_side(side_by_side(panels[0], panels[1], 4), panels[2], 4);
+  char where[256];
+  std::snprintf(where, sizeof where,
+                "left to right: texturing pre-scatter, post-scatter, pre-and-post-scatter (sss_settings.texturing), 3x "
+                "around pixel (%d, %d), where pre- and post-scatter differ most. ", cx, cy);
+  const DemoScene &scene = *renderer->scene;
+  return write_png(
+      prefix + "zoom-texturing.png", zoom,
+      image_text(scene, "sss_demo zoom-texturing",
+                 where + scene.name + ", " + preset_title(Preset::kClose) + ". " + settings, context.renderer));
+}
+
 bool render_preset(Renderer *renderer, const Options &o, const Context &context, const SssControls &controls,
                    Preset preset, FrameTargets *targets, PresetReport *report) {
   const DemoScene &scene = *renderer->scene;
@@ -151,6 +197,14 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
     glDeleteTextures(1, &heat_texture);
     return false;
   }
+  // The close-up in each texturing mode (before the big frame again, which sets the controls' mode back).
+  const std::string prefix = (std::filesystem::path(o.out_dir) / preset_name(preset)).string() + "-";
+  if (preset == Preset::kClose &&
+      !write_texturing_zoom(renderer, o, context, controls, m, targets, prefix,
+                            format_settings(renderer->sss.settings, controls, scene.world_units_per_mm))) {
+    glDeleteTextures(1, &heat_texture);
+    return false;
+  }
   // The big frame again (the small one used the same passes), then each view read back.
   if (!render_frame(renderer, m, controls, targets, false, &frame)) return false;
   FrameResult no_sss = frame;
@@ -173,7 +227,6 @@ bool render_preset(Renderer *renderer, const Options &o, const Context &context,
   const std::string settings = format_settings(renderer->sss.settings, controls, scene.world_units_per_mm);
   bool ok = true;
   Image before, after;
-  const std::string prefix = (std::filesystem::path(o.out_dir) / preset_name(preset)).string() + "-";
   for (const View &v : views) {
     composite_frame(*renderer, *targets, *v.frame, v.mode, o.exposure, 0.5f, heat_texture, nullptr);
     Image image = image_from_gl_rows(read_output(*targets), targets->width, targets->height);
@@ -237,7 +290,10 @@ std::string readme(const Options &o, const Context &context, const DemoScene &sc
       "                      re-render of the same frame at 1/heat-factor of each side, shown scaled up.\n"
       "  PRESET-touched.png  orange: pixels the library changed; blue: translucent but unchanged; grey: the rest\n"
       "  PRESET-zoom.png     before | after, magnified 3x, around the block where they differ most\n"
-      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n";
+      "  PRESET-profiles.png the G-buffer's profile/object byte (sss_frame.profile_texture) in false colours\n"
+      "  close-zoom-texturing.png  the close-up in each texturing mode (sss_settings.texturing), left to right\n"
+      "                      pre-scatter | post-scatter | pre-and-post, magnified 3x where pre and post differ most\n"
+      "                      (not with MSAA, --no-sss or pre-integrated shading)\n";
   for (const int view : o.debug_views) {
     char line[320];
     std::snprintf(line, sizeof line, "  PRESET-view-%s.png the library's debug view (sss_frame.debug_view): %s\n",

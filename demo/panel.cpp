@@ -201,6 +201,22 @@ void draw_panel(WindowState *s) {
       s->controls.msaa_samples = msaa ? 4 : 0;
     }
   }
+  if (ImGui::CollapsingHeader("Texturing", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // sss_settings.texturing: the lighting pass's albedo target goes with the frame for post and pre-and-post.
+    ImGui::RadioButton("pre-scatter", &s->controls.texturing, SSS_TEXTURING_PRE_SCATTER);
+    ImGui::SameLine();
+    ImGui::RadioButton("post-scatter", &s->controls.texturing, SSS_TEXTURING_POST_SCATTER);
+    ImGui::SameLine();
+    ImGui::RadioButton("pre-and-post", &s->controls.texturing, SSS_TEXTURING_PRE_AND_POST_SCATTER);
+    ImGui::TextDisabled(s->controls.texturing == SSS_TEXTURING_PRE_SCATTER ? "  the albedo blurred with the light"
+                        : s->controls.texturing == SSS_TEXTURING_POST_SCATTER
+                            ? "  the light alone blurred, the albedo's detail kept sharp"
+                            : "  sqrt(albedo) blurred, sqrt(albedo) multiplied after");
+    if (effective_texturing(s->controls, s->controls.msaa_samples) != s->controls.texturing) {
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
+                         "with MSAA the frame runs pre-scatter (no albedo on that path)");
+    }
+  }
   if (s->scene->profiles.size() > 1 || !s->scene->object_names.empty()) {
     if (ImGui::CollapsingHeader("Materials and objects", ImGuiTreeNodeFlags_DefaultOpen)) {
       ImGui::Checkbox("object IDs (no light between objects)", &s->controls.object_ids);
