@@ -69,7 +69,7 @@ SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &c
   if (sss_ran) f.after = read_texture_rgba(targets.after, f.width, f.height);
   f.ids = read_texture_r8ui(targets.profile, f.width, f.height);
   f.texturing = texturing;
-  if (texturing != SSS_TEXTURING_PRE_SCATTER) f.albedo = read_texture_rgba(targets.albedo, f.width, f.height);
+  f.albedo = read_texture_rgba(targets.albedo, f.width, f.height);  // for every mode: the post-scatter score
 
   const size_t n = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
   std::vector<float> depth(n);

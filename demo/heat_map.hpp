@@ -40,8 +40,8 @@ struct SmallFrame {
   std::vector<int> materials;
   std::array<float, 16> projection{};
   double world_units_per_mm = 0.001;
-  // The texturing mode the library ran (an sss_texturing) and, for one other than pre-scatter, the
-  // lighting pass's albedo (RGBA): the reference is then A_post * (R * (before / A_post)).
+  // The texturing mode the library ran (an sss_texturing) and the lighting pass's albedo (RGBA): for a
+  // mode other than pre-scatter the reference is A_post * (R * (before / A_post)).
   int texturing = 0;
   std::vector<float> albedo;
 };
