@@ -66,8 +66,14 @@ class CheckedCallback : public osg::Camera::DrawCallback {
     queries_ += counts.total_queries();
     if (counts.total_queries() > 0) query_names_ = counts.describe_queries();
     // Without the restore the callback has told OSG to re-apply everything: its beliefs are stale
-    // on purpose until then, so the comparison is for the restoring library only.
-    if (no_restore_) return;
+    // on purpose until then, so the comparison is for the restoring library only; what OSG cannot be
+    // told (it tracks no sampler objects) the callback must have unbound.
+    if (no_restore_) {
+      for (const std::string& line : sss_osg_host::samplers_left_bound(info)) {
+        mismatches_.push_back("frame " + std::to_string(inner_->frames_applied()) + ": " + line);
+      }
+      return;
+    }
     for (const std::string& line : sss_osg_host::compare_cache_with_gl(info, bound)) {
       mismatches_.push_back("frame " + std::to_string(inner_->frames_applied()) + ": " + line);
     }
@@ -204,6 +210,8 @@ int run_checks(Host* host, bool no_restore) {
   check(other_changed == 0, "every pixel that is not skin is bit-identical to the engine's frame without the module");
   for (const std::string& line : host->checked->mismatches()) std::printf("      %s\n", line.c_str());
   if (no_restore) {
+    check(host->checked->mismatches().empty(),
+          "without the restore no sampler object is left bound after the callback");
     check(host->checked->queries() == 0, "without the restore a steady frame asks the GL nothing (" +
                                              std::to_string(host->checked->queries()) + " queries: " +
                                              host->checked->query_names() + ")");
