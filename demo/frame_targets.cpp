@@ -27,8 +27,8 @@ void resolve_lighting(const FrameTargets &t) {
   }
   glBlitFramebuffer(0, 0, t.width, t.height, 0, 0, t.width, t.height, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
                     GL_NEAREST);
-  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glDrawBuffers(3, buffers);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glDrawBuffers(4, buffers);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -41,6 +41,7 @@ bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height, int sa
   t->specular = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
   t->depth_stencil = make_texture(GL_DEPTH24_STENCIL8, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
   t->after = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
+  t->albedo = make_texture(GL_RGBA16F, width, height, GL_RGBA, GL_HALF_FLOAT);
   t->profile = make_texture(GL_R8UI, width, height, GL_RED_INTEGER, GL_UNSIGNED_BYTE);
   t->output = make_texture(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
 
@@ -49,9 +50,10 @@ bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height, int sa
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->diffuse, 0);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, t->specular, 0);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, t->profile, 0);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, t->albedo, 0);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, t->depth_stencil, 0);
-  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glDrawBuffers(3, buffers);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glDrawBuffers(4, buffers);
   bool ok = check_framebuffer("lighting");
 
   glGenFramebuffers(1, &t->output_framebuffer);
@@ -86,8 +88,8 @@ void destroy_frame_targets(FrameTargets *t) {
     const GLuint ms[3] = {t->diffuse_ms, t->specular_ms, t->depth_stencil_ms};
     glDeleteTextures(3, ms);
   }
-  const GLuint textures[6] = {t->diffuse, t->specular, t->depth_stencil, t->after, t->output, t->profile};
-  glDeleteTextures(6, textures);
+  const GLuint textures[7] = {t->diffuse, t->specular, t->depth_stencil, t->after, t->output, t->profile, t->albedo};
+  glDeleteTextures(7, textures);
   *t = FrameTargets{};
 }
 

@@ -16,8 +16,10 @@ struct FrameTargets {
   GLuint after = 0;          // RGBA16F: the library's output (sss_apply_frame's output_texture)
   GLuint profile = 0;        // R8UI: profile | object << 4 per pixel (sss_frame.profile_texture), 0 the background;
                              // single-sample only (the library refuses a profile texture with MSAA colour)
+  GLuint albedo = 0;         // RGBA16F: the linear albedo the diffuse light was multiplied by (1 on the background),
+                             // sss_frame.albedo_texture for the texturing modes; single-sample only
   GLuint output = 0;         // RGBA8: tone-mapped and sRGB-encoded, what is shown and saved
-  GLuint lighting_framebuffer = 0;  // diffuse + specular + profile + depth_stencil
+  GLuint lighting_framebuffer = 0;  // diffuse + specular + profile + albedo + depth_stencil
   GLuint output_framebuffer = 0;    // output
   // MSAA (samples > 0): the lighting pass renders into multisampled copies of diffuse, specular
   // and depth-stencil; the library reads those; diffuse and specular above get their box resolve

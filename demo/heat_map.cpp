@@ -51,8 +51,15 @@ void small_frame_size(int width, int height, int factor, int *small_width, int *
   *small_height = std::max(16, (height + factor / 2) / factor);
 }
 
+double texturing_post_factor(int texturing, double albedo) {
+  const double a = std::max(albedo, 1.0 / 256.0);
+  return texturing == SSS_TEXTURING_POST_SCATTER           ? a
+         : texturing == SSS_TEXTURING_PRE_AND_POST_SCATTER ? std::sqrt(a)
+                                                           : 1.0;
+}
+
 SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
-                            double world_units_per_mm) {
+                            double world_units_per_mm, int texturing) {
   SmallFrame f;
   f.width = targets.width;
   f.height = targets.height;
@@ -61,6 +68,8 @@ SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &c
   f.before = read_texture_rgba(targets.diffuse, f.width, f.height);
   if (sss_ran) f.after = read_texture_rgba(targets.after, f.width, f.height);
   f.ids = read_texture_r8ui(targets.profile, f.width, f.height);
+  f.texturing = texturing;
+  f.albedo = read_texture_rgba(targets.albedo, f.width, f.height);  // for every mode: the post-scatter score
 
   const size_t n = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
   std::vector<float> depth(n);
@@ -115,10 +124,18 @@ void per_material_reference(const SmallFrame &frame, const sss::math::ExactInput
 
 Reference compute_reference(const SmallFrame &frame) {
   const auto start = std::chrono::steady_clock::now();
+  // A texturing mode other than pre-scatter: the light divided by A_post is convolved, then multiplied by it.
+  const bool textured = frame.texturing != SSS_TEXTURING_PRE_SCATTER && frame.albedo.size() == frame.before.size();
+  std::vector<float> lit = frame.before;
+  if (textured) {
+    for (size_t i = 0; i < lit.size(); ++i) {
+      if (i % 4 != 3) lit[i] = static_cast<float>(lit[i] / texturing_post_factor(frame.texturing, frame.albedo[i]));
+    }
+  }
   sss::math::ExactInput input;
   input.width = frame.width;
   input.height = frame.height;
-  input.irradiance = frame.before.data();
+  input.irradiance = lit.data();
   input.distance = frame.distance.data();
   input.mask = frame.mask.data();
   input.projection = frame.projection;
@@ -130,13 +147,19 @@ Reference compute_reference(const SmallFrame &frame) {
   if (!frame.materials.empty()) {
     // Pixels outside every mask keep their input (the convolution's rule for them).
     for (size_t i = 0; i < frame.mask.size(); ++i) {
-      for (size_t c = 0; c < 3; ++c) r.rgb[i * 3 + c] = frame.before[i * 4 + c];
+      for (size_t c = 0; c < 3; ++c) r.rgb[i * 3 + c] = lit[i * 4 + c];
     }
     per_material_reference(frame, input, &r);
   } else {
     const sss::math::ExactSurfaceConvolution exact(input, sss::math::skin_profile_terms());
     exact.convolve({0, 0, frame.width, frame.height}, r.rgb.data());
   }
+  if (textured) {
+    for (size_t i = 0; i < r.rgb.size(); ++i) {
+      r.rgb[i] *= texturing_post_factor(frame.texturing, frame.albedo[i / 3 * 4 + i % 3]);
+    }
+  }
+  r.texturing = frame.texturing;
   r.translucent_pixels = static_cast<size_t>(std::count(frame.mask.begin(), frame.mask.end(), 1));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -40,15 +40,24 @@ struct SmallFrame {
   std::vector<int> materials;
   std::array<float, 16> projection{};
   double world_units_per_mm = 0.001;
+  // The texturing mode the library ran (an sss_texturing) and the lighting pass's albedo (RGBA): for a
+  // mode other than pre-scatter the reference is A_post * (R * (before / A_post)).
+  int texturing = 0;
+  std::vector<float> albedo;
 };
+
+// A_post of a texturing mode for one albedo channel (the library's rule: 1/256 stands in below 1/256):
+// 1 pre-scatter, A post-scatter, sqrt(A) pre-and-post.
+double texturing_post_factor(int texturing, double albedo);
 
 // A texture's level 0 read back, rows bottom-up: RGBA floats; the R8UI profile/object bytes.
 std::vector<float> read_texture_rgba(GLuint texture, int width, int height);
 std::vector<uint8_t> read_texture_r8ui(GLuint texture, int width, int height);
 
-// Reads the small targets back (a current context; `sss_ran`: whether `after` holds the library's output).
+// Reads the small targets back (a current context; `sss_ran`: whether `after` holds the library's
+// output; `texturing`: the mode it ran, whose albedo is read back too).
 SmallFrame read_small_frame(const FrameTargets &targets, const CameraMatrices &camera, bool sss_ran,
-                            double world_units_per_mm);
+                            double world_units_per_mm, int texturing = 0);
 
 struct Reference {
   int width = 0;
@@ -56,13 +65,15 @@ struct Reference {
   std::vector<double> rgb;  // row 0 at the bottom
   double seconds = 0.0;     // wall-clock time of the computation
   std::size_t translucent_pixels = 0;
+  int texturing = 0;        // the frame's texturing mode it is the reference of
 };
 
 // The scene's profiles as SmallFrame::materials wants them (profile 0, the controls', as skin);
 // empty for a scene of one material and one object.
 std::vector<int> reference_materials(const DemoScene &scene);
 
-// The exact reference of the frame's diffuse (no GL; any thread; uses every core). With materials:
+// The exact reference of the frame's diffuse (no GL; any thread; uses every core), of the frame's
+// texturing mode: A_post * (R * (E * A_pre)). With materials:
 // per profile/object byte (skin: d'Eon's six Gaussians; a measured material: the library's Gaussian
 // fit of its dipole, tests/bench/material_terms.hpp).
 Reference compute_reference(const SmallFrame &frame);

@@ -73,6 +73,7 @@ uniform float u_shadow_texel_world[2];
 layout(location = 0) out vec4 o_diffuse;
 layout(location = 1) out vec4 o_specular;
 layout(location = 2) out uint o_profile;
+layout(location = 3) out vec4 o_albedo;  // the albedo the diffuse light is multiplied by (sss_frame.albedo_texture)
 
 // PCF: 3x3 taps one texel apart, each a hardware-filtered 2x2 comparison.
 float shadow_factor(sampler2DShadow map, mat4 light_matrix, float texel, vec3 p) {
@@ -163,6 +164,7 @@ void main() {
   vec3 albedo = texture(u_albedo, v_texcoord).rgb * u_base_color.rgb;
   o_diffuse = vec4(albedo * irradiance + u_emission, u_sss_strength);
   o_profile = u_profile_byte;
+  o_albedo = vec4(albedo, 1.0);
   o_specular = vec4(specular, 0.0);
 }
 )";
@@ -255,7 +257,12 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   glClearBufferfv(GL_COLOR, 0, background);
   glClearBufferfv(GL_COLOR, 1, black);
   const GLuint background_profile[4] = {0, 0, 0, 0};  // profile 0, object 0 (alpha 0 leaves it alone anyway)
-  if (targets.samples == 0) glClearBufferuiv(GL_COLOR, 2, background_profile);
+  // The albedo 1 on the background: the texturing modes leave its colour as it is.
+  const GLfloat white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  if (targets.samples == 0) {
+    glClearBufferuiv(GL_COLOR, 2, background_profile);
+    glClearBufferfv(GL_COLOR, 3, white);
+  }
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glClearDepth(1.0);

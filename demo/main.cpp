@@ -34,6 +34,7 @@ SssControls controls_from_options(const Options &o) {
   c.thickness_source = o.thickness_source;
   c.baked_thickness_mm = o.baked_thickness_mm;
   c.msaa_samples = o.msaa;
+  c.texturing = o.texturing;
   c.object_ids = o.object_ids;
   // The window starts on the first debug view asked for; headless keeps the filter for its usual
   // images and writes each view apart (headless_app.cpp's write_debug_views).

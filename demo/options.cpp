@@ -116,6 +116,7 @@ void print_usage(const char *program) {
       "scan (or MODEL): a window with a control panel, or --headless PNGs for each camera preset.\n\n"
       "  --headless          no window: render through EGL/OSMesa and write, for each preset,\n"
       "                      PRESET-{before,after,split,heatmap,touched,zoom}.png and README.txt into --out\n"
+      "                      (and close-zoom-texturing.png: the close-up's zoom in each texturing mode)\n"
       "  --backend NAME      headless context: osmesa | egl | egl-device (default egl; falls back to osmesa)\n"
       "  --scene NAME        head (default) | sphere (a lit sphere and a box's hard shadow) | mixed (the head,\n"
       "                      a marble bust and a wax candle: three profiles in one pass pair) | hand (a hand\n"
@@ -157,6 +158,11 @@ void print_usage(const char *program) {
       "                      default) | baked (each translucent material's baked thickness) | both (the larger)\n"
       "  --baked-thickness MM  the baked thickness of translucent materials, (0, 100] mm (default 2)\n"
       "  --msaa N            0 (default) or 4: light into 4x multisampled targets, hand them to the library\n"
+      "  --texturing MODE    where the albedo goes (sss_settings.texturing): pre (blurred with the light),\n"
+      "                      post (the light alone blurred, the albedo's detail kept sharp; the default: the\n"
+      "                      head scan's albedo already holds the scattering) or pre-and-post (sqrt(albedo)\n"
+      "                      each side); the lighting pass's albedo target goes with the frame; with --msaa\n"
+      "                      the frame runs pre (the library's MSAA path takes no albedo yet)\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"
@@ -180,7 +186,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
     kThickness, kBakedThickness,
     kExposure, kHeatScale, kHeatFactor, kRepeat, kView, kFrames, kScreenshotFrame, kMsaa, kHelp, kCrossBilateral,
     kTranslucency, kBackLight, kShading, kKernel, kMaterial, kJitter, kMovingNoise, kNoObjectIds, kDump, kHandColourOption,
-    kDebugViewOption
+    kDebugViewOption, kTexturing
   };
   static const struct option long_options[] = {
       {"headless", no_argument, nullptr, kHeadless},
@@ -221,6 +227,7 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
       {"moving-noise", no_argument, nullptr, kMovingNoise},
       {"dump", no_argument, nullptr, kDump},
       {"hand-colour", required_argument, nullptr, kHandColourOption},
+      {"texturing", required_argument, nullptr, kTexturing},
       {nullptr, 0, nullptr, 0}};
 
   opterr = 1;
@@ -362,6 +369,13 @@ ParseResult parse_options(int argc, char **argv, Options *o) {
         ok = (parse_float(optarg, &o->baked_thickness_mm) && o->baked_thickness_mm > 0.0f &&
               o->baked_thickness_mm <= 100.0f) ||
              fail("--baked-thickness wants millimetres in (0, 100]", optarg);
+        break;
+      case kTexturing:
+        o->texturing = -1;
+        for (int t = SSS_TEXTURING_PRE_SCATTER; t <= SSS_TEXTURING_PRE_AND_POST_SCATTER; ++t) {
+          if (std::strcmp(optarg, texturing_name(t)) == 0) o->texturing = t;
+        }
+        ok = o->texturing >= 0 || fail("--texturing wants pre, post or pre-and-post", optarg);
         break;
       case kBackLight: o->back_light = true; break;
       case kNoObjectIds: o->object_ids = false; break;

@@ -45,6 +45,7 @@ struct Options {
   float scale = 1.0f;            // sss_settings.scale: multiplies the scattering distances (1 = physical size)
   int shading = 0;               // SssControls::shading: 0 screen-space, 1 pre-integrated, 2 automatic
   float exposure = 1.0f;
+  int texturing = kDefaultTexturing;  // --texturing: an sss_texturing (sss_stage.hpp says why the default)
 
   float heat_scale = 0.05f;      // linear error at the top of the heat map's ramp
   int heat_factor = 4;           // the heat map's frame is 1/heat_factor of each side

@@ -9,11 +9,23 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace demo {
 
 namespace {
+
+// Radio buttons on one line: each choice's label sets *value to its number.
+void radio_row(int *value, std::initializer_list<std::pair<const char *, int>> choices) {
+  bool first = true;
+  for (const auto &choice : choices) {
+    if (!first) ImGui::SameLine();
+    first = false;
+    ImGui::RadioButton(choice.first, value, choice.second);
+  }
+}
 
 const char *const kHelp =
     "S          SSS on / off\n"
@@ -186,11 +198,9 @@ void draw_panel(WindowState *s) {
   }
   if (ImGui::CollapsingHeader("Subsurface scattering", ImGuiTreeNodeFlags_DefaultOpen)) sss_section(s);
   if (ImGui::CollapsingHeader("Pre-integrated skin (LUTs, no SSS pass)", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::RadioButton("screen-space filter", &s->controls.shading, kShadingScreenSpace);
-    ImGui::SameLine();
-    ImGui::RadioButton("pre-integrated", &s->controls.shading, kShadingPreintegrated);
-    ImGui::SameLine();
-    ImGui::RadioButton("automatic", &s->controls.shading, kShadingAutomatic);
+    radio_row(&s->controls.shading, {{"screen-space filter", kShadingScreenSpace},
+                                     {"pre-integrated", kShadingPreintegrated},
+                                     {"automatic", kShadingAutomatic}});
     ImGui::TextDisabled("1 mm = %.2f px at the subject; automatic switches below %.2f", static_cast<double>(s->pixels_per_mm),
                         static_cast<double>(kAutoPreintegratedPixelsPerMm));
     ImGui::Text("this frame: %s", s->preintegrated ? "pre-integrated (diffuse and shadow LUTs)" : "screen-space filter");
@@ -199,6 +209,20 @@ void draw_panel(WindowState *s) {
     bool msaa = s->controls.msaa_samples > 0;
     if (ImGui::Checkbox("4x MSAA targets (the library resolves them: averaged linear depth)", &msaa)) {
       s->controls.msaa_samples = msaa ? 4 : 0;
+    }
+  }
+  if (ImGui::CollapsingHeader("Texturing", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // sss_settings.texturing: the lighting pass's albedo target goes with the frame for post and pre-and-post.
+    radio_row(&s->controls.texturing, {{"pre-scatter", SSS_TEXTURING_PRE_SCATTER},
+                                       {"post-scatter", SSS_TEXTURING_POST_SCATTER},
+                                       {"pre-and-post", SSS_TEXTURING_PRE_AND_POST_SCATTER}});
+    ImGui::TextDisabled(s->controls.texturing == SSS_TEXTURING_PRE_SCATTER ? "  the albedo blurred with the light"
+                        : s->controls.texturing == SSS_TEXTURING_POST_SCATTER
+                            ? "  the light alone blurred, the albedo's detail kept sharp"
+                            : "  sqrt(albedo) blurred, sqrt(albedo) multiplied after");
+    if (effective_texturing(s->controls, s->controls.msaa_samples) != s->controls.texturing) {
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
+                         "with MSAA the frame runs pre-scatter (no albedo on that path)");
     }
   }
   if (s->scene->profiles.size() > 1 || !s->scene->object_names.empty()) {

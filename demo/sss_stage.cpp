@@ -112,6 +112,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.kernel = controls.kernel_family == SSS_KERNEL_SEPARABLE ? nullptr : &kernel;
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
+  s.texturing = static_cast<uint32_t>(effective_texturing(controls, controls.msaa_samples));
   // Unchanged: nothing to validate or rebuild (the scene's other profiles never change).
   // (The scene, so `materials` and `per_pixel`, is the same for the stage's whole life.)
   if (std::memcmp(&s, &stage->settings, sizeof s) == 0 && stage->profiles.size() == materials.size() + 1) return true;
@@ -150,6 +151,7 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   d.stencil_format = shape.stencil ? SSS_GL_DEPTH24_STENCIL8 : 0u;
   d.flags = shape.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u;
   d.profile_format = shape.profile_texture ? SSS_GL_R8UI : 0u;
+  d.albedo_format = shape.albedo_texture ? kAlbedoFormat : 0u;
   // Settings compare byte for byte, and the kernel they point at (always stage->kernel, so the pointer
   // alone would not show a new family) too: the demo's kernels hold no pointers (no tabulated profile).
   const bool same = stage->prepared && std::memcmp(&d, &stage->prepared_desc, sizeof d) == 0 &&
@@ -164,6 +166,15 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
   return true;
 }
 
+const char *texturing_name(int texturing) {
+  static const char *const kNames[] = {"pre", "post", "pre-and-post"};
+  return texturing >= 0 && texturing <= SSS_TEXTURING_PRE_AND_POST_SCATTER ? kNames[texturing] : nullptr;
+}
+
+int effective_texturing(const SssControls &controls, int samples) {
+  return samples > 0 ? static_cast<int>(SSS_TEXTURING_PRE_SCATTER) : controls.texturing;
+}
+
 const char *debug_view_name(int view) {
   static const char *const kNames[] = {"mask", "depth", "footprint", "taps", "profile", "tiles"};
   return view >= 1 && view <= static_cast<int>(SSS_DEBUG_VIEW_LAST) ? kNames[view - 1] : nullptr;
@@ -176,9 +187,9 @@ const char *debug_view_refusal(const SssControls &controls, int samples) {
   return nullptr;
 }
 
-bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
-               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region,
-               std::uint32_t profile) {
+bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection, std::uint32_t diffuse,
+               std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region, std::uint32_t profile,
+               std::uint32_t albedo) {
   sss_stencil stencil{};
   stencil.depth_stencil_texture = depth_stencil;
   stencil.ref = 1;  // the lighting pass writes 1 on translucent materials
@@ -192,6 +203,8 @@ bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &pr
   frame.stencil = controls.use_stencil && controls.debug_view != SSS_DEBUG_VIEW_TILES ? &stencil : nullptr;
   frame.profile_texture = profile;
   frame.profile_format = profile != 0 ? SSS_GL_R8UI : 0u;
+  frame.albedo_texture = albedo;
+  frame.albedo_format = albedo != 0 ? kAlbedoFormat : 0u;
   frame.projection = glm::value_ptr(projection);  // the frame carries its camera
   frame.noise_index = controls.moving_noise ? stage.frames_applied : 0u;
   frame.debug_view = static_cast<std::uint32_t>(controls.debug_view);  // render_frame: 0 where refused

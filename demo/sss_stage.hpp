@@ -63,7 +63,27 @@ struct SssControls {
   // sss_frame.debug_view (an sss_debug_view): what the passes see goes into "after" instead of the
   // filtered image, and the composite's debug view colours it (debug_view_refusal: when it cannot).
   int debug_view = 0;
+  // sss_settings.texturing (an sss_texturing, for every profile): what of the albedo is blurred with
+  // the light. Pre-scatter blurs the lighting pass's colour as it is; post-scatter and pre-and-post
+  // hand the library the lighting pass's albedo target (sss_frame.albedo_texture), single-sample
+  // only (the library's MSAA path takes no albedo yet: with --msaa the frame runs pre-scatter).
+  int texturing = SSS_TEXTURING_PRE_SCATTER;
 };
+
+// The lighting pass's albedo target (FrameTargets::albedo): linear RGBA16F, the albedo exactly as the
+// lighting multiplied the diffuse light by it (a G-buffer's SRGB8_ALPHA8 or RGBA8 would do as well).
+constexpr std::uint32_t kAlbedoFormat = SSS_GL_RGBA16F;
+
+// The demo's texturing mode unless --texturing or the panel says otherwise: post-scatter. The head
+// scan's albedo map was photographed, so it already holds the skin's scattering; post-scatter keeps
+// it sharp instead of blurring it a second time (docs/demo.md "Texturing modes" has the measurement).
+constexpr int kDefaultTexturing = SSS_TEXTURING_POST_SCATTER;
+
+// The texturing modes' names on the command line and in the panel: "pre", "post", "pre-and-post";
+// nullptr out of range.
+const char *texturing_name(int texturing);
+// The texturing the library runs with for frames of `samples`: the controls' one, pre-scatter with MSAA.
+int effective_texturing(const SssControls &controls, int samples);
 
 // The debug views' names on the command line and in the panel (SSS_DEBUG_VIEW_MASK .. _TILES):
 // "mask", "depth", "footprint", "taps", "profile", "tiles"; nullptr for 0 and out of range.
@@ -117,6 +137,7 @@ struct SssFrameShape {
   int width = 0, height = 0, samples = 0;
   bool stencil = false, region = false;
   bool profile_texture = false;  // frames bring an R8UI profile/object texture
+  bool albedo_texture = false;   // frames bring the albedo (kAlbedoFormat), for a texturing other than pre-scatter
 };
 
 // sss_create with the given loader (a GL context must be current), with SSS_CREATE_DEBUG_CHECKS
@@ -139,10 +160,11 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
 
 // sss_apply_frame with the camera in the frame: `diffuse` (left as it is) into `after`; region: x, y,
 // width, height of the translucent pixels (SSS_FRAME_REGION), or nullptr for none; profile: the R8UI
-// profile/object texture (sss_frame.profile_texture), or 0 for none (every pixel profile 0).
-bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection,
-               std::uint32_t diffuse, std::uint32_t depth_stencil, std::uint32_t after,
-               const std::int32_t *region = nullptr, std::uint32_t profile = 0);
+// profile/object texture (sss_frame.profile_texture), or 0 for none (every pixel profile 0); albedo:
+// the lighting pass's albedo target (sss_frame.albedo_texture, kAlbedoFormat), or 0 for none.
+bool apply_sss(SssStage &stage, const SssControls &controls, const glm::mat4 &projection, std::uint32_t diffuse,
+               std::uint32_t depth_stencil, std::uint32_t after, const std::int32_t *region = nullptr,
+               std::uint32_t profile = 0, std::uint32_t albedo = 0);
 
 void destroy_sss_stage(SssStage *stage);
 

@@ -142,7 +142,8 @@ class HeatMapper {
     controls.decision_height = s->height;  // choose the shading as the shown frame does
     controls.debug_view = 0;  // the error of the filtered image
     if (!render_frame(renderer, m, controls, &small_, false, &frame)) return 0;
-    SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm);
+    SmallFrame data = read_small_frame(small_, m, frame.sss_ran, renderer->scene->world_units_per_mm,
+                                       frame.preintegrated ? 0 : static_cast<int>(renderer->sss.settings.texturing));
     data.materials = reference_materials(*renderer->scene);
 
     // Collect a finished reference; start one when the camera or size moved on.
@@ -152,7 +153,7 @@ class HeatMapper {
       have_reference_ = true;
     }
     const bool current = have_reference_ && same_camera(reference_camera_, s->camera) && reference_.width == w &&
-                         reference_.height == h;
+                         reference_.height == h && reference_.texturing == data.texturing;
     if (!current && !pending_.valid()) {
       pending_camera_ = s->camera;
       pending_ = std::async(std::launch::async, [data]() { return compute_reference(data); });

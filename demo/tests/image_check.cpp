@@ -6,7 +6,8 @@
 //       blank (see not_blank), have the same size, and differ (the library changed some pixels) but not everywhere
 //       (the background is left alone); the split's left part is before and its right part after;
 //       the heat map uses the error ramp; the touched map has orange pixels; README.txt and
-//       ATTRIBUTION.txt exist.
+//       ATTRIBUTION.txt exist; a PRESET-zoom-texturing.png where there is one carries the attribution
+//       too, is not blank and is three panels the zoom's size wide (4-pixel gaps).
 //   sss_demo_image_check views DIR ATTRIBUTION PRESET
 //       the library's debug views (--debug-view all) of the head: every PRESET-view-NAME.png exists
 //       with the attribution and before.png's size; the mask view's orange pixels are the pixels
@@ -182,6 +183,15 @@ void check_preset(const std::string &dir, const std::string &attribution, const 
     images[i] = load(prefix + names[i] + ".png");
     check(text_of(images[i], "Copyright").find(attribution) != std::string::npos,
           prefix + names[i] + ".png carries no attribution (tEXt Copyright with '" + attribution + "')");
+  }
+  // The close-up's zoom in each texturing mode, where the demo wrote it (not with MSAA): three panels
+  // with the attribution, not blank.
+  if (exists(prefix + "zoom-texturing.png")) {
+    const Image texturing = load(prefix + "zoom-texturing.png");
+    check(text_of(texturing, "Copyright").find(attribution) != std::string::npos,
+          prefix + "zoom-texturing.png carries no attribution");
+    check(texturing.ok() && not_blank(texturing) && images[5].ok() && 2 * texturing.width == 3 * images[5].width + 4,
+          prefix + "zoom-texturing.png is blank or not three panels wide");
   }
   const Image &before = images[0], &after = images[1], &split = images[2], &heat = images[3], &touched = images[4];
   for (size_t i = 1; i < 5; ++i) check(same_size(before, images[i]), prefix + names[i] + ".png: not the size of before.png");

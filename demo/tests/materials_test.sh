@@ -24,10 +24,12 @@ case $what in
     ;;
   bleeding)
     other=0.2,0.6,0.9  # a blue hand: far from skin in every channel
-    run "$out/ids-on" close --scene hand
-    run "$out/ids-on-blue" close --scene hand --hand-colour "$other"
-    run "$out/ids-off" close --scene hand --no-object-ids
-    run "$out/ids-off-blue" close --scene hand --no-object-ids --hand-colour "$other"
+    # The hand's colour traces its light into the face: pre-scatter, where the albedo is blurred with
+    # the light (post-scatter divides the hand's colour out before the blur, so no colour would cross).
+    run "$out/ids-on" close --scene hand --texturing pre
+    run "$out/ids-on-blue" close --scene hand --hand-colour "$other" --texturing pre
+    run "$out/ids-off" close --scene hand --no-object-ids --texturing pre
+    run "$out/ids-off-blue" close --scene hand --no-object-ids --hand-colour "$other" --texturing pre
     "$image_check" headless "$out/ids-on" "$attribution" close
     "$material_check" colours "$out/ids-on/close-profiles.png" 3
     "$material_check" colours "$out/ids-off/close-profiles.png" 2

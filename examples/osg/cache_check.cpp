@@ -50,6 +50,22 @@ const char* const kModeNames[] = {"GL_DEPTH_TEST", "GL_BLEND", "GL_CULL_FACE", "
 
 }  // namespace
 
+std::vector<std::string> samplers_left_bound(osg::RenderInfo& info) {
+  osg::GLExtensions* gl = info.getState()->get<osg::GLExtensions>();
+  const GLint active = get(kActiveTexture);
+  std::vector<std::string> lines;
+  for (unsigned unit = 0; unit < kUnits; ++unit) {
+    gl->glActiveTexture(kTexture0 + unit);
+    const GLint sampler = get(kSamplerBinding);
+    if (sampler == 0) continue;
+    char line[64];
+    std::snprintf(line, sizeof line, "GL_SAMPLER_BINDING of unit %u: %d", unit, sampler);
+    lines.emplace_back(line);
+  }
+  gl->glActiveTexture(static_cast<GLenum>(active));
+  return lines;
+}
+
 FramebufferBindings read_framebuffer_bindings() { return {get(kDrawFramebufferBinding), get(kReadFramebufferBinding)}; }
 
 std::vector<std::string> compare_cache_with_gl(osg::RenderInfo& info, const FramebufferBindings& bound) {

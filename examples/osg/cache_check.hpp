@@ -25,4 +25,9 @@ FramebufferBindings read_framebuffer_bindings();
 // framebuffers against `bound`. Restores what it changes to look (the active unit).
 std::vector<std::string> compare_cache_with_gl(osg::RenderInfo& info, const FramebufferBindings& bound);
 
+// One line per texture unit (0-7) with a sampler object bound ("GL_SAMPLER_BINDING of unit 6: 12"):
+// OSG binds none, so after a library without its restore the callback must have unbound every one
+// it used (units 0-5, and 6 in a frame with an albedo). Restores the active unit.
+std::vector<std::string> samplers_left_bound(osg::RenderInfo& info);
+
 }  // namespace sss_osg_host

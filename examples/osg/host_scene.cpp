@@ -42,6 +42,7 @@ uniform vec3 u_albedo;     // linear
 uniform float u_strength;  // the library's strength: 1 on skin, 0 elsewhere
 layout(location = 0) out vec4 o_diffuse;
 layout(location = 1) out vec4 o_specular;
+layout(location = 2) out vec4 o_albedo;  // the albedo the light is multiplied by (sss_frame.albedo_texture)
 void main() {
   vec3 n = normalize(v_normal);
   vec3 key = normalize(vec3(-0.8, 0.45, 0.4));  // from the upper left: the terminator crosses the face
@@ -50,6 +51,7 @@ void main() {
   o_diffuse = vec4(u_albedo * light, u_strength);
   vec3 h = normalize(key + normalize(-v_position));
   o_specular = vec4(vec3(0.18 * pow(max(dot(n, h), 0.0), 48.0)), 1.0);
+  o_albedo = vec4(u_albedo, 1.0);
 }
 )";
 
@@ -174,6 +176,7 @@ osg::ref_ptr<osg::Camera> make_gbuffer_camera(osg::Node* scene, const gltf_mesh:
   c->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));  // alpha 0: the background is not skin
   c->attach(osg::Camera::COLOR_BUFFER0, g.diffuse.get());
   c->attach(osg::Camera::COLOR_BUFFER1, g.specular.get());
+  c->attach(osg::Camera::COLOR_BUFFER2, g.albedo.get());
   c->attach(osg::Camera::DEPTH_BUFFER, g.depth.get());
   // The demo's close-up, a little wider: the face, the box beside it and background around them.
   const float h = height_of(head), fovy = 30.0f;

@@ -18,9 +18,10 @@ struct Model;
 namespace sss_osg_host {
 
 // The G-buffer the lit pass writes: diffuse (RGBA16F, alpha = strength: 1 on skin, 0 elsewhere),
-// specular (RGBA16F) and depth (DEPTH_COMPONENT32F).
+// specular (RGBA16F), albedo (RGBA16F: the linear albedo the diffuse light was multiplied by, what
+// the library divides by in a texturing mode other than pre-scatter) and depth (DEPTH_COMPONENT32F).
 struct GBuffer {
-  osg::ref_ptr<osg::Texture2D> diffuse, specular, depth;
+  osg::ref_ptr<osg::Texture2D> diffuse, specular, albedo, depth;
 };
 
 // The head (skin) and a box beside it (not skin), lit by a key and a fill light, with the GLSL

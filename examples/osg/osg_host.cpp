@@ -7,6 +7,8 @@
 //   sss_osg_host [--width W] [--height H] [--threading single|draw] [--no-sss] [--out DIR]
 //       renders a few frames and writes DIR/final.png (with the module, or without: --no-sss),
 //       DIR/standard.png and DIR/ATTRIBUTION.txt
+//   [--texturing pre|post|pre-and-post]: sss_settings.texturing (default pre; post and pre-and-post
+//       hand the library the G-buffer's albedo, on texture unit 6 during the call)
 //   sss_osg_host --check [--no-state-restore] [...]   the tests (exit 0: passed, 1: failed, 77: no
 //       display); --no-state-restore: the library created with SSS_CREATE_NO_STATE_RESTORE, which
 //       must ask the GL nothing in a steady frame, with the callback telling OSG instead; with
@@ -30,11 +32,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -62,8 +66,14 @@ class CheckedCallback : public osg::Camera::DrawCallback {
     queries_ += counts.total_queries();
     if (counts.total_queries() > 0) query_names_ = counts.describe_queries();
     // Without the restore the callback has told OSG to re-apply everything: its beliefs are stale
-    // on purpose until then, so the comparison is for the restoring library only.
-    if (no_restore_) return;
+    // on purpose until then, so the comparison is for the restoring library only; what OSG cannot be
+    // told (it tracks no sampler objects) the callback must have unbound.
+    if (no_restore_) {
+      for (const std::string& line : sss_osg_host::samplers_left_bound(info)) {
+        mismatches_.push_back("frame " + std::to_string(inner_->frames_applied()) + ": " + line);
+      }
+      return;
+    }
     for (const std::string& line : sss_osg_host::compare_cache_with_gl(info, bound)) {
       mismatches_.push_back("frame " + std::to_string(inner_->frames_applied()) + ": " + line);
     }
@@ -118,6 +128,7 @@ bool build(Host* host, const std::string& threading, const gltf_mesh::Model& hea
   const int w = host->width, h = host->height;
   host->g.diffuse = sss_osg::make_half_float_texture(w, h);
   host->g.specular = sss_osg::make_half_float_texture(w, h);
+  host->g.albedo = sss_osg::make_half_float_texture(w, h);
   host->g.depth = sss_osg::make_depth_texture(w, h);
   host->output = sss_osg::make_half_float_texture(w, h);
   host->final_image = sss_osg_host::make_readback_image(w, h);
@@ -125,7 +136,8 @@ bool build(Host* host, const std::string& threading, const gltf_mesh::Model& hea
   host->mask_image = sss_osg_host::make_readback_image(w, h);
 
   osg::ref_ptr<osg::Camera> gbuffer = sss_osg_host::make_gbuffer_camera(sss_osg_host::make_lit_scene(head).get(), head, host->g);
-  host->sss = new sss_osg::SssDrawCallback({host->g.diffuse, host->g.depth, host->output}, 0.001f);  // metres
+  host->sss = new sss_osg::SssDrawCallback({host->g.diffuse, host->g.depth, host->output, host->g.albedo},
+                                           0.001f);  // metres
   host->checked = new CheckedCallback(host->sss.get());
   gbuffer->setFinalDrawCallback(host->checked.get());
   host->composite = sss_osg_host::make_composite_camera(host->output.get(), host->g.specular.get(), host->final_image.get());
@@ -198,6 +210,8 @@ int run_checks(Host* host, bool no_restore) {
   check(other_changed == 0, "every pixel that is not skin is bit-identical to the engine's frame without the module");
   for (const std::string& line : host->checked->mismatches()) std::printf("      %s\n", line.c_str());
   if (no_restore) {
+    check(host->checked->mismatches().empty(),
+          "without the restore no sampler object is left bound after the callback");
     check(host->checked->queries() == 0, "without the restore a steady frame asks the GL nothing (" +
                                              std::to_string(host->checked->queries()) + " queries: " +
                                              host->checked->query_names() + ")");
@@ -276,7 +290,7 @@ int main(int argc, char** argv) {
   osg::ArgumentParser args(&argc, argv);
   args.getApplicationUsage()->setCommandLineUsage(args.getApplicationName() + " [options]");
   Host host;
-  std::string threading = "single", out_dir, bench_out;
+  std::string threading = "single", out_dir, bench_out, texturing = "pre";
   int bench = 0;
   args.read("--width", host.width);
   args.read("--height", host.height);
@@ -284,6 +298,7 @@ int main(int argc, char** argv) {
   args.read("--out", out_dir);
   args.read("--bench", bench);
   args.read("--bench-out", bench_out);
+  args.read("--texturing", texturing);
   const bool checks = args.read("--check");
   const bool no_sss = args.read("--no-sss");
   const bool leak_state = args.read("--leak-state");
@@ -299,6 +314,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sss_osg_host: --width/--height want at least 64, --threading single or draw\n");
     return 2;
   }
+  // sss_settings.texturing: the G-buffer's albedo goes with each frame for post and pre-and-post.
+  const char* const kTexturings[] = {"pre", "post", "pre-and-post"};
+  const auto mode = std::find(std::begin(kTexturings), std::end(kTexturings), texturing);
+  if (mode == std::end(kTexturings)) {
+    std::fprintf(stderr, "sss_osg_host: --texturing wants pre, post or pre-and-post, got '%s'\n", texturing.c_str());
+    return 2;
+  }
   gltf_mesh::Model head;
   try {
     head = gltf_mesh::load_gltf(sss_assets::head_path());
@@ -310,14 +332,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sss_osg_host: no OpenGL pbuffer context (no X display? run under xvfb-run)\n");
     return 77;
   }
+  sss_settings settings;
+  sss_default_settings(&settings);
+  settings.texturing = static_cast<std::uint32_t>(mode - std::begin(kTexturings));
+  host.sss->set_settings(settings);
   host.checked->set_leak_state(leak_state);
   host.checked->set_no_restore(no_restore);
   if (no_restore) host.sss->set_create_flags(SSS_CREATE_NO_STATE_RESTORE);
   // The library's GL goes through a loader that counts its queries (tests/support/counting_loader).
   host.sss->set_loader(sss_test::counting_loader(sss_osg::osg_gl_loader), nullptr);
   const std::string renderer = renderer_of(&host);
-  std::printf("sss_osg_host: OpenSceneGraph %s, %s, threading %s, %dx%d\n", osgGetVersion(), renderer.c_str(),
-              threading.c_str(), host.width, host.height);
+  std::printf("sss_osg_host: OpenSceneGraph %s, %s, threading %s, %dx%d, texturing %s\n", osgGetVersion(),
+              renderer.c_str(), threading.c_str(), host.width, host.height, texturing.c_str());
   int status = 0;
   if (checks) {
     status = run_checks(&host, no_restore);

@@ -43,9 +43,9 @@ void tell_osg_the_library_drew(osg::State& state) {
   state.setLastAppliedProgramObject(nullptr);
   gl->glBindVertexArray(0);
   state.setCurrentVertexArrayObject(0);
-  // OSG binds no sampler objects; the library's on units 0-5 would override OSG's textures' own
-  // filtering.
-  for (GLuint unit = 0; unit < 6; ++unit) gl->glBindSampler(unit, 0);
+  // OSG binds no sampler objects; the library's on units 0-5 (and 6 in a frame with an albedo)
+  // would override OSG's textures' own filtering.
+  for (GLuint unit = 0; unit < 7; ++unit) gl->glBindSampler(unit, 0);
   gl->glActiveTexture(GL_TEXTURE0 + state.getActiveTextureUnit());  // OSG's belief, made true
   // Every mode and attribute (each unit's texture, the viewport, depth, blending...) forgotten, so
   // that OSG applies each afresh when next needed. Measured: dirtyAllModes() and dirtyAllAttributes()
@@ -96,6 +96,7 @@ bool SssDrawCallback::prepare(int width, int height) const {
   prepare.color_format = SSS_GL_RGBA16F;
   prepare.output_format = SSS_GL_RGBA16F;
   prepare.depth_format = SSS_GL_DEPTH_COMPONENT32F;
+  prepare.albedo_format = uses_albedo() ? SSS_GL_RGBA16F : 0u;
   if (sss_prepare(context_, &prepare) != SSS_OK) {
     last_error_ = std::string("sss_prepare: ") + sss_last_error(context_);
     return false;
@@ -152,6 +153,16 @@ void SssDrawCallback::filter(osg::State& state) const {
   frame.texture_width = width;
   frame.texture_height = height;
   frame.projection = projection;
+  if (uses_albedo()) {
+    // The G-buffer's albedo, which the lit pass wrote beside the diffuse: made by OSG with the camera.
+    const osg::Texture::TextureObject* albedo = textures_.albedo->getTextureObject(id);
+    if (albedo == nullptr) {
+      last_error_ = "the albedo texture has no GL object yet (is it attached to the camera that renders the diffuse?)";
+      return;
+    }
+    frame.albedo_texture = albedo->id();
+    frame.albedo_format = SSS_GL_RGBA16F;
+  }
   if (sss_apply_frame(context_, &frame) != SSS_OK) {
     // A failed call draws nothing and leaves the state as it found it, restore or not (sss.h).
     last_error_ = std::string("sss_apply_frame: ") + sss_last_error(context_);

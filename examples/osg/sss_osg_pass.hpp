@@ -38,6 +38,10 @@ struct PassTextures {
   osg::ref_ptr<osg::Texture2D> diffuse;  // GL_RGBA16F_ARB, the camera's COLOR_BUFFER0
   osg::ref_ptr<osg::Texture2D> depth;    // GL_DEPTH_COMPONENT32F, the camera's DEPTH_BUFFER
   osg::ref_ptr<osg::Texture2D> output;   // GL_RGBA16F_ARB, what the composite samples
+  // GL_RGBA16F_ARB, the camera's COLOR_BUFFER2: the linear albedo the diffuse light was multiplied
+  // by (sss_frame.albedo_texture), read when the settings' texturing is not pre-scatter; may be null
+  // (then only pre-scatter runs).
+  osg::ref_ptr<osg::Texture2D> albedo;
 };
 
 // The library's GL loader in OSG: osg::getGLExtensionFuncPtr (`user` unused).
@@ -49,7 +53,7 @@ osg::ref_ptr<osg::Texture2D> make_half_float_texture(int width, int height);
 osg::ref_ptr<osg::Texture2D> make_depth_texture(int width, int height);
 
 // After a call of a library created with SSS_CREATE_NO_STATE_RESTORE: unbinds what OSG does not
-// track (the program, the vertex array, the samplers of units 0-5), makes the active unit the one
+// track (the program, the vertex array, the samplers of units 0-6: 6 is the albedo's), makes the active unit the one
 // OSG believes in, and resets OSG's cache (osg::State::reset) so that it applies every mode and
 // attribute (the textures, the viewport, depth, blending...) afresh. GL calls only, no query. The
 // library's framebuffer stays bound: bind yours again if the callback draws more.
@@ -63,7 +67,8 @@ class SssDrawCallback : public osg::Camera::DrawCallback {
   // reads the diffuse instead).
   void set_enabled(bool on) { enabled_ = on; }
   bool enabled() const { return enabled_; }
-  // Settings for the next frame (from sss_default_settings; world_units_per_mm is kept).
+  // Settings for the next frame (from sss_default_settings; world_units_per_mm is kept). A texturing
+  // other than SSS_TEXTURING_PRE_SCATTER hands the library PassTextures::albedo with each frame.
   void set_settings(const sss_settings& settings);
   // Before the first frame: sss_create_desc.flags (SSS_CREATE_*), and the GL loader (default:
   // OSG's, osg::getGLExtensionFuncPtr; a test may count the library's calls through its own).
@@ -90,6 +95,8 @@ class SssDrawCallback : public osg::Camera::DrawCallback {
   // telling OSG).
   void filter(osg::State& state) const;
   bool prepare(int width, int height) const;
+  // The settings' texturing divides by the albedo, and there is an albedo texture to give.
+  bool uses_albedo() const { return settings_.texturing != SSS_TEXTURING_PRE_SCATTER && textures_.albedo.valid(); }
 
   PassTextures textures_;
   sss_settings settings_{};
