@@ -104,7 +104,7 @@ void draw_cbf_pass(PassContext& ctx, const FilterRun& run, const PlanPrograms& p
     measure.begin_pixels();
     draw_cbf(ctx, *p.cbf[1], run, t.intermediate, 1);
     measure.end_pixels();
-    if (run.stencil != nullptr && !run.writes_back()) {
+    if (run.stencil != nullptr && !run.target_keeps_untouched()) {
       set_stencil_test(f, run.stencil, NOTEQUAL);
       draw_copy(ctx, run.untouched_colour());
     }

@@ -102,8 +102,15 @@ struct FilterRun {
   // The host's colour where the passes read that divided copy instead (name 0 otherwise): a
   // separate output's untouched pixels are copied from it, exactly as the host gave them.
   TextureInfo original;
+  // The passes' output is the host's colour itself (in place, reading that divided copy): it holds
+  // the host's colour already wherever the passes leave a pixel alone, so the last pass leaves
+  // those pixels as they are (discards them, copies none) instead of copying them from the copy,
+  // which is divided by A_post (an index without a profile, alpha 0, a pixel the culling skips).
+  bool output_holds_untouched = false;
 
   bool writes_back() const { return output.name == 0; }
+  // Whether the last pass leaves the pixels it does not blur as the target holds them.
+  bool target_keeps_untouched() const { return writes_back() || output_holds_untouched; }
   // The colour a separate output's untouched pixels get: the host's, or the passes' copy of it
   // (a strength texture's: the same rgb, the strength as alpha).
   GLuint untouched_colour() const { return original.name != 0 ? original.name : color.name; }

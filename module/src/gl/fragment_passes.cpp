@@ -47,7 +47,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const FrameP
     // The bands of tiles leave pixels out. The passes draw none of them (their bands are inside
     // these), but the copy into a separate output tests every pixel: there they must count as not
     // translucent.
-    if (ctx.tile_bands > 0 && !run.writes_back()) {
+    if (ctx.tile_bands > 0 && !run.target_keeps_untouched()) {
       const GLfloat far = 1.0f;
       f.ClearBufferfv(DEPTH, 0, &far);  // glClearBuffer leaves the host's clear values alone
     }

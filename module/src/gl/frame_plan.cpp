@@ -106,7 +106,7 @@ Step& add_pass(Steps& steps, StepKind kind, int term, int axis, Into into, const
 // alone, into a separate output it copies them unless `untouched_unread`).
 void add_terms(Steps& steps, const FilterRun& run, const Capabilities& caps, bool untouched_unread) {
   FramePlan& plan = steps.plan;
-  const BlurOutside last_outside = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
+  const BlurOutside last_outside = run.target_keeps_untouched() ? BlurOutside::discard : BlurOutside::copy_original;
   for (int t = 0; t < plan.terms; ++t) {
     const auto term = static_cast<std::size_t>(t);
     const bool last = t + 1 == plan.terms;
@@ -116,7 +116,7 @@ void add_terms(Steps& steps, const FilterRun& run, const Capabilities& caps, boo
     BlurVariant vertical = fragment_variant(run, caps, term, 1, outside);
     if (last && run.debug_view == 0) vertical.albedo = albedo_variant(run);
     Step& v = add_pass(steps, StepKind::blur, t, 1, last ? Into::target : Into::sum, vertical);
-    v.copy_untouched = last && run.debug_view == 0 && !run.writes_back() && !untouched_unread;
+    v.copy_untouched = last && run.debug_view == 0 && !run.target_keeps_untouched() && !untouched_unread;
   }
 }
 
@@ -149,7 +149,7 @@ void plan_cross_bilateral(Steps& steps, const FilterRun& run, bool stencil_ready
   plan.terms = 1;
   plan.cbf_linear_depth = run.constants.linear_depth;
   plan.cbf_normals = run.normals.name != 0;
-  plan.cbf_vertical_outside = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
+  plan.cbf_vertical_outside = run.target_keeps_untouched() ? BlurOutside::discard : BlurOutside::copy_original;
   plan.cbf_albedo = albedo_variant(run);
   if (!plan.msaa && run.stencil != nullptr) plan.stencil_format = run.stencil->texture.internal_format;
   steps.begin(Rect::draw);
@@ -174,7 +174,7 @@ void plan_half_resolution(Steps& steps, const FilterRun& run, const Capabilities
   plan.inputs.color_image = readable_color_image(run, caps);
   plan.tile_mark_image = readable_color_image(run, caps);
   plan.half.profile_ids = profile_ids_variant(run);
-  const BlurOutside last = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
+  const BlurOutside last = run.target_keeps_untouched() ? BlurOutside::discard : BlurOutside::copy_original;
   plan.half_horizontal = fragment_variant(run, caps, 0, 0, BlurOutside::write_centre);
   plan.half_vertical = fragment_variant(run, caps, 0, 1, BlurOutside::write_centre);
   plan.full_vertical = fragment_variant(run, caps, 0, 1, last);
@@ -200,7 +200,7 @@ void plan_compute(Steps& steps, const FilterRun& run, const Capabilities& caps) 
   plan.kind = PlanKind::compute;
   plan.terms = static_cast<int>(run.kernel->terms.size());
   if (run.stencil != nullptr) plan.stencil_format = run.stencil->texture.internal_format;
-  if (run.region && !run.writes_back()) {
+  if (run.region && !run.target_keeps_untouched()) {
     steps.begin(Rect::draw);
     steps.add(StepKind::copy_outside_region);
   }
@@ -209,7 +209,7 @@ void plan_compute(Steps& steps, const FilterRun& run, const Capabilities& caps) 
     steps.copy_stencil(StencilOn::intermediate);
     steps.add(StepKind::mark_compute_stencil);
   }
-  const BlurOutside last_outside = run.writes_back() ? BlurOutside::discard : BlurOutside::copy_original;
+  const BlurOutside last_outside = run.target_keeps_untouched() ? BlurOutside::discard : BlurOutside::copy_original;
   const int intermediate = image_format_of(plan.intermediate_format);
   const int sum = image_format_of(static_cast<GLint>(accumulators_half(run, caps) ? RGBA16F : RGBA32F));
   for (int t = 0; t < plan.terms; ++t) {
@@ -348,6 +348,8 @@ FilterRun passes_run(const FilterRun& run, const PassTextures& module, const Ste
     // Divided by the albedo, the copy is not the host's colour: a separate output's untouched
     // pixels come from the host's.
     if (albedo_variant(run) != 0 && !run.writes_back()) passes.original = run.color;
+    // Written back, the target is the host's colour itself: what the passes leave alone stays.
+    if (albedo_variant(run) != 0 && run.writes_back()) passes.output_holds_untouched = true;
   } else if (run.color.multisampled()) {
     passes.color = TextureInfo{};
     passes.color.name = module.resolved_color;

@@ -215,7 +215,7 @@ void draw_full_size(PassContext& ctx, const FilterRun& run, const PlanPrograms& 
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.output_framebuffer);
   if (run.writes_back()) {
     f.ColorMask(1, 1, 1, 0);  // alpha keeps the host's exact value
-  } else {
+  } else if (!run.output_holds_untouched) {
     copy_untouched(ctx, run);
   }
   f.Enable(DEPTH_TEST);

@@ -140,7 +140,7 @@ sss_result attach_output(PassContext& ctx, const FilterRun& run, GLuint stencil_
   f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, run.target().name, 0);
   f.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, stencil_buffer);
   const sss_result r = check_framebuffer(ctx, "vertical pass", message);
-  if (r == SSS_OK && run.region && !run.writes_back()) copy_outside_region(ctx, run);
+  if (r == SSS_OK && run.region && !run.target_keeps_untouched()) copy_outside_region(ctx, run);
   return r;
 }
 
