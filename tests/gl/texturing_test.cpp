@@ -282,6 +282,52 @@ TEST_F(TexturingModel, EachModeMatchesTheCpuModel) {
   }
 }
 
+// In place (the host's colour is the target, the passes read the module's divided copy): the pixels
+// the passes leave alone (alpha 0, and with per-pixel profiles an index without a profile, as the
+// three.js pass marks everything that is not translucent) keep the host's colour bit for bit; they
+// are never copied back from the copy, which holds colour / A_post there (the three.js package's
+// comparison with the native frame found the background 256 times brighter: colour over the floor
+// of a 0 albedo).
+TEST_F(Texturing, InPlaceUntouchedPixelsKeepTheHostsColour) {
+  const Inputs in = make_inputs(scene_, true);
+  std::vector<uint8_t> ids(static_cast<std::size_t>(kW) * kH, 0);
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i % kW < kW / 3 ? 15 : 0;  // the left third: no profile
+  for (const PathCase& p : kEveryPath) {
+    for (const bool per_pixel : {false, true}) {
+      SCOPED_TRACE(std::string(p.name) + (per_pixel ? ", per-pixel profiles" : ""));
+      if (per_pixel && p.mode == SSS_MODE_CROSS_BILATERAL) continue;  // one profile only there
+      const sss_settings s = case_settings(p, SSS_TEXTURING_POST_SCATTER);
+      fresh(s);
+      if (per_pixel) {
+        ASSERT_EQ(sss_set_profiles(sss_, &s, 1), SSS_OK) << sss_last_error(sss_);
+      }
+      const GLuint color = make_rgba16f(kW, kH, in.color);
+      sss_frame f = frame_of(color, make_depth32f(kW, kH, scene_.window_depth));
+      f.albedo_texture = make_rgba16f(kW, kH, in.albedo);
+      if (per_pixel) {
+        f.profile_texture = make_texture(GL_R8UI, kW, kH, GL_RED_INTEGER, GL_UNSIGNED_BYTE, ids.data());
+        f.profile_format = GL_R8UI;
+      }
+      ASSERT_EQ(apply(f), SSS_OK) << sss_last_error(sss_);
+      const std::vector<float> out = read_rgba(color, kW, kH);
+      std::size_t untouched = 0, moved = 0, blurred = 0;
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        const bool alone = !(in.color[i * 4 + 3] > 0.0f) || (per_pixel && ids[i] == 15);
+        bool same = true;
+        for (int c = 0; c < 4; ++c) same = same && out[i * 4 + c] == in.color[i * 4 + c];
+        untouched += alone ? 1 : 0;
+        moved += alone && !same ? 1 : 0;
+        blurred += !alone && !same ? 1 : 0;
+      }
+      EXPECT_GT(untouched, 0u);
+      EXPECT_EQ(moved, 0u) << "of " << untouched << " pixels the passes leave alone";
+      EXPECT_GT(blurred, 0u) << "the frame must filter the others (else this check cannot fail)";
+      TearDown();
+      SetUp();
+    }
+  }
+}
+
 TEST_F(Texturing, BadAlbedoInputsAreRefusedByName) {
   const Inputs in = make_inputs(scene_, true);
   sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);

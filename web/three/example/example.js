@@ -8,7 +8,7 @@ import { EffectComposer } from 'three/examples/jsm/postprocessing/EffectComposer
 import { RenderPass } from 'three/examples/jsm/postprocessing/RenderPass.js';
 import { OutputPass } from 'three/examples/jsm/postprocessing/OutputPass.js';
 import GUI from 'lil-gui';
-import { SSS, SSSPass, PATHS, MEASURED_PROFILES, createSSSRenderTarget, setSSSMaterial } from 'sss-three';
+import { SSS, SSSPass, PATHS, MEASURED_PROFILES, TEXTURINGS, createSSSRenderTarget, setSSSMaterial } from 'sss-three';
 
 const params = new URLSearchParams(location.search);
 const WIDTH = Number(params.get('width') || 640), HEIGHT = Number(params.get('height') || 360);
@@ -64,10 +64,12 @@ async function main() {
 
   const gltf = await new GLTFLoader().loadAsync(params.get('model') || '/head.glb');
   const head = gltf.scene;
+  // The head's albedo map is a scan: it already holds the skin's own scattering, so only the light
+  // is blurred and the map multiplied back sharp (post-scatter texturing, docs/three.md).
   head.traverse((o) => {
     if (o.isMesh) {
       o.castShadow = o.receiveShadow = true;
-      setSSSMaterial(o.material, { profile: 'skin', object: 0 });
+      setSSSMaterial(o.material, { profile: 'skin', object: 0, texturing: 'post' });
     }
   });
   scene.add(head);
@@ -80,8 +82,9 @@ async function main() {
   milk.position.set(0.19, -0.09, 0.08);
   // Glossy skin (a physical material, low roughness, clearcoat off): its highlight stays sharp while
   // the diffuse light under it scatters (the pass's split lighting).
+  // Post-scatter like the head: one skin profile for both.
   const glossy = new THREE.Mesh(sphere, setSSSMaterial(new THREE.MeshPhysicalMaterial({ color: 0xd9a08a, roughness: 0.2,
-    specularIntensity: 1 }), { profile: 'skin', object: 3 }));
+    specularIntensity: 1 }), { profile: 'skin', object: 3, texturing: 'post' }));
   glossy.position.set(-0.2, 0.075, 0.05);
   for (const m of [marble, milk, glossy]) m.castShadow = m.receiveShadow = true;
   scene.add(marble, milk, glossy);
@@ -142,6 +145,8 @@ async function main() {
     const material = mesh ? mesh.material : head.getObjectByProperty('isMesh', true).material;
     materials.add(material.userData.sss, 'profile', profiles).name(label).onChange(redraw);
   }
+  const headSpec = head.getObjectByProperty('isMesh', true).material.userData.sss;
+  materials.add(headSpec, 'texturing', Object.keys(TEXTURINGS)).name('head texturing').onChange(redraw);
   controls.addEventListener('change', redraw);
 
   Object.assign(example, {

@@ -14,6 +14,10 @@ export type MeasuredProfile = keyof typeof MEASURED_PROFILES;
 export declare const PATHS: Readonly<{ fragment: 0; compute: 1; auto: 2; masked: 3; half: 4 }>;
 export type SSSPath = keyof typeof PATHS;
 
+/** sss_settings.texturing by name: where a material's albedo goes (docs/three.md "Texturing"). */
+export declare const TEXTURINGS: Readonly<{ pre: 0; post: 1; 'pre-and-post': 2 }>;
+export type SSSTexturing = keyof typeof TEXTURINGS;
+
 /** In customProgramCacheKey() of a material the pass has patched to split its lighting
  *  (MeshStandardMaterial and MeshPhysicalMaterial with userData.sss, once the pass has seen them). */
 export declare const SPLIT_PROGRAM_KEY: string;
@@ -34,6 +38,11 @@ export interface SSSMaterialSpec {
   scale?: number;
   strength?: number;
   falloff?: number;
+  /** Where the albedo goes: 'pre' (default: blurred with the light), 'post' (the light alone
+   *  blurred, the albedo multiplied back: a scanned or textured albedo stays sharp), 'pre-and-post'
+   *  (half of it blurred). Only where the pass splits the material's lighting (a standard or physical
+   *  material, splitLighting on); elsewhere the material is filtered pre-scatter. */
+  texturing?: SSSTexturing;
 }
 
 /** The pass's settings (SSSPass properties, SSS.render's last argument). */

@@ -17,7 +17,7 @@ import { SplitCompose, SplitTargets, canSplit, patchMaterial } from './split-lig
 export { SPLIT_PROGRAM_KEY } from './split-lighting.js';
 
 // GL enum values of the formats the library takes (sss.h SSS_GL_*).
-const GL_RGBA16F = 0x881A, GL_RGBA32F = 0x8814, GL_R8UI = 0x8232;
+const GL_RGBA16F = 0x881A, GL_RGBA32F = 0x8814, GL_R8UI = 0x8232, GL_SRGB8_ALPHA8 = 0x8C43;
 const GL_DEPTH_COMPONENT16 = 0x81A5, GL_DEPTH_COMPONENT24 = 0x81A6, GL_DEPTH_COMPONENT32F = 0x8CAC;
 const GL_DEPTH24_STENCIL8 = 0x88F0, GL_DEPTH32F_STENCIL8 = 0x8CAD;
 const SSS_FRAME_DEPTH_ZERO_TO_ONE = 0x1;
@@ -31,9 +31,12 @@ export const MEASURED_PROFILES = Object.freeze({
 /** sss_settings.path by name. */
 export const PATHS = Object.freeze({ fragment: 0, compute: 1, auto: 2, masked: 3, half: 4 });
 
+/** sss_settings.texturing (sss_texturing) by name: where the material's albedo goes (docs/three.md). */
+export const TEXTURINGS = Object.freeze({ pre: 0, post: 1, 'pre-and-post': 2 });
+
 // wasm/profile_fields.hpp's ProfileKind and the floats of one profile (kProfileFloats).
 const KIND_SEPARABLE = 0, KIND_MEASURED = 1, KIND_BURLEY_MEASURED = 2, KIND_BURLEY = 3;
-const PROFILE_FLOATS = 16;
+const PROFILE_FLOATS = 17;
 // The profile nibble of pixels the library must leave alone: the profiles use 0..14 (the library
 // leaves a pixel whose index has no profile as it is).
 const NO_PROFILE = 15;
@@ -51,7 +54,11 @@ const NO_SPLIT = new Float32Array(4);
  * material's name (MEASURED_PROFILES, through the pre-integrated kernel) or 'burley' (Burley's
  * normalized diffusion: `measured` names a material whose published parameters to take, or
  * `albedo` and `dmfpMm` give them); `object` (0-15) keeps objects of one profile from blurring into
- * each other; `scale`, `strength`, `falloff` multiply the pass's. Stored in material.userData.sss.
+ * each other; `scale`, `strength`, `falloff` multiply the pass's; `texturing` (TEXTURINGS: 'pre',
+ * the default, 'post' or 'pre-and-post') says where the albedo goes: blurred with the light, or
+ * multiplied back after the blur (a standard or physical material whose lighting the pass splits;
+ * any other material, or a frame without the split, is filtered pre-scatter). Stored in
+ * material.userData.sss.
  */
 export function setSSSMaterial(material, spec = {}) {
   material.userData.sss = Object.assign({ profile: 'skin', object: 0 }, spec);
@@ -67,6 +74,14 @@ export function createSSSRenderTarget(width, height, options = {}) {
     type: HalfFloatType, format: RGBAFormat, depthBuffer: true,
     depthTexture: new DepthTexture(width, height, UnsignedIntType)
   }, options));
+}
+
+// Whether a draw of `material` (userData.sss `spec`) with the pass's `settings` writes its lighting
+// split, in a target with the split's attachments: a standard or physical material, opaque, with a
+// strength of its own, the pass's splitLighting on. The split's albedo is this material's then.
+function drawsSplit(material, spec, settings) {
+  return canSplit(material) && material.transparent !== true && !!settings.splitLighting &&
+    settings.strength * (spec.strength ?? 1) > 0;
 }
 
 function colorFormatOf(gl, texture) {
@@ -163,8 +178,10 @@ export class SSS {
     gl.getExtension('OES_texture_float_linear');
     this._handle = GL.registerContext(gl, { majorVersion: 2, minorVersion: 0, enableExtensionsByDefault: false });
     this._lent = [];
-    this._scratch = module._malloc(PROFILE_FLOATS * MAX_PROFILES * 4 + 16 * 4 + 8 * 8);
-    this._projection = this._scratch + PROFILE_FLOATS * MAX_PROFILES * 4;
+    // The profiles' floats, the projection, the stats' doubles (8-byte aligned: malloc's blocks are).
+    const profileBytes = Math.ceil(PROFILE_FLOATS * MAX_PROFILES * 4 / 8) * 8;
+    this._scratch = module._malloc(profileBytes + 16 * 4 + 8 * 8);
+    this._projection = this._scratch + profileBytes;
     this._stats = this._projection + 16 * 4;
     // sss_create restores what it binds (sss.h), by the names it reads back: three's objects need
     // theirs lent as for every other call, or the restore would unbind them.
@@ -180,6 +197,7 @@ export class SSS {
     this._profileKey = null;
     this._failedKey = null;
     this._prepared = '';
+    this._albedoFormat = 0;  // the last profiles' albedo: SRGB8_ALPHA8 where a texturing needs one
     this._frame = 0;
     this._idTarget = null;
     this._idMaterials = new Map();
@@ -257,9 +275,14 @@ export class SSS {
   }
 
   // The profiles the visible translucent materials use, in the order they are met: [{key, spec}],
-  // and for each material its profile index. Fills `this._meshProfiles` (mesh -> values per material).
-  _collectProfiles(scene, settings) {
-    const profiles = [], byKey = new Map(), perMaterial = new Map();
+  // and for each material its profile index. `splitting`: the frame's materials draw their lighting
+  // split (the target has the split's attachments), so those that do (drawsSplit) have an albedo
+  // in its attachment and keep their texturing; every other material is filtered pre-scatter (where
+  // it lies the albedo attachment holds 0, or another material's albedo). Each profile's texturing
+  // as used (`texturings`, sss_texturing numbers; -1 for a name the pass does not know, which the
+  // library refuses) is part of its key.
+  _collectProfiles(scene, settings, splitting = false) {
+    const profiles = [], texturings = [], byKey = new Map(), perMaterial = new Map();
     let splittable = false;
     scene.traverseVisible((object) => {
       if (!object.isMesh) return;
@@ -269,19 +292,23 @@ export class SSS {
         if (!spec || perMaterial.has(material)) continue;
         this._patch(material);
         splittable = splittable || canSplit(material);
+        const named = TEXTURINGS[spec.texturing ?? 'pre'] ?? -1;
+        const texturing = named > 0 && !(splitting && drawsSplit(material, spec, settings)) ? 0 : named;
         const key = JSON.stringify([spec.profile, spec.measured, spec.albedo, spec.dmfpMm, spec.scale, spec.strength,
-          spec.falloff]);
+          spec.falloff, texturing]);
         let index = byKey.get(key);
         if (index === undefined) {
           index = profiles.length;
           byKey.set(key, index);
           profiles.push(spec);
+          texturings.push(texturing);
         }
         perMaterial.set(material, index < MAX_PROFILES ? (index | ((spec.object | 0) & 15) << 4) : NO_PROFILE);
       }
     });
-    return { profiles: profiles.slice(0, MAX_PROFILES), perMaterial, splittable,
-      key: JSON.stringify([[...byKey.keys()], settings]) };
+    const used = texturings.slice(0, MAX_PROFILES);
+    return { profiles: profiles.slice(0, MAX_PROFILES), texturings: used, albedo: used.some((t) => t !== 0),
+      perMaterial, splittable, key: JSON.stringify([[...byKey.keys()], settings]) };
   }
 
   // sss_set_profiles when the profiles or settings changed since the last call. False (the message
@@ -305,7 +332,7 @@ export class SSS {
       f.set([kind, profile, 0.001 / settings.metresPerUnit, settings.scale * (spec.scale ?? 1),
         defaults[0] * strength, defaults[1] * strength, defaults[2] * strength,
         defaults[3] * falloff, defaults[4] * falloff, defaults[5] * falloff,
-        ...(spec.albedo || [0, 0, 0]), ...(spec.dmfpMm || [0, 0, 0])], o);
+        ...(spec.albedo || [0, 0, 0]), ...(spec.dmfpMm || [0, 0, 0]), collected.texturings[i]], o);
     });
     const r = this._call(() => m._sss3_set_profiles(this.context, this._scratch, collected.profiles.length,
       settings.taps, settings.followSurface ? 1 : 0, PATHS[settings.path] ?? -1, settings.jitter));
@@ -318,6 +345,7 @@ export class SSS {
     this._profileKey = collected.key;
     this._failedKey = null;
     this._prepared = '';
+    this._albedoFormat = collected.albedo ? GL_SRGB8_ALPHA8 : 0;
     return true;
   }
 
@@ -345,7 +373,7 @@ export class SSS {
       this._drawn.set(target, drawn);
     }
     const spec = material.userData.sss, settings = drawn.settings;
-    const split = !!(settings && spec && material.transparent !== true && settings.strength * (spec.strength ?? 1) > 0);
+    const split = !!(settings && spec && drawsSplit(material, spec, settings));
     if (!split || !this._splitTargets.open(target, object, drawn.materials.size === 0)) return null;
     drawn.materials.add(material);
     return settings.split * target.width;
@@ -372,7 +400,7 @@ export class SSS {
       source.armed = null;
     }
     if (!settings || !settings.splitLighting || !(settings.strength > 0)) return null;
-    const collected = this._collectProfiles(scene, settings);
+    const collected = this._collectProfiles(scene, settings, true);  // the target has the split's attachments
     return collected.profiles.length > 0 && this._setProfiles(collected, settings) ? settings : null;
   }
 
@@ -487,7 +515,7 @@ export class SSS {
     const source = this._sources.get(scene);
     if (!source || !source.pass) this._sources.set(scene, { settings, armed: target });  // the next frame's split
     const drewSplit = this._takeSplit(target);
-    const collected = this._collectProfiles(scene, settings);
+    const collected = this._collectProfiles(scene, settings, drewSplit !== null);
     this._splittable = collected.splittable;
     this._prepareSplit(target, collected.splittable, settings);
     if (collected.profiles.length === 0 && !drewSplit) {
@@ -516,13 +544,18 @@ export class SSS {
     const color = properties.get(target.texture).__webglTexture;
     const depth = properties.get(target.depthTexture).__webglTexture;
     const profile = properties.get(this._idTarget.texture).__webglTexture;
+    // The split's albedo where a profile's texturing needs it (_collectProfiles gives those
+    // profiles their texturing only when this frame drew split, into this target's companion).
+    const companion = this._albedoFormat !== 0 ? this._splitTargets.companion(target) : null;
+    const albedo = companion ? properties.get(companion.textures[1]).__webglTexture : null;
+    const albedoFormat = albedo ? this._albedoFormat : 0;
     const m = this.module;
     new Float32Array(m.HEAPF32.buffer, this._projection, 16).set(camera.projectionMatrix.elements);
     const flags = camera.reversedDepth ? SSS_FRAME_DEPTH_ZERO_TO_ONE : 0;
-    const prepared = [width, height, colorFormat, depthFormat].join();
+    const prepared = [width, height, colorFormat, depthFormat, albedoFormat].join();
     if (prepared !== this._prepared) {
       // The first frame of this size and these formats that setSize did not prepare.
-      const p = this.prepare(width, height, colorFormat, depthFormat);
+      const p = this.prepare(width, height, colorFormat, depthFormat, albedoFormat);
       if (p !== 0) {
         this.lastResult = p;
         return p;
@@ -532,20 +565,22 @@ export class SSS {
       const GL = this._GL;
       this._lendBindings();
       return m._sss3_apply(this.context, this._lend(color, GL.textures), colorFormat, this._lend(depth, GL.textures),
-        depthFormat, this._lend(profile, GL.textures), GL_R8UI, width, height, this._projection, ++this._frame, flags);
+        depthFormat, this._lend(profile, GL.textures), GL_R8UI, width, height, this._projection, ++this._frame, flags,
+        this._lend(albedo, GL.textures), albedoFormat);
     });
     this.lastResult = r;
     this.lastError = r === 0 ? '' : this._message();
     return r;
   }
 
-  /** The library re-prepares for this size now (called by SSSPass.setSize), not in the next frame. */
-  prepare(width, height, colorFormat = GL_RGBA16F, depthFormat = GL_DEPTH_COMPONENT24) {
-    const prepared = [width, height, colorFormat, depthFormat].join();
+  /** The library re-prepares for this size now (called by SSSPass.setSize), not in the next frame;
+   *  with an albedo texture (SRGB8_ALPHA8, the split's) where the profiles' texturing needs one. */
+  prepare(width, height, colorFormat = GL_RGBA16F, depthFormat = GL_DEPTH_COMPONENT24, albedoFormat = this._albedoFormat) {
+    const prepared = [width, height, colorFormat, depthFormat, albedoFormat].join();
     if (prepared === this._prepared || this._profileKey === null) return 0;
     const r = this._call(() => {
       this._lendBindings();
-      return this.module._sss3_prepare(this.context, width, height, colorFormat, depthFormat, GL_R8UI);
+      return this.module._sss3_prepare(this.context, width, height, colorFormat, depthFormat, GL_R8UI, albedoFormat);
     });
     if (r === 0) this._prepared = prepared;
     else this.lastError = this._message();

@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { SPLIT_PROGRAM_KEY, createSSSRenderTarget } from 'sss-three';
 
 const ex = window.sssExample;
+const PROFILE_FLOATS = 17;  // the floats of one profile the pass hands sss3_set_profiles (sss-three.js)
 const gl = ex.renderer.getContext();
 
 // ---- A second scene of three's standard materials (no userData.sss): textures, lights, shadows,
@@ -411,6 +412,19 @@ function readTexture(texture, width, height, integer) {
   return data;
 }
 
+// An 8-bit texture (the albedo, SRGB8_ALPHA8) as its bytes: the stored sRGB encoding (readPixels
+// does not convert). Through a framebuffer of our own on the read binding, put back.
+function readBytes(texture, width, height) {
+  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING), fbo = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fbo);
+  gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+  const data = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
+  gl.deleteFramebuffer(fbo);
+  return data;
+}
+
 // A DepthTexture cannot be read: drawn by three into an RGBA32F target (red: the window depth as a
 // shader samples it, which is what the library samples) and that read.
 function readDepth(depthTexture, width, height) {
@@ -453,20 +467,22 @@ export function nativeInputs(single = true) {
   if (!single) sss._profileKey = null;
   const setProfiles = m._sss3_set_profiles, apply = m._sss3_apply, render = sss.render;
   const out = { settings: pass.settings() };
-  let target = null, colour = null, profile = null, web = null;
+  let target = null, colour = null, profile = null, web = null, albedo = null;
   sss.render = function (t, ...rest) { target = t; return render.call(this, t, ...rest); };
   m._sss3_set_profiles = function (context, fields, count, taps, followSurface, path, jitter) {
-    out.profiles = { fields: Array.from(new Float32Array(m.HEAPF32.buffer, fields, 16 * count)), count, taps,
+    out.profiles = { fields: Array.from(new Float32Array(m.HEAPF32.buffer, fields, PROFILE_FLOATS * count)), count, taps,
       followSurface, path, jitter };
     return setProfiles.apply(this, arguments);
   };
   m._sss3_apply = function (context, color, colorFormat, depth, depthFormat, profileName, profileFormat, width, height,
-    projection, noiseIndex, flags) {
-    out.frame = { colorFormat, depthFormat, profileFormat, width, height, noiseIndex, flags,
+    projection, noiseIndex, flags, albedoName, albedoFormat) {
+    out.frame = { colorFormat, depthFormat, profileFormat, width, height, noiseIndex, flags, albedoFormat,
       projection: Array.from(new Float32Array(m.HEAPF32.buffer, projection, 16)) };
     const textures = sss._GL.textures;  // the names the package lent for this call
     colour = readTexture(textures[color], width, height, false);
     profile = readTexture(textures[profileName], width, height, true);
+    // The split's albedo (SRGB8_ALPHA8) as its stored bytes, where a profile's texturing reads it.
+    if (albedoName) albedo = readBytes(textures[albedoName], width, height);
     const r = apply.apply(this, arguments);
     web = readTexture(textures[color], width, height, false);
     return r;
@@ -492,6 +508,7 @@ export function nativeInputs(single = true) {
     out.depth = base64(new Uint8Array(depth.buffer));
     out.profile = base64(profile);
     out.web = base64(new Uint8Array(web.buffer));
+    if (albedo) out.albedo = base64(albedo);
   }
   for (const [material, spec] of spheres) material.userData.sss = spec;
   out.errors = glErrors();
@@ -546,17 +563,7 @@ function drawInto(target, scene, camera) {
 
 const floats = (texture) => base64(new Uint8Array(readTexture(textureOf(texture), SPLIT_W, SPLIT_H, false).buffer));
 
-// An 8-bit texture (the albedo, SRGB8_ALPHA8) as its bytes: the stored sRGB encoding.
-function bytes(texture) {
-  const previous = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING), fbo = gl.createFramebuffer();
-  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fbo);
-  gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, textureOf(texture), 0);
-  const data = new Uint8Array(SPLIT_W * SPLIT_H * 4);
-  gl.readPixels(0, 0, SPLIT_W, SPLIT_H, gl.RGBA, gl.UNSIGNED_BYTE, data);
-  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, previous);
-  gl.deleteFramebuffer(fbo);
-  return base64(data);
-}
+const bytes = (texture) => base64(readBytes(textureOf(texture), SPLIT_W, SPLIT_H));
 
 // gl.compileShader and gl.linkProgram counted around `body`.
 function counting(body) {
@@ -583,6 +590,7 @@ function passFrame(target, scene, camera, settings) {
   drawInto(target, scene, camera);
   const apply = m._sss3_apply;
   m._sss3_apply = function (context, color) {
+    frame.albedoFormat = arguments[13];  // sss3_apply's last: 0 without an albedo, SRGB8_ALPHA8 with the split's
     frame.handed = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
     const r = apply.apply(this, arguments);
     frame.blurred = base64(new Uint8Array(readTexture(sss._GL.textures[color], SPLIT_W, SPLIT_H, false).buffer));
@@ -677,5 +685,65 @@ export function splitFeatures() {
   out.errors = glErrors();
   target.dispose();
   map.dispose();
+  return out;
+}
+
+// ---- Texturing (docs/three.md "Texturing"): a plane of skin filling the view, its albedo a noise
+// map of texels about 3 pixels wide (nearest, no mipmaps), under an ambient light alone: the same
+// irradiance at every pixel, so that the blur of the light alone is the light itself and a
+// post-scatter frame is three's own (three_test.py: within the sRGB-8 and half-float roundings),
+// where pre-scatter blurs the noise. Three's frame before the pass saw the material; frames with
+// each texturing, explicitly 'pre' and none; 'post' with splitLighting off and on a Lambert
+// material (neither splits: pre-scatter, as 'pre' frames of the same, bit for bit).
+export function texturing() {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0, 0, 0);
+  const camera = new THREE.PerspectiveCamera(30, SPLIT_W / SPLIT_H, 0.05, 10);
+  camera.position.set(0, 0, 0.3);  // 0.9 mm a pixel at the plane
+  scene.add(new THREE.AmbientLight(0xffffff, 1));
+  const N = 160, encode = (x) => Math.round(255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * x ** (1 / 2.4) - 0.055));
+  const data = new Uint8Array(N * N * 4);
+  for (let t = 0; t < N * N; ++t) {
+    const f = 0.35 + 0.65 * (((t * 2654435761) >>> 0) % 1000) / 999;  // a texel's albedo: 0.35-1 of the skin's
+    for (let c = 0; c < 3; ++c) data[t * 4 + c] = encode(SKIN_COLOUR[c] * f);
+    data[t * 4 + 3] = 255;
+  }
+  const map = new THREE.DataTexture(data, N, N);
+  Object.assign(map, { colorSpace: THREE.SRGBColorSpace, magFilter: THREE.NearestFilter, minFilter: THREE.NearestFilter,
+    generateMipmaps: false, needsUpdate: true });
+  const standardSkin = new THREE.MeshStandardMaterial({ map, roughness: 0.8, metalness: 0 });
+  const lambertSkin = new THREE.MeshLambertMaterial({ map });
+  const plane = new THREE.Mesh(new THREE.PlaneGeometry(0.4, 0.4), standardSkin);  // 2.5 mm a texel
+  scene.add(plane);
+  const target = createSSSRenderTarget(SPLIT_W, SPLIT_H), out = { width: SPLIT_W, height: SPLIT_H };
+  drawInto(target, scene, camera);
+  out.three = floats(target.texture);
+  const frameWith = (material, texturing, settings = {}) => {
+    plane.material = material;
+    material.userData.sss = texturing === undefined ? { profile: 'skin', object: 0 } : { profile: 'skin', object: 0, texturing };
+    return passFrame(target, scene, camera, settings);
+  };
+  frameWith(standardSkin, 'post');  // the material patched and compiled
+  out.post = frameWith(standardSkin, 'post');
+  out.pre = frameWith(standardSkin, undefined);
+  out.preNamed = frameWith(standardSkin, 'pre');
+  out.prePost = frameWith(standardSkin, 'pre-and-post');
+  out.postAgain = frameWith(standardSkin, 'post');
+  out.preUnsplit = frameWith(standardSkin, 'pre', { splitLighting: false });
+  out.postUnsplit = frameWith(standardSkin, 'post', { splitLighting: false });
+  out.lambertPre = frameWith(lambertSkin, 'pre');
+  out.lambertPost = frameWith(lambertSkin, 'post');
+  out.unknown = frameWith(standardSkin, 'after');
+  out.errors = glErrors();
+  for (const k of ['pre', 'preNamed', 'prePost', 'postAgain', 'preUnsplit', 'postUnsplit', 'lambertPre', 'lambertPost',
+    'unknown']) {
+    delete out[k].handed;  // what three_test.py reads of them: composed, profile, albedo, the result
+    delete out[k].blurred;
+    delete out[k].unblurred;
+  }
+  target.dispose();
+  map.dispose();
+  standardSkin.dispose();
+  lambertSkin.dispose();
   return out;
 }

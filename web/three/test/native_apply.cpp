@@ -10,7 +10,9 @@
 // (W*H window depths in [0, 1]), profile.u8 (W*H bytes, profile | object << 4) and params.txt (one
 // "name value..." a line: width, height, projection (16, column-major); count and fields (count
 // profiles of 16 floats), taps, follow_surface, path, jitter: the arguments the pass gave
-// sss3_set_profiles; noise_index, flags). The profiles become settings and kernels by the
+// sss3_set_profiles; noise_index, flags; albedo_format: 0, or SRGB8_ALPHA8 with albedo.u8, W*H*4
+// bytes, the split's albedo as stored, which the pass handed sss3_apply where a profile's
+// texturing is not pre-scatter). The profiles become settings and kernels by the
 // WebAssembly's own code (web/three/wasm/profile_fields.cpp). Writes DIR/native.f32 (the filtered
 // colour, W*H*4 floats) and prints one JSON object.
 #include <GLES3/gl3.h>
@@ -93,6 +95,12 @@ int run(const std::string& dir, sss_headless* headless) {
     std::fprintf(stderr, "sss_three_native_apply: colour.f32, depth.f32 or profile.u8 missing or of the wrong size\n");
     return 1;
   }
+  const auto albedo_format = static_cast<uint32_t>(one("albedo_format"));
+  std::vector<uint8_t> albedo;
+  if (albedo_format != 0 && (albedo_format != SSS_GL_SRGB8_ALPHA8 || !read_file(dir + "/albedo.u8", n * 4, &albedo))) {
+    std::fprintf(stderr, "sss_three_native_apply: albedo_format is not SRGB8_ALPHA8, or albedo.u8 missing or of the wrong size\n");
+    return 1;
+  }
 
   sss_create_desc desc{};
   desc.struct_size = sizeof desc;
@@ -120,6 +128,9 @@ int run(const std::string& dir, sss_headless* headless) {
   const GLuint colour_tex = texture(GL_RGBA16F, width, height, GL_RGBA, GL_FLOAT, colour.data(), GL_LINEAR);
   const GLuint depth_tex = texture(GL_DEPTH_COMPONENT32F, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data(), GL_NEAREST);
   const GLuint profile_tex = texture(GL_R8UI, width, height, GL_RED_INTEGER, GL_UNSIGNED_BYTE, profile.data(), GL_NEAREST);
+  // The split's albedo as the companion target holds it: SRGB8_ALPHA8, nearest (the same bytes).
+  const GLuint albedo_tex =
+      albedo.empty() ? 0 : texture(GL_SRGB8_ALPHA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, albedo.data(), GL_NEAREST);
   if (r == SSS_OK) {
     sss_prepare_desc prepare{};
     prepare.struct_size = sizeof prepare;
@@ -128,6 +139,7 @@ int run(const std::string& dir, sss_headless* headless) {
     prepare.color_format = SSS_GL_RGBA16F;
     prepare.depth_format = SSS_GL_DEPTH_COMPONENT32F;
     prepare.profile_format = SSS_GL_R8UI;
+    prepare.albedo_format = albedo_format;
     r = sss_prepare(sss, &prepare);
   }
   std::vector<float> projection(p["projection"].begin(), p["projection"].end());
@@ -145,6 +157,8 @@ int run(const std::string& dir, sss_headless* headless) {
     frame.projection = projection.data();
     frame.noise_index = static_cast<uint32_t>(one("noise_index"));
     frame.flags = static_cast<uint32_t>(one("flags"));
+    frame.albedo_texture = albedo_tex;
+    frame.albedo_format = albedo_format;
     r = sss_apply_frame(sss, &frame);  // in place, as the pass filters three's target
   }
   if (r != SSS_OK && message.empty()) message = sss_last_error(sss);
@@ -168,8 +182,8 @@ int run(const std::string& dir, sss_headless* headless) {
       status = 1;
     }
   }
-  const GLuint textures[] = {colour_tex, depth_tex, profile_tex};
-  glDeleteTextures(3, textures);
+  const GLuint textures[] = {colour_tex, depth_tex, profile_tex, albedo_tex};
+  glDeleteTextures(4, textures);
   sss_destroy(sss);
   std::printf("{\"renderer\": \"%s\", \"result\": \"%s\", \"message\": \"%s\"}\n", sss_headless_renderer(headless),
               sss_result_string(r), message.c_str());

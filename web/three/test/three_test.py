@@ -169,6 +169,7 @@ def run(browser, args, out_dir, results):
     # 6. Split lighting.
     split_lighting(js, out_dir, results)
     split_features(js, results)
+    texturing(js, results)
 
     # Pictures and times (read by people, never judged).
     times = js("sssExample.time(%d)" % args.frames)
@@ -232,6 +233,21 @@ def run(browser, args, out_dir, results):
 # is held to the same bound.
 MISS_BOUND = 0.02
 FP16_HALF_STEP = 2.0 ** -11
+# The floats of one profile the pass hands sss3_set_profiles (wasm/profile_fields.hpp), and where
+# among them its texturing is (kTexturing: 0 pre-scatter, 1 post-scatter, 2 both).
+PROFILE_FLOATS = 17
+TEXTURING_FIELD = 16
+# Post-scatter (the example's skin): each side divides the colour by the albedo and multiplies the
+# blur by it again, in float32, reading the SRGB8_ALPHA8 albedo through its own GPU's sRGB decode
+# (SwiftShader's and llvmpipe's differ in the last bits), so an output may round to the half float
+# next to the other side's where pre-scatter's landed on the same one: measured on the head's skin,
+# 21-27 % of the values one step away (per channel), 0.2 % two, a few dozen of 72614 pixels 3-5 (the
+# quotient's difference carried through the blur). That step is forgiven on a post-scatter profile's
+# pixels (miss_of's `forgiven`) and what is left is held to MISS_BOUND: measured 0.00015, where the
+# miss with it unforgiven is 0.034 (the change post-scatter makes is smaller than pre-scatter's: the
+# albedo's detail is not blurred, so one step weighs more). The check's own test still fails it:
+# the scale 5 % off natively, one step forgiven, 0.029.
+POST_SCATTER_FORGIVEN = 1
 
 
 # The split's bound. Three's specular S (the skin material with a black diffuse colour: with metalness
@@ -301,6 +317,91 @@ def split_features(js, results):
     check(len(counts) == 4 and min(counts.values()) > 500, "split features: four spheres drawn split (%s)" % counts)
     check(beyond == 0, "split features: composed - blurred = three's colour - the diffuse, within half-float rounding "
           "(worst %.3f of the bound)" % worst)
+
+
+# The post-scatter bound (texturing). Under an ambient light alone the irradiance E is the same at
+# every pixel, so the blur of the light alone is E again, and a post-scatter frame is three's own
+# frame F = E A (+ its specular, here 0, through the split's unblurred attachment) but for roundings.
+# The library divides the handed diffuse D = E A by the split's albedo A' (A re-encoded to sRGB 8
+# bits: |A' / A - 1| <= q, half an 8-bit step relative, q = (decode(b + 1/2) - decode(b)) / decode(b)
+# at the darkest level b of the frame's albedo, per channel), blurs the light L = D / A' = E A / A',
+# each within [E (1 - q), E (1 + q)], with weights that sum to 1, and multiplies by A' again: the
+# output lies within E A' (1 +- q) = E A (1 +- q)^2, 2q / (1 - q) relative (first order) of F. Half-
+# float roundings on the way: F and D (three's target), L (the library's copy), the intermediate
+# blurred target, the output, the compose: six half steps, 6 * 2^-11 of the value; and the absolute
+# floor of SPLIT_ABSOLUTE for the unblurred light's subnormals. Measured: texturing_post_worst_ratio
+# in results.json, the largest |C - F| over that bound (the map's texels re-encode to their own byte,
+# A' = A: only the half floats' share shows). The check's own test: pre-scatter blurs the noise of
+# albedos 0.35-1 of the skin's (texels of 2.8 pixels, the kernel a few pixels wide): most of the
+# plane lies far outside the bound.
+TEXTURING_FP16_STEPS = 6
+
+
+def srgb_decode(level):
+    v = level / 255.0
+    return v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
+
+
+def texturing(js, results):
+    got = js("checks.texturing()")
+    n = got["width"] * got["height"]
+    three = f32(got["three"])
+    frames = ("post", "pre", "preNamed", "prePost", "postAgain", "preUnsplit", "postUnsplit", "lambertPre", "lambertPost")
+    check(all(got[k]["result"] == 0 for k in frames) and got["errors"] == [],
+          "texturing: every frame filtered, no GL error (%s %s)" % ([got[k]["message"] for k in frames], got["errors"]))
+    post = got["post"]
+    profile = base64.b64decode(post["profile"])
+    albedo = base64.b64decode(post["albedo"])
+    plane = [i for i in range(n) if profile[i] & 15 != 15]
+    check(len(plane) == n, "texturing: the skin plane covers the frame (%d of %d pixels)" % (len(plane), n))
+    # Half an sRGB-8 step relative at the darkest albedo level of each channel.
+    q = [max((srgb_decode(b + 0.5) - srgb_decode(b)) / srgb_decode(b) for b in {albedo[i * 4 + c] for i in plane})
+         for c in range(3)]
+    relative = [2 * qc / (1 - qc) + TEXTURING_FP16_STEPS * FP16_HALF_STEP for qc in q]
+
+    def off(frame):
+        composed = f32(frame["composed"])
+        worst, beyond = 0.0, 0
+        for i in plane:
+            out = False
+            for c in range(3):
+                k = i * 4 + c
+                bound = relative[c] * abs(three[k]) + SPLIT_ABSOLUTE
+                worst = max(worst, abs(composed[k] - three[k]) / bound)
+                out = out or abs(composed[k] - three[k]) > bound
+            beyond += out
+        return worst, beyond / len(plane)
+
+    post_worst, post_beyond = off(post)
+    again_worst, again_beyond = off(got["postAgain"])
+    pre_worst, pre_beyond = off(got["pre"])
+    both_worst, both_beyond = off(got["prePost"])
+    same = lambda a, b: base64.b64decode(got[a]["composed"]) == base64.b64decode(got[b]["composed"])
+    results["texturing"] = {"pixels": len(plane), "relative_bound": relative, "post_worst_ratio": post_worst,
+                            "post_again_worst_ratio": again_worst, "pre_worst_ratio": pre_worst,
+                            "pre_share_beyond": pre_beyond, "pre_and_post_worst_ratio": both_worst,
+                            "pre_and_post_share_beyond": both_beyond, "unknown_message": got["unknown"]["message"]}
+    print("     texturing, uniform light over a noise albedo: post-scatter at most %.3f of its bound (%.4f relative "
+          "in red); pre-scatter %.1f (%.2f of the plane beyond), pre-and-post %.1f (%.2f beyond)"
+          % (post_worst, relative[0], pre_worst, pre_beyond, both_worst, both_beyond))
+    check(post["albedoFormat"] == 0x8C43 and got["postAgain"]["albedoFormat"] == 0x8C43,
+          "texturing: post-scatter hands the library the split's albedo (SRGB8_ALPHA8)")
+    check(post_beyond == 0 and again_beyond == 0,
+          "texturing: post-scatter under uniform light is three's own frame within the sRGB-8 and half-float roundings "
+          "(worst %.3f of the bound; again %.3f)" % (post_worst, again_worst))
+    check(pre_beyond > 0.25, "texturing: the check's own test: pre-scatter blurs the albedo: %.2f of the plane beyond "
+          "the bound (> 0.25), worst %.1f times it" % (pre_beyond, pre_worst))
+    check(both_beyond > 0 and both_worst < pre_worst,
+          "texturing: pre-and-post-scatter blurs less than pre-scatter (worst %.1f against %.1f)" % (both_worst, pre_worst))
+    check(got["pre"]["albedoFormat"] == 0 and got["preNamed"]["albedoFormat"] == 0 and same("pre", "preNamed"),
+          "texturing: 'pre' and no texturing: no albedo handed, the same frame bit for bit")
+    check(same("preUnsplit", "postUnsplit") and got["postUnsplit"]["albedoFormat"] == 0,
+          "texturing: splitLighting off: 'post' falls back to pre-scatter, bit for bit, no albedo handed")
+    check(same("lambertPre", "lambertPost") and got["lambertPost"]["albedoFormat"] == 0,
+          "texturing: a Lambert material (no split): 'post' falls back to pre-scatter, bit for bit, no albedo handed")
+    unknown = got["unknown"]
+    check(unknown["result"] != 0 and "texturing" in unknown["message"],
+          "texturing: a name the pass does not know ('after'): the library's message: %r" % unknown["message"])
 
 
 def split_lighting(js, out_dir, results):
@@ -397,14 +498,22 @@ def floats(directory, name):
     return a
 
 
-def miss_of(web, native, colour, pixels):
+def half_step(v):
+    """One half-float step at v (2^-10 of its power of two; the subnormals' 2^-24 below 2^-14)."""
+    return 2.0 ** (math.floor(math.log2(max(abs(v), 2.0 ** -14))) - 10)
+
+
+def miss_of(web, native, colour, pixels, forgiven=frozenset()):
     """The share of the native change (native - colour) that web leaves undone: sums over PIXELS of
-    |web - native| and |native - colour| (RGB; alpha is never filtered), per channel, and of |native|."""
+    |web - native| and |native - colour| (RGB; alpha is never filtered), per channel, and of |native|.
+    At the pixels in FORGIVEN (post-scatter profiles': POST_SCATTER_FORGIVEN) one half-float step of
+    |web - native| is forgiven."""
     off, change, scale = [0.0] * 3, [0.0] * 3, [0.0] * 3
     for i in pixels:
         for c in range(3):
             k = i * 4 + c
-            off[c] += abs(web[k] - native[k])
+            d = abs(web[k] - native[k])
+            off[c] += max(0.0, d - POST_SCATTER_FORGIVEN * half_step(native[k])) if i in forgiven else d
             change[c] += abs(native[k] - colour[k])
             scale[c] += abs(native[k])
     return (sum(off) / max(1e-30, sum(change)), [off[c] / max(1e-30, change[c]) for c in range(3)],
@@ -441,7 +550,8 @@ def against_native_frame(js, native_apply, out_dir, single):
     check(got["errors"] == [], "%s: no GL error, the inputs read back (%s)" % (what, got["errors"]))
     profiles, frame, settings = got["profiles"], got["frame"], got["settings"]
     fields, count = profiles["fields"], profiles["count"]
-    kinds = [int(fields[i * 16]) for i in range(count)]
+    kinds = [int(fields[i * PROFILE_FLOATS]) for i in range(count)]
+    texturings = [int(fields[i * PROFILE_FLOATS + TEXTURING_FIELD]) for i in range(count)]
     defaults = {"metresPerUnit": 1, "scale": 1, "strength": 1, "falloff": 1, "taps": 17, "followSurface": True,
                 "path": "auto", "jitter": 0, "split": 0}
     expected = [0] if single else [0, 1, 2]
@@ -451,14 +561,20 @@ def against_native_frame(js, native_apply, out_dir, single):
     width, height = frame["width"], frame["height"]
     native_dir = os.path.join(out_dir, "native" if single else "native-three")
     os.makedirs(native_dir, exist_ok=True)
-    for name in ("colour", "depth", "profile", "web"):
-        with open(os.path.join(native_dir, name + {"profile": ".u8"}.get(name, ".f32")), "wb") as f:
+    # The example's skin (the head and the glossy sphere) is post-scatter: the pass handed the library
+    # the split's albedo, which goes to the native side too (albedo.u8, its SRGB8_ALPHA8 bytes).
+    skin_texturing = texturings[kinds.index(0)] if 0 in kinds else None
+    check(skin_texturing == 1 and frame["albedoFormat"] == 0x8C43 and got.get("albedo") is not None,
+          "%s: the skin post-scatter, with the split's albedo (SRGB8_ALPHA8) handed to the library (texturings %s, format 0x%x)"
+          % (what, texturings, frame["albedoFormat"] or 0))
+    for name in ("colour", "depth", "profile", "web", "albedo"):
+        with open(os.path.join(native_dir, name + {"profile": ".u8", "albedo": ".u8"}.get(name, ".f32")), "wb") as f:
             f.write(base64.b64decode(got[name]))
     # What the pass gave sss3_set_profiles (all of its scratch floats) and sss3_apply.
     params = {"width": [width], "height": [height], "projection": frame["projection"], "count": [count],
               "fields": fields, "taps": [profiles["taps"]], "follow_surface": [profiles["followSurface"]],
               "path": [profiles["path"]], "jitter": [profiles["jitter"]], "noise_index": [frame["noiseIndex"]],
-              "flags": [frame["flags"]]}
+              "flags": [frame["flags"]], "albedo_format": [frame["albedoFormat"]]}
     native_info = native_run(native_apply, native_dir, params)
     check(native_info is not None, "%s: sss_three_native_apply filtered the same inputs on OpenGL ES 3.0" % what)
     colour, web, native = floats(native_dir, "colour.f32"), floats(native_dir, "web.f32"), floats(native_dir, "native.f32")
@@ -477,7 +593,10 @@ def against_native_frame(js, native_apply, out_dir, single):
 
     # (a) The miss with the native output as the reference: the share of the change it makes that
     # the pass's output does not make the same, per channel and overall (and per profile).
-    miss, per_channel, fp16_explained = miss_of(web, native, colour, filtered)
+    post_scatter = [j for j in range(count) if texturings[j] != 0]
+    forgiven = frozenset(i for i in filtered if profile[i] & 15 in post_scatter)
+    miss, per_channel, fp16_explained = miss_of(web, native, colour, filtered, forgiven)
+    unforgiven = miss_of(web, native, colour, filtered)[0]
     # (b) The tone-mapped frames (8 bits) within web.browser's limits, over the filtered pixels.
     small_share, outlier_share, largest = tone_mapped(web, native, filtered)
     out = {
@@ -487,13 +606,16 @@ def against_native_frame(js, native_apply, out_dir, single):
         "share_beyond_outlier": outlier_share, "largest_levels": largest,
         "small_levels": browser_test.SMALL_LEVELS, "small_share_limit": browser_test.SMALL_SHARE,
         "outlier_levels": browser_test.OUTLIER_LEVELS, "outlier_share_limit": browser_test.OUTLIER_SHARE,
-        "frame": frame, "settings": settings, "kinds": kinds}
-    print("     %s: miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; %d pixels"
-          % (what, miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(filtered)))
+        "frame": frame, "settings": settings, "kinds": kinds, "texturings": texturings,
+        "miss_unforgiven": unforgiven, "forgiven_pixels": len(forgiven)}
+    print("     %s: miss %.5f (r %.5f g %.5f b %.5f), fp16 rounding explains %.5f; %d pixels; without the "
+          "post-scatter step forgiven (%d pixels) %.5f"
+          % (what, miss, per_channel[0], per_channel[1], per_channel[2], fp16_explained, len(filtered), len(forgiven),
+             unforgiven))
     if not single:
         out["per_profile"] = {}
         for name, px in per_profile.items():
-            m, pc, fp = miss_of(web, native, colour, px)
+            m, pc, fp = miss_of(web, native, colour, px, forgiven)
             small, outlier, big = tone_mapped(web, native, px)
             out["per_profile"][name] = {"pixels": len(px), "miss": m, "miss_per_channel": pc, "fp16_explained": fp,
                                         "share_beyond_small": small, "share_beyond_outlier": outlier, "largest_levels": big}
@@ -506,17 +628,17 @@ def against_native_frame(js, native_apply, out_dir, single):
     # scale) must fail the bound.
     wrong_dir = native_dir + "-scale-1.05"
     os.makedirs(wrong_dir, exist_ok=True)
-    for name in ("colour.f32", "depth.f32", "profile.u8"):
+    for name in ("colour.f32", "depth.f32", "profile.u8", "albedo.u8"):
         shutil.copyfile(os.path.join(native_dir, name), os.path.join(wrong_dir, name))
-    wrong_fields = [v * 1.05 if k % 16 == 3 else v for k, v in enumerate(fields)]
+    wrong_fields = [v * 1.05 if k % PROFILE_FLOATS == 3 else v for k, v in enumerate(fields)]
     check(native_run(native_apply, wrong_dir, dict(params, fields=wrong_fields)) is not None,
           "%s: the check's own test: sss_three_native_apply with the scale 5 %% off ran" % what)
     wrong_native = floats(wrong_dir, "native.f32")
-    wrong_miss = miss_of(web, wrong_native, colour, filtered)[0]
+    wrong_miss = miss_of(web, wrong_native, colour, filtered, forgiven)[0]
     out["miss_scale_1_05"] = wrong_miss
     if not single:
         for name, px in per_profile.items():
-            out["per_profile"][name]["miss_scale_1_05"] = miss_of(web, wrong_native, colour, px)[0]
+            out["per_profile"][name]["miss_scale_1_05"] = miss_of(web, wrong_native, colour, px, forgiven)[0]
         print("     the scale 5 %% off, per profile: %s" % ", ".join(
             "%s %.4f" % (name, v["miss_scale_1_05"]) for name, v in out["per_profile"].items()))
     check(wrong_miss > MISS_BOUND, "%s: the check's own test: the scale 5 %% off natively: miss %.4f (> %.2f)"

@@ -3,10 +3,14 @@
 import * as THREE from 'three';
 import { EffectComposer } from 'three/examples/jsm/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/examples/jsm/postprocessing/RenderPass.js';
-import { SSS, SSSPass, createSSSRenderTarget, setSSSMaterial, MEASURED_PROFILES, SPLIT_PROGRAM_KEY, type SSSStats } from 'sss-three';
+import {
+  SSS, SSSPass, createSSSRenderTarget, setSSSMaterial, MEASURED_PROFILES, SPLIT_PROGRAM_KEY, TEXTURINGS, type SSSStats
+} from 'sss-three';
 
 export async function host(renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera: THREE.PerspectiveCamera): Promise<SSSStats> {
-  const skin = setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'skin', object: 1 });
+  const skin = setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'skin', object: 1, texturing: 'post' });
+  setSSSMaterial(new THREE.MeshPhysicalMaterial(), { texturing: 'pre-and-post' });
+  const post: number = TEXTURINGS.post;
   skin.roughness = 0.5;  // the helper returns the material's own type
   setSSSMaterial(new THREE.MeshPhysicalMaterial(), { profile: 'burley', measured: 'wholemilk' });
   setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'burley', albedo: [0.8, 0.5, 0.4], dmfpMm: [3, 1.4, 0.7] });
@@ -15,7 +19,7 @@ export async function host(renderer: THREE.WebGLRenderer, scene: THREE.Scene, ca
   const composer = new EffectComposer(renderer, createSSSRenderTarget(640, 360));
   composer.addPass(new RenderPass(scene, camera));
   const pass = new SSSPass(sss, scene, camera, { metresPerUnit: 1, taps: 25, path: 'masked' });
-  pass.split = 0.5 + marble * 0;
+  pass.split = 0.5 + marble * 0 + post * 0;
   pass.splitLighting = false;  // the whole lit colour blurred
   const patched: boolean = skin.customProgramCacheKey().includes(SPLIT_PROGRAM_KEY);
   composer.addPass(pass);
@@ -24,6 +28,8 @@ export async function host(renderer: THREE.WebGLRenderer, scene: THREE.Scene, ca
   if (r !== 0) console.log(sss.lastError, sss.resultString(r));
   // @ts-expect-error: not a profile the library has
   setSSSMaterial(new THREE.MeshStandardMaterial(), { profile: 'jade' });
+  // @ts-expect-error: texturing is one of TEXTURINGS' names
+  setSSSMaterial(new THREE.MeshStandardMaterial(), { texturing: 'after' });
   // @ts-expect-error: path is one of PATHS' names
   pass.path = 'fastest';
   // @ts-expect-error: splitLighting is a boolean

@@ -20,6 +20,10 @@ sss_result profiles_from_fields(const float* fields, int count, int taps, int fo
     s.flags = follow_surface != 0 ? SSS_FOLLOW_SURFACE : 0u;
     s.path = static_cast<uint32_t>(path);
     s.jitter = jitter;
+    // An sss_texturing; what is none (negative, NaN, beyond the enum's range) becomes a value the
+    // library names as it refuses it (a float outside uint32_t's range cannot be converted).
+    const float texturing = f[kTexturing];
+    s.texturing = texturing >= 0.0f && texturing <= 16.0f ? static_cast<uint32_t>(texturing) : 0xFFFFFFFFu;
     const int kind = static_cast<int>(f[kKind]);
     if (kind == kSeparable) continue;  // the default kernel: s.kernel stays NULL
     sss_kernel_desc& k = kernels[i];

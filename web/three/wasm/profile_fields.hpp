@@ -24,7 +24,9 @@ enum ProfileKind : int {
 // The floats of one profile in the scratch buffer sss-three.js fills (PROFILE_FLOATS there).
 enum ProfileField : int {
   kKind = 0, kProfile, kWorldUnitsPerMm, kScale, kStrengthR, kStrengthG, kStrengthB, kFalloffR, kFalloffG,
-  kFalloffB, kAlbedoR, kAlbedoG, kAlbedoB, kDmfpR, kDmfpG, kDmfpB, kProfileFloats
+  kFalloffB, kAlbedoR, kAlbedoG, kAlbedoB, kDmfpR, kDmfpG, kDmfpB,
+  kTexturing,  // sss_settings.texturing (an sss_texturing; -1: a name the pass does not know)
+  kProfileFloats
 };
 
 // profiles[0..count) (count in [1, SSS_MAX_PROFILES]) from `count` profiles of kProfileFloats floats

@@ -73,9 +73,10 @@ EMSCRIPTEN_KEEPALIVE int sss3_set_profiles(sss_context* sss, const float* fields
   return remember(sss_set_profiles(sss, profiles, static_cast<uint32_t>(count)), sss);
 }
 
-// sss_prepare for frames of this size and these formats, with a profile texture (R8UI).
+// sss_prepare for frames of this size and these formats, with a profile texture (R8UI) and, where a
+// profile's texturing needs one, an albedo texture (albedo_format SRGB8_ALPHA8: the split's; 0: none).
 EMSCRIPTEN_KEEPALIVE int sss3_prepare(sss_context* sss, int width, int height, uint32_t color_format,
-                                      uint32_t depth_format, uint32_t profile_format) {
+                                      uint32_t depth_format, uint32_t profile_format, uint32_t albedo_format) {
   sss_prepare_desc desc{};
   desc.struct_size = sizeof desc;
   desc.width = width;
@@ -83,15 +84,18 @@ EMSCRIPTEN_KEEPALIVE int sss3_prepare(sss_context* sss, int width, int height, u
   desc.color_format = color_format;
   desc.depth_format = depth_format;
   desc.profile_format = profile_format;
+  desc.albedo_format = albedo_format;
   return remember(sss_prepare(sss, &desc), sss);
 }
 
 // sss_apply_frame in place on three's textures (their names in Emscripten's GL tables), described
 // (formats and size: WebGL2 cannot be asked for them), with this frame's projection (16 floats,
-// three's camera.projectionMatrix.elements, column-major) and sss_frame.flags.
+// three's camera.projectionMatrix.elements, column-major) and sss_frame.flags; the albedo (the
+// split's SRGB8_ALPHA8 attachment) where a profile's texturing is not pre-scatter, else 0 and 0.
 EMSCRIPTEN_KEEPALIVE int sss3_apply(sss_context* sss, uint32_t color, uint32_t color_format, uint32_t depth,
                                     uint32_t depth_format, uint32_t profile, uint32_t profile_format, int width,
-                                    int height, const float* projection, uint32_t noise_index, uint32_t flags) {
+                                    int height, const float* projection, uint32_t noise_index, uint32_t flags,
+                                    uint32_t albedo, uint32_t albedo_format) {
   sss_frame frame{};
   frame.struct_size = sizeof frame;
   frame.color_texture = color;
@@ -105,6 +109,8 @@ EMSCRIPTEN_KEEPALIVE int sss3_apply(sss_context* sss, uint32_t color, uint32_t c
   frame.projection = projection;
   frame.noise_index = noise_index;
   frame.flags = flags;  // SSS_FRAME_DEPTH_ZERO_TO_ONE for three's reversed depth (clip control)
+  frame.albedo_texture = albedo;
+  frame.albedo_format = albedo_format;
   return remember(sss_apply_frame(sss, &frame), sss);
 }
 
