@@ -89,13 +89,7 @@ class StrengthTexture : public GlTest {
   }
   GLuint make_depth() { return make_depth32f(kW, kH, scene_.window_depth); }
   // A fresh context with `s` and the scene's camera.
-  void fresh(const sss_settings& s) {
-    if (sss_ != nullptr) sss_destroy(sss_);
-    sss_ = create_sss();
-    ASSERT_NE(sss_, nullptr);
-    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-    ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
-  }
+  void fresh(const sss_settings& s) { fresh_sss(s, scene_.projection.data()); }
   // The frame, described (ES 3.0 cannot be asked; elsewhere it makes no difference to the image).
   sss_result apply(sss_frame f) {
     f.texture_width = kW;

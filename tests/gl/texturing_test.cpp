@@ -76,13 +76,7 @@ class Texturing : public GlTest {
     GlTest::SetUp();
     scene_ = make_relief_scene(kW, kH, 3, perspective_matrix(40.0f, 64.0f / 48.0f, 0.1f, 10.0f));
   }
-  void fresh(const sss_settings& s) {
-    if (sss_ != nullptr) sss_destroy(sss_);
-    sss_ = create_sss();
-    ASSERT_NE(sss_, nullptr);
-    ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
-    ASSERT_EQ(sss_set_camera(sss_, scene_.projection.data()), SSS_OK);
-  }
+  void fresh(const sss_settings& s) { fresh_sss(s, scene_.projection.data()); }
   // The frame, described (ES 3.0 cannot be asked), into a separate RGBA16F output.
   sss_result apply(sss_frame f) {
     f.texture_width = kW;

@@ -176,6 +176,14 @@ sss_get_proc_address_fn loader_telling(GLenum name, const char* value, sss_get_p
   return told_get_proc_address;
 }
 
+void GlTest::fresh_sss(const sss_settings& s, const float* projection) {
+  if (sss_ != nullptr) sss_destroy(sss_);
+  sss_ = create_sss();
+  ASSERT_NE(sss_, nullptr);
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  ASSERT_EQ(sss_set_camera(sss_, projection), SSS_OK) << sss_last_error(sss_);
+}
+
 sss_context* GlTest::create_sss(uint32_t flags) {
   sss_create_desc desc = {};
   desc.struct_size = sizeof desc;

@@ -44,6 +44,9 @@ class GlTest : public ::testing::Test {
 
   // On OpenGL ES through es30_get_proc_address (the module's ES 3.0 path).
   sss_context* create_sss(uint32_t flags = 0);
+  // sss_ replaced by a fresh context (create_sss) with the settings `s` and the camera `projection`
+  // (16 floats); the test fails where any of it does.
+  void fresh_sss(const sss_settings& s, const float* projection);
 
   // When set, create_sss loads GL through it instead (user: the sss_headless).
   sss_get_proc_address_fn loader_override_ = nullptr;
