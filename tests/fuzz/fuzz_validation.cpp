@@ -22,8 +22,14 @@ namespace {
 
 bool unit(float v) { return v >= 0.0f && v <= 1.0f; }
 
+// 0.3's to 0.5's sss_settings: today's before texturing (0.6), padded to the struct's alignment.
+constexpr uint32_t kSettingsSize05 = static_cast<uint32_t>((offsetof(sss_settings, texturing) + alignof(sss_settings) - 1) /
+                                                          alignof(sss_settings) * alignof(sss_settings));
+
 bool settings_valid(const sss_settings& s) {
-  if (s.struct_size != sizeof(sss_settings)) return false;
+  // 0.5's size: today's fields but texturing, which that release did not have (pre-scatter).
+  if (s.struct_size != sizeof(sss_settings) && s.struct_size != kSettingsSize05) return false;
+  if (s.struct_size == sizeof(sss_settings) && s.texturing > SSS_TEXTURING_PRE_AND_POST_SCATTER) return false;
   if (!(s.world_units_per_mm >= 0.0f && s.world_units_per_mm <= 1e6f)) return false;
   if (!(s.scale >= 0.0f && s.scale <= 1e3f)) return false;
   if (!(s.separable_scale > 0.0f && s.separable_scale <= 100.0f)) return false;
@@ -99,6 +105,8 @@ void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
   if (in.take<uint8_t>() & 1) s.struct_size = sizeof s;  // half the time a well-formed header
   // Another release's size would have the library read that release's layout, longer than s.
   if (s.struct_size == 184u || s.struct_size == 192u) s.struct_size = 1u;
+  // 0.5's size reads today's fields up to texturing, which then stays pre-scatter.
+  if (s.struct_size == kSettingsSize05) s.texturing = SSS_TEXTURING_PRE_SCATTER;
   // The kernel desc settings.kernel points at: well-formed headers half the time; no table (a fuzzer
   // cannot invent memory for the pointers: a tabulated profile must then be refused for its NULL
   // table); and no fitted family (the guided fit and a measured material's Gaussian fit run an
@@ -135,6 +143,7 @@ void fuzz_settings(sss_context* ctx, sss_fuzz::Bytes& in) {
   SSS_FUZZ_CHECK(now.taps == s.taps && now.flags == s.flags);
   SSS_FUZZ_CHECK(now.mode == s.mode && now.cbf_taps == s.cbf_taps && now.cbf_profile == s.cbf_profile);
   SSS_FUZZ_CHECK(std::memcmp(&now.cbf_r_max_mm, &s.cbf_r_max_mm, sizeof(float)) == 0);
+  SSS_FUZZ_CHECK(now.texturing == s.texturing);
   if (s.mode == SSS_MODE_CROSS_BILATERAL) {
     SSS_FUZZ_CHECK(ctx->cbf_kernel.spacing.size() == static_cast<std::size_t>(s.cbf_taps / 2));  // taps a side
   }
