@@ -444,6 +444,52 @@ TEST_F(VersionedStructs, FramesOfEveryReleaseRunAndOthersAreRefused) {
   EXPECT_NE(message.find("sss_frame"), std::string::npos) << message;
 }
 
+// 0.5's structs (issue 48): its sss_settings, sss_frame and sss_set_profiles array end before the
+// texturing fields 0.6 appended, so a 0.5 host gets pre-scatter whatever lies past its structs: the
+// bytes where 0.6 has texturing and albedo_texture are never read.
+TEST_F(VersionedStructs, Release05StructsGetPreScatter) {
+  const uint32_t settings05 = static_cast<uint32_t>(
+      (offsetof(sss_settings, texturing) + alignof(sss_settings) - 1) / alignof(sss_settings) * alignof(sss_settings));
+  const uint32_t frame05 = static_cast<uint32_t>(
+      (offsetof(sss_frame, albedo_texture) + alignof(sss_frame) - 1) / alignof(sss_frame) * alignof(sss_frame));
+  ASSERT_LT(settings05, sizeof(sss_settings));
+  ASSERT_LT(frame05, sizeof(sss_frame));
+  sss_settings s;
+  sss_default_settings(&s);
+  s.world_units_per_mm = 1.0f;
+  s.path = SSS_PATH_FRAGMENT;
+  s.texturing = SSS_TEXTURING_POST_SCATTER;  // past 0.5's struct: not read
+  s.struct_size = settings05;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  EXPECT_EQ(current().texturing, static_cast<uint32_t>(SSS_TEXTURING_PRE_SCATTER));
+  // sss_set_profiles: an array of 0.5's structs, read at 0.5's stride.
+  std::vector<unsigned char> profiles(2 * settings05);
+  sss_settings second = s;
+  second.scale = 2.0f;
+  std::memcpy(profiles.data(), &s, settings05);
+  std::memcpy(profiles.data() + settings05, &second, settings05);
+  ASSERT_EQ(sss_set_profiles(sss_, reinterpret_cast<const sss_settings*>(profiles.data()), 2), SSS_OK)
+      << sss_last_error(sss_);
+  EXPECT_EQ(current().texturing, static_cast<uint32_t>(SSS_TEXTURING_PRE_SCATTER));
+  EXPECT_EQ(current().scale, 1.0f);
+  // Today's settings in post-scatter, then a 0.5 frame: its albedo fields are past its end, so the
+  // frame has no albedo texture, which the mode needs (refused by name, nothing drawn).
+  s.struct_size = sizeof s;
+  ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
+  ASSERT_EQ(sss_set_camera(sss_, kCamera.data()), SSS_OK);
+  const SyntheticScene scene = make_relief_scene(8, 8, 1, kCamera);
+  const GLuint color = make_rgba32f(8, 8, scene.color);
+  sss_frame f = described_frame<sss_frame>(frame05, color, make_depth32f(8, 8, scene.window_depth),
+                                           make_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, -1.0f)));
+  if (is_gles()) f.depth_format = GL_DEPTH_COMPONENT32F;
+  f.albedo_texture = color;  // past 0.5's frame: not read
+  f.albedo_format = GL_RGBA16F;
+  EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(sss_last_error(sss_)).find("frame->albedo_texture = 0"), std::string::npos)
+      << sss_last_error(sss_);
+  EXPECT_EQ(read_rgba(color, 8, 8), scene.color);
+}
+
 // 0.1-0.4's sss_stats (72 bytes on LP64) get their fields and nothing past them; 0.5's get the memory.
 TEST_F(VersionedStructs, StatsOfEveryReleaseAreFilledToTheirSize) {
   unsigned char bytes[sizeof(sss_stats) + 8];
