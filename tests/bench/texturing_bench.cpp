@@ -128,19 +128,6 @@ struct Row {
   double needed = 0.0;        // ‖input − answer‖ / ‖answer‖ on the interior: the change the mode asks for
 };
 
-// ‖a − b‖ / ‖b‖ over the selected pixels.
-double relative_distance(const RgbImage& a, const RgbImage& b, const std::vector<uint8_t>& selected) {
-  double d = 0.0, n = 0.0;
-  for (std::size_t i = 0; i < selected.size(); ++i) {
-    if (selected[i] == 0) continue;
-    for (std::size_t c = 0; c < 3; ++c) {
-      d += (a.rgb[i * 3 + c] - b.rgb[i * 3 + c]) * (a.rgb[i * 3 + c] - b.rgb[i * 3 + c]);
-      n += b.rgb[i * 3 + c] * b.rgb[i * 3 + c];
-    }
-  }
-  return std::sqrt(d / n);
-}
-
 // The power of `image`'s high frequencies over the selected pixels: the image minus its mean over a
 // box of 1 mm (the box clipped to the image), summed over the channels.
 double high_frequency_power(const RgbImage& image, const std::vector<uint8_t>& selected, double footprint_mm) {
@@ -279,7 +266,7 @@ void run_light(sss_context* ctx, const Scene& scene, const GpuScene& gpu, const 
         r.mode = mode_name(mode);
         r.miss = miss_share(out, answer, input, interior.data());
         r.untextured = untextured;
-        r.needed = relative_distance(input, answer, interior);
+        r.needed = relative_rmse(input, answer, interior.data());
         // No detail in the input (a uniform light over cells the pixels do not resolve): nothing to keep.
         const double nan = std::numeric_limits<double>::quiet_NaN();
         r.detail = input_detail > 0.0 ? high_frequency_power(out, interior, footprint_mm) / input_detail : nan;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "api/context.hpp"
+#include "api/versioned_structs.hpp"
 #include "fuzz_common.hpp"
 #include "math/filter_constants.hpp"
 #include "math/pass_kernel.hpp"
@@ -22,9 +23,7 @@ namespace {
 
 bool unit(float v) { return v >= 0.0f && v <= 1.0f; }
 
-// 0.3's to 0.5's sss_settings: today's before texturing (0.6), padded to the struct's alignment.
-constexpr uint32_t kSettingsSize05 = static_cast<uint32_t>((offsetof(sss_settings, texturing) + alignof(sss_settings) - 1) /
-                                                          alignof(sss_settings) * alignof(sss_settings));
+using sss::api::kSettingsSize05;  // 0.3's to 0.5's sss_settings: today's before texturing (0.6)
 
 bool settings_valid(const sss_settings& s) {
   // 0.5's size: today's fields but texturing, which that release did not have (pre-scatter).

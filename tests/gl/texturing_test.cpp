@@ -20,6 +20,7 @@
 
 #include "filter_case.hpp"
 #include "host_gl_util.hpp"
+#include "math/cpu_texturing.hpp"
 #include "math/half_float.hpp"
 #include "multisample_textures.hpp"
 
@@ -29,15 +30,9 @@ namespace sss_test {
 namespace {
 
 constexpr int kW = 64, kH = 48;
-constexpr float kFloor = 1.0f / 256.0f;  // albedo.glsl's kSssAlbedoFloor (sss.h sss_texturing)
+constexpr float kFloor = sss::math::kAlbedoFloor;  // albedo.glsl's kSssAlbedoFloor (sss.h sss_texturing)
 // One half-float step relative to the value: 2^-11 (10 stored fraction bits, rounding to nearest).
 constexpr float kHalfStep = 1.0f / 2048.0f;
-
-// A_post of mode `mode` (1 post-scatter, 2 pre- and post-scatter) from one albedo channel.
-float albedo_post(float a, uint32_t mode) {
-  const float floored = std::max(a, kFloor);
-  return mode == SSS_TEXTURING_POST_SCATTER ? floored : std::sqrt(floored);
-}
 
 struct Inputs {
   std::vector<float> albedo;  // RGBA16F-exact: a checker of 2-pixel cells, and one dark cell below the floor
@@ -201,7 +196,7 @@ void expect_equivalent(const PathCase& p, uint32_t mode, const Inputs& in, const
     }
     if (c == 3) continue;
     ++translucent;
-    const float expected = sss::math::round_to_half(reference_filtered[i] * albedo_post(in.albedo[i], mode));
+    const float expected = sss::math::round_to_half(reference_filtered[i] * sss::math::albedo_post(in.albedo[i], mode));
     const float relative = std::fabs(module[i] - expected) / std::max(std::fabs(expected), 1e-6f);
     largest = std::max(largest, relative);
     beyond += relative > 3.0f * kHalfStep ? 1 : 0;
@@ -222,7 +217,7 @@ TEST_F(Texturing, EachModeIsAPostTimesThePreScatterFilterOfTheColourOverAPost) {
       const std::vector<float> module = filtered(case_settings(p, mode), in.color, albedo);
       std::vector<float> quotient = in.color;
       for (std::size_t i = 0; i < quotient.size(); ++i) {
-        if (i % 4 != 3) quotient[i] = sss::math::round_to_half(in.color[i] / albedo_post(in.albedo[i], mode));
+        if (i % 4 != 3) quotient[i] = sss::math::round_to_half(in.color[i] / sss::math::albedo_post(in.albedo[i], mode));
       }
       const std::vector<float> reference = filtered(case_settings(p, SSS_TEXTURING_PRE_SCATTER), quotient, 0);
       expect_equivalent(p, mode, in, module, reference);

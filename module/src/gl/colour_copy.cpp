@@ -7,7 +7,9 @@
 //   colour over A_post (module/shaders/albedo.glsl), which the pass that writes the target
 //   multiplies back.
 // It has the precision of the intermediate the colour gets (RGBA16F, or RGBA32F for RGBA32F
-// colour); every path then runs on it as its colour, so each reads the strength where it reads alpha
+// colour); every path that copies (frame_plan.hpp copies_colour: a strength texture on any path, an
+// albedo on the compute and cross-bilateral passes; the others divide in their inputs draw) then
+// runs on it as its colour, so each reads the strength where it reads alpha
 // today (blur weights and widths, the stencil marks, the copies of untouched pixels), and writes the
 // host's colour as a separate output: its rgb, and the untouched pixels' exact values (the copy
 // holds an R11F_G11F_B10F value exactly: RGBA16F has more bits in every field and the same exponent

@@ -94,9 +94,9 @@ struct FilterRun {
 
   // The texturing modes (sss.h sss_texturing): the host's albedo (sss_frame.albedo_texture; name 0:
   // none) and each profile's mode ([0] the settings'; one per profile with per-pixel profiles).
-  // Where a profile's is not pre-scatter the plan draws the colour divided by A_post into the
-  // module's copy first (frame_plan.hpp passes_run) and the pass that writes the target multiplies
-  // by it again (module/shaders/albedo.glsl).
+  // Where a profile's is not pre-scatter the passes divide the colour by A_post where they first
+  // read it (the inputs draw, or the module's colour copy: frame_plan.hpp copies_colour) and the
+  // pass that writes the target multiplies by it again (module/shaders/albedo.glsl).
   TextureInfo albedo;
   std::array<std::uint8_t, math::kMaxProfiles> texturing{};
   // The host's colour where the passes read that divided copy instead (name 0 otherwise): a

@@ -55,7 +55,7 @@ enum class PlanKind : std::uint8_t {
 };
 
 enum class StepKind : std::uint8_t {
-  colour_copy,           // the colour over A_post (texturing) and/or with the strength texture as alpha, into the module's copy
+  colour_copy,           // the colour into the module's copy: over A_post (copies_colour), the strength as alpha
   resolve_msaa,          // the multisampled colour and depth resolved (with the passes' inputs)
   begin,                 // the passes' fixed-function state, vertex array and viewport (Step::rect)
   copy_host_stencil,     // the host's stencil into the module's stencil buffer, on Step::framebuffer
@@ -109,8 +109,8 @@ struct FramePlan {
   PlanKind kind = PlanKind::nothing;
   unsigned path = SSS_PATH_FRAGMENT;  // sss.h SSS_PATH_*, as sss_get_stats reports it
   bool msaa = false;                  // the passes run on the MSAA resolve's images
-  bool colour_copy = false;         // the passes run on the module's copy of the colour (colour_copy.cpp)
-  ColourCopyVariant copy;           // what that copy divides by and takes its alpha from
+  bool colour_copy = false;           // the passes run on the module's copy of the colour (colour_copy.cpp)
+  ColourCopyVariant copy;             // what that copy divides by and takes its alpha from
   int terms = 0;                      // kernel terms the passes run (a debug view: the first alone)
   bool tiles = false;                 // the masked path's tile culling (and the half path's bands)
   bool own_stencil = false;           // MSAA without a host stencil: the passes cull by the module's mark
@@ -180,11 +180,11 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
 
 // The module's textures the passes may read instead of the host's (Targets' names of them).
 struct PassTextures {
-  GLuint colour_copy = 0;                                     // the colour with the strength texture as alpha
+  GLuint colour_copy = 0;                                         // the colour copy (colour_copy.cpp)
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0;  // the MSAA resolve's and the passes' result
 };
 // The run the passes' steps read (StepRun::passes): `run` itself, or its textures replaced by the
-// module's copy with the strength (written back, the host's colour then is the output) or the MSAA
+// module's colour copy (written back, the host's colour then is the output) or the MSAA
 // resolve's images (behind `own`, the module's stencil, where the host gave none). plan_frame plans
 // the passes on this run too. `colour_copy`: the plan's (copies_colour).
 FilterRun passes_run(const FilterRun& run, const PassTextures& module, const StencilInput* own, bool colour_copy);

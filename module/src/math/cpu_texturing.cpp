@@ -37,12 +37,4 @@ std::vector<float> colour_over_albedo(const float* colour_rgba, const std::vecto
   return copy;
 }
 
-void times_albedo_post(const std::vector<float>& post, float* filtered_rgba, const std::uint8_t* changed) {
-  const std::size_t count = post.size() / 3;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (changed != nullptr && changed[i] == 0) continue;
-    for (std::size_t c = 0; c < 3; ++c) filtered_rgba[i * 4 + c] *= post[i * 3 + c];
-  }
-}
-
 }  // namespace sss::math

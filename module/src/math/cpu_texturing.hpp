@@ -28,8 +28,5 @@ std::vector<float> albedo_post_plane(const float* albedo_rgba, std::size_t count
 // copy is RGBA16F (`half`), alpha as it is.
 std::vector<float> colour_over_albedo(const float* colour_rgba, const std::vector<float>& post, bool half);
 
-// A_post ⊙ `filtered` (RGBA, the rgb multiplied, in place) where `changed` (count values; nullptr:
-// everywhere): the multiply an exact reference of the mode applies to its convolution of the copy.
-void times_albedo_post(const std::vector<float>& post, float* filtered_rgba, const std::uint8_t* changed = nullptr);
 
 }  // namespace sss::math
