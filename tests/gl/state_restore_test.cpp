@@ -21,7 +21,7 @@ class StateRestore : public FilterCaseTest {
  protected:
   // Host objects bound while the module runs; deleted in the test's TearDown via textures_ or here.
   GLuint program_ = 0, vao_ = 0, fbo_draw_ = 0, fbo_read_ = 0, renderbuffer_ = 0, buffers_[3] = {0, 0, 0};
-  GLuint samplers_[6] = {0, 0, 0, 0, 0, 0};
+  GLuint samplers_[7] = {0, 0, 0, 0, 0, 0, 0};
 
   void set_unusual_state() {
     program_ = make_host_program(false);
@@ -41,8 +41,8 @@ class StateRestore : public FilterCaseTest {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_read_);
     glGenRenderbuffers(1, &renderbuffer_);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
-    glGenSamplers(6, samplers_);
-    for (GLenum unit = 0; unit < 6; ++unit) {  // every unit of the restored list (sss.h)
+    glGenSamplers(7, samplers_);
+    for (GLenum unit = 0; unit < 7; ++unit) {  // every unit of the restored list (sss.h)
       glActiveTexture(GL_TEXTURE0 + unit);
       glBindTexture(GL_TEXTURE_2D, make_rgba16f(2, 2, std::vector<float>(16, 1.0f)));
       glBindSampler(unit, samplers_[unit]);
@@ -137,12 +137,14 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
   }
   const GLuint r11f = make_texture(GL_R11F_G11F_B10F, 16, 12, GL_RGB, GL_FLOAT, rgb.data());
   const GLuint mask = make_texture(GL_R8, 16, 12, GL_RED, GL_UNSIGNED_BYTE, strength.data());
+  const GLuint albedo = make_rgba16f(16, 12, std::vector<float>(16 * 12 * 4, 0.5f));  // texturing modes
   sss_stencil stencil = {depth_stencil, 1, 0xFF};
   struct Case {
     const char* name;
     uint32_t path = SSS_PATH_FRAGMENT, mode = SSS_MODE_SEPARABLE;
     bool stencil = false, output = false, two_terms = false, msaa = false, strength = false;
     uint32_t debug_view = 0;  // sss_frame.debug_view (needs `output`)
+    uint32_t texturing = SSS_TEXTURING_PRE_SCATTER;  // another mode: with an albedo texture (unit 6)
   };
   const Case cases[] = {{"in place"},
                         {"host stencil, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true},
@@ -165,7 +167,15 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
                         {"taps debug view, host stencil", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, true, true, false,
                          false, false, SSS_DEBUG_VIEW_TAPS},
                         {"tiles debug view (its colour masks)", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, true,
-                         false, false, false, SSS_DEBUG_VIEW_TILES}};
+                         false, false, false, SSS_DEBUG_VIEW_TILES},
+                        {"post-scatter", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, false, false, 0,
+                         SSS_TEXTURING_POST_SCATTER},
+                        {"pre- and post-scatter, compute path, separate output", SSS_PATH_COMPUTE, SSS_MODE_SEPARABLE,
+                         false, true, false, false, false, 0, SSS_TEXTURING_PRE_AND_POST_SCATTER},
+                        {"post-scatter, cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false, false,
+                         false, false, false, 0, SSS_TEXTURING_POST_SCATTER},
+                        {"post-scatter, half resolution", SSS_PATH_HALF_RESOLUTION, SSS_MODE_SEPARABLE, false, false,
+                         false, false, false, 0, SSS_TEXTURING_POST_SCATTER}};
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
@@ -177,6 +187,7 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     sss_default_settings(&s);
     s.world_units_per_mm = 0.05f;
     s = path_case_settings(s, c.path, c.mode, c.two_terms);
+    s.texturing = c.texturing;
     ASSERT_EQ(sss_set_settings(sss_, &s), SSS_OK) << sss_last_error(sss_);
     sss_frame f = frame_of(c.msaa ? msaa_color : color, c.msaa ? msaa_depth : c.stencil ? depth_stencil : depth,
                            c.output ? output : 0);
@@ -186,6 +197,11 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     description.half_color = true;
     description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;
     describe_frame(description, 16, 12, &f);
+    if (c.texturing != SSS_TEXTURING_PRE_SCATTER) {
+      f.albedo_texture = albedo;
+      f.albedo_format = GL_RGBA16F;
+      f.flags = SSS_FRAME_TARGET_COMPLETE;  // the compute path writes the target (GL_NEAREST: complete)
+    }
     if (c.strength) {
       f.color_texture = r11f;
       f.color_format = GL_R11F_G11F_B10F;

@@ -48,7 +48,7 @@ Snapshot take_snapshot(bool es) {
   s.integer("GL_ACTIVE_TEXTURE", GL_ACTIVE_TEXTURE);
   GLint active = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  for (GLenum unit = 0; unit < 6; ++unit) {  // units 0-5: the restored list (sss.h)
+  for (GLenum unit = 0; unit < 7; ++unit) {  // units 0-6: the restored list (sss.h; 6 with an albedo)
     glActiveTexture(GL_TEXTURE0 + unit);
     s.integer(("GL_TEXTURE_BINDING_2D unit " + std::to_string(unit)).c_str(), GL_TEXTURE_BINDING_2D);
     s.integer(("GL_SAMPLER_BINDING unit " + std::to_string(unit)).c_str(), GL_SAMPLER_BINDING);
