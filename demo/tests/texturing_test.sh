@@ -27,6 +27,8 @@ for mode in pre post pre-and-post; do
   test -f "$out/$mode/close-zoom-texturing.png" || { echo "FAIL: no close-zoom-texturing.png" >&2; exit 1; }
 done
 # The default is post-scatter (docs/demo.md "Texturing modes" says why).
-"$demo" --help | grep -q "post (the light alone blurred, the albedo's detail kept sharp; the default" ||
+# (--help into a file first: with pipefail, grep -q closing the pipe early fails the demo's write.)
+"$demo" --help > "$out/help.txt"
+grep -q "post (the light alone blurred, the albedo's detail kept sharp; the default" "$out/help.txt" ||
   { echo "FAIL: --help does not name post-scatter the default" >&2; exit 1; }
 "$material_check" detail "$out/pre" "$out/post" "$out/pre-and-post" close
