@@ -109,6 +109,8 @@
   X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                     \
   X(PFNGLUSEPROGRAMPROC, glUseProgram)                           \
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)           \
+  X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform)               \
+  X(PFNGLGETACTIVEUNIFORMSIVPROC, glGetActiveUniformsiv)         \
   X(PFNGLUNIFORM1IPROC, glUniform1i)                             \
   X(PFNGLUNIFORM1UIPROC, glUniform1ui)                           \
   X(PFNGLUNIFORM1FPROC, glUniform1f)                             \

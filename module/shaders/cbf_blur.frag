@@ -35,10 +35,10 @@ SSS_BINDING(3) uniform sampler2D u_normals;   // view-space unit normal in xyz
 #endif
 // u_pixels_per_mm (along the pass's axis, at clip w = 1 and strength 1), u_clamp (tap positions
 // are kept inside: xy min, zw max, in pixels), u_mm_per_world (profile millimetres per world unit
-// at strength 1) and the pieces' numbers are the cross-bilateral pass's uniform struct, declared with the variant's
-// #defines (module/src/gl/pass_uniforms.hpp).
-uniform vec4 u_spike_blend;           // rgb: b, result = b · centre + (1 - b) · normalised sum
-uniform vec4 u_inv_two_variance;      // rgb: 1 / (2 σ²) per channel, mm⁻²
+// at strength 1), u_spike_blend (rgb: b, result = b · centre + (1 - b) · normalised sum),
+// u_inv_two_variance (rgb: 1 / (2 σ²) per channel, mm⁻²) and the pieces' numbers are the
+// cross-bilateral pass's uniform struct, declared with the variant's #defines
+// (module/src/gl/pass_uniforms.hpp).
 
 out vec4 o_color;
 

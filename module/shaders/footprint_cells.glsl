@@ -5,7 +5,10 @@
 //
 // Switches: SSS_CDF_ENTRIES, SSS_MAX_HALF_TAPS (the sizes of u_cdf and u_spacing), SSS_HALF_TAPS (when
 // defined: the tap count as a constant instead of a uniform), SSS_JITTER, SSS_FOLLOW_SURFACE,
-// SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag).
+// SSS_PROFILE_IDS and SSS_PROFILES (see separable_blur.frag). The reach and centre delta
+// (u_footprint), the tap count (u_half_taps), the first tap that jitters (u_jitter_from) and the
+// depth Gaussian's u_inv_two_variance are fields of the pass's uniform struct (the blur's or the
+// cross-bilateral pass's, module/src/gl/pass_uniforms.hpp); the tables are uniforms of their own.
 
 #if SSS_PROFILE_IDS
 // Per-pixel profiles (SSS_PROFILE_IDS 1): every profile's table for this pass in one uniform block
@@ -22,13 +25,9 @@ float sss_inv_two_variance;
 #define SSS_INV_TWO_VARIANCE sss_inv_two_variance
 #else
 uniform vec4 u_cdf[SSS_CDF_ENTRIES];          // rgb: ∫_0^x kernel at x = reach·(j/(N-1))²; the last: up to ∞
-uniform vec4 u_footprint;                     // x: the table's reach in profile mm, yzw: the centre delta
 #define SSS_CDF(j) u_cdf[j]
-#define SSS_FOOTPRINT u_footprint
-#if SSS_FOLLOW_SURFACE == 2
-uniform float u_inv_two_variance;             // 1 / (2v) of the term's depth Gaussian, v in mm²
-#define SSS_INV_TWO_VARIANCE u_inv_two_variance
-#endif
+#define SSS_FOOTPRINT u_footprint             // x: the table's reach in profile mm, yzw: the centre delta
+#define SSS_INV_TWO_VARIANCE u_inv_two_variance  // 1 / (2v) of the term's depth Gaussian, v in mm²
 #endif
 uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·u_spacing[i-1] (pixels)
 #ifdef SSS_HALF_TAPS
@@ -40,11 +39,7 @@ uniform float u_spacing[SSS_MAX_HALF_TAPS];   // sparse layout: tap i at reach·
 // llvmpipe 1.8 % more on the 1080p close-up, the uniform 0.2 % more than the literals.)
 const int kSssHalfTaps = SSS_HALF_TAPS;       // the most taps on either side
 #else
-uniform int u_half_taps;                      // the most taps on either side
-#define kSssHalfTaps u_half_taps
-#endif
-#if SSS_JITTER
-uniform int u_jitter_from;                    // the first sparse tap (1 = next to the centre) that jitters
+#define kSssHalfTaps u_half_taps              // the most taps on either side
 #endif
 
 // The pass's kernel integrated from 0 to `fraction` of its reach, as

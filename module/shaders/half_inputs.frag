@@ -16,10 +16,10 @@
 
 SSS_BINDING(0) uniform highp usampler2D u_source;    // pass_inputs.frag's colour and distance bits
 SSS_BINDING(1) uniform highp usampler2D u_strength;  // pass_inputs.frag's strength bits
-uniform ivec4 u_rect;                  // the drawn rectangle's first and last pixel: x0, y0, x1, y1
 uniform float u_depth_factor[16];      // per profile: 1 / the kernel's reach in world units (0: no follow-surface)
-uniform int u_profile_count;
-uniform float u_merge_reach;           // math::kHalfResolutionMergeReach
+// u_rect (the drawn rectangle's first and last pixel: x0, y0, x1, y1), u_profile_count and
+// u_merge_reach (math::kHalfResolutionMergeReach) are the reduction's uniform struct, declared with
+// the variant's #defines (module/src/gl/pass_uniforms.hpp).
 
 layout(location = 0) out uvec4 o_taps;
 layout(location = 1) out uint o_strength;

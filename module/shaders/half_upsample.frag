@@ -32,11 +32,10 @@ SSS_BINDING(4) uniform highp sampler2D u_tables;
 uniform vec4 u_looks[16];     // per profile: pixels per mm on x and y (clip w = 1, strength 1), depth factor
 // u_profile_count, u_half_rect (the half-size texels the passes covered: first and last, x0, y0,
 // x1, y1), u_rect (the drawn rectangle's first and last pixel), u_half_taps (the kernel's most taps
-// per side), u_spacing (its sparse layout's first two taps, as shares of the reach) and the pieces'
-// numbers are the upsample's uniform struct, declared with the variant's #defines
+// per side), u_spacing (its sparse layout's first two taps, as shares of the reach), u_min_reach
+// (math::kHalfResolutionMinReachPixels), u_min_weight (math::kHalfResolutionMinWeight) and the
+// pieces' numbers are the upsample's uniform struct, declared with the variant's #defines
 // (module/src/gl/pass_uniforms.hpp).
-uniform float u_min_reach;    // math::kHalfResolutionMinReachPixels
-uniform float u_min_weight;   // math::kHalfResolutionMinWeight
 
 out vec4 o_color;
 

@@ -23,10 +23,9 @@ SSS_BINDING(0) uniform usampler2D u_lowest;     // resolve: the translucent samp
 SSS_BINDING(1) uniform sampler2D u_blurred;     // the vertical pass's single-sample result
 SSS_BINDING(2) uniform sampler2D u_resolved;    // the resolve pass's colour
 SSS_BINDING(3) uniform sampler2D u_translucent; // resolve: the translucent samples' mean rgb (read where one would go below 0)
-uniform int u_samples;
-#if SSS_SAMPLE_MASK_OUTPUT == 0
-uniform int u_sample;  // the sample this draw writes (the one glSampleMaski lets through)
-#endif
+// u_samples and (SSS_SAMPLE_MASK_OUTPUT 0) u_sample, the sample this draw writes (the one
+// glSampleMaski lets through), are the write-back's uniform struct, declared with the variant's
+// #defines (module/src/gl/pass_uniforms.hpp).
 layout(location = 0, index = 0) out vec4 o_add;    // a (src0)
 layout(location = 0, index = 1) out vec4 o_scale;  // b (src1, the destination's factor)
 

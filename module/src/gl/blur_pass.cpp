@@ -18,10 +18,9 @@ bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t te
 }
 
 namespace {
-// The pass's cumulative table, its reach and centre delta, the sparse layout's spacing, the most
-// taps per side, the first that jitters and the depth Gaussian of the term.
-void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& run, const math::PassTerm& t,
-                   const math::PassTaps& taps) {
+// The pass's tables: the cumulative one and the sparse layout's spacing (its reach, centre delta and
+// tap count are in the struct, pass_uniforms.hpp).
+void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& run, const math::PassTaps& taps) {
   if (p.cdf >= 0) {  // a per-pixel profile variant reads its tables from a uniform block instead
     const math::FootprintTable& table = taps.footprint;
     std::vector<float> packed;
@@ -29,17 +28,8 @@ void upload_kernel(const Functions& f, const BlurProgram& p, const FilterRun& ru
     for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
     f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
   }
-  // Apart from the table: a debug view's pass reads the reach alone (its table is optimised away).
-  if (p.footprint >= 0) {
-    const math::FootprintTable& table = taps.footprint;
-    f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
-  }
-  // (A fragment variant at a preset count has its tap count as a constant: no u_half_taps.)
   const std::vector<float>& spacing = run.kernel->spacing;
   if (!spacing.empty() && p.spacing >= 0) f.Uniform1fv(p.spacing, static_cast<GLsizei>(spacing.size()), spacing.data());
-  if (p.half_taps >= 0) f.Uniform1i(p.half_taps, static_cast<GLint>(spacing.size()));
-  if (p.jitter_from >= 0) f.Uniform1i(p.jitter_from, run.kernel->jitter_from);
-  if (p.inv_two_variance >= 0) f.Uniform1f(p.inv_two_variance, 0.5f / t.depth_variance_mm2);
 }
 }  // namespace
 
@@ -49,7 +39,7 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   const math::PassTerm& t = run.kernel->terms[term];
   f.UseProgram(p.program);
   if (p.kernel_revision != run.kernel_revision || p.uploaded_term != term || p.uploaded_axis != axis) {
-    upload_kernel(f, p, run, t, axis == 0 ? t.horizontal : t.vertical);
+    upload_kernel(f, p, run, axis == 0 ? t.horizontal : t.vertical);
     p.kernel_revision = run.kernel_revision;
     p.uploaded_term = term;
     p.uploaded_axis = axis;
@@ -59,8 +49,8 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   // The pass's struct in one call (a variant whose depth correction is the Gaussian reads
   // u_inv_two_variance, and its follow-surface number in profile mm per world unit).
   const bool rounds = round_to_half >= 0 ? round_to_half != 0 : writes_half_float(f, run, term, axis);
-  const BlurUniforms u = fill_blur_uniforms(run, axis, p.inv_two_variance >= 0, rounds);
-  upload_uniforms(f, kBlurUniforms, p.fields, u.values.data());
+  p.uniforms = fill_blur_uniforms(run, term, axis, p.gaussian_depth, rounds);
+  upload_uniforms(f, kBlurUniforms, p.fields, p.uniforms.values.data());
   if (p.profile >= 0) {
     // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
     std::array<float, 4 * math::kMaxProfiles> looks{};
@@ -72,6 +62,11 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
     }
     f.Uniform4fv(p.profile, run.profile_count, looks.data());
   }
+}
+
+void set_debug_fill(const Functions& f, BlurProgram& p, bool fill) {
+  p.uniforms.set(kBlurUniforms, BlurField::debug_fill, fill ? 1.0f : 0.0f);
+  upload_uniforms(f, kBlurUniforms, p.fields, p.uniforms.values.data());
 }
 
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {

@@ -18,12 +18,15 @@ namespace sss::gl {
 // write the intermediate (FilterRun::intermediate_format), vertical ones the sum of terms (RGBA32F; RGBA16F on ES) or, the
 // last, the host's colour or output.
 bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t term, int axis);
-// The kernel uniforms (uploaded only when the kernel, term or axis changed since the program last
+// The kernel's tables (uploaded only when the kernel, term or axis changed since the program last
 // ran) and the pass's struct (pass_uniforms.hpp, one call); leaves `program` in use.
 // `round_to_half`: -1 as writes_half_float says, else 0 or 1 (the half-size vertical pass, which
 // writes the intermediate's format, not the target's).
 void set_blur_uniforms(PassContext& ctx, BlurProgram& program, const FilterRun& run, std::size_t term, int axis,
                        int round_to_half = -1);
+// A debug view's vertical pass: the struct set_blur_uniforms last uploaded, again with u_debug_fill
+// `fill` (1: the program writes (0, 0, 0, 1) wherever it draws); `program` in use.
+void set_debug_fill(const Functions& gl, BlurProgram& program, bool fill);
 // The compute pass's input and the host's depth on their units, with the module's samplers.
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth);
 // The fragment pass's inputs (RGBA32UI colour and distance, R32UI strength: pass_inputs.frag, or

@@ -34,11 +34,12 @@ sss_result draw_colour_copy(PassContext& ctx, const FilterRun& run, const FrameP
   const ColourCopyProgram& program = *p.colour_copy;
   f.UseProgram(program.program);
   // The copy has the intermediate's format (passes_run): rounded to nearest where that is RGBA16F.
-  f.Uniform1i(program.round_to_half, run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
+  const ColourCopyUniforms u = fill_colour_copy_uniforms(run);
+  upload_uniforms(f, kColourCopyUniforms, program.fields, u.values.data());
   bind_texture(ctx, unit::source, run.color.name, ctx.objects.sampler);
   // GL_NEAREST on ES, where an R32F texture is not filterable (texelFetch needs it complete).
   if (plan.copy.strength_texture) bind_texture(ctx, unit::strength, run.strength.name, ctx.objects.depth_sampler);
-  if (albedo) bind_albedo(ctx, run, plan.copy.albedo, -1, program.texturing);
+  if (albedo) bind_albedo(ctx, run, plan.copy.albedo, program.texturing);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
   return SSS_OK;

@@ -36,14 +36,10 @@ void set_cbf_uniforms(const Functions& f, CbfProgram& p, const FilterRun& run, i
     packed.reserve(table.half_cdf.size() * 4);
     for (const auto& entry : table.half_cdf) packed.insert(packed.end(), {entry[0], entry[1], entry[2], 0.0f});
     f.Uniform4fv(p.cdf, static_cast<GLsizei>(packed.size() / 4), packed.data());
-    f.Uniform4f(p.footprint, table.reach_mm, table.delta[0], table.delta[1], table.delta[2]);
     f.Uniform1fv(p.spacing, static_cast<GLsizei>(kernel.spacing.size()), kernel.spacing.data());
-    f.Uniform1i(p.half_taps, static_cast<GLint>(kernel.spacing.size()));
-    f.Uniform4f(p.spike_blend, kernel.spike_blend[0], kernel.spike_blend[1], kernel.spike_blend[2], 0.0f);
-    f.Uniform4f(p.inv_two_variance, kernel.inv_two_variance[0], kernel.inv_two_variance[1],
-                kernel.inv_two_variance[2], 0.0f);
     p.kernel_revision = run.cbf_kernel_revision;
   }
+  // The pass's struct, with the kernel's reach, tap count, spike blend and widths (pass_uniforms.hpp).
   const CbfUniforms u = fill_cbf_uniforms(run, axis, writes_half_float(f, run, 0, axis));
   upload_uniforms(f, kCbfUniforms, p.fields, u.values.data());
 }

@@ -53,7 +53,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const FrameP
     }
   }
   f.UseProgram(p.program);
-  const InputsUniforms u = fill_inputs_uniforms(run.constants);
+  const InputsUniforms u = fill_inputs_uniforms(run);
   upload_uniforms(f, kInputsUniforms, p.fields, u.values.data());
   if (p.color_image >= 0) {
     // As bind_packed_inputs' image taps: the colour was last written as a render target.
@@ -64,7 +64,7 @@ sss_result draw_pass_inputs(PassContext& ctx, const FilterRun& run, const FrameP
   }
   bind_texture(ctx, unit::depth, run.depth.name, ctx.objects.depth_sampler);
   if (plan.inputs.profile_ids == 1) bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
-  if (plan.inputs.albedo != 0) bind_albedo(ctx, run, plan.inputs.albedo, p.round_to_half, p.texturing);
+  if (plan.inputs.albedo != 0) bind_albedo(ctx, run, plan.inputs.albedo, p.texturing);
   draw_cover(ctx, p.tile_grid);
   // The host's colour leaves the image unit: the next binding there is the module's (or, without
   // the state restore, none).
@@ -141,10 +141,9 @@ void draw_last_vertical(PassContext& ctx, const FilterRun& run, const Step& step
     // A view: the pixels the culling keeps from the passes are left alone, (0, 0, 0, 1), drawn by
     // the same program (no scissor box to set, no clear of the host's texture outside the viewport).
     set_culling(f, run, NOTEQUAL);
-    const GLint fill = p.fields.at[static_cast<std::size_t>(BlurField::debug_fill)];
-    f.Uniform1i(fill, 1);
+    set_debug_fill(f, p, true);
     draw_cover(ctx, p.tile_grid);
-    f.Uniform1i(fill, 0);
+    set_debug_fill(f, p, false);
   } else if (step.copy_untouched) {
     set_culling(f, run, NOTEQUAL);
     draw_copy(ctx, run.untouched_colour());

@@ -106,12 +106,11 @@ void draw_reduction(PassContext& ctx, const FilterRun& run, const HalfInputsProg
   f.BindFramebuffer(DRAW_FRAMEBUFFER, t.half_inputs_framebuffer);
   DebugGroup group(f, ctx.labels, "sss half-size inputs");
   f.UseProgram(p.program);
-  const std::array<int, 4>& d = run.draw_rect;
-  f.Uniform4i(p.rect, d[0], d[1], d[0] + d[2] - 1, d[1] + d[3] - 1);
+  const HalfInputsUniforms u = fill_half_inputs_uniforms(run);
+  upload_uniforms(f, kHalfInputsUniforms, p.fields, u.values.data());
   std::array<float, 16> factors{};
   for (int i = 0; i < run.profile_count; ++i) factors[static_cast<std::size_t>(i)] = constants_of(run, i).follow_surface_factor;
   f.Uniform1fv(p.depth_factor, 16, factors.data());
-  f.Uniform1i(p.profile_count, run.profile_count);
   bind_texture(ctx, unit::source, t.pass_taps, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::pass_strength, t.pass_strength, ctx.objects.nearest_sampler);
   draw_cover(ctx, p.tile_grid);

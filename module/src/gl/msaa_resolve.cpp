@@ -70,7 +70,6 @@ void draw_sample_writes(PassContext& ctx, const FilterRun& run, const SampleWrit
   set_write_back_state(f);
   f.Viewport(run.viewport[0], run.viewport[1], run.viewport[2], run.viewport[3]);
   f.UseProgram(p.program);
-  f.Uniform1i(p.samples, run.color.samples);
   // The host's colour, which this pass draws into, stays bound to no unit (the resolve left it on unit 0).
   f.ActiveTexture(TEXTURE0 + unit::msaa_color);
   f.BindTexture(TEXTURE_2D_MULTISAMPLE, 0);
@@ -79,13 +78,16 @@ void draw_sample_writes(PassContext& ctx, const FilterRun& run, const SampleWrit
   bind_texture(ctx, unit::msaa_resolved, t.resolved_color, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::msaa_translucent, t.translucent_mean, ctx.objects.nearest_sampler);
   if (p.one_draw) {
+    const SampleWriteUniforms u = fill_sample_write_uniforms(run, 0);
+    upload_uniforms(f, kSampleWriteUniforms, p.fields, u.values.data());
     f.DrawArrays(TRIANGLES, 0, 3);
     ++ctx.draws;
   } else {
     f.Enable(SAMPLE_MASK);
     for (int i = 0; i < run.color.samples; ++i) {
       f.SampleMaski(0, 1u << static_cast<unsigned>(i));
-      f.Uniform1i(p.sample, i);
+      const SampleWriteUniforms u = fill_sample_write_uniforms(run, i);
+      upload_uniforms(f, kSampleWriteUniforms, p.fields, u.values.data());
       f.DrawArrays(TRIANGLES, 0, 3);
       ++ctx.draws;
     }

@@ -159,10 +159,9 @@ void bind_original(PassContext& ctx, const FilterRun& run) {
   bind_texture(ctx, unit::original, run.keeps_untouched() ? 0 : run.untouched_colour(), ctx.objects.sampler);
 }
 
-void bind_albedo(PassContext& ctx, const FilterRun& run, int albedo, GLint round_to_half, GLint texturing) {
+void bind_albedo(PassContext& ctx, const FilterRun& run, int albedo, GLint texturing) {
   const Functions& f = ctx.gl;
   bind_texture(ctx, unit::albedo, run.albedo.name, ctx.objects.nearest_sampler);
-  if (round_to_half >= 0) f.Uniform1i(round_to_half, run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1 : 0);
   if (albedo != 3) return;
   bind_texture(ctx, unit::profile_ids, run.profile_ids.name, ctx.objects.nearest_sampler);
   float modes[SSS_MAX_PROFILES] = {};

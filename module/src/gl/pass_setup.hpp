@@ -106,11 +106,10 @@ void bind_texture(PassContext& ctx, GLuint unit, GLuint texture, GLuint sampler)
 // (the host's colour is then the target, and a texture must not be read and written at once).
 void bind_original(PassContext& ctx, const FilterRun& run);
 // A texturing mode's albedo (module/shaders/albedo.glsl) on its unit, where it stays for the frame
-// (the pass that writes the target reads it there too), and for the program in use: the quotient
-// rounded to half float where the passes' copy of the colour would be RGBA16F (`round_to_half`, its
-// location; -1: the program sets it itself) and, for SSS_ALBEDO 3 (`albedo`), each profile's mode
-// (`texturing`), with the host's indices on their unit.
-void bind_albedo(PassContext& ctx, const FilterRun& run, int albedo, GLint round_to_half, GLint texturing);
+// (the pass that writes the target reads it there too), and for SSS_ALBEDO 3 (`albedo`) each
+// profile's mode into the program in use (`texturing`, its table's location), with the host's
+// indices on their unit. (Whether the quotient is rounded to half float is in the program's struct.)
+void bind_albedo(PassContext& ctx, const FilterRun& run, int albedo, GLint texturing);
 void draw_copy(PassContext& ctx, GLuint source);
 // The bound program's draw over the viewport: one triangle, or with the masked path's tile culling
 // on (ctx.tile_bands) its bands of tiles, `tile_grid` (the program's u_tile_grid) set first.

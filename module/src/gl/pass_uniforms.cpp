@@ -1,6 +1,9 @@
 #include "pass_uniforms.hpp"
 
+#include <cstring>
 #include <string>
+
+#include "math/half_resolution.hpp"
 
 namespace sss::gl {
 
@@ -12,7 +15,7 @@ const char* glsl_type(const UniformField& f) {
     case UniformKind::boolean: return "bool";
     case UniformKind::integer: return "int";
     case UniformKind::integers: return "ivec4";
-    case UniformKind::uint_split: return "uint";
+    case UniformKind::uint_bits: return "uint";
     default: return f.size == 1 ? "float" : f.size == 2 ? "vec2" : "vec4";
   }
 }
@@ -53,6 +56,11 @@ void set_rect(const std::array<int, 4>& r, float* out) {
   for (std::size_t i = 0; i < 4; ++i) out[i] = static_cast<float>(r[i]);
 }
 
+// A footprint table's reach and centre delta (footprint_cells.glsl's u_footprint).
+std::array<float, 4> footprint_of(const math::FootprintTable& table) {
+  return {table.reach_mm, table.delta[0], table.delta[1], table.delta[2]};
+}
+
 // The first and last pixel of a rectangle (x0, y0, x1, y1).
 std::array<int, 4> corners(const std::array<int, 4>& r) { return {r[0], r[1], r[0] + r[2] - 1, r[1] + r[3] - 1}; }
 
@@ -73,34 +81,41 @@ UniformLocations find_uniforms(const Functions& gl, GLuint program, const Unifor
   return l;
 }
 
-void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations, const float* values) {
+void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations,
+                     const std::int32_t* values) {
   for (std::size_t i = 0; i < s.count; ++i) {
     const GLint at = locations.at[i];
     if (at < 0) continue;
     const UniformField& f = s.fields[i];
-    const float* v = values + f.offset;
+    const std::int32_t* v = values + f.offset;
+    std::int32_t* held = locations.held.data() + f.offset;
+    const std::size_t bytes = sizeof(std::int32_t) * static_cast<std::size_t>(f.size);
+    if (locations.holds_values && std::memcmp(held, v, bytes) == 0) continue;
+    std::memcpy(held, v, bytes);
     switch (f.kind) {
       case UniformKind::boolean:
-      case UniformKind::integer: gl.Uniform1i(at, static_cast<GLint>(v[0])); break;
-      case UniformKind::integers:
-        gl.Uniform4i(at, static_cast<GLint>(v[0]), static_cast<GLint>(v[1]), static_cast<GLint>(v[2]),
-                     static_cast<GLint>(v[3]));
+      case UniformKind::integer: gl.Uniform1i(at, v[0]); break;
+      case UniformKind::integers: gl.Uniform4i(at, v[0], v[1], v[2], v[3]); break;
+      case UniformKind::uint_bits: gl.Uniform1ui(at, static_cast<GLuint>(v[0])); break;
+      default: {
+        float x[4];
+        std::memcpy(x, v, sizeof(float) * static_cast<std::size_t>(f.size));
+        if (f.size == 1) gl.Uniform1f(at, x[0]);
+        if (f.size == 2) gl.Uniform2f(at, x[0], x[1]);
+        if (f.size == 4) gl.Uniform4f(at, x[0], x[1], x[2], x[3]);
         break;
-      case UniformKind::uint_split:
-        gl.Uniform1ui(at, static_cast<GLuint>(v[0]) * 65536u + static_cast<GLuint>(v[1]));
-        break;
-      default:
-        if (f.size == 1) gl.Uniform1f(at, v[0]);
-        if (f.size == 2) gl.Uniform2f(at, v[0], v[1]);
-        if (f.size == 4) gl.Uniform4f(at, v[0], v[1], v[2], v[3]);
-        break;
+      }
     }
   }
+  locations.holds_values = true;
 }
 
-BlurUniforms fill_blur_uniforms(const FilterRun& run, int axis, bool gaussian_depth, bool round_to_half) {
+BlurUniforms fill_blur_uniforms(const FilterRun& run, std::size_t term, int axis, bool gaussian_depth,
+                                bool round_to_half) {
   const math::PassConstants& k = run.constants;
   const UniformStruct& s = kBlurUniforms;
+  const math::PassTerm& t = run.kernel->terms[term];
+  const math::FootprintTable& table = (axis == 0 ? t.horizontal : t.vertical).footprint;
   BlurUniforms u;
   float ndc[2], terms[4], clamp[4], rect[4];
   set_depth(k, ndc, terms);
@@ -115,7 +130,11 @@ BlurUniforms fill_blur_uniforms(const FilterRun& run, int axis, bool gaussian_de
   u.set(s, BlurField::ndc_from_depth, ndc);
   u.set(s, BlurField::clamp, clamp);
   u.set_uint(s, BlurField::noise_index, run.noise_index);
+  u.set(s, BlurField::jitter_from, static_cast<float>(run.kernel->jitter_from));
+  u.set(s, BlurField::half_taps, static_cast<float>(run.kernel->spacing.size()));
   u.set(s, BlurField::rect, rect);
+  u.set(s, BlurField::footprint, footprint_of(table).data());
+  u.set(s, BlurField::inv_two_variance, 0.5f / t.depth_variance_mm2);
   return u;
 }
 
@@ -132,15 +151,33 @@ CbfUniforms fill_cbf_uniforms(const FilterRun& run, int axis, bool round_to_half
   u.set(s, CbfField::round_to_half, round_to_half ? 1.0f : 0.0f);
   u.set(s, CbfField::ndc_from_depth, ndc);
   u.set(s, CbfField::clamp, clamp);
+  const math::CbfKernel& kernel = *run.cbf_kernel;
+  const float spike_blend[4] = {kernel.spike_blend[0], kernel.spike_blend[1], kernel.spike_blend[2], 0.0f};
+  const float inv_two_variance[4] = {kernel.inv_two_variance[0], kernel.inv_two_variance[1],
+                                     kernel.inv_two_variance[2], 0.0f};
+  u.set(s, CbfField::half_taps, static_cast<float>(kernel.spacing.size()));
+  u.set(s, CbfField::footprint, footprint_of(kernel.table).data());
+  u.set(s, CbfField::spike_blend, spike_blend);
+  u.set(s, CbfField::inv_two_variance, inv_two_variance);
   return u;
 }
 
-InputsUniforms fill_inputs_uniforms(const math::PassConstants& k) {
+InputsUniforms fill_inputs_uniforms(const FilterRun& run) {
   InputsUniforms u;
   float ndc[2], terms[4];
-  set_depth(k, ndc, terms);
+  set_depth(run.constants, ndc, terms);
   u.set(kInputsUniforms, InputsField::ndc_from_depth, ndc);
   u.set(kInputsUniforms, InputsField::depth_terms, terms);
+  // The quotient colour / albedo rounded as the copy rounds it where the passes read RGBA16F.
+  u.set(kInputsUniforms, InputsField::round_to_half,
+        run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1.0f : 0.0f);
+  return u;
+}
+
+ColourCopyUniforms fill_colour_copy_uniforms(const FilterRun& run) {
+  ColourCopyUniforms u;
+  u.set(kColourCopyUniforms, ColourCopyField::round_to_half,
+        run.intermediate_format() == static_cast<GLint>(RGBA16F) ? 1.0f : 0.0f);
   return u;
 }
 
@@ -156,6 +193,24 @@ ResolveUniforms fill_resolve_uniforms(const FilterRun& host) {
   u.set(s, ResolveField::round_to_half, host.color.internal_format == static_cast<GLint>(RGBA16F) ? 1.0f : 0.0f);
   u.set(s, ResolveField::ndc_from_depth, ndc);
   u.set(s, ResolveField::depth_terms, terms);
+  return u;
+}
+
+SampleWriteUniforms fill_sample_write_uniforms(const FilterRun& host, int sample) {
+  SampleWriteUniforms u;
+  u.set(kSampleWriteUniforms, SampleWriteField::samples, static_cast<float>(host.color.samples));
+  u.set(kSampleWriteUniforms, SampleWriteField::sample, static_cast<float>(sample));
+  return u;
+}
+
+HalfInputsUniforms fill_half_inputs_uniforms(const FilterRun& run) {
+  const UniformStruct& s = kHalfInputsUniforms;
+  HalfInputsUniforms u;
+  float rect[4];
+  set_rect(corners(run.draw_rect), rect);
+  u.set(s, HalfInputsField::rect, rect);
+  u.set(s, HalfInputsField::profile_count, static_cast<float>(run.profile_count));
+  u.set(s, HalfInputsField::merge_reach, math::kHalfResolutionMergeReach);
   return u;
 }
 
@@ -175,6 +230,8 @@ UpsampleUniforms fill_upsample_uniforms(const FilterRun& run, const std::array<i
   u.set(s, UpsampleField::spacing, first_two);
   u.set(s, UpsampleField::half_rect, half_rect);
   u.set(s, UpsampleField::rect, rect);
+  u.set(s, UpsampleField::min_reach, math::kHalfResolutionMinReachPixels);
+  u.set(s, UpsampleField::min_weight, math::kHalfResolutionMinWeight);
   return u;
 }
 

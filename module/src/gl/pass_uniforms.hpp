@@ -1,24 +1,32 @@
 // Each pass kind's per-draw uniforms as one struct: a table of fields (name, place, size, kind),
 // from which the shader's declarations are written (uniform_struct_glsl, into every variant's
 // defines: the GLSL declares none of its own), the program's locations are found once at link
-// (UniformLocations), and one draw's values are filled by the pass kind's one function from the
-// frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and set
-// in one call (upload_uniforms). A new uniform is one line of its pass kind's table and the line
-// that fills it (pass_uniforms.cpp).
+// (find_uniforms), and one draw's values are filled by the pass kind's one function from the
+// frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and
+// the kernel, and set in one call (upload_uniforms). A new uniform is one line of its pass kind's
+// table and the line that fills it (pass_uniforms.cpp). Every per-draw number a program reads is
+// in its struct; only tables (arrays: u_cdf, u_spacing, u_profile, u_looks, u_texturing,
+// u_depth_factor), samplers and the vertex stage's u_tile_grid are uniforms of their own
+// (tests/gl/uniform_structs_test.cpp checks every program the paths build).
 //
-// The fields stay separate GLSL uniforms. Two ways of making a pass kind one GL object were
-// measured against the bounds of issue 47: a uniform array (one `vec4` array and a #define per
-// field) costs llvmpipe 0.12 instructions a pixel in a full-screen draw (callgrind, the empty
-// 640x360 frame on the fragment path: 27,800 instructions more of the inputs draw alone), and a
-// std140 block reads a buffer bound to an indexed binding point, the host's context state, which the
-// state guard would save and restore every frame (more queries per steady frame). The pieces the
-// pass kinds share declare a uniform only where no struct does (depth.glsl, pass_surface.glsl,
-// nearest_half.glsl, jitter.glsl: `#ifndef SSS_UNIFORM_u_depth_terms`).
+// The fields stay separate GLSL uniforms, one location each. Making a struct one GL object was
+// measured (callgrind, scripts/cost-probe.sh) against the bounds of issue 47:
+//   - a uniform array of ivec4, each field a #define that reads its part (floats through
+//     intBitsToFloat, so exact): bit-identical images, but llvmpipe's passes cost more, the 640x360
+//     head close-up 133.87 M -> 134.84 M instructions on the default path (+0.72 %) and +0.29 % on
+//     the half-resolution path, with the same fields as separate uniforms at 133.87 M;
+//   - a vec4 array with the integers held as floats: its int() and `!= 0.0` conversions cost 0.12
+//     instructions a pixel (the empty 640x360 fragment frame: 27,800 more in the inputs draw alone);
+//   - a std140 block reads a buffer bound to an indexed binding point, the host's context state,
+//     which the state guard would save and restore every frame (four more queries per steady frame).
+// The pieces the pass kinds share declare a uniform only where no struct does (depth.glsl,
+// pass_surface.glsl, nearest_half.glsl, jitter.glsl: `#ifndef SSS_UNIFORM_u_depth_terms`).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <string>
 
@@ -33,51 +41,67 @@ enum class UniformKind {
   boolean,     // 0 or 1: a bool
   integer,     // a small integer held exactly in a float: an int
   integers,    // four small integers: an ivec4
-  uint_split,  // a 32-bit uint as two 16-bit halves (high, low): a uint
+  uint_bits,   // a 32-bit uint (its bits in the value): a uint
 };
 
 struct UniformField {
   const char* glsl_name;
-  int offset;  // in floats; a field never straddles a vec4
-  int size;    // floats
+  int offset;  // in 32-bit values; a field never straddles an ivec4
+  int size;    // 32-bit values: 1, 2 or 4
   UniformKind kind;
 };
 
-// A pass kind's struct: a name for the log, its size in vec4s and its fields (by an enum of the kind's).
+// A pass kind's struct: a name for the log, its size in vectors of four values and its fields (by
+// an enum of the kind's).
 struct UniformStruct {
   const char* name;
   int vectors;
   const UniformField* fields;
   std::size_t count;
 };
-// The most fields of a struct.
-inline constexpr std::size_t kMaxUniformFields = 12;
 
-// A program's locations of a struct's fields (-1: the program does not use the field).
+// The most fields of a struct, and its most vectors of four values.
+inline constexpr std::size_t kMaxUniformFields = 16;
+inline constexpr std::size_t kMaxUniformVectors = 9;
+
+// A program's locations of a struct's fields (-1: the program does not use the field), and the
+// values the program holds: a uniform keeps its value in the program, so a draw sets only the
+// fields that changed since the program's last draw (a steady frame's draws set few or none).
 struct UniformLocations {
   std::array<GLint, kMaxUniformFields> at{};
+  mutable std::array<std::int32_t, 4 * kMaxUniformVectors> held{};
+  mutable bool holds_values = false;  // false until the first upload: every field is set then
   UniformLocations() { at.fill(-1); }
 };
 
-// One draw's values of a struct of `Vectors` vec4s, in the shader's layout.
+// One draw's values of a struct of `Vectors` vectors of four, in the table's layout: each field's
+// 32-bit values (a float's bits, an integer as itself).
 template <int Vectors>
 struct UniformValues {
-  std::array<float, 4 * Vectors> values{};
+  std::array<std::int32_t, 4 * Vectors> values{};
+  // `v` as the field's kind reads it: a float field takes the floats' bits, an integer, integers or
+  // boolean field the floats as integers (they hold small integers exactly).
   template <typename Field>
   void set(const UniformStruct& s, Field field, const float* v) {
     const UniformField& f = s.fields[static_cast<std::size_t>(field)];
-    for (int i = 0; i < f.size; ++i) values[static_cast<std::size_t>(f.offset + i)] = v[i];
+    for (int i = 0; i < f.size; ++i) {
+      std::int32_t& out = values[static_cast<std::size_t>(f.offset + i)];
+      if (f.kind == UniformKind::floats) {
+        std::memcpy(&out, &v[i], sizeof out);
+      } else {
+        out = static_cast<std::int32_t>(v[i]);
+      }
+    }
   }
   template <typename Field>
   void set(const UniformStruct& s, Field field, float v) {
     set(s, field, &v);
   }
-  // Two exact 16-bit halves (a UniformKind::uint_split field): a float holds integers to 2^24.
+  // A UniformKind::uint_bits field.
   template <typename Field>
   void set_uint(const UniformStruct& s, Field field, std::uint32_t v) {
     const auto at = static_cast<std::size_t>(s.fields[static_cast<std::size_t>(field)].offset);
-    values[at] = static_cast<float>(v >> 16u);
-    values[at + 1] = static_cast<float>(v & 0xFFFFu);
+    std::memcpy(&values[at], &v, sizeof v);
   }
 };
 
@@ -86,64 +110,93 @@ struct UniformValues {
 std::string uniform_struct_glsl(const UniformStruct& s);
 // Each field's location in `program` (once, at link).
 UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s);
-// One draw's values into the program in use: a glUniform call per field it uses.
-void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations, const float* values);
+// One draw's values into the program in use: a glUniform call per field it uses whose value it
+// does not hold already.
+void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations,
+                     const std::int32_t* values);
 
 // ---- The separable blur pass (separable_blur.frag, blur_debug_view.frag, separable_blur.comp) ----
 // (The table's offsets pack the values a draw uploads; the GLSL types come from the kinds.)
 enum class BlurField : int {
-  pixels_per_mm,   // along the axis, at clip w = 1 and strength 1 (blur_pixel.glsl)
-  follow_surface,  // 1 / the reach in world units (the depth Gaussian: profile mm per world unit)
-  round_to_half,   // what the pass writes is rounded to half float (nearest_half.glsl)
-  profile_count,   // per-pixel profiles: the profiles set
-  ndc_from_depth,  // z_ndc = depth · x + y (depth.glsl)
-  pixel_span,      // world width of a window pixel per unit of clip w, x and y (pass_surface.glsl)
-  depth_terms,     // projection m10, m11, m14, m15 (depth.glsl)
-  clamp,           // tap positions are kept inside (xy min, zw max), in pixels
-  ray_slope,       // the view ray's lateral slope at window p: p · xy + zw (pass_surface.glsl)
-  noise_index,     // sss_frame.noise_index (jitter.glsl)
-  debug_fill,      // a debug view's vertical pass: 1 writes (0, 0, 0, 1) everywhere it draws
-  rect,            // the compute passes: the pixels they write (x, y, width, height)
+  pixels_per_mm,     // along the axis, at clip w = 1 and strength 1 (blur_pixel.glsl)
+  follow_surface,    // 1 / the reach in world units (the depth Gaussian: profile mm per world unit)
+  round_to_half,     // what the pass writes is rounded to half float (nearest_half.glsl)
+  profile_count,     // per-pixel profiles: the profiles set
+  ndc_from_depth,    // z_ndc = depth · x + y (depth.glsl)
+  pixel_span,        // world width of a window pixel per unit of clip w, x and y (pass_surface.glsl)
+  depth_terms,       // projection m10, m11, m14, m15 (depth.glsl)
+  clamp,             // tap positions are kept inside (xy min, zw max), in pixels
+  ray_slope,         // the view ray's lateral slope at window p: p · xy + zw (pass_surface.glsl)
+  noise_index,       // sss_frame.noise_index (jitter.glsl)
+  jitter_from,       // the first sparse tap (1 = next to the centre) that jitters (footprint_cells.glsl)
+  debug_fill,        // a debug view's vertical pass: 1 writes (0, 0, 0, 1) everywhere it draws
+  half_taps,         // the most taps on either side (a variant at a preset count has it as a constant)
+  rect,              // the compute passes: the pixels they write (x, y, width, height)
+  footprint,         // x: the term's table's reach in profile mm, yzw: its centre delta (footprint_cells.glsl)
+  inv_two_variance,  // 1 / (2v) of the term's depth Gaussian, v in mm² (SSS_FOLLOW_SURFACE 2)
 };
 inline constexpr UniformField kBlurFields[] = {
-    {"u_pixels_per_mm", 0, 1, UniformKind::floats}, {"u_follow_surface", 1, 1, UniformKind::floats},
-    {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_profile_count", 3, 1, UniformKind::integer},
-    {"u_ndc_from_depth", 4, 2, UniformKind::floats}, {"u_pixel_span", 6, 2, UniformKind::floats},
-    {"u_depth_terms", 8, 4, UniformKind::floats},    {"u_clamp", 12, 4, UniformKind::floats},
-    {"u_ray_slope", 16, 4, UniformKind::floats},     {"u_noise_index", 20, 2, UniformKind::uint_split},
-    {"u_debug_fill", 22, 1, UniformKind::integer},   {"u_rect", 24, 4, UniformKind::integers},
+    {"u_pixels_per_mm", 0, 1, UniformKind::floats},    {"u_follow_surface", 1, 1, UniformKind::floats},
+    {"u_round_to_half", 2, 1, UniformKind::boolean},   {"u_profile_count", 3, 1, UniformKind::integer},
+    {"u_ndc_from_depth", 4, 2, UniformKind::floats},   {"u_pixel_span", 6, 2, UniformKind::floats},
+    {"u_depth_terms", 8, 4, UniformKind::floats},      {"u_clamp", 12, 4, UniformKind::floats},
+    {"u_ray_slope", 16, 4, UniformKind::floats},       {"u_noise_index", 20, 1, UniformKind::uint_bits},
+    {"u_jitter_from", 21, 1, UniformKind::integer},    {"u_debug_fill", 22, 1, UniformKind::integer},
+    {"u_half_taps", 23, 1, UniformKind::integer},      {"u_rect", 24, 4, UniformKind::integers},
+    {"u_footprint", 28, 4, UniformKind::floats},       {"u_inv_two_variance", 32, 1, UniformKind::floats},
 };
-inline constexpr int kBlurUniformVectors = 7;
-inline constexpr UniformStruct kBlurUniforms = {"blur pass", kBlurUniformVectors, kBlurFields, std::size(kBlurFields)};
+inline constexpr int kBlurUniformVectors = 9;
+inline constexpr UniformStruct kBlurUniforms = {"blur pass", kBlurUniformVectors, kBlurFields,
+                                                std::size(kBlurFields)};
 using BlurUniforms = UniformValues<kBlurUniformVectors>;
 // Term `term`'s pass along `axis` of `run`: `gaussian_depth` the variant's depth correction
 // (SSS_FOLLOW_SURFACE 2, whose u_follow_surface is profile mm per world unit), `round_to_half`
 // whether what it writes is rounded to half float.
-BlurUniforms fill_blur_uniforms(const FilterRun& run, int axis, bool gaussian_depth, bool round_to_half);
+BlurUniforms fill_blur_uniforms(const FilterRun& run, std::size_t term, int axis, bool gaussian_depth,
+                                bool round_to_half);
 
 // ---- The cross-bilateral passes (cbf_blur.frag) ----
 enum class CbfField : int {
-  pixels_per_mm, mm_per_world, round_to_half, ndc_from_depth, pixel_span, depth_terms, clamp, ray_slope
+  pixels_per_mm, mm_per_world, round_to_half, half_taps, ndc_from_depth, pixel_span, depth_terms, clamp, ray_slope,
+  footprint,         // the kernel's table's reach and centre delta (footprint_cells.glsl)
+  spike_blend,       // rgb: b, result = b · centre + (1 - b) · normalised sum
+  inv_two_variance,  // rgb: 1 / (2 σ²) per channel, mm⁻²
 };
 inline constexpr UniformField kCbfFields[] = {
     {"u_pixels_per_mm", 0, 1, UniformKind::floats},  {"u_mm_per_world", 1, 1, UniformKind::floats},
-    {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_ndc_from_depth", 4, 2, UniformKind::floats},
-    {"u_pixel_span", 6, 2, UniformKind::floats},     {"u_depth_terms", 8, 4, UniformKind::floats},
-    {"u_clamp", 12, 4, UniformKind::floats},         {"u_ray_slope", 16, 4, UniformKind::floats},
+    {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_half_taps", 3, 1, UniformKind::integer},
+    {"u_ndc_from_depth", 4, 2, UniformKind::floats}, {"u_pixel_span", 6, 2, UniformKind::floats},
+    {"u_depth_terms", 8, 4, UniformKind::floats},    {"u_clamp", 12, 4, UniformKind::floats},
+    {"u_ray_slope", 16, 4, UniformKind::floats},     {"u_footprint", 20, 4, UniformKind::floats},
+    {"u_spike_blend", 24, 4, UniformKind::floats},   {"u_inv_two_variance", 28, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kCbfUniforms = {"cross-bilateral pass", 5, kCbfFields, std::size(kCbfFields)};
-using CbfUniforms = UniformValues<5>;
+inline constexpr UniformStruct kCbfUniforms = {"cross-bilateral pass", 8, kCbfFields, std::size(kCbfFields)};
+using CbfUniforms = UniformValues<8>;
 CbfUniforms fill_cbf_uniforms(const FilterRun& run, int axis, bool round_to_half);
 
 // ---- The passes' inputs (pass_inputs.frag) ----
-enum class InputsField : int { ndc_from_depth, depth_terms };
+enum class InputsField : int {
+  ndc_from_depth, round_to_half,  // the albedo's quotient is rounded to half float (SSS_ALBEDO)
+  depth_terms
+};
 inline constexpr UniformField kInputsFields[] = {
     {"u_ndc_from_depth", 0, 2, UniformKind::floats},
+    {"u_round_to_half", 2, 1, UniformKind::boolean},
     {"u_depth_terms", 4, 4, UniformKind::floats},
 };
 inline constexpr UniformStruct kInputsUniforms = {"pass inputs", 2, kInputsFields, std::size(kInputsFields)};
 using InputsUniforms = UniformValues<2>;
-InputsUniforms fill_inputs_uniforms(const math::PassConstants& k);
+InputsUniforms fill_inputs_uniforms(const FilterRun& run);
+
+// ---- The module's copy of the colour (colour_copy.frag) ----
+enum class ColourCopyField : int { round_to_half };  // the albedo's quotient is rounded to half float
+inline constexpr UniformField kColourCopyFields[] = {
+    {"u_round_to_half", 0, 1, UniformKind::boolean},
+};
+inline constexpr UniformStruct kColourCopyUniforms = {"colour copy", 1, kColourCopyFields,
+                                                      std::size(kColourCopyFields)};
+using ColourCopyUniforms = UniformValues<1>;
+ColourCopyUniforms fill_colour_copy_uniforms(const FilterRun& run);
 
 // ---- The MSAA resolve (msaa_resolve.frag) ----
 enum class ResolveField : int { samples, depth_mode, round_to_half, ndc_from_depth, depth_terms };
@@ -152,24 +205,67 @@ inline constexpr UniformField kResolveFields[] = {
     {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_ndc_from_depth", 4, 2, UniformKind::floats},
     {"u_depth_terms", 8, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kResolveUniforms = {"MSAA resolve", 3, kResolveFields, std::size(kResolveFields)};
+inline constexpr UniformStruct kResolveUniforms = {"MSAA resolve", 3, kResolveFields,
+                                                   std::size(kResolveFields)};
 using ResolveUniforms = UniformValues<3>;
 ResolveUniforms fill_resolve_uniforms(const FilterRun& host);
 
+// ---- The MSAA write-back (msaa_write.frag) ----
+enum class SampleWriteField : int {
+  samples,
+  sample,  // the sample this draw writes (the one glSampleMaski lets through; the one-draw variant reads none)
+};
+inline constexpr UniformField kSampleWriteFields[] = {
+    {"u_samples", 0, 1, UniformKind::integer},
+    {"u_sample", 1, 1, UniformKind::integer},
+};
+inline constexpr UniformStruct kSampleWriteUniforms = {"MSAA write-back", 1, kSampleWriteFields,
+                                                       std::size(kSampleWriteFields)};
+using SampleWriteUniforms = UniformValues<1>;
+SampleWriteUniforms fill_sample_write_uniforms(const FilterRun& host, int sample);
+
+// ---- The half-resolution path's reduction (half_inputs.frag) ----
+enum class HalfInputsField : int {
+  rect,           // the drawn rectangle's first and last pixel: x0, y0, x1, y1
+  profile_count,  // per-pixel profiles: the profiles set
+  merge_reach,    // math::kHalfResolutionMergeReach
+};
+inline constexpr UniformField kHalfInputsFields[] = {
+    {"u_rect", 0, 4, UniformKind::integers},
+    {"u_profile_count", 4, 1, UniformKind::integer},
+    {"u_merge_reach", 5, 1, UniformKind::floats},
+};
+inline constexpr UniformStruct kHalfInputsUniforms = {"half-size inputs", 2, kHalfInputsFields,
+                                                      std::size(kHalfInputsFields)};
+using HalfInputsUniforms = UniformValues<2>;
+HalfInputsUniforms fill_half_inputs_uniforms(const FilterRun& run);
+
 // ---- The half-resolution path's upsample (half_upsample.frag) ----
 enum class UpsampleField : int {
-  half_taps, round_to_half, profile_count, spacing, pixel_span, half_rect, rect, depth_terms, ray_slope
+  half_taps, round_to_half, profile_count, min_reach, spacing, pixel_span, half_rect, rect, depth_terms, ray_slope,
+  min_weight
 };
 inline constexpr UniformField kUpsampleFields[] = {
     {"u_half_taps", 0, 1, UniformKind::integer},       {"u_round_to_half", 1, 1, UniformKind::boolean},
-    {"u_profile_count", 2, 1, UniformKind::integer},   {"u_spacing", 4, 2, UniformKind::floats},
-    {"u_pixel_span", 6, 2, UniformKind::floats},       {"u_half_rect", 8, 4, UniformKind::integers},
-    {"u_rect", 12, 4, UniformKind::integers},          {"u_depth_terms", 16, 4, UniformKind::floats},
-    {"u_ray_slope", 20, 4, UniformKind::floats},
+    {"u_profile_count", 2, 1, UniformKind::integer},   {"u_min_reach", 3, 1, UniformKind::floats},
+    {"u_spacing", 4, 2, UniformKind::floats},          {"u_pixel_span", 6, 2, UniformKind::floats},
+    {"u_half_rect", 8, 4, UniformKind::integers},      {"u_rect", 12, 4, UniformKind::integers},
+    {"u_depth_terms", 16, 4, UniformKind::floats},     {"u_ray_slope", 20, 4, UniformKind::floats},
+    {"u_min_weight", 24, 1, UniformKind::floats},
 };
-inline constexpr UniformStruct kUpsampleUniforms = {"upsample", 6, kUpsampleFields, std::size(kUpsampleFields)};
-using UpsampleUniforms = UniformValues<6>;
+inline constexpr UniformStruct kUpsampleUniforms = {"upsample", 7, kUpsampleFields,
+                                                    std::size(kUpsampleFields)};
+using UpsampleUniforms = UniformValues<7>;
 // `half`: the half-size rectangle; `round_to_half`: whether the target is RGBA16F.
 UpsampleUniforms fill_upsample_uniforms(const FilterRun& run, const std::array<int, 4>& half, bool round_to_half);
+
+// Every struct fits UniformLocations.
+constexpr bool fits_locations(const UniformStruct& s) {
+  return s.count <= kMaxUniformFields && static_cast<std::size_t>(s.vectors) <= kMaxUniformVectors;
+}
+static_assert(fits_locations(kBlurUniforms) && fits_locations(kCbfUniforms) && fits_locations(kInputsUniforms) &&
+              fits_locations(kColourCopyUniforms) && fits_locations(kResolveUniforms) &&
+              fits_locations(kSampleWriteUniforms) && fits_locations(kHalfInputsUniforms) &&
+              fits_locations(kUpsampleUniforms));
 
 }  // namespace sss::gl

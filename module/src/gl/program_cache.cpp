@@ -32,7 +32,7 @@ sss_result ProgramCache::init(const Functions* gl, GlslVariant variant, bool lab
     *message = "copy shader: " + log_text;
     return SSS_ERROR_SHADER_COMPILE;
   }
-  set_unit(copy_, gl_->GetUniformLocation(copy_, "u_source"), unit::source);
+  set_unit(copy_, "u_source", unit::source);
   label_object(*gl_, labels_, PROGRAM, copy_, "sss copy");
 
   // The default settings' fragment passes written back on hardware depth, culled by the depth the
@@ -98,8 +98,10 @@ GLuint ProgramCache::link(const char* fragment, const std::string& defines, cons
   return program;
 }
 
-void ProgramCache::set_unit(GLuint program, GLint location, GLuint unit) const {
-  if (has_explicit_bindings(variant_) || location < 0) return;  // GLSL 420: layout(binding) in the shader
+void ProgramCache::set_unit(GLuint program, const char* name, GLuint unit) const {
+  if (has_explicit_bindings(variant_)) return;  // GLSL 420: layout(binding) in the shader
+  const GLint location = gl_->GetUniformLocation(program, name);
+  if (location < 0) return;
   gl_->UseProgram(program);
   gl_->Uniform1i(location, static_cast<GLint>(unit));
 }
@@ -152,15 +154,16 @@ sss_result ProgramCache::blur(const BlurVariant& v, BlurProgram** out, std::stri
                 v.profile_ids, v.packed_output ? 1 : 0, 2 * v.half_taps + 1, v.image_taps ? 1 : 0, v.albedo);
   finish(p.program, label, "blur");
   find_blur_uniforms(&p);
+  p.gaussian_depth = v.follow_surface == 2 && v.profile_ids == 0;
   p.image_taps = v.image_taps;
-  set_unit(p.program, p.source, unit::source);
-  set_unit(p.program, p.strength, unit::pass_strength);
-  set_unit(p.program, p.original, unit::original);
-  set_unit(p.program, p.accumulated, unit::accumulated);
-  set_unit(p.program, p.profile_ids, unit::profile_ids);
-  if (v.albedo != 0) set_unit(p.program, gl_->GetUniformLocation(p.program, "u_albedo"), unit::albedo);
+  set_unit(p.program, "u_source", unit::source);
+  set_unit(p.program, "u_strength", unit::pass_strength);
+  set_unit(p.program, "u_original", unit::original);
+  set_unit(p.program, "u_accumulated", unit::accumulated);
+  set_unit(p.program, "u_profile_ids", unit::profile_ids);
+  if (v.albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
   p.tile_grid = gl_->GetUniformLocation(p.program, "u_tile_grid");
-  set_unit(p.program, gl_->GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, "u_tiles", unit::tiles);
   if (v.profile_ids != 0) {  // the tables' block on binding point 0 (ProfileTables::bind)
     const GLuint block = gl_->GetUniformBlockIndex(p.program, "SssProfileTables");
     if (block != kInvalidIndex) gl_->UniformBlockBinding(p.program, block, 0);
@@ -198,6 +201,7 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
                 v.jitter ? 1 : 0, v.accumulate ? 1 : 0, v.albedo, format.qualifier);
   finish(p.program, label, "blur", "GLSL 430 core");
   find_blur_uniforms(&p);
+  p.gaussian_depth = v.follow_surface == 2;
   p.compute = true;
   return SSS_OK;
 }
@@ -206,18 +210,8 @@ void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   const Functions& f = *gl_;
   BlurProgram& p = *program;
   p.fields = find_uniforms(f, p.program, kBlurUniforms);
-  p.source = f.GetUniformLocation(p.program, "u_source");
-  p.depth = f.GetUniformLocation(p.program, "u_depth");
-  p.original = f.GetUniformLocation(p.program, "u_original");
-  p.accumulated = f.GetUniformLocation(p.program, "u_accumulated");
-  p.jitter_from = f.GetUniformLocation(p.program, "u_jitter_from");
-  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
-  p.footprint = f.GetUniformLocation(p.program, "u_footprint");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
-  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
-  p.strength = f.GetUniformLocation(p.program, "u_strength");
-  p.profile_ids = f.GetUniformLocation(p.program, "u_profile_ids");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
 }
 
@@ -234,29 +228,16 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
   std::snprintf(label, sizeof label, "sss cross-bilateral outside=%d linear=%d normals=%d albedo=%d",
                 static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, albedo);
   finish(p.program, label, "cross-bilateral");
-  find_cbf_uniforms(&p);
-  set_unit(p.program, p.normals, unit::normals);
-  set_unit(p.program, p.source, unit::source);
-  set_unit(p.program, p.depth, unit::depth);
-  set_unit(p.program, p.original, unit::original);
-  if (albedo != 0) set_unit(p.program, gl_->GetUniformLocation(p.program, "u_albedo"), unit::albedo);
-  return SSS_OK;
-}
-
-void ProgramCache::find_cbf_uniforms(CbfProgram* program) const {
   const Functions& f = *gl_;
-  CbfProgram& p = *program;
   p.fields = find_uniforms(f, p.program, kCbfUniforms);
-  p.source = f.GetUniformLocation(p.program, "u_source");
-  p.depth = f.GetUniformLocation(p.program, "u_depth");
-  p.original = f.GetUniformLocation(p.program, "u_original");
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
-  p.footprint = f.GetUniformLocation(p.program, "u_footprint");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
-  p.half_taps = f.GetUniformLocation(p.program, "u_half_taps");
-  p.spike_blend = f.GetUniformLocation(p.program, "u_spike_blend");
-  p.inv_two_variance = f.GetUniformLocation(p.program, "u_inv_two_variance");
-  p.normals = f.GetUniformLocation(p.program, "u_normals");
+  set_unit(p.program, "u_normals", unit::normals);
+  set_unit(p.program, "u_source", unit::source);
+  set_unit(p.program, "u_depth", unit::depth);
+  set_unit(p.program, "u_original", unit::original);
+  if (albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
+  return SSS_OK;
 }
 
 sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out,
@@ -273,8 +254,8 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, Resolv
   finish(p.program, kLabels[index], nullptr);
   const Functions& f = *gl_;
   p.fields = find_uniforms(f, p.program, kResolveUniforms);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::msaa_color);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::msaa_depth);
+  set_unit(p.program, "u_color", unit::msaa_color);
+  set_unit(p.program, "u_depth", unit::msaa_depth);
   return SSS_OK;
 }
 
@@ -283,7 +264,7 @@ sss_result ProgramCache::stencil_mark(GLuint* out, std::string* message) {
     stencil_mark_ = link("msaa_mask.frag", "", "stencil mask shader", message);
     if (stencil_mark_ == 0) return SSS_ERROR_SHADER_COMPILE;
     finish(stencil_mark_, "sss stencil mask from alpha", nullptr);
-    set_unit(stencil_mark_, gl_->GetUniformLocation(stencil_mark_, "u_source"), unit::msaa_color);
+    set_unit(stencil_mark_, "u_source", unit::msaa_color);
   }
   *out = stencil_mark_;
   return SSS_OK;
@@ -299,12 +280,11 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   p.one_draw = msaa_write_in_one_draw(variant_);
   finish(p.program, p.one_draw ? "sss msaa write-back" : "sss msaa per-sample write-back", nullptr);
   const Functions& f = *gl_;
-  p.sample = f.GetUniformLocation(p.program, "u_sample");
-  p.samples = f.GetUniformLocation(p.program, "u_samples");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_lowest"), unit::msaa_lowest);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_blurred"), unit::msaa_blurred);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_resolved"), unit::msaa_resolved);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_translucent"), unit::msaa_translucent);
+  p.fields = find_uniforms(f, p.program, kSampleWriteUniforms);
+  set_unit(p.program, "u_lowest", unit::msaa_lowest);
+  set_unit(p.program, "u_blurred", unit::msaa_blurred);
+  set_unit(p.program, "u_resolved", unit::msaa_resolved);
+  set_unit(p.program, "u_translucent", unit::msaa_translucent);
   return SSS_OK;
 }
 
@@ -330,17 +310,16 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   p.color_image = v.color_image;
   const Functions& f = *gl_;
   p.fields = find_uniforms(f, p.program, kInputsUniforms);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_depth"), unit::depth);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
+  set_unit(p.program, "u_color", unit::source);
+  set_unit(p.program, "u_depth", unit::depth);
+  set_unit(p.program, "u_profile_ids", unit::profile_ids);
   if (v.albedo != 0) {
-    set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
-    p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+    set_unit(p.program, "u_albedo", unit::albedo);
     p.texturing = f.GetUniformLocation(p.program, "u_texturing");
   }
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
+  set_unit(p.program, "u_tiles", unit::tiles);
+  set_unit(p.program, "u_tile_columns", unit::tile_columns);
   return SSS_OK;
 }
 
@@ -365,8 +344,8 @@ sss_result ProgramCache::tile_mark(bool columns, int color_image, TileMarkProgra
   p.color_image = image;
   const Functions& f = *gl_;
   p.rect = f.GetUniformLocation(p.program, "u_rect");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_color"), unit::source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, "u_color", unit::source);
+  set_unit(p.program, "u_tiles", unit::tiles);
   return SSS_OK;
 }
 
@@ -386,8 +365,8 @@ sss_result ProgramCache::tile_view(TileSpans spans, TileViewProgram** out, std::
   const Functions& f = *gl_;
   p.rect = f.GetUniformLocation(p.program, "u_rect");
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
+  set_unit(p.program, "u_tiles", unit::tiles);
+  set_unit(p.program, "u_tile_columns", unit::tile_columns);
   return SSS_OK;
 }
 
@@ -402,17 +381,13 @@ sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** o
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, v.profile_ids != 0 ? "sss half-size inputs profiles=1" : "sss half-size inputs", "half-size inputs");
   const Functions& f = *gl_;
-  p.rect = f.GetUniformLocation(p.program, "u_rect");
+  p.fields = find_uniforms(f, p.program, kHalfInputsUniforms);
   p.depth_factor = f.GetUniformLocation(p.program, "u_depth_factor");
-  p.profile_count = f.GetUniformLocation(p.program, "u_profile_count");
-  // A constant of the method: set once, here, not per frame.
-  f.UseProgram(p.program);
-  f.Uniform1f(f.GetUniformLocation(p.program, "u_merge_reach"), math::kHalfResolutionMergeReach);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
+  set_unit(p.program, "u_source", unit::source);
+  set_unit(p.program, "u_strength", unit::pass_strength);
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tile_columns"), unit::tile_columns);
+  set_unit(p.program, "u_tiles", unit::tiles);
+  set_unit(p.program, "u_tile_columns", unit::tile_columns);
   return SSS_OK;
 }
 
@@ -429,18 +404,14 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   const Functions& f = *gl_;
   p.fields = find_uniforms(f, p.program, kUpsampleUniforms);
   p.looks = f.GetUniformLocation(p.program, "u_looks");
-  // The method's constants: set once, here, not per frame.
-  f.UseProgram(p.program);
-  f.Uniform1f(f.GetUniformLocation(p.program, "u_min_reach"), math::kHalfResolutionMinReachPixels);
-  f.Uniform1f(f.GetUniformLocation(p.program, "u_min_weight"), math::kHalfResolutionMinWeight);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::pass_strength);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_half_source"), unit::half_source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_half_result"), unit::half_result);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tables"), unit::half_tables);
-  if (v.albedo != 0) set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
+  set_unit(p.program, "u_source", unit::source);
+  set_unit(p.program, "u_strength", unit::pass_strength);
+  set_unit(p.program, "u_half_source", unit::half_source);
+  set_unit(p.program, "u_half_result", unit::half_result);
+  set_unit(p.program, "u_tables", unit::half_tables);
+  if (v.albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
   p.tile_grid = f.GetUniformLocation(p.program, "u_tile_grid");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_tiles"), unit::tiles);
+  set_unit(p.program, "u_tiles", unit::tiles);
   return SSS_OK;
 }
 
@@ -456,12 +427,12 @@ sss_result ProgramCache::colour_copy(const ColourCopyVariant& v, ColourCopyProgr
                 v.strength_texture ? 1 : 0, v.albedo, v.profile_ids);
   finish(p.program, label, nullptr);
   const Functions& f = *gl_;
-  p.round_to_half = f.GetUniformLocation(p.program, "u_round_to_half");
+  p.fields = find_uniforms(f, p.program, kColourCopyUniforms);
   p.texturing = f.GetUniformLocation(p.program, "u_texturing");
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_source"), unit::source);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_strength"), unit::strength);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_albedo"), unit::albedo);
-  set_unit(p.program, f.GetUniformLocation(p.program, "u_profile_ids"), unit::profile_ids);
+  set_unit(p.program, "u_source", unit::source);
+  set_unit(p.program, "u_strength", unit::strength);
+  set_unit(p.program, "u_albedo", unit::albedo);
+  set_unit(p.program, "u_profile_ids", unit::profile_ids);
   return SSS_OK;
 }
 

@@ -2,8 +2,9 @@
 // filter is destroyed: the copy, the separable blur (fragment and compute variants), the
 // cross-bilateral blur, the MSAA resolve, stencil mark and per-sample write, and the strength
 // texture's combine. A program's
-// uniform locations are looked up once, when it is linked, and its sampler units set then too
-// (texture_units.hpp).
+// uniform locations are looked up once, when it is linked: its pass kind's struct (one location,
+// pass_uniforms.hpp), its tables (one each) and, where the dialect cannot say a sampler's unit in
+// the shader (GLSL 330, ES 3.00), its samplers, whose units are set then too (texture_units.hpp).
 #pragma once
 
 #include <array>
@@ -33,11 +34,13 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 struct BlurProgram {
   GLuint program = 0;
   UniformLocations fields;  // the blur pass's uniform struct (pass_uniforms.hpp)
-  GLint source = -1, depth = -1, original = -1, accumulated = -1;  // samplers
+  BlurUniforms uniforms;    // what the last draw uploaded to it (a debug view's fill draw changes one field)
+  // SSS_FOLLOW_SURFACE 2 without per-pixel profiles: the depth correction is the term's Gaussian,
+  // so u_follow_surface is profile mm per world unit (fill_blur_uniforms).
+  bool gaussian_depth = false;
   // The kernel's tables, uploaded when the kernel, term or axis changes (footprint_cells.glsl).
-  GLint jitter_from = -1, inv_two_variance = -1, cdf = -1, footprint = -1, spacing = -1, half_taps = -1;
-  GLint strength = -1;  // fragment programs only: pass_inputs.frag's strength
-  GLint profile_ids = -1, profile = -1;  // per-pixel profile variants only
+  GLint cdf = -1, spacing = -1;
+  GLint profile = -1;    // per-pixel profile variants only: each profile's numbers for the pass
   GLint tile_grid = -1;  // fragment programs only: the masked path's rows of tiles (fullscreen.vert)
   bool compute = false;
   // Reads its taps through image unit 0 (SSS_IMAGE_TAPS): bind_packed_inputs binds the source there.
@@ -51,9 +54,8 @@ struct BlurProgram {
 struct CbfProgram {
   GLuint program = 0;
   UniformLocations fields;  // the cross-bilateral pass's uniform struct (pass_uniforms.hpp)
-  GLint source = -1, depth = -1, original = -1, normals = -1;  // samplers
-  // The kernel: footprint_cells.glsl's table and layout, the spike blend and the Gaussian's width.
-  GLint cdf = -1, footprint = -1, spacing = -1, half_taps = -1, spike_blend = -1, inv_two_variance = -1;
+  // The kernel's tables: footprint_cells.glsl's cumulative one and its layout's spacing.
+  GLint cdf = -1, spacing = -1;
   std::uint64_t kernel_revision = 0;  // of the kernel its uniforms hold (0: none yet)
 };
 
@@ -61,7 +63,7 @@ struct CbfProgram {
 // the host's separate strength texture as its alpha.
 struct ColourCopyProgram {
   GLuint program = 0;
-  GLint round_to_half = -1;
+  UniformLocations fields;  // the copy's uniform struct (pass_uniforms.hpp)
   GLint texturing = -1;  // SSS_ALBEDO 3: each profile's mode
 };
 
@@ -77,8 +79,7 @@ struct PassInputsProgram {
   // Reads the colour through image unit 0 in kComputeImageFormats[color_image] (SSS_COLOR_IMAGE);
   // -1: through the sampler on unit 0.
   int color_image = -1;
-  // SSS_ALBEDO: the quotient's rounding (nearest_half.glsl) and, per profile, each one's mode.
-  GLint round_to_half = -1, texturing = -1;
+  GLint texturing = -1;  // SSS_ALBEDO 3: each profile's mode
 };
 
 // The masked path's tile marks (tile_mark.frag): per tile, or per column of tiles.
@@ -101,7 +102,8 @@ struct TileViewProgram {
 // The half-resolution path's reduction (half_inputs.frag) and upsample (half_upsample.frag).
 struct HalfInputsProgram {
   GLuint program = 0;
-  GLint rect = -1, depth_factor = -1, profile_count = -1;
+  UniformLocations fields;  // the reduction's uniform struct (pass_uniforms.hpp)
+  GLint depth_factor = -1;  // per profile: 1 / the kernel's reach in world units
   GLint tile_grid = -1;  // the tiles' bands at half size (fullscreen.vert, the inputs' spans)
 };
 struct HalfUpsampleProgram {
@@ -113,8 +115,8 @@ struct HalfUpsampleProgram {
 
 struct SampleWriteProgram {
   GLuint program = 0;
-  GLint sample = -1, samples = -1;  // `sample`: the per-sample draws' (-1 in the one-draw variant)
-  bool one_draw = false;            // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
+  UniformLocations fields;  // the write-back's uniform struct (pass_uniforms.hpp)
+  bool one_draw = false;  // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
 };
 
 // Every program builds exactly the variant it is asked for: which variant a frame needs is the
@@ -171,9 +173,9 @@ class ProgramCache {
   GLuint link(const char* fragment, const std::string& defines, const std::string& what, std::string* message,
               TileSpans spans = TileSpans::none);
   void find_blur_uniforms(BlurProgram* p) const;
-  void find_cbf_uniforms(CbfProgram* p) const;
-  // Sets the sampler uniform at `location` of `program` to `unit` where the dialect cannot say it.
-  void set_unit(GLuint program, GLint location, GLuint unit) const;
+  // Sets the sampler uniform `name` of `program` to `unit` where the dialect cannot say it in the
+  // shader (GLSL 420 and 430 have layout(binding): no lookup there).
+  void set_unit(GLuint program, const char* name, GLuint unit) const;
   // A program the driver refused (`refused`, its log in *message) where another gives the same
   // image: one SSS_LOG_WARNING naming both, with the driver's log from *message; *message then
   // says what was refused (the caller plans again).

@@ -78,6 +78,11 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals, in
   return defines + uniform_struct_glsl(kCbfUniforms);
 }
 
+std::string msaa_write_defines(GlslVariant v) {
+  return std::string(msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n") +
+         uniform_struct_glsl(kSampleWriteUniforms);
+}
+
 std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
   return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
          (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n") + uniform_struct_glsl(kResolveUniforms);
@@ -115,12 +120,12 @@ std::string pass_inputs_defines(const PassInputsVariant& v) {
 }
 
 std::string half_inputs_defines(const HalfVariant& v) {
-  return "#define SSS_PROFILE_IDS " + std::to_string(v.profile_ids) + "\n";
+  return "#define SSS_PROFILE_IDS " + std::to_string(v.profile_ids) + "\n" + uniform_struct_glsl(kHalfInputsUniforms);
 }
 
 std::string half_upsample_defines(const HalfVariant& v) {
   // SSS_LINEAR_DEPTH 1: depth.glsl's clip_w only (the upsample reads view distances).
-  return half_inputs_defines(v) + "#define SSS_ALBEDO " + std::to_string(v.albedo) +
+  return "#define SSS_PROFILE_IDS " + std::to_string(v.profile_ids) + "\n#define SSS_ALBEDO " + std::to_string(v.albedo) +
          "\n#define SSS_LINEAR_DEPTH 1\n#define SSS_CDF_ENTRIES " +
          std::to_string(math::kFootprintEntries) + "\n" + uniform_struct_glsl(kUpsampleUniforms);
 }
@@ -131,7 +136,7 @@ std::string colour_copy_defines(const ColourCopyVariant& v, int profiles) {
                 "#define SSS_STRENGTH_TEXTURE %d\n#define SSS_ALBEDO %d\n#define SSS_PROFILE_IDS %d\n"
                 "#define SSS_PROFILES %d\n",
                 v.strength_texture ? 1 : 0, v.albedo, v.profile_ids, profiles);
-  return defines;
+  return defines + uniform_struct_glsl(kColourCopyUniforms);
 }
 
 std::string lut_defines(int kind) {

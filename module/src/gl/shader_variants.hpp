@@ -109,9 +109,7 @@ std::string msaa_resolve_defines(bool linear_depth, bool write_back);
 // The MSAA write-back (msaa_write.frag): SSS_SAMPLE_MASK_OUTPUT, 1 where the dialect has
 // gl_SampleMask (GLSL 4.20 here): one draw; else one draw per sample under glSampleMaski.
 inline bool msaa_write_in_one_draw(GlslVariant v) { return v == GlslVariant::glsl420; }
-inline std::string msaa_write_defines(GlslVariant v) {
-  return msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n";
-}
+std::string msaa_write_defines(GlslVariant v);
 // The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
 // BlurVariant::profile_ids), SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil)
 // and SSS_COLOR_IMAGE: `color_image` -1 reads the colour through the sampler, 0 or 1 through image

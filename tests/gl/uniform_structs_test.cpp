@@ -1,0 +1,146 @@
+// Uniforms as one struct per pass kind (issue 47, module/src/gl/pass_uniforms.hpp): every per-draw
+// number a program of the module reads is a field of its pass kind's struct, declared from the
+// struct's table, so a new uniform touches one table. Asked of the GL itself: after sss_prepare for
+// every path, mode, texturing mode, per-pixel profiles and (desktop) MSAA, each program the module
+// linked is listed with glGetActiveUniform, and every active uniform outside a uniform block must
+// be a sampler or image, a field of one of the structs, a table (an array), or the vertex stage's
+// tile spans: a hand-declared scalar (`uniform float u_new;` in a shader) fails it.
+//   UniformStructs.*  every backend
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "filter_case.hpp"
+#include "gl/pass_uniforms.hpp"
+
+using namespace host_gl;
+
+namespace sss_test {
+namespace {
+
+constexpr int kW = 32, kH = 24;
+
+// Every field name of every pass kind's struct, from the tables themselves.
+std::set<std::string> struct_fields() {
+  using namespace sss::gl;
+  std::set<std::string> names;
+  for (const UniformStruct* s : {&kBlurUniforms, &kCbfUniforms, &kInputsUniforms, &kColourCopyUniforms,
+                                 &kResolveUniforms, &kSampleWriteUniforms, &kHalfInputsUniforms, &kUpsampleUniforms}) {
+    for (std::size_t i = 0; i < s->count; ++i) names.insert(s->fields[i].glsl_name);
+  }
+  return names;
+}
+
+bool is_sampler_or_image(GLenum type) {
+  switch (type) {
+    case GL_SAMPLER_2D: case GL_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D: case GL_SAMPLER_2D_SHADOW:
+    case GL_SAMPLER_2D_MULTISAMPLE: case GL_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE: case GL_IMAGE_2D: case GL_INT_IMAGE_2D:
+    case GL_UNSIGNED_INT_IMAGE_2D:
+      return true;
+    default: return false;
+  }
+}
+
+// The uniforms of the module's programs that exist now which are none of the above, as
+// "program N: name", and the count of programs looked at.
+std::vector<std::string> loose_uniforms(const std::set<std::string>& fields, int* programs) {
+  // Tables (arrays the passes index) and the tile spans' one vec4 of the vertex stage
+  // (fullscreen.vert), which the tile marks' and the tiles view's u_rect are alike: their
+  // programs' one number.
+  static const std::set<std::string> kOwn = {"u_cdf",     "u_spacing",     "u_profile",   "u_looks",
+                                             "u_texturing", "u_depth_factor", "u_tile_grid", "u_rect"};
+  std::vector<std::string> loose;
+  for (GLuint program = 1; program < 4096; ++program) {
+    if (glIsProgram(program) != GL_TRUE) continue;
+    ++*programs;
+    GLint count = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    for (GLuint i = 0; i < static_cast<GLuint>(count); ++i) {
+      char name[128] = {};
+      GLint size = 0, block = -1;
+      GLenum type = 0;
+      glGetActiveUniform(program, i, sizeof name, nullptr, &size, &type, name);
+      glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
+      std::string n = name;
+      if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);
+      if (block >= 0 || is_sampler_or_image(type) || fields.count(n) != 0 || kOwn.count(n) != 0) continue;
+      loose.push_back("program " + std::to_string(program) + ": " + n);
+    }
+  }
+  return loose;
+}
+
+struct Prepared {
+  const char* name;
+  sss_settings settings;
+  std::uint32_t albedo_format = 0, profile_format = 0;
+  int samples = 0;
+  std::uint32_t output_format = 0;
+};
+
+class UniformStructs : public FilterCaseTest {};
+
+TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
+  const std::set<std::string> fields = struct_fields();
+  const SyntheticScene scene = make_relief_scene(kW, kH, 5, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+  std::vector<Prepared> cases;
+  for (const PathCase& p : kEveryPath) {
+    const sss_settings s = path_case_settings(visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f), p.path, p.mode,
+                                              p.two_terms);
+    cases.push_back({p.name, s});
+    Prepared post{p.name, s, SSS_GL_RGBA16F};
+    post.settings.texturing = SSS_TEXTURING_POST_SCATTER;
+    cases.push_back(post);
+    Prepared output{p.name, s};
+    output.output_format = SSS_GL_RGBA16F;
+    cases.push_back(output);
+  }
+  Prepared profiles{"per-pixel profiles", visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f)};
+  profiles.profile_format = SSS_GL_R8UI;
+  profiles.albedo_format = SSS_GL_RGBA16F;
+  profiles.settings.texturing = SSS_TEXTURING_PRE_AND_POST_SCATTER;
+  cases.push_back(profiles);
+  Prepared gaussian{"sum of Gaussians, half resolution", visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f)};
+  gaussian.settings.path = SSS_PATH_HALF_RESOLUTION;
+  cases.push_back(gaussian);
+  if (!is_gles()) {  // the MSAA path is desktop OpenGL only
+    Prepared msaa{"MSAA", visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f)};
+    msaa.samples = 4;
+    cases.push_back(msaa);
+    msaa.output_format = SSS_GL_RGBA16F;
+    cases.push_back(msaa);
+  }
+  int programs = 0;
+  for (const Prepared& c : cases) {
+    SCOPED_TRACE(c.name);
+    fresh_sss(c.settings, scene.projection.data());
+    if (c.profile_format != 0) {
+      const sss_settings two[2] = {c.settings, c.settings};
+      ASSERT_EQ(sss_set_profiles(sss_, two, 2), SSS_OK) << sss_last_error(sss_);
+    }
+    sss_prepare_desc d = {};
+    d.struct_size = sizeof d;
+    d.width = kW;
+    d.height = kH;
+    d.color_format = SSS_GL_RGBA16F;
+    d.output_format = c.output_format;
+    d.depth_format = SSS_GL_DEPTH_COMPONENT32F;
+    d.samples = c.samples;
+    d.albedo_format = c.albedo_format;
+    d.profile_format = c.profile_format;
+    ASSERT_EQ(sss_prepare(sss_, &d), SSS_OK) << sss_last_error(sss_);
+    int built = 0;
+    const std::vector<std::string> loose = loose_uniforms(fields, &built);
+    programs += built;
+    for (const std::string& l : loose) ADD_FAILURE() << "a uniform outside its pass kind's struct: " << l;
+  }
+  std::printf("%zu preparations, %d programs looked at\n", cases.size(), programs);
+  EXPECT_GT(programs, static_cast<int>(cases.size()) * 3) << "too few programs were built for the check to say much";
+}
+
+}  // namespace
+}  // namespace sss_test
