@@ -9,14 +9,28 @@
 // never reads the host's colour, the texture it draws into: which samples they are, their mean
 // colour and their smallest value per channel.
 //
+// With a texturing mode (SSS_ALBEDO 1 or 2, albedo.glsl) each sample's colour is divided by its own
+// A_post before anything is summed, so that the resolved colour, the passes' inputs and the
+// translucent samples' mean and lowest values are all of the quotient (the light the passes blur).
+// Per sample rather than the resolved colour over the resolved albedo: a pixel's samples may lie
+// on different albedos (a freckle's edge, a checker finer than the pixel), and only the samples'
+// own quotients make uniform light come back as that light at every sample (mean(E·A_s / A_s) = E,
+// where mean(E·A_s) / mean(A_s) holds for post-scatter alone, not for sqrt(A) nor where the floor
+// clips), and let the write-back add A_post_s times one change to each sample. Into a separate
+// output (SSS_WRITE_BACK 0) the resolve also writes the undivided mean (location 2: the colour a
+// pixel the passes leave alone gets) and the samples' mean A_post (location 7: what the last pass
+// multiplies the blurred quotient by).
+//
 // Compile-time switches (the variant's #defines, module/src/gl/shader_variants.cpp):
 // SSS_LINEAR_DEPTH 0: hardware depth, linearised per sample (depth.glsl's view_distance); 1: the
 // host's depth already holds view distance. SSS_WRITE_BACK 1: the translucent samples' outputs too.
+// SSS_ALBEDO 0: pre-scatter (no albedo read); 1, 2: the mode whose A_post divides each sample.
 // Desktop GL only: assembled after version_330.glsl or version_420.glsl (sampler2DMS is not in GLSL ES 3.00).
 
 #include "nearest_half.glsl"
 #include "colour_range.glsl"
 #include "depth.glsl"
+#include "albedo.glsl"
 
 SSS_BINDING(0) uniform sampler2DMS u_color;
 SSS_BINDING(1) uniform sampler2DMS u_depth;
@@ -40,6 +54,9 @@ layout(location = 3) out uvec4 o_lowest;      // their smallest value per channe
 // A sample the write-back changes: some strength, and nothing infinite or NaN in it (NaN fails
 // every comparison).
 bool translucent(vec4 c) { return c.a > 0.0 && all(lessThanEqual(abs(c), vec4(uintBitsToFloat(0x7f7fffffu)))); }
+#elif SSS_ALBEDO
+layout(location = 2) out vec4 o_original;  // the undivided mean colour (rounded as o_color is)
+layout(location = 7) out vec4 o_albedo;    // the samples' mean A_post (rgb), 1 (a)
 #endif
 
 void main() {
@@ -53,8 +70,18 @@ void main() {
   uint mask = 0u;
   float count = 0.0;
 #endif
+#if SSS_ALBEDO
+  vec4 original = vec4(0.0);
+  vec3 albedo_sum = vec3(0.0);
+#endif
   for (int i = 0; i < u_samples; ++i) {
     vec4 c = texelFetch(u_color, pixel, i);
+#if SSS_ALBEDO
+    vec3 post = sss_albedo_post_at(pixel, i, SSS_ALBEDO);
+    original += c;
+    albedo_sum += post;
+    c.rgb /= post;
+#endif
     color += c;
 #if SSS_WRITE_BACK
     // Selects, not a branch: the samples of neighbouring pixels differ.
@@ -84,5 +111,8 @@ void main() {
 #if SSS_WRITE_BACK
   o_translucent = vec4(count > 0.0 ? translucent_sum / count : vec3(0.0), count);
   o_lowest = uvec4(floatBitsToUint(lowest), mask);
+#elif SSS_ALBEDO
+  o_original = sss_nearest_half(original / n);
+  o_albedo = vec4(albedo_sum / n, 1.0);
 #endif
 }

@@ -16,6 +16,16 @@
 //   in the target's precision still maps m to exactly 0 (and b · m is exact for a half-float m).
 // Per channel; alpha is masked (glColorMask) and keeps the host's exact value.
 //
+// With a texturing mode (SSS_ALBEDO 1 or 2) the resolve gave the quotient colour / A_post (its mean,
+// translucent mean and lowest value: msaa_resolve.frag) and the passes blurred it, so the above is
+// the change of each sample's quotient q_s; its colour is A_post_s · q_s, so the sample becomes
+// A_post_s · a + b · s (src0 scaled by the sample's own A_post, read from the host's multisampled
+// albedo): a sample whose light does not change (x = 0) is discarded and keeps its value exactly,
+// and the quotients' mean is still the blurred pixel. Each sample needs its own src0, so the one-draw
+// variant reads gl_SampleID there (which runs the shader once per sample) and the per-sample draws
+// u_sample. (b · s less A_post_s · m · b lands on 0 only to rounding where q_s = m: the product
+// A_post_s · q_s is the colour to within a float ulp, not exactly.)
+//
 // Compile-time switch (module/src/gl/shader_variants.cpp): SSS_SAMPLE_MASK_OUTPUT 1 (GLSL 4.00+):
 // one draw, gl_SampleMask selects the pixel's translucent samples; 0 (GLSL 3.30): one draw per
 // sample under glSampleMaski, u_sample says which, and the draw discards where it is not translucent.
@@ -26,6 +36,7 @@ SSS_BINDING(3) uniform sampler2D u_translucent; // resolve: the translucent samp
 // u_samples and (SSS_SAMPLE_MASK_OUTPUT 0) u_sample, the sample this draw writes (the one
 // glSampleMaski lets through), are the write-back's uniform struct, declared with the variant's
 // #defines (module/src/gl/pass_uniforms.hpp).
+#include "albedo.glsl"
 layout(location = 0, index = 0) out vec4 o_add;    // a (src0)
 layout(location = 0, index = 1) out vec4 o_scale;  // b (src1, the destination's factor)
 
@@ -62,6 +73,13 @@ void main() {
     scale = mix(pulled, vec3(1.0), fits);
     add = mix(-(m * pulled), x, fits);
   }
+#if SSS_ALBEDO
+#if SSS_SAMPLE_MASK_OUTPUT
+  add *= sss_albedo_post_at(pixel, gl_SampleID, SSS_ALBEDO);
+#else
+  add *= sss_albedo_post_at(pixel, u_sample, SSS_ALBEDO);
+#endif
+#endif
   if (!finite(vec4(add, 0.0))) discard;  // an overflowing change leaves the pixel as it was
   o_add = vec4(add, 0.0);
   o_scale = vec4(scale, 1.0);

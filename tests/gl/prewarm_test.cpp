@@ -57,6 +57,7 @@ struct Case {
   int samples = 0;       // > 1: multisampled colour and depth (desktop GL)
   GLenum strength_format = 0;  // a strength texture (sss_frame.strength_texture) of this format
   GLenum profile_format = 0;   // per-pixel profiles: two profiles set, a profile texture of this format
+  GLenum albedo_format = 0;    // an albedo texture of this format (multisampled like the colour) for a texturing mode
 };
 
 sss_settings settings_with(uint32_t path, uint32_t mode = SSS_MODE_SEPARABLE) {
@@ -101,6 +102,7 @@ class Prewarm : public GlTest {
               (c.region ? static_cast<std::uint32_t>(SSS_PREPARE_REGION) : 0u);
     d.strength_format = c.strength_format;
     d.profile_format = c.profile_format;
+    d.albedo_format = c.albedo_format;
     return d;
   }
   // A fresh context with c's settings and camera (sss_ replaced).
@@ -204,6 +206,12 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
                             : make_texture(GL_R16UI, w, h, GL_RED_INTEGER, GL_UNSIGNED_SHORT, ids.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   }
+  if (c.albedo_format != 0) {  // RGBA16F (what the multisampled textures take), 0.5 everywhere
+    const std::vector<float> half_grey(static_cast<std::size_t>(w) * h * 4 * (c.samples > 1 ? 4 : 1), 0.5f);
+    f.albedo_texture = c.samples > 1 ? make_multisample_texture(c.albedo_format, w, h, c.samples, half_grey)
+                                     : make_texture(c.albedo_format, w, h, GL_RGBA, GL_FLOAT, half_grey.data());
+    if (c.samples > 1) textures_.push_back(f.albedo_texture);
+  }
   if (c.normals) {
     std::vector<float> normals(static_cast<std::size_t>(w) * h * 4, 0.0f);
     for (std::size_t i = 2; i < normals.size(); i += 4) normals[i] = 1.0f;
@@ -224,6 +232,7 @@ sss_frame Prewarm::frame_for(const Case& c, int w, int h) {
     f.normal_format = c.normals ? GL_RGBA16F : 0;
     f.strength_format = c.strength_format;
     f.profile_format = c.profile_format;
+    f.albedo_format = c.albedo_format;
     f.texture_width = w;
     f.texture_height = h;
   }
@@ -321,6 +330,19 @@ TEST_F(Prewarm, TheFirstMultisampledFrameCreatesNothing) {
   c = Case{"MSAA behind the host's stencil, three terms", several_terms(SSS_PATH_FRAGMENT)};
   c.samples = 4;
   c.stencil = true;
+  expect_no_hitch(c);
+  // A texturing mode: the resolve and write-back over a multisampled albedo (sss_prepare accepts
+  // albedo_format with samples > 1 since the MSAA path takes one).
+  sss_settings post = settings_with(SSS_PATH_FRAGMENT);
+  post.texturing = SSS_TEXTURING_POST_SCATTER;
+  c = Case{"MSAA, post-scatter, in place", post};
+  c.samples = 4;
+  c.albedo_format = GL_RGBA16F;
+  expect_no_hitch(c);
+  post.texturing = SSS_TEXTURING_PRE_AND_POST_SCATTER;
+  c = Case{"MSAA, pre- and post-scatter, separate output", post, GL_RGBA16F, GL_RGBA16F};
+  c.samples = 4;
+  c.albedo_format = GL_RGBA16F;
   expect_no_hitch(c);
 }
 

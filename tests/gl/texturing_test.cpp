@@ -10,7 +10,10 @@
 //   divide, the filter and the multiply as one reference); pixels the passes leave alone are the
 //   host's colour bit for bit in a separate output;
 // - the refusals: a mode without an albedo texture, an albedo of another size or format, a bad
-//   albedo_format, a multisampled colour; each names its field and leaves the colour untouched.
+//   albedo_format, and on the MSAA path an albedo of another sample count or size; each names its
+//   field and leaves the colour untouched;
+// - a multisampled colour with an albedo multisampled alike: each sample is divided by its own
+//   A_post, and the write-back multiplies each sample's change by it (TexturingMsaa.*).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,8 +21,10 @@
 #include <cstdio>
 #include <string>
 
+#include "fault_loader.hpp"
 #include "filter_case.hpp"
 #include "host_gl_util.hpp"
+#include "math/cpu_msaa_texturing.hpp"
 #include "math/cpu_texturing.hpp"
 #include "math/half_float.hpp"
 #include "multisample_textures.hpp"
@@ -365,21 +370,244 @@ TEST_F(Texturing, BadAlbedoInputsAreRefusedByName) {
   EXPECT_EQ(sss_prepare(sss_, &d), SSS_OK) << sss_last_error(sss_);
 }
 
-TEST_F(Texturing, MultisampledColourWithAnAlbedoIsRefused) {
-  if (is_gles()) GTEST_SKIP() << "no MSAA path on OpenGL ES";
-  sss_settings s = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);
-  fresh(s);
-  const SyntheticScene fine = make_relief_scene(2 * kW, 2 * kH, 3, scene_.projection);  // the samples' source
-  const GLuint color = make_multisample_texture(GL_RGBA16F, kW, kH, 4, fine.color);
-  const GLuint depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, kW, kH, 4, fine.window_depth);
-  textures_.push_back(color);
-  textures_.push_back(depth);
-  sss_frame f = frame_of(color, depth, make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.0f)));
-  f.albedo_texture = make_texture(GL_RGBA8, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  const sss_result r = sss_apply_frame(sss_, &f);
-  EXPECT_EQ(r, SSS_ERROR_UNSUPPORTED) << sss_last_error(sss_);
-  EXPECT_NE(std::string(sss_last_error(sss_)).find("the MSAA path takes no albedo"), std::string::npos)
-      << sss_last_error(sss_);
+// ---- The MSAA path (a multisampled colour and an albedo multisampled alike) ----------------------
+// The resolve divides each sample by its own A_post, the passes blur the resolved quotient, and the
+// write-back adds A_post_s times the pixel's change of quotient to each translucent sample
+// (msaa_resolve.frag, msaa_write.frag; the model: math/cpu_msaa_texturing.hpp).
+
+using Samples = std::vector<std::vector<float>>;
+
+// The fine image (2w x 2h) whose 2x2 blocks are the samples (multisample_textures.hpp's layout).
+std::vector<float> fine_of(const Samples& samples) {
+  std::vector<float> fine(samples[0].size() * 4);
+  for (std::size_t s = 0; s < 4; ++s) {
+    for (std::size_t p = 0; p < samples[s].size() / 4; ++p) {
+      const std::size_t x = p % kW, y = p / kW;
+      const std::size_t f = (2 * y + s / 2) * (2 * kW) + 2 * x + s % 2;
+      for (std::size_t c = 0; c < 4; ++c) fine[f * 4 + c] = samples[s][p * 4 + c];
+    }
+  }
+  return fine;
+}
+
+// A fine albedo with detail at the pixel and below it: a checker of 2-pixel cells (as the
+// single-sample tests'), every other sample of it 0.7 times darker (so a pixel's samples differ but
+// not its cells' means), and (`freckle`) 4x4 samples below the floor; the colour E · A (E the fine scene's light,
+// or the uniform light) rounded to half, alpha the scene's.
+Inputs make_fine_inputs(const SyntheticScene& fine, bool light, bool freckle = true) {
+  Inputs in;
+  const std::size_t n = fine.color.size() / 4;
+  in.albedo.resize(n * 4);
+  in.color.resize(n * 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int x = static_cast<int>(i % (2 * kW)), y = static_cast<int>(i / (2 * kW));
+    const bool dark = ((x / 4) + (y / 4)) % 2 == 0;
+    const float sample_detail = (x + y) % 2 == 0 ? 0.7f : 1.0f;
+    for (int c = 0; c < 3; ++c) {
+      float a = (dark ? 0.2f + 0.05f * static_cast<float>(c) : 0.9f - 0.1f * static_cast<float>(c)) * sample_detail;
+      if (freckle && x >= 60 && x < 64 && y >= 40 && y < 44) a = 0.001f;
+      in.albedo[i * 4 + c] = sss::math::round_to_half(a);
+      const float e = light ? fine.color[i * 4 + c] : kUniform[c];
+      in.color[i * 4 + c] = sss::math::round_to_half(e * in.albedo[i * 4 + c]);
+    }
+    in.albedo[i * 4 + 3] = 1.0f;
+    in.color[i * 4 + 3] = fine.color[i * 4 + 3];
+  }
+  return in;
+}
+
+class TexturingMsaa : public Texturing {
+ protected:
+  void SetUp() override {
+    Texturing::SetUp();
+    if (HasFatalFailure()) return;
+    if (is_gles()) GTEST_SKIP() << "the MSAA path is desktop OpenGL only";
+    fine_ = make_relief_scene(2 * kW, 2 * kH, 3, scene_.projection);
+  }
+  GLuint ms(GLenum format, const std::vector<float>& fine, int samples = 4, int w = kW) {
+    const GLuint t = make_multisample_texture(format, w, kH, samples, fine);
+    textures_.push_back(t);
+    return t;
+  }
+  // The frame of `colour` (multisampled, `format`) over `albedo` with `settings`, in place or into a
+  // fresh RGBA32F output; the colour's samples after it, and the output.
+  struct Result {
+    Samples samples;
+    std::vector<float> output;
+  };
+  Result run(const sss_settings& settings, GLenum format, const std::vector<float>& colour, GLuint albedo,
+             bool output) {
+    fresh(settings);
+    const GLuint color = ms(format, colour);
+    sss_frame f = frame_of(color, ms(GL_DEPTH_COMPONENT32F, fine_.window_depth));
+    if (output) f.output_texture = make_rgba32f(kW, kH, std::vector<float>(kW * kH * 4, -7.0f));
+    f.albedo_texture = albedo;
+    EXPECT_EQ(sss_apply_frame(sss_, &f), SSS_OK) << sss_last_error(sss_);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    Result r;
+    r.samples = read_samples(color, kW, kH, 4);
+    if (output) r.output = read_rgba(f.output_texture, kW, kH);
+    return r;
+  }
+  SyntheticScene fine_;
+};
+
+// The largest |after − before| / before over the translucent samples' rgb.
+float largest_sample_change(const Samples& after, const Samples& before) {
+  float largest = 0.0f;
+  for (std::size_t s = 0; s < before.size(); ++s) {
+    for (std::size_t i = 0; i < before[s].size(); ++i) {
+      if (i % 4 == 3 || !(before[s][i - i % 4 + 3] > 0.0f)) continue;
+      largest = std::max(largest, std::fabs(after[s][i] - before[s][i]) / std::max(before[s][i], 1e-6f));
+    }
+  }
+  return largest;
+}
+
+// Uniform light over an albedo whose samples differ within each pixel, RGBA16F, written back:
+// post-scatter gives every sample back. Each sample's quotient is the light to within its colour's
+// rounding (1 half step); the resolved quotient rounds once more, the intermediate and the blurred
+// image once each, so the pixel's change of quotient B − E is a few steps of the light, and the
+// sample moves by A_post_s times it (n / translucent samples more on a silhouette pixel), then the
+// store rounds it (llvmpipe: toward zero). The bound: 6 half steps. Pre-scatter blurs the checker
+// into every sample (the check's own test), pre- and post-scatter half of it.
+TEST_F(TexturingMsaa, UniformLightKeepsEachSampleInPostScatter) {
+  const Inputs in = make_fine_inputs(fine_, false, false);
+  const GLuint albedo = ms(GL_RGBA16F, in.albedo);
+  const Samples before = read_samples(ms(GL_RGBA16F, in.color), kW, kH, 4);
+  const sss_settings base = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);
+  float change[3] = {};
+  for (const uint32_t mode : {SSS_TEXTURING_PRE_SCATTER, SSS_TEXTURING_POST_SCATTER,
+                              SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+    sss_settings s = base;
+    s.texturing = mode;
+    change[mode] = largest_sample_change(run(s, GL_RGBA16F, in.color, albedo, false).samples, before);
+  }
+  const float bound = 6.0f * kHalfStep;
+  std::printf("MSAA, uniform light, largest relative change of a translucent sample: post-scatter %.3g (bound %.5f), "
+              "pre- and post-scatter %.3f, pre-scatter %.3f\n", change[1], bound, change[2], change[0]);
+  EXPECT_LE(change[1], bound);
+  EXPECT_GT(change[0], 0.1f) << "pre-scatter must blur the albedo's checker (else this check cannot fail)";
+  EXPECT_GT(change[2], 0.05f);
+  EXPECT_LT(change[2], change[0]);
+}
+
+// Any light, RGBA32F colour, each mode, written back and into an RGBA32F output: the GL against the
+// model (math/cpu_msaa_texturing: the per-sample divide, the write-back's per-sample multiply) fed
+// with the module's own pre-scatter filter of the model's quotient samples (the same resolve and
+// passes on the same numbers). The GPU's division, square root and sums may differ from the CPU's in
+// the last float bit, which the passes carry through at float precision (RGBA32F intermediate):
+// a bound of 1e-5 relative to the sample's value (about 2^-17, a hundred float ulps).
+TEST_F(TexturingMsaa, EachModeMatchesTheModel) {
+  const Inputs in = make_fine_inputs(fine_, true);
+  const GLuint albedo = ms(GL_RGBA16F, in.albedo);
+  const Samples colour = read_samples(ms(GL_RGBA32F, in.color), kW, kH, 4);
+  const Samples albedos = read_samples(albedo, kW, kH, 4);
+  for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+    SCOPED_TRACE("mode " + std::to_string(mode));
+    const sss::math::MsaaQuotientResolve resolved = sss::math::resolve_over_albedo(colour, albedos, mode, false);
+    const std::vector<float> quotient_fine = fine_of(sss::math::samples_over_albedo(colour, albedos, mode));
+    const std::vector<float> blurred =
+        run(case_settings(kEveryPath[0], SSS_TEXTURING_PRE_SCATTER), GL_RGBA32F, quotient_fine, 0, true).output;
+    const sss_settings s = case_settings(kEveryPath[0], mode);
+    const Samples model = sss::math::write_back_over_albedo(colour, albedos, mode, resolved, blurred);
+    const Samples gl = run(s, GL_RGBA32F, in.color, albedo, false).samples;
+    float largest = 0.0f;
+    std::size_t changed = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      for (std::size_t i = 0; i < gl[k].size(); ++i) {
+        const float scale = std::max({std::fabs(model[k][i]), std::fabs(colour[k][i]), 1e-4f});
+        largest = std::max(largest, std::fabs(gl[k][i] - model[k][i]) / scale);
+        changed += gl[k][i] != colour[k][i] ? 1 : 0;
+      }
+    }
+    // Into an output: A_post's mean times the blurred quotient where the passes drew (the resolved
+    // alpha above 0), the undivided mean elsewhere, bit for bit.
+    const std::vector<float> out = run(s, GL_RGBA32F, in.color, albedo, true).output;
+    float largest_out = 0.0f;
+    std::size_t untouched = 0, untouched_moved = 0;
+    for (std::size_t p = 0; p < out.size() / 4; ++p) {
+      const bool drawn = resolved.quotient[p * 4 + 3] > 0.0f;
+      for (std::size_t c = 0; c < 4; ++c) {
+        if (!drawn) {
+          ++untouched;
+          untouched_moved += out[p * 4 + c] != resolved.original[p * 4 + c] ? 1 : 0;
+        } else if (c < 3) {
+          const float expected = resolved.albedo_post[p * 3 + c] * blurred[p * 4 + c];
+          largest_out = std::max(largest_out,
+                                 std::fabs(out[p * 4 + c] - expected) / std::max(std::fabs(expected), 1e-4f));
+        }
+      }
+    }
+    std::printf("MSAA, mode %u: GL vs the model, largest relative difference written back %.3g (%zu values changed), "
+                "into an output %.3g; %zu of %zu untouched values moved\n",
+                mode, largest, changed, largest_out, untouched_moved, untouched);
+    EXPECT_LE(largest, 1e-5f);
+    EXPECT_LE(largest_out, 1e-5f);
+    EXPECT_GT(changed, static_cast<std::size_t>(kW * kH)) << "nothing was blurred";
+    EXPECT_GT(untouched, 0u);
+    EXPECT_EQ(untouched_moved, 0u);
+  }
+}
+
+// An albedo of another sample count, size or target than the multisampled colour is refused by
+// name and value (INVALID_TEXTURE), nothing drawn: the colour's samples and the output untouched. A
+// single-sample albedo has no value per sample, so it is refused too rather than guessed at.
+// llvmpipe makes every multisampled texture with 4 samples, so the other count is what the fault
+// loader tells a module created through it (as Msaa.BadMultisampledInput... does for the depth).
+TEST_F(TexturingMsaa, AnAlbedoOfAnotherSampleCountOrSizeIsRefused) {
+  const Inputs in = make_fine_inputs(fine_, true);
+  sss_create_desc desc = {};
+  desc.struct_size = sizeof desc;
+  desc.get_proc_address = fault_get_proc_address;
+  desc.get_proc_address_user = headless_;
+  sss_context* faulty = nullptr;
+  ASSERT_EQ(sss_create(&desc, &faulty), SSS_OK);
+  const sss_settings settings = case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER);
+  ASSERT_EQ(sss_set_settings(faulty, &settings), SSS_OK);
+  ASSERT_EQ(sss_set_camera(faulty, scene_.projection.data()), SSS_OK);
+  const GLuint color = ms(GL_RGBA16F, in.color);
+  const GLuint depth = ms(GL_DEPTH_COMPONENT32F, fine_.window_depth);
+  const Samples before = read_samples(color, kW, kH, 4);
+  const GLuint two = ms(GL_RGBA16F, in.albedo);  // told 2 samples
+  const GLuint narrow = ms(GL_RGBA16F, in.albedo, 4, kW / 2);
+  const GLuint single = make_rgba16f(kW, kH, std::vector<float>(kW * kH * 4, 0.5f));
+  const std::string colour = " but color_texture = " + std::to_string(color) + " is GL_TEXTURE_2D_MULTISAMPLE with 4 samples";
+  const struct {
+    GLuint albedo;
+    std::string part;
+  } cases[] = {{two, "albedo_texture = " + std::to_string(two) + " is GL_TEXTURE_2D_MULTISAMPLE with 2 samples" + colour},
+               {narrow, "albedo_texture = " + std::to_string(narrow) + " is 32x48 but the colour texture is 64x48"},
+               {single, "albedo_texture = " + std::to_string(single) + " is GL_TEXTURE_2D" + colour}};
+  for (const auto& c : cases) {
+    for (const bool output : {false, true}) {
+      SCOPED_TRACE(c.part + (output ? ", into an output" : ""));
+      reset_faults();
+      if (c.albedo == two) {
+        faults().fake_samples_texture = two;
+        faults().fake_samples = 2;
+      }
+      sss_frame f = frame_of(color, depth);
+      const std::vector<float> initial(kW * kH * 4, -7.0f);
+      if (output) f.output_texture = make_rgba32f(kW, kH, initial);
+      f.albedo_texture = c.albedo;
+      const sss_result r = sss_apply_frame(faulty, &f);
+      reset_faults();
+      EXPECT_EQ(r, SSS_ERROR_INVALID_TEXTURE) << sss_result_string(r) << ": " << sss_last_error(faulty);
+      EXPECT_NE(std::string(sss_last_error(faulty)).find(c.part), std::string::npos) << sss_last_error(faulty);
+      EXPECT_EQ(read_samples(color, kW, kH, 4), before);
+      if (output) {
+        EXPECT_EQ(read_rgba(f.output_texture, kW, kH), initial);
+      }
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    }
+  }
+  // The same albedo with 4 samples is taken (the refusals above were the counts and sizes alone).
+  sss_frame f = frame_of(color, depth);
+  f.albedo_texture = two;
+  EXPECT_EQ(sss_apply_frame(faulty, &f), SSS_OK) << sss_last_error(faulty);
+  EXPECT_NE(read_samples(color, kW, kH, 4), before);
+  sss_destroy(faulty);
 }
 
 }  // namespace

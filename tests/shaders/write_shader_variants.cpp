@@ -202,15 +202,20 @@ void write_dialect(Writer* out, gl::GlslVariant dialect) {
     }
   }
   if (gl::has_msaa_shaders(dialect)) {
-    for (int linear = 0; linear < 2; ++linear) {
-      for (int write_back = 0; write_back < 2; ++write_back) {
-        out->write(d + "msaa_resolve_l" + std::to_string(linear) + "_w" + std::to_string(write_back) + ".frag",
-                   gl::stage_recipe(dialect, "msaa_resolve.frag",
-                                    gl::msaa_resolve_defines(linear != 0, write_back != 0)));
+    // SSS_ALBEDO 1 and 2 (a texturing mode over a multisampled albedo) add "_a1", "_a2".
+    for (int albedo = 0; albedo < 3; ++albedo) {
+      const std::string a = albedo == 0 ? "" : "_a" + std::to_string(albedo);
+      for (int linear = 0; linear < 2; ++linear) {
+        for (int write_back = 0; write_back < 2; ++write_back) {
+          out->write(d + "msaa_resolve_l" + std::to_string(linear) + "_w" + std::to_string(write_back) + a + ".frag",
+                     gl::stage_recipe(dialect, "msaa_resolve.frag",
+                                      gl::msaa_resolve_defines(linear != 0, write_back != 0, albedo)));
+        }
       }
+      out->write(d + "msaa_write" + a + ".frag",
+                 gl::stage_recipe(dialect, "msaa_write.frag", gl::msaa_write_defines(dialect, albedo)));
     }
     out->write(d + "msaa_mask.frag", gl::stage_recipe(dialect, "msaa_mask.frag"));
-    out->write(d + "msaa_write.frag", gl::stage_recipe(dialect, "msaa_write.frag", gl::msaa_write_defines(dialect)));
   }
   for (int kind = 0; kind < 2; ++kind) {
     out->write(d + "lut_generate_k" + std::to_string(kind) + ".frag",

@@ -403,6 +403,58 @@ TEST(FramePlan, TheMsaaPathResolvesMarksBlursAndWritesBack) {
   EXPECT_EQ(kinds(plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT)), (std::vector<K>{K::resolve_msaa, K::copy_colour}));
 }
 
+// A texturing mode on the MSAA path: the resolve divides each sample by its A_post and the
+// write-back multiplies each sample's change by it (resolve_albedo), so there is no colour copy
+// and, written back, the passes multiply by nothing; into a separate output the last pass
+// multiplies by the resolve's mean A_post (mode 1 on that texture) and copies the pixels it leaves
+// alone from the resolve's undivided mean; the same steps as pre-scatter either way.
+TEST(FramePlan, AnMsaaTexturingModeDividesInTheResolveAndMultipliesInTheWriteBack) {
+  Frame f;
+  f.run.color = texture(1, RGBA16F, 4);
+  f.run.depth = texture(2, DEPTH_COMPONENT32F, 4);
+  const FramePlan pre = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
+  f.run.albedo = texture(9, RGBA16F, 4);
+  f.run.texturing[0] = SSS_TEXTURING_PRE_AND_POST_SCATTER;
+  for (const bool cross_bilateral : {false, true}) {
+    SCOPED_TRACE(cross_bilateral ? "cross-bilateral" : "separable");
+    f.run.cross_bilateral = cross_bilateral;
+    f.run.output = TextureInfo{};
+    const FramePlan p = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
+    EXPECT_EQ(p.resolve_albedo, 2);
+    EXPECT_FALSE(p.colour_copy);
+    EXPECT_FALSE(may_copy_colour(f.run));
+    if (!cross_bilateral) {
+      EXPECT_EQ(kinds(p), kinds(pre));
+      EXPECT_EQ(find(p, K::blur, 0, 1)->variant.albedo, 0);
+    } else {
+      EXPECT_EQ(p.cbf_albedo, 0);
+    }
+    PassTextures module;
+    module.resolved_color = 30;
+    module.resolved_original = 31;
+    module.resolved_albedo = 32;
+    const FilterRun in_place = passes_run(f.run, module, nullptr, false);
+    EXPECT_EQ(in_place.albedo.name, 0u);
+    EXPECT_EQ(in_place.original.name, 0u);
+    f.run.output = texture(4, RGBA16F);
+    const FramePlan o = plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT);
+    EXPECT_EQ(o.resolve_albedo, 2);
+    if (!cross_bilateral) {
+      EXPECT_EQ(find(o, K::blur, 0, 1)->variant.albedo, 1);
+    } else {
+      EXPECT_EQ(o.cbf_albedo, 1);
+    }
+    const FilterRun out = passes_run(f.run, module, nullptr, false);
+    EXPECT_EQ(out.albedo.name, 32u);
+    EXPECT_EQ(out.original.name, 31u);
+    EXPECT_EQ(out.untouched_colour(), 31u);
+    EXPECT_EQ(out.color.name, 30u);
+  }
+  // Nothing to blur: the resolved colour copied, nothing divided.
+  f.run.identity = true;
+  EXPECT_EQ(plan_frame(f.run, desktop(), SSS_PATH_FRAGMENT).resolve_albedo, 0);
+}
+
 TEST(FramePlan, DebugViewsRunTheFirstTermsFragmentPasses) {
   Frame f;
   f.kernel = kernel_of(3);

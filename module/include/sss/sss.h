@@ -382,9 +382,12 @@ typedef struct sss_frame {
                                     fragment passes; not with SSS_FRAME_REGION, a multisampled colour
                                     or the cross-bilateral mode (the tiles view: nor a stencil) */
   /* The surface's albedo: optional, needed by a texturing mode other than pre-scatter. */
-  uint32_t albedo_texture;     /**< 0: none; else a single-sample 2D texture of the colour's size, rgb
-                                    the diffuse albedo the colour was multiplied by (alpha unused),
-                                    read where a pixel's profile's texturing is not pre-scatter */
+  uint32_t albedo_texture;     /**< 0: none; else a texture of the colour's size, target and sample
+                                    count (multisampled colour: multisampled alike, each sample
+                                    divided by its own; another count, size or a single-sample one:
+                                    SSS_ERROR_INVALID_TEXTURE), rgb the diffuse albedo the colour was
+                                    multiplied by (alpha unused), read where a pixel's profile's
+                                    texturing is not pre-scatter */
   uint32_t albedo_format;      /**< 0, SSS_GL_SRGB8_ALPHA8 (decoded), SSS_GL_RGBA8, SSS_GL_RGBA16F */
 } sss_frame;
 
@@ -410,7 +413,7 @@ typedef struct sss_prepare_desc {
   uint32_t flags;           /**< sss_prepare_flag bits */
   uint32_t strength_format; /**< 0: no strength texture; else as sss_frame.strength_format (single-sample) */
   uint32_t profile_format;  /**< 0: no profile texture; else as sss_frame.profile_format (single-sample) */
-  uint32_t albedo_format;   /**< 0: no albedo texture; else as sss_frame.albedo_format */
+  uint32_t albedo_format;   /**< 0: no albedo texture; else as sss_frame.albedo_format, samples alike */
 } sss_prepare_desc;
 
 /* ---- What the module reports ---- */

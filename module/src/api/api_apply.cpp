@@ -218,8 +218,10 @@ bool needs_albedo(const sss_context& ctx, const sss_frame& frame, int* which, un
   return false;
 }
 
-// A texturing mode other than pre-scatter needs the albedo, and one of the colour's size and sample
-// count; the MSAA path does not take one yet (docs/integration.md "Texturing modes").
+// A texturing mode other than pre-scatter needs the albedo, and one of the colour's size, target and
+// sample count (a multisampled colour: an albedo multisampled alike, whose samples the resolve
+// divides one by one; a single-sample albedo has no value per sample, so it is refused rather than
+// guessed at: docs/integration.md "Texturing modes").
 sss_result query_albedo(sss_context* ctx, const sss_frame& frame, gl::FilterRun* run) {
   int which = -1;
   unsigned mode = 0;
@@ -241,12 +243,6 @@ sss_result query_albedo(sss_context* ctx, const sss_frame& frame, gl::FilterRun*
   if (r != SSS_OK) return r;
   if (!gl::is_albedo_format(run->albedo.internal_format)) {
     return wrong_format(ctx, "albedo_texture", run->albedo, "GL_SRGB8_ALPHA8, GL_RGBA8 or GL_RGBA16F");
-  }
-  if (run->color.multisampled()) {
-    return fail(ctx, SSS_ERROR_UNSUPPORTED,
-                "%s = %u with color_texture = %u %s: the MSAA path takes no albedo yet; resolve the colour (and the "
-                "albedo) first, or use SSS_TEXTURING_PRE_SCATTER", field, mode, run->color.name,
-                gl::describe_target(run->color).c_str());
   }
   r = same_samples(ctx, "albedo_texture", run->albedo, run->color);
   if (r == SSS_OK) r = same_size(ctx, "albedo_texture", run->albedo, run->color);

@@ -107,10 +107,6 @@ sss_result check_fields(sss_context* ctx, const sss_prepare_desc* desc, sss_prep
     return bad_format(ctx, "albedo_format", d.albedo_format,
                       "0 (no albedo), GL_SRGB8_ALPHA8 (0x8C43), GL_RGBA8 (0x8058) or GL_RGBA16F (0x881A)");
   }
-  if (d.albedo_format != 0 && d.samples > 1) {
-    return fail(ctx, SSS_ERROR_UNSUPPORTED, "desc->albedo_format = %s with samples = %d: the MSAA path takes no "
-                "albedo yet", gl::format_name(format(d.albedo_format)).c_str(), d.samples);
-  }
   sss_result r = check_strength(ctx, d);
   if (r == SSS_OK) r = check_profile_format(ctx, d);
   if (r != SSS_OK) return r;
@@ -196,7 +192,7 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
     run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }
   if (d.albedo_format != 0) {
-    run.albedo = described(d, d.albedo_format, false);
+    run.albedo = described(d, d.albedo_format, multisampled);  // multisampled like the colour
     run.albedo.name = gl::kPrewarmPlaceholder;
     run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }

@@ -254,6 +254,7 @@ void plan_msaa(Steps& steps, const FilterRun& run, const FilterRun& passes, cons
   plan.msaa = true;
   plan.resolve_linear_depth = run.resolve_constants.linear_depth;
   plan.resolve_write_back = !run.identity && run.writes_back();
+  plan.resolve_albedo = msaa_albedo_variant(run);
   steps.add(StepKind::resolve_msaa, StepRun::host);
   if (run.identity) {  // into the output: the resolved colour copied
     plan.kind = PlanKind::copy;
@@ -339,7 +340,7 @@ const char* path_unavailable(const FilterRun& run, const Capabilities& caps, uns
 
 bool copies_colour(const FilterRun& run, unsigned path) {
   if (run.strength.name != 0) return true;
-  if (albedo_variant(run) == 0 || run.identity) return false;
+  if (albedo_variant(run) == 0 || run.identity || run.color.multisampled()) return false;  // the resolve divides
   return run.cross_bilateral || (path == SSS_PATH_COMPUTE && run.debug_view == 0);
 }
 
@@ -371,6 +372,20 @@ FilterRun passes_run(const FilterRun& run, const PassTextures& module, const Ste
       passes.output.name = module.blurred;
     }
     if (!run.identity && run.stencil == nullptr) passes.stencil = own;
+    // A texturing mode: the resolve divided each sample by its A_post, the passes blur the quotient.
+    // Written back, each sample's change is multiplied by its own A_post (msaa_write.frag); into an
+    // output the last pass multiplies by the samples' mean A_post (mode 1 on that RGBA32F texture)
+    // and copies the pixels it leaves alone from the undivided mean, as pre-scatter copies the resolve.
+    if (msaa_albedo_variant(run) != 0) {
+      passes.albedo = TextureInfo{};
+      if (!run.writes_back()) {
+        passes.albedo = passes.color;
+        passes.albedo.name = module.resolved_albedo;
+        passes.texturing[0] = SSS_TEXTURING_POST_SCATTER;
+        passes.original = passes.color;
+        passes.original.name = module.resolved_original;
+      }
+    }
   }
   return passes;
 }
@@ -396,6 +411,7 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   plan.cbf_albedo = 0;
   plan.cbf_vertical_outside = BlurOutside::write_centre;
   plan.resolve_linear_depth = plan.resolve_write_back = false;
+  plan.resolve_albedo = 0;
   plan.stencil_format = 0;
   plan.step_count = 0;
   Steps steps{plan};
@@ -415,7 +431,8 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
   const StencilInput own;
   PassTextures placeholders;
   placeholders.colour_copy = placeholders.resolved_color = placeholders.resolved_distance = placeholders.blurred =
-      ~0u;
+      placeholders.resolved_albedo = ~0u;
+  placeholders.resolved_original = ~0u - 1;  // not sss_prepare's output (kPrewarmPlaceholder): never the same
   std::optional<FilterRun> view;
   if (plan.colour_copy || run.color.multisampled()) view.emplace(passes_run(run, placeholders, &own, plan.colour_copy));
   const FilterRun& passes = view ? *view : run;
@@ -458,7 +475,6 @@ bool operator==(const Step& a, const Step& b) {
          same_variant(a.variant, b.variant) && a.image_format == b.image_format && a.compute_pass == b.compute_pass;
 }
 
-
 bool operator==(const FramePlan& a, const FramePlan& b) {
   if (a.kind != b.kind || a.path != b.path || a.msaa != b.msaa || a.colour_copy != b.colour_copy ||
       colour_copy_variant_index(a.copy) != colour_copy_variant_index(b.copy) || a.cbf_albedo != b.cbf_albedo ||
@@ -469,6 +485,7 @@ bool operator==(const FramePlan& a, const FramePlan& b) {
       !same_variant(a.full_vertical, b.full_vertical) || a.cbf_linear_depth != b.cbf_linear_depth ||
       a.cbf_normals != b.cbf_normals || a.cbf_vertical_outside != b.cbf_vertical_outside ||
       a.resolve_linear_depth != b.resolve_linear_depth || a.resolve_write_back != b.resolve_write_back ||
+      a.resolve_albedo != b.resolve_albedo ||
       a.intermediate_format != b.intermediate_format || a.accumulators_half != b.accumulators_half ||
       a.stencil_format != b.stencil_format || a.step_count != b.step_count) {
     return false;

@@ -125,6 +125,9 @@ struct FramePlan {
   int cbf_albedo = 0;  // the cross-bilateral vertical pass's SSS_ALBEDO
   BlurOutside cbf_vertical_outside = BlurOutside::write_centre;
   bool resolve_linear_depth = false, resolve_write_back = false;
+  // The MSAA resolve's and write-back's SSS_ALBEDO (msaa_albedo_variant): each sample over its own
+  // A_post, and its change times it.
+  int resolve_albedo = 0;
   // The module's targets: the horizontal pass's format, the sum of terms in half floats, and the
   // format of the stencil or culling-depth buffer (0: none).
   GLint intermediate_format = 0;
@@ -151,7 +154,13 @@ int albedo_variant(const FilterRun& run);
 bool copies_colour(const FilterRun& run, unsigned path);
 // Whether they may, on some path (the run the path is chosen on).
 inline bool may_copy_colour(const FilterRun& run) {
-  return run.strength.name != 0 || (albedo_variant(run) != 0 && !run.identity);
+  return run.strength.name != 0 || (albedo_variant(run) != 0 && !run.identity && !run.color.multisampled());
+}
+// SSS_ALBEDO of the MSAA resolve and write-back of `run` (multisampled): the texturing mode (1 or 2;
+// per-pixel profiles take no MSAA frame) where something is blurred, else 0. The resolve divides,
+// so no colour copy runs on that path.
+inline int msaa_albedo_variant(const FilterRun& run) {
+  return run.color.multisampled() && !run.identity ? albedo_variant(run) : 0;
 }
 // The sum of the kernel's terms in half floats: RGBA32F keeps up to six terms at float precision,
 // but OpenGL ES may not render to it (GL_EXT_color_buffer_float), while every ES context the module
@@ -182,6 +191,8 @@ void plan_frame(const FilterRun& run, const Capabilities& caps, unsigned path, F
 struct PassTextures {
   GLuint colour_copy = 0;                                         // the colour copy (colour_copy.cpp)
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0;  // the MSAA resolve's and the passes' result
+  // A texturing mode into a separate output: the resolve's undivided mean and mean A_post.
+  GLuint resolved_original = 0, resolved_albedo = 0;
 };
 // The run the passes' steps read (StepRun::passes): `run` itself, or its textures replaced by the
 // module's colour copy (written back, the host's colour then is the output) or the MSAA

@@ -86,6 +86,9 @@ std::string describe(const FramePlan& plan) {
     } else if (s.kind == StepKind::colour_copy) {
       if (plan.copy.albedo != 0) text += std::string(" over A_post ") + kAlbedoNames[plan.copy.albedo];
       if (plan.copy.strength_texture) text += ", the strength texture as alpha";
+    } else if ((s.kind == StepKind::resolve_msaa || s.kind == StepKind::write_samples) && plan.resolve_albedo != 0) {
+      text += std::string(s.kind == StepKind::resolve_msaa ? " (each sample over A_post " : " (each change times A_post ") +
+              kAlbedoNames[plan.resolve_albedo] + ")";
     } else if (s.kind == StepKind::copy_host_stencil) {
       static const char* const kOn[] = {" onto the horizontal pass's target", " onto the inputs' target",
                                         " onto the intermediate"};

@@ -5,7 +5,9 @@
 // single-sample path; writing back, a last pass blends each pixel's change into the host's
 // translucent samples (msaa_write.frag), in one draw where the shaders have gl_SampleMask (GLSL
 // 4.20) and one draw per sample under glSampleMaski on a GL 3.3-4.1 context. It never reads the
-// host's colour: the resolve kept what it needs of each pixel's translucent samples.
+// host's colour: the resolve kept what it needs of each pixel's translucent samples. A texturing
+// mode (FramePlan::resolve_albedo) divides each sample by its own A_post in the resolve and
+// multiplies each sample's change by it in the write-back (msaa_resolve.frag, msaa_write.frag).
 #include "debug_label.hpp"
 #include "pass_uniforms.hpp"
 #include "plan_steps.hpp"
@@ -13,6 +15,15 @@
 #include "texture_units.hpp"
 
 namespace sss::gl {
+
+namespace {
+// The host's multisampled albedo on its unit (the state guard saves that unit's multisample
+// binding in a frame with an albedo).
+void bind_multisampled_albedo(const Functions& f, const FilterRun& run) {
+  f.ActiveTexture(TEXTURE0 + unit::albedo);
+  f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.albedo.name);
+}
+}  // namespace
 
 sss_result resolve_msaa(PassContext& ctx, const FilterRun& run, const FramePlan& plan, const PlanPrograms& programs,
                         std::string* message) {
@@ -24,11 +35,14 @@ sss_result resolve_msaa(PassContext& ctx, const FilterRun& run, const FramePlan&
   // Writing back, the translucent samples' mean and lowest values too (attachments 2 and 3); unless
   // nothing is blurred, the fragment passes' inputs (attachments 4-6: pass_inputs.frag's targets,
   // so that the passes need no inputs draw of their own: the linear depth computed once).
+  // A texturing mode into a separate output: the undivided mean (attachment 2) and the samples' mean
+  // A_post (attachment 7) for the last pass.
   const bool write_back = plan.resolve_write_back;
-  const GLenum buffers[7] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, write_back ? COLOR_ATTACHMENT2 : NONE,
+  const bool albedo_out = plan.resolve_albedo != 0 && !write_back;
+  const GLenum buffers[8] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT1, write_back || albedo_out ? COLOR_ATTACHMENT2 : NONE,
                              write_back ? COLOR_ATTACHMENT3 : NONE, COLOR_ATTACHMENT4, COLOR_ATTACHMENT5,
-                             COLOR_ATTACHMENT6};
-  f.DrawBuffers(run.identity ? (write_back ? 4 : 2) : 7, buffers);
+                             COLOR_ATTACHMENT6, COLOR_ATTACHMENT7};
+  f.DrawBuffers(run.identity ? (write_back ? 4 : 2) : (albedo_out ? 8 : 7), buffers);
   const sss_result r = check_framebuffer(ctx, "MSAA resolve", message);
   if (r != SSS_OK) return r;
   DebugGroup group(f, ctx.labels, "sss msaa resolve");
@@ -39,8 +53,12 @@ sss_result resolve_msaa(PassContext& ctx, const FilterRun& run, const FramePlan&
   f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.color.name);
   f.ActiveTexture(TEXTURE0 + unit::msaa_depth);
   f.BindTexture(TEXTURE_2D_MULTISAMPLE, run.depth.name);
+  if (plan.resolve_albedo != 0) bind_multisampled_albedo(f, run);
   f.DrawArrays(TRIANGLES, 0, 3);
   ++ctx.draws;
+  // Into an output, the pass that writes it multiplies by the samples' mean A_post: left on the
+  // albedo's unit for it, as the single-sample inputs draw leaves the host's albedo there.
+  if (albedo_out) bind_texture(ctx, unit::albedo, ctx.targets.names().resolved_albedo, ctx.objects.nearest_sampler);
   return SSS_OK;
 }
 
@@ -77,6 +95,7 @@ void draw_sample_writes(PassContext& ctx, const FilterRun& run, const SampleWrit
   bind_texture(ctx, unit::msaa_blurred, t.blurred, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::msaa_resolved, t.resolved_color, ctx.objects.nearest_sampler);
   bind_texture(ctx, unit::msaa_translucent, t.translucent_mean, ctx.objects.nearest_sampler);
+  if (p.albedo != 0) bind_multisampled_albedo(f, run);
   if (p.one_draw) {
     const SampleWriteUniforms u = fill_sample_write_uniforms(run, 0);
     upload_uniforms(f, kSampleWriteUniforms, p.fields, u.values.data());

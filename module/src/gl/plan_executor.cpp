@@ -131,7 +131,8 @@ sss_result SeparableFilter::run(const FilterRun& host, std::string* message) {
   const bool substituted = may_copy_colour(host) || host.color.multisampled();
   const auto module_textures = [this] {
     const Targets& t = targets_.names();
-    return PassTextures{t.colour_copy, t.resolved_color, t.resolved_distance, t.blurred};
+    return PassTextures{t.colour_copy, t.resolved_color, t.resolved_distance, t.blurred, t.translucent_mean,
+                        t.resolved_albedo};
   };
   std::optional<FilterRun> view;
   if (substituted) view.emplace(passes_run(host, module_textures(), &own_mark, may_copy_colour(host)));

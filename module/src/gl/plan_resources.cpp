@@ -34,9 +34,10 @@ sss_result build_step(PassContext& ctx, const FramePlan& plan, int i, PlanProgra
   switch (step.kind) {
     case StepKind::colour_copy: return cache.colour_copy(plan.copy, &p->colour_copy, message);
     case StepKind::resolve_msaa:
-      return cache.msaa_resolve(plan.resolve_linear_depth, plan.resolve_write_back, &p->resolve, message);
+      return cache.msaa_resolve(plan.resolve_linear_depth, plan.resolve_write_back, plan.resolve_albedo, &p->resolve,
+                                message);
     case StepKind::mark_stencil: return cache.stencil_mark(&p->stencil_mark, message);
-    case StepKind::write_samples: return cache.sample_write(&p->sample_write, message);
+    case StepKind::write_samples: return cache.sample_write(plan.resolve_albedo, &p->sample_write, message);
     case StepKind::tile_view:
       for (const TileSpans spans : {TileSpans::none, TileSpans::inputs, TileSpans::passes}) {
         if (r == SSS_OK) r = cache.tile_view(spans, &p->tile_view[static_cast<std::size_t>(spans)], message);
@@ -96,7 +97,8 @@ sss_result allocate_pass_targets(PassContext& ctx, const FilterRun& host, const 
   if (plan.colour_copy) r = targets.ensure_colour_copy(plan.intermediate_format, w, h, message);
   if (r == SSS_OK && plan.msaa) {
     targets.ensure_msaa_framebuffers();
-    r = targets.ensure_msaa_targets(host.color.internal_format, w, h, plan.resolve_write_back, message);
+    r = targets.ensure_msaa_targets(host.color.internal_format, w, h, plan.resolve_write_back, plan.resolve_albedo != 0,
+                                    message);
     if (r == SSS_OK) r = stencil();
   }
   switch (plan.kind) {

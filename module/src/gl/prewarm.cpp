@@ -20,7 +20,8 @@ sss_result SeparableFilter::prewarm(const FilterRun& described, std::string* mes
   host.target_complete = true;
   const StencilInput own;  // only whether there is one decides what is planned
   const Targets& t = targets_.names();
-  const PassTextures module{t.colour_copy, t.resolved_color, t.resolved_distance, t.blurred};
+  const PassTextures module{t.colour_copy,      t.resolved_color,   t.resolved_distance,
+                            t.blurred,          t.translucent_mean, t.resolved_albedo};
   // The paths such a frame may take: the one asked for where it can run, else the plain fragment
   // passes (which every path falls back to); SSS_PATH_AUTO any that can run.
   const auto may_take = [&](const FilterRun& passes, unsigned path) {

@@ -77,7 +77,7 @@ void ProgramCache::destroy() {
   for (const ResolveProgram& p : resolve_) remove(p.program);
   remove(copy_);
   remove(stencil_mark_);
-  remove(sample_write_.program);
+  for (const SampleWriteProgram& p : sample_write_) remove(p.program);
   for (const ColourCopyProgram& p : colour_copy_) remove(p.program);
   for (const PassInputsProgram& p : pass_inputs_) remove(p.program);
   for (const HalfInputsProgram& p : half_inputs_) remove(p.program);
@@ -240,22 +240,26 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
   return SSS_OK;
 }
 
-sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out,
+sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, int albedo, ResolveProgram** out,
                                       std::string* message) {
-  const int index = (write_back ? 2 : 0) + (linear_depth ? 1 : 0);
+  const int index = 4 * albedo + (write_back ? 2 : 0) + (linear_depth ? 1 : 0);
   ResolveProgram& p = resolve_[static_cast<std::size_t>(index)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = msaa_resolve_defines(linear_depth, write_back);
+  const std::string defines = msaa_resolve_defines(linear_depth, write_back, albedo);
   p.program = link("msaa_resolve.frag", defines, "MSAA resolve shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   static const char* const kLabels[4] = {"sss msaa resolve", "sss msaa resolve linear", "sss msaa resolve for write-back",
                                          "sss msaa resolve linear for write-back"};
-  finish(p.program, kLabels[index], nullptr);
+  char label[96];
+  std::snprintf(label, sizeof label, "%s%s", kLabels[index % 4], albedo == 0 ? "" : albedo == 1 ? " over the albedo"
+                                                                                     : " over its square root");
+  finish(p.program, label, nullptr);
   const Functions& f = *gl_;
   p.fields = find_uniforms(f, p.program, kResolveUniforms);
   set_unit(p.program, "u_color", unit::msaa_color);
   set_unit(p.program, "u_depth", unit::msaa_depth);
+  if (albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
   return SSS_OK;
 }
 
@@ -270,11 +274,12 @@ sss_result ProgramCache::stencil_mark(GLuint* out, std::string* message) {
   return SSS_OK;
 }
 
-sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* message) {
-  SampleWriteProgram& p = sample_write_;
+sss_result ProgramCache::sample_write(int albedo, SampleWriteProgram** out, std::string* message) {
+  SampleWriteProgram& p = sample_write_[static_cast<std::size_t>(albedo)];
   *out = &p;
   if (p.program != 0) return SSS_OK;
-  const std::string defines = msaa_write_defines(variant_);
+  p.albedo = albedo;
+  const std::string defines = msaa_write_defines(variant_, albedo);
   p.program = link("msaa_write.frag", defines, "MSAA write-back shader (" + defines + ")", message);
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   p.one_draw = msaa_write_in_one_draw(variant_);
@@ -285,6 +290,7 @@ sss_result ProgramCache::sample_write(SampleWriteProgram** out, std::string* mes
   set_unit(p.program, "u_blurred", unit::msaa_blurred);
   set_unit(p.program, "u_resolved", unit::msaa_resolved);
   set_unit(p.program, "u_translucent", unit::msaa_translucent);
+  if (albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
   return SSS_OK;
 }
 

@@ -116,7 +116,8 @@ struct HalfUpsampleProgram {
 struct SampleWriteProgram {
   GLuint program = 0;
   UniformLocations fields;  // the write-back's uniform struct (pass_uniforms.hpp)
-  bool one_draw = false;  // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
+  bool one_draw = false;    // SSS_SAMPLE_MASK_OUTPUT: gl_SampleMask picks the samples
+  int albedo = 0;           // SSS_ALBEDO: the host's multisampled albedo on unit::albedo
 };
 
 // Every program builds exactly the variant it is asked for: which variant a frame needs is the
@@ -145,9 +146,10 @@ class ProgramCache {
   sss_result cross_bilateral(Outside outside, bool linear_depth, bool normals, int albedo, CbfProgram** out,
                              std::string* message);
   // `write_back`: the variant that also keeps the translucent samples' mean, lowest values and mask.
-  sss_result msaa_resolve(bool linear_depth, bool write_back, ResolveProgram** out, std::string* message);
+  // `albedo`: SSS_ALBEDO (0-2, the texturing mode that divides each sample).
+  sss_result msaa_resolve(bool linear_depth, bool write_back, int albedo, ResolveProgram** out, std::string* message);
   sss_result stencil_mark(GLuint* out, std::string* message);  // the mask from alpha
-  sss_result sample_write(SampleWriteProgram** out, std::string* message);
+  sss_result sample_write(int albedo, SampleWriteProgram** out, std::string* message);
   sss_result colour_copy(const ColourCopyVariant& v, ColourCopyProgram** out, std::string* message);
   // The fragment passes' inputs: colour and view distance (and R8UI indices), strength.
   sss_result pass_inputs(const PassInputsVariant& v, PassInputsProgram** out, std::string* message);
@@ -197,9 +199,9 @@ class ProgramCache {
   // By (blur_variant_index, image format, pass) and SSS_ALBEDO; only the variants a host uses.
   std::map<int, BlurProgram> compute_;
   std::array<CbfProgram, kCbfVariantCount> cbf_{};
-  std::array<ResolveProgram, 4> resolve_{};  // index: 2 · writes back + host depth is linear
+  std::array<ResolveProgram, 12> resolve_{};  // index: 4 · SSS_ALBEDO + 2 · writes back + host depth is linear
   GLuint stencil_mark_ = 0;
-  SampleWriteProgram sample_write_;
+  std::array<SampleWriteProgram, 3> sample_write_{};  // index: SSS_ALBEDO
   std::array<ColourCopyProgram, kColourCopyVariantCount> colour_copy_{};
   std::array<PassInputsProgram, kPassInputsVariantCount> pass_inputs_{};
   std::array<HalfInputsProgram, kHalfVariantCount> half_inputs_{};

@@ -78,14 +78,22 @@ std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals, in
   return defines + uniform_struct_glsl(kCbfUniforms);
 }
 
-std::string msaa_write_defines(GlslVariant v) {
-  return std::string(msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n") +
-         uniform_struct_glsl(kSampleWriteUniforms);
+namespace {
+// albedo.glsl's switches for the MSAA programs: the mode, and the albedo read per sample.
+std::string msaa_albedo_defines(int albedo) {
+  return "#define SSS_ALBEDO " + std::to_string(albedo) + "\n" + (albedo != 0 ? "#define SSS_ALBEDO_SAMPLES 1\n" : "");
+}
+}  // namespace
+
+std::string msaa_resolve_defines(bool linear_depth, bool write_back, int albedo) {
+  return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
+         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n") + msaa_albedo_defines(albedo) +
+         uniform_struct_glsl(kResolveUniforms);
 }
 
-std::string msaa_resolve_defines(bool linear_depth, bool write_back) {
-  return std::string(linear_depth ? "#define SSS_LINEAR_DEPTH 1\n" : "#define SSS_LINEAR_DEPTH 0\n") +
-         (write_back ? "#define SSS_WRITE_BACK 1\n" : "#define SSS_WRITE_BACK 0\n") + uniform_struct_glsl(kResolveUniforms);
+std::string msaa_write_defines(GlslVariant v, int albedo) {
+  return (msaa_write_in_one_draw(v) ? "#define SSS_SAMPLE_MASK_OUTPUT 1\n" : "#define SSS_SAMPLE_MASK_OUTPUT 0\n") +
+         msaa_albedo_defines(albedo) + uniform_struct_glsl(kSampleWriteUniforms);
 }
 
 int pass_inputs_variant_index(const PassInputsVariant& v) {

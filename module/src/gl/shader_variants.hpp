@@ -104,12 +104,14 @@ std::string compute_blur_defines(const BlurVariant& v, int image_format, Compute
 std::string cbf_defines(BlurOutside outside, bool linear_depth, bool normals, int albedo = 0);
 
 // The MSAA resolve (msaa_resolve.frag): SSS_LINEAR_DEPTH × SSS_WRITE_BACK (the translucent
-// samples' outputs for the write-back).
-std::string msaa_resolve_defines(bool linear_depth, bool write_back);
+// samples' outputs for the write-back) × SSS_ALBEDO (0-2: the texturing mode whose A_post divides
+// each sample; the albedo is multisampled, SSS_ALBEDO_SAMPLES).
+std::string msaa_resolve_defines(bool linear_depth, bool write_back, int albedo = 0);
 // The MSAA write-back (msaa_write.frag): SSS_SAMPLE_MASK_OUTPUT, 1 where the dialect has
 // gl_SampleMask (GLSL 4.20 here): one draw; else one draw per sample under glSampleMaski.
+// SSS_ALBEDO (0-2): each sample's change times its own A_post.
 inline bool msaa_write_in_one_draw(GlslVariant v) { return v == GlslVariant::glsl420; }
-std::string msaa_write_defines(GlslVariant v);
+std::string msaa_write_defines(GlslVariant v, int albedo = 0);
 // The fragment passes' inputs (pass_inputs.frag): SSS_LINEAR_DEPTH, SSS_PROFILE_IDS (0-2, as
 // BlurVariant::profile_ids), SSS_MARK_DEPTH (the passes cull by the module's depth, not a stencil)
 // and SSS_COLOR_IMAGE: `color_image` -1 reads the colour through the sampler, 0 or 1 through image

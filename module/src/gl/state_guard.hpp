@@ -58,8 +58,8 @@ struct GuardScope {
                              // and strength (GL 4.3+)
   bool stencil = true;       // stencil func, ref, masks and ops: a stencil mask (the host's, the
                              // masked path's or the MSAA path's)
-  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3, GL_SAMPLE_MASK_VALUE,
-                             // GL_MULTISAMPLE and the blend function: the MSAA path, and the texture
+  bool multisample = true;   // GL_TEXTURE_BINDING_2D_MULTISAMPLE of units 0-3 (and 6: an MSAA albedo),
+                             // GL_SAMPLE_MASK_VALUE, GL_MULTISAMPLE and the blend function: the MSAA path, and the texture
                              // query's probe of a texture's target
   bool unit3 = true;         // texture unit 3: the normals, the sum of several kernel terms
   bool profiles = true;      // texture unit 4 and uniform buffer binding 0: per-pixel profiles

@@ -68,7 +68,8 @@ void TargetPool::destroy() {
                              t_.resolved_color,     t_.resolved_distance, t_.blurred,         t_.translucent_mean,
                              t_.translucent_lowest, t_.colour_copy,   t_.pass_taps,       t_.pass_strength,
                              t_.pass_intermediate,  t_.half_taps,         t_.half_strength,   t_.half_intermediate,
-                             t_.half_result,        t_.half_tables,       t_.tiles,           t_.tile_columns};
+                             t_.half_result,        t_.half_tables,       t_.tiles,           t_.tile_columns,
+                             t_.resolved_albedo};
   // Name 0 is silently ignored by both calls.
   f.DeleteFramebuffers(static_cast<GLsizei>(sizeof framebuffers / sizeof framebuffers[0]), framebuffers);
   f.DeleteTextures(static_cast<GLsizei>(sizeof textures / sizeof textures[0]), textures);
@@ -209,7 +210,7 @@ void TargetPool::ensure_msaa_framebuffers() {
   label_object(f, labels_, FRAMEBUFFER, t_.sample_write_framebuffer, "sss msaa write-back target");
 }
 
-sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int height, bool write_back,
+sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, bool albedo,
                                            std::string* message) {
   const Functions& f = *gl_;
   const bool same = t_.resolved_color != 0 && msaa_color_format_ == color_format && msaa_width_ == width &&
@@ -224,7 +225,7 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
       t_.translucent_mean = t[3];
       t_.translucent_lowest = t[4];
     }
-    has_write_back_targets_ = false;
+    has_write_back_targets_ = has_resolved_albedo_ = false;
     specify_2d(t_.resolved_color, color_format, RGBA, FLOAT, width, height);
     specify_2d(t_.resolved_distance, static_cast<GLint>(R32F), RED, FLOAT, width, height);
     const GLenum error = f.GetError();
@@ -241,7 +242,8 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, t_.resolved_color, 0);
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT1, TEXTURE_2D, t_.resolved_distance, 0);
   }
-  if (write_back && !has_write_back_targets_) {
+  // A texturing mode into a separate output: translucent_mean holds the resolve's undivided mean.
+  if ((write_back || albedo) && !has_write_back_targets_) {
     specify_2d(t_.blurred, color_format, RGBA, FLOAT, width, height);
     specify_2d(t_.translucent_mean, static_cast<GLint>(RGBA32F), RGBA, FLOAT, width, height);
     specify_2d(t_.translucent_lowest, static_cast<GLint>(RGBA32UI), RGBA_INTEGER, UNSIGNED_INT, width, height);
@@ -255,6 +257,21 @@ sss_result TargetPool::ensure_msaa_targets(GLint color_format, int width, int he
     f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT3, TEXTURE_2D, t_.translucent_lowest, 0);
     has_write_back_targets_ = true;
   }
+  return albedo && !has_resolved_albedo_ ? ensure_resolved_albedo(width, height, message) : SSS_OK;
+}
+
+// The samples' mean A_post (RGBA32F: the last pass into an output multiplies by it as it is), the
+// resolve's attachment 7.
+sss_result TargetPool::ensure_resolved_albedo(int width, int height, std::string* message) {
+  const Functions& f = *gl_;
+  if (t_.resolved_albedo == 0) f.GenTextures(1, &t_.resolved_albedo);
+  specify_2d(t_.resolved_albedo, static_cast<GLint>(RGBA32F), RGBA, FLOAT, width, height);
+  const GLenum error = f.GetError();
+  if (error != NO_ERROR) return allocation_failed(error, "MSAA resolved albedo", width, height, message);
+  label_object(f, labels_, TEXTURE, t_.resolved_albedo, "sss msaa samples' mean A_post");
+  f.BindFramebuffer(DRAW_FRAMEBUFFER, t_.resolve_framebuffer);
+  f.FramebufferTexture2D(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT7, TEXTURE_2D, t_.resolved_albedo, 0);
+  has_resolved_albedo_ = true;
   return SSS_OK;
 }
 

@@ -37,6 +37,9 @@ struct Targets {
   // their mean and count (RGBA32F) and their smallest values and mask (RGBA32UI).
   GLuint resolve_framebuffer = 0, sample_write_framebuffer = 0;
   GLuint resolved_color = 0, resolved_distance = 0, blurred = 0, translucent_mean = 0, translucent_lowest = 0;
+  // A texturing mode into a separate output: the samples' mean A_post (RGBA32F; translucent_mean
+  // then holds the undivided mean colour).
+  GLuint resolved_albedo = 0;
   // A strength texture: the colour with that strength as alpha (RGBA16F; RGBA32F for RGBA32F colour).
   GLuint colour_copy = 0, colour_copy_framebuffer = 0;
   // The separable fragment passes (pass_inputs.frag): per pixel the colour's and view distance's
@@ -78,8 +81,9 @@ class TargetPool {
   sss_result ensure_masked_source(GLint format, int width, int height, std::string* message);
   void ensure_msaa_framebuffers();
   // `write_back`: also the blurred result and the translucent samples' targets (the resolve's
-  // attachments 2 and 3).
-  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, std::string* message);
+  // attachments 2 and 3); `albedo` (a texturing mode): those and resolved_albedo (attachment 7).
+  sss_result ensure_msaa_targets(GLint color_format, int width, int height, bool write_back, bool albedo,
+                                 std::string* message);
   // `format`: RGBA16F or RGBA32F.
   sss_result ensure_colour_copy(GLint format, int width, int height, std::string* message);
   // The fragment passes' inputs (pass_taps, pass_strength, pass_intermediate) as colour attachments
@@ -103,6 +107,7 @@ class TargetPool {
                                 std::string* message);
 
  private:
+  sss_result ensure_resolved_albedo(int width, int height, std::string* message);
   // Creates *framebuffer (labelled `label`) when it is 0; nothing attached yet.
   void ensure_framebuffer(GLuint* framebuffer, const char* label);
   // `texture` as colour attachment 0 of `framebuffer` (left bound as the draw framebuffer).
@@ -139,6 +144,7 @@ class TargetPool {
   GLint msaa_color_format_ = 0;
   int msaa_width_ = 0, msaa_height_ = 0;
   bool has_write_back_targets_ = false;
+  bool has_resolved_albedo_ = false;
   GLint strength_format_ = 0;
   int strength_width_ = 0, strength_height_ = 0;
   int pass_width_ = 0, pass_height_ = 0;
