@@ -126,8 +126,11 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
   const SyntheticScene fine = make_relief_scene(32, 24, 2, perspective_matrix(40.0f, 16.0f / 12.0f, 0.1f, 10.0f));
   const GLuint msaa_color = make_multisample_texture(GL_RGBA16F, 16, 12, 4, fine.color);
   const GLuint msaa_depth = make_multisample_texture(GL_DEPTH_COMPONENT32F, 16, 12, 4, fine.window_depth);
+  // The MSAA path's albedo is multisampled like its colour (a texturing mode on that path).
+  const GLuint msaa_albedo = make_multisample_texture(GL_RGBA16F, 16, 12, 4, std::vector<float>(32 * 24 * 4, 0.5f));
   ASSERT_NE(msaa_color, 0u);
   ASSERT_NE(msaa_depth, 0u);
+  ASSERT_NE(msaa_albedo, 0u);
   // An R11F_G11F_B10F colour with its strength in an R8 texture (sss_frame.strength_texture).
   std::vector<float> rgb;
   std::vector<uint8_t> strength;
@@ -175,7 +178,11 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
                         {"post-scatter, cross-bilateral", SSS_PATH_FRAGMENT, SSS_MODE_CROSS_BILATERAL, false, false,
                          false, false, false, 0, SSS_TEXTURING_POST_SCATTER},
                         {"post-scatter, half resolution", SSS_PATH_HALF_RESOLUTION, SSS_MODE_SEPARABLE, false, false,
-                         false, false, false, 0, SSS_TEXTURING_POST_SCATTER}};
+                         false, false, false, 0, SSS_TEXTURING_POST_SCATTER},
+                        {"post-scatter, MSAA", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false, false, false, true, false, 0,
+                         SSS_TEXTURING_POST_SCATTER},
+                        {"pre- and post-scatter, MSAA, separate output", SSS_PATH_FRAGMENT, SSS_MODE_SEPARABLE, false,
+                         true, false, true, false, 0, SSS_TEXTURING_PRE_AND_POST_SCATTER}};
   sss_ = create_sss();
   ASSERT_NE(sss_, nullptr);
   ASSERT_EQ(sss_set_camera(sss_, scene.projection.data()), SSS_OK);
@@ -198,7 +205,7 @@ TEST_F(StateRestore, SteadyFramesOfEveryPathRestoreEveryListedState) {
     description.depth = c.stencil ? DepthKind::depth24_stencil8 : DepthKind::depth32f;
     describe_frame(description, 16, 12, &f);
     if (c.texturing != SSS_TEXTURING_PRE_SCATTER) {
-      f.albedo_texture = albedo;
+      f.albedo_texture = c.msaa ? msaa_albedo : albedo;
       f.albedo_format = GL_RGBA16F;
       f.flags = SSS_FRAME_TARGET_COMPLETE;  // the compute path writes the target (GL_NEAREST: complete)
     }
