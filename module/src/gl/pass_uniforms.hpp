@@ -6,8 +6,8 @@
 // the kernel, and set in one call (upload_uniforms). A new uniform is one line of its pass kind's
 // table and the line that fills it (pass_uniforms.cpp). Every per-draw number a program reads is
 // in its struct; only tables (arrays: u_cdf, u_spacing, u_profile, u_looks, u_texturing,
-// u_depth_factor), samplers and the vertex stage's u_tile_grid are uniforms of their own
-// (tests/gl/uniform_structs_test.cpp checks every program the paths build).
+// u_depth_factor), samplers, the vertex stage's u_tile_grid and the tile programs' one u_rect are
+// uniforms of their own (tests/gl/uniform_structs_test.cpp checks every program the paths build).
 //
 // The fields stay separate GLSL uniforms, one location each. Making a struct one GL object was
 // measured (callgrind, scripts/cost-probe.sh) against the bounds of issue 47:
@@ -35,7 +35,7 @@
 
 namespace sss::gl {
 
-// How a field is stored in the floats and read back in GLSL.
+// How a field is stored in the values and read back in GLSL.
 enum class UniformKind {
   floats,      // 1, 2 or 4 floats: float, vec2, vec4
   boolean,     // 0 or 1: a bool
