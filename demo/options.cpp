@@ -162,7 +162,7 @@ void print_usage(const char *program) {
       "                      post (the light alone blurred, the albedo's detail kept sharp; the default: the\n"
       "                      head scan's albedo already holds the scattering) or pre-and-post (sqrt(albedo)\n"
       "                      each side); the lighting pass's albedo target goes with the frame; with --msaa\n"
-      "                      the frame runs pre (the library's MSAA path takes no albedo yet)\n"
+      "                      the frame runs pre (the demo's MSAA lighting writes no albedo yet)\n"
       "  --exposure F        linear exposure before tone mapping (default 1)\n"
       "  --heat-scale F      linear error at the top of the heat map's colour ramp (default 0.05)\n"
       "  --heat-factor N     the heat map's exact reference runs at 1/N of each side (default 4)\n"

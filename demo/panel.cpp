@@ -222,7 +222,7 @@ void draw_panel(WindowState *s) {
                             : "  sqrt(albedo) blurred, sqrt(albedo) multiplied after");
     if (effective_texturing(s->controls, s->controls.msaa_samples) != s->controls.texturing) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
-                         "with MSAA the frame runs pre-scatter (no albedo on that path)");
+                         "with MSAA the frame runs pre-scatter (the demo writes no multisampled albedo)");
     }
   }
   if (s->scene->profiles.size() > 1 || !s->scene->object_names.empty()) {

@@ -108,7 +108,7 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
                                                    : "-scatter (sqrt(albedo) blurred, sqrt(albedo) after)");
   if (static_cast<int>(s.texturing) != c.texturing) {
     result += std::string(" (asked for ") + texturing_name(c.texturing) +
-              "-scatter: the library's MSAA path takes no albedo yet)";
+              "-scatter: the demo's MSAA lighting writes no albedo yet)";
   }
   if (c.translucency) {
     std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",

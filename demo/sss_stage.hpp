@@ -66,7 +66,7 @@ struct SssControls {
   // sss_settings.texturing (an sss_texturing, for every profile): what of the albedo is blurred with
   // the light. Pre-scatter blurs the lighting pass's colour as it is; post-scatter and pre-and-post
   // hand the library the lighting pass's albedo target (sss_frame.albedo_texture), single-sample
-  // only (the library's MSAA path takes no albedo yet: with --msaa the frame runs pre-scatter).
+  // only (the demo's MSAA lighting writes no albedo yet: with --msaa the frame runs pre-scatter).
   int texturing = SSS_TEXTURING_PRE_SCATTER;
 };
 

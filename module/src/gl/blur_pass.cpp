@@ -49,8 +49,8 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   // The pass's struct in one call (a variant whose depth correction is the Gaussian reads
   // u_inv_two_variance, and its follow-surface number in profile mm per world unit).
   const bool rounds = round_to_half >= 0 ? round_to_half != 0 : writes_half_float(f, run, term, axis);
-  p.uniforms = fill_blur_uniforms(run, term, axis, p.gaussian_depth, rounds);
-  upload_uniforms(f, kBlurUniforms, p.fields, p.uniforms.values.data());
+  const BlurUniforms u = fill_blur_uniforms(run, term, axis, p.gaussian_depth, rounds);
+  upload_uniforms(f, kBlurUniforms, p.fields, u.values.data());
   if (p.profile >= 0) {
     // Each profile's step and follow-surface numbers for this pass (its tables are in the block).
     std::array<float, 4 * math::kMaxProfiles> looks{};
@@ -64,9 +64,12 @@ void set_blur_uniforms(PassContext& ctx, BlurProgram& p, const FilterRun& run, s
   }
 }
 
-void set_debug_fill(const Functions& f, BlurProgram& p, bool fill) {
-  p.uniforms.set(kBlurUniforms, BlurField::debug_fill, fill ? 1.0f : 0.0f);
-  upload_uniforms(f, kBlurUniforms, p.fields, p.uniforms.values.data());
+void set_debug_fill(const Functions& f, const BlurProgram& p, bool fill) {
+  // The values the program holds (UniformLocations::held), with the one field changed: only it is set.
+  BlurUniforms u;
+  std::copy_n(p.fields.held.begin(), u.values.size(), u.values.begin());
+  u.set(kBlurUniforms, BlurField::debug_fill, fill ? 1.0f : 0.0f);
+  upload_uniforms(f, kBlurUniforms, p.fields, u.values.data());
 }
 
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth) {

@@ -24,9 +24,9 @@ bool writes_half_float(const Functions& gl, const FilterRun& run, std::size_t te
 // writes the intermediate's format, not the target's).
 void set_blur_uniforms(PassContext& ctx, BlurProgram& program, const FilterRun& run, std::size_t term, int axis,
                        int round_to_half = -1);
-// A debug view's vertical pass: the struct set_blur_uniforms last uploaded, again with u_debug_fill
-// `fill` (1: the program writes (0, 0, 0, 1) wherever it draws); `program` in use.
-void set_debug_fill(const Functions& gl, BlurProgram& program, bool fill);
+// A debug view's vertical pass: u_debug_fill set to `fill` (1: the program writes (0, 0, 0, 1)
+// wherever it draws), the struct's other fields as set_blur_uniforms left them; `program` in use.
+void set_debug_fill(const Functions& gl, const BlurProgram& program, bool fill);
 // The compute pass's input and the host's depth on their units, with the module's samplers.
 void bind_blur_inputs(PassContext& ctx, GLuint source, GLuint depth);
 // The fragment pass's inputs (RGBA32UI colour and distance, R32UI strength: pass_inputs.frag, or

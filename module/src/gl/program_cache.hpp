@@ -34,7 +34,6 @@ int image_format_index(GLint internal_format);  // into kComputeImageFormats; -1
 struct BlurProgram {
   GLuint program = 0;
   UniformLocations fields;  // the blur pass's uniform struct (pass_uniforms.hpp)
-  BlurUniforms uniforms;    // what the last draw uploaded to it (a debug view's fill draw changes one field)
   // SSS_FOLLOW_SURFACE 2 without per-pixel profiles: the depth correction is the term's Gaussian,
   // so u_follow_surface is profile mm per world unit (fill_blur_uniforms).
   bool gaussian_depth = false;
