@@ -70,7 +70,7 @@ float pixels_per_mm(const DemoScene &scene, const CameraMatrices &camera, int he
 
 // SSS_FRAME_REGION as a host computes it: the screen rectangle of every vertex's bounds (all
 // translucent geometry is inside them), padded by the kernel's reach in pixels at the nearest
-// corner, at alpha 1: eq. (1) reaches 3 kernel mm at most, which is 3 / separable_scale mm of
+// corner, at alpha 1: eq. (1) reaches 2 kernel mm at every tap count, which is 2 / separable_scale mm of
 // surface, times scale. (The other families reach as far as their profile does, sss_kernel_plan's
 // out_reach_mm; the pad is eq. (1)'s for all.) False when a corner is behind the camera: then no
 // region is given (the whole viewport is filtered).
@@ -92,7 +92,7 @@ bool translucent_region(const DemoScene &scene, const CameraMatrices &camera, co
   }
   sss_settings defaults{};
   sss_default_settings(&defaults);  // the demo leaves separable_scale at the library's default
-  const float reach_mm = 3.0f / defaults.separable_scale * controls.scale;
+  const float reach_mm = 2.0f / defaults.separable_scale * controls.scale;
   const float pixels_per_mm_at_nearest =
       0.5f * static_cast<float>(std::max(width, height)) *
       std::max(camera.projection[0][0], camera.projection[1][1]) * scene.world_units_per_mm / nearest;

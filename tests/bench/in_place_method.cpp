@@ -83,7 +83,7 @@ class InPlaceMethod : public LibraryFrameMethod {
       region_rect_ = {0, 0, 0, 0};
       return;
     }
-    const double range_mm = sss::math::separable_kernel_range_mm(taps_);
+    const double range_mm = sss::math::kSeparableKernelRangeMm;
     const double world_per_mm = scene.world_units_per_mm;
     const double pixels_per_mm = std::max(std::fabs(scene.projection[0]) * 0.5 * scene.width,
                                           std::fabs(scene.projection[5]) * 0.5 * scene.height) *

@@ -70,48 +70,61 @@ double median_footprint_mm(const RegionInput& in) {
   return *middle;
 }
 
-std::vector<uint8_t> classify_regions(const RegionInput& in) {
-  check(in);
+namespace {
+
+std::size_t pixel_index(int width, int x, int y) {
+  return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+}
+
+// Silhouette pixels (regions.hpp): non-translucent ones, and with `depth_steps` translucent ones
+// at a depth step.
+std::vector<uint8_t> edge_pixels(const RegionInput& in, const std::vector<double>& pixel_mm, bool depth_steps) {
   const int w = in.width, h = in.height;
-  const auto index = [w](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x); };
-  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-  const std::vector<double> pixel_mm = pixel_footprints_mm(in);
-  // Silhouette pixels: non-translucent ones, and translucent ones at a depth step.
-  std::vector<uint8_t> edge(n, 0);
+  std::vector<uint8_t> edge(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const std::size_t i = index(x, y);
+      const std::size_t i = pixel_index(w, x, y);
       if (in.mask[i] == 0) {
         edge[i] = 1;
         continue;
       }
+      if (!depth_steps) continue;
       const double limit = 4.0 * pixel_mm[i] * in.world_units_per_mm;  // world units
       const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
       for (int k = 0; k < 4 && edge[i] == 0; ++k) {
-        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= h || in.mask[index(nx[k], ny[k])] == 0) continue;
-        if (std::fabs(static_cast<double>(in.distance[index(nx[k], ny[k])]) - in.distance[i]) > limit) edge[i] = 1;
+        if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= h || in.mask[pixel_index(w, nx[k], ny[k])] == 0) continue;
+        if (std::fabs(static_cast<double>(in.distance[pixel_index(w, nx[k], ny[k])]) - in.distance[i]) > limit) edge[i] = 1;
       }
     }
   }
-  // Per row, the column offset to the nearest silhouette pixel in that row (large when none).
+  return edge;
+}
+
+// Per translucent pixel: its region, with "near an edge" meaning within the reach of an `edge`
+// pixel (silhouette) and border as regions.hpp says.
+std::vector<uint8_t> classify_by_edges(const RegionInput& in, const std::vector<double>& pixel_mm,
+                                       const std::vector<uint8_t>& edge) {
+  const int w = in.width, h = in.height;
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  // Per row, the column offset to the nearest edge pixel in that row (large when none).
   constexpr int kFar = std::numeric_limits<int>::max() / 4;
   std::vector<int> nearest(n, kFar);
   for (int y = 0; y < h; ++y) {
     int last = -kFar;
     for (int x = 0; x < w; ++x) {
-      if (edge[index(x, y)] != 0) last = x;
-      nearest[index(x, y)] = x - last;
+      if (edge[pixel_index(w, x, y)] != 0) last = x;
+      nearest[pixel_index(w, x, y)] = x - last;
     }
     last = 2 * kFar;
     for (int x = w - 1; x >= 0; --x) {
-      if (edge[index(x, y)] != 0) last = x;
-      nearest[index(x, y)] = std::min(nearest[index(x, y)], last - x);
+      if (edge[pixel_index(w, x, y)] != 0) last = x;
+      nearest[pixel_index(w, x, y)] = std::min(nearest[pixel_index(w, x, y)], last - x);
     }
   }
   std::vector<uint8_t> regions(n, static_cast<uint8_t>(Region::none));
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const std::size_t i = index(x, y);
+      const std::size_t i = pixel_index(w, x, y);
       if (in.mask[i] == 0) continue;
       const double reach = in.reach_mm / pixel_mm[i];  // pixels
       const double to_frame = std::min({x + 0.5, w - x - 0.5, y + 0.5, h - y - 0.5});
@@ -121,13 +134,33 @@ std::vector<uint8_t> classify_regions(const RegionInput& in) {
       }
       // Rows within the reach (all inside the frame, as the pixel is not in the border).
       const int rows = static_cast<int>(std::floor(reach));
-      bool near_silhouette = false;
-      for (int dy = -rows; dy <= rows && !near_silhouette; ++dy) {
-        const double dx = nearest[index(x, y + dy)];
-        near_silhouette = dx * dx + static_cast<double>(dy) * dy <= reach * reach;
+      bool near_edge = false;
+      for (int dy = -rows; dy <= rows && !near_edge; ++dy) {
+        const double dx = nearest[pixel_index(w, x, y + dy)];
+        near_edge = dx * dx + static_cast<double>(dy) * dy <= reach * reach;
       }
-      regions[i] = static_cast<uint8_t>(near_silhouette ? Region::silhouette : Region::interior);
+      regions[i] = static_cast<uint8_t>(near_edge ? Region::silhouette : Region::interior);
     }
+  }
+  return regions;
+}
+
+}  // namespace
+
+std::vector<uint8_t> classify_regions(const RegionInput& in) {
+  check(in);
+  const std::vector<double> pixel_mm = pixel_footprints_mm(in);
+  return classify_by_edges(in, pixel_mm, edge_pixels(in, pixel_mm, true));
+}
+
+std::vector<uint8_t> classify_regions_with_depth_edges(const RegionInput& in) {
+  check(in);
+  const std::vector<double> pixel_mm = pixel_footprints_mm(in);
+  std::vector<uint8_t> regions = classify_by_edges(in, pixel_mm, edge_pixels(in, pixel_mm, true));
+  const std::vector<uint8_t> outline = classify_by_edges(in, pixel_mm, edge_pixels(in, pixel_mm, false));
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    if (regions[i] == static_cast<uint8_t>(Region::silhouette) && outline[i] == static_cast<uint8_t>(Region::interior))
+      regions[i] = static_cast<uint8_t>(Region::depth_edge);
   }
   return regions;
 }

@@ -30,8 +30,8 @@
 
 namespace sss_bench {
 
-enum class Region : uint8_t { none = 0, interior = 1, silhouette = 2, border = 3 };
-constexpr int kRegionCount = 3;  // interior, silhouette, border
+enum class Region : uint8_t { none = 0, interior = 1, silhouette = 2, border = 3, depth_edge = 4, thin = 5 };
+constexpr int kRegionCount = 3;  // interior, silhouette, border: what classify_regions gives
 
 // The tail share that defines the reach above.
 constexpr double kReachTail = 1e-3;
@@ -62,6 +62,12 @@ double median_footprint_mm(const RegionInput& input);
 
 // One Region (as uint8_t) per pixel, row 0 at the bottom. Throws std::invalid_argument on bad input.
 std::vector<uint8_t> classify_regions(const RegionInput& input);
+
+// As classify_regions, with the silhouette split where the whole-surface study (issue 49) needs it:
+// silhouette (within the reach of a non-translucent pixel: the surface's outline) and depth_edge
+// (otherwise within the reach of a depth step between translucent pixels: the nose over the cheek,
+// eyelids, lips). Never Region::thin (the study finds thin parts on the mesh).
+std::vector<uint8_t> classify_regions_with_depth_edges(const RegionInput& input);
 
 // The selection mask of one region (1 where the pixel is in it), for metrics.hpp's functions.
 std::vector<uint8_t> region_mask(const std::vector<uint8_t>& regions, Region r);

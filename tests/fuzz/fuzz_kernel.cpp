@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   for (float& v : falloff) v = unit_value(in);
   const auto kernel = sss::math::separable_kernel(samples, strength, falloff);
   SSS_FUZZ_CHECK(kernel.size() == static_cast<std::size_t>(samples));
-  const float range = static_cast<float>(sss::math::separable_kernel_range_mm(samples));
+  const float range = static_cast<float>(sss::math::kSeparableKernelRangeMm);
   SSS_FUZZ_CHECK(kernel[0].offset_mm == 0.0f);
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;

@@ -101,7 +101,7 @@ TEST_F(Invariants, AnIsolatedDotKeepsItsEnergy) {
   FilterCase c;
   c.settings = wide_settings();
   c.settings.taps = 25;
-  // The kernel's reach (3 kernel mm over separable_scale, about 7 mm of surface) 0.03 world units
+  // The kernel's reach (2 kernel mm over separable_scale, about 4.5 mm of surface) 0.03 world units
   // each: about 28 pixels at distance 1, so all of the dot's light stays inside the 96-pixel frame.
   c.settings.world_units_per_mm = 0.03f;
   const FilterOutcome o = run_case(scene, c);

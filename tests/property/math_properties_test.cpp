@@ -150,7 +150,7 @@ RC_GTEST_PROP(KernelProperties, WeightsAreFiniteNonNegativeAndSumToOne, ()) {
   const auto falloff = *unit_triple();
   const auto kernel = sss::math::separable_kernel(n, strength, falloff);
   RC_ASSERT(kernel.size() == static_cast<std::size_t>(n));
-  const double range = sss::math::separable_kernel_range_mm(n);
+  const double range = sss::math::kSeparableKernelRangeMm;
   RC_ASSERT(kernel[0].offset_mm == 0.0f);
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;

@@ -165,6 +165,33 @@ std::vector<double> turned_60(const Csv& turns, const Series& s) {
   return out;
 }
 
+// The whole-surface study (docs/benchmarks/whole-surface.csv, sss_whole_surface): a method's
+// interior miss on the 960x540 close-up against the pixel-consistent whole-surface answer; NaN where
+// the study did not run it (it runs eq. (1) at its tap counts, the sum of Gaussians at 17, no scattering).
+const char* const kWholeSurfaceShot = "close-up";
+
+// The study's CSV names a method by its label's slug (whole_surface_report.hpp's file_slug).
+std::string whole_surface_method(const Series& s) {
+  const std::string method = s.method;
+  if (method == "no-scattering") return "no-scattering-the-input";
+  if (method == "separable" && s.follow_surface == 1) return "default-" + std::to_string(s.taps) + "-taps";
+  if (method == "sum-of-gaussians" && s.follow_surface == 1) return "sum-of-Gaussians-" + std::to_string(s.taps) + "-taps";
+  return "";
+}
+
+double whole_surface_miss(const Csv& study, const std::string& method) {
+  const int shot = study.column("shot"), name = study.column("method"), answer = study.column("answer"),
+            region = study.column("region"), pooled = study.column("pooled");
+  if (method.empty() || shot < 0 || name < 0 || answer < 0 || region < 0 || pooled < 0) return std::nan("");
+  for (const auto& row : study.rows) {
+    if (field(row, shot) == kWholeSurfaceShot && field(row, name) == method && field(row, answer) == "pixel-consistent" &&
+        field(row, region) == "interior") {
+      return number(field(row, pooled));
+    }
+  }
+  return std::nan("");
+}
+
 // "median (low–high)", or "–" for none.
 std::string median_and_range(const std::vector<double>& v) {
   if (v.empty()) return "–";
@@ -183,11 +210,13 @@ std::string headline(const fs::path& root) {
   }
   const fs::path turn_csv = results / "turn-sweep/results.csv";
   const Csv turns = fs::exists(turn_csv) ? read_csv(turn_csv) : Csv{};
+  const fs::path whole_csv = results / "whole-surface.csv";
+  const Csv whole = fs::exists(whole_csv) ? read_csv(whole_csv) : Csv{};
   std::ostringstream out;
   out << "| method | passes | interior `miss`, footprint sweep: median (range) | interior `miss`, planes turned "
          "60°: median (range) | interior `miss`, head close-up "
-      << kShotWidth << "×" << kShotHeight << " | ms, same shot | × copy |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|\n";
+      << kShotWidth << "×" << kShotHeight << " | interior `miss`, head, whole surface 960×540 | ms, same shot | × copy |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Series& s : kRows) {
     std::vector<double> sweep;
     for (const auto& row : csv.rows) {
@@ -199,13 +228,25 @@ std::string headline(const fs::path& root) {
     out << "| " << s.label << " | " << (shot ? field(*shot, c.passes) : "–") << " | " << median_and_range(sweep)
         << " | " << median_and_range(turned_60(turns, s))
         << " | " << (shot ? miss3(number(field(*shot, c.miss))) : "–") << " | "
+        << miss3(whole_surface_miss(whole, whole_surface_method(s))) << " | "
         << (timed ? sig3(number(field(*shot, c.time_ms))) : "–") << " | "
         << (timed ? sig3(number(field(*shot, c.ratio))) : "–") << " |\n";
+  }
+  if (!whole.rows.empty()) {
+    // What no screen-space method can do better than there (whole_surface_study.cpp): detail finer
+    // than a pixel, and the light of the surface the camera does not see.
+    out << "| the floor there: detail finer than a pixel / light from hidden surface | – | – | – | – | "
+        << miss3(whole_surface_miss(whole, "the-input-s-floor-the-exact-light-answer")) << " / "
+        << miss3(whole_surface_miss(whole, "hidden-light-the-visible-surface-alone")) << " | – | – |\n";
   }
   const std::string renderer = json_string(json, "renderer");
   out << "\nMeasured on `" << renderer << "` (" << json_string(json, "version")
       << (renderer.find("llvmpipe") != std::string::npos ? "; Mesa's CPU rasteriser: read its times as ratios" : "")
       << ") on " << json_string(json, "date") << "; how: [docs/benchmarks.md](docs/benchmarks.md)";
+  if (!whole.rows.empty()) {
+    out << "; the head against its whole surface, hidden parts included (the close-up under a soft-edged "
+           "key, CPU model of the passes): [docs/benchmarks/whole-surface.md](docs/benchmarks/whole-surface.md)";
+  }
   if (!turns.rows.empty()) {
     out << "; the turned planes (0.1-1 mm per facing pixel, turned about three screen axes, orthographic and "
            "perspective): [docs/benchmarks/turn-sweep.md](docs/benchmarks/turn-sweep.md)";

@@ -187,9 +187,9 @@ SSS_API sss_result sss_profile_desc_transmittance_terms(const sss_profile_desc *
 
 /** Fills `taps` taps of the separable kernel of the paper's eq. (1) into out_rgba as
  *  {weight r, weight g, weight b, offset in profile millimetres}: the centre tap first, then the
- *  others from the most negative offset to the most positive. Offsets span [-R, R] with R = 2 mm for
- *  taps <= 20 and 3 mm above, quadratically denser at the centre; each weight is the profile
- *  integrated exactly over the tap's interval, normalised per channel, then strength applied
+ *  others from the most negative offset to the most positive. Offsets span [-R, R] with R = 2 mm at
+ *  every tap count (3 mm above 20 taps before issue 49, docs/migration.md), quadratically denser at
+ *  the centre; each weight is the profile integrated exactly over the tap's interval, normalised per channel, then strength applied
  *  (centre: 1 - s + s·w0; others: s·w). Each channel sums to 1.
  *  @retval SSS_OK
  *  @retval SSS_ERROR_INVALID_ARGUMENT taps even or outside [3, 65], a NULL pointer, strength or falloff

@@ -40,7 +40,7 @@ PassConstants compute_pass_constants(const FilterSettings& settings, const Matri
   // has units of 1/length²: it matches this only at the scale of the paper's own scene (about 6 mm
   // of reach there) and lets a background 0.5 m behind a metric-scale head bleed in. (A denormal
   // scale gives a factor beyond float's range: FLT_MAX.)
-  const double reach = (reach_mm < 0.0 ? separable_kernel_range_mm(settings.samples) / settings.separable_scale : reach_mm) *
+  const double reach = (reach_mm < 0.0 ? kSeparableKernelRangeMm / settings.separable_scale : reach_mm) *
                        world_per_mm;
   k.follow_surface_factor = settings.follow_surface && reach > 0.0 ? clamp_to_float(1.0 / reach) : 0.0f;
   k.mm_per_world = world_per_mm > 0.0 ? clamp_to_float(1.0 / world_per_mm) : std::numeric_limits<float>::max();

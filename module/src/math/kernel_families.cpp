@@ -52,7 +52,7 @@ KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, con
   KernelPlan plan;
   SeparableTerm term;
   term.horizontal = separable_kernel(samples, strength, falloff);
-  const double range = separable_kernel_range_mm(samples);  // kernel mm
+  const double range = kSeparableKernelRangeMm;  // kernel mm
   for (KernelTap& tap : term.horizontal) {
     tap.offset_mm = static_cast<float>(static_cast<double>(tap.offset_mm) / kernel_mm_per_mm);
   }

@@ -6,10 +6,8 @@
 
 namespace sss::math {
 
-double separable_kernel_range_mm(int samples) { return samples > 20 ? 3.0 : 2.0; }
-
 std::vector<double> separable_kernel_offsets(int samples) {
-  return separable_kernel_offsets(samples, separable_kernel_range_mm(samples));
+  return separable_kernel_offsets(samples, kSeparableKernelRangeMm);
 }
 
 std::vector<double> separable_kernel_offsets(int samples, double range) {
@@ -25,7 +23,7 @@ std::vector<double> separable_kernel_offsets(int samples, double range) {
 
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,
                                         const std::array<float, 3>& falloff) {
-  return separable_kernel(samples, strength, falloff, separable_kernel_range_mm(samples));
+  return separable_kernel(samples, strength, falloff, kSeparableKernelRangeMm);
 }
 
 std::vector<KernelTap> separable_kernel(int samples, const std::array<float, 3>& strength,

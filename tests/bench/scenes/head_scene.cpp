@@ -14,6 +14,9 @@
 // x tangent.w. The green channel is inverted (kNormalMapGreenSign = -1): the map stores +green
 // towards +v (down the image in glTF's top-left texture space) while the mesh's bitangent points
 // towards -v; scenes_test checks this on the asset (normal_map_green_convention).
+// HeadView::soft_light filters the key's shadow and projects it through soft-edged bars (the shader's
+// soft_shadow and key_pattern). With points (the whole-surface reference), a third pass runs the
+// same fragment shader once per point of the mesh (light_at_points).
 #include "head_scene.hpp"
 
 #include <algorithm>
@@ -109,6 +112,42 @@ uniform vec3 u_key_colour;
 uniform vec3 u_fill_direction;
 uniform vec3 u_fill_colour;
 uniform vec3 u_ambient;
+// HeadView::soft_light: the key's shadow filtered (a box PCF of (2·u_pcf_radius + 1)² taps a texel
+// apart) and the key projected through a pattern of bars u_pattern_period wide, lit 1 and 0.3,
+// with edges ramped over u_pattern_edge (world units across the key's beam).
+uniform int u_soft_light;
+uniform int u_pcf_radius;
+uniform float u_shadow_texel_depth;
+uniform vec2 u_light_extent;  // the world size the shadow map's [0, 1]² spans
+uniform float u_pattern_period;
+uniform float u_pattern_edge;
+
+float soft_shadow(vec3 s, vec3 n) {
+  // Receiver-plane bias: a tap k texels away compares a depth nearer the light by k texels times
+  // the tangent of the incidence (capped at 60 degrees) on a surface slanted to the key.
+  float cos_i = max(dot(n, u_key_direction), 0.5);
+  float slope = sqrt(1.0 - cos_i * cos_i) / cos_i;
+  vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
+  float lit = 0.0, taps = 0.0;
+  for (int y = -u_pcf_radius; y <= u_pcf_radius; ++y) {
+    for (int x = -u_pcf_radius; x <= u_pcf_radius; ++x) {
+      vec2 at = s.xy + vec2(float(x), float(y)) * texel;
+      float reach = length(vec2(float(x), float(y))) * u_shadow_texel_depth;
+      lit += texture(u_shadow_map, vec3(at, s.z - u_depth_bias - 2.0 * reach * slope));
+      taps += 1.0;
+    }
+  }
+  return lit / taps;
+}
+
+float key_pattern(vec3 s) {
+  vec2 beam = s.xy * u_light_extent;
+  float p = dot(beam, vec2(0.8660254, 0.5)) / u_pattern_period;
+  float from_bar_centre = abs(fract(p) - 0.5) * u_pattern_period;
+  float quarter = 0.25 * u_pattern_period;
+  return 0.3 + 0.7 * (1.0 - smoothstep(quarter - 0.5 * u_pattern_edge, quarter + 0.5 * u_pattern_edge, from_bar_centre));
+}
+
 void main() {
   vec3 n = normalize(v_normal);
   vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
@@ -121,7 +160,12 @@ void main() {
   // normal; no light where the surface itself faces away from the key.
   vec4 light = u_light_matrix * vec4(v_world + n * u_normal_offset, 1.0);
   vec3 s = light.xyz / light.w * 0.5 + 0.5;
-  float shadow = texture(u_shadow_map, vec3(s.xy, s.z - u_depth_bias));
+  float shadow;
+  if (u_soft_light == 0) {
+    shadow = texture(u_shadow_map, vec3(s.xy, s.z - u_depth_bias));
+  } else {
+    shadow = soft_shadow(s, n) * key_pattern(s);
+  }
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) shadow = 1.0;
   if (dot(n, u_key_direction) <= 0.0) shadow = 0.0;
 
@@ -130,6 +174,34 @@ void main() {
   vec3 albedo = texture(u_albedo, v_texcoord).rgb;
   o_irradiance = vec4(albedo * irradiance_in, 1.0);
   o_distance = vec4(v_distance, 0.0, 0.0, 0.0);
+}
+)";
+
+// The light at points of the mesh (head_light_at): each point one texel of a RGBA32F target, its
+// attributes interpolated on the CPU as the rasteriser would, and the scene's own fragment shader.
+// A point's quad has the same attributes at every fragment, so texture() reads the base level.
+const char* const kPointsVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_texcoord;
+layout(location = 3) in vec4 a_tangent;
+uniform mat4 u_view;
+uniform int u_target_width;
+uniform vec2 u_target_size;
+out vec3 v_world;
+out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_texcoord;
+out float v_distance;
+void main() {
+  v_world = a_position;
+  v_normal = a_normal;
+  v_tangent = a_tangent;
+  v_texcoord = a_texcoord;
+  v_distance = -(u_view * vec4(a_position, 1.0)).z;
+  vec2 texel = vec2(float(gl_VertexID % u_target_width), float(gl_VertexID / u_target_width)) + 0.5;
+  gl_Position = vec4(texel / u_target_size * 2.0 - 1.0, 0.0, 1.0);
+  gl_PointSize = 1.0;
 }
 )";
 
@@ -340,6 +412,75 @@ void set_vec3(GLuint program, const char* name, const float* v) {
   glUniform3fv(glGetUniformLocation(program, name), 1, v);
 }
 
+constexpr int kSoftPcfRadius = 4;         // HeadView::soft_light: 9x9 taps, a texel apart
+constexpr double kPatternPeriodMm = 14.0;  // its bars' period across the key's beam
+constexpr double kPatternEdgeMm = 1.6;     // and the width of their edges' ramp
+
+// The points pass: the points' attributes interpolated from their triangles' corners (position,
+// normal, texcoord, tangent: what the rasteriser hands the fragment shader), drawn as GL_POINTS in
+// batches into an RGBA32F target of kPointsTargetWidth texels per row, read back. The scene's
+// textures and shadow map stay bound on their units; no depth test.
+constexpr int kPointsTargetWidth = 1024;
+constexpr std::size_t kPointsPerBatch = std::size_t{1} << 20;
+
+void light_at_points(GlObjects& objects, const HeadAsset& asset, GLuint program, const std::vector<SurfacePoint>& points,
+                     std::vector<std::array<float, 3>>* light) {
+  light->assign(points.size(), {0.0f, 0.0f, 0.0f});
+  glUniform1i(glGetUniformLocation(program, "u_target_width"), kPointsTargetWidth);
+  const int rows = static_cast<int>((kPointsPerBatch + kPointsTargetWidth - 1) / kPointsTargetWidth);
+  glUniform2f(glGetUniformLocation(program, "u_target_size"), static_cast<float>(kPointsTargetWidth), static_cast<float>(rows));
+  glActiveTexture(GL_TEXTURE3);
+  const GLuint target = make_texture(objects, GL_RGBA32F, kPointsTargetWidth, rows, GL_RGBA, GL_FLOAT, nullptr);
+  const GLuint distance = make_texture(objects, GL_R32F, kPointsTargetWidth, rows, GL_RED, GL_FLOAT, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  make_framebuffer(objects);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, distance, 0);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
+  check_framebuffer("points");
+  glViewport(0, 0, kPointsTargetWidth, rows);
+  glDisable(GL_DEPTH_TEST);
+  GLuint vertex_array = 0, buffer = 0;
+  glGenVertexArrays(1, &vertex_array);
+  objects.vertex_arrays.push_back(vertex_array);
+  glBindVertexArray(vertex_array);
+  glGenBuffers(1, &buffer);
+  objects.buffers.push_back(buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  constexpr std::size_t kFloats = HeadAsset::kFloatsPerVertex;
+  const GLsizei stride = static_cast<GLsizei>(kFloats * sizeof(float));
+  const int sizes[4] = {3, 3, 2, 4}, offsets[4] = {0, 3, 6, 8};
+  for (GLuint a = 0; a < 4; ++a) {
+    glEnableVertexAttribArray(a);
+    glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(static_cast<uintptr_t>(offsets[a]) * sizeof(float)));
+  }
+  std::vector<float> attributes, read(static_cast<std::size_t>(kPointsTargetWidth) * static_cast<std::size_t>(rows) * 4);
+  for (std::size_t first = 0; first < points.size(); first += kPointsPerBatch) {
+    const std::size_t count = std::min(kPointsPerBatch, points.size() - first);
+    attributes.assign(count * kFloats, 0.0f);
+    for (std::size_t i = 0; i < count; ++i) {
+      const SurfacePoint& p = points[first + i];
+      const float weights[3] = {1.0f - p.b1 - p.b2, p.b1, p.b2};
+      for (std::size_t corner = 0; corner < 3; ++corner) {
+        const float* v = &asset.vertices[static_cast<std::size_t>(asset.indices[p.triangle * 3u + corner]) * kFloats];
+        for (std::size_t k = 0; k < kFloats; ++k) attributes[i * kFloats + k] += weights[corner] * v[k];
+      }
+    }
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(attributes.size() * sizeof(float)), attributes.data(), GL_STREAM_DRAW);
+    const float clear[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, clear);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, kPointsTargetWidth, rows, GL_RGBA, GL_FLOAT, read.data());
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t c = 0; c < 3; ++c) (*light)[first + i][c] = read[i * 4 + c];
+    }
+  }
+}
+
 }  // namespace
 
 HeadLights head_lights() {
@@ -363,8 +504,11 @@ void head_camera(const HeadView& view, int width, int height, Mat4* projection, 
   *view_matrix = look_at(eye, view.target, Vec3{0, 1, 0});
 }
 
-Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view) {
+Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view,
+                        const std::vector<SurfacePoint>* points, std::vector<std::array<float, 3>>* point_light) {
   const HeadAsset& asset = head_asset();  // may throw before any GL call
+  if (points != nullptr && (view.preintegrated || point_light == nullptr))
+    throw std::invalid_argument("head scene " + name + ": the light at points needs a Lambert view and an output");
 
   Scene scene;
   scene.name = name;
@@ -548,20 +692,31 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
       const float blend[3] = {1.0f, 0.222f, 0.134f};  // sss_blur_normals' factors for skin
       set_vec3(program, "u_normal_blend", blend);
     }
-    glUniform1i(glGetUniformLocation(program, "u_albedo"), 0);
-    glUniform1i(glGetUniformLocation(program, "u_normal_map"), 1);
-    glUniform1i(glGetUniformLocation(program, "u_shadow_map"), 2);
-    set_matrix(program, "u_view", view_matrix);
-    set_matrix(program, "u_projection", projection);
-    set_matrix(program, "u_light_matrix", light_matrix);
-    glUniform1f(glGetUniformLocation(program, "u_normal_offset"), static_cast<float>(1.5 * texel));
-    glUniform1f(glGetUniformLocation(program, "u_depth_bias"), 1e-4f);
-    glUniform1f(glGetUniformLocation(program, "u_green_sign"), kNormalMapGreenSign);
-    set_vec3(program, "u_key_direction", kKeyDirection);
-    set_vec3(program, "u_key_colour", kKeyColour);
-    set_vec3(program, "u_fill_direction", kFillDirection);
-    set_vec3(program, "u_fill_colour", kFillColour);
-    set_vec3(program, "u_ambient", kAmbient);
+    // The uniforms of the Lambert shader, for the scene's program and the points' (head_light_at).
+    const auto set_lighting = [&](GLuint p) {
+      glUniform1i(glGetUniformLocation(p, "u_albedo"), 0);
+      glUniform1i(glGetUniformLocation(p, "u_normal_map"), 1);
+      glUniform1i(glGetUniformLocation(p, "u_shadow_map"), 2);
+      set_matrix(p, "u_view", view_matrix);
+      set_matrix(p, "u_projection", projection);
+      set_matrix(p, "u_light_matrix", light_matrix);
+      glUniform1f(glGetUniformLocation(p, "u_normal_offset"), static_cast<float>(1.5 * texel));
+      glUniform1f(glGetUniformLocation(p, "u_depth_bias"), 1e-4f);
+      glUniform1f(glGetUniformLocation(p, "u_green_sign"), kNormalMapGreenSign);
+      set_vec3(p, "u_key_direction", kKeyDirection);
+      set_vec3(p, "u_key_colour", kKeyColour);
+      set_vec3(p, "u_fill_direction", kFillDirection);
+      set_vec3(p, "u_fill_colour", kFillColour);
+      set_vec3(p, "u_ambient", kAmbient);
+      glUniform1i(glGetUniformLocation(p, "u_soft_light"), view.soft_light ? 1 : 0);
+      glUniform1i(glGetUniformLocation(p, "u_pcf_radius"), kSoftPcfRadius);
+      // Light NDC depth spans 3·radius (near 0.5r, far 3.5r), window depth half of NDC's 2.
+      glUniform1f(glGetUniformLocation(p, "u_shadow_texel_depth"), static_cast<float>(texel / (3.0 * radius)));
+      glUniform2f(glGetUniformLocation(p, "u_light_extent"), static_cast<float>(2 * radius), static_cast<float>(2 * radius));
+      glUniform1f(glGetUniformLocation(p, "u_pattern_period"), static_cast<float>(kPatternPeriodMm * 1e-3));
+      glUniform1f(glGetUniformLocation(p, "u_pattern_edge"), static_cast<float>(kPatternEdgeMm * 1e-3));
+    };
+    set_lighting(program);
     glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
 
     glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -569,6 +724,14 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, scene.distance.data());
     glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, scene.window_depth.data());
+
+    // The points pass reads the material textures still bound on units 0 and 1 and the shadow map on 2.
+    if (points != nullptr) {
+      const GLuint points_program = build_program(objects, kPointsVertex, kSceneFragment, "points");
+      glUseProgram(points_program);
+      set_lighting(points_program);
+      light_at_points(objects, asset, points_program, *points, point_light);
+    }
     glBindTexture(GL_TEXTURE_2D, 0);
   }
   const GLenum error = glGetError();

@@ -2,7 +2,9 @@
 // Internal to sss_bench_scenes.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "scene.hpp"
 #include "scene_math.hpp"
@@ -21,6 +23,10 @@ struct HeadView {
   // LUTs of the math layer, integration/preintegrated/sss_preintegrated.glsl, curvature from
   // derivatives, the geometric normal as the blurred one, and a wide box PCF on the key's shadow.
   bool preintegrated = false;
+  // The soft light of the whole-surface study (issue 49): the key's shadow filtered over 9 shadow-map
+  // texels (about 2.6 mm) and the key projected through bars 14 mm apart whose edges ramp over 1.6 mm
+  // (four pixels of the 960x540 close-up), so that the light has no edge narrower than two pixels.
+  bool soft_light = false;
 };
 
 // The camera of each head scene by name (scenes.cpp: "head-close", "head-grazing", "head-mid",
@@ -42,7 +48,12 @@ void head_camera(const HeadView& view, int width, int height, Mat4* projection, 
 // How the normal map's green channel is read (see head_scene.cpp): +1 as stored, -1 inverted.
 extern const float kNormalMapGreenSign;
 
-Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view);
+// The head scene of `view`. With `points` (not for a pre-integrated view): also the light the scene's
+// shader gives at those points of the scan's mesh (head_asset's triangles), hidden or not, RGB with
+// the albedo, into *point_light (one per point): the scene's fragment shader run once per point.
+Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view,
+                        const std::vector<SurfacePoint>* points = nullptr,
+                        std::vector<std::array<float, 3>>* point_light = nullptr);
 
 // head-mixed (mixed_scene.cpp): the head of `view` with a marble bust and a wax candle beside it;
 // fills Scene::profile and Scene::profile_materials.

@@ -36,6 +36,13 @@ struct Scene {
   std::vector<int> profile_materials;
 };
 
+// A point on a triangle mesh: triangle t at barycentric (1 - b1 - b2, b1, b2) of its corners (the
+// whole-surface reference's samples, tests/bench/whole_surface.hpp).
+struct SurfacePoint {
+  std::uint32_t triangle = 0;
+  float b1 = 0.0f, b2 = 0.0f;
+};
+
 // The turn sweep's plane (make_turned_plane_scene): a point on it and its unit normal, view space,
 // metres, so that a reference can take its depth and tangents exactly rather than from the floats.
 struct PlaneGeometry {
