@@ -13,11 +13,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot3(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Point3 cross3(const Point3& a, const Point3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // 21 bits per axis, centred: cells -2^20 .. 2^20 - 1.
 constexpr std::int64_t kCellOffset = 1 << 20;
@@ -48,8 +43,8 @@ Point3 surface_position(const SurfaceMesh& mesh, const SurfacePoint& p) {
 
 Point3 triangle_normal(const SurfaceMesh& mesh, std::size_t triangle) {
   const Point3 a = mesh.vertex(triangle, 0);
-  const Point3 n = cross3(sub(mesh.vertex(triangle, 1), a), sub(mesh.vertex(triangle, 2), a));
-  const double length = std::sqrt(dot3(n, n));
+  const Point3 n = point_cross(point_sub(mesh.vertex(triangle, 1), a), point_sub(mesh.vertex(triangle, 2), a));
+  const double length = std::sqrt(point_dot(n, n));
   if (!(length > 0.0)) return {0.0, 0.0, 0.0};
   return {n[0] / length, n[1] / length, n[2] / length};
 }
@@ -60,11 +55,11 @@ SurfaceSampling sample_surface(const SurfaceMesh& mesh, double spacing, const st
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     if (keep != nullptr && (*keep)[t] == 0) continue;
     const Point3 a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
-    const Point3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
-    const Point3 n = cross3(ab, ac);
-    const double area = 0.5 * std::sqrt(dot3(n, n));
+    const Point3 ab = point_sub(b, a), ac = point_sub(c, a), bc = point_sub(c, b);
+    const Point3 n = point_cross(ab, ac);
+    const double area = 0.5 * std::sqrt(point_dot(n, n));
     if (!(area > 0.0)) continue;
-    const double longest = std::sqrt(std::max({dot3(ab, ab), dot3(ac, ac), dot3(bc, bc)}));
+    const double longest = std::sqrt(std::max({point_dot(ab, ab), point_dot(ac, ac), point_dot(bc, bc)}));
     const int divisions = std::max(1, static_cast<int>(std::ceil(longest / spacing)));
     const double sub_area = area / (static_cast<double>(divisions) * divisions);
     const double step = 1.0 / divisions;
@@ -198,8 +193,8 @@ WholeSurfaceValue WholeSurfaceReference::at(const Receiver& receiver, const Poin
           if (found == b.keys.end() || *found != key) continue;
           const std::size_t k = static_cast<std::size_t>(found - b.keys.begin());
           for (std::size_t i = b.begin[k]; i < b.begin[k + 1]; ++i) {
-            const Point3 d = sub(b.samples.position[i], receiver.position);
-            const double r2 = dot3(d, d);
+            const Point3 d = point_sub(b.samples.position[i], receiver.position);
+            const double r2 = point_dot(d, d);
             if (r2 > cutoff2) continue;
             const double g = std::exp(-r2 * inv_two_v) * norm * b.samples.area[i];
             const auto& e = b.samples.light.exact[i];
@@ -213,7 +208,7 @@ WholeSurfaceValue WholeSurfaceReference::at(const Receiver& receiver, const Poin
               for (std::size_t c = 0; c < 3; ++c) visible[c] += g * p[c];
               visible_mass += g;
             }
-            if (dot3(b.samples.normal[i], normal) < 0.0) away += g;
+            if (point_dot(b.samples.normal[i], normal) < 0.0) away += g;
           }
         }
       }

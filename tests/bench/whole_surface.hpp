@@ -30,6 +30,12 @@ namespace sss_bench {
 
 using Point3 = std::array<double, 3>;
 
+inline Point3 point_sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline double point_dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Point3 point_cross(const Point3& a, const Point3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 // A triangle mesh: vertex positions (world units) at the start of each vertex's floats.
 struct SurfaceMesh {
   const float* vertices = nullptr;

@@ -22,8 +22,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot3(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // World to view of a look_at matrix (rotation and translation, column-major).
 Point3 to_view(const detail::Mat4& m, const Point3& p) {
@@ -115,7 +113,7 @@ std::vector<std::uint8_t> triangles_within(const SurfaceMesh& mesh, const std::v
     const Point3 a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
     const Point3 centre = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
     double radius = 0.0;
-    for (const Point3& v : {a, b, c}) radius = std::max(radius, std::sqrt(dot3(sub(v, centre), sub(v, centre))));
+    for (const Point3& v : {a, b, c}) radius = std::max(radius, std::sqrt(point_dot(point_sub(v, centre), point_sub(v, centre))));
     const double limit = reach + radius;
     const int span = static_cast<int>(std::ceil(limit / cell));
     for (int dx = -span; dx <= span && keep[t] == 0; ++dx) {
@@ -125,8 +123,8 @@ std::vector<std::uint8_t> triangles_within(const SurfaceMesh& mesh, const std::v
           const auto found = grid.find(cell_key(probe, cell));
           if (found == grid.end()) continue;
           for (std::uint32_t r : found->second) {
-            const Point3 d = sub(receivers[r], centre);
-            if (dot3(d, d) <= limit * limit) {
+            const Point3 d = point_sub(receivers[r], centre);
+            if (point_dot(d, d) <= limit * limit) {
               keep[t] = 1;
               break;
             }
@@ -150,7 +148,7 @@ Point3 pixel_normal(const Scene& s, const detail::Mat4& view, std::size_t pixel)
     for (int sign : {-1, 1}) {
       const int nx = x + sign * dx, ny = y + sign * dy;
       if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[index_of(s, nx, ny)] == 0) continue;
-      const Point3 d = sub(pixel_world_point(s, view, index_of(s, nx, ny)), centre);
+      const Point3 d = point_sub(pixel_world_point(s, view, index_of(s, nx, ny)), centre);
       const double step = std::fabs(s.distance[index_of(s, nx, ny)] - s.distance[pixel]);
       if (best < 0.0 || step < best) {
         best = step;
@@ -158,14 +156,13 @@ Point3 pixel_normal(const Scene& s, const detail::Mat4& view, std::size_t pixel)
       }
     }
   }
-  Point3 n = {axis[0][1] * axis[1][2] - axis[0][2] * axis[1][1], axis[0][2] * axis[1][0] - axis[0][0] * axis[1][2],
-              axis[0][0] * axis[1][1] - axis[0][1] * axis[1][0]};
-  const double length = std::sqrt(dot3(n, n));
+  Point3 n = point_cross(axis[0], axis[1]);
+  const double length = std::sqrt(point_dot(n, n));
   if (!(length > 0.0)) return {0.0, 0.0, 0.0};
   n = {n[0] / length, n[1] / length, n[2] / length};
   // Towards the camera: the eye is at the view's origin.
   const Point3 eye = to_world(view, {0.0, 0.0, 0.0});
-  if (dot3(n, sub(eye, centre)) < 0.0) n = {-n[0], -n[1], -n[2]};
+  if (point_dot(n, point_sub(eye, centre)) < 0.0) n = {-n[0], -n[1], -n[2]};
   return n;
 }
 
