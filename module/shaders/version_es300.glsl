@@ -6,3 +6,5 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 #define SSS_BINDING(unit)
+// GLSL ES 3.00 has no explicit uniform locations: a pass struct's fields are looked up at link.
+#define SSS_UNIFORM_AT(n)

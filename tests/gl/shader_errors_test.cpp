@@ -27,7 +27,7 @@ class ShaderErrors : public sss_test::GlTest {
     api.minor = api.es ? 0 : 3;  // the context GlTest makes
     std::string missing;
     ASSERT_TRUE(gl::load_functions(sss_headless_get_proc_address, headless_, api, &functions_, &missing)) << missing;
-    dialect_ = gl::choose_glsl_variant(api);
+    dialect_ = gl::choose_glsl_variant(api, false);  // a 3.3 context: GLSL 3.30 either way
   }
 
   // Builds `top` (with `defines`) as a fragment stage after the full-screen vertex stage, the pieces

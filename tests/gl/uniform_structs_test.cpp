@@ -4,16 +4,24 @@
 // every path, mode, texturing mode, per-pixel profiles and (desktop) MSAA, each program the module
 // linked is listed with glGetActiveUniform, and every active uniform outside a uniform block must
 // be a sampler or image, a field of one of the structs, a table (an array), or the vertex stage's
-// tile spans: a hand-declared scalar (`uniform float u_new;` in a shader) fails it.
+// tile spans: a hand-declared scalar (`uniform float u_new;` in a shader) fails it. And the
+// lookups: where the dialect has explicit uniform locations (GLSL 4.20 with
+// GL_ARB_explicit_uniform_location) no field is looked up by name, one glGetUniformIndices call per
+// struct says which fields a program uses, and every glGetUniformLocation is a sampler or a table,
+// each once per program; GLSL ES 3.00 has no explicit locations, so there each field is looked up
+// once per program.
 //   UniformStructs.*  every backend
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "filter_case.hpp"
+#include "gl/gl_functions.hpp"
 #include "gl/pass_uniforms.hpp"
 
 using namespace host_gl;
@@ -34,6 +42,12 @@ std::set<std::string> struct_fields() {
   return names;
 }
 
+// Tables (arrays the passes index) and the tile spans' one vec4 of the vertex stage
+// (fullscreen.vert), which the tile marks' and the tiles view's u_rect are alike: their programs'
+// one number. (u_spacing and u_rect are fields of other pass kinds' structs too.)
+const std::set<std::string> kOwn = {"u_cdf",       "u_spacing",      "u_profile",   "u_looks",
+                                    "u_texturing", "u_depth_factor", "u_tile_grid", "u_rect"};
+
 bool is_sampler_or_image(GLenum type) {
   switch (type) {
     case GL_SAMPLER_2D: case GL_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D: case GL_SAMPLER_2D_SHADOW:
@@ -48,11 +62,6 @@ bool is_sampler_or_image(GLenum type) {
 // The uniforms of the module's programs that exist now which are none of the above, as
 // "program N: name", and the count of programs looked at.
 std::vector<std::string> loose_uniforms(const std::set<std::string>& fields, int* programs) {
-  // Tables (arrays the passes index) and the tile spans' one vec4 of the vertex stage
-  // (fullscreen.vert), which the tile marks' and the tiles view's u_rect are alike: their
-  // programs' one number.
-  static const std::set<std::string> kOwn = {"u_cdf",     "u_spacing",     "u_profile",   "u_looks",
-                                             "u_texturing", "u_depth_factor", "u_tile_grid", "u_rect"};
   std::vector<std::string> loose;
   for (GLuint program = 1; program < 4096; ++program) {
     if (glIsProgram(program) != GL_TRUE) continue;
@@ -74,6 +83,44 @@ std::vector<std::string> loose_uniforms(const std::set<std::string>& fields, int
   return loose;
 }
 
+// The module's glGetUniformLocation calls (by program, the names in order) and its
+// glGetUniformIndices calls (by program, how many), recorded by a loader that wraps the two.
+using LocationFn = sss::gl::GLint(SSS_GL_APIENTRY*)(sss::gl::GLuint, const sss::gl::GLchar*);
+using IndicesFn = void(SSS_GL_APIENTRY*)(sss::gl::GLuint, sss::gl::GLsizei, const sss::gl::GLchar* const*,
+                                         sss::gl::GLuint*);
+struct Lookups {
+  std::map<GLuint, std::vector<std::string>> located;
+  std::map<GLuint, int> indexed;
+  LocationFn real_location = nullptr;
+  IndicesFn real_indices = nullptr;
+  sss_get_proc_address_fn base = nullptr;
+};
+Lookups g_lookups;
+
+sss::gl::GLint SSS_GL_APIENTRY recorded_location(sss::gl::GLuint program, const sss::gl::GLchar* name) {
+  g_lookups.located[program].push_back(name);
+  return g_lookups.real_location(program, name);
+}
+
+void SSS_GL_APIENTRY recorded_indices(sss::gl::GLuint program, sss::gl::GLsizei count,
+                                      const sss::gl::GLchar* const* names, sss::gl::GLuint* indices) {
+  ++g_lookups.indexed[program];
+  g_lookups.real_indices(program, count, names, indices);
+}
+
+void* recording_loader(const char* name, void* user) {
+  void* real = g_lookups.base(name, user);
+  if (std::strcmp(name, "glGetUniformLocation") == 0) {
+    g_lookups.real_location = reinterpret_cast<LocationFn>(real);
+    return reinterpret_cast<void*>(&recorded_location);
+  }
+  if (std::strcmp(name, "glGetUniformIndices") == 0) {
+    g_lookups.real_indices = reinterpret_cast<IndicesFn>(real);
+    return reinterpret_cast<void*>(&recorded_indices);
+  }
+  return real;
+}
+
 struct Prepared {
   const char* name;
   sss_settings settings;
@@ -82,11 +129,16 @@ struct Prepared {
   std::uint32_t output_format = 0;
 };
 
-class UniformStructs : public FilterCaseTest {};
+class UniformStructs : public FilterCaseTest {
+ protected:
+  // Every path, each with post-scatter and with a separate output; per-pixel profiles with
+  // pre-and-post-scatter; the half-resolution path; (desktop) MSAA in place and into an output.
+  std::vector<Prepared> preparations() const;
+  // A fresh context with `c`'s settings, prepared for `c`'s frames.
+  void prepare(const Prepared& c, const float* projection);
+};
 
-TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
-  const std::set<std::string> fields = struct_fields();
-  const SyntheticScene scene = make_relief_scene(kW, kH, 5, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+std::vector<Prepared> UniformStructs::preparations() const {
   std::vector<Prepared> cases;
   for (const PathCase& p : kEveryPath) {
     const sss_settings s = path_case_settings(visible_settings(17, SSS_FOLLOW_SURFACE, 0.045f), p.path, p.mode,
@@ -114,25 +166,37 @@ TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
     msaa.output_format = SSS_GL_RGBA16F;
     cases.push_back(msaa);
   }
+  return cases;
+}
+
+void UniformStructs::prepare(const Prepared& c, const float* projection) {
+  fresh_sss(c.settings, projection);
+  if (c.profile_format != 0) {
+    const sss_settings two[2] = {c.settings, c.settings};
+    ASSERT_EQ(sss_set_profiles(sss_, two, 2), SSS_OK) << sss_last_error(sss_);
+  }
+  sss_prepare_desc d = {};
+  d.struct_size = sizeof d;
+  d.width = kW;
+  d.height = kH;
+  d.color_format = SSS_GL_RGBA16F;
+  d.output_format = c.output_format;
+  d.depth_format = SSS_GL_DEPTH_COMPONENT32F;
+  d.samples = c.samples;
+  d.albedo_format = c.albedo_format;
+  d.profile_format = c.profile_format;
+  ASSERT_EQ(sss_prepare(sss_, &d), SSS_OK) << sss_last_error(sss_);
+}
+
+TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
+  const std::set<std::string> fields = struct_fields();
+  const SyntheticScene scene = make_relief_scene(kW, kH, 5, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+  const std::vector<Prepared> cases = preparations();
   int programs = 0;
   for (const Prepared& c : cases) {
     SCOPED_TRACE(c.name);
-    fresh_sss(c.settings, scene.projection.data());
-    if (c.profile_format != 0) {
-      const sss_settings two[2] = {c.settings, c.settings};
-      ASSERT_EQ(sss_set_profiles(sss_, two, 2), SSS_OK) << sss_last_error(sss_);
-    }
-    sss_prepare_desc d = {};
-    d.struct_size = sizeof d;
-    d.width = kW;
-    d.height = kH;
-    d.color_format = SSS_GL_RGBA16F;
-    d.output_format = c.output_format;
-    d.depth_format = SSS_GL_DEPTH_COMPONENT32F;
-    d.samples = c.samples;
-    d.albedo_format = c.albedo_format;
-    d.profile_format = c.profile_format;
-    ASSERT_EQ(sss_prepare(sss_, &d), SSS_OK) << sss_last_error(sss_);
+    prepare(c, scene.projection.data());
+    if (HasFatalFailure()) return;
     int built = 0;
     const std::vector<std::string> loose = loose_uniforms(fields, &built);
     programs += built;
@@ -140,6 +204,52 @@ TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
   }
   std::printf("%zu preparations, %d programs looked at\n", cases.size(), programs);
   EXPECT_GT(programs, static_cast<int>(cases.size()) * 3) << "too few programs were built for the check to say much";
+}
+
+TEST_F(UniformStructs, FieldsAreFoundWithoutALookupEach) {
+  const std::set<std::string> fields = struct_fields();
+  const SyntheticScene scene = make_relief_scene(kW, kH, 5, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
+  g_lookups = Lookups{};
+  g_lookups.base = is_gles() ? es30_get_proc_address : sss_headless_get_proc_address;
+  loader_override_ = recording_loader;
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  int field_lookups = 0, other_lookups = 0, index_calls = 0;
+  for (const Prepared& c : preparations()) {
+    SCOPED_TRACE(c.name);
+    g_lookups.located.clear();
+    g_lookups.indexed.clear();
+    prepare(c, scene.projection.data());
+    if (HasFatalFailure()) return;
+    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
+    const bool explicit_locations = stats.glsl_variant == SSS_GLSL_420_CORE;
+    for (const auto& [program, names] : g_lookups.located) {
+      std::set<std::string> seen;
+      for (const std::string& n : names) {
+        EXPECT_TRUE(seen.insert(n).second) << "program " << program << " looked " << n << " up twice";
+        const bool field = fields.count(n) != 0 && kOwn.count(n) == 0;
+        (field ? field_lookups : other_lookups) += 1;
+        if (explicit_locations) {
+          EXPECT_FALSE(field) << "program " << program << " looked its field " << n << " up";
+        }
+      }
+    }
+    for (const auto& [program, calls] : g_lookups.indexed) {
+      EXPECT_EQ(calls, 1) << "program " << program << ": one glGetUniformIndices for its struct";
+      index_calls += calls;
+    }
+    if (explicit_locations) {
+      EXPECT_GT(index_calls, 0) << "no program found its fields by index";
+    }
+  }
+  loader_override_ = nullptr;
+  std::printf("glGetUniformLocation: %d for struct fields, %d for samplers and tables; glGetUniformIndices: %d\n",
+              field_lookups, other_lookups, index_calls);
+  if (is_gles()) {
+    EXPECT_GT(field_lookups, 0) << "GLSL ES 3.00 has no explicit locations: its fields are looked up";
+  } else {
+    EXPECT_EQ(field_lookups, 0);
+  }
 }
 
 }  // namespace

@@ -420,8 +420,8 @@ typedef struct sss_prepare_desc {
 
 /** The shaders' GLSL dialect (sss_stats.glsl_variant). */
 typedef enum sss_glsl {
-  SSS_GLSL_330_CORE = 0, /**< OpenGL 3.3 to 4.1 */
-  SSS_GLSL_420_CORE = 1, /**< OpenGL 4.2+ (image units, compute from 4.3) */
+  SSS_GLSL_330_CORE = 0, /**< OpenGL 3.3 to 4.1, or 4.2 without GL_ARB_explicit_uniform_location */
+  SSS_GLSL_420_CORE = 1, /**< OpenGL 4.2+ with GL_ARB_explicit_uniform_location (compute from 4.3) */
   SSS_GLSL_300_ES = 2    /**< OpenGL ES 3.0+, WebGL 2 */
 } sss_glsl;
 

@@ -159,7 +159,8 @@ SSS_API sss_result sss_create(const sss_create_desc* desc, sss_context** out) {
     f.GetIntegerv(gl::MAX_COLOR_TEXTURE_SAMPLES, &ctx->max_color_texture_samples);
     f.GetIntegerv(gl::MAX_DEPTH_TEXTURE_SAMPLES, &ctx->max_depth_texture_samples);
   }
-  const gl::GlslVariant variant = gl::choose_glsl_variant(api);
+  const gl::GlslVariant variant =
+      gl::choose_glsl_variant(api, !api.es && has_extension(f, "GL_ARB_explicit_uniform_location"));
   const char* renderer = reinterpret_cast<const char*>(f.GetString(gl::RENDERER));
   const std::string renderer_name = renderer != nullptr ? renderer : "";
   // Mesa's software rasterisers time one tile of a pass with GL_TIME_ELAPSED (DESIGN.md §6).

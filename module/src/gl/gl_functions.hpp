@@ -89,6 +89,7 @@ using GLubyte = unsigned char;
   X(GLboolean, IsProgram, (GLuint program))                                                            \
   X(void, UseProgram, (GLuint program))                                                                \
   X(GLint, GetUniformLocation, (GLuint program, const GLchar* name))                                   \
+  X(void, GetUniformIndices, (GLuint program, GLsizei count, const GLchar* const* names, GLuint* indices)) \
   X(void, Uniform1i, (GLint location, GLint v0))                                                       \
   X(void, Uniform1f, (GLint location, GLfloat v0))                                                     \
   X(void, Uniform1fv, (GLint location, GLsizei count, const GLfloat* value))                           \

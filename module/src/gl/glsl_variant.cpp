@@ -2,9 +2,9 @@
 
 namespace sss::gl {
 
-GlslVariant choose_glsl_variant(const Api& api) {
+GlslVariant choose_glsl_variant(const Api& api, bool explicit_uniform_locations) {
   if (api.es) return GlslVariant::essl300;
-  return api.version() >= 42 ? GlslVariant::glsl420 : GlslVariant::glsl330;
+  return api.version() >= 42 && explicit_uniform_locations ? GlslVariant::glsl420 : GlslVariant::glsl330;
 }
 
 // The headers are pieces like any other, so that the shaders.glslang test validates the very text

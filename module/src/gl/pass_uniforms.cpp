@@ -70,14 +70,26 @@ std::string uniform_struct_glsl(const UniformStruct& s) {
   std::string text;
   for (std::size_t i = 0; i < s.count; ++i) {
     const UniformField& f = s.fields[i];
-    text += std::string("uniform ") + glsl_type(f) + " " + f.glsl_name + ";\n#define SSS_UNIFORM_" + f.glsl_name + "\n";
+    text += "SSS_UNIFORM_AT(" + std::to_string(i) + ") uniform " + glsl_type(f) + " " + f.glsl_name +
+            ";\n#define SSS_UNIFORM_" + f.glsl_name + "\n";
   }
   return text;
 }
 
-UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s) {
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s,
+                               bool explicit_locations) {
   UniformLocations l;
-  for (std::size_t i = 0; i < s.count; ++i) l.at[i] = gl.GetUniformLocation(program, s.fields[i].glsl_name);
+  if (!explicit_locations) {
+    for (std::size_t i = 0; i < s.count; ++i) l.at[i] = gl.GetUniformLocation(program, s.fields[i].glsl_name);
+    return l;
+  }
+  // A field the program does not use has no index (and setting its location would be ignored,
+  // but it would cost a call whenever its value changes).
+  std::array<const GLchar*, kMaxUniformFields> names{};
+  std::array<GLuint, kMaxUniformFields> indices{};
+  for (std::size_t i = 0; i < s.count; ++i) names[i] = s.fields[i].glsl_name;
+  gl.GetUniformIndices(program, static_cast<GLsizei>(s.count), names.data(), indices.data());
+  for (std::size_t i = 0; i < s.count; ++i) l.at[i] = indices[i] != kInvalidIndex ? static_cast<GLint>(i) : -1;
   return l;
 }
 

@@ -1,7 +1,9 @@
 // Each pass kind's per-draw uniforms as one struct: a table of fields (name, place, size, kind),
 // from which the shader's declarations are written (uniform_struct_glsl, into every variant's
-// defines: the GLSL declares none of its own), the program's locations are found once at link
-// (find_uniforms), and one draw's values are filled by the pass kind's one function from the
+// defines: the GLSL declares none of its own, each field at its table row's location where the
+// dialect has explicit uniform locations), the program's locations are known from the table (one
+// glGetUniformIndices call says which fields it uses; GLSL ES 3.00 looks each up once at link:
+// find_uniforms), and one draw's values are filled by the pass kind's one function from the
 // frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and
 // the kernel, and set in one call (upload_uniforms). A new uniform is one line of its pass kind's
 // table and the line that fills it (pass_uniforms.cpp). Every per-draw number a program reads is
@@ -9,8 +11,9 @@
 // u_depth_factor), samplers, the vertex stage's u_tile_grid and the tile programs' one u_rect are
 // uniforms of their own (tests/gl/uniform_structs_test.cpp checks every program the paths build).
 //
-// The fields stay separate GLSL uniforms, one location each. Making a struct one GL object was
-// measured (callgrind, scripts/cost-probe.sh) against the bounds of issue 47:
+// The fields stay separate GLSL uniforms, one location each (placed, not looked up). Making a
+// struct one GL object, which would also spare GLSL ES 3.00 its lookups, was measured (callgrind,
+// scripts/cost-probe.sh) against the bounds of issue 47:
 //   - a uniform array of ivec4, each field a #define that reads its part (floats through
 //     intBitsToFloat, so exact): bit-identical images, but llvmpipe's passes cost more, the 640x360
 //     head close-up 133.87 M -> 134.84 M instructions on the default path (+0.72 %) and +0.29 % on
@@ -105,11 +108,16 @@ struct UniformValues {
   }
 };
 
-// The struct's declarations, for the variant's defines: each field as a uniform of its GLSL type,
-// and a SSS_UNIFORM_<name> #define for the pieces' guards.
+// The struct's declarations, for the variant's defines: each field as a uniform of its GLSL type
+// at the location of its row in the table (SSS_UNIFORM_AT(row): the dialect's header makes it
+// layout(location = row) where the dialect has explicit uniform locations, nothing elsewhere), and a
+// SSS_UNIFORM_<name> #define for the pieces' guards.
 std::string uniform_struct_glsl(const UniformStruct& s);
-// Each field's location in `program` (once, at link).
-UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s);
+// Each field's location in `program`, once at link. With explicit locations (glsl_variant.hpp) a
+// field is at its row and one glGetUniformIndices call over the table's names says which fields the
+// program uses; without them, one glGetUniformLocation per field.
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s,
+                               bool explicit_locations);
 // One draw's values into the program in use: a glUniform call per field it uses whose value it
 // does not hold already.
 void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations,

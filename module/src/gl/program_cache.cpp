@@ -206,10 +206,16 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
   return SSS_OK;
 }
 
+UniformLocations ProgramCache::struct_fields(GLuint program, const UniformStruct& s) const {
+  // A program compiled from version_430.glsl (the compute blur) has explicit locations in any
+  // dialect; looked up by name they are found all the same.
+  return find_uniforms(*gl_, program, s, has_explicit_uniform_locations(variant_));
+}
+
 void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
   const Functions& f = *gl_;
   BlurProgram& p = *program;
-  p.fields = find_uniforms(f, p.program, kBlurUniforms);
+  p.fields = struct_fields(p.program, kBlurUniforms);
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   p.profile = f.GetUniformLocation(p.program, "u_profile");
@@ -229,7 +235,7 @@ sss_result ProgramCache::cross_bilateral(Outside outside, bool linear_depth, boo
                 static_cast<int>(outside), linear_depth ? 1 : 0, normals ? 1 : 0, albedo);
   finish(p.program, label, "cross-bilateral");
   const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kCbfUniforms);
+  p.fields = struct_fields(p.program, kCbfUniforms);
   p.cdf = f.GetUniformLocation(p.program, "u_cdf");
   p.spacing = f.GetUniformLocation(p.program, "u_spacing");
   set_unit(p.program, "u_normals", unit::normals);
@@ -255,8 +261,7 @@ sss_result ProgramCache::msaa_resolve(bool linear_depth, bool write_back, int al
   std::snprintf(label, sizeof label, "%s%s", kLabels[index % 4], albedo == 0 ? "" : albedo == 1 ? " over the albedo"
                                                                                      : " over its square root");
   finish(p.program, label, nullptr);
-  const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kResolveUniforms);
+  p.fields = struct_fields(p.program, kResolveUniforms);
   set_unit(p.program, "u_color", unit::msaa_color);
   set_unit(p.program, "u_depth", unit::msaa_depth);
   if (albedo != 0) set_unit(p.program, "u_albedo", unit::albedo);
@@ -284,8 +289,7 @@ sss_result ProgramCache::sample_write(int albedo, SampleWriteProgram** out, std:
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   p.one_draw = msaa_write_in_one_draw(variant_);
   finish(p.program, p.one_draw ? "sss msaa write-back" : "sss msaa per-sample write-back", nullptr);
-  const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kSampleWriteUniforms);
+  p.fields = struct_fields(p.program, kSampleWriteUniforms);
   set_unit(p.program, "u_lowest", unit::msaa_lowest);
   set_unit(p.program, "u_blurred", unit::msaa_blurred);
   set_unit(p.program, "u_resolved", unit::msaa_resolved);
@@ -315,7 +319,7 @@ sss_result ProgramCache::pass_inputs(const PassInputsVariant& v, PassInputsProgr
   finish(p.program, label, "pass inputs");
   p.color_image = v.color_image;
   const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kInputsUniforms);
+  p.fields = struct_fields(p.program, kInputsUniforms);
   set_unit(p.program, "u_color", unit::source);
   set_unit(p.program, "u_depth", unit::depth);
   set_unit(p.program, "u_profile_ids", unit::profile_ids);
@@ -387,7 +391,7 @@ sss_result ProgramCache::half_inputs(const HalfVariant& v, HalfInputsProgram** o
   if (p.program == 0) return SSS_ERROR_SHADER_COMPILE;
   finish(p.program, v.profile_ids != 0 ? "sss half-size inputs profiles=1" : "sss half-size inputs", "half-size inputs");
   const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kHalfInputsUniforms);
+  p.fields = struct_fields(p.program, kHalfInputsUniforms);
   p.depth_factor = f.GetUniformLocation(p.program, "u_depth_factor");
   set_unit(p.program, "u_source", unit::source);
   set_unit(p.program, "u_strength", unit::pass_strength);
@@ -408,7 +412,7 @@ sss_result ProgramCache::half_upsample(const HalfVariant& v, HalfUpsampleProgram
   finish(p.program, v.profile_ids != 0 ? "sss half-size upsample profiles=1" : "sss half-size upsample",
          "half-size upsample");
   const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kUpsampleUniforms);
+  p.fields = struct_fields(p.program, kUpsampleUniforms);
   p.looks = f.GetUniformLocation(p.program, "u_looks");
   set_unit(p.program, "u_source", unit::source);
   set_unit(p.program, "u_strength", unit::pass_strength);
@@ -433,7 +437,7 @@ sss_result ProgramCache::colour_copy(const ColourCopyVariant& v, ColourCopyProgr
                 v.strength_texture ? 1 : 0, v.albedo, v.profile_ids);
   finish(p.program, label, nullptr);
   const Functions& f = *gl_;
-  p.fields = find_uniforms(f, p.program, kColourCopyUniforms);
+  p.fields = struct_fields(p.program, kColourCopyUniforms);
   p.texturing = f.GetUniformLocation(p.program, "u_texturing");
   set_unit(p.program, "u_source", unit::source);
   set_unit(p.program, "u_strength", unit::strength);

@@ -174,6 +174,9 @@ class ProgramCache {
   GLuint link(const char* fragment, const std::string& defines, const std::string& what, std::string* message,
               TileSpans spans = TileSpans::none);
   void find_blur_uniforms(BlurProgram* p) const;
+  // The locations of a pass struct's fields in `program` (pass_uniforms.hpp find_uniforms: at their
+  // table's rows where the dialect has explicit uniform locations).
+  UniformLocations struct_fields(GLuint program, const UniformStruct& s) const;
   // Sets the sampler uniform `name` of `program` to `unit` where the dialect cannot say it in the
   // shader (GLSL 420 and 430 have layout(binding): no lookup there).
   void set_unit(GLuint program, const char* name, GLuint unit) const;
