@@ -10,15 +10,11 @@
 
 #define SSS_PI 3.14159265358979323846
 
-uniform vec2 u_size;                     // LUT width, height
-uniform vec2 u_row_range;                // first and last row's curvature or penumbra width
-uniform int u_term_count;
+// The numbers (u_size, u_row_range, u_term_count, u_support and the shadow LUT's
+// u_world_units_per_mm, u_new_penumbra, u_gaussian_filter) are the LUT generator's uniform struct
+// (gl/pass_uniforms.hpp kLutUniforms), declared in the defines; the tables are the shader's own.
 uniform vec4 u_terms[SSS_MAX_TERMS];     // variance mm², weight r, g, b
-uniform float u_support;                 // mm beyond which the profile is negligible
 uniform vec4 u_gl[SSS_GL_ORDER];         // Gauss–Legendre node on [-1, 1], weight
-uniform float u_world_units_per_mm;      // shadow only
-uniform float u_new_penumbra;            // shadow only
-uniform int u_gaussian_filter;           // shadow only: 1 = Gaussian PCF penumbra, 0 = box
 
 out vec4 frag_color;
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "filter_case.hpp"
+#include "sss/sss_lut.h"
 #include "gl/gl_functions.hpp"
 #include "gl/pass_uniforms.hpp"
 
@@ -36,7 +37,8 @@ std::set<std::string> struct_fields() {
   using namespace sss::gl;
   std::set<std::string> names;
   for (const UniformStruct* s : {&kBlurUniforms, &kCbfUniforms, &kInputsUniforms, &kColourCopyUniforms,
-                                 &kResolveUniforms, &kSampleWriteUniforms, &kHalfInputsUniforms, &kUpsampleUniforms}) {
+                                 &kResolveUniforms, &kSampleWriteUniforms, &kHalfInputsUniforms, &kUpsampleUniforms,
+                                 &kLutUniforms}) {
     for (std::size_t i = 0; i < s->count; ++i) names.insert(s->fields[i].glsl_name);
   }
   return names;
@@ -241,6 +243,32 @@ TEST_F(UniformStructs, FieldsAreFoundWithoutALookupEach) {
     if (explicit_locations) {
       EXPECT_GT(index_calls, 0) << "no program found its fields by index";
     }
+  }
+  // The LUT generator, which sss_lut_create_texture links, draws with and deletes each time.
+  {
+    SCOPED_TRACE("the LUT generator");
+    g_lookups.located.clear();
+    g_lookups.indexed.clear();
+    sss_lut_desc desc;
+    sss_lut_default_desc(&desc);
+    desc.width = 8;
+    desc.height = 4;
+    for (const int32_t which : {SSS_LUT_DIFFUSE, SSS_LUT_SHADOW}) {
+      uint32_t texture = 0;
+      ASSERT_EQ(sss_lut_create_texture(sss_, which, &desc, &texture), SSS_OK) << sss_last_error(sss_);
+    }
+    const bool explicit_locations = stats.glsl_variant == SSS_GLSL_420_CORE;
+    EXPECT_EQ(g_lookups.located.size(), 2u) << "the two generators' lookups";
+    for (const auto& [program, names] : g_lookups.located) {
+      for (const std::string& n : names) {
+        const bool field = fields.count(n) != 0 && kOwn.count(n) == 0;
+        (field ? field_lookups : other_lookups) += 1;
+        if (explicit_locations) {
+          EXPECT_FALSE(field) << "the LUT generator looked its field " << n << " up";
+        }
+      }
+    }
+    for (const auto& [program, calls] : g_lookups.indexed) index_calls += calls;
   }
   loader_override_ = nullptr;
   std::printf("glGetUniformLocation: %d for struct fields, %d for samplers and tables; glGetUniformIndices: %d\n",

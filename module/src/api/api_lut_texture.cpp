@@ -8,6 +8,7 @@
 
 #include "../gl/debug_label.hpp"
 #include "../gl/gpu_memory.hpp"
+#include "../gl/pass_uniforms.hpp"
 #include "../gl/program.hpp"
 #include "../gl/shader_constants.hpp"
 #include "../gl/shader_variants.hpp"
@@ -62,21 +63,27 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
     f.Viewport(0, 0, desc.width, desc.height);
     f.UseProgram(program);
     f.BindVertexArray(vertex_array);
-    auto at = [&](const char* name) { return f.GetUniformLocation(program, name); };
-    f.Uniform2f(at("u_size"), static_cast<float>(desc.width), static_cast<float>(desc.height));
-    if (which == SSS_LUT_DIFFUSE) {
-      f.Uniform2f(at("u_row_range"), desc.curvature_min, desc.curvature_max);
-    } else {
-      f.Uniform2f(at("u_row_range"), desc.penumbra_min, desc.penumbra_max);
-    }
+    // The numbers as the generator's uniform struct (gl/pass_uniforms.hpp), the tables by name.
+    const gl::UniformStruct& s = gl::kLutUniforms;
+    gl::LutUniforms u;
+    const float size[2] = {static_cast<float>(desc.width), static_cast<float>(desc.height)};
+    const float diffuse_rows[2] = {desc.curvature_min, desc.curvature_max};
+    const float shadow_rows[2] = {desc.penumbra_min, desc.penumbra_max};
+    u.set(s, gl::LutField::size, size);
+    u.set(s, gl::LutField::row_range, which == SSS_LUT_DIFFUSE ? diffuse_rows : shadow_rows);
+    u.set(s, gl::LutField::term_count, static_cast<float>(terms.size()));
+    u.set(s, gl::LutField::support, static_cast<float>(math::lut_support_mm(profile)));
+    u.set(s, gl::LutField::world_units_per_mm, desc.world_units_per_mm);
+    u.set(s, gl::LutField::new_penumbra, desc.new_penumbra);
+    u.set(s, gl::LutField::gaussian_filter, desc.shadow_filter == SSS_LUT_SHADOW_GAUSSIAN ? 1.0f : 0.0f);
+    const gl::UniformLocations fields = gl::find_uniforms(f, program, s, gl::has_explicit_uniform_locations(dialect));
+    gl::upload_uniforms(f, s, fields, u.values.data());
     std::vector<float> packed(4 * gl::kLutMaxTerms, 0.0f);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       packed[4 * i] = static_cast<float>(terms[i].variance_mm2);
       for (std::size_t c = 0; c < 3; ++c) packed[4 * i + 1 + c] = static_cast<float>(terms[i].weight[c]);
     }
-    f.Uniform1i(at("u_term_count"), static_cast<gl::GLint>(terms.size()));
-    f.Uniform4fv(at("u_terms"), gl::kLutMaxTerms, packed.data());
-    f.Uniform1f(at("u_support"), static_cast<float>(math::lut_support_mm(profile)));
+    f.Uniform4fv(f.GetUniformLocation(program, "u_terms"), gl::kLutMaxTerms, packed.data());
     // The CPU generator's Gauss–Legendre rule, so both integrate on the same nodes.
     const math::LutQuadratureRule& gl_rule = math::lut_quadrature_rule();
     std::vector<float> rule(4 * gl::kLutOrder, 0.0f);
@@ -84,12 +91,7 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
       rule[4 * i] = static_cast<float>(gl_rule.node[i]);
       rule[4 * i + 1] = static_cast<float>(gl_rule.weight[i]);
     }
-    f.Uniform4fv(at("u_gl"), gl::kLutOrder, rule.data());
-    if (which == SSS_LUT_SHADOW) {
-      f.Uniform1f(at("u_world_units_per_mm"), desc.world_units_per_mm);
-      f.Uniform1f(at("u_new_penumbra"), desc.new_penumbra);
-      f.Uniform1i(at("u_gaussian_filter"), desc.shadow_filter == SSS_LUT_SHADOW_GAUSSIAN ? 1 : 0);
-    }
+    f.Uniform4fv(f.GetUniformLocation(program, "u_gl"), gl::kLutOrder, rule.data());
     f.DrawArrays(gl::TRIANGLES, 0, 3);
   }
   f.DeleteFramebuffers(1, &framebuffer);

@@ -7,9 +7,11 @@
 // frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and
 // the kernel, and set in one call (upload_uniforms). A new uniform is one line of its pass kind's
 // table and the line that fills it (pass_uniforms.cpp). Every per-draw number a program reads is
-// in its struct; only tables (arrays: u_cdf, u_spacing, u_profile, u_looks, u_texturing,
-// u_depth_factor), samplers, the vertex stage's u_tile_grid and the tile programs' one u_rect are
-// uniforms of their own (tests/gl/uniform_structs_test.cpp checks every program the paths build).
+// in its struct (the LUT generator's too, filled by sss_lut_create_texture); only tables (arrays:
+// u_cdf, u_spacing, u_profile, u_looks, u_texturing, u_depth_factor, the LUT generator's u_terms and
+// u_gl), samplers, the vertex stage's u_tile_grid and the tile programs' one u_rect are uniforms of
+// their own (tests/gl/uniform_structs_test.cpp checks every program the paths build, and that
+// where locations are explicit no field is looked up by name).
 //
 // The fields stay separate GLSL uniforms, one location each (placed, not looked up). Making a
 // struct one GL object, which would also spare GLSL ES 3.00 its lookups, was measured (callgrind,
@@ -267,6 +269,25 @@ using UpsampleUniforms = UniformValues<7>;
 // `half`: the half-size rectangle; `round_to_half`: whether the target is RGBA16F.
 UpsampleUniforms fill_upsample_uniforms(const FilterRun& run, const std::array<int, 4>& half, bool round_to_half);
 
+// ---- The LUT generator (lut_generate.frag; filled by sss_lut_create_texture, api_lut_texture.cpp) ----
+enum class LutField : int {
+  size,                 // the LUT's width and height
+  row_range,            // the first and last row's curvature (1/mm) or penumbra width (world units)
+  term_count,           // the profile's Gaussians in u_terms
+  support,              // mm beyond which the profile is negligible
+  world_units_per_mm,   // shadow LUT only
+  new_penumbra,         // shadow LUT only: the penumbra width the LUT is sharpened to
+  gaussian_filter,      // shadow LUT only: 1 a Gaussian PCF penumbra, 0 a box
+};
+inline constexpr UniformField kLutFields[] = {
+    {"u_size", 0, 2, UniformKind::floats},          {"u_row_range", 2, 2, UniformKind::floats},
+    {"u_term_count", 4, 1, UniformKind::integer},   {"u_support", 5, 1, UniformKind::floats},
+    {"u_world_units_per_mm", 6, 1, UniformKind::floats}, {"u_new_penumbra", 7, 1, UniformKind::floats},
+    {"u_gaussian_filter", 8, 1, UniformKind::integer},
+};
+inline constexpr UniformStruct kLutUniforms = {"LUT generator", 3, kLutFields, std::size(kLutFields)};
+using LutUniforms = UniformValues<3>;
+
 // Every struct fits UniformLocations.
 constexpr bool fits_locations(const UniformStruct& s) {
   return s.count <= kMaxUniformFields && static_cast<std::size_t>(s.vectors) <= kMaxUniformVectors;
@@ -274,6 +295,6 @@ constexpr bool fits_locations(const UniformStruct& s) {
 static_assert(fits_locations(kBlurUniforms) && fits_locations(kCbfUniforms) && fits_locations(kInputsUniforms) &&
               fits_locations(kColourCopyUniforms) && fits_locations(kResolveUniforms) &&
               fits_locations(kSampleWriteUniforms) && fits_locations(kHalfInputsUniforms) &&
-              fits_locations(kUpsampleUniforms));
+              fits_locations(kUpsampleUniforms) && fits_locations(kLutUniforms));
 
 }  // namespace sss::gl

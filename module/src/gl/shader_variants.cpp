@@ -151,7 +151,7 @@ std::string lut_defines(int kind) {
   char defines[128];
   std::snprintf(defines, sizeof defines, "#define SSS_LUT_KIND %d\n#define SSS_MAX_TERMS %d\n#define SSS_GL_ORDER %d\n",
                 kind, kLutMaxTerms, kLutOrder);
-  return defines;
+  return defines + uniform_struct_glsl(kLutUniforms);
 }
 
 ShaderRecipe stage_recipe(GlslVariant v, const char* file, std::string defines) {
