@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "kernel_family.hpp"
+
 #include <sss/sss_tools.h>
 #include <sss_headless.h>
 
@@ -19,7 +21,6 @@ namespace {
 
 // "svd:3" -> SSS_KERNEL_SVD, rank 3.
 bool parse_kernel(const char *text, Options *o) {
-  static const char *const kNames[] = {"separable", "sum-of-gaussians", "svd", "preintegrated", "guided", "artist"};
   const std::string arg = text;
   const std::size_t colon = arg.find(':');
   const std::string name = arg.substr(0, colon);
@@ -31,7 +32,7 @@ bool parse_kernel(const char *text, Options *o) {
     rank = static_cast<int>(v);
   }
   for (int f = 0; f < SSS_KERNEL_FAMILY_COUNT; ++f) {
-    if (name == kNames[f]) {
+    if (name == kernel_family_info(f)->option) {
       o->kernel_family = f;
       o->kernel_rank = rank;
       return true;

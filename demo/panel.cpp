@@ -1,4 +1,5 @@
 // The Dear ImGui panel of the window (Debian's imgui 1.86; only long-standing calls are used).
+#include "kernel_family.hpp"
 #include "metrics.hpp"
 #include "report.hpp"
 #include "window_state.hpp"
@@ -60,15 +61,14 @@ void sss_section(WindowState *s) {
   ImGui::SameLine();
   ImGui::Checkbox("stencil mask", &c.use_stencil);
   // The kernel family and the material its profile comes from (sss_settings.kernel), and jitter.
-  static const char *const kFamilies[] = {"eq. (1) separable (strength, falloff)", "sum of Gaussians",
-                                          "SVD rank N", "pre-integrated (exact for E1(x) + E2(y))",
-                                          "guided rank-1 fit (k = 1.55)", "artist two-Gaussian, exact depth"};
-  ImGui::Combo("kernel family", &c.kernel_family, kFamilies, SSS_KERNEL_FAMILY_COUNT);
-  if (c.kernel_family == SSS_KERNEL_SUM_OF_GAUSSIANS || c.kernel_family == SSS_KERNEL_SVD ||
-      c.kernel_family == SSS_KERNEL_PREINTEGRATED) {
-    ImGui::SliderInt("terms (2 passes each)", &c.kernel_rank, 1, SSS_KERNEL_MAX_TERMS);
-  }
-  if (c.kernel_family != SSS_KERNEL_SEPARABLE && c.kernel_family != SSS_KERNEL_ARTIST) {
+  auto family_label = [](void *, int i, const char **out) {
+    *out = kernel_family_info(i) != nullptr ? kernel_family_info(i)->label : nullptr;
+    return *out != nullptr;
+  };
+  ImGui::Combo("kernel family", &c.kernel_family, family_label, nullptr, SSS_KERNEL_FAMILY_COUNT);
+  const KernelFamilyInfo &family = *kernel_family_info(c.kernel_family);
+  if (family.ranked) ImGui::SliderInt("terms (2 passes each)", &c.kernel_rank, 1, SSS_KERNEL_MAX_TERMS);
+  if (family.from_profile) {
     auto material_name = [](void *, int i, const char **out) {
       *out = sss_profile_name(i);
       return *out != nullptr;

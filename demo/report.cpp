@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "kernel_family.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -81,15 +83,12 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
   sss_default_kernel_desc(&kernel);
   if (s.kernel != nullptr) kernel = *s.kernel;
   if (s.mode == SSS_MODE_SEPARABLE && (kernel.family != SSS_KERNEL_SEPARABLE || s.jitter > 0.0f)) {
-    static const char *const kNames[] = {"eq. (1)", "sum of Gaussians", "SVD", "pre-integrated", "guided rank-1",
-                                         "artist two-Gaussian"};
-    const bool profiled = kernel.family != SSS_KERNEL_SEPARABLE && kernel.family != SSS_KERNEL_ARTIST;
-    std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", kNames[kernel.family % 6],
-                  kernel.family == SSS_KERNEL_SUM_OF_GAUSSIANS || kernel.family == SSS_KERNEL_SVD ||
-                          kernel.family == SSS_KERNEL_PREINTEGRATED
-                      ? (" rank " + std::to_string(kernel.rank)).c_str()
-                      : "",
-                  profiled ? " of " : "", profiled ? sss_profile_name(kernel.profile.profile) : "",
+    // (sss_set_settings checked the family: it has a row.)
+    const KernelFamilyInfo &family = *kernel_family_info(kernel.family);
+    std::snprintf(text, sizeof text, "; kernel family %s%s%s%s, jitter %.2f", family.report,
+                  family.ranked ? (" rank " + std::to_string(kernel.rank)).c_str() : "",
+                  family.from_profile ? " of " : "",
+                  family.from_profile ? sss_profile_name(kernel.profile.profile) : "",
                   static_cast<double>(s.jitter));
     result += text;
   }

@@ -1,5 +1,7 @@
 #include "sss_stage.hpp"
 
+#include "kernel_family.hpp"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstdio>
@@ -41,7 +43,7 @@ std::uint32_t blur_profile(const SssControls &controls) {
   if (!controls.cross_bilateral) {
     // The families built from a profile blur with the chosen material's; eq. (1) and the artist
     // model have their own shapes, closest to skin.
-    const bool profiled = controls.kernel_family != SSS_KERNEL_SEPARABLE && controls.kernel_family != SSS_KERNEL_ARTIST;
+    const bool profiled = kernel_family_info(controls.kernel_family)->from_profile;
     return profiled ? static_cast<std::uint32_t>(controls.material) : static_cast<std::uint32_t>(SSS_PROFILE_SKIN_DEON);
   }
   sss_settings s{};

@@ -136,7 +136,7 @@ SSS_API sss_result sss_kernel_plan(const sss_kernel_desc* given, int32_t max_ter
   sss::math::KernelPlan plan;
   try {
     sss::math::KernelRequest q = sss::api::to_kernel_request(*desc);
-    if (desc->family != SSS_KERNEL_SEPARABLE && desc->family != SSS_KERNEL_ARTIST) {
+    if (sss::math::builds_from_profile(q.family)) {
       // A kernel normalises each channel by the profile's energy: none there, no kernel.
       const auto total = sss::math::make_profile(q.profile)->integral();
       for (int c = 0; c < 3; ++c) {

@@ -64,7 +64,7 @@ void from_filter_settings(const sss::math::FilterSettings& f, sss_settings* s) {
 
 // A family that normalises by the profile's energy needs some in every channel (as sss_kernel_plan).
 sss_result check_profile_energy(sss_context* ctx, const sss::math::KernelRequest& k) {
-  if (k.family == sss::math::KernelFamily::separable || k.family == sss::math::KernelFamily::artist) return SSS_OK;
+  if (!sss::math::builds_from_profile(k.family)) return SSS_OK;
   const auto total = sss::math::make_profile(k.profile)->integral();
   for (std::size_t c = 0; c < 3; ++c) {
     if (!(total[c] > 0.0)) {

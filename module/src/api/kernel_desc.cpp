@@ -272,7 +272,7 @@ sss_result check_kernel_desc(sss_context* ctx, const sss_kernel_desc* d, const c
     if (r == SSS_OK) r = check_unit_range(ctx, named("near_weight"), d->near_weight);
   }
   if (r != SSS_OK) return r;
-  if (reads({SSS_KERNEL_SEPARABLE, SSS_KERNEL_ARTIST}) && !in_settings) return SSS_OK;
+  if (!in_settings && !sss::math::builds_from_profile(static_cast<sss::math::KernelFamily>(family))) return SSS_OK;
   if (reads({SSS_KERNEL_SUM_OF_GAUSSIANS, SSS_KERNEL_SVD}) && (d->rank < 1 || d->rank > 6)) {
     return fail(ctx, SSS_ERROR_INVALID_ARGUMENT, "%srank = %d: must be in [1, 6]", name, d->rank);
   }
@@ -303,7 +303,7 @@ sss::math::KernelRequest to_kernel_request(const sss_kernel_desc& d) {
     q.artist.near_weight[c] = d.near_weight[c];
   }
   // Only the families that read a profile get one (an unread tabulated profile copies nothing).
-  if (d.family != SSS_KERNEL_SEPARABLE && d.family != SSS_KERNEL_ARTIST) q.profile = to_request(d.profile);
+  if (sss::math::builds_from_profile(q.family)) q.profile = to_request(d.profile);
   return q;
 }
 

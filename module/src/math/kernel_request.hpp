@@ -19,7 +19,13 @@
 
 namespace sss::math {
 
+// sss_tools.h's sss_kernel_family, value for value (the api layer casts one to the other).
 enum class KernelFamily { separable, sum_of_gaussians, svd, preintegrated, guided, artist };
+// Whether a family builds its plan from the request's profile: every family but eq. (1) and the
+// artist model, which are closed forms of their own parameters (cheap to rebuild, nothing to fit,
+// no profile to check). The C API's checks, the settings and the kernel cache ask this, so a new
+// family is classified here once.
+inline bool builds_from_profile(KernelFamily f) { return f != KernelFamily::separable && f != KernelFamily::artist; }
 
 struct ProfileRequest {
   // -1: d'Eon–Luebke skin (the first gaussian_count of its six Gaussians); 0..10: the dipole of

@@ -37,7 +37,7 @@ const PassKernel* RecentKernels::find(const FilterSettings& settings) {
 
 void RecentKernels::keep(const FilterSettings& settings, const PassKernel& kernel) {
   const KernelFamily family = settings.kernel.family;
-  if (family == KernelFamily::separable || family == KernelFamily::artist) return;  // closed form: cheap
+  if (!builds_from_profile(family)) return;  // a closed form of its parameters: cheap
   if (find(settings) == nullptr) keep_in(&pass_, settings, kernel);
 }
 
