@@ -115,10 +115,13 @@ TEST(KernelApi, BadArgumentsAreNamedAndWriteNothing) {
   static const float bad_radii[2] = {1.0f, 1.0f};
   static const float rgb[6] = {1, 1, 1, 1, 1, 1};
   static const float zero_rgb[6] = {0, 0, 0, 0, 0, 0};
+  // The first value past the families (a new family moves it).
+  static const std::string first_unknown_family = "desc->family = " + std::to_string(SSS_KERNEL_FAMILY_COUNT);
   static const float radii[2] = {0.0f, 1.0f};
   const BadCase cases[] = {
       {"desc->struct_size", [](sss_kernel_desc& d) { d.struct_size = 4; }},
-      {"desc->family = 6", [](sss_kernel_desc& d) { d.family = 6; }},
+      {first_unknown_family.c_str(), [](sss_kernel_desc& d) { d.family = SSS_KERNEL_FAMILY_COUNT; }},
+      {"desc->family = -1", [](sss_kernel_desc& d) { d.family = -1; }},
       {"desc->taps = 16", [](sss_kernel_desc& d) { d.taps = 16; }},
       {"desc->taps = 67", [](sss_kernel_desc& d) { d.taps = 67; }},
       {"desc->flags", [](sss_kernel_desc& d) { d.flags = 0x10; }},
