@@ -16,6 +16,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,8 +33,17 @@ struct Writer {
   std::string folder;
   int written = 0;
   bool ok = true;
+  // Every name written: two variants under one name would leave one of them unvalidated (the
+  // second overwrites the first), as a new switch missing from its file name once did.
+  std::set<std::string> names;
 
   void write(const std::string& name, const gl::ShaderRecipe& recipe) {
+    if (!names.insert(name).second) {
+      std::fprintf(stderr, "%s: a second variant under this name (its switches are not all in the name)\n",
+                   name.c_str());
+      ok = false;
+      return;
+    }
     gl::AssembledShader shader;
     std::string error;
     if (!gl::assemble_shader(recipe, &shader, &error)) {
@@ -331,7 +341,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s <folder> | --name-log <stage file>\n", argv[0]);
     return 2;
   }
-  Writer out{argv[1]};
+  Writer out;
+  out.folder = argv[1];
   for (gl::GlslVariant dialect : {gl::GlslVariant::glsl330, gl::GlslVariant::glsl420, gl::GlslVariant::essl300}) {
     write_dialect(&out, dialect);
   }
