@@ -346,6 +346,24 @@ TEST_F(Prewarm, TheFirstMultisampledFrameCreatesNothing) {
   expect_no_hitch(c);
 }
 
+// A texturing mode on single-sample textures: the passes divide by the albedo, so the fragment and
+// compute paths copy the colour first (copies_colour) and, written back, the host's colour becomes
+// the passes' output; into a separate output they keep the host's colour apart from it.
+TEST_F(Prewarm, TheFirstFrameOfATexturingModeCreatesNothing) {
+  for (const uint32_t path : {SSS_PATH_FRAGMENT, SSS_PATH_COMPUTE, SSS_PATH_AUTO}) {
+    for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+      sss_settings s = settings_with(path);
+      s.texturing = mode;
+      Case in_place{"a texturing mode, in place", s};
+      in_place.albedo_format = GL_RGBA16F;
+      expect_no_hitch(in_place);
+      Case output{"a texturing mode, separate output", s, GL_RGBA16F, GL_RGBA16F};
+      output.albedo_format = GL_RGBA16F;
+      expect_no_hitch(output);
+    }
+  }
+}
+
 // An RGBA32F colour's intermediate is RGBA32F (its precision kept): sss_prepare allocates that one.
 // A strength texture's frames draw the colour with it into the module's copy first: its program
 // and target are prepared too.

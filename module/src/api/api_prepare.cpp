@@ -177,6 +177,10 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   gl::FilterRun run;
   const bool multisampled = d.samples > 1;
   run.color = described(d, d.color_format, multisampled);
+  // A frame's colour is a texture: a path that copies it (a strength texture, a texturing mode, the
+  // colour copy of any path) then writes back into it as the passes' output, which a nameless
+  // colour would read as "written back" and plan another last pass.
+  run.color.name = gl::kPrewarmColourPlaceholder;
   run.depth = described(d, d.depth_format, multisampled);
   if (d.output_format != 0) {
     run.output = described(d, d.output_format, false);
@@ -189,12 +193,10 @@ gl::FilterRun described_run(const sss_context& ctx, const sss_prepare_desc& d, g
   if (d.strength_format != 0) {
     run.strength = described(d, d.strength_format, false);
     run.strength.name = gl::kPrewarmPlaceholder;
-    run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }
   if (d.albedo_format != 0) {
     run.albedo = described(d, d.albedo_format, multisampled);  // multisampled like the colour
     run.albedo.name = gl::kPrewarmPlaceholder;
-    run.color.name = gl::kPrewarmPlaceholder;  // written back, the host's colour is the passes' output
   }
   if (d.stencil_format != 0) {
     stencil->texture = described(d, d.stencil_format, multisampled);

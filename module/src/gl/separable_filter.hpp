@@ -27,8 +27,11 @@
 
 namespace sss::gl {
 
-// A texture name that stands for "given" in the FilterRun of SeparableFilter::prewarm.
+// A texture name that stands for "given" in the FilterRun of SeparableFilter::prewarm, and the
+// colour's own (never the output's: a colour copied and written back is the passes' output, apart
+// from a separate one).
 inline constexpr GLuint kPrewarmPlaceholder = 0xFFFFFFFFu;
+inline constexpr GLuint kPrewarmColourPlaceholder = 0xFFFFFFFDu;
 
 struct PlanPrograms;
 
@@ -63,9 +66,9 @@ class SeparableFilter {
   // run.path lets it take (prewarm.cpp), so that run() on such a frame builds and allocates
   // nothing (sss_prepare). `run` describes the frame's textures by format, size and sample count;
   // their names are 0 or, where FilterRun tells a texture's presence by its name (a separate
-  // output, the normals), kPrewarmPlaceholder: nothing is bound or drawn. run.identity and
-  // run.target_complete are ignored (the blur is prepared all the same, and with the compute path
-  // the fragment passes an incomplete target would take).
+  // output, the normals), kPrewarmPlaceholder, and the colour's kPrewarmColourPlaceholder: nothing
+  // is bound or drawn. run.identity and run.target_complete are ignored (the blur is prepared all
+  // the same, and with the compute path the fragment passes an incomplete target would take).
   sss_result prewarm(const FilterRun& run, std::string* message);
   // sss.h SSS_PATH_FRAGMENT, _FRAGMENT_MASKED or _COMPUTE: how the last successful run() ran.
   // (An MSAA frame resolves, then runs the fragment passes: SSS_PATH_FRAGMENT.)
