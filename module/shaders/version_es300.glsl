@@ -6,5 +6,7 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 #define SSS_BINDING(unit)
-// GLSL ES 3.00 has no explicit uniform locations: a pass struct's fields are looked up at link.
+// GLSL ES 3.00 has no explicit uniform locations: a pass struct is one array (one location), each
+// field read from its part (gl/pass_uniforms.hpp).
+#define SSS_UNIFORM_ARRAYS
 #define SSS_UNIFORM_AT(n)

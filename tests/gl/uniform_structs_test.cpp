@@ -32,15 +32,24 @@ namespace {
 
 constexpr int kW = 32, kH = 24;
 
+constexpr const sss::gl::UniformStruct* kStructs[] = {
+    &sss::gl::kBlurUniforms,       &sss::gl::kCbfUniforms,        &sss::gl::kInputsUniforms,
+    &sss::gl::kColourCopyUniforms, &sss::gl::kResolveUniforms,    &sss::gl::kSampleWriteUniforms,
+    &sss::gl::kHalfInputsUniforms, &sss::gl::kUpsampleUniforms,   &sss::gl::kLutUniforms};
+
 // Every field name of every pass kind's struct, from the tables themselves.
 std::set<std::string> struct_fields() {
-  using namespace sss::gl;
   std::set<std::string> names;
-  for (const UniformStruct* s : {&kBlurUniforms, &kCbfUniforms, &kInputsUniforms, &kColourCopyUniforms,
-                                 &kResolveUniforms, &kSampleWriteUniforms, &kHalfInputsUniforms, &kUpsampleUniforms,
-                                 &kLutUniforms}) {
+  for (const sss::gl::UniformStruct* s : kStructs) {
     for (std::size_t i = 0; i < s->count; ++i) names.insert(s->fields[i].glsl_name);
   }
+  return names;
+}
+
+// The name of each struct's one array (the GLSL ES 3.00 form).
+std::set<std::string> struct_arrays() {
+  std::set<std::string> names;
+  for (const sss::gl::UniformStruct* s : kStructs) names.insert(s->glsl_array);
   return names;
 }
 
@@ -78,7 +87,10 @@ std::vector<std::string> loose_uniforms(const std::set<std::string>& fields, int
       glGetActiveUniformsiv(program, 1, &i, GL_UNIFORM_BLOCK_INDEX, &block);
       std::string n = name;
       if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);
-      if (block >= 0 || is_sampler_or_image(type) || fields.count(n) != 0 || kOwn.count(n) != 0) continue;
+      if (block >= 0 || is_sampler_or_image(type) || fields.count(n) != 0 || kOwn.count(n) != 0 ||
+          struct_arrays().count(n) != 0) {
+        continue;
+      }
       loose.push_back("program " + std::to_string(program) + ": " + n);
     }
   }
@@ -208,47 +220,48 @@ TEST_F(UniformStructs, EveryProgramReadsItsNumbersFromItsStructOrATable) {
   EXPECT_GT(programs, static_cast<int>(cases.size()) * 3) << "too few programs were built for the check to say much";
 }
 
+// What the module looked up since the last clear, by kind: struct fields (none may be), struct
+// arrays (one per program on GLSL ES 3.00), anything else (samplers, tables); glGetUniformIndices
+// calls (one per program with a struct, where locations are explicit).
+struct LookupTally {
+  int fields = 0, arrays = 0, others = 0, index_calls = 0;
+};
+
+void tally_lookups(const std::set<std::string>& fields, const std::set<std::string>& arrays, LookupTally* t) {
+  for (const auto& [program, names] : g_lookups.located) {
+    std::set<std::string> seen;
+    for (const std::string& n : names) {
+      EXPECT_TRUE(seen.insert(n).second) << "program " << program << " looked " << n << " up twice";
+      const bool field = fields.count(n) != 0 && kOwn.count(n) == 0;
+      EXPECT_FALSE(field) << "program " << program << " looked its struct's field " << n << " up";
+      (field ? t->fields : arrays.count(n) != 0 ? t->arrays : t->others) += 1;
+    }
+  }
+  for (const auto& [program, calls] : g_lookups.indexed) {
+    EXPECT_EQ(calls, 1) << "program " << program << ": one glGetUniformIndices for its struct";
+    t->index_calls += calls;
+  }
+  g_lookups.located.clear();
+  g_lookups.indexed.clear();
+}
+
 TEST_F(UniformStructs, FieldsAreFoundWithoutALookupEach) {
   const std::set<std::string> fields = struct_fields();
+  const std::set<std::string> arrays = struct_arrays();
   const SyntheticScene scene = make_relief_scene(kW, kH, 5, perspective_matrix(40.0f, 32.0f / 24.0f, 0.1f, 10.0f));
   g_lookups = Lookups{};
   g_lookups.base = is_gles() ? es30_get_proc_address : sss_headless_get_proc_address;
   loader_override_ = recording_loader;
-  sss_stats stats = {};
-  stats.struct_size = sizeof stats;
-  int field_lookups = 0, other_lookups = 0, index_calls = 0;
+  LookupTally tally;
   for (const Prepared& c : preparations()) {
     SCOPED_TRACE(c.name);
-    g_lookups.located.clear();
-    g_lookups.indexed.clear();
     prepare(c, scene.projection.data());
     if (HasFatalFailure()) return;
-    ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
-    const bool explicit_locations = stats.glsl_variant == SSS_GLSL_420_CORE;
-    for (const auto& [program, names] : g_lookups.located) {
-      std::set<std::string> seen;
-      for (const std::string& n : names) {
-        EXPECT_TRUE(seen.insert(n).second) << "program " << program << " looked " << n << " up twice";
-        const bool field = fields.count(n) != 0 && kOwn.count(n) == 0;
-        (field ? field_lookups : other_lookups) += 1;
-        if (explicit_locations) {
-          EXPECT_FALSE(field) << "program " << program << " looked its field " << n << " up";
-        }
-      }
-    }
-    for (const auto& [program, calls] : g_lookups.indexed) {
-      EXPECT_EQ(calls, 1) << "program " << program << ": one glGetUniformIndices for its struct";
-      index_calls += calls;
-    }
-    if (explicit_locations) {
-      EXPECT_GT(index_calls, 0) << "no program found its fields by index";
-    }
+    tally_lookups(fields, arrays, &tally);
   }
   // The LUT generator, which sss_lut_create_texture links, draws with and deletes each time.
   {
     SCOPED_TRACE("the LUT generator");
-    g_lookups.located.clear();
-    g_lookups.indexed.clear();
     sss_lut_desc desc;
     sss_lut_default_desc(&desc);
     desc.width = 8;
@@ -257,26 +270,22 @@ TEST_F(UniformStructs, FieldsAreFoundWithoutALookupEach) {
       uint32_t texture = 0;
       ASSERT_EQ(sss_lut_create_texture(sss_, which, &desc, &texture), SSS_OK) << sss_last_error(sss_);
     }
-    const bool explicit_locations = stats.glsl_variant == SSS_GLSL_420_CORE;
     EXPECT_EQ(g_lookups.located.size(), 2u) << "the two generators' lookups";
-    for (const auto& [program, names] : g_lookups.located) {
-      for (const std::string& n : names) {
-        const bool field = fields.count(n) != 0 && kOwn.count(n) == 0;
-        (field ? field_lookups : other_lookups) += 1;
-        if (explicit_locations) {
-          EXPECT_FALSE(field) << "the LUT generator looked its field " << n << " up";
-        }
-      }
-    }
-    for (const auto& [program, calls] : g_lookups.indexed) index_calls += calls;
+    tally_lookups(fields, arrays, &tally);
   }
+  sss_stats stats = {};
+  stats.struct_size = sizeof stats;
+  ASSERT_EQ(sss_get_stats(sss_, &stats), SSS_OK);
   loader_override_ = nullptr;
-  std::printf("glGetUniformLocation: %d for struct fields, %d for samplers and tables; glGetUniformIndices: %d\n",
-              field_lookups, other_lookups, index_calls);
-  if (is_gles()) {
-    EXPECT_GT(field_lookups, 0) << "GLSL ES 3.00 has no explicit locations: its fields are looked up";
+  std::printf("glGetUniformLocation: %d for struct fields, %d for struct arrays, %d for samplers and tables; "
+              "glGetUniformIndices: %d\n", tally.fields, tally.arrays, tally.others, tally.index_calls);
+  EXPECT_EQ(tally.fields, 0);
+  if (stats.glsl_variant == SSS_GLSL_300_ES) {
+    EXPECT_GT(tally.arrays, 0) << "GLSL ES 3.00 declares each struct as one array";
+    EXPECT_EQ(tally.index_calls, 0);
   } else {
-    EXPECT_EQ(field_lookups, 0);
+    EXPECT_EQ(tally.arrays, 0);
+    EXPECT_GT(tally.index_calls, 0) << "no program found its fields by index";
   }
 }
 

@@ -76,7 +76,7 @@ sss_result generate_on_gpu(sss_context* ctx, int32_t which, const sss_lut_desc& 
     u.set(s, gl::LutField::world_units_per_mm, desc.world_units_per_mm);
     u.set(s, gl::LutField::new_penumbra, desc.new_penumbra);
     u.set(s, gl::LutField::gaussian_filter, desc.shadow_filter == SSS_LUT_SHADOW_GAUSSIAN ? 1.0f : 0.0f);
-    const gl::UniformLocations fields = gl::find_uniforms(f, program, s, gl::has_explicit_uniform_locations(dialect));
+    const gl::UniformLocations fields = gl::find_uniforms(f, program, s, dialect);
     gl::upload_uniforms(f, s, fields, u.values.data());
     std::vector<float> packed(4 * gl::kLutMaxTerms, 0.0f);
     for (std::size_t i = 0; i < terms.size(); ++i) {

@@ -132,7 +132,8 @@ using GLubyte = unsigned char;
   X(GLuint, GetUniformBlockIndex, (GLuint program, const GLchar* name))                                \
   X(void, UniformBlockBinding, (GLuint program, GLuint block_index, GLuint binding))                   \
   X(void, Uniform1ui, (GLint location, GLuint v0))                                                     \
-  X(void, Uniform4i, (GLint location, GLint v0, GLint v1, GLint v2, GLint v3))
+  X(void, Uniform4i, (GLint location, GLint v0, GLint v1, GLint v2, GLint v3))                         \
+  X(void, Uniform4iv, (GLint location, GLsizei count, const GLint* value))
 
 // Compute shaders and image load/store (desktop OpenGL 4.3+): the compute path of the separable
 // filter (sss.h SSS_PATH_*). Loaded on desktop GL 4.3+ only; has_compute says they are there.

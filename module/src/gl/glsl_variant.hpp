@@ -24,5 +24,7 @@ const char* glsl_variant_name(GlslVariant v);
 inline bool has_explicit_bindings(GlslVariant v) { return v == GlslVariant::glsl420; }
 // A pass struct's fields sit at the locations of their table (SSS_UNIFORM_AT, pass_uniforms.hpp).
 inline bool has_explicit_uniform_locations(GlslVariant v) { return v == GlslVariant::glsl420; }
+// A pass struct is one uniform array (SSS_UNIFORM_ARRAYS): GLSL ES 3.00 has no explicit locations.
+inline bool has_uniform_arrays(GlslVariant v) { return v == GlslVariant::essl300; }
 
 }  // namespace sss::gl

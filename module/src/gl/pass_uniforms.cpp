@@ -67,19 +67,35 @@ std::array<int, 4> corners(const std::array<int, 4>& r) { return {r[0], r[1], r[
 }  // namespace
 
 std::string uniform_struct_glsl(const UniformStruct& s) {
-  std::string text;
+  std::string placed, arrayed, guards;
+  const std::string array = s.glsl_array;
+  arrayed += "uniform ivec4 " + array + "[" + std::to_string(s.vectors) + "];\n";
   for (std::size_t i = 0; i < s.count; ++i) {
     const UniformField& f = s.fields[i];
-    text += "SSS_UNIFORM_AT(" + std::to_string(i) + ") uniform " + glsl_type(f) + " " + f.glsl_name +
-            ";\n#define SSS_UNIFORM_" + f.glsl_name + "\n";
+    placed += "SSS_UNIFORM_AT(" + std::to_string(i) + ") uniform " + glsl_type(f) + " " + f.glsl_name + ";\n";
+    // The field's part of the array: its vector, and its components where it is narrower.
+    std::string part = array + "[" + std::to_string(f.offset / 4) + "]";
+    if (f.size < 4) part += "." + std::string("xyzw").substr(static_cast<std::size_t>(f.offset % 4), f.size);
+    std::string read = part;
+    switch (f.kind) {
+      case UniformKind::floats: read = "intBitsToFloat(" + part + ")"; break;
+      case UniformKind::boolean: read = "(" + part + " != 0)"; break;
+      case UniformKind::uint_bits: read = "uint(" + part + ")"; break;
+      default: break;
+    }
+    arrayed += std::string("#define ") + f.glsl_name + " " + read + "\n";
+    guards += std::string("#define SSS_UNIFORM_") + f.glsl_name + "\n";
   }
-  return text;
+  return "#ifdef SSS_UNIFORM_ARRAYS\n" + arrayed + "#else\n" + placed + "#endif\n" + guards;
 }
 
-UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s,
-                               bool explicit_locations) {
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s, GlslVariant dialect) {
   UniformLocations l;
-  if (!explicit_locations) {
+  if (has_uniform_arrays(dialect)) {
+    l.array = gl.GetUniformLocation(program, s.glsl_array);
+    return l;
+  }
+  if (!has_explicit_uniform_locations(dialect)) {
     for (std::size_t i = 0; i < s.count; ++i) l.at[i] = gl.GetUniformLocation(program, s.fields[i].glsl_name);
     return l;
   }
@@ -95,6 +111,14 @@ UniformLocations find_uniforms(const Functions& gl, GLuint program, const Unifor
 
 void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations,
                      const std::int32_t* values) {
+  if (locations.array >= 0) {
+    const std::size_t bytes = sizeof(std::int32_t) * 4 * static_cast<std::size_t>(s.vectors);
+    if (locations.holds_values && std::memcmp(locations.held.data(), values, bytes) == 0) return;
+    std::memcpy(locations.held.data(), values, bytes);
+    gl.Uniform4iv(locations.array, s.vectors, values);
+    locations.holds_values = true;
+    return;
+  }
   for (std::size_t i = 0; i < s.count; ++i) {
     const GLint at = locations.at[i];
     if (at < 0) continue;

@@ -1,29 +1,32 @@
 // Each pass kind's per-draw uniforms as one struct: a table of fields (name, place, size, kind),
 // from which the shader's declarations are written (uniform_struct_glsl, into every variant's
-// defines: the GLSL declares none of its own, each field at its table row's location where the
-// dialect has explicit uniform locations), the program's locations are known from the table (one
-// glGetUniformIndices call says which fields it uses; GLSL ES 3.00 looks each up once at link:
-// find_uniforms), and one draw's values are filled by the pass kind's one function from the
+// defines: the GLSL declares none of its own), the program's locations are known from the table
+// (find_uniforms), and one draw's values are filled by the pass kind's one function from the
 // frame's constants (math::PassConstants, computed once a frame by compute_pass_constants) and
 // the kernel, and set in one call (upload_uniforms). A new uniform is one line of its pass kind's
 // table and the line that fills it (pass_uniforms.cpp). Every per-draw number a program reads is
 // in its struct (the LUT generator's too, filled by sss_lut_create_texture); only tables (arrays:
 // u_cdf, u_spacing, u_profile, u_looks, u_texturing, u_depth_factor, the LUT generator's u_terms and
 // u_gl), samplers, the vertex stage's u_tile_grid and the tile programs' one u_rect are uniforms of
-// their own (tests/gl/uniform_structs_test.cpp checks every program the paths build, and that
-// where locations are explicit no field is looked up by name).
+// their own (tests/gl/uniform_structs_test.cpp checks every program the paths build, and that no
+// field is looked up by name).
 //
-// The fields stay separate GLSL uniforms, one location each (placed, not looked up). Making a
-// struct one GL object, which would also spare GLSL ES 3.00 its lookups, was measured (callgrind,
-// scripts/cost-probe.sh) against the bounds of issue 47:
-//   - a uniform array of ivec4, each field a #define that reads its part (floats through
-//     intBitsToFloat, so exact): bit-identical images, but llvmpipe's passes cost more, the 640x360
-//     head close-up 133.87 M -> 134.84 M instructions on the default path (+0.72 %) and +0.29 % on
-//     the half-resolution path, with the same fields as separate uniforms at 133.87 M;
-//   - a vec4 array with the integers held as floats: its int() and `!= 0.0` conversions cost 0.12
-//     instructions a pixel (the empty 640x360 fragment frame: 27,800 more in the inputs draw alone);
-//   - a std140 block reads a buffer bound to an indexed binding point, the host's context state,
-//     which the state guard would save and restore every frame (four more queries per steady frame).
+// A struct's form follows the dialect, and either way no field is looked up by name:
+//   - desktop GL (GLSL 4.20 with GL_ARB_explicit_uniform_location): each field a uniform at its
+//     row's location (layout(location)); one glGetUniformIndices call at link says which fields a
+//     program uses. (GLSL 3.30 without the extension looks each field up, once at link.)
+//   - GLSL ES 3.00, which has no explicit locations: the struct is one uniform array of ivec4, each
+//     field a #define that reads its part (floats through intBitsToFloat, so exact: the images are
+//     bit for bit the separate uniforms'), one location, one glUniform4iv per draw that changes it.
+//     On desktop llvmpipe this form cost more than separate uniforms (callgrind,
+//     scripts/cost-probe.sh, the 640x360 head close-up: 133.87 M -> 134.84 M instructions on the
+//     default path, +0.72 %; +0.29 % on the half-resolution path), which is why the placed
+//     uniforms are the desktop form.
+// Measured and left: a vec4 array with the integers held as floats (its int() and `!= 0.0`
+// conversions cost 0.12 instructions a pixel: the empty 640x360 fragment frame's inputs draw
+// alone 27,800 more); a std140 block, which reads a buffer bound to an indexed binding point, the
+// host's context state, which the state guard would save and restore every frame (four more
+// queries per steady frame).
 // The pieces the pass kinds share declare a uniform only where no struct does (depth.glsl,
 // pass_surface.glsl, nearest_half.glsl, jitter.glsl: `#ifndef SSS_UNIFORM_u_depth_terms`).
 #pragma once
@@ -37,6 +40,7 @@
 
 #include "filter_run.hpp"
 #include "gl_functions.hpp"
+#include "glsl_variant.hpp"
 
 namespace sss::gl {
 
@@ -56,10 +60,12 @@ struct UniformField {
   UniformKind kind;
 };
 
-// A pass kind's struct: a name for the log, its size in vectors of four values and its fields (by
-// an enum of the kind's).
+// A pass kind's struct: a name for the log, the GLSL name of its one array where the dialect
+// declares the struct as one (glsl_variant.hpp has_uniform_arrays), its size in vectors of four
+// values and its fields (by an enum of the kind's).
 struct UniformStruct {
   const char* name;
+  const char* glsl_array;
   int vectors;
   const UniformField* fields;
   std::size_t count;
@@ -74,6 +80,7 @@ inline constexpr std::size_t kMaxUniformVectors = 9;
 // fields that changed since the program's last draw (a steady frame's draws set few or none).
 struct UniformLocations {
   std::array<GLint, kMaxUniformFields> at{};
+  GLint array = -1;  // where the struct is one array (GLSL ES 3.00): its location, and `at` unused
   mutable std::array<std::int32_t, 4 * kMaxUniformVectors> held{};
   mutable bool holds_values = false;  // false until the first upload: every field is set then
   UniformLocations() { at.fill(-1); }
@@ -110,18 +117,19 @@ struct UniformValues {
   }
 };
 
-// The struct's declarations, for the variant's defines: each field as a uniform of its GLSL type
-// at the location of its row in the table (SSS_UNIFORM_AT(row): the dialect's header makes it
-// layout(location = row) where the dialect has explicit uniform locations, nothing elsewhere), and a
+// The struct's declarations, for the variant's defines, in both of the dialects' forms (the
+// header's SSS_UNIFORM_ARRAYS picks one): each field a uniform of its GLSL type at the location of its
+// row in the table (SSS_UNIFORM_AT(row): layout(location = row) where the dialect has explicit
+// uniform locations), or, in GLSL ES 3.00, which has none, the struct as one array of ivec4 with
+// each field a #define that reads its part (floats through intBitsToFloat: exact); and a
 // SSS_UNIFORM_<name> #define for the pieces' guards.
 std::string uniform_struct_glsl(const UniformStruct& s);
-// Each field's location in `program`, once at link. With explicit locations (glsl_variant.hpp) a
-// field is at its row and one glGetUniformIndices call over the table's names says which fields the
-// program uses; without them, one glGetUniformLocation per field.
-UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s,
-                               bool explicit_locations);
+// Each field's location in `program` (compiled in `dialect`), once at link. With explicit locations
+// a field is at its row and one glGetUniformIndices call over the table's names says which fields the
+// program uses; as one array, one glGetUniformLocation of the array; otherwise one per field.
+UniformLocations find_uniforms(const Functions& gl, GLuint program, const UniformStruct& s, GlslVariant dialect);
 // One draw's values into the program in use: a glUniform call per field it uses whose value it
-// does not hold already.
+// does not hold already (as one array: one glUniform4iv where any value changed).
 void upload_uniforms(const Functions& gl, const UniformStruct& s, const UniformLocations& locations,
                      const std::int32_t* values);
 
@@ -156,7 +164,7 @@ inline constexpr UniformField kBlurFields[] = {
     {"u_footprint", 28, 4, UniformKind::floats},       {"u_inv_two_variance", 32, 1, UniformKind::floats},
 };
 inline constexpr int kBlurUniformVectors = 9;
-inline constexpr UniformStruct kBlurUniforms = {"blur pass", kBlurUniformVectors, kBlurFields,
+inline constexpr UniformStruct kBlurUniforms = {"blur pass", "sss_blur_values", kBlurUniformVectors, kBlurFields,
                                                 std::size(kBlurFields)};
 using BlurUniforms = UniformValues<kBlurUniformVectors>;
 // Term `term`'s pass along `axis` of `run`: `gaussian_depth` the variant's depth correction
@@ -180,7 +188,7 @@ inline constexpr UniformField kCbfFields[] = {
     {"u_ray_slope", 16, 4, UniformKind::floats},     {"u_footprint", 20, 4, UniformKind::floats},
     {"u_spike_blend", 24, 4, UniformKind::floats},   {"u_inv_two_variance", 28, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kCbfUniforms = {"cross-bilateral pass", 8, kCbfFields, std::size(kCbfFields)};
+inline constexpr UniformStruct kCbfUniforms = {"cross-bilateral pass", "sss_cbf_values", 8, kCbfFields, std::size(kCbfFields)};
 using CbfUniforms = UniformValues<8>;
 CbfUniforms fill_cbf_uniforms(const FilterRun& run, int axis, bool round_to_half);
 
@@ -194,7 +202,7 @@ inline constexpr UniformField kInputsFields[] = {
     {"u_round_to_half", 2, 1, UniformKind::boolean},
     {"u_depth_terms", 4, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kInputsUniforms = {"pass inputs", 2, kInputsFields, std::size(kInputsFields)};
+inline constexpr UniformStruct kInputsUniforms = {"pass inputs", "sss_inputs_values", 2, kInputsFields, std::size(kInputsFields)};
 using InputsUniforms = UniformValues<2>;
 InputsUniforms fill_inputs_uniforms(const FilterRun& run);
 
@@ -203,7 +211,7 @@ enum class ColourCopyField : int { round_to_half };  // the albedo's quotient is
 inline constexpr UniformField kColourCopyFields[] = {
     {"u_round_to_half", 0, 1, UniformKind::boolean},
 };
-inline constexpr UniformStruct kColourCopyUniforms = {"colour copy", 1, kColourCopyFields,
+inline constexpr UniformStruct kColourCopyUniforms = {"colour copy", "sss_copy_values", 1, kColourCopyFields,
                                                       std::size(kColourCopyFields)};
 using ColourCopyUniforms = UniformValues<1>;
 ColourCopyUniforms fill_colour_copy_uniforms(const FilterRun& run);
@@ -215,7 +223,7 @@ inline constexpr UniformField kResolveFields[] = {
     {"u_round_to_half", 2, 1, UniformKind::boolean}, {"u_ndc_from_depth", 4, 2, UniformKind::floats},
     {"u_depth_terms", 8, 4, UniformKind::floats},
 };
-inline constexpr UniformStruct kResolveUniforms = {"MSAA resolve", 3, kResolveFields,
+inline constexpr UniformStruct kResolveUniforms = {"MSAA resolve", "sss_resolve_values", 3, kResolveFields,
                                                    std::size(kResolveFields)};
 using ResolveUniforms = UniformValues<3>;
 ResolveUniforms fill_resolve_uniforms(const FilterRun& host);
@@ -229,7 +237,7 @@ inline constexpr UniformField kSampleWriteFields[] = {
     {"u_samples", 0, 1, UniformKind::integer},
     {"u_sample", 1, 1, UniformKind::integer},
 };
-inline constexpr UniformStruct kSampleWriteUniforms = {"MSAA write-back", 1, kSampleWriteFields,
+inline constexpr UniformStruct kSampleWriteUniforms = {"MSAA write-back", "sss_write_values", 1, kSampleWriteFields,
                                                        std::size(kSampleWriteFields)};
 using SampleWriteUniforms = UniformValues<1>;
 SampleWriteUniforms fill_sample_write_uniforms(const FilterRun& host, int sample);
@@ -245,7 +253,7 @@ inline constexpr UniformField kHalfInputsFields[] = {
     {"u_profile_count", 4, 1, UniformKind::integer},
     {"u_merge_reach", 5, 1, UniformKind::floats},
 };
-inline constexpr UniformStruct kHalfInputsUniforms = {"half-size inputs", 2, kHalfInputsFields,
+inline constexpr UniformStruct kHalfInputsUniforms = {"half-size inputs", "sss_half_inputs_values", 2, kHalfInputsFields,
                                                       std::size(kHalfInputsFields)};
 using HalfInputsUniforms = UniformValues<2>;
 HalfInputsUniforms fill_half_inputs_uniforms(const FilterRun& run);
@@ -263,7 +271,7 @@ inline constexpr UniformField kUpsampleFields[] = {
     {"u_depth_terms", 16, 4, UniformKind::floats},     {"u_ray_slope", 20, 4, UniformKind::floats},
     {"u_min_weight", 24, 1, UniformKind::floats},
 };
-inline constexpr UniformStruct kUpsampleUniforms = {"upsample", 7, kUpsampleFields,
+inline constexpr UniformStruct kUpsampleUniforms = {"upsample", "sss_upsample_values", 7, kUpsampleFields,
                                                     std::size(kUpsampleFields)};
 using UpsampleUniforms = UniformValues<7>;
 // `half`: the half-size rectangle; `round_to_half`: whether the target is RGBA16F.
@@ -285,7 +293,7 @@ inline constexpr UniformField kLutFields[] = {
     {"u_world_units_per_mm", 6, 1, UniformKind::floats}, {"u_new_penumbra", 7, 1, UniformKind::floats},
     {"u_gaussian_filter", 8, 1, UniformKind::integer},
 };
-inline constexpr UniformStruct kLutUniforms = {"LUT generator", 3, kLutFields, std::size(kLutFields)};
+inline constexpr UniformStruct kLutUniforms = {"LUT generator", "sss_lut_values", 3, kLutFields, std::size(kLutFields)};
 using LutUniforms = UniformValues<3>;
 
 // Every struct fits UniformLocations.

@@ -209,7 +209,7 @@ sss_result ProgramCache::compute(const BlurVariant& v, int image_format_slot, Co
 UniformLocations ProgramCache::struct_fields(GLuint program, const UniformStruct& s) const {
   // A program compiled from version_430.glsl (the compute blur) has explicit locations in any
   // dialect; looked up by name they are found all the same.
-  return find_uniforms(*gl_, program, s, has_explicit_uniform_locations(variant_));
+  return find_uniforms(*gl_, program, s, variant_);
 }
 
 void ProgramCache::find_blur_uniforms(BlurProgram* program) const {
