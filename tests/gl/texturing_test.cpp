@@ -550,6 +550,37 @@ TEST_F(TexturingMsaa, EachModeMatchesTheModel) {
   }
 }
 
+// A GL 3.3 context (GLSL 3.30: no gl_SampleID) writes back one draw per sample under glSampleMaski,
+// each reading its own sample of the albedo (msaa_write.frag's u_sample): the samples come out as
+// from the one draw of a GL 4.2+ context, bit for bit (the same operations on the same numbers).
+TEST_F(TexturingMsaa, WriteBackOnAGl33ContextGivesTheSameSamples) {
+  const Inputs in = make_fine_inputs(fine_, true);
+  const GLuint albedo = ms(GL_RGBA16F, in.albedo);
+  const Samples before = read_samples(ms(GL_RGBA32F, in.color), kW, kH, 4);
+  for (const uint32_t mode : {SSS_TEXTURING_POST_SCATTER, SSS_TEXTURING_PRE_AND_POST_SCATTER}) {
+    SCOPED_TRACE("mode " + std::to_string(mode));
+    const sss_settings s = case_settings(kEveryPath[0], mode);
+    uint32_t passes[2] = {}, dialect[2] = {};
+    Samples after[2];
+    for (int gl33 = 0; gl33 < 2; ++gl33) {
+      loader_override_ = gl33 != 0 ? loader_telling(GL_VERSION, "3.3 (Core Profile) as told by the test",
+                                                    sss_headless_get_proc_address)
+                                   : nullptr;
+      after[gl33] = run(s, GL_RGBA32F, in.color, albedo, false).samples;
+      sss_stats st = {};
+      st.struct_size = sizeof st;
+      ASSERT_EQ(sss_get_stats(sss_, &st), SSS_OK);
+      passes[gl33] = st.last_frame_passes;
+      dialect[gl33] = st.glsl_variant;
+    }
+    loader_override_ = nullptr;
+    EXPECT_EQ(dialect[1], static_cast<uint32_t>(SSS_GLSL_330_CORE));
+    EXPECT_EQ(passes[1], passes[0] + 3) << "the write-back as one draw per sample (4 instead of 1)";
+    EXPECT_GT(largest_sample_change(after[0], before), 0.01f) << "the write-back must have changed samples";
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(after[1][k], after[0][k]) << "sample " << k;
+  }
+}
+
 // An albedo of another sample count, size or target than the multisampled colour is refused by
 // name and value (INVALID_TEXTURE), nothing drawn: the colour's samples and the output untouched. A
 // single-sample albedo has no value per sample, so it is refused too rather than guessed at.
