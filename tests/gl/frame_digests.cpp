@@ -12,7 +12,9 @@
 // of expected values is kept. The cases: every path with each texture layout and switch that
 // selects a different variant or step (output, host stencil, region, viewport, depth encodings,
 // colour formats, a strength texture, per-pixel profiles, kernel terms, tap counts, jitter,
-// follow-surface), the cross-bilateral mode, the MSAA path and every debug view.
+// follow-surface, each texturing mode over an albedo, a mode per profile), the cross-bilateral
+// mode, the MSAA path (with the texturing modes too) and every debug view. A refused frame prints
+// its code alone (the message names textures, whose numbers move as cases are added).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -49,7 +51,23 @@ struct DigestCase {
   bool normals = false;  // the cross-bilateral mode's normal texture
   uint32_t debug_view = 0;
   uint32_t noise_index = 0;
+  // A texturing mode (sss_settings.texturing) over an RGBA16F albedo; with per-pixel profiles the
+  // second profile keeps pre-scatter (a mode per pixel).
+  uint32_t texturing = SSS_TEXTURING_PRE_SCATTER;
 };
+
+// The albedo of a texturing case: 2-pixel cells of three greys per channel (each sample its own on
+// the MSAA path's fine grid), never below the module's floor.
+std::vector<float> albedo_pattern(int width, int height) {
+  std::vector<float> a(static_cast<std::size_t>(width) * height * 4, 1.0f);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int cell = (x / 2 + 2 * (y / 2)) % 3;
+      for (int c = 0; c < 3; ++c) a[(static_cast<std::size_t>(y) * width + x) * 4 + c] = 0.25f + 0.3f * static_cast<float>((cell + c) % 3);
+    }
+  }
+  return a;
+}
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t h = 1469598103934665603ull) {
   const auto* p = static_cast<const unsigned char*>(data);
@@ -99,6 +117,11 @@ class FrameDigests : public GlTest {
       f.output_texture = make_rgba32f(kW, kH, std::vector<float>(static_cast<std::size_t>(kW) * kH * 4, -7.0f));
     }
     if (c.profiles != 0) f.profile_texture = profile_texture(c.profiles);
+    if (c.texturing != SSS_TEXTURING_PRE_SCATTER) {
+      f.albedo_texture = c.samples > 0 ? make_multisample_texture(GL_RGBA16F, kW, kH, c.samples, albedo_pattern(fw, fh))
+                                       : make_rgba16f(kW, kH, albedo_pattern(kW, kH));
+      if (c.samples > 0) textures_.push_back(f.albedo_texture);
+    }
     if (c.normals) f.normal_texture = make_rgba32f(kW, kH, normals());
     if (c.region) {
       f.flags |= SSS_FRAME_REGION;
@@ -114,6 +137,7 @@ class FrameDigests : public GlTest {
       sss_settings two[2] = {c.settings, c.settings};
       two[1].scale = 2.5f;
       two[1].strength[0] = 0.4f;
+      two[1].texturing = SSS_TEXTURING_PRE_SCATTER;
       if (sss_set_profiles(sss_, two, 2) != SSS_OK) return std::string("profiles refused: ") + sss_last_error(sss_);
     }
     if (is_gles()) describe(c, &f);
@@ -121,7 +145,8 @@ class FrameDigests : public GlTest {
     std::string line;
     for (int frame = 0; frame < 2; ++frame) {
       const sss_result r = sss_apply_frame(sss_, &f);
-      if (r != SSS_OK) return line + " refused: " + sss_last_error(sss_);
+      // The code alone: the message names textures, whose numbers move as cases are added.
+      if (r != SSS_OK) return line + " refused: " + sss_result_string(r);
       char hex[24];
       std::snprintf(hex, sizeof hex, " %016llx", static_cast<unsigned long long>(read_back(target, c)));
       line += hex;
@@ -198,6 +223,7 @@ class FrameDigests : public GlTest {
     f->stencil_format = f->stencil != nullptr ? GL_DEPTH24_STENCIL8 : 0;
     f->strength_format = f->strength_texture != 0 ? GL_R8 : 0;
     f->profile_format = f->profile_texture != 0 ? c.profiles : 0;
+    f->albedo_format = f->albedo_texture != 0 ? GL_RGBA16F : 0;
     f->normal_format = f->normal_texture != 0 ? GL_RGBA32F : 0;
   }
 
@@ -245,6 +271,8 @@ enum Feature : unsigned {
   kNormals = 1u << 19,
   kComputePath = 1u << 20,
   kCrossBilateral = 1u << 21,
+  kPostScatter = 1u << 22,
+  kPreAndPostScatter = 1u << 23,
 };
 
 DigestCase make_case(const std::string& name, uint32_t path, unsigned features) {
@@ -279,6 +307,9 @@ DigestCase make_case(const std::string& name, uint32_t path, unsigned features) 
   if ((features & kIdentity) != 0) c.settings.scale = 0.0f;
   if ((features & kAutoHalf) != 0) c.settings.flags |= SSS_AUTO_HALF_RESOLUTION;
   c.normals = (features & kNormals) != 0;
+  if ((features & kPostScatter) != 0) c.texturing = SSS_TEXTURING_POST_SCATTER;
+  if ((features & kPreAndPostScatter) != 0) c.texturing = SSS_TEXTURING_PRE_AND_POST_SCATTER;
+  c.settings.texturing = c.texturing;
   return c;
 }
 
@@ -314,6 +345,9 @@ constexpr Variation kPathVariations[] = {
     {"identity output", kIdentity | kOutput},
     {"identity in place", kIdentity},
     {"auto half allowed", kAutoHalf},
+    {"post-scatter", kPostScatter},
+    {"pre- and post-scatter output", kPreAndPostScatter | kOutput},
+    {"post-scatter profiles r8", kPostScatter | kProfilesR8},
 };
 constexpr Variation kCrossBilateralVariations[] = {
     {"default", 0},
@@ -324,10 +358,13 @@ constexpr Variation kCrossBilateralVariations[] = {
     {"linear depth", kLinearDepth},
     {"compute", kComputePath},
     {"region output", kRegion | kOutput},
+    {"post-scatter", kPostScatter},
+    {"pre- and post-scatter output", kPreAndPostScatter | kOutput},
 };
 // The MSAA path: the layouts it takes of the list above (what a multisampled frame refuses, and
 // what does not change its plan, left out), the cross-bilateral mode, and the compute path asked for.
-constexpr unsigned kMsaaFeatures = kHalfColour | kOutput | kStencil | kTwoTerms | kIdentity | kProfilesR8;
+constexpr unsigned kMsaaFeatures =
+    kHalfColour | kOutput | kStencil | kTwoTerms | kIdentity | kProfilesR8 | kPostScatter | kPreAndPostScatter;
 constexpr Variation kMsaaExtras[] = {{"cross-bilateral", kCrossBilateral}, {"compute", kComputePath}};
 
 std::vector<DigestCase> cases() {
