@@ -492,6 +492,41 @@ TEST_F(TexturingMsaa, UniformLightKeepsEachSampleInPostScatter) {
   EXPECT_LT(change[2], change[0]);
 }
 
+// The near-zero rule on the MSAA path: under uniform light, fine samples of albedo 0.001 (below the
+// floor of 1/256; make_fine_inputs' freckle, 2x2 whole pixels) count as the floor in the resolve's
+// divide and in the write-back's per-sample multiply. So each such sample comes out brighter than
+// its colour (the blurred quotient around it is above its own) but at most floor · E: its colour
+// 0.001 · E plus at most (1 − 0.256) · E / 256, to within the resolve's, the passes' and the store's
+// roundings (6 half steps, as the uniform-light test's); the samples away from the freckle's
+// reach hardly move.
+TEST_F(TexturingMsaa, AnAlbedoBelowTheFloorCountsAsTheFloor) {
+  const Inputs in = make_fine_inputs(fine_, false, true);
+  const GLuint albedo = ms(GL_RGBA16F, in.albedo);
+  const Samples before = read_samples(ms(GL_RGBA16F, in.color), kW, kH, 4);
+  const Samples after =
+      run(case_settings(kEveryPath[0], SSS_TEXTURING_POST_SCATTER), GL_RGBA16F, in.color, albedo, false).samples;
+  float lowest = 1e30f, highest = 0.0f;
+  std::size_t freckled = 0, beyond_floor = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t i = 0; i < before[k].size(); ++i) {
+      const std::size_t p = i / 4, c = i % 4;
+      if (c == 3 || !(before[k][p * 4 + 3] > 0.0f)) continue;
+      const std::size_t fx = 2 * (p % kW) + k % 2, fy = 2 * (p / kW) + k / 2;
+      if (!(fx >= 60 && fx < 64 && fy >= 40 && fy < 44)) continue;
+      ++freckled;
+      const float ratio = after[k][i] / before[k][i];
+      lowest = std::min(lowest, ratio);
+      highest = std::max(highest, ratio);
+      beyond_floor += after[k][i] > kFloor * kUniform[c] * (1.0f + 6.0f * kHalfStep) ? 1 : 0;
+    }
+  }
+  std::printf("MSAA, albedo 0.001 under the floor 1/256: %zu freckled sample values come out %.2f to %.2f times their "
+              "colour (the exact answer: 1)\n", freckled, lowest, highest);
+  EXPECT_EQ(freckled, 4u * 4u * 3u) << "the freckle: 2x2 translucent pixels of 4 samples, 3 channels";
+  EXPECT_EQ(beyond_floor, 0u);
+  EXPECT_GT(lowest, 1.0f);
+}
+
 // Any light, RGBA32F colour, each mode, written back and into an RGBA32F output: the GL against the
 // model (math/cpu_msaa_texturing: the per-sample divide, the write-back's per-sample multiply) fed
 // with the module's own pre-scatter filter of the model's quotient samples (the same resolve and
