@@ -70,10 +70,13 @@ std::vector<MethodConfig> method_configs(const Options& o) {
   // Several materials in one pass pair: one profile against per-pixel profiles, in the same run.
   configs.push_back({"separable-one-profile", SSS_TAPS_MEDIUM, true});
   configs.push_back({"separable-profiles", SSS_TAPS_MEDIUM, true});
-  // The half-resolution path (SSS_PATH_HALF_RESOLUTION) in place, beside the masked one.
+  // The half-resolution path (SSS_PATH_HALF_RESOLUTION) in place, beside the masked one. The
+  // texturing modes' divide and multiply (sss_settings.texturing, over a constant albedo), in place
+  // on the fragment path and with the fastest path and the region.
   for (const char* kind : {"separable-in-place", "separable-region",
                            "separable-masked", "separable-masked-region", "separable-half", "separable-compute",
-                           "separable-compute-region", "separable-auto-region"}) {
+                           "separable-compute-region", "separable-auto-region", "separable-in-place-post-scatter",
+                           "separable-in-place-pre-and-post-scatter", "separable-auto-region-post-scatter"}) {
     configs.push_back({kind, SSS_TAPS_MEDIUM, true});
   }
   // Mikkelsen's cross-bilateral mode: its own depth handling (range weights, zero weight for
@@ -132,6 +135,15 @@ std::unique_ptr<Method> make_method(const MethodConfig& c, const GlLoader& loade
   if (c.kind == "separable-compute") return make_in_place_method(loader, c.taps, false, SSS_PATH_COMPUTE);
   if (c.kind == "separable-compute-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_COMPUTE);
   if (c.kind == "separable-auto-region") return make_in_place_method(loader, c.taps, true, SSS_PATH_AUTO);
+  if (c.kind == "separable-in-place-post-scatter") {
+    return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT, SSS_TEXTURING_POST_SCATTER);
+  }
+  if (c.kind == "separable-in-place-pre-and-post-scatter") {
+    return make_in_place_method(loader, c.taps, false, SSS_PATH_FRAGMENT, SSS_TEXTURING_PRE_AND_POST_SCATTER);
+  }
+  if (c.kind == "separable-auto-region-post-scatter") {
+    return make_in_place_method(loader, c.taps, true, SSS_PATH_AUTO, SSS_TEXTURING_POST_SCATTER);
+  }
   // The 12-pass baseline: d'Eon's six Gaussians, each a horizontal and a vertical pass of its own
   // footprint-integrated weights (the library's family, exact on a plane where every pixel gets a tap).
   if (c.kind == "sum-of-gaussians") return make_kernel_family_method(loader, sum_of_gaussians_baseline(), c.taps);

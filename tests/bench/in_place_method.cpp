@@ -1,11 +1,15 @@
 // The library as a host's frame calls it: written back in place into the host's lit colour, with the
 // options that skip work a frame does not need (the region of translucent
-// pixels). Only sss_apply_frame is timed: refilling the colour before each frame and copying the
+// pixels), and with a texturing mode over an albedo (sss_settings.texturing): the time of its divide
+// and multiply. That albedo is a constant 0.5, so each mode's exact answer is the scene's own
+// reference (A_post · R ∗ (E·A / A_post) = R ∗ E·A for a constant A, the scene's colour being E·A) and
+// the division and product by 0.5 are exact: the rows score as the pre-scatter row beside them. Only sss_apply_frame is timed: refilling the colour before each frame and copying the
 // result out for scoring happen outside the clock (Method::before_run / after_run).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "library_frame_method.hpp"
 #include "math/separable_kernel.hpp"
@@ -18,8 +22,11 @@ namespace {
 
 class InPlaceMethod : public LibraryFrameMethod {
  public:
-  InPlaceMethod(const GlLoader& loader, int taps, bool region, uint32_t path)
-      : LibraryFrameMethod(loader), taps_(taps), region_(region), path_(path) {}
+  InPlaceMethod(const GlLoader& loader, int taps, bool region, uint32_t path, uint32_t texturing)
+      : LibraryFrameMethod(loader), taps_(taps), region_(region), path_(path), texturing_(texturing) {}
+  ~InPlaceMethod() override {
+    if (albedo_ != 0) glDeleteTextures(1, &albedo_);
+  }
 
   std::string name() const override {
     const std::string base = path_ == SSS_PATH_COMPUTE           ? "separable-compute"
@@ -27,8 +34,11 @@ class InPlaceMethod : public LibraryFrameMethod {
                              : path_ == SSS_PATH_FRAGMENT_MASKED ? "separable-masked"
                              : path_ == SSS_PATH_HALF_RESOLUTION ? "separable-half"
                                                                  : "separable";
-    if (region_) return base + "-region";
-    return path_ == SSS_PATH_FRAGMENT ? "separable-in-place" : base;
+    const std::string mode = texturing_ == SSS_TEXTURING_POST_SCATTER           ? "-post-scatter"
+                             : texturing_ == SSS_TEXTURING_PRE_AND_POST_SCATTER ? "-pre-and-post-scatter"
+                                                                                : "";
+    if (region_) return base + "-region" + mode;
+    return (path_ == SSS_PATH_FRAGMENT ? std::string("separable-in-place") : base) + mode;
   }
   int taps() const override { return taps_; }
   bool follow_surface() const override { return true; }
@@ -46,10 +56,12 @@ class InPlaceMethod : public LibraryFrameMethod {
     s.taps = taps_;
     s.flags = SSS_FOLLOW_SURFACE;
     s.path = path_;
+    s.texturing = texturing_;
     sss_frame frame = {};
     frame.struct_size = sizeof frame;
     frame.color_texture = work_;
     frame.depth_texture = scene.depth;
+    if (texturing_ != SSS_TEXTURING_PRE_SCATTER) frame.albedo_texture = albedo_;
     if (region_) {
       frame.flags |= SSS_FRAME_REGION;
       for (int i = 0; i < 4; ++i) frame.region[i] = region_rect_[static_cast<std::size_t>(i)];
@@ -67,7 +79,15 @@ class InPlaceMethod : public LibraryFrameMethod {
   // rectangle of the translucent pixels, padded by the kernel's reach in pixels at the nearest
   // translucent pixel (range 2 or 3 mm, at alpha 1), clipped to the frame; empty when none is.
   void prepare(const GpuScene& scene) {
-    ensure_work(scene);
+    if (ensure_work(scene) && texturing_ != SSS_TEXTURING_PRE_SCATTER) {
+      if (albedo_ == 0) glGenTextures(1, &albedo_);
+      const std::vector<float> half_grey(static_cast<std::size_t>(scene.width) * scene.height * 4, 0.5f);
+      glBindTexture(GL_TEXTURE_2D, albedo_);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, scene.width, scene.height, 0, GL_RGBA, GL_FLOAT, half_grey.data());
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
     // Recomputed before every frame (untimed): a host would project its meshes' bounds each frame.
     int x0 = scene.width, y0 = scene.height, x1 = -1, y1 = -1;
     for (int y = 0; y < scene.height; ++y) {
@@ -101,14 +121,16 @@ class InPlaceMethod : public LibraryFrameMethod {
   int taps_;
   bool region_;
   uint32_t path_;
+  uint32_t texturing_;
+  GLuint albedo_ = 0;  // the constant 0.5 albedo of a texturing mode, at the work texture's size
   std::array<int, 4> region_rect_ = {0, 0, 0, 0};
 };
 
 }  // namespace
 
-std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
-                                             uint32_t path) {
-  return std::make_unique<InPlaceMethod>(loader, taps, region, path);
+std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region, uint32_t path,
+                                             uint32_t texturing) {
+  return std::make_unique<InPlaceMethod>(loader, taps, region, path, texturing);
 }
 
 }  // namespace sss_bench

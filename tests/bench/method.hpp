@@ -73,9 +73,11 @@ std::unique_ptr<Method> make_cross_bilateral_method(const GlLoader& loader, int 
 // path: sss_settings.path (SSS_PATH_FRAGMENT: "separable-in-place", "separable-region";
 // SSS_PATH_FRAGMENT_MASKED: "separable-masked[-region]"; SSS_PATH_COMPUTE:
 // "separable-compute[-region]"; SSS_PATH_AUTO: "separable-auto[...]"; SSS_PATH_HALF_RESOLUTION:
-// "separable-half").
+// "separable-half"). texturing: sss_settings.texturing over a constant 0.5 albedo (its name gains
+// "-post-scatter" or "-pre-and-post-scatter"; the answer is the scene's reference all the same).
 std::unique_ptr<Method> make_in_place_method(const GlLoader& loader, int taps, bool region,
-                                             uint32_t path = SSS_PATH_FRAGMENT);
+                                             uint32_t path = SSS_PATH_FRAGMENT,
+                                             uint32_t texturing = SSS_TEXTURING_PRE_SCATTER);
 // Several materials in one pass pair, in place, 17 taps or `taps`, follow-surface on: one profile and
 // no profile texture ("separable-one-profile"), or several profiles and the scene's profile/object
 // texture ("separable-profiles"); see profiles_method.cpp.

@@ -270,7 +270,10 @@ void write_results_document(const std::string& path, const std::string& out_dir,
            "each work group caches a segment of a row, then of a column, in shared memory with as much apron as its "
            "widest kernel reaches, and a group with no translucent pixel takes no taps), "
            "alone and with the region; `separable-auto-region` lets the library pick the "
-           "fastest path (`SSS_PATH_AUTO`: timed on GPUs, the masked fragment path on software rasterisers). `% of "
+           "fastest path (`SSS_PATH_AUTO`: timed on GPUs, the masked fragment path on software rasterisers). The "
+           "`-post-scatter` and `-pre-and-post-scatter` rows run that texturing mode (`sss_settings.texturing`) over a "
+           "constant 0.5 albedo: the time of the divide and the multiply, on a frame whose exact answer is the "
+           "scene's own reference (a constant albedo's modes all give the same image, and dividing by 0.5 is exact). `% of "
            "close-up` is each time over `separable-in-place` on the head close-up at this size; `separable` is the "
            "library into a separate output, the rows of the tables above.\n\n"
            "| scene | method | ms | × copy | % of close-up | miss interior | rel. RMSE | p99 abs | SSIM |\n"
@@ -283,7 +286,8 @@ void write_results_document(const std::string& path, const std::string& out_dir,
       }
       for (const char* method : {"separable", "separable-in-place", "separable-region", "separable-masked",
                                  "separable-masked-region", "separable-half", "separable-compute",
-                                 "separable-compute-region", "separable-auto-region"}) {
+                                 "separable-compute-region", "separable-auto-region", "separable-in-place-post-scatter",
+                                 "separable-in-place-pre-and-post-scatter", "separable-auto-region-post-scatter"}) {
         const ResultRow* r = find(rows, scene, w, h, method, 17, true);
         if (r == nullptr) continue;
         out << "| " << scene << " | " << method << " | " << fmt(r->time_ms, "%.2f") << " | "
