@@ -1,10 +1,11 @@
 // The library as a host's frame calls it: written back in place into the host's lit colour, with the
-// options that skip work a frame does not need (the region of translucent
-// pixels), and with a texturing mode over an albedo (sss_settings.texturing): the time of its divide
-// and multiply. That albedo is a constant 0.5, so each mode's exact answer is the scene's own
-// reference (A_post · R ∗ (E·A / A_post) = R ∗ E·A for a constant A, the scene's colour being E·A) and
-// the division and product by 0.5 are exact: the rows score as the pre-scatter row beside them. Only sss_apply_frame is timed: refilling the colour before each frame and copying the
-// result out for scoring happen outside the clock (Method::before_run / after_run).
+// options that skip work a frame does not need (the region of translucent pixels), and with a
+// texturing mode over an albedo (sss_settings.texturing): the time of its divide and multiply.
+// That albedo is a constant 0.5, so each mode's exact answer is the scene's own reference
+// (A_post · R ∗ (E·A / A_post) = R ∗ E·A for a constant A, the scene's colour being E·A), and
+// post-scatter's division and product by 0.5 are exact: its rows score as the pre-scatter row
+// beside them. Only sss_apply_frame is timed: refilling the colour before each frame and copying
+// the result out for scoring happen outside the clock (Method::before_run / after_run).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -77,7 +78,8 @@ class InPlaceMethod : public LibraryFrameMethod {
  private:
   // The work texture for this scene's size, and the region a host would pass: the bounding
   // rectangle of the translucent pixels, padded by the kernel's reach in pixels at the nearest
-  // translucent pixel (range 2 or 3 mm, at alpha 1), clipped to the frame; empty when none is.
+  // translucent pixel (the kernel's 2 mm range, at alpha 1), clipped to the frame; empty when none
+  // is. A texturing mode's albedo is made with the work texture, at its size.
   void prepare(const GpuScene& scene) {
     if (ensure_work(scene) && texturing_ != SSS_TEXTURING_PRE_SCATTER) {
       if (albedo_ == 0) glGenTextures(1, &albedo_);
