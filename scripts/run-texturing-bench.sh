@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The texturing modes on facing planes with an albedo at pore scale (tests/bench/texturing_bench.cpp):
+# The texturing modes on planes with an albedo at pore scale, facing and turned, and on the head close-up
+# with its albedo map (tests/bench/texturing_bench.cpp, texturing_head.cpp):
 # writes docs/benchmarks/texturing.md and bench-out/texturing/results.csv. Needs the test build
 # (scripts/run-tests.sh, or cmake --build build/release --target sss_bench_texturing).
 #

@@ -71,6 +71,22 @@ Reference make_plane_reference(const Scene& scene, const GpuScene& gpu) {
   return r;
 }
 
+std::vector<float> make_patch_reference(const Scene& scene, const GpuScene& gpu, int x, int y, int width, int height) {
+  if (!scene.profile.empty()) throw std::invalid_argument("make_patch_reference: " + scene.name + " has several materials");
+  const sss::math::ExactSurfaceConvolution cpu(exact_input(scene, gpu), sss::math::skin_profile_terms());
+  const std::size_t n = static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
+  std::vector<double> rgb(n * 3, 0.0);
+  cpu.convolve({x, y, width, height}, rgb.data());
+  std::vector<float> rgba = gpu.irradiance_half;
+  for (int py = y; py < y + height; ++py) {
+    for (int px = x; px < x + width; ++px) {
+      const std::size_t i = static_cast<std::size_t>(py) * static_cast<std::size_t>(scene.width) + static_cast<std::size_t>(px);
+      for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = static_cast<float>(rgb[i * 3 + c]);
+    }
+  }
+  return rgba;
+}
+
 bool on_grid(int x, int y, int stride) { return x % stride == stride / 2 && y % stride == stride / 2; }
 
 Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_pixels, int spot_checks, int stride) {

@@ -38,6 +38,12 @@ Reference make_reference(const Scene& scene, const GpuScene& gpu, long max_cpu_p
 // derive from the scene's projection and depth.
 Reference make_plane_reference(const Scene& scene, const GpuScene& gpu);
 
+// The CPU exact reference (double, d'Eon's skin; a scene of one material) at every pixel of the
+// rectangle x, y, width, height: RGBA like Reference::rgba, the input outside the rectangle. For
+// measures that need every pixel of a patch where the GL reference holds a grid (the texturing
+// bench's detail on the head).
+std::vector<float> make_patch_reference(const Scene& scene, const GpuScene& gpu, int x, int y, int width, int height);
+
 // The pixels where a reference holds values: the scene's mask, on the stride grid.
 bool on_grid(int x, int y, int stride);
 

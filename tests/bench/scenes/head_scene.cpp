@@ -100,6 +100,7 @@ in vec2 v_texcoord;
 in float v_distance;
 layout(location = 0) out vec4 o_irradiance;
 layout(location = 1) out vec4 o_distance;
+layout(location = 2) out vec4 o_albedo;  // Scene::albedo (the points pass has no target for it)
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal_map;
 uniform sampler2DShadow u_shadow_map;
@@ -174,6 +175,7 @@ void main() {
   vec3 albedo = texture(u_albedo, v_texcoord).rgb;
   o_irradiance = vec4(albedo * irradiance_in, 1.0);
   o_distance = vec4(v_distance, 0.0, 0.0, 0.0);
+  o_albedo = vec4(albedo, 1.0);
 }
 )";
 
@@ -601,13 +603,17 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     const GLuint distance_target = make_texture(objects, GL_R32F, width, height, GL_RED, GL_FLOAT, nullptr);
     const GLuint depth_target =
         make_texture(objects, GL_DEPTH_COMPONENT32F, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    // The Lambert shader also writes the albedo it multiplied by (Scene::albedo); the pre-integrated one does not.
+    const GLuint albedo_target =
+        view.preintegrated ? 0u : make_texture(objects, GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, nullptr);
     glBindTexture(GL_TEXTURE_2D, 0);
     make_framebuffer(objects);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_target, 0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, distance_target, 0);
+    if (albedo_target != 0u) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, albedo_target, 0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_target, 0);
-    const GLenum colour_buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, colour_buffers);
+    const GLenum colour_buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(albedo_target != 0u ? 3 : 2, colour_buffers);
     check_framebuffer("scene");
     glViewport(0, 0, width, height);
     const float backdrop[4] = {kBackdropIrradiance, kBackdropIrradiance, kBackdropIrradiance, 0.0f};
@@ -615,6 +621,8 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     const float backdrop_depth = window_depth(projection, view.backdrop_distance);
     glClearBufferfv(GL_COLOR, 0, backdrop);
     glClearBufferfv(GL_COLOR, 1, backdrop_distance);
+    const float no_albedo[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // the backdrop: nothing to divide by
+    if (albedo_target != 0u) glClearBufferfv(GL_COLOR, 2, no_albedo);
     glClearBufferfv(GL_DEPTH, 0, &backdrop_depth);
 
     glActiveTexture(GL_TEXTURE2);
@@ -724,6 +732,11 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, scene.distance.data());
     glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, scene.window_depth.data());
+    if (albedo_target != 0u) {
+      scene.albedo.resize(pixels * 4);
+      glReadBuffer(GL_COLOR_ATTACHMENT2);
+      glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, scene.albedo.data());
+    }
 
     // The points pass reads the material textures still bound on units 0 and 1 and the shadow map on 2.
     if (points != nullptr) {

@@ -23,6 +23,10 @@ struct Scene {
   std::vector<float> window_depth;  // the hardware depth of `distance` for `projection` (GL default
                                     // convention: (z_ndc + 1) / 2), as a DEPTH_COMPONENT32F would hold
   std::vector<uint8_t> mask;        // 1 where translucent (alpha > 0), else 0
+  // The albedo `irradiance` was multiplied by, RGBA linear (alpha 1), row 0 at the bottom: the
+  // texturing modes' albedo texture (sss_frame.albedo_texture). Only the head scenes that render with
+  // Lambert shading fill it (1 on the backdrop); empty for every other scene.
+  std::vector<float> albedo;
   std::array<float, 16> projection{};  // column-major GL projection matrix used to make the scene
   float world_units_per_mm = 0.001f;   // scene units are metres
   // The footprint sweep's planes (plane-*): the millimetres one pixel measures on the plane, which

@@ -1,0 +1,59 @@
+// sss_bench_texturing (texturing_bench.cpp, texturing_head.cpp): what the planes' rows and the
+// head's rows share.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu_scene.hpp"
+#include "metrics.hpp"
+#include "sss/sss.h"
+
+namespace sss_bench::texturing {
+
+struct Options {
+  std::string backend = "egl";
+  std::vector<double> footprints = {0.05, 0.1, 0.2, 0.5, 1.0};  // mm per pixel where the plane faces the camera
+  // The planes' turns (degrees, about screen x: the light and the albedo foreshortened along y).
+  std::vector<double> turns = {0.0, 60.0};
+  std::pair<int, int> head_size = {960, 540};  // the head close-up's frame; 0x0: no head rows
+  std::string out = "bench-out/texturing", doc = "docs/benchmarks/texturing.md";
+  std::string command_line;
+};
+
+struct MethodChoice {
+  std::string name;  // "separable" (the default) or "sum-of-gaussians"
+  bool sum_of_gaussians = false;
+};
+// The default and the sum of Gaussians (rank 6).
+std::vector<MethodChoice> method_choices();
+
+inline constexpr unsigned kModes[3] = {SSS_TEXTURING_PRE_SCATTER, SSS_TEXTURING_POST_SCATTER,
+                                       SSS_TEXTURING_PRE_AND_POST_SCATTER};
+const char* mode_name(unsigned mode);
+
+struct Row {
+  std::string scene;          // "plane" or "head-close"
+  double footprint_mm = 0.0;  // the plane's facing footprint; the head's median over its interior
+  double turn_deg = 0.0;      // the plane's turn (0 for the head)
+  std::string light, albedo, method, mode;
+  Miss miss;                  // against the mode's own answer
+  double untextured = 0.0;    // the same method's pooled miss on the light alone (pre-scatter)
+  double detail = 0.0;        // the output's power above 1 cycle/mm over the input's (NaN: none to measure)
+  double detail_exact = 0.0;  // the mode's exact answer's
+  double needed = 0.0;        // ‖input − answer‖ / ‖answer‖ on the interior: the change the mode asks for
+};
+
+// The library on `colour` (RGBA, uploaded as RGBA16F) with `albedo` (RGBA16F) in `mode` on the
+// fragment path with the default settings, into an RGBA32F output, read back. Throws
+// std::runtime_error with the library's message when it refuses the frame.
+std::vector<float> run_library(sss_context* ctx, const GpuScene& gpu, const MethodChoice& m, unsigned mode,
+                               const std::vector<float>& colour, const std::vector<float>& albedo);
+
+// The head close-up (Scene::albedo, its scan's albedo map) at o.head_size, each method in each mode
+// against that mode's answer over the visible surface (reference.hpp), on the interior apart from
+// silhouettes and depth edges, beside the untextured miss; appends its rows.
+void run_head(sss_context* ctx, const Options& o, double reach_mm, std::vector<Row>* rows);
+
+}  // namespace sss_bench::texturing
