@@ -19,9 +19,9 @@ void resolve_lighting(const FrameTargets &t) {
   if (t.samples == 0) return;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, t.lighting_framebuffer_ms);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.lighting_framebuffer);
-  for (GLenum i = 0; i < 2; ++i) {
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
-    const GLenum draw = GL_COLOR_ATTACHMENT0 + i;
+  for (const GLenum attachment : {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT3}) {
+    glReadBuffer(attachment);
+    const GLenum draw = attachment;
     glDrawBuffers(1, &draw);
     glBlitFramebuffer(0, 0, t.width, t.height, 0, 0, t.width, t.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
@@ -66,14 +66,18 @@ bool create_frame_targets(FrameTargets *t, GLsizei width, GLsizei height, int sa
     t->samples = samples;
     t->diffuse_ms = make_multisample(GL_RGBA16F, width, height, samples);
     t->specular_ms = make_multisample(GL_RGBA16F, width, height, samples);
+    t->albedo_ms = make_multisample(GL_RGBA16F, width, height, samples);
     t->depth_stencil_ms = make_multisample(GL_DEPTH24_STENCIL8, width, height, samples);
     glGenFramebuffers(1, &t->lighting_framebuffer_ms);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t->lighting_framebuffer_ms);
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, t->diffuse_ms, 0);
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D_MULTISAMPLE, t->specular_ms, 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D_MULTISAMPLE, t->albedo_ms, 0);
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D_MULTISAMPLE,
                            t->depth_stencil_ms, 0);
-    glDrawBuffers(2, buffers);
+    // The lighting shader's outputs keep their locations; the profile byte's (2) has no target here.
+    const GLenum ms_buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_COLOR_ATTACHMENT3};
+    glDrawBuffers(4, ms_buffers);
     ok = check_framebuffer("lighting (MSAA)") && ok;
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -85,8 +89,8 @@ void destroy_frame_targets(FrameTargets *t) {
   glDeleteFramebuffers(1, &t->output_framebuffer);
   if (t->samples > 0) {
     glDeleteFramebuffers(1, &t->lighting_framebuffer_ms);
-    const GLuint ms[3] = {t->diffuse_ms, t->specular_ms, t->depth_stencil_ms};
-    glDeleteTextures(3, ms);
+    const GLuint ms[4] = {t->diffuse_ms, t->specular_ms, t->albedo_ms, t->depth_stencil_ms};
+    glDeleteTextures(4, ms);
   }
   const GLuint textures[7] = {t->diffuse, t->specular, t->depth_stencil, t->after, t->output, t->profile, t->albedo};
   glDeleteTextures(7, textures);

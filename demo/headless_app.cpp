@@ -146,12 +146,11 @@ bool write_debug_views(Renderer *renderer, const Options &o, const Context &cont
 
 // The close-up's zoom in each texturing mode side by side (pre | post | pre-and-post, each labelled),
 // 3x around the block where pre- and post-scatter differ most, as close-zoom-texturing.png. Not
-// written where the modes cannot differ: the library off, MSAA (no albedo on the library's MSAA
-// path), pre-integrated shading.
+// written where the modes cannot differ: the library off, pre-integrated shading.
 bool write_texturing_zoom(Renderer *renderer, const Options &o, const Context &context, const SssControls &controls,
                           const CameraMatrices &m, FrameTargets *targets, const std::string &prefix,
                           const std::string &settings) {
-  if (!controls.enabled || targets->samples > 0) return true;
+  if (!controls.enabled) return true;
   Image images[3];
   for (int mode = SSS_TEXTURING_PRE_SCATTER; mode <= SSS_TEXTURING_PRE_AND_POST_SCATTER; ++mode) {
     SssControls with_mode = controls;

@@ -259,10 +259,8 @@ void run_lighting_pass(const LightingPass &pass, const FrameTargets &targets, co
   const GLuint background_profile[4] = {0, 0, 0, 0};  // profile 0, object 0 (alpha 0 leaves it alone anyway)
   // The albedo 1 on the background: the texturing modes leave its colour as it is.
   const GLfloat white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  if (targets.samples == 0) {
-    glClearBufferuiv(GL_COLOR, 2, background_profile);
-    glClearBufferfv(GL_COLOR, 3, white);
-  }
+  if (targets.samples == 0) glClearBufferuiv(GL_COLOR, 2, background_profile);  // MSAA: no profile target
+  glClearBufferfv(GL_COLOR, 3, white);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glClearDepth(1.0);

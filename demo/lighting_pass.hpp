@@ -6,7 +6,8 @@
 //   depth-stencil  stencil 1 where a translucent material (strength > 0) is the visible surface
 //   profile   R8UI: the material's profile | object << 4 (cleared to 0; not written with MSAA)
 //   albedo    RGBA16F: the linear albedo the diffuse light was multiplied by (the albedo map x base
-//             colour; cleared to 1), sss_frame.albedo_texture for the texturing modes (not with MSAA)
+//             colour; cleared to 1), sss_frame.albedo_texture for the texturing modes (multisampled
+//             with MSAA, as the library's MSAA path wants it)
 // Normal maps use the glTF tangent frame: bitangent = cross(N, T) * w, green scaled by the scene's
 // normal_green_sign.
 #pragma once

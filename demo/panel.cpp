@@ -220,10 +220,6 @@ void draw_panel(WindowState *s) {
                         : s->controls.texturing == SSS_TEXTURING_POST_SCATTER
                             ? "  the light alone blurred, the albedo's detail kept sharp"
                             : "  sqrt(albedo) blurred, sqrt(albedo) multiplied after");
-    if (effective_texturing(s->controls, s->controls.msaa_samples) != s->controls.texturing) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
-                         "with MSAA the frame runs pre-scatter (the demo writes no multisampled albedo)");
-    }
   }
   if (s->scene->profiles.size() > 1 || !s->scene->object_names.empty()) {
     if (ImGui::CollapsingHeader("Materials and objects", ImGuiTreeNodeFlags_DefaultOpen)) {

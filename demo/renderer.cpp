@@ -215,16 +215,16 @@ bool render_frame(Renderer *r, const CameraMatrices &camera, const SssControls &
     // per-pixel profiles (else every pixel is profile 0, as before them), single-sample only (the
     // library refuses a profile texture with MSAA colour).
     shape.profile_texture = uses_profiles(*r->scene) && targets->samples == 0 && r->sss.per_pixel;
-    // A texturing mode other than pre-scatter divides by the lighting pass's albedo (single-sample:
-    // with MSAA the settings ran pre-scatter, effective_texturing).
-    shape.albedo_texture = r->sss.settings.texturing != SSS_TEXTURING_PRE_SCATTER && targets->samples == 0;
+    // A texturing mode other than pre-scatter divides by the lighting pass's albedo (with MSAA its
+    // multisampled target: each sample is divided by its own albedo).
+    shape.albedo_texture = r->sss.settings.texturing != SSS_TEXTURING_PRE_SCATTER;
     // After new settings or a resize, sss_prepare builds and allocates what the frame will need,
     // so the frame itself does not (no hitch; a no-op when nothing changed).
     if (!prepare_sss(&r->sss, shape) ||
         !apply_sss(r->sss, frame_controls, camera.projection, targets->samples > 0 ? targets->diffuse_ms : targets->diffuse,
                    targets->samples > 0 ? targets->depth_stencil_ms : targets->depth_stencil, targets->after,
                    has_region ? region : nullptr, shape.profile_texture ? targets->profile : 0u,
-                   shape.albedo_texture ? targets->albedo : 0u)) {
+                   shape.albedo_texture ? (targets->samples > 0 ? targets->albedo_ms : targets->albedo) : 0u)) {
       return false;
     }
     result->sss_ran = true;

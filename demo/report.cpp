@@ -99,16 +99,12 @@ std::string format_settings(const sss_settings &s, const SssControls &c, float w
                   s.cbf_taps, static_cast<double>(s.cbf_r_max_mm), s.cbf_profile);
     result += text;
   }
-  // The texturing mode the library ran (s.texturing; the controls asked for c.texturing).
+  // The texturing mode the library ran (s.texturing, the controls' c.texturing).
   result +=
       std::string("; texturing ") + texturing_name(static_cast<int>(s.texturing)) +
       (s.texturing == SSS_TEXTURING_PRE_SCATTER    ? "-scatter (the colour blurred as it is, albedo with it)"
        : s.texturing == SSS_TEXTURING_POST_SCATTER ? "-scatter (the light alone blurred, the albedo's detail sharp)"
                                                    : "-scatter (sqrt(albedo) blurred, sqrt(albedo) after)");
-  if (static_cast<int>(s.texturing) != c.texturing) {
-    result += std::string(" (asked for ") + texturing_name(c.texturing) +
-              "-scatter: the demo's MSAA lighting writes no albedo yet)";
-  }
   if (c.translucency) {
     std::snprintf(text, sizeof text, "; translucency %.2f (integration/glsl/sss_transmittance.glsl)",
                   static_cast<double>(c.translucency_amount));

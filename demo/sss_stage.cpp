@@ -114,7 +114,7 @@ bool set_sss_controls(SssStage *stage, const SssControls &controls, float world_
   s.kernel = controls.kernel_family == SSS_KERNEL_SEPARABLE ? nullptr : &kernel;
   s.jitter = controls.jitter;
   s.path = static_cast<uint32_t>(controls.path);
-  s.texturing = static_cast<uint32_t>(effective_texturing(controls, controls.msaa_samples));
+  s.texturing = static_cast<uint32_t>(controls.texturing);
   // Unchanged: nothing to validate or rebuild (the scene's other profiles never change).
   // (The scene, so `materials` and `per_pixel`, is the same for the stage's whole life.)
   if (std::memcmp(&s, &stage->settings, sizeof s) == 0 && stage->profiles.size() == materials.size() + 1) return true;
@@ -171,10 +171,6 @@ bool prepare_sss(SssStage *stage, const SssFrameShape &shape) {
 const char *texturing_name(int texturing) {
   static const char *const kNames[] = {"pre", "post", "pre-and-post"};
   return texturing >= 0 && texturing <= SSS_TEXTURING_PRE_AND_POST_SCATTER ? kNames[texturing] : nullptr;
-}
-
-int effective_texturing(const SssControls &controls, int samples) {
-  return samples > 0 ? static_cast<int>(SSS_TEXTURING_PRE_SCATTER) : controls.texturing;
 }
 
 const char *debug_view_name(int view) {

@@ -65,8 +65,8 @@ struct SssControls {
   int debug_view = 0;
   // sss_settings.texturing (an sss_texturing, for every profile): what of the albedo is blurred with
   // the light. Pre-scatter blurs the lighting pass's colour as it is; post-scatter and pre-and-post
-  // hand the library the lighting pass's albedo target (sss_frame.albedo_texture), single-sample
-  // only (the demo's MSAA lighting writes no albedo yet: with --msaa the frame runs pre-scatter).
+  // hand the library the lighting pass's albedo target (sss_frame.albedo_texture; with --msaa its
+  // multisampled one).
   int texturing = SSS_TEXTURING_PRE_SCATTER;
 };
 
@@ -82,8 +82,6 @@ constexpr int kDefaultTexturing = SSS_TEXTURING_POST_SCATTER;
 // The texturing modes' names on the command line and in the panel: "pre", "post", "pre-and-post";
 // nullptr out of range.
 const char *texturing_name(int texturing);
-// The texturing the library runs with for frames of `samples`: the controls' one, pre-scatter with MSAA.
-int effective_texturing(const SssControls &controls, int samples);
 
 // The debug views' names on the command line and in the panel (SSS_DEBUG_VIEW_MASK .. _TILES):
 // "mask", "depth", "footprint", "taps", "profile", "tiles"; nullptr for 0 and out of range.

@@ -4,7 +4,8 @@
 # A bad value is refused with a message naming the option and the value; the close-up in each mode
 # (the usual image checks, the settings text naming the mode, the zoom of the three side by side);
 # post-scatter keeps more of the albedo's detail than pre-and-post, and that more than pre-scatter
-# (material_check detail).
+# (material_check detail); the same with --msaa 4, where the lighting pass's multisampled albedo goes
+# to the library's MSAA path (before it, an MSAA frame ran pre-scatter whatever the mode).
 set -euo pipefail
 demo=$1 image_check=$2 material_check=$3 out=$4 attribution=$5
 rm -rf "$out"
@@ -32,3 +33,11 @@ done
 grep -q "post (the light alone blurred, the albedo's detail kept sharp; the default" "$out/help.txt" ||
   { echo "FAIL: --help does not name post-scatter the default" >&2; exit 1; }
 "$material_check" detail "$out/pre" "$out/post" "$out/pre-and-post" close
+for mode in pre post pre-and-post; do
+  "$demo" --headless --size 640x360 --preset close --repeat 1 --heat-factor 8 --dump --texturing "$mode" --msaa 4 \
+    --out "$out/msaa-$mode"
+  "$image_check" headless "$out/msaa-$mode" "$attribution" close
+  grep -qF "texturing ${words[$mode]}" "$out/msaa-$mode/README.txt" ||
+    { echo "FAIL: with --msaa 4, README.txt's settings do not name texturing $mode" >&2; exit 1; }
+done
+"$material_check" detail "$out/msaa-pre" "$out/msaa-post" "$out/msaa-pre-and-post" close
