@@ -16,7 +16,7 @@ struct Options {
   std::string backend = "egl";
   std::vector<double> footprints = {0.05, 0.1, 0.2, 0.5, 1.0};  // mm per pixel where the plane faces the camera
   // The planes' turns (degrees, about screen x: the light and the albedo foreshortened along y).
-  std::vector<double> turns = {0.0, 60.0};
+  std::vector<double> turns = {0.0, 60.0, 75.0};
   std::pair<int, int> head_size = {960, 540};  // the head close-up's frame; 0x0: no head rows
   std::string out = "bench-out/texturing", doc = "docs/benchmarks/texturing.md";
   std::string command_line;
