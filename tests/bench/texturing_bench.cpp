@@ -17,15 +17,13 @@
 //     the exact answer's (texturing_detail.hpp: the plane's spectrum; the head's 1 mm high-pass).
 // Post-scatter's output keeps the albedo's detail (its answer has it all: the light is smooth at that
 // scale); pre-scatter's blurs it. The head's rows are texturing_head.cpp's. Writes results.csv and a
-// Markdown document (--doc); exits 1 when post-scatter under a uniform light keeps the albedo's detail
+// Markdown document (--doc; texturing_report.cpp); exits 1 when post-scatter under a uniform light keeps the albedo's detail
 // less closely than 2 % of its answer.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -132,7 +130,9 @@ constexpr double kDetailCutoffPerMm = 1.0;
 
 }  // namespace
 
-std::vector<MethodChoice> method_choices() { return {{"separable", false}, {"sum-of-gaussians", true}}; }
+std::vector<MethodChoice> method_choices() { return {{"separable", false, 17}, {"sum-of-gaussians", true, 17}}; }
+
+MethodChoice sum_of_gaussians_control() { return {"sum-of-gaussians-33", true, 33}; }
 
 const char* mode_name(unsigned mode) {
   return mode == SSS_TEXTURING_PRE_SCATTER ? "pre-scatter"
@@ -147,9 +147,11 @@ std::vector<float> run_library(sss_context* ctx, const GpuScene& gpu, const Meth
   s.world_units_per_mm = gpu.world_units_per_mm;
   s.path = SSS_PATH_FRAGMENT;
   s.texturing = mode;
+  s.taps = m.taps;
   if (m.sum_of_gaussians) {
     sss_test::kernel_of(s).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
     sss_test::kernel_of(s).rank = 6;
+    sss_test::kernel_of(s).taps = m.taps;  // a kernel desc carries its own tap count
   }
   GLuint textures[3] = {0, 0, 0};
   glGenTextures(3, textures);
@@ -231,7 +233,9 @@ void run_light(sss_context* ctx, const PlaneFrame& f, const char* light_name, co
     }
     const RgbImage input = RgbImage::from_rgba(colour.data(), side, side);
     const double input_detail = resolved ? detail_of(input) : 0.0;
-    for (const MethodChoice& method : method_choices()) {
+    std::vector<MethodChoice> methods = method_choices();
+    methods.push_back(sum_of_gaussians_control());
+    for (const MethodChoice& method : methods) {
       const RgbImage untextured_out =
           RgbImage::from_rgba(run_library(ctx, f.gpu, method, SSS_TEXTURING_PRE_SCATTER, light, ones).data(), side, side);
       const double untextured = miss_share(untextured_out, light_answer, light_input, interior.data()).pooled;
@@ -289,138 +293,6 @@ void run_plane(sss_context* ctx, double footprint_mm, double turn_deg, double re
     run_light(ctx, f, uniform ? "uniform" : "soft edges", light, rows);
   }
   destroy_scene(&f.gpu);
-}
-
-void write_csv(const std::string& path, const std::vector<Row>& rows) {
-  std::ofstream f(path);
-  f << "scene,footprint_mm,turn_deg,light,albedo,method,mode,miss,miss_r,miss_g,miss_b,untextured_miss,needed,"
-       "detail_kept,detail_exact\n";
-  for (const Row& r : rows) {
-    f << r.scene << ',' << r.footprint_mm << ',' << r.turn_deg << ',' << r.light << ',' << r.albedo << ',' << r.method
-      << ',' << r.mode << ',' << r.miss.pooled << ',' << r.miss.channel[0] << ',' << r.miss.channel[1] << ','
-      << r.miss.channel[2] << ',' << r.untextured << ',' << r.needed << ',' << r.detail << ',' << r.detail_exact << '\n';
-  }
-}
-
-// A miss is a share of the needed change: where a mode needs none (uniform light, post-scatter: the
-// answer is the input), it has no meaning, and the tables say so.
-bool needs_change(const Row& r) { return r.needed >= 1e-3; }
-bool has_untextured(const Row& r) { return r.light != "uniform" && needs_change(r); }
-
-std::string number(double v, const char* otherwise) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", v);
-  return std::isfinite(v) ? std::string(text) : std::string(otherwise);
-}
-
-// The issue's bounds per frame (scene, footprint, turn): the default's worst textured miss over its
-// untextured one per mode, the sum of Gaussians' worst textured miss, and post-scatter's detail kept
-// under the uniform light over the exact answer's, worst over the albedos.
-void write_bounds(std::ofstream& d, const std::vector<Row>& rows) {
-  d << "## The issue's bounds\n\n"
-       "Per plane frame, the worst over both lights and both albedos: the "
-       "default's textured miss minus its untextured miss in each mode (bound: 0.02), the sum of Gaussians' "
-       "largest textured miss in any mode (bound: 0.05), and post-scatter's detail kept over the exact answer's "
-       "under the uniform light (bound: within 2 % of 1; the run fails otherwise). A cell is — where nothing "
-       "was measurable (no change needed, or no detail above 1 cycle/mm).\n\n"
-       "| mm/px | turn | default pre | default post | default pre and post | sum of Gaussians | post detail / exact |\n"
-       "|---:|---:|---:|---:|---:|---:|---:|\n";
-  std::vector<const Row*> firsts;
-  for (const Row& r : rows) {
-    if (r.scene != "plane") continue;  // the bounds are the planes' (the head's rows have a table of their own)
-    bool seen = false;
-    for (const Row* f : firsts) seen = seen || (f->scene == r.scene && f->footprint_mm == r.footprint_mm && f->turn_deg == r.turn_deg);
-    if (!seen) firsts.push_back(&r);
-  }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const auto worst = [](double current, double v) { return std::isfinite(current) ? std::max(current, v) : v; };
-  char line[400];
-  for (const Row* f : firsts) {
-    double gap[3] = {nan, nan, nan}, sum_of_gaussians = nan, detail = nan;
-    for (const Row& r : rows) {
-      if (r.scene != f->scene || r.footprint_mm != f->footprint_mm || r.turn_deg != f->turn_deg) continue;
-      for (int m = 0; m < 3; ++m) {
-        if (r.method == "separable" && r.mode == mode_name(kModes[m]) && has_untextured(r)) {
-          gap[m] = worst(gap[m], r.miss.pooled - r.untextured);
-        }
-      }
-      if (r.method == "sum-of-gaussians" && needs_change(r)) sum_of_gaussians = worst(sum_of_gaussians, r.miss.pooled);
-      if (r.light == "uniform" && r.mode == mode_name(SSS_TEXTURING_POST_SCATTER) && std::isfinite(r.detail_exact)) {
-        const double off = r.detail / r.detail_exact;
-        if (!std::isfinite(detail) || std::fabs(off - 1.0) > std::fabs(detail - 1.0)) detail = off;
-      }
-    }
-    std::snprintf(line, sizeof line, "| %.3f | %g | %s | %s | %s | %s | %s |\n", f->footprint_mm,
-                  f->turn_deg, number(gap[0], "—").c_str(), number(gap[1], "—").c_str(), number(gap[2], "—").c_str(),
-                  number(sum_of_gaussians, "—").c_str(), number(detail, "—").c_str());
-    d << line;
-  }
-  d << "\n";
-}
-
-void write_rows(std::ofstream& d, const std::vector<Row>& rows, bool head) {
-  d << "| " << (head ? "median mm/px" : "mm/px") << " | turn | light | albedo | method | mode | miss | untextured | "
-    << "miss − untextured | detail kept | exact | kept / exact |\n"
-    << "|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|---:|\n";
-  char line[400];
-  for (const Row& r : rows) {
-    if ((r.scene != "plane") != head) continue;
-    const auto miss_text = [&](double miss) { return needs_change(r) ? number(miss, "—") : std::string("— (none needed)"); };
-    std::snprintf(line, sizeof line, "| %.3f | %g | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.footprint_mm,
-                  r.turn_deg, r.light.c_str(), r.albedo.c_str(), r.method.c_str(), r.mode.c_str(),
-                  miss_text(r.miss.pooled).c_str(), has_untextured(r) ? number(r.untextured, "—").c_str() : "—",
-                  has_untextured(r) ? number(r.miss.pooled - r.untextured, "—").c_str() : "—",
-                  number(r.detail, "— (no detail)").c_str(), number(r.detail_exact, "— (no detail)").c_str(),
-                  number(r.detail / r.detail_exact, "— (no detail)").c_str());
-    d << line;
-  }
-  d << "\n";
-}
-
-void write_document(const Options& o, const std::string& renderer, const std::vector<Row>& rows) {
-  std::filesystem::create_directories(std::filesystem::path(o.doc).parent_path().empty()
-                                          ? std::filesystem::path(".")
-                                          : std::filesystem::path(o.doc).parent_path());
-  std::ofstream d(o.doc);
-  const std::time_t t = std::time(nullptr);
-  char date[64];
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
-  d << "# Texturing modes on textured planes and on the head\n\n"
-    << "Generated by `sss_bench_texturing` (tests/bench/texturing_bench.cpp, texturing_head.cpp; "
-       "`scripts/run-texturing-bench.sh`) on "
-    << renderer << ", " << date << ": `" << o.command_line << "`.\n\n"
-    << "**Planes**: the turn sweep's orthographic plane, facing the camera or turned about screen x (17 taps, the "
-       "library's default settings on the fragment path; mm/px is the footprint where it faces the camera, so a "
-       "plane turned 60° measures twice that along y), its colour the light times an albedo at pore scale laid "
-       "out on the surface (a checker of 0.5 mm cells, or value noise of 0.2 mm cells, on skin-like base "
-       "colours). Each mode is scored against its own exact answer A_post ⊙ (R ∗ (colour / A_post)), R d'Eon's "
-       "skin convolved on the plane in closed form: **miss** (the interior's share of the needed change left "
-       "undone: 0 exact, 1 no better than the input), beside the same method on the light alone (**untextured**, "
-       "pre-scatter: the mode's own accuracy apart from the albedo). **Detail kept**: the image's power above 1 "
-       "cycle per surface millimetre (its spectrum over the interior, Hann-windowed: "
-       "tests/bench/texturing_detail.hpp) in the output over the input's, beside the exact answer's "
-       "(post-scatter's answer keeps nearly all of it; pre-scatter's blurs it).\n\n"
-    << "Under the **uniform** light the detail is the albedo's alone, and post-scatter's exact answer is the "
-       "input (kept / exact = 1 is the whole albedo kept); under the **soft edges** (the plane's own light, with "
-       "its own per-pixel albedo) the light adds detail of its own that every mode blurs. At 1 mm per pixel "
-       "facing the camera the pixels hold no frequency above 1 cycle per mm: no detail to measure.\n\n"
-    << "**Head**: the close-up with its scan's albedo map, lit as the benchmark lights it; each mode against A_post ⊙ (R ∗ "
-       "(colour / A_post)) over the visible surface rebuilt from depth (the benchmark's reference, "
-       "tests/bench/reference.hpp), on the interior apart from silhouettes and depth edges. A curved surface has "
-       "no one spectrum: its detail kept is the power of each pixel minus its mean over a box 1 mm wide at the "
-       "pixel's footprint (its view distance; the slope is not counted), which passes about what lies above 1 "
-       "cycle per mm. A scanned albedo already holds the skin's own scattering, so post-scatter's answer is the "
-       "right one for it; the other modes' rows say how far each is from its own answer. Head scan: \"Infinite, 3D "
-       "Head Scan\" by Lee Perry-Smith is licensed under a Creative Commons Attribution 3.0 Unported License. Based "
-       "on a work at www.triplegangers.com. Permissions beyond the scope of this license may be available at "
-       "http://www.ir-ltd.net/\n\n";
-  write_bounds(d, rows);
-  d << "## Planes\n\n";
-  write_rows(d, rows, false);
-  if (std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.scene != "plane"; })) {
-    d << "## Head\n\n";
-    write_rows(d, rows, true);
-  }
 }
 
 int run(const Options& o, sss_headless* headless) {

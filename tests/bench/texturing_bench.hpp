@@ -1,5 +1,5 @@
-// sss_bench_texturing (texturing_bench.cpp, texturing_head.cpp): what the planes' rows and the
-// head's rows share.
+// sss_bench_texturing (texturing_bench.cpp, texturing_head.cpp, texturing_report.cpp): what the
+// planes' rows, the head's rows and the report share.
 #pragma once
 
 #include <string>
@@ -23,11 +23,16 @@ struct Options {
 };
 
 struct MethodChoice {
-  std::string name;  // "separable" (the default) or "sum-of-gaussians"
+  std::string name;  // "separable" (the default), "sum-of-gaussians" or "sum-of-gaussians-33"
   bool sum_of_gaussians = false;
+  int taps = 17;     // sss_settings.taps
 };
-// The default and the sum of Gaussians (rank 6).
+// The default and the sum of Gaussians (rank 6), at 17 taps: the methods, on every scene.
 std::vector<MethodChoice> method_choices();
+// The sum of Gaussians at 33 taps, on the planes only: the control that says whether its misses
+// over the bound at 17 taps come from its taps (how sparsely they sample pixel-scale albedo) or
+// from the texturing modes.
+MethodChoice sum_of_gaussians_control();
 
 inline constexpr unsigned kModes[3] = {SSS_TEXTURING_PRE_SCATTER, SSS_TEXTURING_POST_SCATTER,
                                        SSS_TEXTURING_PRE_AND_POST_SCATTER};
@@ -55,5 +60,11 @@ std::vector<float> run_library(sss_context* ctx, const GpuScene& gpu, const Meth
 // against that mode's answer over the visible surface (reference.hpp), on the interior apart from
 // silhouettes and depth edges, beside the untextured miss; appends its rows.
 void run_head(sss_context* ctx, const Options& o, double reach_mm, std::vector<Row>* rows);
+
+// Every row as CSV (texturing_report.cpp).
+void write_csv(const std::string& path, const std::vector<Row>& rows);
+// The Markdown document at o.doc: how the rows were made (the renderer, the command line), the
+// issue's bounds per plane frame and what the run measured where one is not met, then every row.
+void write_document(const Options& o, const std::string& renderer, const std::vector<Row>& rows);
 
 }  // namespace sss_bench::texturing
