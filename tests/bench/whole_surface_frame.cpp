@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 #include <unordered_map>
@@ -180,24 +181,8 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
                                            const WholeSurfaceFrameSettings& settings) {
   const auto start = Clock::now();
   WholeSurfaceFrame frame;
-  frame.scene = detail::render_head_scene(name, settings.width, settings.height, view);
-  Scene& scene = frame.scene;
-  // What a filter is handed: the host's RGBA16F colour. The pixels' light is read from it, so the
-  // pixel-consistent answer's floor includes the colour's rounding (at most 2^-11 relative).
-  for (float& v : scene.irradiance) v = sss::math::round_to_half(v);
   detail::Mat4 projection{};
   detail::head_camera(view, settings.width, settings.height, &projection, &frame.view_matrix);
-
-  std::vector<Point3> receivers;
-  for (int y = settings.stride / 2; y < scene.height; y += settings.stride) {
-    for (int x = settings.stride / 2; x < scene.width; x += settings.stride) {
-      const std::size_t i = index_of(scene, x, y);
-      if (scene.mask[i] == 0) continue;
-      frame.pixels.push_back(i);
-      receivers.push_back(pixel_world_point(scene, frame.view_matrix, i));
-      frame.normals.push_back(pixel_normal(scene, frame.view_matrix, i));
-    }
-  }
 
   const detail::HeadAsset& asset = detail::head_asset();
   SurfaceMesh mesh;
@@ -207,26 +192,46 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
   mesh.index_count = asset.indices.size();
   WholeSurfaceSettings ws;
   ws.profile = sss::math::skin_profile_terms();
-  ws.world_units_per_mm = scene.world_units_per_mm;
   ws.spacing_per_sigma = settings.spacing_per_sigma;
-  WholeSurfaceReference reference(ws);
+  std::unique_ptr<WholeSurfaceReference> reference;
+  std::vector<Point3> receivers;
+  std::vector<SurfaceSampling> samplings;
 
-  // Every numerical term's samples, where they can reach a receiver; their light in one points pass.
-  std::vector<SurfaceSampling> samplings(reference.term_count());
-  std::vector<SurfacePoint> all_points;
-  for (std::size_t t = 0; t < reference.term_count(); ++t) {
-    if (reference.analytic(t)) continue;
-    const std::vector<std::uint8_t> keep = triangles_within(mesh, receivers, reference.term_cutoff(t));
-    samplings[t] = sample_surface(mesh, reference.term_spacing(t), &keep);
-    all_points.insert(all_points.end(), samplings[t].points.begin(), samplings[t].points.end());
-  }
+  // Chosen from the rendered frame, before its points pass: the receivers (the translucent pixels
+  // of the grid) and every numerical term's samples where they can reach one, lit in one pass.
+  const auto points_of = [&](const Scene& scene) {
+    for (int y = settings.stride / 2; y < scene.height; y += settings.stride) {
+      for (int x = settings.stride / 2; x < scene.width; x += settings.stride) {
+        const std::size_t i = index_of(scene, x, y);
+        if (scene.mask[i] == 0) continue;
+        frame.pixels.push_back(i);
+        receivers.push_back(pixel_world_point(scene, frame.view_matrix, i));
+        frame.normals.push_back(pixel_normal(scene, frame.view_matrix, i));
+      }
+    }
+    ws.world_units_per_mm = scene.world_units_per_mm;
+    reference = std::make_unique<WholeSurfaceReference>(ws);
+    samplings.assign(reference->term_count(), SurfaceSampling{});
+    std::vector<SurfacePoint> all_points;
+    for (std::size_t t = 0; t < reference->term_count(); ++t) {
+      if (reference->analytic(t)) continue;
+      const std::vector<std::uint8_t> keep = triangles_within(mesh, receivers, reference->term_cutoff(t));
+      samplings[t] = sample_surface(mesh, reference->term_spacing(t), &keep);
+      all_points.insert(all_points.end(), samplings[t].points.begin(), samplings[t].points.end());
+    }
+    return all_points;
+  };
   std::vector<std::array<float, 3>> light;
-  detail::render_head_scene(name, settings.width, settings.height, view, &all_points, &light);
+  frame.scene = detail::render_head_scene(name, settings.width, settings.height, view, points_of, &light);
+  Scene& scene = frame.scene;
+  // What a filter is handed: the host's RGBA16F colour. The pixels' light is read from it, so the
+  // pixel-consistent answer's floor includes the colour's rounding (at most 2^-11 relative).
+  for (float& v : scene.irradiance) v = sss::math::round_to_half(v);
   frame.render_seconds = seconds_since(start);
 
   std::size_t first = 0;
-  for (std::size_t t = 0; t < reference.term_count(); ++t) {
-    if (reference.analytic(t)) continue;
+  for (std::size_t t = 0; t < reference->term_count(); ++t) {
+    if (reference->analytic(t)) continue;
     TermSamples samples = term_samples(mesh, samplings[t]);
     const std::size_t n = samples.position.size();
     samples.light.exact.assign(light.begin() + static_cast<std::ptrdiff_t>(first),
@@ -242,7 +247,7 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
     }
     frame.samples += n;
     first += n;
-    reference.set_samples(t, std::move(samples));
+    reference->set_samples(t, std::move(samples));
   }
 
   const auto convolve = Clock::now();
@@ -253,7 +258,7 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
       Receiver r;
       r.position = receivers[i];
       for (std::size_t c = 0; c < 3; ++c) r.light[c] = scene.irradiance[frame.pixels[i] * 4 + c];
-      frame.values[i] = reference.at(r, frame.normals[i]);
+      frame.values[i] = reference->at(r, frame.normals[i]);
     }
   };
   std::thread helper(work);

@@ -506,10 +506,21 @@ void head_camera(const HeadView& view, int width, int height, Mat4* projection, 
   *view_matrix = look_at(eye, view.target, Vec3{0, 1, 0});
 }
 
+namespace {
+
+// The scene's mask: its translucent pixels (the shader's alpha, the scattering strength).
+void set_mask(Scene* scene) {
+  const std::size_t pixels = static_cast<std::size_t>(scene->width) * static_cast<std::size_t>(scene->height);
+  scene->mask.resize(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) scene->mask[i] = scene->irradiance[i * 4 + 3] > 0.0f ? 1 : 0;
+}
+
+}  // namespace
+
 Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view,
-                        const std::vector<SurfacePoint>* points, std::vector<std::array<float, 3>>* point_light) {
+                        const PointsOfScene& points_of, std::vector<std::array<float, 3>>* point_light) {
   const HeadAsset& asset = head_asset();  // may throw before any GL call
-  if (points != nullptr && (view.preintegrated || point_light == nullptr))
+  if (points_of != nullptr && (view.preintegrated || point_light == nullptr))
     throw std::invalid_argument("head scene " + name + ": the light at points needs a Lambert view and an output");
 
   Scene scene;
@@ -739,11 +750,13 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
     }
 
     // The points pass reads the material textures still bound on units 0 and 1 and the shadow map on 2.
-    if (points != nullptr) {
+    if (points_of != nullptr) {
+      set_mask(&scene);
+      const std::vector<SurfacePoint> points = points_of(scene);
       const GLuint points_program = build_program(objects, kPointsVertex, kSceneFragment, "points");
       glUseProgram(points_program);
       set_lighting(points_program);
-      light_at_points(objects, asset, points_program, *points, point_light);
+      light_at_points(objects, asset, points_program, points, point_light);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
   }
@@ -751,8 +764,7 @@ Scene render_head_scene(const std::string& name, int width, int height, const He
   if (error != GL_NO_ERROR)
     throw std::runtime_error("head scene " + name + ": GL error " + std::to_string(error));
 
-  scene.mask.resize(pixels);
-  for (size_t i = 0; i < pixels; ++i) scene.mask[i] = scene.irradiance[i * 4 + 3] > 0.0f ? 1 : 0;
+  set_mask(&scene);
   return scene;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,11 +49,17 @@ void head_camera(const HeadView& view, int width, int height, Mat4* projection, 
 // How the normal map's green channel is read (see head_scene.cpp): +1 as stored, -1 inverted.
 extern const float kNormalMapGreenSign;
 
-// The head scene of `view`. With `points` (not for a pre-integrated view): also the light the scene's
-// shader gives at those points of the scan's mesh (head_asset's triangles), hidden or not, RGB with
-// the albedo, into *point_light (one per point): the scene's fragment shader run once per point.
+// Which points of the scan's mesh to light, chosen from the rendered scene (its colour, distance and
+// mask read back): the whole-surface reference picks the surface within reach of the frame's
+// receivers.
+using PointsOfScene = std::function<std::vector<SurfacePoint>(const Scene&)>;
+
+// The head scene of `view`. With `points_of` (not for a pre-integrated view): also the light the
+// scene's shader gives at the points it returns (head_asset's triangles), hidden or not, RGB with the
+// albedo, into *point_light (one per point): the scene's fragment shader run once per point, in the
+// same GL state as the frame, so the head is rendered once.
 Scene render_head_scene(const std::string& name, int width, int height, const HeadView& view,
-                        const std::vector<SurfacePoint>* points = nullptr,
+                        const PointsOfScene& points_of = nullptr,
                         std::vector<std::array<float, 3>>* point_light = nullptr);
 
 // head-mixed (mixed_scene.cpp): the head of `view` with a marble bust and a wax candle beside it;
