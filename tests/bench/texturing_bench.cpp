@@ -130,9 +130,13 @@ constexpr double kDetailCutoffPerMm = 1.0;
 
 }  // namespace
 
-std::vector<MethodChoice> method_choices() { return {{"separable", false, 17}, {"sum-of-gaussians", true, 17}}; }
+std::vector<MethodChoice> method_choices() {
+  return {{"separable", false, 17, 0.0f}, {"sum-of-gaussians", true, 17, 0.0f}};
+}
 
-MethodChoice sum_of_gaussians_control() { return {"sum-of-gaussians-33", true, 33}; }
+std::vector<MethodChoice> sum_of_gaussians_controls() {
+  return {{kDenserControl, true, 33, 0.0f}, {kJitteredControl, true, 17, 0.5f}};
+}
 
 const char* mode_name(unsigned mode) {
   return mode == SSS_TEXTURING_PRE_SCATTER ? "pre-scatter"
@@ -148,6 +152,7 @@ std::vector<float> run_library(sss_context* ctx, const GpuScene& gpu, const Meth
   s.path = SSS_PATH_FRAGMENT;
   s.texturing = mode;
   s.taps = m.taps;
+  s.jitter = m.jitter;
   if (m.sum_of_gaussians) {
     sss_test::kernel_of(s).family = SSS_KERNEL_SUM_OF_GAUSSIANS;
     sss_test::kernel_of(s).rank = 6;
@@ -234,7 +239,7 @@ void run_light(sss_context* ctx, const PlaneFrame& f, const char* light_name, co
     const RgbImage input = RgbImage::from_rgba(colour.data(), side, side);
     const double input_detail = resolved ? detail_of(input) : 0.0;
     std::vector<MethodChoice> methods = method_choices();
-    methods.push_back(sum_of_gaussians_control());
+    for (const MethodChoice& control : sum_of_gaussians_controls()) methods.push_back(control);
     for (const MethodChoice& method : methods) {
       const RgbImage untextured_out =
           RgbImage::from_rgba(run_library(ctx, f.gpu, method, SSS_TEXTURING_PRE_SCATTER, light, ones).data(), side, side);

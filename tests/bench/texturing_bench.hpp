@@ -23,16 +23,21 @@ struct Options {
 };
 
 struct MethodChoice {
-  std::string name;  // "separable" (the default), "sum-of-gaussians" or "sum-of-gaussians-33"
+  std::string name;    // "separable" (the default), "sum-of-gaussians" or a control's (below)
   bool sum_of_gaussians = false;
-  int taps = 17;     // sss_settings.taps
+  int taps = 17;       // sss_settings.taps
+  float jitter = 0.0f; // sss_settings.jitter
 };
 // The default and the sum of Gaussians (rank 6), at 17 taps: the methods, on every scene.
 std::vector<MethodChoice> method_choices();
-// The sum of Gaussians at 33 taps, on the planes only: the control that says whether its misses
-// over the bound at 17 taps come from its taps (how sparsely they sample pixel-scale albedo) or
-// from the texturing modes.
-MethodChoice sum_of_gaussians_control();
+// The sum of Gaussians' controls, on the planes only, which say whether its misses over the bound
+// at 17 taps come from its taps (how sparsely they sample a pixel-scale albedo) rather than from
+// the texturing modes: at 33 taps ("sum-of-gaussians-33"), and at 17 with the outer half of its
+// taps jittered per pixel ("sum-of-gaussians-jitter-0.5": the settings' remedy for undersampling,
+// which trades the taps' coherent error for noise).
+std::vector<MethodChoice> sum_of_gaussians_controls();
+inline constexpr const char* kDenserControl = "sum-of-gaussians-33";
+inline constexpr const char* kJitteredControl = "sum-of-gaussians-jitter-0.5";
 
 inline constexpr unsigned kModes[3] = {SSS_TEXTURING_PRE_SCATTER, SSS_TEXTURING_POST_SCATTER,
                                        SSS_TEXTURING_PRE_AND_POST_SCATTER};
