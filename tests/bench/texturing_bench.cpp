@@ -15,10 +15,11 @@
 //     beside the same method on the same light without the albedo ("untextured": pre-scatter on E);
 //   - detail kept: the output's power above 1 cycle per surface millimetre over the input's, beside
 //     the exact answer's (texturing_detail.hpp: the plane's spectrum; the head's 1 mm high-pass).
-// Post-scatter's output keeps the albedo's detail (its answer has it all: the light is smooth at that
-// scale); pre-scatter's blurs it. The head's rows are texturing_head.cpp's. Writes results.csv and a
-// Markdown document (--doc; texturing_report.cpp); exits 1 when post-scatter under a uniform light keeps the albedo's detail
-// less closely than 2 % of its answer.
+// The planes also run the sum of Gaussians' two controls (33 taps; 17 with jitter), which say where
+// its misses come from. Post-scatter's output keeps the albedo's detail (its answer has it all: the
+// light is smooth at that scale); pre-scatter's blurs it. The head's rows are texturing_head.cpp's.
+// Writes results.csv and a Markdown document (--doc; texturing_report.cpp); exits 1 when
+// post-scatter under a uniform light keeps the albedo's detail less closely than 2 % of its answer.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
