@@ -56,6 +56,17 @@ const Row* worst_row(const std::vector<Row>& rows, const Row& frame, const char*
   return worst;
 }
 
+// The frame's row of `method` in `like`'s mode, light and albedo, or nullptr.
+const Row* find_row(const std::vector<Row>& rows, const Row& frame, const std::string& method, const Row& like,
+                    const std::string& light) {
+  for (const Row& r : rows) {
+    if (same_frame(r, frame) && r.method == method && r.mode == like.mode && r.light == light && r.albedo == like.albedo) {
+      return &r;
+    }
+  }
+  return nullptr;
+}
+
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The default's textured miss over its untextured one (the bound: 0.02).
 double default_gap(const Row& r) { return has_untextured(r) ? r.miss.pooled - r.untextured : kNaN; }
@@ -63,10 +74,9 @@ double default_gap(const Row& r) { return has_untextured(r) ? r.miss.pooled - r.
 double textured_miss(const Row& r) { return needs_change(r) ? r.miss.pooled : kNaN; }
 constexpr double kDefaultGapBound = 0.02, kSumOfGaussiansBound = 0.05;
 
-// Where a frame is over a bound, what the run measured of why: for the default, its pre-scatter
-// detail kept under the uniform light beside the exact answer's (a blur of the albedo that differs
-// from the profile's, which no texturing mode changes); for the sum of Gaussians, the same frame at
-// 33 taps (the control row).
+// Where a frame is over a bound, what the run measured of why: for the default, its detail kept in
+// the same mode under the uniform light beside the exact answer's (a blur of the albedo that differs
+// from the profile's); for the sum of Gaussians, its two controls' misses on the same row.
 void write_over_bounds(std::ofstream& d, const std::vector<Row>& rows) {
   std::string text;
   bool default_over = false, sum_of_gaussians_over = false;
@@ -74,13 +84,7 @@ void write_over_bounds(std::ofstream& d, const std::vector<Row>& rows) {
   for (const Row* f : plane_frames(rows)) {
     const Row* gap = worst_row(rows, *f, "separable", default_gap);
     if (gap != nullptr && default_gap(*gap) > kDefaultGapBound) {
-      const Row* uniform = nullptr;
-      for (const Row& r : rows) {
-        if (same_frame(r, *f) && r.method == "separable" && r.mode == gap->mode && r.light == "uniform" &&
-            r.albedo == gap->albedo) {
-          uniform = &r;
-        }
-      }
+      const Row* uniform = find_row(rows, *f, "separable", *gap, "uniform");
       std::snprintf(line, sizeof line,
                     "- %.3f mm/px, turned %g°, the default: %s over the %s albedo misses %.3f, %.3f over its "
                     "untextured %.3f. Under the uniform light the same albedo keeps %s of its detail in that mode "
@@ -94,13 +98,8 @@ void write_over_bounds(std::ofstream& d, const std::vector<Row>& rows) {
     const Row* sog = worst_row(rows, *f, "sum-of-gaussians", textured_miss);
     if (sog != nullptr && textured_miss(*sog) > kSumOfGaussiansBound) {
       const auto control_miss = [&](const char* control) {
-        for (const Row& r : rows) {
-          if (same_frame(r, *f) && r.method == control && r.mode == sog->mode && r.light == sog->light &&
-              r.albedo == sog->albedo) {
-            return number(r.miss.pooled, "—");
-          }
-        }
-        return std::string("—");
+        const Row* r = find_row(rows, *f, control, *sog, sog->light);
+        return r != nullptr ? number(r->miss.pooled, "—") : std::string("—");
       };
       std::snprintf(line, sizeof line,
                     "- %.3f mm/px, turned %g°, the sum of Gaussians: %s, %s light over the %s albedo, misses %.3f at "
@@ -137,8 +136,8 @@ void write_over_bounds(std::ofstream& d, const std::vector<Row>& rows) {
 }
 
 // The bounds per frame (footprint, turn): the default's worst textured miss over its
-// untextured one per mode, the sum of Gaussians' worst textured miss (and its 33-tap control's),
-// and post-scatter's detail kept under the uniform light over the exact answer's, worst over the
+// untextured one per mode, the sum of Gaussians' worst textured miss (and each control's), and
+// post-scatter's detail kept under the uniform light over the exact answer's, worst over the
 // albedos.
 void write_bounds(std::ofstream& d, const std::vector<Row>& rows) {
   d << "## The issue's bounds\n\n"
