@@ -34,7 +34,7 @@ TEST(CbfKernel, EachChannelsBroadMarginalIsTabulatedOnRMax) {
   const CbfKernel k = cbf_kernel(p, 13, 4.5);
   EXPECT_FLOAT_EQ(k.table.reach_mm, 4.5f);
   ASSERT_EQ(k.table.half_cdf.size(), static_cast<std::size_t>(kFootprintEntries));
-  EXPECT_EQ(k.spacing, footprint_spacing(6));  // 13 taps: 6 on either side
+  EXPECT_EQ(k.spacing, footprint_spacing(6, sss::math::FootprintLayout::cubic));  // 13 taps: 6 on either side
   for (std::size_t c = 0; c < 3; ++c) {
     EXPECT_FLOAT_EQ(k.table.half_cdf.back()[c], 0.5f);
     EXPECT_EQ(k.table.delta[c], 0.0f);  // the spike is the blend, not a delta in the table

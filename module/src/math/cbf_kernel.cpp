@@ -19,7 +19,7 @@ CbfKernel cbf_kernel(const SpikeGaussianProfile& profile, int taps, double r_max
     return out;
   };
   k.table = tabulate_footprint_table(half_cdf, half_total, Rgb3{}, r_max_mm);
-  k.spacing = footprint_spacing(taps / 2);
+  k.spacing = footprint_spacing(taps / 2, FootprintLayout::cubic);
   for (int c = 0; c < 3; ++c) {
     const auto s = static_cast<std::size_t>(c);
     k.spike_blend[s] = static_cast<float>(profile.spike[s]);

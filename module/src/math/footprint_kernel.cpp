@@ -132,11 +132,11 @@ std::array<float, 3> footprint_half_cdf_at_fraction(const FootprintTable& table,
   return {a[0] * (1.0f - f) + b[0] * f, a[1] * (1.0f - f) + b[1] * f, a[2] * (1.0f - f) + b[2] * f};
 }
 
-std::vector<float> footprint_spacing(int half_taps) {
+std::vector<float> footprint_spacing(int half_taps, FootprintLayout layout) {
   std::vector<float> s(idx(half_taps));
   for (int i = 1; i <= half_taps; ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(half_taps);
-    s[idx(i - 1)] = static_cast<float>(t * t * t);
+    s[idx(i - 1)] = static_cast<float>(layout == FootprintLayout::cubic ? t * t * t : t * t * std::sqrt(t));
   }
   return s;
 }

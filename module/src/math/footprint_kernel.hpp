@@ -78,13 +78,29 @@ float footprint_midpoint_scale(const FootprintTable& table, float step);
 // The most taps on each side of the centre (the filter's `samples` is 2·this + 1).
 inline constexpr int kMaxFootprintHalfTaps = 32;
 
-// Where the taps of the sparse layout go, as a share of the reach: (i / half)³ for i = 1..half
-// (the shaders' u_spacing[]). Cubic rather than eq. (1)'s quadratic: skin's kernels hold most of
-// their mass within a few tenths of a millimetre and their reach is set by a tail to 1e-4, so at a
-// 4K close-up (0.05 mm per pixel) the quadratic layout left one tap in the peak; on the footprint
-// sweep at 17 taps (the d'Eon marginal kernel) the largest interior miss at 0.05 mm per pixel fell
-// from 0.269 to 0.160 with the cube, and a fourth power gave no more (0.166).
-std::vector<float> footprint_spacing(int half_taps);
+// Where the taps of the sparse layout go, as a share of the reach (the shaders' u_spacing[]): tap i
+// of half at (i / half)^p, p by the shape of the pass's kernel.
+enum class FootprintLayout {
+  // p = 3, for a kernel with a peak on a long tail (eq. (1), the artist model, the SVD and
+  // pre-integrated terms, one term holding all of skin's profile). Cubic rather than eq. (1)'s
+  // quadratic: skin's kernels hold most of their mass within a few tenths of a millimetre and their
+  // reach is set by a tail to 1e-4, so at a 4K close-up (0.05 mm per pixel) the quadratic layout
+  // left one tap in the peak; on the footprint sweep at 17 taps (the d'Eon marginal kernel) the
+  // largest interior miss at 0.05 mm per pixel fell from 0.269 to 0.160 with the cube, and a fourth
+  // power gave no more (0.166).
+  cubic,
+  // p = 2.5, for terms that are one Gaussian each (the sum of Gaussians of two or more: its peak is
+  // its narrower terms'). The cube put half of a Gaussian's taps within half a standard deviation
+  // (its reach to 1e-4 is 3.9σ) and three in the 1-3σ where most of its mass lies, so the widest
+  // term read a 1 mm albedo checker in step: the texturing benchmark's largest interior miss on a
+  // plane at 17 taps was 0.091 with the cube (0.2 mm per pixel) and is 0.041 with this power
+  // (docs/benchmarks/texturing.md). Chosen on that benchmark and the quick footprint sweep
+  // (tests/bench/miss_baseline.csv): p = 2 did as well on the checker but was up to 0.005 worse
+  // than the cube on the sweep's planes near 0.05 mm per pixel (p = 2.5: at most 0.001), and p = 1
+  // and 1.5 were worse at 0.5 mm per pixel.
+  gaussian,
+};
+std::vector<float> footprint_spacing(int half_taps, FootprintLayout layout);
 
 struct FootprintTaps {
   int count = 0;  // taps on each side of the centre

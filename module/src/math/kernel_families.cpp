@@ -99,6 +99,10 @@ KernelPlan gaussian_sum_plan(const GaussianSumProfile& profile, int taps) {
     plan.terms.back().vertical_table = footprint_table_gaussians({{g.variance_mm2, {1.0, 1.0, 1.0}}});
   }
   plan.reach_mm = plan_reach_mm(plan);
+  // Every term is one Gaussian. A single term stays on the cube: it may be a per-pixel profile
+  // (sss_set_profiles takes one-term kernels), and the profiles of a frame share one layout
+  // (u_spacing), so each profile gives what it gives alone.
+  if (plan.terms.size() > 1) plan.layout = FootprintLayout::gaussian;
   return plan;
 }
 

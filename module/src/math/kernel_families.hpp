@@ -26,7 +26,9 @@ KernelPlan separable_plan(int samples, const std::array<float, 3>& strength, con
 // renormalised (the 0.27% outside ±3σ is folded back); the channel weights go on the horizontal pass.
 // Each channel's weights sum to 1 because the profile's do.
 // Each term's footprint table is its Gaussian in closed form (the channel weights on the horizontal
-// one), so the footprint-aware passes run the exact discrete sum of Gaussians on a plane.
+// one), so the footprint-aware passes run the exact discrete sum of Gaussians on a plane, with the
+// sparse taps of a Gaussian (FootprintLayout::gaussian) from two terms on (one term keeps the cube:
+// it may be a per-pixel profile, and a frame's profiles share one layout).
 KernelPlan gaussian_sum_plan(const GaussianSumProfile& profile, int taps);
 
 // Singular value decomposition of each channel's profile matrix (supplementary S.2), descending.

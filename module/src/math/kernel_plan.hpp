@@ -38,6 +38,9 @@ struct KernelPlan {
   std::vector<SeparableTerm> terms;
   std::array<float, 3> identity = {0.0f, 0.0f, 0.0f};  // share of the unfiltered input per channel
   float reach_mm = 0.0f;  // the largest |offset| of any tap: the follow-surface reach
+  // Where the footprint-aware passes put their sparse taps: set by the family, which knows the shape
+  // of its terms (footprint_kernel.hpp).
+  FootprintLayout layout = FootprintLayout::cubic;
 };
 
 }  // namespace sss::math

@@ -76,7 +76,8 @@ PassKernel make_pass_kernel(const KernelPlan& plan, float jitter) {
   std::size_t most = 0;
   for (const SeparableTerm& term : plan.terms) most = std::max({most, term.horizontal.size(), term.vertical.size()});
   const int half = std::min(static_cast<int>(most / 2), kMaxFootprintHalfTaps);
-  k.spacing = footprint_spacing(half);
+  k.layout = plan.layout;
+  k.spacing = footprint_spacing(half, plan.layout);
   k.jitter_from = first_jittered_tap(jitter, half);
   return k;
 }

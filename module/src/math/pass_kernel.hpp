@@ -35,7 +35,8 @@ struct PassKernel {
   float reach_mm = 0.0f;        // the largest |offset|: the follow-surface ramp's full blend
   // Every pass runs footprint-aware taps (footprint_kernel.hpp): each pixel's taps on whole pixels,
   // weighed by its footprint, at most `spacing.size()` on either side.
-  std::vector<float> spacing;   // footprint_spacing(samples / 2)
+  FootprintLayout layout = FootprintLayout::cubic;  // the plan's
+  std::vector<float> spacing;   // footprint_spacing(samples / 2, layout)
   // The first sparse tap that jitters within its cell (footprint_taps); kNoJitter: none.
   int jitter_from = kNoJitter;
   bool jittered() const { return jitter_from != kNoJitter; }
