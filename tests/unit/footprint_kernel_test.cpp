@@ -215,8 +215,8 @@ TEST(FootprintKernel, EachFamilySpreadsItsSparseTapsByTheShapeOfItsTerms) {
 // Why the sum of Gaussians takes its own layout: a term's sparse taps on albedo detail of period 1 mm
 // (the texturing benchmark's checker, here its fundamental, a cosine) from 2 to 20 pixels per mm
 // (0.5 to 0.05 mm per pixel) at every phase. The exact answer is the cosine times the Gaussian's
-// attenuation at that frequency, exp(-2π²σ²), under 1e-5 for the three widest terms: what the taps
-// return there is their aliasing of the detail. On the cube the widest terms read it almost in
+// attenuation at that frequency, exp(-2π²σ²), at most 1.4e-5 for the three widest terms: what the
+// taps return there is their aliasing of the detail. On the cube the widest terms read it almost in
 // step; the power 2.5 spreads their taps over the σ-wide cells where the mass lies.
 TEST(FootprintKernel, TheSumOfGaussiansWidestTermsDoNotReadFineDetailInStep) {
   sss::math::FilterSettings s;
