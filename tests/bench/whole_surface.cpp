@@ -26,6 +26,15 @@ std::uint64_t pack(std::int64_t x, std::int64_t y, std::int64_t z) {
 
 std::int64_t cell_index(double v, double cell) { return static_cast<std::int64_t>(std::floor(v / cell)); }
 
+// *values reordered so that element k is the old element order[k].
+template <typename T>
+void permute(std::vector<T>* values, const std::vector<std::uint32_t>& order) {
+  std::vector<T> sorted;
+  sorted.reserve(values->size());
+  for (const std::uint32_t i : order) sorted.push_back((*values)[i]);
+  values->swap(sorted);
+}
+
 }  // namespace
 
 Point3 SurfaceMesh::vertex(std::size_t triangle, int corner) const {
@@ -109,13 +118,13 @@ WholeSurfaceReference::WholeSurfaceReference(WholeSurfaceSettings settings) : se
   terms_.resize(settings_.profile.size());
 }
 
-double WholeSurfaceReference::term_spacing(std::size_t term) const {
-  return settings_.spacing_per_sigma * std::sqrt(settings_.profile.at(term).variance_mm2) * settings_.world_units_per_mm;
+double WholeSurfaceReference::term_width(std::size_t term) const {
+  return std::sqrt(settings_.profile.at(term).variance_mm2) * settings_.world_units_per_mm;
 }
 
-double WholeSurfaceReference::term_cutoff(std::size_t term) const {
-  return settings_.cutoff_sigmas * std::sqrt(settings_.profile.at(term).variance_mm2) * settings_.world_units_per_mm;
-}
+double WholeSurfaceReference::term_spacing(std::size_t term) const { return settings_.spacing_per_sigma * term_width(term); }
+
+double WholeSurfaceReference::term_cutoff(std::size_t term) const { return settings_.cutoff_sigmas * term_width(term); }
 
 void WholeSurfaceReference::set_samples(std::size_t term, TermSamples samples) {
   const std::size_t n = samples.position.size();
@@ -131,14 +140,6 @@ void WholeSurfaceReference::set_samples(std::size_t term, TermSamples samples) {
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return key[x] < key[y]; });
-  TermSamples& s = b.samples;
-  s = TermSamples{};
-  s.position.reserve(n);
-  s.area.reserve(n);
-  s.normal.reserve(n);
-  s.light.exact.reserve(n);
-  s.light.pixels.reserve(n);
-  s.light.visible.reserve(n);
   b.keys.clear();
   b.begin.clear();
   for (std::size_t k = 0; k < n; ++k) {
@@ -147,14 +148,16 @@ void WholeSurfaceReference::set_samples(std::size_t term, TermSamples samples) {
       b.keys.push_back(key[i]);
       b.begin.push_back(static_cast<std::uint32_t>(k));
     }
-    s.position.push_back(samples.position[i]);
-    s.area.push_back(samples.area[i]);
-    s.normal.push_back(samples.normal[i]);
-    s.light.exact.push_back(samples.light.exact[i]);
-    s.light.pixels.push_back(samples.light.pixels[i]);
-    s.light.visible.push_back(samples.light.visible[i]);
   }
   b.begin.push_back(static_cast<std::uint32_t>(n));
+  // One array at a time, so that a term of tens of millions of samples is never held twice.
+  permute(&samples.position, order);
+  permute(&samples.area, order);
+  permute(&samples.normal, order);
+  permute(&samples.light.exact, order);
+  permute(&samples.light.pixels, order);
+  permute(&samples.light.visible, order);
+  b.samples = std::move(samples);
   b.ready = true;
 }
 

@@ -4,13 +4,23 @@
 // diffusion profile normalised over a plane). CPU only, no GL: the light at the samples comes from
 // the caller (tests/bench/scenes/head_surface.hpp evaluates the head's with its own shader).
 //
-// How it integrates. Each profile term wider than the pixel-scale ones is summed over its own
+// How it integrates. Each profile term but the narrowest `analytic_terms` is summed over its own
 // sampling of the surface: every triangle split into n² equal sub-triangles (n = ceil(longest edge
 // / spacing)), one sample at each sub-triangle's centroid, weighted by its area, with the spacing
 // `spacing_per_sigma` of the term's width, and samples beyond `cutoff_sigmas` widths ignored. The
-// narrowest `analytic_terms` terms (skin: variances 0.0064 and 0.0484 mm², widths 0.08 and 0.22 mm,
-// below a 1080p close-up's pixel) are integrated analytically on the assumption that the light is
-// flat within their reach: they add their weight times the receiver's own light.
+// narrowest `analytic_terms` terms (skin: the one of variance 0.0064 mm², 0.08 mm wide, a fifth of a
+// 960x540 close-up's pixel and two fifths of a 1080p one's) are integrated analytically on the
+// assumption that the light is flat within their reach: they add their weight times the receiver's
+// own light. Over light with no detail finer than a pixel that is right to within the term's
+// variance (0.04 pixel² at the 960x540 close-up, 0.17 at 1080p) times half the light's Laplacian
+// and its weight (red 0.23), and sampling it over the whole mesh would take seven times the samples
+// of the next term (tens of gigabytes).
+//
+// Until issue 49's second look the two narrowest terms took flat light. The second (0.22 mm) is 0.6
+// of a 960x540 close-up's pixel and 1.1 of a 1080p one's, so "flat" charged every filter, which
+// rightly spreads such a term over the neighbouring pixels, with an error the reference made: blue's
+// miss, whose profile lies almost all in those two terms, came out ten times its needed change and
+// more. It is a sampled term now.
 //
 // What the convention gets wrong: it measures distance through the air, so across a slit or a thin
 // part (lips, eyelids, the ear's folds, a few millimetres apart) light passes between surfaces that
@@ -61,7 +71,7 @@ SurfaceSampling sample_surface(const SurfaceMesh& mesh, double spacing, const st
 struct WholeSurfaceSettings {
   sss::math::GaussianProfile profile;  // each term 2D-normalised over a plane, variances in mm²
   double world_units_per_mm = 0.001;
-  int analytic_terms = 2;              // the narrowest terms, taken as flat light (above)
+  int analytic_terms = 1;              // the narrowest terms, taken as flat light (above)
   double spacing_per_sigma = 0.4;      // sample spacing of a term, in its standard deviations
   double cutoff_sigmas = 4.5;          // a term ignores samples beyond this many deviations
 };
@@ -116,6 +126,7 @@ class WholeSurfaceReference {
 
   std::size_t term_count() const { return settings_.profile.size(); }
   bool analytic(std::size_t term) const { return term < static_cast<std::size_t>(settings_.analytic_terms); }
+  double term_width(std::size_t term) const;    // its standard deviation, world units
   double term_spacing(std::size_t term) const;  // world units
   double term_cutoff(std::size_t term) const;   // world units
 

@@ -11,6 +11,7 @@
 
 #include "math/exact_reference.hpp"
 #include "math/half_float.hpp"
+#include "pixel_light.hpp"
 #include "scenes/head_asset.hpp"
 
 namespace sss_bench {
@@ -23,13 +24,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-
-// World to view of a look_at matrix (rotation and translation, column-major).
-Point3 to_view(const detail::Mat4& m, const Point3& p) {
-  return {m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12], m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13],
-          m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]};
-}
-
 // View to world: the rotation's transpose after removing the translation.
 Point3 to_world(const detail::Mat4& m, const Point3& v) {
   const Point3 q = {v[0] - m[12], v[1] - m[13], v[2] - m[14]};
@@ -39,68 +33,6 @@ Point3 to_world(const detail::Mat4& m, const Point3& v) {
 
 std::size_t index_of(const Scene& s, int x, int y) {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
-}
-
-// The one-sided depth change per pixel along an axis that is smaller (a slope that does not
-// straddle a silhouette or step); 0 where no translucent neighbour exists.
-double smaller_step(const Scene& s, int x, int y, int dx, int dy) {
-  const double d = s.distance[index_of(s, x, y)];
-  double best = -1.0;
-  for (int sign : {-1, 1}) {
-    const int nx = x + sign * dx, ny = y + sign * dy;
-    if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[index_of(s, nx, ny)] == 0) continue;
-    const double step = std::fabs(s.distance[index_of(s, nx, ny)] - d);
-    best = best < 0.0 ? step : std::min(best, step);
-  }
-  return best < 0.0 ? 0.0 : best;
-}
-
-// How far behind the frame's depth at a sample's nearest pixel a sample may lie and still count as
-// what that pixel shows: a quarter millimetre, plus one pixel's depth change on each axis (the
-// sample sits up to half a pixel from the pixel's centre along each).
-double visibility_tolerance(const Scene& s, int x, int y) {
-  return 0.25 * s.world_units_per_mm + smaller_step(s, x, y, 1, 0) + smaller_step(s, x, y, 0, 1);
-}
-
-// The light the frame's pixels give at a sample the frame sees: bilinear between the four pixel
-// centres around its projection, over those that are translucent and at its depth (within the
-// tolerance), else its nearest pixel's.
-struct PixelLight {
-  bool visible = false;
-  std::array<float, 3> light{};
-};
-
-PixelLight light_from_pixels(const Scene& s, const detail::Mat4& view, const Point3& world) {
-  PixelLight out;
-  const Point3 v = to_view(view, world);
-  const double distance = -v[2];
-  if (!(distance > 0.0)) return out;
-  const double fx = (s.projection[0] * v[0] / distance + 1.0) * 0.5 * s.width - 0.5;
-  const double fy = (s.projection[5] * v[1] / distance + 1.0) * 0.5 * s.height - 0.5;
-  const int nx = static_cast<int>(std::lround(fx)), ny = static_cast<int>(std::lround(fy));
-  if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height) return out;
-  const std::size_t nearest = index_of(s, nx, ny);
-  if (s.mask[nearest] == 0) return out;
-  const double tolerance = visibility_tolerance(s, nx, ny);
-  if (distance > s.distance[nearest] + tolerance) return out;
-  out.visible = true;
-  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
-  const double tx = fx - x0, ty = fy - y0;
-  double weight = 0.0;
-  std::array<double, 3> sum{};
-  for (int k = 0; k < 4; ++k) {
-    const int x = x0 + (k & 1), y = y0 + (k >> 1);
-    if (x < 0 || y < 0 || x >= s.width || y >= s.height) continue;
-    const std::size_t i = index_of(s, x, y);
-    if (s.mask[i] == 0 || std::fabs(s.distance[i] - distance) > tolerance) continue;
-    const double w = ((k & 1) ? tx : 1.0 - tx) * ((k >> 1) ? ty : 1.0 - ty);
-    for (std::size_t c = 0; c < 3; ++c) sum[c] += w * s.irradiance[i * 4 + c];
-    weight += w;
-  }
-  for (std::size_t c = 0; c < 3; ++c) {
-    out.light[c] = weight > 0.0 ? static_cast<float>(sum[c] / weight) : s.irradiance[nearest * 4 + c];
-  }
-  return out;
 }
 
 // Per triangle, whether any receiver lies within `reach` of it (its centroid's distance less its
@@ -193,6 +125,7 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
   WholeSurfaceSettings ws;
   ws.profile = sss::math::skin_profile_terms();
   ws.spacing_per_sigma = settings.spacing_per_sigma;
+  ws.analytic_terms = settings.analytic_terms;
   std::unique_ptr<WholeSurfaceReference> reference;
   std::vector<Point3> receivers;
   std::vector<SurfaceSampling> samplings;
@@ -233,6 +166,7 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
   for (std::size_t t = 0; t < reference->term_count(); ++t) {
     if (reference->analytic(t)) continue;
     TermSamples samples = term_samples(mesh, samplings[t]);
+    samplings[t] = SurfaceSampling{};  // its positions are in `samples` now: free them before the next term
     const std::size_t n = samples.position.size();
     samples.light.exact.assign(light.begin() + static_cast<std::ptrdiff_t>(first),
                                light.begin() + static_cast<std::ptrdiff_t>(first + n));

@@ -19,6 +19,7 @@ struct WholeSurfaceFrameSettings {
   int width = 960, height = 540;
   int stride = 2;                  // receivers: the translucent pixels of a 1-in-stride² grid
   double spacing_per_sigma = 0.4;  // WholeSurfaceSettings
+  int analytic_terms = 1;          // WholeSurfaceSettings
 };
 
 struct WholeSurfaceFrame {

@@ -1,11 +1,13 @@
 #include "whole_surface_report.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 
+#include "math/exact_reference.hpp"
 #include "scenes/scenes.hpp"
 
 namespace sss_bench {
@@ -80,6 +82,24 @@ void write_pictures(std::ofstream& doc, const WholeSurfaceDocument& d, const Who
   }
 }
 
+// How the reference integrates each term, for the document's first paragraph.
+std::string term_integration(int analytic_terms) {
+  const sss::math::GaussianProfile skin = sss::math::skin_profile_terms();
+  std::string widths;
+  for (int t = 0; t < analytic_terms; ++t) {
+    widths += (t == 0 ? "" : " and ") + fixed(std::sqrt(skin[static_cast<std::size_t>(t)].variance_mm2), 2);
+  }
+  std::string text = "Each term is summed over its own sampling of the mesh (sub-triangle centroids 0.4 of the term's "
+                     "width apart, cut off at 4.5 widths)";
+  if (analytic_terms == 0) return text + ".";
+  if (analytic_terms == 1) {
+    return text + ", but for the narrowest (" + widths + " mm wide), which takes the receiver's light as flat: a "
+           "fraction of a pixel, where light with no detail finer than a pixel is flat.";
+  }
+  return text + ", but for the narrowest " + std::to_string(analytic_terms) + " (" + widths + " mm wide), which take "
+         "the receiver's light as flat (as the study's first version did; `--analytic-terms 1` samples the second).";
+}
+
 }  // namespace
 
 std::string file_slug(const std::string& s) {
@@ -106,9 +126,7 @@ void write_whole_surface_document(const WholeSurfaceDocument& d, const std::vect
       << "the methods run on the CPU model of the passes, which the GL matches in CI):\n\n    " << d.command_line << "\n\n"
       << "**The reference** (tests/bench/whole_surface.hpp): d'Eon's six Gaussians at 3D distance over every "
          "triangle of the head scan, the surface the camera cannot see included (Jensen and Buhler's "
-         "point-based convention). Each of the four wider terms is summed over its own sampling of the "
-         "mesh (sub-triangle centroids 0.4 of the term's width apart, cut off at 4.5 widths); the two "
-         "narrowest (0.08 and 0.22 mm wide, under a pixel) take the receiver's light as flat. The light at "
+         "point-based convention). " << term_integration(d.analytic_terms) << " The light at "
          "each sample is the scene's own fragment shader run at that point of the mesh (a points pass). "
          "A receiver is the surface point under a pixel's centre, on a 1-in-" << d.stride << "² grid of the "
       << d.width << "x" << d.height << " frame. Validated on an irregular plane mesh "
@@ -119,7 +137,8 @@ void write_whole_surface_document(const WholeSurfaceDocument& d, const std::vect
          "parts (lips, eyelids, the ear's folds) that real skin carries it around; the *thin* region is "
          "where such surface is within reach.\n\n"
          "**The answers**: *pixel-consistent* takes the light of every sample the frame sees from the "
-         "frame's pixels (bilinear between the pixel centres at its depth), so detail finer than a pixel is "
+         "frame's pixels (Catmull-Rom between the pixel centres at its depth, bilinear where one of its sixteen "
+         "pixels is off that surface: unlike bilinear it keeps each term's width), so detail finer than a pixel is "
          "not charged to a method: the methods are scored against it. Its rows beside the methods:\n\n"
          "- *the input's floor*: the answer with the exact light at every sample, scored against the "
          "pixel-consistent one: what the pixels cannot hold;\n"
@@ -127,11 +146,13 @@ void write_whole_surface_document(const WholeSurfaceDocument& d, const std::vect
          "against the pixel-consistent answer: the light from surface the camera cannot see, which no "
          "screen-space filter is handed.\n\n"
          "Cells: `miss` (docs/benchmark.md: the share of the change scattering makes that a result leaves "
-         "undone; 0 exact, 1 doing nothing), pooled **in bold**, then red / green / blue. Blue's own figure "
-         "(green's less so) measures a convention more than a method: almost all of blue's profile lies in the "
-         "two terms narrower than a pixel, which the reference takes as flat light (they change nothing at a "
-         "pixel) while every filter of whole-pixel taps spreads their share of the light over the neighbouring "
-         "pixels' cells, so blue's needed change is tiny and each method's blue error many times it. Regions: "
+         "undone; 0 exact, 1 doing nothing), pooled **in bold**, then red / green / blue. Almost all of blue's "
+         "profile lies in the two narrowest terms, so its needed change is small and its figure the first to "
+         "show a convention: until the study's second version those two took the receiver's light as flat, "
+         "which is wrong for a term that spans most of a pixel: it charged every filter, which rightly "
+         "spreads a term of 0.22 mm over the neighbouring pixels, with an error the reference made "
+         "(blue's miss came out ten times its needed change and more; `--analytic-terms 2` measures it so again). "
+         "Regions: "
          "*interior*, *silhouette* (within the profile's reach of the outline), *depth edge* (within reach "
          "of a step between translucent pixels: nose over cheek, eyelids, lips), *thin* (more than 1 % of "
          "the mass from surface facing away: ears, nostrils), *border* (within reach of the frame's edge).\n\n"

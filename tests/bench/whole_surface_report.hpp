@@ -41,6 +41,7 @@ struct WholeSurfaceShot {
 struct WholeSurfaceDocument {
   std::string path, pictures, command_line, renderer;
   int width = 0, height = 0, stride = 1;
+  int analytic_terms = 1;  // WholeSurfaceSettings: how many of the narrowest terms the tangent plane gives
   double seconds = 0;
   std::string checks;  // --check's findings, Markdown lines; empty without --check
 };
