@@ -11,10 +11,10 @@
 // narrowest `analytic_terms` terms (skin: the one of variance 0.0064 mm², 0.08 mm wide, a fifth of a
 // 960x540 close-up's pixel and two fifths of a 1080p one's) are integrated analytically on the
 // assumption that the light is flat within their reach: they add their weight times the receiver's
-// own light. Over light with no detail finer than a pixel that is right to within the term's
-// variance (0.04 pixel² at the 960x540 close-up, 0.17 at 1080p) times half the light's Laplacian
-// and its weight (red 0.23), and sampling it over the whole mesh would take seven times the samples
-// of the next term (tens of gigabytes).
+// own light. Over light with no detail finer than a pixel the error of that is the term's weight
+// (red 0.23) times its variance (0.04 pixel² at the 960x540 close-up, 0.17 at 1080p) times half the
+// light's Laplacian; sampling it over the whole mesh instead would take seven times the samples of
+// the next term (tens of gigabytes).
 //
 // Until issue 49's second look the two narrowest terms took flat light. The second (0.22 mm) is 0.6
 // of a 960x540 close-up's pixel and 1.1 of a 1080p one's, so "flat" charged every filter, which
