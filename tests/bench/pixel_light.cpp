@@ -7,19 +7,21 @@ namespace sss_bench {
 
 namespace {
 
-std::size_t index_of(const Scene& s, int x, int y) {
-  return static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
+// World to view of a look_at matrix (rotation and translation, column-major).
+Point3 to_view(const detail::Mat4& m, const Point3& p) {
+  return {m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12], m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13],
+          m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]};
 }
 
 // The one-sided depth change per pixel along an axis that is smaller (a slope that does not
 // straddle a silhouette or step); 0 where no translucent neighbour exists.
 double smaller_step(const Scene& s, int x, int y, int dx, int dy) {
-  const double d = s.distance[index_of(s, x, y)];
+  const double d = s.distance[pixel_index(s, x, y)];
   double best = -1.0;
   for (int sign : {-1, 1}) {
     const int nx = x + sign * dx, ny = y + sign * dy;
-    if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[index_of(s, nx, ny)] == 0) continue;
-    const double step = std::fabs(s.distance[index_of(s, nx, ny)] - d);
+    if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[pixel_index(s, nx, ny)] == 0) continue;
+    const double step = std::fabs(s.distance[pixel_index(s, nx, ny)] - d);
     best = best < 0.0 ? step : std::min(best, step);
   }
   return best < 0.0 ? 0.0 : best;
@@ -49,7 +51,7 @@ bool catmull_rom_light(const Scene& s, int x0, int y0, double tx, double ty, dou
   std::array<double, 3> sum{};
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
-      const std::size_t p = index_of(s, x0 - 1 + i, y0 - 1 + j);
+      const std::size_t p = pixel_index(s, x0 - 1 + i, y0 - 1 + j);
       if (s.mask[p] == 0 || std::fabs(s.distance[p] - distance) > tolerance) return false;
       const double w = wx[static_cast<std::size_t>(i)] * wy[static_cast<std::size_t>(j)];
       for (std::size_t c = 0; c < 3; ++c) sum[c] += w * s.irradiance[p * 4 + c];
@@ -61,12 +63,6 @@ bool catmull_rom_light(const Scene& s, int x0, int y0, double tx, double ty, dou
 
 }  // namespace
 
-// World to view of a look_at matrix (rotation and translation, column-major).
-Point3 to_view(const detail::Mat4& m, const Point3& p) {
-  return {m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12], m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13],
-          m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]};
-}
-
 PixelLight light_from_pixels(const Scene& s, const detail::Mat4& view, const Point3& world) {
   PixelLight out;
   const Point3 v = to_view(view, world);
@@ -76,7 +72,7 @@ PixelLight light_from_pixels(const Scene& s, const detail::Mat4& view, const Poi
   const double fy = (s.projection[5] * v[1] / distance + 1.0) * 0.5 * s.height - 0.5;
   const int nx = static_cast<int>(std::lround(fx)), ny = static_cast<int>(std::lround(fy));
   if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height) return out;
-  const std::size_t nearest = index_of(s, nx, ny);
+  const std::size_t nearest = pixel_index(s, nx, ny);
   if (s.mask[nearest] == 0) return out;
   const double tolerance = visibility_tolerance(s, nx, ny);
   if (distance > s.distance[nearest] + tolerance) return out;
@@ -89,7 +85,7 @@ PixelLight light_from_pixels(const Scene& s, const detail::Mat4& view, const Poi
   for (int k = 0; k < 4; ++k) {
     const int x = x0 + (k & 1), y = y0 + (k >> 1);
     if (x < 0 || y < 0 || x >= s.width || y >= s.height) continue;
-    const std::size_t i = index_of(s, x, y);
+    const std::size_t i = pixel_index(s, x, y);
     if (s.mask[i] == 0 || std::fabs(s.distance[i] - distance) > tolerance) continue;
     const double w = ((k & 1) ? tx : 1.0 - tx) * ((k >> 1) ? ty : 1.0 - ty);
     for (std::size_t c = 0; c < 3; ++c) sum[c] += w * s.irradiance[i * 4 + c];

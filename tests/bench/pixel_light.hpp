@@ -30,7 +30,9 @@ struct PixelLight {
 };
 PixelLight light_from_pixels(const Scene& scene, const detail::Mat4& view_matrix, const Point3& world);
 
-// World to view of a look_at matrix (rotation and translation, column-major).
-Point3 to_view(const detail::Mat4& m, const Point3& p);
+// The index of pixel (x, y) in a scene's per-pixel arrays (row 0 at the bottom).
+inline std::size_t pixel_index(const Scene& s, int x, int y) {
+  return static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
+}
 
 }  // namespace sss_bench

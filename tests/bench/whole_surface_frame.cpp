@@ -31,10 +31,6 @@ Point3 to_world(const detail::Mat4& m, const Point3& v) {
           m[8] * q[0] + m[9] * q[1] + m[10] * q[2]};
 }
 
-std::size_t index_of(const Scene& s, int x, int y) {
-  return static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(x);
-}
-
 // Per triangle, whether any receiver lies within `reach` of it (its centroid's distance less its
 // circumradius): the triangles a term's samples must cover.
 std::vector<std::uint8_t> triangles_within(const SurfaceMesh& mesh, const std::vector<Point3>& receivers, double reach) {
@@ -80,9 +76,9 @@ Point3 pixel_normal(const Scene& s, const detail::Mat4& view, std::size_t pixel)
     double best = -1.0;
     for (int sign : {-1, 1}) {
       const int nx = x + sign * dx, ny = y + sign * dy;
-      if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[index_of(s, nx, ny)] == 0) continue;
-      const Point3 d = point_sub(pixel_world_point(s, view, index_of(s, nx, ny)), centre);
-      const double step = std::fabs(s.distance[index_of(s, nx, ny)] - s.distance[pixel]);
+      if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height || s.mask[pixel_index(s, nx, ny)] == 0) continue;
+      const Point3 d = point_sub(pixel_world_point(s, view, pixel_index(s, nx, ny)), centre);
+      const double step = std::fabs(s.distance[pixel_index(s, nx, ny)] - s.distance[pixel]);
       if (best < 0.0 || step < best) {
         best = step;
         axis[a] = {d[0] * sign, d[1] * sign, d[2] * sign};
@@ -135,7 +131,7 @@ WholeSurfaceFrame make_whole_surface_frame(const std::string& name, const detail
   const auto points_of = [&](const Scene& scene) {
     for (int y = settings.stride / 2; y < scene.height; y += settings.stride) {
       for (int x = settings.stride / 2; x < scene.width; x += settings.stride) {
-        const std::size_t i = index_of(scene, x, y);
+        const std::size_t i = pixel_index(scene, x, y);
         if (scene.mask[i] == 0) continue;
         frame.pixels.push_back(i);
         receivers.push_back(pixel_world_point(scene, frame.view_matrix, i));
