@@ -97,7 +97,11 @@ enum class FootprintLayout {
   // (docs/benchmarks/texturing.md). Chosen on that benchmark and the quick footprint sweep
   // (tests/bench/miss_baseline.csv): p = 2 did as well on the checker but was up to 0.005 worse
   // than the cube on the sweep's planes near 0.05 mm per pixel (p = 2.5: at most 0.001), and p = 1
-  // and 1.5 were worse at 0.5 mm per pixel.
+  // and 1.5 were worse at 0.5 mm per pixel. On the turn sweep (docs/benchmarks/turn-sweep.md) this
+  // power leaves one frame worse than the cube by more than 0.005 (a plane turned 75 degrees in
+  // perspective at 0.2 mm per pixel: red reads the 2.7 mm term through cells about one standard
+  // deviation wide over an interior of 423 pixels). Its neighbours do no better: p = 2.25 and 2.75
+  // leave three and two frames so, by up to 0.012 and 0.016.
   gaussian,
 };
 std::vector<float> footprint_spacing(int half_taps, FootprintLayout layout);
